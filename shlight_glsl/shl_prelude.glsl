@@ -1,0 +1,20 @@
+// shl_prelude.glsl - the GLSL side of shlight.h's >>shims: include first.
+// The host defines SHLIGHT_MAX_BANDS (the band count the shader is built for) before it.
+// Internal precision: shli_real is float in GLSL (double in C); see README for the accuracy.
+#ifndef SHL_PRELUDE_GLSL
+#define SHL_PRELUDE_GLSL
+#ifndef SHLIGHT_MAX_BANDS
+#define SHLIGHT_MAX_BANDS 4
+#endif
+#define SHLIGHT_UNROLLED_BANDS 16
+#define SHLIGHT_MAX_COEFFS (SHLIGHT_MAX_BANDS * SHLIGHT_MAX_BANDS)
+#define shli_real float
+#define SHLIGHT_FLOAT(x) (x)
+#define SHLIGHT_REAL(x) (x)
+#define SHLIGHT_ITOF(i) float(i)
+#define SHLIGHT_SQRTR(x) sqrt(x)
+#define SHLIGHT_ABSR(x) abs(x)
+#define SHLIGHT_REAL_MAX 3.4028234e38
+#define SHLIGHT_UNUSED(x)
+#define SHLIGHT_ASSERT(x)
+#endif

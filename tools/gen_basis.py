@@ -1,0 +1,490 @@
+#!/usr/bin/env python3
+"""Generates shlight's straight-line SH code: the basis (Reinsch-form recurrence), its
+gradient (solid-harmonic identities) and the SIMD batch kernels, for n = 1..UNROLLED bands,
+plus the constant tables of the run-time loops. Writes the regions between
+'@generated begin NAME' and '@generated end NAME' markers in shlight.h and shlight_glsl/.
+
+  python3 tools/gen_basis.py          rewrite the regions
+  python3 tools/gen_basis.py --check  exit 1 if a region is stale (CI)
+
+Math (../shared/MATH.md sections 1 and 3, errata applied):
+  X_l^m(z): normalised associated Legendre / sin^m, Condon-Shortley phase;
+  Y_l^m = X_l^m U_m, Y_l^-m = X_l^m V_m, U_m + i V_m = (x + i y)^m.
+  Reinsch form with t = 1 - |z|, g_l = X_l(1)/X_{l-1}(1), c_l = beta_l / g_{l-1}:
+    D_{m+1} = -alpha t X_m,  D_l = c_l D_{l-1} - alpha_l t X_{l-1},  X_l = g_l X_{l-1} + D_l,
+  evaluated at |z|, with the sign (-1)^(l-m) restored through U, V (parity).
+  Gradient of Y(d/|d|): (grad H_l(n) - l Y_l(n) n) / |d|, H_l the solid harmonic, whose
+  Cartesian derivatives are <= 2 terms of band l-1 (coefficients A, B, C below).
+"""
+import math
+import re
+import os
+import sys
+
+UNROLLED = 16      # straight-line code for n <= UNROLLED
+MAX_BANDS = 64     # tables for the run-time loops
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def lit_d(v):
+    """double literal in C, float literal in GLSL (no suffix), always with a dot"""
+    s = repr(float(v))
+    if 'e' in s or 'E' in s:
+        mant, ex = s.lower().split('e')
+        if '.' not in mant:
+            mant += '.0'
+        s = mant + 'e' + ex
+    elif '.' not in s:
+        s += '.0'
+    return s
+
+
+def lit_f(v):
+    s = '%.9g' % float(v)
+    if 'e' in s:
+        mant, ex = s.split('e')
+        if '.' not in mant:
+            mant += '.0'
+        s = mant + 'e' + ex
+    elif '.' not in s:
+        s += '.0'
+    return s + 'f'
+
+
+def alpha(l, m):
+    return math.sqrt((2 * l + 1) * (2 * l - 1) / ((l - m) * (l + m)))
+
+
+def beta(l, m):
+    if l == m + 1:
+        return 0.0
+    return math.sqrt((2 * l + 1) * (l + m - 1) * (l - m - 1) / ((2 * l - 3) * (l - m) * (l + m)))
+
+
+def diag(m):
+    """X_m^m (a constant; sin^m and the azimuth live in U_m, V_m)"""
+    v = 0.5 / math.sqrt(math.pi)
+    for k in range(1, m + 1):
+        v *= -math.sqrt((2 * k + 1) / (2 * k)) * (math.sqrt(2.0) if k == 1 else 1.0)
+    return v
+
+
+def reinsch(l, m):
+    """(alpha, g, c) of step l in column m; X(1) values carried in double"""
+    x2, x1 = 0.0, diag(m)
+    gprev = 0.0
+    for k in range(m + 1, l + 1):
+        a, b = alpha(k, m), beta(k, m)
+        x = a * x1 - b * x2
+        g = x / x1
+        c = 0.0 if k == m + 1 else b / gprev
+        if k == l:
+            return a, g, c
+        gprev, x2, x1 = g, x1, x
+
+
+def grad_abc(l, m):
+    """coefficients of grad H_l^{+-m} in band l-1 (m >= 0)"""
+    f = (2 * l + 1) / (2 * l - 1)
+    a = -0.5 * math.sqrt(f * (l + m) * (l + m - 1)) if m >= 1 else 0.0
+    b = 0.5 * math.sqrt(f * max(0, (l - m) * (l - m - 1)))
+    c = math.sqrt(f * (l - m) * (l + m))
+    return a, b, c
+
+
+def idx(l, m):
+    return l * (l + 1) + m
+
+
+# ---------------------------------------------------------------- scalar basis (mirrored)
+def gen_core(n):
+    """shli_sh_core_<n>(x, y, z, t, sg, out_y): x, y, z unit; t = 1 - |z|; sg = sign(z)"""
+    L = []
+    w = L.append
+    w('SHLIGHT_INLINE void shli_sh_core_%d(shli_real x, shli_real y, shli_real z, shli_real t,' % n)
+    w('                                   float sg, float *out_y) {')
+    if n == 1:
+        w('  SHLIGHT_UNUSED(x);')
+        w('  SHLIGHT_UNUSED(y);')
+        w('  SHLIGHT_UNUSED(z);')
+        w('  SHLIGHT_UNUSED(t);')
+        w('  SHLIGHT_UNUSED(sg);')
+        w('  out_y[0] = %s;' % lit_f(diag(0)))
+        w('}')
+        return L
+    w('  SHLIGHT_UNUSED(z);')
+    w('@DECLS@')
+    for m in range(n):
+        if m == 1:
+            pass
+        elif m >= 2:
+            w('  qc = x * pc - y * ps;')
+            w('  ps = x * ps + y * pc;')
+            w('  pc = qc;')
+        k = diag(m)
+        if m == 0:
+            w('  out_y[0] = %s;' % lit_f(k))
+        else:
+            w('  fc = SHLIGHT_FLOAT(pc);')
+            w('  fs = SHLIGHT_FLOAT(ps);')
+            w('  out_y[%d] = %s * fc;' % (idx(m, m), lit_f(k)))
+            w('  out_y[%d] = %s * fs;' % (idx(m, -m), lit_f(k)))
+            if m + 1 < n:
+                w('  gc = sg * fc;')
+                w('  gs = sg * fs;')
+        if m + 1 >= n:
+            continue
+        # l = m + 1
+        a, g, c = reinsch(m + 1, m)
+        w('  dd = %s * t;' % lit_d(-a * k))
+        w('  xa = %s + dd;' % lit_d(g * k))
+        prev = 'xa'
+        cur = 'xb'
+        for l in range(m + 1, n):
+            if l > m + 1:
+                a, g, c = reinsch(l, m)
+                w('  dd = %s * dd - %s * (t * %s);' % (lit_d(c), lit_d(a), prev))
+                w('  %s = %s * %s + dd;' % (cur, lit_d(g), prev))
+                prev, cur = cur, prev
+            odd = (l - m) % 2 == 1
+            if m == 0:
+                if odd:
+                    w('  out_y[%d] = sg * SHLIGHT_FLOAT(%s);' % (idx(l, 0), prev))
+                else:
+                    w('  out_y[%d] = SHLIGHT_FLOAT(%s);' % (idx(l, 0), prev))
+            else:
+                w('  xf = SHLIGHT_FLOAT(%s);' % prev)
+                w('  out_y[%d] = xf * %s;' % (idx(l, m), 'gc' if odd else 'fc'))
+                w('  out_y[%d] = xf * %s;' % (idx(l, -m), 'gs' if odd else 'fs'))
+    w('}')
+    return declare(L, [('shli_real', 'pc', 'x'), ('shli_real', 'ps', 'y'), ('shli_real', 'qc', None),
+                       ('float', 'fc', None), ('float', 'fs', None), ('float', 'gc', None),
+                       ('float', 'gs', None), ('shli_real', 'xa', None), ('shli_real', 'xb', None),
+                       ('shli_real', 'dd', None), ('float', 'xf', None)])
+
+
+def declare(L, candidates):
+    body = '\n'.join(L)
+    decl = []
+    for ty, v, init in candidates:
+        if re.search(r'\b%s\b' % v, body.replace('@DECLS@', '')):
+            decl.append('  %s %s%s;' % (ty, v, (' = ' + init) if init else ''))
+    k = L.index('@DECLS@')
+    return L[:k] + decl + L[k + 1:]
+
+
+def gen_tables():
+    """Reinsch constants for the run-time loop: per (l, m), m < l < MAX_BANDS, at
+    SHLI_SH_TAB[3 * (l * (l - 1) / 2 + m)]: alpha, g, c (double in C)."""
+    vals = []
+    for l in range(1, MAX_BANDS):
+        for m in range(0, l):
+            a, g, c = reinsch(l, m)
+            vals += [a, g, c]
+    diagv = [diag(m) for m in range(MAX_BANDS)]
+    return vals, diagv
+
+
+def fmt_table(ctype, name, size, vals, lit, glsl):
+    out = []
+    if glsl:
+        out.append('const %s %s[%s] = %s[%s](' % (ctype, name, size, ctype, size))
+    else:
+        out.append('static const %s %s[%s] = {' % (ctype, name, size))
+    row = []
+    for i, v in enumerate(vals):
+        row.append(lit(v))
+        if len(row) == 4 or i == len(vals) - 1:
+            out.append('    ' + ', '.join(row) + (',' if i != len(vals) - 1 else ''))
+            row = []
+    out.append(');' if glsl else '};')
+    return out
+
+
+# ---------------------------------------------------------------- gradient (mirrored)
+def grad_terms(l, m):
+    """[(coef, index in band l-1)] for d/dx, d/dy, d/dz of the solid harmonic H_l^m"""
+    sq2 = math.sqrt(2.0)
+    am = abs(m)
+    A, B, C = grad_abc(l, am)
+
+    def pr(mm):
+        return idx(l - 1, mm) if abs(mm) <= l - 1 else None
+
+    if m >= 0:  # cos type
+        Ap = A * (sq2 if am == 1 else 1.0)
+        Bp = B * (sq2 if am == 0 else 1.0)
+        gx = [(Ap, pr(am - 1) if am >= 1 else None), (Bp, pr(am + 1))]
+        gy = [(-A, pr(-(am - 1)) if am >= 2 else None), (Bp, pr(-(am + 1)))]
+        gz = [(C, pr(am))]
+    else:       # sin type
+        Ap = A * (sq2 if am == 1 else 1.0)
+        gx = [(A, pr(-(am - 1)) if am >= 2 else None), (B, pr(-(am + 1)))]
+        gy = [(Ap, pr(am - 1)), (-B, pr(am + 1))]
+        gz = [(C, pr(-am))]
+    return [[(c, j) for c, j in g if c != 0.0 and j is not None] for g in (gx, gy, gz)]
+
+
+def gen_grad(n):
+    """shli_sh_grad_<n>(y, nx, ny, nz, ir, out_grad): gradient from the values y of the unit
+    direction (nx, ny, nz) = d / |d|, ir = 1 / |d|"""
+    L = []
+    w = L.append
+    w('SHLIGHT_INLINE void shli_sh_grad_%d(const float *y, float nx, float ny, float nz, float ir,' % n)
+    w('                                   float (*out_grad)[3]) {')
+    if n == 1:
+        for v in ('y', 'nx', 'ny', 'nz', 'ir'):
+            w('  SHLIGHT_UNUSED(%s);' % v)
+    else:
+        w('  float r[%d];' % ((n - 1) * (n - 1)))
+        w('  float lr;')
+        w('  float q;')
+        w('  int i;')
+        w('  for (i = 0; i < %d; ++i) {' % ((n - 1) * (n - 1)))
+        w('    r[i] = y[i] * ir;')
+        w('  }')
+    w('  out_grad[0][0] = 0.0f;')
+    w('  out_grad[0][1] = 0.0f;')
+    w('  out_grad[0][2] = 0.0f;')
+    for l in range(1, n):
+        w('  lr = %s * ir;' % lit_f(float(l)))
+        for m in range(-l, l + 1):
+            i = idx(l, m)
+            w('  q = lr * y[%d];' % i)
+            for k, (g, nk) in enumerate(zip(grad_terms(l, m), ('nx', 'ny', 'nz'))):
+                expr = ' + '.join('%s * r[%d]' % (lit_f(cf), j) for cf, j in g)
+                if expr:
+                    w('  out_grad[%d][%d] = %s - q * %s;' % (i, k, expr, nk))
+                else:
+                    w('  out_grad[%d][%d] = -q * %s;' % (i, k, nk))
+    w('}')
+    return L
+
+
+def gen_grad_tables():
+    """A, B, C of grad_abc per (l, m), 1 <= l < MAX_BANDS, 0 <= m <= l, at
+    SHLI_SH_GTAB[3 * (l * (l + 1) / 2 - 1 + m)] (float)"""
+    vals = []
+    for l in range(1, MAX_BANDS):
+        for m in range(0, l + 1):
+            vals += list(grad_abc(l, m))
+    return vals
+
+
+# ---------------------------------------------------------------- SIMD batch (C only)
+def gen_batch(n):
+    """shli_sh_batch_<n>(x, y, z, out, stride): one vector of directions, float Reinsch form"""
+    L = []
+    w = L.append
+    w('static void shli_sh_batch_%d(SHLI_V x, SHLI_V y, SHLI_V z, float *out, ptrdiff_t stride) {' % n)
+    if n == 1:
+        w('  (void)x;')
+        w('  (void)y;')
+        w('  (void)z;')
+        w('  (void)stride;')
+        w('  SHLI_VSTORE(out, SHLI_VSET(%s));' % lit_f(diag(0)))
+        w('}')
+        return L
+    w('  SHLI_V s2 = SHLI_VMADD(x, x, SHLI_VMUL(y, y));')
+    w('  SHLI_V ir = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(z, z, s2)));')
+    w('  SHLI_V az = SHLI_VMUL(SHLI_VABS(z), ir);')
+    w('  SHLI_V t = SHLI_VDIV(SHLI_VMUL(s2, SHLI_VMUL(ir, ir)), SHLI_VADD(SHLI_VSET(1.0f), az));')
+    w('  SHLI_V sg = SHLI_VSIGN1(z);')
+    w('@DECLS@')
+    w('  x = SHLI_VMUL(x, ir);')
+    w('  y = SHLI_VMUL(y, ir);')
+    w('  pc = x;')
+    w('  ps = y;')
+    for m in range(n):
+        if m >= 2:
+            w('  qc = SHLI_VNMADD(y, ps, SHLI_VMUL(x, pc));')
+            w('  ps = SHLI_VMADD(x, ps, SHLI_VMUL(y, pc));')
+            w('  pc = qc;')
+        k = diag(m)
+        if m == 0:
+            w('  SHLI_VSTORE(out, SHLI_VSET(%s));' % lit_f(k))
+        else:
+            w('  SHLI_VSTORE(out + %d * stride, SHLI_VMUL(SHLI_VSET(%s), pc));' % (idx(m, m), lit_f(k)))
+            w('  SHLI_VSTORE(out + %d * stride, SHLI_VMUL(SHLI_VSET(%s), ps));' % (idx(m, -m), lit_f(k)))
+            if m + 1 < n:
+                w('  gc = SHLI_VMUL(sg, pc);')
+                w('  gs = SHLI_VMUL(sg, ps);')
+        if m + 1 >= n:
+            continue
+        a, g, c = reinsch(m + 1, m)
+        w('  dd = SHLI_VMUL(SHLI_VSET(%s), t);' % lit_f(-a * k))
+        w('  xa = SHLI_VADD(SHLI_VSET(%s), dd);' % lit_f(g * k))
+        prev, cur = 'xa', 'xb'
+        for l in range(m + 1, n):
+            if l > m + 1:
+                a, g, c = reinsch(l, m)
+                w('  dd = SHLI_VNMADD(SHLI_VSET(%s), SHLI_VMUL(t, %s), SHLI_VMUL(SHLI_VSET(%s), dd));'
+                  % (lit_f(a), prev, lit_f(c)))
+                w('  %s = SHLI_VMADD(SHLI_VSET(%s), %s, dd);' % (cur, lit_f(g), prev))
+                prev, cur = cur, prev
+            odd = (l - m) % 2 == 1
+            if m == 0:
+                v = 'SHLI_VMUL(sg, %s)' % prev if odd else prev
+                w('  SHLI_VSTORE(out + %d * stride, %s);' % (idx(l, 0), v))
+            else:
+                w('  SHLI_VSTORE(out + %d * stride, SHLI_VMUL(%s, %s));' % (idx(l, m), prev, 'gc' if odd else 'pc'))
+                w('  SHLI_VSTORE(out + %d * stride, SHLI_VMUL(%s, %s));' % (idx(l, -m), prev, 'gs' if odd else 'ps'))
+    w('}')
+    return declare(L, [('SHLI_V', v, None) for v in ('pc', 'ps', 'qc', 'gc', 'gs', 'xa', 'xb', 'dd')])
+
+
+# ---------------------------------------------------------------- regions
+def c_regions():
+    tab, diagv = gen_tables()
+    R = {}
+    body = []
+    body += fmt_table('shli_real', 'SHLI_SH_TAB', '%d' % len(tab), tab, lit_d, False)
+    body += fmt_table('float', 'SHLI_SH_DIAG', '%d' % len(diagv), diagv, lit_f, False)
+    for n in range(1, UNROLLED + 1):
+        body += [''] + gen_core(n)
+    R['basis'] = body
+    gb = fmt_table('float', 'SHLI_SH_GTAB', '%d' % len(gen_grad_tables()), gen_grad_tables(), lit_f, False)
+    for n in range(1, UNROLLED + 1):
+        gb += [''] + gen_grad(n)
+    R['gradient'] = gb
+    bb = []
+    for n in range(1, UNROLLED + 1):
+        bb += [''] + gen_batch(n)
+    bb += ['', 'typedef void (*shli_sh_batch_fn)(SHLI_V, SHLI_V, SHLI_V, float *, ptrdiff_t);',
+           'static const shli_sh_batch_fn SHLI_SH_BATCH[%d] = {' % (UNROLLED + 1),
+           '    0, ' + ', '.join('shli_sh_batch_%d' % n for n in range(1, UNROLLED + 1)) + '};']
+    R['batch'] = bb
+    return R
+
+
+import re
+
+GLSL_PARAM_MAP = [
+    (re.compile(r'^const float (\w+)\[3\]$'), r'vec3 \1'),
+    (re.compile(r'^float \(\*(\w+)\)\[3\]$'), r'out vec3 \1[SHLIGHT_MAX_COEFFS]'),
+    (re.compile(r'^const float \(\*(\w+)\)\[3\]$'), r'vec3 \1[SHLIGHT_MAX_COEFFS]'),
+    (re.compile(r'^float \*(io_\w+)$'), r'inout float \1[SHLIGHT_MAX_COEFFS]'),
+    (re.compile(r'^float \*(\w+)$'), r'out float \1[SHLIGHT_MAX_COEFFS]'),
+    (re.compile(r'^const float \*(\w+)$'), r'float \1[SHLIGHT_MAX_COEFFS]'),
+    (re.compile(r'^(int|float|shli_real) (\w+)$'), r'\1 \2'),
+]
+
+
+def glsl_signature(sig):
+    """'SHLIGHT_INLINE void name(params) {' (may span lines) -> GLSL signature"""
+    sig = ' '.join(sig.split())
+    m = re.match(r'SHLIGHT_INLINE (\w+) (\w+)\((.*)\) \{$', sig)
+    ret, name, params = m.groups()
+    out = []
+    for prm in params.split(','):
+        prm = prm.strip()
+        for rx, rep in GLSL_PARAM_MAP:
+            if rx.match(prm):
+                out.append(rx.sub(rep, prm))
+                break
+        else:
+            raise SystemExit('gen_basis: no GLSL mapping for parameter "%s" of %s' % (prm, name))
+    return name, '%s %s(%s) {' % (ret, name, ', '.join(out))
+
+
+def split_items(lines):
+    """kernels (SHLIGHT_INLINE functions) and constant tables of a C section, in order"""
+    items = []
+    i = 0
+    while i < len(lines):
+        ln = lines[i]
+        if ln.startswith('SHLIGHT_INLINE '):
+            j = i
+            while not lines[j].rstrip().endswith('{'):
+                j += 1
+            name, sig = glsl_signature(' '.join(lines[i:j + 1]))
+            k = j + 1
+            while lines[k] != '}':
+                k += 1
+            items.append(('fn', name, [sig] + lines[j + 1:k + 1]))
+            i = k + 1
+        elif ln.startswith('static const '):
+            m = re.match(r'static const (\w+) (\w+)\[(\d+)\] = \{$', ln)
+            k = i + 1
+            while lines[k] != '};':
+                k += 1
+            size = m.group(3)
+            body = ['const float %s[%s] = float[%s](' % (m.group(2), size, size)] + lines[i + 1:k] + [');']
+            items.append(('tab', m.group(2), body))
+            i = k + 1
+        else:
+            i += 1
+    return items
+
+
+def guard(kind, name):
+    if kind == 'tab' or name.endswith('_loop'):
+        return '#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS'
+    m = re.match(r'shli_sh_(?:core|grad)_(\d+)$', name)
+    if m:
+        return '#if SHLIGHT_MAX_BANDS >= %s' % m.group(1)
+    return None
+
+
+def glsl_module(header_text, section, deps):
+    lines = header_text.split('\n')
+    a = next(i for i, l in enumerate(lines) if l.startswith('/* >>%s ' % section))
+    b = next(i for i in range(a + 1, len(lines)) if lines[i].startswith('/* >>') or
+             lines[i].startswith('#ifdef __cplusplus'))
+    out = ['// shl_%s.glsl - GLSL twin of the >>%s section of shlight.h.' % (section, section),
+           '// GENERATED by tools/gen_basis.py from shlight.h: do not edit; edit shlight.h and',
+           '// rerun. Needs: %s. The host defines SHLIGHT_MAX_BANDS.' % ', '.join(deps),
+           '#ifndef SHL_%s_GLSL' % section.upper(),
+           '#define SHL_%s_GLSL' % section.upper()]
+    for kind, name, body in split_items(lines[a:b]):
+        g = guard(kind, name)
+        out.append('')
+        if g:
+            out.append(g)
+        out += body
+        if g:
+            out.append('#endif')
+    out += ['', '#endif', '']
+    return '\n'.join(out)
+
+
+def replace_region(text, name, lines, path):
+    b = '@generated begin %s' % name
+    e = '@generated end %s' % name
+    i = text.index(b)
+    i = text.index('\n', i) + 1
+    j = text.index(e)
+    j = text.rindex('\n', 0, j) + 1
+    return text[:i] + '\n'.join(lines) + '\n' + text[j:]
+
+
+def main():
+    check = '--check' in sys.argv
+    stale = []
+    hpath = os.path.join(ROOT, 'shlight.h')
+    text = open(hpath).read()
+    new = text
+    for name, lines in c_regions().items():
+        new = replace_region(new, name, lines, hpath)
+    outputs = [(hpath, text, new)]
+    for sec, deps in (('basis', ['shl_prelude.glsl']),
+                      ('gradient', ['shl_prelude.glsl', 'shl_basis.glsl'])):
+        gp = os.path.join(ROOT, 'shlight_glsl', 'shl_%s.glsl' % sec)
+        old = open(gp).read() if os.path.exists(gp) else ''
+        outputs.append((gp, old, glsl_module(new, sec, deps)))
+    for path, old, fresh in outputs:
+        if old != fresh:
+            stale.append(os.path.relpath(path, ROOT))
+            if not check:
+                open(path, 'w').write(fresh)
+    if check:
+        if stale:
+            print('stale generated code (run python3 tools/gen_basis.py):', ', '.join(stale))
+            sys.exit(1)
+        print('generated code is fresh')
+    else:
+        print('rewrote:', ', '.join(stale) if stale else 'nothing (fresh)')
+
+
+if __name__ == '__main__':
+    main()
