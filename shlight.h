@@ -12,7 +12,7 @@
    CONTENTS (grep for the anchors)
      >>options    compile-time options
      >>numerics   domains, degenerate inputs, measured accuracy
-     >>shims      math shims shared with the GLSL prelude
+     >>prelude    math shims shared with shlight_glsl/shl_prelude.glsl
      >>basis      SH basis Y_i(d): shl_sh_eval, shl_sh_eval_accurate, shl_sh_eval_batch
      >>gradient   Cartesian gradient of Y(d/|d|): shl_sh_eval_grad; the paper's spherical
                   partials: shl_sh_eval_grad_spherical, shl_sh_grad_from_spherical
@@ -67,6 +67,8 @@
 #define SHLIGHT_API extern
 #endif
 
+/* SHLIGHT_INLINE marks the kernels that have GLSL twins; SHLIGHT_CPU_INLINE the inline helpers
+   that exist in C only (the table-driven loops for more than 16 bands). */
 #if defined(__cplusplus) || (defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L)
 #define SHLIGHT_INLINE static inline
 #elif defined(__GNUC__) || defined(_MSC_VER)
@@ -74,6 +76,7 @@
 #else
 #define SHLIGHT_INLINE static
 #endif
+#define SHLIGHT_CPU_INLINE SHLIGHT_INLINE
 
 /* >>numerics --------------------------------------------------------------------------------
    Domains and degenerate inputs (each has a named test in tests/):
@@ -93,7 +96,7 @@
    keeps the error growth linear in l at the poles instead of quadratic.
 */
 
-/* >>shims -----------------------------------------------------------------------------------
+/* >>prelude ---------------------------------------------------------------------------------
    The kernels' bodies are shared with GLSL; they do math only through these macros, which
    shlight_glsl/shl_prelude.glsl defines for GLSL. shli_real is the internal precision. */
 #include <math.h>
@@ -6074,7 +6077,7 @@ SHLIGHT_INLINE void shli_sh_core_16(shli_real x, shli_real y, shli_real z, shli_
 /* Run-time loop for any n: the same recurrence as the generated code, constants from
    SHLI_SH_TAB. x, y, z: unit direction; t = 1 - |z| computed without cancellation; sg: sign
    of z (the recurrence runs at |z| and the parity (-1)^(l-m) is restored through U, V). */
-SHLIGHT_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_real z,
+SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_real z,
                                       shli_real t, float sg, float *out_y) {
   shli_real pc = 1.0;
   shli_real ps = 0.0;
@@ -14078,7 +14081,7 @@ SHLIGHT_INLINE void shli_sh_grad_16(const float *y, float nx, float ny, float nz
 /* @generated end gradient */
 
 /* Run-time loop of the gradient for any n: coefficients A, B, C of band l from SHLI_SH_GTAB. */
-SHLIGHT_INLINE void shli_sh_grad_loop(int n, const float *y, float nx, float ny, float nz,
+SHLIGHT_CPU_INLINE void shli_sh_grad_loop(int n, const float *y, float nx, float ny, float nz,
                                       float ir, float (*out_grad)[3]) {
   int l;
   int m;

@@ -1,10 +1,13 @@
-// shl_prelude.glsl - the GLSL side of shlight.h's >>shims: include first.
+// shl_prelude.glsl - the GLSL side of shlight.h's >>prelude (math shims): include first.
 // The host defines SHLIGHT_MAX_BANDS (the band count the shader is built for) before it.
 // Internal precision: shli_real is float in GLSL (double in C); see README for the accuracy.
 #ifndef SHL_PRELUDE_GLSL
 #define SHL_PRELUDE_GLSL
 #ifndef SHLIGHT_MAX_BANDS
 #define SHLIGHT_MAX_BANDS 4
+#endif
+#if SHLIGHT_MAX_BANDS < 1 || SHLIGHT_MAX_BANDS > 16
+#error "shlight GLSL: SHLIGHT_MAX_BANDS must be in [1, 16] (the straight-line kernels)"
 #endif
 #define SHLIGHT_UNROLLED_BANDS 16
 #define SHLIGHT_MAX_COEFFS (SHLIGHT_MAX_BANDS * SHLIGHT_MAX_BANDS)

@@ -3,7 +3,7 @@
 
 Python 3 standard library only.  Usage:
 
-    python3 tools/check_mirror.py [--root DIR] [-q]
+    python3 tools/check_mirror.py [--root DIR] [-q] [--require-f-suffix]
 
 DIR (default: the parent of tools/) holds shlight.h and shlight_glsl/.
 
@@ -25,6 +25,24 @@ What is checked (DESIGN.md section 4):
   * lint      the C99/GLSL common subset on every C kernel (see lint_kernel()).
   * tables    `static const float|int NAME[N] = {..};` <-> `const float NAME[N] =
               float[N](..);` (values compared as float32 / int; GLSL may be a prefix).
+Choices beyond the bare rules (see the self-test tools/tests_mirror/run.sh):
+  * by-value types named shl_* or shli_* (structs, and scalar typedefs such as
+    `typedef double shli_real;` which the GLSL prelude #defines) map to the same
+    name in GLSL; the pointer/array forms also take int and those types.
+  * a table whose C element type is a scalar typedef of float/double compares
+    as a float table; float tables must not hold integer literals (ES 3.00).
+  * prefix tables: GLSL may have fewer values than C; a literal GLSL size must
+    equal its value count.  GLSL-only tables are named shlg_* / SHLG_*.
+  * lint also rejects octal literals, string/char literals, `struct` in bodies,
+    gl_-prefixed names, GLSL type constructors (`float(x)`), calls to kernels
+    defined later; --require-f-suffix additionally rejects unsuffixed float
+    literals in C (they are doubles there).
+  * the stop line may carry more conditions (`#if defined(SHLIGHT_IMPLEMENTATION) && ...`).
+  * #if conditions around whole kernels are not compared; only which kernels
+    exist (alternatives under #if/#else are paired in order, labelled name@line).
+  * checks counted: signature, body, lint, order, table; plus failures for a
+    missing/extra function, a missing module file, an orphan .glsl file and
+    header structure problems.  `--` lines (not counted) list GLSL-only helpers.
 Output: one line per check (`ok    ...` / `FAIL  ...` + indented details), then
 `N passed, N failed`.  Exit status 1 if anything failed.
 """
@@ -59,6 +77,10 @@ class Source:
         self.path = path
         self.rel = rel
         self.toks, self.comments = tokenize(text)
+
+
+CPU_ONLY = set()
+KERNEL_IDS = set()
 
 
 def tokenize(text):
@@ -310,7 +332,7 @@ def out_qual(name):
 def map_c_param(toks):
     """C parameter -> Param, or an error string."""
     s = " ".join(t.text for t in toks if t.text != "SHLIGHT_RESTRICT")
-    m = re.match(r"^(int|float|shl_\w+) (\w+)$", s)
+    m = re.match(r"^(int|float|shli?_\w+) (\w+)$", s)
     if m:
         return Param("in", m.group(1), m.group(2), False)
     m = re.match(r"^const float (\w+) \[ 3 \]$", s)
@@ -331,10 +353,10 @@ def map_c_param(toks):
         if not q:
             return "writable array `%s` must be named out_* or io_*" % s
         return Param(q, "vec3", m.group(1), True)
-    m = re.match(r"^const (int|float) (?:\* (\w+)|(\w+) %s)$" % ARR, s)
+    m = re.match(r"^const (int|float|shli?_\w+) (?:\* (\w+)|(\w+) %s)$" % ARR, s)
     if m:
         return Param("in", m.group(1), m.group(2) or m.group(3), True)
-    m = re.match(r"^(int|float) (?:\* (\w+)|(\w+) %s)$" % ARR, s)
+    m = re.match(r"^(int|float|shli?_\w+) (?:\* (\w+)|(\w+) %s)$" % ARR, s)
     if m:
         name = m.group(2) or m.group(3)
         q = out_qual(name)
@@ -406,8 +428,8 @@ def check_signature(cf, gf):
     gl = "%s:%d" % (gf.src.rel, gf.name_tok.line)
     cret = c_return(cf)
     gret = glsl_return(gf)
-    if len(cret) != 1 or not (cret[0] in ("float", "int", "void") or re.fullmatch(r"shl_\w+", cret[0])):
-        out.append("%s: C return type `%s` not allowed (float, int, void or a shl_ struct)"
+    if len(cret) != 1 or not (cret[0] in ("float", "int", "void") or re.fullmatch(r"shli?_\w+", cret[0])):
+        out.append("%s: C return type `%s` not allowed (float, int, void or a shl_/shli_ type)"
                    % (cl, " ".join(cret)))
     elif cret != gret:
         out.append("return type: C `%s` (%s) vs GLSL `%s` (%s)"
@@ -447,7 +469,7 @@ def show_tok(t):
     return "<end>" if t is None else ("<newline>" if t.kind == "ppend" else t.text)
 
 
-def context(toks, k, width=4):
+def context(toks, k, width=5):
     a = max(0, k - width)
     parts = [show_tok(t) for t in toks[a:k]]
     parts.append("[" + show_tok(toks[k] if k < len(toks) else None) + "]")
@@ -519,7 +541,7 @@ INT_RE = re.compile(r"0|[1-9][0-9]*")
 NOT_CALLS = {"if", "while", "for", "switch", "return", "sizeof", "else", "do", "case"}
 
 
-def lint_literal(s, require_f=True):
+def lint_literal(s, require_f=False):
     """Problem string for a numeric literal, or None."""
     if s[:2] in ("0x", "0X"):
         return "hex literal `%s`" % s
@@ -567,12 +589,17 @@ def lint_ident(name, line, rel, out):
         out.append("%s:%d: identifier `%s` uses the reserved gl_ prefix" % (rel, line, name))
 
 
-def lint_kernel(f, type_names, kernel_index, earlier, require_f=True):
+def lint_kernel(f, type_names, kernel_index, earlier, require_f=False):
     """Problems in C kernel f.  earlier: {name: Func} of kernels defined before f;
     kernel_index: {name: Func} of all kernels (for 'defined later' messages)."""
     rel = f.src.rel
     out = []
-    for k, t in enumerate([f.name_tok] + [p[-1] for p in f.params if p]):
+    names = [f.name_tok]
+    for p in f.params:
+        ids = [t for t in p if t.kind == "id" and t.text not in C_KEYWORDS
+               and t.text not in type_names and not SHIM_RE.fullmatch(t.text)]
+        names += ids[-1:]
+    for t in names:
         lint_ident(t.text, t.line, rel, out)
     toks = [t for t in f.body if not t.pp]
     type_words = (C_KEYWORDS - {"return", "case", "else", "do", "if", "while", "for", "switch",
@@ -601,7 +628,7 @@ def lint_kernel(f, type_names, kernel_index, earlier, require_f=True):
                 elif re.match(r"shli?_", name):
                     if name == f.name:
                         out.append("%s: recursion: `%s` calls itself" % (where, name))
-                    elif name in earlier:
+                    elif name in earlier or name in CPU_ONLY:
                         pass
                     elif name in kernel_index:
                         g = kernel_index[name]
@@ -647,7 +674,18 @@ def lint_kernel(f, type_names, kernel_index, earlier, require_f=True):
 # --------------------------------------------------------------------------
 
 Table = namedtuple("Table", "name type size values line src")
-# size: list of tokens; values: list of token lists
+# size: C: size tokens; GLSL: (declared size tokens, constructor size tokens)
+# values: list of token lists
+
+# scalar typedefs of the header (e.g. `typedef double shli_real;` -> float class);
+# filled by run().  A table of such a type is compared like a float table.
+SCALAR_ALIASES = {}
+
+
+def table_class(typ):
+    if typ in ("float", "int"):
+        return typ
+    return SCALAR_ALIASES.get(typ)
 
 
 def parse_c_table(d, src):
@@ -659,7 +697,7 @@ def parse_c_table(d, src):
         k += 1
     if quals != {"static", "const"} or len(ts) < k + 6:
         return None
-    if ts[k] not in ("float", "int") or d[k + 1].kind != "id" or ts[k + 2] != "[":
+    if table_class(ts[k]) is None or d[k + 1].kind != "id" or ts[k + 2] != "[":
         return None
     typ, name = ts[k], ts[k + 1]
     if "]" not in ts[k + 2:]:
@@ -675,10 +713,9 @@ def parse_c_table(d, src):
 
 
 def parse_glsl_table(d, src):
-    ts = [t.text for t in d]
     dd = [t for t in d if t.text not in PRECISION]
     ts = [t.text for t in dd]
-    if len(ts) < 8 or ts[0] != "const" or ts[1] not in ("float", "int"):
+    if len(ts) < 8 or ts[0] != "const" or table_class(ts[1]) is None:
         return None
     typ = ts[1]
     k = 2
@@ -733,20 +770,21 @@ def value_key(vtoks, typ):
     return tuple(key)
 
 
-def check_table(ct, gt):
+def check_table(ct, gt, require_f=False):
     out = []
     cl = "%s:%d" % (ct.src.rel, ct.line)
     gl = "%s:%d" % (gt.src.rel, gt.line)
-    if ct.type != gt.type:
+    if table_class(ct.type) != table_class(gt.type):
         return ["type: C `%s` (%s) vs GLSL `%s` (%s)" % (ct.type, cl, gt.type, gl)]
-    for side, tab, req_f in (("C", ct, True), ("GLSL", gt, False)):
+    for side, tab, req_f in (("C", ct, require_f), ("GLSL", gt, False)):
         for v in tab.values:
             for t in v:
                 if t.kind == "num":
-                    p = lint_literal(t.text, req_f and tab.type == "float")
-                    if p is None and tab.type == "int" and not INT_RE.fullmatch(t.text):
+                    cls = table_class(tab.type)
+                    p = lint_literal(t.text, req_f and cls == "float")
+                    if p is None and cls == "int" and not INT_RE.fullmatch(t.text):
                         p = "non-integer literal `%s` in an int table" % t.text
-                    if p is None and tab.type == "float" and INT_RE.fullmatch(t.text):
+                    if p is None and cls == "float" and INT_RE.fullmatch(t.text):
                         p = "integer literal `%s` in a float table" % t.text
                     if p:
                         out.append("%s:%d: %s" % (tab.src.rel, t.line, p))
@@ -767,7 +805,7 @@ def check_table(ct, gt):
     if gc > cc:
         out.append("GLSL has %d values (%s), C only %d (%s)" % (gc, gl, cc, cl))
     for k in range(min(gc, cc)):
-        if value_key(ct.values[k], ct.type) != value_key(gt.values[k], gt.type):
+        if value_key(ct.values[k], table_class(ct.type)) != value_key(gt.values[k], table_class(gt.type)):
             out.append("value %d: C `%s` (%s:%d) vs GLSL `%s` (%s:%d)"
                        % (k, joined(ct.values[k]), ct.src.rel, ct.values[k][0].line,
                           joined(gt.values[k]), gt.src.rel, gt.values[k][0].line))
@@ -832,7 +870,7 @@ def struct_names(text):
     return {n for n in names if n not in C_KEYWORDS}
 
 
-def run(root, quiet, require_f=True):
+def run(root, quiet, require_f=False):
     rep = Report(quiet)
     hpath = os.path.join(root, "shlight.h")
     gdir = os.path.join(root, "shlight_glsl")
@@ -840,15 +878,21 @@ def run(root, quiet, require_f=True):
         rep.check("header: %s" % hpath, ["not found"])
         return rep
     hsrc = read(hpath, root)
-    with open(hpath, "r", encoding="utf-8", errors="replace") as fh:
-        types = struct_names(fh.read())
     toks = hsrc.toks
     stop = find_stop(toks)
+    with open(hpath, "r", encoding="utf-8", errors="replace") as fh:
+        htext = fh.read()
+    if stop < len(toks):  # type names come from the declaration part only
+        htext = "".join(htext.splitlines(True)[:toks[stop].line - 1])
+    types = struct_names(htext)
+    SCALAR_ALIASES.clear()
+    for ctype, alias in re.findall(r"\btypedef\s+(float|double|int)\s+([A-Za-z_]\w*)\s*;", htext):
+        SCALAR_ALIASES[alias] = "int" if ctype == "int" else "float"
 
     # sections
     anchors = []  # (name, token index, line)
     for idx, line, body, in_pp in hsrc.comments:
-        if in_pp or idx > stop:
+        if in_pp or idx >= stop:
             continue
         m = ANCHOR_RE.match(body)
         if m:
@@ -881,12 +925,18 @@ def run(root, quiet, require_f=True):
     tables = {m: [] for m in modules}
     all_kernels = []
     for f in cfuncs:
+        if "SHLIGHT_CPU_INLINE" in [t.text for t in f.prefix]:
+            CPU_ONLY.add(f.name)  # C-only helper (run-time loops): no GLSL twin
+            rep.note("%s:%d: `%s` is SHLIGHT_CPU_INLINE: C only, not mirrored"
+                     % (hsrc.rel, f.name_tok.line, f.name))
+            continue
         if "SHLIGHT_INLINE" not in [t.text for t in f.prefix]:
             rep.note("%s:%d: `%s` is defined without SHLIGHT_INLINE: not a kernel"
                      % (hsrc.rel, f.name_tok.line, f.name))
             continue
         sec = section_of(f.start)
         all_kernels.append(f)
+        KERNEL_IDS.update(t.text for t in f.body if t.kind == "id")
         if sec is None:
             structural.append("%s:%d: kernel `%s` lies before the first >>module anchor"
                               % (hsrc.rel, f.name_tok.line, f.name))
@@ -984,11 +1034,14 @@ def run(root, quiet, require_f=True):
         tpartner = {id(c): g for c, g in tpairs}
         for ct in tables[mod]:
             gt = tpartner.get(id(ct))
-            if gt is None:
+            if gt is None and ct.name not in KERNEL_IDS:
+                rep.note("%s:%d: table %s is used by C-only helpers alone: not mirrored"
+                         % (hsrc.rel, ct.line, ct.name))
+            elif gt is None:
                 rep.check("%s: table %s" % (mod, ct.name),
                           ["%s:%d: table has no GLSL counterpart in %s" % (hsrc.rel, ct.line, gsrc.rel)])
             else:
-                rep.check("%s: table %s" % (mod, ct.name), check_table(ct, gt))
+                rep.check("%s: table %s" % (mod, ct.name), check_table(ct, gt, require_f))
         for gt in tgonly:
             if gt.name.lower().startswith("shlg_"):
                 continue
@@ -1010,10 +1063,11 @@ def main(argv=None):
     ap.add_argument("--root", default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
                     help="directory holding shlight.h and shlight_glsl/ (default: repo root)")
     ap.add_argument("-q", action="store_true", help="print only failures and the summary")
-    ap.add_argument("--allow-double-literals", action="store_true",
-                    help="do not require the f suffix on float literals in C kernels")
+    ap.add_argument("--require-f-suffix", action="store_true",
+                    help="also require the f suffix on float literals in C kernels and tables "
+                         "(an unsuffixed literal is a double in C)")
     a = ap.parse_args(argv)
-    rep = run(os.path.abspath(a.root), a.q, require_f=not a.allow_double_literals)
+    rep = run(os.path.abspath(a.root), a.q, require_f=a.require_f_suffix)
     print("%d passed, %d failed" % (rep.passed, rep.failed))
     return 1 if rep.failed else 0
 

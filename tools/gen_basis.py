@@ -403,7 +403,13 @@ def split_items(lines):
                 k += 1
             items.append(('fn', name, [sig] + lines[j + 1:k + 1]))
             i = k + 1
-        elif ln.startswith('static const '):
+        elif ln.startswith('SHLIGHT_CPU_INLINE ') or ln.startswith('static const '):
+            # C-only: the run-time loops and their tables (GLSL stops at UNROLLED bands)
+            k = i
+            while lines[k] not in ('}', '};'):
+                k += 1
+            i = k + 1
+        elif False:
             m = re.match(r'static const (\w+) (\w+)\[(\d+)\] = \{$', ln)
             k = i + 1
             while lines[k] != '};':

@@ -100,7 +100,11 @@ int glctx_open(const char *backend) {
   if (!backend || !*backend)
     backend = getenv("SHLIGHT_GL_BACKEND");
   if (!backend || !*backend)
+#ifndef GLCTX_NO_OSMESA
     backend = "osmesa";
+#else
+    backend = "egl";
+#endif
 #ifndef GLCTX_NO_OSMESA
   if (!strcmp(backend, "osmesa"))
     cur_backend = "osmesa", rc = os_open();

@@ -6,7 +6,8 @@
  * there is no GLEW/GLAD and no link-time dependency on libGL.
  *
  * Environment:
- *   SHLIGHT_GL_BACKEND=osmesa|egl  backend when glctx_open() gets NULL (default osmesa)
+ *   SHLIGHT_GL_BACKEND=osmesa|egl  backend when glctx_open() gets NULL (default osmesa,
+ *                                  egl in a build without OSMesa)
  *   SHLIGHT_GL_ANY_RENDERER=1      accept a renderer other than llvmpipe (e.g. a real GPU)
  * Build: -DGLCTX_NO_OSMESA or -DGLCTX_NO_EGL leave a backend out (OSMesa is gone from
  * Mesa >= 25.1); link with `pkg-config --libs osmesa egl` (or the one that is left). */

@@ -12,7 +12,8 @@
  *
  * Data layout, the same for both paths: item i (0 <= i < count) owns the floats
  * in[i*IN .. i*IN+IN-1] and out[i*OUT .. i*OUT+OUT-1], where IN/OUT are floats per item.
- * `main_src` defines `void glrun_main(int item)` and uses, for its own item:
+ * `main_src` defines `void glrun_main(int item)` (declared by the harness; `main` is the
+ * harness's) and uses, for its own item:
  *   in_float(j)       the item's input float j            (0 <= j < GLRUN_IN_STRIDE)
  *   in_vec4(k)        its floats 4k..4k+3 as a vec4
  *   out_float(j, v)   write output float j                (0 <= j < GLRUN_OUT_STRIDE)
@@ -33,7 +34,9 @@
  * W x H grid (W = min(count, 256)), inputs texels of an RGBA32F texture read with texelFetch,
  * outputs go to up to 8 RGBA32F colour attachments; IN = 4 * in_vec4_per_item (0..64),
  * OUT = 4 * out_vec4_per_item (1..8). Pixels past `count` in the last row run with zero
- * inputs and are discarded. The fragment stage flushes denormals to zero (llvmpipe).
+ * inputs and are discarded. llvmpipe's fragment stage flushes denormal arithmetic results
+ * to zero (a plain copy passes them through). Only "#version 300 es" enforces the ES rules
+ * (no implicit int -> float, ...); Mesa compiles it in the desktop 4.5 context.
  *
  * All functions return 0 on success and -1 on failure, with a message (and the compiler's
  * info log) on stderr. */
@@ -50,12 +53,14 @@ int glrun_open(const char *backend);
 void glrun_close(void);
 
 /* Backend name ("osmesa" / "egl") and GL_RENDERER of the context (opened if needed);
- * "" / "(no context)" when no context can be created. For test reports. */
+ * "" / "(no context)" when no context can be created. For test reports; valid until
+ * glrun_close(). */
 const char *glrun_backend(void);
 const char *glrun_renderer(void);
 
 /* #version lines used by later runs; NULL keeps the current one. Defaults "#version 450"
- * (compute) and "#version 330" (fragment); e.g. "#version 310 es", "#version 300 es". */
+ * (compute) and "#version 330" (fragment); e.g. "#version 310 es", "#version 300 es".
+ * The strings are not copied: pass literals or storage that outlives the runs. */
 void glrun_set_versions(const char *compute_version, const char *fragment_version);
 
 /* Compiler/linker log of the last failed build ("" when the last build succeeded). */

@@ -41,7 +41,6 @@
 #define SHREF_H
 
 #include <math.h>
-#include <quadmath.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -49,6 +48,29 @@
 #define SHREF_EXPLICIT_MAX_BANDS 20
 
 __extension__ typedef __float128 shref_q;
+
+/* quadmath.h lives in gcc's private include directory, which clang does not search: declare
+ * the few libquadmath functions used here ourselves when it is not found. */
+#if defined(__has_include)
+#if __has_include(<quadmath.h>)
+#define SHREF_HAVE_QUADMATH_H 1
+#endif
+#elif defined(__GNUC__) && !defined(__clang__)
+#define SHREF_HAVE_QUADMATH_H 1
+#endif
+#ifdef SHREF_HAVE_QUADMATH_H
+#include <quadmath.h>
+#else
+extern shref_q acosq(shref_q);
+extern shref_q atan2q(shref_q, shref_q);
+extern shref_q cosq(shref_q);
+extern shref_q fabsq(shref_q);
+extern int finiteq(shref_q);
+extern shref_q hypotq(shref_q, shref_q);
+extern shref_q ldexpq(shref_q, int);
+extern shref_q sinq(shref_q);
+extern shref_q sqrtq(shref_q);
+#endif
 
 #if defined(__GNUC__)
 #define SHREF_FN static inline __attribute__((unused))

@@ -9,6 +9,8 @@ set -u
 HERE=$(cd "$(dirname "$0")" && pwd)
 CHECK="$HERE/../check_mirror.py"
 PY=${PYTHON:-python3}
+# resolve version-manager shims (pyenv) once: ~3x faster start per call
+PY=$("$PY" -c 'import sys; print(sys.executable)') || { echo "run.sh: no python3" >&2; exit 2; }
 VERBOSE=0
 [ "${1:-}" = "-v" ] && VERBOSE=1
 TMP=$(mktemp -d)
@@ -28,14 +30,13 @@ variant() {
 
 # edit FILE OLD NEW: replace the first occurrence of the literal OLD (must exist)
 edit() {
-    "$PY" - "$CUR/$1" "$2" "$3" <<'PYEOF' || { echo "run.sh: case $NAME: edit of $1 did not apply" >&2; exit 2; }
-import sys
-path, old, new = sys.argv[1:4]
-s = open(path).read()
-if old not in s:
-    sys.exit(1)
-open(path, "w").write(s.replace(old, new, 1))
-PYEOF
+    local f="$CUR/$1" s
+    s=$(cat "$f") || exit 2
+    if [[ "$s" != *"$2"* ]]; then
+        echo "run.sh: case $NAME: edit of $1 did not apply" >&2
+        exit 2
+    fi
+    printf '%s\n' "${s/"$2"/"$3"}" > "$f"
 }
 
 # both OLD NEW: the same edit in the C header and in shl_basis.glsl
@@ -97,11 +98,11 @@ lintcase() {
 # ---------------------------------------------------------------- good pairs
 variant good
 expect 0 0 "ok    basis: shl_sh_eval body" "ok    basis: table SHLI_K" "ok    gradient: order" \
-    "26 passed, 0 failed" "shlg_sum4 GLSL-only helper"
+    "30 passed, 0 failed" "shlg_sum4 GLSL-only helper"
 
 variant good_quiet
 out=$("$PY" "$CHECK" --root "$CUR" -q); rc=$?
-if [ $rc = 0 ] && [ "$out" = "26 passed, 0 failed" ]; then
+if [ $rc = 0 ] && [ "$out" = "30 passed, 0 failed" ]; then
     passed=$((passed + 1)); echo "ok    $NAME"
 else
     failed=$((failed + 1)); echo "FAIL  $NAME: -q printed: $out"
@@ -124,14 +125,12 @@ expect 0 0
 
 variant good_tricky_subset   # legal expressions that look like forbidden ones
 both "float s = 0.0f;" "float s = 0.0f; int t = (n) * 2; int u = t++ * 2; t = t & 1; u = -t * -u;
-    s = s * SHLIGHT_ITOF(t) + -1.0f * a[0] * *&b[0] == 0.0f ? s : -s;"
-edit shlight.h "* *&b[0]" "* b[0]"
-edit shlight_glsl/shl_basis.glsl "* *&b[0]" "* b[0]"
+    s = s * SHLIGHT_ITOF(t) + -1.0f * a[0] * (b[0]) == 0.0f ? s : -s; s = s * (s) + (t & u) * 1.0f;"
 expect 0 0
 
-variant good_double_literal_allowed
+variant good_double_literal_allowed   # allowed unless --require-f-suffix
 both "float s = 0.0f;" "float s = 0.5;"
-expect 0 0 -- --allow-double-literals
+expect 0 0
 
 # ---------------------------------------------------------------- signatures
 variant renamed_param
@@ -140,7 +139,7 @@ expect 1 1 "FAIL  basis: shl_sh_dot signature" "param 3 name: C \`b\`" "shl_basi
 
 variant wrong_qualifier      # C float out_v[3] is an output vec3
 edit shlight_glsl/shl_basis.glsl "out vec3 out_v" "vec3 out_v"
-expect 1 1 "FAIL  basis: shl_sh4_scale@78 signature" "param 3 \`out_v\`"
+expect 1 1 "FAIL  basis: shl_sh4_scale@79 signature" "param 3 \`out_v\`"
 
 variant wrong_array_type     # float (*out_grad)[3] is out vec3 out_grad[N], not float[N]
 edit shlight_glsl/shl_gradient.glsl "out vec3 out_grad[" "out float out_grad["
@@ -149,7 +148,7 @@ expect 1 1 "FAIL  gradient: shl_sh_eval_grad signature" "out vec3[N] out_grad"
 variant c_output_not_named_out
 edit shlight.h "float *io_acc" "float *acc"
 edit shlight_glsl/shl_basis.glsl "inout float io_acc" "inout float acc"
-expect 1 1 "FAIL  basis: shl_sh4_scale@78 signature" "must be named out_* or io_*"
+expect 1 1 "FAIL  basis: shl_sh4_scale@79 signature" "must be named out_* or io_*"
 
 variant param_count
 edit shlight_glsl/shl_basis.glsl "float shli_sq(float x)" "float shli_sq(float x, float y)"
@@ -183,7 +182,7 @@ variant missing_else_branch  # C has two #if/#else definitions, GLSL only one
 edit shlight_glsl/shl_basis.glsl "#else
 void shl_sh4_scale" "#else
 void shlg_scale_unused"
-expect 1 1 "FAIL  basis: shl_sh4_scale@90 present"
+expect 1 1 "FAIL  basis: shl_sh4_scale@91 present"
 
 variant missing_module_file
 rm "$CUR/shlight_glsl/shl_gradient.glsl"
@@ -209,7 +208,7 @@ expect 1 - "FAIL  impl: module file"
 # ---------------------------------------------------------------- bodies
 variant changed_token
 edit shlight_glsl/shl_basis.glsl "out_y[2] = SHLI_K[2] * z;" "out_y[2] = SHLI_K[2] * y;"
-expect 1 1 "FAIL  basis: shl_sh_eval body" "C \`z\` vs GLSL \`y\`" "shlight.h:53" "shl_basis.glsl:25"
+expect 1 1 "FAIL  basis: shl_sh_eval body" "C \`z\` vs GLSL \`y\`" "shlight.h:54" "shl_basis.glsl:25"
 
 variant changed_pp_in_body
 edit shlight_glsl/shl_basis.glsl "#if SHLIGHT_MAX_BANDS > 2" "#if SHLIGHT_MAX_BANDS > 3"
@@ -228,7 +227,7 @@ expect 1 1 "FAIL  gradient: shl_sh4_make body" "C \`0.5f\` vs GLSL \`0.50f\`"
 variant missing_statement
 edit shlight_glsl/shl_basis.glsl "    i >>= 1;
 " ""
-expect 1 1 "FAIL  basis: shl_sh4_scale@78 body"
+expect 1 1 "FAIL  basis: shl_sh4_scale@79 body"
 
 # ---------------------------------------------------------------- lint, one construct each
 lintcase arrow          "s = p->x;"                 "forbidden \`->\`"
@@ -251,6 +250,8 @@ lintcase gl_prefix      "float gl_t = 0.0f;"        "reserved gl_ prefix"
 lintcase cast_float     "s = (float)n;"             "C cast \`( float )\`"
 lintcase cast_int       "int t = (int)s;"           "C cast \`( int )\`"
 lintcase cast_struct    "shl_sh4 t = (shl_sh4)s;"   "C cast \`( shl_sh4 )\`"
+lintcase cast_alias     "s = (shli_real)s;"         "C cast \`( shli_real )\`"
+lintcase pointer_alias  "shli_real *p;"             "pointer declaration \`shli_real *\`"
 lintcase reserved_input "float input = 0.0f;"       "GLSL reserved word \`input\`"
 lintcase reserved_sample "float sample = 0.0f;"     "GLSL reserved word \`sample\`"
 lintcase reserved_filter "float filter = 0.0f;"     "GLSL reserved word \`filter\`"
@@ -260,7 +261,6 @@ lintcase float_no_dot   "s = 1f;"                   "float literal \`1f\`"
 lintcase float_dot_only "s = 2.f;"                  "float literal \`2.f\`"
 lintcase float_leading  "s = .5f;"                  "float literal \`.5f\`"
 lintcase float_exp      "s = 1e5f;"                 "float literal \`1e5f\`"
-lintcase double_literal "s = 0.5;"                  "without f suffix is a double"
 lintcase int_suffix_u   "int t = 1u;"               "integer literal \`1u\` with a suffix"
 lintcase int_suffix_l   "int t = 1l;"               "integer literal \`1l\` with a suffix"
 lintcase hex            "int t = 0x10;"             "hex literal \`0x10\`"
@@ -282,7 +282,12 @@ expect 1 1 "FAIL  basis: shli_sq lint" "GLSL reserved word \`filter\`"
 variant lint_line_numbers    # lint reports file:line of the C side
 edit shlight.h "    out_y[3] = -SHLI_K[3] * x;" "    out_y[3] = -SHLI_K[3] * (float)x;"
 edit shlight_glsl/shl_basis.glsl "    out_y[3] = -SHLI_K[3] * x;" "    out_y[3] = -SHLI_K[3] * (float)x;"
-expect 1 1 "FAIL  basis: shl_sh_eval lint" "shlight.h:54: C cast"
+expect 1 1 "FAIL  basis: shl_sh_eval lint" "shlight.h:55: C cast"
+
+variant lint_require_f_suffix   # opt-in: unsuffixed float literals are doubles in C
+both "float s = 0.0f;" "float s = 0.5;"
+expect 1 2 "FAIL  basis: shl_sh_dot lint" "float literal \`0.5\` without f suffix is a double" \
+    "FAIL  gradient: table SHLI_R" "float literal \`0.125\` without f suffix" -- --require-f-suffix
 
 # ---------------------------------------------------------------- tables
 variant table_value
@@ -315,12 +320,20 @@ expect 1 1 "FAIL  basis: table SHLI_BAND" "type: C \`int\`"
 variant table_int_literal_in_float_table   # GLSL ES has no implicit int -> float
 edit shlight.h "0.28209479177387814f, 0.4886025119029199f, 0.4886025119029199f," "1, 0.4886025119029199f, 0.4886025119029199f,"
 edit shlight_glsl/shl_basis.glsl "float[4](0.28209479177387814," "float[4](1,"
-expect 1 1 "FAIL  basis: table SHLI_K" "shlight.h:33: integer literal \`1\` in a float table" \
+expect 1 1 "FAIL  basis: table SHLI_K" "shlight.h:34: integer literal \`1\` in a float table" \
     "shl_basis.glsl:6: integer literal \`1\` in a float table"
 
+variant table_alias_value   # shli_real table compared as float
+edit shlight_glsl/shl_gradient.glsl "float[3](0.5, 0.25, 0.125)" "float[3](0.5, 0.25, 0.1251)"
+expect 1 1 "FAIL  gradient: table SHLI_R" "value 2: C \`0.125\`"
+
 variant table_missing
+edit shlight_glsl/shl_basis.glsl "const float SHLI_K[" "const float SHLG_K["
+expect 1 1 "FAIL  basis: table SHLI_K" "table has no GLSL counterpart"
+
+variant table_cpu_only
 edit shlight_glsl/shl_basis.glsl "const int SHLI_BAND[" "const int SHLG_BAND["
-expect 1 1 "FAIL  basis: table SHLI_BAND" "table has no GLSL counterpart"
+expect 0 0 "used by C-only helpers alone"
 
 variant table_extra
 edit shlight_glsl/shl_basis.glsl "const float SHLG_ONLY[2]" "const float SHLI_ONLY[2]"

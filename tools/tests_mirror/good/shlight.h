@@ -19,6 +19,7 @@ extern "C" {
 #endif
 
 /* >>prelude  shims and types; no kernels in this section */
+typedef double shli_real; /* internal precision: double in C, float in GLSL */
 typedef struct shl_sh4 {
     float c[4];
 } shl_sh4;
@@ -119,6 +120,14 @@ SHLIGHT_INLINE shl_sh4 shl_sh4_make(float c0)
     r.c[2] = 0.0f;
     r.c[3] = SHLIGHT_ITOF(SHLIGHT_FTOI(c0 * 2.0f)) * 0.5f;
     return r;
+}
+
+/* a scalar typedef passes by value under its own name; its tables compare as float */
+static const shli_real SHLI_R[3] = { 0.5, 0.25, 0.125 };
+
+SHLIGHT_INLINE shli_real shli_lerp(shli_real a, shli_real b, shli_real t)
+{
+    return a + (b - a) * t * SHLI_R[0];
 }
 
 #ifdef __cplusplus

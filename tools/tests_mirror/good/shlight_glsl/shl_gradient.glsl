@@ -20,3 +20,10 @@ shl_sh4 shl_sh4_make(float c0)
     r.c[3] = SHLIGHT_ITOF(SHLIGHT_FTOI(c0 * 2.0f)) * 0.5f;
     return r;
 }
+
+const float SHLI_R[3] = float[3](0.5, 0.25, 0.125);
+
+shli_real shli_lerp(shli_real a, shli_real b, shli_real t)
+{
+    return a + (b - a) * t * SHLI_R[0];
+}

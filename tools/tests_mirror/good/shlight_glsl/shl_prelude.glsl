@@ -6,6 +6,7 @@
 #endif
 #define SHLIGHT_MAX_COEFFS (SHLIGHT_MAX_BANDS * SHLIGHT_MAX_BANDS)
 #define SHLIGHT_SQRT(x) sqrt(x)
+#define shli_real float
 #define SHLIGHT_ITOF(x) float(x)
 #define SHLIGHT_FTOI(x) int(x)
 

@@ -1,0 +1,76 @@
+# shlight - build, test, bench. Targets:
+#   make example      build and run examples/hello_sh
+#   make test         everything CI runs; ends with "N passed, N failed"
+#   make bench        speed against error tables (bench/out/), callgrind instruction counts
+#   make fuzz         libFuzzer run of the basis entry point (FUZZ_SECONDS, default 60)
+#   make gen          regenerate the straight-line code and the GLSL twins (tools/gen_basis.py)
+#   make format       clang-format the hand-written sources
+CC ?= gcc
+CXX ?= g++
+PYTHON ?= /usr/bin/python3
+BUILD := build
+WARN := -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wdouble-promotion -Wcast-qual \
+        -Wstrict-prototypes -Wmissing-prototypes -Werror
+WARNXX := -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wdouble-promotion -Wcast-qual -Werror
+CFLAGS ?= -std=c99 -O2 -g
+LDLIBS := -lm
+
+.DEFAULT_GOAL := all
+.PHONY: all example test bench fuzz gen format format-check compile-matrix clean
+
+all: $(BUILD)/examples/hello_sh
+
+include tests/gl/gl.mk
+-include tests/tests.mk
+-include bench/bench.mk
+
+$(BUILD)/examples/hello_sh: examples/hello_sh.c shlight.h
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O2 $(WARN) -o $@ $< $(LDLIBS)
+
+example: $(BUILD)/examples/hello_sh
+	$(BUILD)/examples/hello_sh
+
+# GLSL twins against C on llvmpipe
+$(BUILD)/tests/test_glsl: tests/test_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Wconversion -Werror $(GL_CFLAGS) \
+	    -o $@ tests/test_glsl.c $(GL_SRCS) $(GL_LIBS)
+
+# compile matrix: C99/C11/C++98/11/17/20, gcc and clang, SHLIGHT_STATIC, two TUs linked
+MATRIX_DIR := $(BUILD)/matrix
+compile-matrix: tests/matrix_a.c tests/matrix_b.c shlight.h
+	@mkdir -p $(MATRIX_DIR)
+	@set -e; for cc in gcc clang; do for std in c99 c11; do \
+	  $$cc -std=$$std -O1 $(WARN) -c tests/matrix_a.c -o $(MATRIX_DIR)/a_$$cc$$std.o; \
+	  $$cc -std=$$std -O1 $(WARN) -c tests/matrix_b.c -o $(MATRIX_DIR)/b_$$cc$$std.o; \
+	  $$cc -o $(MATRIX_DIR)/ab_$$cc$$std $(MATRIX_DIR)/a_$$cc$$std.o $(MATRIX_DIR)/b_$$cc$$std.o -lm; \
+	  $(MATRIX_DIR)/ab_$$cc$$std; \
+	  $$cc -std=$$std -O1 $(WARN) -DSHLIGHT_STATIC -DSHLIGHT_NO_SIMD -o $(MATRIX_DIR)/st_$$cc$$std tests/matrix_a.c -DMATRIX_ALONE -lm; \
+	  $(MATRIX_DIR)/st_$$cc$$std; \
+	done; done
+	@set -e; for cxx in g++ clang++; do for std in c++98 c++11 c++17 c++20; do \
+	  $$cxx -x c++ -std=$$std -O1 $(WARNXX) -c tests/matrix_a.c -o $(MATRIX_DIR)/a_$$std.o; \
+	  $$cxx -x c++ -std=$$std -O1 $(WARNXX) -c tests/matrix_b.c -o $(MATRIX_DIR)/b_$$std.o; \
+	  $$cxx -o $(MATRIX_DIR)/ab_$$std $(MATRIX_DIR)/a_$$std.o $(MATRIX_DIR)/b_$$std.o -lm; \
+	  $(MATRIX_DIR)/ab_$$std; \
+	done; done
+	@set -e; for arch in x86-64 x86-64-v3 native; do \
+	  gcc -std=c99 -O2 -march=$$arch $(WARN) -o $(MATRIX_DIR)/simd_$$arch tests/matrix_a.c -DMATRIX_ALONE -lm; \
+	  $(MATRIX_DIR)/simd_$$arch; done
+	@echo "compile matrix: 1 passed, 0 failed"
+
+gen:
+	$(PYTHON) tools/gen_basis.py
+
+FORMAT_FILES := examples/*.c tests/*.c tests/*.h tests/*.cpp tests/gl/*.c tests/gl/*.h bench/*.c
+format:
+	clang-format -i $(wildcard $(FORMAT_FILES))
+format-check:
+	clang-format --dry-run -Werror $(wildcard $(FORMAT_FILES))
+
+test:
+	bash tests/run.sh
+
+clean:
+	rm -rf $(BUILD)

@@ -1,0 +1,24 @@
+# bench/bench.mk - benchmarks (DESIGN.md section 6). Included by the top Makefile; alone:
+#   make -f bench/bench.mk               builds build/bench/bench_basis
+#   make -f bench/bench.mk bench-basis   callgrind counts, then the timed run (tables in bench/out/)
+#   make -f bench/bench.mk bench-basis BENCH_ARGS=--quick
+# Run from the repository root. Variables are BENCH_-prefixed so the including Makefile's
+# CC / CFLAGS are left alone; include this after the including Makefile's default target.
+
+BENCH_CC ?= gcc
+BENCH_CFLAGS ?= -std=c99 -O3 -march=native -ffp-contract=fast -DNDEBUG
+BENCH_WARN ?= -Wall -Wextra
+BENCH_LDLIBS ?= -lquadmath -lm
+BENCH_ARGS ?=
+BENCH_CG_NS ?= 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 32 64
+
+build/bench/bench_basis: bench/bench_basis.c shlight.h tests/ref/shref.h
+	@mkdir -p build/bench
+	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -DBENCH_FLAGS='"$(BENCH_CC) $(BENCH_CFLAGS)"' \
+	  -o $@ bench/bench_basis.c $(BENCH_LDLIBS)
+
+bench-basis: build/bench/bench_basis
+	CC=$(BENCH_CC) sh bench/callgrind.sh "$(BENCH_CG_NS)"
+	build/bench/bench_basis --callgrind bench/out/instr.csv $(BENCH_ARGS)
+
+.PHONY: bench-basis

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# tests/run.sh - everything `make test` (and CI) runs. Each step prints its own
+# "N passed, N failed" line (steps without one count as one check); the sums close the run.
+# SHLIGHT_TEST_QUICK=1 skips the sanitizer builds. Run from the repository root.
+set -u
+cd "$(dirname "$0")/.."
+MAKE=${MAKE:-make}
+PY=${PYTHON:-python3}
+mkdir -p build/logs
+total_pass=0
+total_fail=0
+t0=$(date +%s)
+
+step() { # step NAME COMMAND...
+  local name=$1
+  shift
+  local log="build/logs/${name}.log" s=$(date +%s)
+  "$@" >"$log" 2>&1
+  local rc=$?
+  local line
+  line=$(grep -E '^(.*: )?[0-9]+ passed, [0-9]+ failed' "$log" | tail -n 1 | sed -E 's/^.*: //')
+  local p=0 f=0
+  if [ -n "$line" ]; then
+    p=$(echo "$line" | sed -E 's/^([0-9]+) passed.*/\1/')
+    f=$(echo "$line" | sed -E 's/^[0-9]+ passed, ([0-9]+) failed.*/\1/')
+    if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi
+  elif [ "$rc" -eq 0 ]; then
+    p=1
+  else
+    f=1
+  fi
+  total_pass=$((total_pass + p))
+  total_fail=$((total_fail + f))
+  printf '%-5s %-28s %5s passed, %3s failed  (%ss)\n' "$([ "$f" -eq 0 ] && echo ok || echo FAIL)" \
+    "$name" "$p" "$f" "$(($(date +%s) - s))"
+  if [ "$f" -ne 0 ]; then
+    echo "----- tail of $log"
+    tail -n 40 "$log"
+    echo "-----"
+  fi
+}
+
+backends=""
+pkg-config --exists osmesa && backends="$backends osmesa"
+pkg-config --exists egl && backends="$backends egl"
+
+step generated-code-fresh $PY tools/gen_basis.py --check
+step mirror-check $PY tools/check_mirror.py -q
+step mirror-checker-selftest bash tools/tests_mirror/run.sh
+step glslang-450-330-300es bash tools/glsl_validate.sh
+step format-check $MAKE -s format-check
+step example $MAKE -s example
+step compile-matrix $MAKE -s compile-matrix
+step build-tests $MAKE -s build/tests/test_basis build/tests/test_glm build/tests/test_glsl \
+  build/tests/test_gl_smoke build/tests/fuzz_replay
+step test_basis build/tests/test_basis
+step test_glm build/tests/test_glm
+step fuzz-corpus-replay build/tests/fuzz_replay tests/corpus/basis
+for b in $backends; do
+  step "gl-smoke-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_gl_smoke
+  step "glsl-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_glsl
+done
+if [ "${SHLIGHT_TEST_QUICK:-0}" != 1 ]; then
+  step asan-ubsan $MAKE -s test-asan
+fi
+echo "time: $(($(date +%s) - t0)) s"
+echo "$total_pass passed, $total_fail failed"
+[ "$total_fail" -eq 0 ]

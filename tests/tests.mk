@@ -1,0 +1,90 @@
+# tests/tests.mk - SH basis tests: quad-reference accuracy tests, GLM rotation tests, fuzzing.
+# Included by the top Makefile; paths are relative to the repository root. Standalone:
+#   make -f tests/tests.mk tests-basis         build the three programs below
+#   make -f tests/tests.mk tests-basis-run     build and run them (each ends "N passed, N failed")
+#   make -f tests/tests.mk test-asan           the same three under -fsanitize=address,undefined
+#   make -f tests/tests.mk fuzz                libFuzzer run (clang) for FUZZ_SECONDS (default 60)
+# Programs:
+#   build/tests/test_basis    tests/test_basis.c vs tests/ref/shref.h (binary128, -lquadmath)
+#   build/tests/test_glm      tests/test_glm.cpp (C++11, GLM rotations, header without IMPL)
+#   build/tests/fuzz_replay   tests/fuzz_replay.c + tests/fuzz_basis.c: replays a corpus
+#                             (default tests/corpus/basis) through the libFuzzer entry point
+# Note: make predefines CC (= cc) and CXX (= g++), so the ?= below only matter with make -R.
+
+TESTS_SAVED_DEFAULT_GOAL := $(.DEFAULT_GOAL)
+
+CC ?= gcc
+CXX ?= g++
+CLANG ?= clang
+TESTS_BUILD ?= build/tests
+TESTS_WARN ?= -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wdouble-promotion
+TESTS_CFLAGS ?= -std=c99 -O2 -g $(TESTS_WARN) -ffp-contract=off
+TESTS_CXXFLAGS ?= -std=c++11 -O2 -g $(TESTS_WARN) -ffp-contract=off
+TESTS_ASAN ?= -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+TESTS_QUADLIBS ?= -lquadmath -lm
+FUZZ_SECONDS ?= 60
+
+TESTS_BASIS_DEPS := tests/test_basis.c tests/ref/shref.h tests/tl.h shlight.h
+TESTS_GLM_DEPS := tests/test_glm.cpp tests/tl.h shlight.h
+TESTS_FUZZ_DEPS := tests/fuzz_replay.c tests/fuzz_basis.c shlight.h
+
+$(TESTS_BUILD)/test_basis: $(TESTS_BASIS_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -o $@ tests/test_basis.c $(TESTS_QUADLIBS)
+
+$(TESTS_BUILD)/test_glm: $(TESTS_GLM_DEPS)
+	@mkdir -p $(@D)
+	$(CXX) $(TESTS_CXXFLAGS) -o $@ tests/test_glm.cpp -lm
+
+$(TESTS_BUILD)/fuzz_replay: $(TESTS_FUZZ_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -o $@ tests/fuzz_replay.c tests/fuzz_basis.c -lm
+
+# sanitizer builds (gcc's ASan/UBSan; clang works too: make CC=clang CXX=clang++)
+$(TESTS_BUILD)/asan/test_basis: $(TESTS_BASIS_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/test_basis.c $(TESTS_QUADLIBS)
+
+$(TESTS_BUILD)/asan/test_glm: $(TESTS_GLM_DEPS)
+	@mkdir -p $(@D)
+	$(CXX) $(TESTS_CXXFLAGS) $(TESTS_ASAN) -o $@ tests/test_glm.cpp -lm
+
+$(TESTS_BUILD)/asan/fuzz_replay: $(TESTS_FUZZ_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/fuzz_replay.c tests/fuzz_basis.c -lm
+
+# libFuzzer binary (clang only)
+$(TESTS_BUILD)/fuzz_basis: tests/fuzz_basis.c shlight.h
+	@mkdir -p $(@D)
+	$(CLANG) -std=c99 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
+	    -o $@ tests/fuzz_basis.c -lm
+
+.PHONY: tests-basis tests-basis-run test-asan fuzz
+tests-basis: $(TESTS_BUILD)/test_basis $(TESTS_BUILD)/test_glm $(TESTS_BUILD)/fuzz_replay
+
+tests-basis-run: tests-basis
+	$(TESTS_BUILD)/test_basis
+	$(TESTS_BUILD)/test_glm
+	$(TESTS_BUILD)/fuzz_replay tests/corpus/basis
+
+# Each program prints its own "N passed, N failed"; the last line sums them for tests/run.sh.
+test-asan: $(TESTS_BUILD)/asan/test_basis $(TESTS_BUILD)/asan/test_glm $(TESTS_BUILD)/asan/fuzz_replay
+	@p=0; f=0; for t in "$(TESTS_BUILD)/asan/test_basis" "$(TESTS_BUILD)/asan/test_glm" \
+	    "$(TESTS_BUILD)/asan/fuzz_replay tests/corpus/basis"; do \
+	  out=$$(UBSAN_OPTIONS=print_stacktrace=1 $$t 2>&1); rc=$$?; echo "$$out"; \
+	  line=$$(echo "$$out" | grep -E '^[0-9]+ passed, [0-9]+ failed' | tail -n 1); \
+	  if [ -n "$$line" ]; then p=$$((p + $${line%% *})); \
+	    ff=$$(echo "$$line" | sed -E 's/^[0-9]+ passed, ([0-9]+) failed.*/\1/'); \
+	  else ff=0; fi; \
+	  if [ $$rc -ne 0 ] && [ $$ff -eq 0 ]; then ff=1; fi; f=$$((f + ff)); \
+	done; echo "asan: $$p passed, $$f failed"; [ $$f -eq 0 ]
+
+# copies the seed corpus into a scratch directory so that libFuzzer's additions stay out of git
+fuzz: $(TESTS_BUILD)/fuzz_basis
+	@mkdir -p $(TESTS_BUILD)/fuzz_corpus
+	cp tests/corpus/basis/* $(TESTS_BUILD)/fuzz_corpus/
+	$(TESTS_BUILD)/fuzz_basis -max_len=16 -max_total_time=$(FUZZ_SECONDS) \
+	    -artifact_prefix=$(TESTS_BUILD)/ $(TESTS_BUILD)/fuzz_corpus
+
+# do not become the including Makefile's default goal
+.DEFAULT_GOAL := $(TESTS_SAVED_DEFAULT_GOAL)
