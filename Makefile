@@ -63,7 +63,7 @@ compile-matrix: tests/matrix_a.c tests/matrix_b.c shlight.h
 gen:
 	$(PYTHON) tools/gen_basis.py
 
-FORMAT_FILES := examples/*.c tests/*.c tests/*.h tests/*.cpp tests/gl/*.c tests/gl/*.h bench/*.c
+FORMAT_FILES := shlight.h examples/*.c tests/*.c tests/*.h tests/*.cpp tests/gl/*.c tests/gl/*.h bench/*.c
 format:
 	clang-format -i $(wildcard $(FORMAT_FILES))
 format-check:

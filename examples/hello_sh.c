@@ -12,7 +12,8 @@ int main(void) {
   float n_up[3] = {0.0f, 0.0f, 1.0f};
   int i;
   shl_sh_eval(3, key, sky); /* SH of a delta light = Y(direction) */
-  for (i = 0; i < 9; ++i) sky[i] *= 2.0f;
+  for (i = 0; i < 9; ++i)
+    sky[i] *= 2.0f;
   sky[0] += 0.5f * 3.5449077f; /* uniform radiance 0.5: coefficient 0.5 * sqrt(4 pi) */
 
   /* radiance reconstructed toward +z, and how fast it changes when the direction tilts */

@@ -5,7 +5,8 @@
 #define SHL_BASIS_GLSL
 
 #if SHLIGHT_MAX_BANDS >= 1
-void shli_sh_core_1(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_1(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                    out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(x);
   SHLIGHT_UNUSED(y);
   SHLIGHT_UNUSED(z);
@@ -16,7 +17,8 @@ void shli_sh_core_1(shli_real x, shli_real y, shli_real z, shli_real t, float sg
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 2
-void shli_sh_core_2(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_2(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                    out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -36,7 +38,8 @@ void shli_sh_core_2(shli_real x, shli_real y, shli_real z, shli_real t, float sg
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 3
-void shli_sh_core_3(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_3(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                    out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -78,7 +81,8 @@ void shli_sh_core_3(shli_real x, shli_real y, shli_real z, shli_real t, float sg
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 4
-void shli_sh_core_4(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_4(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                    out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -142,7 +146,8 @@ void shli_sh_core_4(shli_real x, shli_real y, shli_real z, shli_real t, float sg
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 5
-void shli_sh_core_5(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_5(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                    out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -233,7 +238,8 @@ void shli_sh_core_5(shli_real x, shli_real y, shli_real z, shli_real t, float sg
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 6
-void shli_sh_core_6(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_6(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                    out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -356,7 +362,8 @@ void shli_sh_core_6(shli_real x, shli_real y, shli_real z, shli_real t, float sg
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 7
-void shli_sh_core_7(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_7(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                    out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -516,7 +523,8 @@ void shli_sh_core_7(shli_real x, shli_real y, shli_real z, shli_real t, float sg
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 8
-void shli_sh_core_8(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_8(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                    out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -718,7 +726,8 @@ void shli_sh_core_8(shli_real x, shli_real y, shli_real z, shli_real t, float sg
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 9
-void shli_sh_core_9(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_9(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                    out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -967,7 +976,8 @@ void shli_sh_core_9(shli_real x, shli_real y, shli_real z, shli_real t, float sg
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 10
-void shli_sh_core_10(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_10(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                     out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -1268,7 +1278,8 @@ void shli_sh_core_10(shli_real x, shli_real y, shli_real z, shli_real t, float s
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 11
-void shli_sh_core_11(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_11(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                     out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -1626,7 +1637,8 @@ void shli_sh_core_11(shli_real x, shli_real y, shli_real z, shli_real t, float s
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 12
-void shli_sh_core_12(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_12(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                     out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -2046,7 +2058,8 @@ void shli_sh_core_12(shli_real x, shli_real y, shli_real z, shli_real t, float s
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 13
-void shli_sh_core_13(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_13(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                     out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -2533,7 +2546,8 @@ void shli_sh_core_13(shli_real x, shli_real y, shli_real z, shli_real t, float s
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 14
-void shli_sh_core_14(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_14(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                     out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -3092,7 +3106,8 @@ void shli_sh_core_14(shli_real x, shli_real y, shli_real z, shli_real t, float s
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 15
-void shli_sh_core_15(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_15(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                     out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -3728,7 +3743,8 @@ void shli_sh_core_15(shli_real x, shli_real y, shli_real z, shli_real t, float s
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 16
-void shli_sh_core_16(shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core_16(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                     out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(z);
   shli_real pc = x;
   shli_real ps = y;
@@ -4445,7 +4461,8 @@ void shli_sh_core_16(shli_real x, shli_real y, shli_real z, shli_real t, float s
 }
 #endif
 
-void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, float sg, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                  out float out_y[SHLIGHT_MAX_COEFFS]) {
   switch (n) {
 #if SHLIGHT_MAX_BANDS >= 1
   case 1:

@@ -5,7 +5,8 @@
 #define SHL_GRADIENT_GLSL
 
 #if SHLIGHT_MAX_BANDS >= 1
-void shli_sh_grad_1(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_1(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(y);
   SHLIGHT_UNUSED(nx);
   SHLIGHT_UNUSED(ny);
@@ -18,7 +19,8 @@ void shli_sh_grad_1(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, f
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 2
-void shli_sh_grad_2(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_2(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[1];
   float lr;
   float q;
@@ -46,7 +48,8 @@ void shli_sh_grad_2(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, f
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 3
-void shli_sh_grad_3(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_3(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[4];
   float lr;
   float q;
@@ -95,7 +98,8 @@ void shli_sh_grad_3(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, f
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 4
-void shli_sh_grad_4(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_4(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[9];
   float lr;
   float q;
@@ -173,7 +177,8 @@ void shli_sh_grad_4(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, f
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 5
-void shli_sh_grad_5(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_5(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[16];
   float lr;
   float q;
@@ -288,7 +293,8 @@ void shli_sh_grad_5(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, f
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 6
-void shli_sh_grad_6(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_6(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[25];
   float lr;
   float q;
@@ -448,7 +454,8 @@ void shli_sh_grad_6(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, f
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 7
-void shli_sh_grad_7(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_7(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[36];
   float lr;
   float q;
@@ -661,7 +668,8 @@ void shli_sh_grad_7(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, f
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 8
-void shli_sh_grad_8(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_8(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[49];
   float lr;
   float q;
@@ -935,7 +943,8 @@ void shli_sh_grad_8(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, f
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 9
-void shli_sh_grad_9(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_9(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[64];
   float lr;
   float q;
@@ -1278,7 +1287,8 @@ void shli_sh_grad_9(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, f
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 10
-void shli_sh_grad_10(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_10(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                     out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[81];
   float lr;
   float q;
@@ -1698,7 +1708,8 @@ void shli_sh_grad_10(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, 
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 11
-void shli_sh_grad_11(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_11(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                     out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[100];
   float lr;
   float q;
@@ -2203,7 +2214,8 @@ void shli_sh_grad_11(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, 
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 12
-void shli_sh_grad_12(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_12(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                     out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[121];
   float lr;
   float q;
@@ -2801,7 +2813,8 @@ void shli_sh_grad_12(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, 
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 13
-void shli_sh_grad_13(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_13(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                     out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[144];
   float lr;
   float q;
@@ -3500,7 +3513,8 @@ void shli_sh_grad_13(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, 
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 14
-void shli_sh_grad_14(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_14(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                     out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[169];
   float lr;
   float q;
@@ -4308,7 +4322,8 @@ void shli_sh_grad_14(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, 
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 15
-void shli_sh_grad_15(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_15(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                     out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[196];
   float lr;
   float q;
@@ -5233,7 +5248,8 @@ void shli_sh_grad_15(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, 
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 16
-void shli_sh_grad_16(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_16(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                     out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   float r[225];
   float lr;
   float q;
@@ -6282,7 +6298,8 @@ void shli_sh_grad_16(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, 
 }
 #endif
 
-void shli_sh_grad(int n, float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad(int n, float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                  out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   switch (n) {
 #if SHLIGHT_MAX_BANDS >= 1
   case 1:
@@ -6372,7 +6389,8 @@ void shli_sh_grad(int n, float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float 
   }
 }
 
-void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS], out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
+                      out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   shli_real x = SHLIGHT_REAL(d[0]);
   shli_real y = SHLIGHT_REAL(d[1]);
   shli_real z = SHLIGHT_REAL(d[2]);
@@ -6415,7 +6433,9 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS], out ve
   shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, out_grad);
 }
 
-void shl_sh_eval_grad_spherical(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS], out float out_dtheta[SHLIGHT_MAX_COEFFS], out float out_dphi[SHLIGHT_MAX_COEFFS]) {
+void shl_sh_eval_grad_spherical(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
+                                out float out_dtheta[SHLIGHT_MAX_COEFFS],
+                                out float out_dphi[SHLIGHT_MAX_COEFFS]) {
   shli_real x = SHLIGHT_REAL(d[0]);
   shli_real y = SHLIGHT_REAL(d[1]);
   shli_real z = SHLIGHT_REAL(d[2]);
@@ -6522,7 +6542,9 @@ void shl_sh_eval_grad_spherical(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFF
   }
 }
 
-void shl_sh_grad_from_spherical(int n, vec3 d, float dtheta[SHLIGHT_MAX_COEFFS], float dphi[SHLIGHT_MAX_COEFFS], out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shl_sh_grad_from_spherical(int n, vec3 d, float dtheta[SHLIGHT_MAX_COEFFS],
+                                float dphi[SHLIGHT_MAX_COEFFS],
+                                out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   shli_real x = SHLIGHT_REAL(d[0]);
   shli_real y = SHLIGHT_REAL(d[1]);
   shli_real z = SHLIGHT_REAL(d[2]);

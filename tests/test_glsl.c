@@ -9,8 +9,8 @@
  * l times larger). Both were set from the float recurrence's error measured against a
  * binary128 reference (tests/test_basis prints it), not from this test's own outcome.
  * GLSL supports 1..16 bands (the straight-line kernels; the table-driven loops above 16 bands
- * are C only). The compute path (GLSL 4.50) checks every kernel; the fragment path (GLSL 3.30, which
- * flushes denormals) and the GLSL ES 3.00 fragment path check the kernels whose outputs fit
+ * are C only). The compute path (GLSL 4.50) checks every kernel; the fragment path (GLSL 3.30,
+ * which flushes denormals) and the GLSL ES 3.00 fragment path check the kernels whose outputs fit
  * in 8 vec4 per pixel. */
 #include "../shlight.h"
 #include "gl/glrun.h"
@@ -64,7 +64,9 @@ static void make_dirs(int nonunit) {
   }
 }
 
-static double tol_y(int n) { return 2.5e-7 + 1.2e-7 * n; }
+static double tol_y(int n) {
+  return 2.5e-7 + 1.2e-7 * n;
+}
 
 static char defines[128];
 static void set_bands(int maxb) {
@@ -98,8 +100,8 @@ static void check_eval_compute(int n, int maxb) {
       if (!(e <= err)) err = e; /* NaN counts as failure */
     }
   }
-  printf("     shl_sh_eval compute   n=%2d (built for %2d): max |GLSL - C| = %.2e (tol %.2e)\n",
-         n, maxb, err, tol_y(n));
+  printf("     shl_sh_eval compute   n=%2d (built for %2d): max |GLSL - C| = %.2e (tol %.2e)\n", n,
+         maxb, err, tol_y(n));
   TL_CHECK(err <= tol_y(n), "shl_sh_eval n=%d: %.3e > %.3e", n, err, tol_y(n));
 }
 
@@ -145,8 +147,8 @@ static void check_grad_compute(int n) {
       }
     }
   }
-  printf("     shl_sh_eval_grad compute n=%2d: max |dY| = %.2e, max |dgrad|/max|grad| = %.2e\n",
-         n, err_y, err_g);
+  printf("     shl_sh_eval_grad compute n=%2d: max |dY| = %.2e, max |dgrad|/max|grad| = %.2e\n", n,
+         err_y, err_g);
   TL_CHECK(err_y <= tol_y(n), "grad values n=%d: %.3e", n, err_y);
   TL_CHECK(err_g <= tol_y(n) * (1 + n), "grad n=%d: %.3e > %.3e", n, err_g, tol_y(n) * (1 + n));
 }
@@ -199,10 +201,9 @@ static void check_spherical_compute(int n) {
       }
     }
   }
-  printf("     spherical partials + Jacobian compute n=%2d: max |GLSL - C| = %.2e (max %.2e)\n",
-         n, err, gmax);
-  TL_CHECK(err <= tol_y(n) * (1 + n) * (gmax > 1.0 ? gmax : 1.0), "spherical n=%d: %.3e", n,
-           err);
+  printf("     spherical partials + Jacobian compute n=%2d: max |GLSL - C| = %.2e (max %.2e)\n", n,
+         err, gmax);
+  TL_CHECK(err <= tol_y(n) * (1 + n) * (gmax > 1.0 ? gmax : 1.0), "spherical n=%d: %.3e", n, err);
 }
 
 /* shl_sh_eval on the fragment path (GLSL 3.30 or ES 3.00), n <= 5 (25 floats per pixel) */
@@ -248,14 +249,16 @@ static void test_context(void) {
 static void test_eval_compute(void) {
   static const int ns[] = {1, 2, 3, 4, 5, 8, 10, 16};
   size_t i;
-  for (i = 0; i < sizeof ns / sizeof ns[0]; ++i) check_eval_compute(ns[i], ns[i]);
+  for (i = 0; i < sizeof ns / sizeof ns[0]; ++i)
+    check_eval_compute(ns[i], ns[i]);
   check_eval_compute(3, 6); /* run-time n below the shader's band count: the switch */
 }
 
 static void test_grad_compute(void) {
   static const int ns[] = {1, 2, 3, 4, 6, 10, 16};
   size_t i;
-  for (i = 0; i < sizeof ns / sizeof ns[0]; ++i) check_grad_compute(ns[i]);
+  for (i = 0; i < sizeof ns / sizeof ns[0]; ++i)
+    check_grad_compute(ns[i]);
 }
 
 static void test_spherical_compute(void) {
@@ -265,7 +268,8 @@ static void test_spherical_compute(void) {
 
 static void test_eval_fragment(void) {
   int n;
-  for (n = 1; n <= 5; ++n) check_eval_fragment(n, "#version 330");
+  for (n = 1; n <= 5; ++n)
+    check_eval_fragment(n, "#version 330");
   check_eval_fragment(4, "#version 300 es");
 }
 

@@ -464,6 +464,19 @@ def replace_region(text, name, lines, path):
     return text[:i] + '\n'.join(lines) + '\n' + text[j:]
 
 
+def clang_format(text, path):
+    """the project's one style (.clang-format) for the header and the GLSL twins alike"""
+    import subprocess
+    name = 'shlight.h' if path.endswith('.h') else 'glsl.c'
+    try:
+        r = subprocess.run(['clang-format', '--style=file', '--assume-filename=' +
+                            os.path.join(ROOT, name)], input=text, capture_output=True,
+                           text=True, check=True)
+    except (OSError, subprocess.CalledProcessError) as e:
+        raise SystemExit('gen_basis: clang-format failed (%s); install clang-format' % e)
+    return r.stdout
+
+
 def main():
     check = '--check' in sys.argv
     stale = []
@@ -478,6 +491,7 @@ def main():
         gp = os.path.join(ROOT, 'shlight_glsl', 'shl_%s.glsl' % sec)
         old = open(gp).read() if os.path.exists(gp) else ''
         outputs.append((gp, old, glsl_module(new, sec, deps)))
+    outputs = [(path, old, clang_format(fresh, path)) for path, old, fresh in outputs]
     for path, old, fresh in outputs:
         if old != fresh:
             stale.append(os.path.relpath(path, ROOT))
