@@ -1,6 +1,7 @@
 # bench/bench.mk - benchmarks (DESIGN.md section 6). Included by the top Makefile; alone:
 #   make -f bench/bench.mk               builds build/bench/bench_basis
 #   make -f bench/bench.mk bench-basis   callgrind counts, then the timed run (tables in bench/out/)
+#   (`make bench` in the top Makefile runs bench-basis)
 #   make -f bench/bench.mk bench-basis BENCH_ARGS=--quick
 # Run from the repository root. Variables are BENCH_-prefixed so the including Makefile's
 # CC / CFLAGS are left alone; include this after the including Makefile's default target.
@@ -11,14 +12,20 @@ BENCH_WARN ?= -Wall -Wextra
 BENCH_LDLIBS ?= -lquadmath -lm
 BENCH_ARGS ?=
 BENCH_CG_NS ?= 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 32 64
+# which shlight.h was measured: commit, "+dirty" and the file's git blob id when the working
+# copy differs from the commit
+BENCH_REV := $(shell git rev-parse --short HEAD 2>/dev/null)$(shell git diff --quiet HEAD -- shlight.h 2>/dev/null || echo "+dirty, blob `git hash-object shlight.h | cut -c1-10`")
 
 build/bench/bench_basis: bench/bench_basis.c shlight.h tests/ref/shref.h
 	@mkdir -p build/bench
 	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -DBENCH_FLAGS='"$(BENCH_CC) $(BENCH_CFLAGS)"' \
+	  -DBENCH_REV='"$(BENCH_REV)"' \
 	  -o $@ bench/bench_basis.c $(BENCH_LDLIBS)
 
 bench-basis: build/bench/bench_basis
 	CC=$(BENCH_CC) sh bench/callgrind.sh "$(BENCH_CG_NS)"
 	build/bench/bench_basis --callgrind bench/out/instr.csv $(BENCH_ARGS)
 
-.PHONY: bench-basis
+bench: bench-basis
+
+.PHONY: bench bench-basis

@@ -26,6 +26,9 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#ifndef BENCH_REV
+#define BENCH_REV "?"
+#endif
 #ifndef BENCH_FLAGS
 #define BENCH_FLAGS "(flags not recorded: build with bench/bench.mk)"
 #endif
@@ -35,8 +38,8 @@
 #define NOINL __attribute__((noinline, noclone, used))
 #endif
 
-#define NDIR 1024  /* random unit directions, cycled by the timing loop */
-#define NPOLE 258  /* 256 near-pole (theta log-uniform in [1e-7, 1e-2], both poles) + 2 exact */
+#define NDIR 1024 /* random unit directions, cycled by the timing loop */
+#define NPOLE 258 /* 256 near-pole (theta log-uniform in [1e-7, 1e-2], both poles) + 2 exact */
 #define MAXN 64
 #define MAXC (MAXN * MAXN)
 
@@ -48,7 +51,9 @@ static uint64_t sm_next(void) {
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
   return z ^ (z >> 31);
 }
-static double sm_u01(void) { return (double)(sm_next() >> 11) * (1.0 / 9007199254740992.0); }
+static double sm_u01(void) {
+  return (double)(sm_next() >> 11) * (1.0 / 9007199254740992.0);
+}
 
 static const double PI_D = 3.14159265358979323846;
 static double rnd_d[NDIR][3], pole_d[NPOLE][3]; /* unit, double */
@@ -66,7 +71,8 @@ static void make_dirs(void) {
     rnd_d[j][1] = r * sin(ph);
     rnd_d[j][2] = z;
     len = sqrt(rnd_d[j][0] * rnd_d[j][0] + rnd_d[j][1] * rnd_d[j][1] + z * z); /* renormalise */
-    for (i = 0; i < 3; i++) rnd_d[j][i] /= len;
+    for (i = 0; i < 3; i++)
+      rnd_d[j][i] /= len;
   }
   for (j = 0; j < 2 * k; j++) {
     double th = pow(10.0, -7.0 + 5.0 * sm_u01()), ph = 2.0 * PI_D * sm_u01();
@@ -85,8 +91,10 @@ static void make_dirs(void) {
     for (k = 0; k < 3; k++) {
       f[k] = (float)v[k];
       g[k] = (float)(v[k] * s);
-      if (j < NDIR) soa_rnd[k][j] = f[k];
-      else soa_pole[k][j - NDIR] = f[k];
+      if (j < NDIR)
+        soa_rnd[k][j] = f[k];
+      else
+        soa_pole[k][j - NDIR] = f[k];
     }
   }
 }
@@ -151,8 +159,12 @@ NOINL void bw_empty(int n, const float *d, bufs *b) {
   (void)d;
   (void)b;
 }
-NOINL void bw_eval_rt(int n, const float *d, bufs *b) { shl_sh_eval(n, d, b->y); }
-NOINL void bw_accurate(int n, const float *d, bufs *b) { shl_sh_eval_accurate(n, d, b->y); }
+NOINL void bw_eval_rt(int n, const float *d, bufs *b) {
+  shl_sh_eval(n, d, b->y);
+}
+NOINL void bw_accurate(int n, const float *d, bufs *b) {
+  shl_sh_eval_accurate(n, d, b->y);
+}
 NOINL void bw_batch(int n, const float *d, bufs *b) {
   (void)d;
   shl_sh_eval_batch(n, NDIR, soa_rnd[0], soa_rnd[1], soa_rnd[2], b->bout);
@@ -163,23 +175,23 @@ NOINL void bw_batch16(int n, const float *d, bufs *b) { /* the 16 directions fro
 }
 
 /* one wrapper per n for the static-inline kernels (n a literal, as in user code) */
-#define NLIST(X)                                                                              \
+#define NLIST(X)                                                                                   \
   X(1) X(2) X(3) X(4) X(5) X(6) X(7) X(8) X(9) X(10) X(11) X(12) X(13) X(14) X(15) X(16) X(32) X(64)
-#define W_EVAL(N)                                                                             \
-  NOINL void bw_eval_##N(int n, const float *d, bufs *b) {                                    \
-    (void)n;                                                                                  \
-    shl_sh_eval(N, d, b->y);                                                                  \
+#define W_EVAL(N)                                                                                  \
+  NOINL void bw_eval_##N(int n, const float *d, bufs *b) {                                         \
+    (void)n;                                                                                       \
+    shl_sh_eval(N, d, b->y);                                                                       \
   }
-#define W_GRAD(N)                                                                             \
-  NOINL void bw_grad_##N(int n, const float *d, bufs *b) {                                    \
-    (void)n;                                                                                  \
-    shl_sh_eval_grad(N, d, b->y, b->g);                                                       \
+#define W_GRAD(N)                                                                                  \
+  NOINL void bw_grad_##N(int n, const float *d, bufs *b) {                                         \
+    (void)n;                                                                                       \
+    shl_sh_eval_grad(N, d, b->y, b->g);                                                            \
   }
-#define W_GSPH(N)                                                                             \
-  NOINL void bw_grad_sph_##N(int n, const float *d, bufs *b) {                                \
-    (void)n;                                                                                  \
-    shl_sh_eval_grad_spherical(N, d, b->y, b->dth, b->dph);                                   \
-    shl_sh_grad_from_spherical(N, d, b->dth, b->dph, b->g);                                   \
+#define W_GSPH(N)                                                                                  \
+  NOINL void bw_grad_sph_##N(int n, const float *d, bufs *b) {                                     \
+    (void)n;                                                                                       \
+    shl_sh_eval_grad_spherical(N, d, b->y, b->dth, b->dph);                                        \
+    shl_sh_grad_from_spherical(N, d, b->dth, b->dph, b->g);                                        \
   }
 NLIST(W_EVAL)
 NLIST(W_GRAD)
@@ -208,14 +220,15 @@ static const variant VAR[NV] = {
     {"eval_rt", "shl_sh_eval, n a run-time argument", 0, bw_eval_rt, 0, 1},
     {"accurate", "shl_sh_eval_accurate", 0, bw_accurate, 0, 1},
     {"batch", "shl_sh_eval_batch, count 1024, time per direction", 0, bw_batch, 0, NDIR},
-    {"batch16", "shl_sh_eval_batch, count 16 (output in L1), per direction", 0, bw_batch16, 0,
-     16},
+    {"batch16", "shl_sh_eval_batch, count 16 (output in L1), per direction", 0, bw_batch16, 0, 16},
     {"grad", "shl_sh_eval_grad: values + Cartesian gradient", F_GRAD, 0, 1, 1},
     {"grad_sph", "shl_sh_eval_grad_spherical + shl_sh_grad_from_spherical", F_GSPH, 0, 1, 1},
     {"loop", "plain-loop yardstick (research base_f), run-time n", 0, bw_loop, 0, 1},
     {"empty", "empty function: harness overhead", 0, bw_empty, 0, 1},
 };
-static wfn var_fn(int v, int ni) { return VAR[v].per_n ? VAR[v].per_n[ni] : VAR[v].rt; }
+static wfn var_fn(int v, int ni) {
+  return VAR[v].per_n ? VAR[v].per_n[ni] : VAR[v].rt;
+}
 static int var_find(const char *s) {
   int v;
   for (v = 0; v < NV; v++)
@@ -254,15 +267,15 @@ static double quantile(double *v, int k, double q) {
 }
 
 /* ------------------------------------------------------------------ results */
-static int g_nlist[NNS], g_nn;      /* selected n (indices into NSET) */
-static int g_var[NV];               /* selected variants */
-static double R_ns[NV][NNS];        /* median ns per call (batch: per direction) */
-static double R_spread[NV][NNS];    /* (p75 - p25) / median */
-static double R_err[NV][NNS][2];    /* value error: [0] random, [1] near-pole */
-static double R_gerr[NV][NNS][2];   /* gradient error / max |grad| */
-static double R_gerr_np[NV][NNS];   /* gradient, near-pole set without the two exact poles */
-static double R_floor[NNS][2];      /* float rounding floor of the reference */
-static double R_instr[NV][NNS];     /* callgrind instructions per call, < 0: none */
+static int g_nlist[NNS], g_nn;    /* selected n (indices into NSET) */
+static int g_var[NV];             /* selected variants */
+static double R_ns[NV][NNS];      /* median ns per call (batch: per direction) */
+static double R_spread[NV][NNS];  /* (p75 - p25) / median */
+static double R_err[NV][NNS][2];  /* value error: [0] random, [1] near-pole */
+static double R_gerr[NV][NNS][2]; /* gradient error / max |grad| */
+static double R_gerr_np[NV][NNS]; /* gradient, near-pole set without the two exact poles */
+static double R_floor[NNS][2];    /* float rounding floor of the reference */
+static double R_instr[NV][NNS];   /* callgrind instructions per call, < 0: none */
 static double R_floor_g[NNS][2];
 
 static void time_n(int ni, int samples, double sample_ms, bufs *b) {
@@ -309,7 +322,8 @@ static float *batch_set(int n, int cnt, const float *x, const float *y, const fl
     if (j > cnt - w) j = cnt - w;
     shl_sh_eval_batch(n, w, x + j, y + j, z + j, t);
     for (i = 0; i < n * n; i++)
-      for (k = 0; k < w; k++) o[(size_t)i * cnt + j + k] = t[(size_t)i * w + k];
+      for (k = 0; k < w; k++)
+        o[(size_t)i * cnt + j + k] = t[(size_t)i * w + k];
     if (j + w >= cnt) break;
   }
   free(t);
@@ -334,7 +348,8 @@ static void errors_values(int nmax, bufs *b) {
       shref_eval_d(nmax, d, ref);
       for (ii = 0; ii < g_nn; ii++) {
         int ni = g_nlist[ii], n = NSET[ni], nc = n * n;
-        for (i = 0; i < nc; i++) upd(&R_floor[ni][set], fabs((double)(float)ref[i] - ref[i]));
+        for (i = 0; i < nc; i++)
+          upd(&R_floor[ni][set], fabs((double)(float)ref[i] - ref[i]));
         for (v = 0; v < NV; v++) {
           if (!g_var[v] || VAR[v].is_grad || v == V_EMPTY) continue;
           if (v == V_BATCH || v == V_BATCH16) {
@@ -344,13 +359,15 @@ static void errors_values(int nmax, bufs *b) {
             continue;
           }
           var_fn(v, ni)(n, d, b);
-          for (i = 0; i < nc; i++) upd(&R_err[v][ni][set], fabs((double)b->y[i] - ref[i]));
+          for (i = 0; i < nc; i++)
+            upd(&R_err[v][ni][set], fabs((double)b->y[i] - ref[i]));
         }
       }
     }
   }
   for (ii = 0; ii < g_nn; ii++)
-    for (q = 0; q < 4; q++) free(bat[q >> 1][g_nlist[ii]][q & 1]);
+    for (q = 0; q < 4; q++)
+      free(bat[q >> 1][g_nlist[ii]][q & 1]);
 }
 /* gradient variants on the scaled sets (|d| in [0.1, 10]) */
 static void errors_grad(int nmax, int nrand, bufs *b) {
@@ -366,7 +383,8 @@ static void errors_grad(int nmax, int nrand, bufs *b) {
         int ni = g_nlist[ii], n = NSET[ni], nc = n * n;
         double gmax = 0.0;
         for (i = 0; i < nc; i++)
-          for (k = 0; k < 3; k++) gmax = fmax(gmax, fabs(rg[i][k]));
+          for (k = 0; k < 3; k++)
+            gmax = fmax(gmax, fabs(rg[i][k]));
         if (!(gmax > 1e-12)) gmax = 1.0; /* n = 1: the gradient is 0 (reference: ~1e-27) */
         for (i = 0; i < nc; i++)
           for (k = 0; k < 3; k++)
@@ -377,7 +395,8 @@ static void errors_grad(int nmax, int nrand, bufs *b) {
           var_fn(v, ni)(n, d, b);
           for (i = 0; i < nc; i++) {
             upd(&R_err[v][ni][set], fabs((double)b->y[i] - ry[i]));
-            for (k = 0; k < 3; k++) upd(&e, fabs((double)b->g[i][k] - rg[i][k]) / gmax);
+            for (k = 0; k < 3; k++)
+              upd(&e, fabs((double)b->g[i][k] - rg[i][k]) / gmax);
           }
           upd(&R_gerr[v][ni][set], e);
           if (set && !exact) upd(&R_gerr_np[v][ni], e);
@@ -389,14 +408,20 @@ static void errors_grad(int nmax, int nrand, bufs *b) {
 
 /* ------------------------------------------------------------------ output */
 static void fmt_ns(char *s, double v) {
-  if (v < 0) strcpy(s, "");
-  else if (v < 10) sprintf(s, "%.2f", v);
-  else if (v < 100) sprintf(s, "%.1f", v);
-  else sprintf(s, "%.0f", v);
+  if (v < 0)
+    strcpy(s, "");
+  else if (v < 10)
+    sprintf(s, "%.2f", v);
+  else if (v < 100)
+    sprintf(s, "%.1f", v);
+  else
+    sprintf(s, "%.0f", v);
 }
 static void fmt_e(char *s, double v) {
-  if (v < 0) strcpy(s, "");
-  else sprintf(s, "%.1e", v);
+  if (v < 0)
+    strcpy(s, "");
+  else
+    sprintf(s, "%.1e", v);
 }
 static void pr(FILE **fo, const char *f, const char *s) {
   fprintf(fo[0], f, s);
@@ -412,22 +437,32 @@ static void table_head(FILE **fo, const char *title, const char *first) {
     pr(fo, " %s |", s);
   }
   pr(fo, "%s\n|---|", "");
-  for (ii = 0; ii < g_nn; ii++) pr(fo, "%s---|", "");
+  for (ii = 0; ii < g_nn; ii++)
+    pr(fo, "%s---|", "");
   pr(fo, "%s\n", "");
 }
 /* what: 0 ns, 1 ratio to loop, 2 ratio to eval, 3 err random, 4 err pole, 5 grad random,
    6 grad pole, 7 instr, 8 grad pole without exact poles */
 static double cell(int what, int v, int ni) {
   switch (what) {
-  case 0: return R_ns[v][ni];
-  case 1: return g_var[V_LOOP] ? R_ns[v][ni] / R_ns[V_LOOP][ni] : -1;
-  case 2: return g_var[V_EVAL] ? R_ns[v][ni] / R_ns[V_EVAL][ni] : -1;
-  case 3: return R_err[v][ni][0];
-  case 4: return R_err[v][ni][1];
-  case 5: return R_gerr[v][ni][0];
-  case 6: return R_gerr[v][ni][1];
-  case 7: return R_instr[v][ni];
-  default: return R_gerr_np[v][ni];
+  case 0:
+    return R_ns[v][ni];
+  case 1:
+    return g_var[V_LOOP] ? R_ns[v][ni] / R_ns[V_LOOP][ni] : -1;
+  case 2:
+    return g_var[V_EVAL] ? R_ns[v][ni] / R_ns[V_EVAL][ni] : -1;
+  case 3:
+    return R_err[v][ni][0];
+  case 4:
+    return R_err[v][ni][1];
+  case 5:
+    return R_gerr[v][ni][0];
+  case 6:
+    return R_gerr[v][ni][1];
+  case 7:
+    return R_instr[v][ni];
+  default:
+    return R_gerr_np[v][ni];
   }
 }
 static void table(FILE **fo, const char *title, int what, int grad_only, int errs) {
@@ -439,11 +474,16 @@ static void table(FILE **fo, const char *title, int what, int grad_only, int err
     pr(fo, "| %s |", VAR[v].name);
     for (ii = 0; ii < g_nn; ii++) {
       double c = cell(what, v, g_nlist[ii]);
-      if (what == 0) fmt_ns(s, c);
-      else if (what <= 2) sprintf(s, "%.2f", c);
-      else if (what == 7 && c < 0) s[0] = 0;
-      else if (what == 7) sprintf(s, "%.0f", c);
-      else fmt_e(s, c);
+      if (what == 0)
+        fmt_ns(s, c);
+      else if (what <= 2)
+        sprintf(s, "%.2f", c);
+      else if (what == 7 && c < 0)
+        s[0] = 0;
+      else if (what == 7)
+        sprintf(s, "%.0f", c);
+      else
+        fmt_e(s, c);
       pr(fo, " %s |", s);
     }
     pr(fo, "%s\n", "");
@@ -452,20 +492,23 @@ static void table(FILE **fo, const char *title, int what, int grad_only, int err
     pr(fo, "| %s |", "float rounding floor");
     for (ii = 0; ii < g_nn; ii++) {
       int ni = g_nlist[ii];
-      fmt_e(s, what == 3 ? R_floor[ni][0] : what == 4 ? R_floor[ni][1]
-                         : what == 5 ? R_floor_g[ni][0] : R_floor_g[ni][1]);
+      fmt_e(s, what == 3   ? R_floor[ni][0]
+               : what == 4 ? R_floor[ni][1]
+               : what == 5 ? R_floor_g[ni][0]
+                           : R_floor_g[ni][1]);
       pr(fo, " %s |", s);
     }
     pr(fo, "%s\n", "");
   }
 }
 
-/* Log-log SVG: x = ns per call, y = max error (worst of the two sets; gradient error / max|grad|
-   for the gradient variants), one labelled polyline per variant across n. */
+/* Log-log SVG: x = ns per call, y = max error (worst of the two sets; for the gradient variants
+   the gradient error / max|grad| without the two exact poles, where grad_sph returns 0 by
+   contract; n = 1 has an exactly zero gradient and is left out), one polyline per variant. */
 static int svg_pt(int v, int ni, double *lx, double *ly) {
-  double e = VAR[v].is_grad ? fmax(R_gerr[v][ni][0], R_gerr[v][ni][1])
+  double e = VAR[v].is_grad ? fmax(R_gerr[v][ni][0], R_gerr_np[v][ni])
                             : fmax(R_err[v][ni][0], R_err[v][ni][1]);
-  if (!(e > 0) || !(R_ns[v][ni] > 0) || v == V_EMPTY || !g_var[v]) return 0;
+  if (!(e > 1e-12) || !(R_ns[v][ni] > 0) || v == V_EMPTY || !g_var[v]) return 0;
   *lx = log10(R_ns[v][ni]);
   *ly = log10(e);
   return 1;
@@ -483,30 +526,39 @@ static void write_svg(const char *path) {
       if (svg_pt(v, g_nlist[ii], &lx, &ly))
         x0 = fmin(x0, lx), x1 = fmax(x1, lx), y0 = fmin(y0, ly), y1 = fmax(y1, ly);
   x0 = floor(x0), x1 = fmax(ceil(x1), x0 + 1), y0 = floor(y0), y1 = fmax(ceil(y1), y0 + 1);
-#define SX(u) (L + ((u) - x0) / (x1 - x0) * (W - L - R))
-#define SY(u) (H - B - ((u) - y0) / (y1 - y0) * (H - T - B))
-  fprintf(f, "<svg xmlns='http://www.w3.org/2000/svg' width='%.0f' height='%.0f' "
-             "font-family='sans-serif' font-size='11'>\n<rect width='100%%' height='100%%' "
-             "fill='white'/>\n<text x='%.0f' y='24' font-size='14'>shlight basis: time vs max "
-             "error (log-log; point labels = n)</text>\n", W, H, L);
+#define SX(u) (L + ((u)-x0) / (x1 - x0) * (W - L - R))
+#define SY(u) (H - B - ((u)-y0) / (y1 - y0) * (H - T - B))
+  fprintf(f,
+          "<svg xmlns='http://www.w3.org/2000/svg' width='%.0f' height='%.0f' "
+          "font-family='sans-serif' font-size='11'>\n<rect width='100%%' height='100%%' "
+          "fill='white'/>\n<text x='%.0f' y='24' font-size='14'>shlight basis: time vs max "
+          "error (log-log; point labels = n)</text>\n",
+          W, H, L);
   for (e = x0; e <= x1 + 1e-9; e++)
-    fprintf(f, "<line x1='%.1f' y1='%.0f' x2='%.1f' y2='%.0f' stroke='#ddd'/><text x='%.1f' "
-               "y='%.0f' text-anchor='middle'>1e%g</text>\n",
+    fprintf(f,
+            "<line x1='%.1f' y1='%.0f' x2='%.1f' y2='%.0f' stroke='#ddd'/><text x='%.1f' "
+            "y='%.0f' text-anchor='middle'>1e%g</text>\n",
             SX(e), T, SX(e), H - B, SX(e), H - B + 15, e);
   for (e = y0; e <= y1 + 1e-9; e++)
-    fprintf(f, "<line x1='%.0f' y1='%.1f' x2='%.0f' y2='%.1f' stroke='#ddd'/><text x='%.0f' "
-               "y='%.1f' text-anchor='end'>1e%g</text>\n",
+    fprintf(f,
+            "<line x1='%.0f' y1='%.1f' x2='%.0f' y2='%.1f' stroke='#ddd'/><text x='%.0f' "
+            "y='%.1f' text-anchor='end'>1e%g</text>\n",
             L, SY(e), W - R, SY(e), L - 4, SY(e) + 4, e);
-  fprintf(f, "<text x='%.0f' y='%.0f' text-anchor='middle'>ns per call (batch: per "
-             "direction)</text>\n<text x='14' y='%.0f' transform='rotate(-90 14 %.0f)' "
-             "text-anchor='middle'>max abs error (gradient variants: gradient error / "
-             "max|grad|)</text>\n", (L + W - R) / 2, H - 12, (T + H - B) / 2, (T + H - B) / 2);
+  fprintf(f,
+          "<text x='%.0f' y='%.0f' text-anchor='middle'>ns per call (batch: per "
+          "direction)</text>\n<text x='14' y='%.0f' transform='rotate(-90 14 %.0f)' "
+          "text-anchor='middle'>max abs error (gradient variants: gradient error / "
+          "max|grad|, exact poles excluded)</text>\n",
+          (L + W - R) / 2, H - 12, (T + H - B) / 2, (T + H - B) / 2);
   for (v = 0; v < NV; v++) {
     int any = 0;
     for (ii = 0; ii < g_nn; ii++)
       if (svg_pt(v, g_nlist[ii], &lx, &ly))
-        fprintf(f, "%s%.1f,%.1f", any++ ? " " : "<polyline fill='none' stroke-width='1.5' "
-                                                "points='", SX(lx), SY(ly));
+        fprintf(f, "%s%.1f,%.1f",
+                any++ ? " "
+                      : "<polyline fill='none' stroke-width='1.5' "
+                        "points='",
+                SX(lx), SY(ly));
     if (!any) continue;
     fprintf(f, "' stroke='%s'/>\n", col[v]);
     for (ii = 0; ii < g_nn; ii++) {
@@ -518,10 +570,11 @@ static void write_svg(const char *path) {
                 SY(ly) - 3, col[v], n);
       fprintf(f, "\n");
     }
-    fprintf(f, "<line x1='%.0f' y1='%d' x2='%.0f' y2='%d' stroke='%s' stroke-width='2'/><text "
-               "x='%.0f' y='%d'>%s</text>\n",
-            W - R + 12, 50 + 16 * row, W - R + 32, 50 + 16 * row, col[v], W - R + 37,
-            54 + 16 * row, VAR[v].name);
+    fprintf(f,
+            "<line x1='%.0f' y1='%d' x2='%.0f' y2='%d' stroke='%s' stroke-width='2'/><text "
+            "x='%.0f' y='%d'>%s</text>\n",
+            W - R + 12, 50 + 16 * row, W - R + 32, 50 + 16 * row, col[v], W - R + 37, 54 + 16 * row,
+            VAR[v].name);
     row++;
   }
 #undef SX
@@ -563,12 +616,14 @@ static void cpu_model(char *s, size_t cap) {
 }
 
 static void usage(void) {
-  fprintf(stderr,
-          "usage: bench_basis [--quick] [--n LIST] [--variants LIST] [--samples S] [--sample-ms T]\n"
-          "                   [--no-error] [--callgrind FILE] [--out DIR]\n"
-          "       bench_basis --count-only VARIANT N K\n"
-          "  LIST: comma separated; n from 1..16,32,64; variants: eval,eval_rt,accurate,batch,\n"
-          "  batch16,grad,grad_sph,loop,empty (loop and eval are always timed: they are the ratios' bases)\n");
+  fprintf(
+      stderr,
+      "usage: bench_basis [--quick] [--n LIST] [--variants LIST] [--samples S] [--sample-ms T]\n"
+      "                   [--no-error] [--callgrind FILE] [--out DIR]\n"
+      "       bench_basis --count-only VARIANT N K\n"
+      "  LIST: comma separated; n from 1..16,32,64; variants: eval,eval_rt,accurate,batch,\n"
+      "  batch16,grad,grad_sph,loop,empty (loop and eval are always timed: they are the ratios' "
+      "bases)\n");
   exit(2);
 }
 
@@ -581,7 +636,8 @@ int main(int argc, char **argv) {
   char path[512], s[128];
 
   for (a = 0; a < NV; a++)
-    for (ii = 0; ii < NNS; ii++) R_instr[a][ii] = -1;
+    for (ii = 0; ii < NNS; ii++)
+      R_instr[a][ii] = -1;
   b.y = (float *)malloc(sizeof(float) * MAXC);
   b.dth = (float *)malloc(sizeof(float) * MAXC);
   b.dph = (float *)malloc(sizeof(float) * MAXC);
@@ -605,15 +661,24 @@ int main(int argc, char **argv) {
     return 0;
   }
   for (a = 1; a < argc; a++) {
-    if (!strcmp(argv[a], "--quick")) quick = 1;
-    else if (!strcmp(argv[a], "--no-error")) noerr = 1;
-    else if (!strcmp(argv[a], "--n") && a + 1 < argc) nl = argv[++a];
-    else if (!strcmp(argv[a], "--variants") && a + 1 < argc) vl = argv[++a];
-    else if (!strcmp(argv[a], "--samples") && a + 1 < argc) samples = atoi(argv[++a]);
-    else if (!strcmp(argv[a], "--sample-ms") && a + 1 < argc) sample_ms = atof(argv[++a]);
-    else if (!strcmp(argv[a], "--callgrind") && a + 1 < argc) cgfile = argv[++a];
-    else if (!strcmp(argv[a], "--out") && a + 1 < argc) outdir = argv[++a];
-    else usage();
+    if (!strcmp(argv[a], "--quick"))
+      quick = 1;
+    else if (!strcmp(argv[a], "--no-error"))
+      noerr = 1;
+    else if (!strcmp(argv[a], "--n") && a + 1 < argc)
+      nl = argv[++a];
+    else if (!strcmp(argv[a], "--variants") && a + 1 < argc)
+      vl = argv[++a];
+    else if (!strcmp(argv[a], "--samples") && a + 1 < argc)
+      samples = atoi(argv[++a]);
+    else if (!strcmp(argv[a], "--sample-ms") && a + 1 < argc)
+      sample_ms = atof(argv[++a]);
+    else if (!strcmp(argv[a], "--callgrind") && a + 1 < argc)
+      cgfile = argv[++a];
+    else if (!strcmp(argv[a], "--out") && a + 1 < argc)
+      outdir = argv[++a];
+    else
+      usage();
   }
   if (quick) { /* still >= 11 samples of >= 2 ms; gradient error on 256 random directions */
     samples = samples < 11 ? samples : 11;
@@ -628,26 +693,33 @@ int main(int argc, char **argv) {
     for (t = strtok(buf, ","); t; t = strtok(0, ",")) {
       int ni = n_index(atoi(t));
       if (ni < 0) usage();
-      for (ii = 0; ii < g_nn && g_nlist[ii] != ni; ii++) continue;
+      for (ii = 0; ii < g_nn && g_nlist[ii] != ni; ii++)
+        continue;
       if (ii == g_nn) g_nlist[g_nn++] = ni;
     }
     for (a = 0; a < g_nn; a++) /* ascending */
       for (ii = a + 1; ii < g_nn; ii++)
         if (g_nlist[ii] < g_nlist[a]) v = g_nlist[a], g_nlist[a] = g_nlist[ii], g_nlist[ii] = v;
   } else
-    for (g_nn = 0; g_nn < NNS; g_nn++) g_nlist[g_nn] = g_nn;
+    for (g_nn = 0; g_nn < NNS; g_nn++)
+      g_nlist[g_nn] = g_nn;
   if (vl) {
     char buf[256], *t;
     strncpy(buf, vl, sizeof buf - 1);
     buf[sizeof buf - 1] = 0;
     for (t = strtok(buf, ","); t; t = strtok(0, ","))
-      if ((v = var_find(t)) < 0) usage();
-      else g_var[v] = 1;
+      if ((v = var_find(t)) < 0)
+        usage();
+      else
+        g_var[v] = 1;
     g_var[V_LOOP] = g_var[V_EVAL] = 1;
   } else
-    for (v = 0; v < NV; v++) g_var[v] = 1;
-  for (ii = 0; ii < g_nn; ii++) nmax = NSET[g_nlist[ii]] > nmax ? NSET[g_nlist[ii]] : nmax;
-  if ((g_var[V_BATCH] || g_var[V_BATCH16]) && !(b.bout = (float *)malloc(sizeof(float) * (size_t)nmax * nmax * NDIR)))
+    for (v = 0; v < NV; v++)
+      g_var[v] = 1;
+  for (ii = 0; ii < g_nn; ii++)
+    nmax = NSET[g_nlist[ii]] > nmax ? NSET[g_nlist[ii]] : nmax;
+  if ((g_var[V_BATCH] || g_var[V_BATCH16]) &&
+      !(b.bout = (float *)malloc(sizeof(float) * (size_t)nmax * nmax * NDIR)))
     return 2;
   if (cgfile) load_callgrind(cgfile);
 
@@ -673,7 +745,8 @@ int main(int argc, char **argv) {
   cpu_model(s, sizeof s);
   pr(fo, "## shlight basis benchmark (bench/bench_basis.c)\n\n%s", "");
   pr(fo, "Build: `%s`", BENCH_FLAGS);
-  pr(fo, " (compiler %s).  \n", __VERSION__);
+  pr(fo, " (compiler %s)", __VERSION__);
+  pr(fo, "; shlight.h at %s.  \n", BENCH_REV);
   pr(fo, "CPU: %s.  \n", s);
   sprintf(s, "%d samples of >= %.1f ms each, median, variants interleaved", samples, sample_ms);
   pr(fo, "Time: per-thread CPU time, %s; ns per call include the harness (row `empty`).  \n", s);
@@ -683,21 +756,32 @@ int main(int argc, char **argv) {
   pr(fo, "; gradients over %s directions scaled by factors in [0.1, 10], error / max|grad|.  \n",
      s);
   {
-    double worst = 0;
+    double worst = -1, sum = 0;
+    int wv = 0, wn = 0, cnt = 0;
     for (v = 0; v < NV; v++)
       for (ii = 0; ii < g_nn; ii++)
-        if (g_var[v]) worst = fmax(worst, R_spread[v][g_nlist[ii]]);
-    sprintf(s, "%.0f %%", 100 * worst);
-    pr(fo, "Noise: largest interquartile spread / median of any cell: %s.\n", s);
+        if (g_var[v]) {
+          double q = R_spread[v][g_nlist[ii]];
+          sum += q, cnt++;
+          if (q > worst) worst = q, wv = v, wn = NSET[g_nlist[ii]];
+        }
+    sprintf(s, "%.0f %% on average, at most %.0f %% (%s, n = %d)", 100 * sum / cnt, 100 * worst,
+            VAR[wv].name, wn);
+    pr(fo, "Noise: interquartile spread of the samples / median: %s.\n", s);
   }
   table(fo, "### ns per call (batch: per direction)", 0, 0, 0);
   table(fo, "### ratio to the plain loop `loop` (same run)", 1, 0, 0);
   table(fo, "### value + gradient: ratio to `eval` (value alone, same run)", 2, 1, 0);
-  if (cgfile) table(fo, "### instructions per call (callgrind, -O3 -march=x86-64-v3; "
-                        "batch: per direction, AVX2 path)", 7, 0, 0);
+  if (cgfile)
+    table(fo,
+          "### instructions per call (callgrind, -O3 -march=x86-64-v3; "
+          "batch: per direction, AVX2 path)",
+          7, 0, 0);
   if (!noerr) {
-    table(fo, "### max abs error, 1024 random unit directions (grad variants: values at the "
-              "scaled inputs)", 3, 0, 1);
+    table(fo,
+          "### max abs error, 1024 random unit directions (grad variants: values at the "
+          "scaled inputs)",
+          3, 0, 1);
     table(fo, "### max abs error, 258 near-pole directions (theta in [1e-7, 1e-2] + exact poles)",
           4, 0, 1);
     table(fo, "### gradient: max abs error / max|grad|, random directions, |d| in [0.1, 10]", 5, 1,
@@ -718,10 +802,14 @@ int main(int argc, char **argv) {
         fprintf(fo[1], "%s,%d,%.4g,%.4g,", VAR[v].name, NSET[ni], R_ns[v][ni],
                 R_ns[v][ni] / R_ns[V_LOOP][ni]);
         if (R_instr[v][ni] >= 0) fprintf(fo[1], "%.0f", R_instr[v][ni]);
-        if (noerr || v == V_EMPTY) fprintf(fo[1], ",,");
-        else fprintf(fo[1], ",%.3e,%.3e", R_err[v][ni][0], R_err[v][ni][1]);
-        if (noerr || !VAR[v].is_grad) fprintf(fo[1], ",,\n");
-        else fprintf(fo[1], ",%.3e,%.3e\n", R_gerr[v][ni][0], R_gerr[v][ni][1]);
+        if (noerr || v == V_EMPTY)
+          fprintf(fo[1], ",,");
+        else
+          fprintf(fo[1], ",%.3e,%.3e", R_err[v][ni][0], R_err[v][ni][1]);
+        if (noerr || !VAR[v].is_grad)
+          fprintf(fo[1], ",,\n");
+        else
+          fprintf(fo[1], ",%.3e,%.3e\n", R_gerr[v][ni][0], R_gerr[v][ni][1]);
       }
     fclose(fo[1]);
   }

@@ -54,7 +54,10 @@ xargs -P "$JOBS" -L 1 sh -c '
   echo "$2 ${tot:-0}" >"$f.tot"' <"$TMP/jobs"
 
 {
-  echo "### instructions per call (callgrind, \`$CC $CGFLAGS\`; batch: per direction)"
+  REV=$(git rev-parse --short HEAD 2>/dev/null || echo "?")
+  git diff --quiet HEAD -- shlight.h 2>/dev/null ||
+    REV="$REV+dirty, blob $(git hash-object shlight.h | cut -c1-10)"
+  echo "### instructions per call (callgrind, \`$CC $CGFLAGS\`; shlight.h at $REV; batch: per direction)"
   echo
   printf '| variant |'; for n in $NS; do printf ' n=%s |' "$n"; done; echo
   printf '|---|'; for n in $NS; do printf -- '---|'; done; echo

@@ -5,6 +5,88 @@
 #define SHL_BASIS_GLSL
 
 #if SHLIGHT_MAX_BANDS >= 1
+void shli_sh_poly_1(vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
+  SHLIGHT_UNUSED(d);
+  out_y[0] = 0.282094792f;
+}
+#endif
+
+#if SHLIGHT_MAX_BANDS >= 2
+void shli_sh_poly_2(vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
+  float x = d[0];
+  float y = d[1];
+  float z = d[2];
+  out_y[0] = 0.282094792f;
+  out_y[2] = 0.488602512f * z;
+  out_y[3] = -0.488602512f * x;
+  out_y[1] = -0.488602512f * y;
+}
+#endif
+
+#if SHLIGHT_MAX_BANDS >= 3
+void shli_sh_poly_3(vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
+  float x = d[0];
+  float y = d[1];
+  float z = d[2];
+  float z2;
+  float pc;
+  float ps;
+  float xf;
+  z2 = z * z;
+  out_y[0] = 0.282094792f;
+  out_y[2] = 0.488602512f * z;
+  out_y[6] = 0.946174696f * z2 + -0.315391565f;
+  out_y[3] = -0.488602512f * x;
+  out_y[1] = -0.488602512f * y;
+  xf = -1.09254843f * z;
+  out_y[7] = xf * x;
+  out_y[5] = xf * y;
+  pc = x * x - y * y;
+  ps = 2.0f * x * y;
+  out_y[8] = 0.546274215f * pc;
+  out_y[4] = 0.546274215f * ps;
+}
+#endif
+
+#if SHLIGHT_MAX_BANDS >= 4
+void shli_sh_poly_4(vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
+  float x = d[0];
+  float y = d[1];
+  float z = d[2];
+  float z2;
+  float pc;
+  float ps;
+  float qc;
+  float xf;
+  z2 = z * z;
+  out_y[0] = 0.282094792f;
+  out_y[2] = 0.488602512f * z;
+  out_y[6] = 0.946174696f * z2 + -0.315391565f;
+  out_y[12] = (1.86588166f * z2 + -1.119529f) * z;
+  out_y[3] = -0.488602512f * x;
+  out_y[1] = -0.488602512f * y;
+  xf = -1.09254843f * z;
+  out_y[7] = xf * x;
+  out_y[5] = xf * y;
+  xf = -2.285229f * z2 + 0.457045799f;
+  out_y[13] = xf * x;
+  out_y[11] = xf * y;
+  pc = x * x - y * y;
+  ps = 2.0f * x * y;
+  out_y[8] = 0.546274215f * pc;
+  out_y[4] = 0.546274215f * ps;
+  xf = 1.44530572f * z;
+  out_y[14] = xf * pc;
+  out_y[10] = xf * ps;
+  qc = x * pc - y * ps;
+  ps = x * ps + y * pc;
+  pc = qc;
+  out_y[15] = -0.59004359f * pc;
+  out_y[9] = -0.59004359f * ps;
+}
+#endif
+
+#if SHLIGHT_MAX_BANDS >= 1
 void shli_sh_core_1(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
                     out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(x);
@@ -4556,19 +4638,45 @@ void shl_sh_eval(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
   shli_real x = SHLIGHT_REAL(d[0]);
   shli_real y = SHLIGHT_REAL(d[1]);
   shli_real z = SHLIGHT_REAL(d[2]);
-  shli_real e = x * x + y * y + z * z - 1.0;
-  shli_real k = 1.0 + e * (-0.5 + 0.375 * e);
+  shli_real e;
+  shli_real k;
   shli_real az;
   float sg;
   SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  switch (n) {
+  /* up to 4 bands, float Horner forms straight from d are within 2.1e-7 (README): no
+     normalisation, no division, no double */
+  case 1:
+    shli_sh_poly_1(d, out_y);
+    return;
+#if SHLIGHT_MAX_BANDS >= 2
+  case 2:
+    shli_sh_poly_2(d, out_y);
+    return;
+#endif
+#if SHLIGHT_MAX_BANDS >= 3
+  case 3:
+    shli_sh_poly_3(d, out_y);
+    return;
+#endif
+#if SHLIGHT_MAX_BANDS >= 4
+  case 4:
+    shli_sh_poly_4(d, out_y);
+    return;
+#endif
+  default:
+    break;
+  }
   if (n > SHLIGHT_MAX_BANDS) {
     n = SHLIGHT_MAX_BANDS;
   }
+  e = x * x + y * y + z * z - 1.0;
+  k = 1.0 + e * (-0.5 + 0.375 * e);
   x = x * k;
   y = y * k;
   z = z * k;
   az = SHLIGHT_ABSR(z);
-  sg = z < 0.0 ? -1.0f : 1.0f;
+  sg = SHLIGHT_SIGN1(z);
   shli_sh_core(n, x, y, z, (x * x + y * y) / (1.0 + az), sg, out_y);
 }
 

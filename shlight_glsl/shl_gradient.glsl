@@ -6398,7 +6398,9 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
   shli_real r;
   shli_real iu;
   float ir;
+  float ib;
   float sg;
+  int i;
   SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
   if (n > SHLIGHT_MAX_BANDS) {
     n = SHLIGHT_MAX_BANDS;
@@ -6412,7 +6414,8 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
   if (SHLIGHT_ABSR(z) > mx) {
     mx = SHLIGHT_ABSR(z);
   }
-  if (!(mx > 0.0 && mx <= SHLIGHT_REAL_MAX)) {
+  if (!(SHLIGHT_ABSR(x) + SHLIGHT_ABSR(y) + SHLIGHT_ABSR(z) > 0.0 && mx <= SHLIGHT_REAL_MAX)) {
+    /* zero, NaN (the sum is NaN) or infinite */
     x = 0.0;
     y = 0.0;
     z = 1.0;
@@ -6427,10 +6430,30 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
   x = x * iu;
   y = y * iu;
   z = z * iu;
-  ir = mx > 0.0 ? SHLIGHT_FLOAT(iu / mx) : 0.0f;
-  sg = z < 0.0 ? -1.0f : 1.0f;
+  /* 1 / |d|; below |d| = 1e-30 the projection runs at unit radius and 1 / |d| is applied
+     afterwards as two finite factors, so entries that fit in a float stay exact and the others
+     overflow to +-inf (never inf * 0 or inf - inf) */
+  ir = 0.0f;
+  ib = 1.0f;
+  if (mx > 0.0) {
+    ir = SHLIGHT_FLOAT(iu / mx);
+    if (iu / mx > 1.0e30) {
+      ir = SHLIGHT_FLOAT(SHLIGHT_SQRTR(iu / mx));
+      ib = ir;
+    }
+  }
+  sg = SHLIGHT_SIGN1(z);
   shli_sh_core(n, x, y, z, (x * x + y * y) / (1.0 + SHLIGHT_ABSR(z)), sg, out_y);
-  shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, out_grad);
+  if (ib == 1.0f) {
+    shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, out_grad);
+  } else {
+    shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), 1.0f, out_grad);
+    for (i = 0; i < n * n; ++i) {
+      out_grad[i][0] = (out_grad[i][0] * ir) * ib;
+      out_grad[i][1] = (out_grad[i][1] * ir) * ib;
+      out_grad[i][2] = (out_grad[i][2] * ir) * ib;
+    }
+  }
 }
 
 void shl_sh_eval_grad_spherical(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
@@ -6466,13 +6489,16 @@ void shl_sh_eval_grad_spherical(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFF
   if (n > SHLIGHT_MAX_BANDS) {
     n = SHLIGHT_MAX_BANDS;
   }
+  if (n < 1) {
+    return;
+  }
   if (SHLIGHT_ABSR(y) > mx) {
     mx = SHLIGHT_ABSR(y);
   }
   if (SHLIGHT_ABSR(z) > mx) {
     mx = SHLIGHT_ABSR(z);
   }
-  if (!(mx > 0.0 && mx <= SHLIGHT_REAL_MAX)) {
+  if (!(SHLIGHT_ABSR(x) + SHLIGHT_ABSR(y) + SHLIGHT_ABSR(z) > 0.0 && mx <= SHLIGHT_REAL_MAX)) {
     x = 0.0;
     y = 0.0;
     z = 1.0;
@@ -6560,6 +6586,9 @@ void shl_sh_grad_from_spherical(int n, vec3 d, float dtheta[SHLIGHT_MAX_COEFFS],
   SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
   if (n > SHLIGHT_MAX_BANDS) {
     n = SHLIGHT_MAX_BANDS;
+  }
+  if (n < 1) {
+    return;
   }
   if (rxy > 0.0 && r2 <= SHLIGHT_REAL_MAX) {
     tx = SHLIGHT_FLOAT(z * x / (r2 * rxy));

@@ -51,16 +51,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 static void fuzz_fail(const char *what, int n, const float d[3]) {
   uint32_t b[3];
   memcpy(b, d, sizeof b);
-  printf("FAIL fuzz_basis: %s (n=%d, d = %a %a %a = 0x%08x 0x%08x 0x%08x)\n", what, n,
-         (double)d[0], (double)d[1], (double)d[2], (unsigned)b[0], (unsigned)b[1],
-         (unsigned)b[2]);
+  printf("FAIL fuzz_basis: %s (n=%d, d = %a %a %a = 0x%08x 0x%08x 0x%08x)\n", what, n, (double)d[0],
+         (double)d[1], (double)d[2], (unsigned)b[0], (unsigned)b[1], (unsigned)b[2]);
   fflush(stdout);
   if (!fuzz_basis_soft_fail) abort();
   fuzz_basis_failures++;
 }
-#define FUZZ_CHECK(cond, what)                                                               \
-  do {                                                                                       \
-    if (!(cond)) fuzz_fail(what, n, d);                                                      \
+#define FUZZ_CHECK(cond, what)                                                                     \
+  do {                                                                                             \
+    if (!(cond)) fuzz_fail(what, n, d);                                                            \
   } while (0)
 
 static float *alloc_f(size_t count) {
@@ -134,7 +133,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (degenerate) {
       size_t i;
       int nz = 0;
-      for (i = 0; i < 3 * nn; i++) nz += g[i] != 0.0f;
+      for (i = 0; i < 3 * nn; i++)
+        nz += g[i] != 0.0f;
       FUZZ_CHECK(nz == 0, "shl_sh_eval_grad(degenerate d): gradient not zero");
     }
 
@@ -152,18 +152,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     shl_sh_grad_from_spherical(n, d, dt, dp, (float(*)[3])g2);
     if (in_range) {
       double st = sqrt(ad[0] * ad[0] + ad[1] * ad[1]) / r;
-      if (st >= 1e-6)
-        FUZZ_CHECK(finite_all(g2, 3 * nn), "shl_sh_grad_from_spherical non-finite");
+      if (st >= 1e-6) FUZZ_CHECK(finite_all(g2, 3 * nn), "shl_sh_grad_from_spherical non-finite");
       if (d[0] == 0.0f && d[1] == 0.0f) {
         size_t i;
         int nz = 0;
-        for (i = 0; i < 3 * nn; i++) nz += g2[i] != 0.0f;
+        for (i = 0; i < 3 * nn; i++)
+          nz += g2[i] != 0.0f;
         FUZZ_CHECK(nz == 0, "shl_sh_grad_from_spherical at the pole not 0");
       }
     }
 
     { /* batch: count lanes, raw (permuted / sign-flipped d) and unit */
-      float *xs = alloc_f((size_t)count), *ys = alloc_f((size_t)count), *zs = alloc_f((size_t)count);
+      float *xs = alloc_f((size_t)count), *ys = alloc_f((size_t)count),
+            *zs = alloc_f((size_t)count);
       float *out = alloc_f(nn * (size_t)count);
       for (j = 0; j < count; j++) {
         xs[j] = (j & 1) ? -d[j % 3] : d[j % 3];

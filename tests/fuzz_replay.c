@@ -109,7 +109,8 @@ int main(int argc, char **argv) {
   if (argc < 2)
     replay_path("tests/corpus/basis");
   else
-    for (i = 1; i < argc; i++) replay_path(argv[i]);
+    for (i = 1; i < argc; i++)
+      replay_path(argv[i]);
   if (g_passed + g_failed == 0) {
     printf("FAIL fuzz_replay: no input found\n");
     g_failed++;

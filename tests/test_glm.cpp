@@ -31,9 +31,9 @@
 
 namespace {
 
-const int NB = 10;  // bands
+const int NB = 10; // bands
 const int NC = NB * NB;
-const double U32 = 1.0 / 16777216.0;  // float unit roundoff
+const double U32 = 1.0 / 16777216.0; // float unit roundoff
 const double PI = 3.14159265358979323846;
 
 uint64_t g_state = 0x61adULL;
@@ -43,7 +43,9 @@ uint64_t next_u64() {
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
   return z ^ (z >> 31);
 }
-double u01() { return static_cast<double>(next_u64() >> 11) * (1.0 / 9007199254740992.0); }
+double u01() {
+  return static_cast<double>(next_u64() >> 11) * (1.0 / 9007199254740992.0);
+}
 
 glm::dvec3 rand_dir() {
   double z = 2.0 * u01() - 1.0, ph = 2.0 * PI * u01(), r = std::sqrt(std::fmax(0.0, 1.0 - z * z));
@@ -55,14 +57,18 @@ glm::dmat3 rand_rotation() {
   return glm::dmat3(glm::rotate(glm::dmat4(1.0), angle, axis));
 }
 
-double target_eval(int n) {  // same as tests/test_basis.c
+double target_eval(int n) { // same as tests/test_basis.c
   if (n <= 4) return 3e-7;
   if (n <= 16) return 3e-7 * std::pow(2e-6 / 3e-7, std::log(n / 4.0) / std::log(4.0));
   return 2e-6 * std::pow(5.0, std::log(n / 16.0) / std::log(2.0));
 }
-double grad_scale(int l) { return std::sqrt(l * (l + 1.0) * (2.0 * l + 1.0) / (4.0 * PI)); }
+double grad_scale(int l) {
+  return std::sqrt(l * (l + 1.0) * (2.0 * l + 1.0) / (4.0 * PI));
+}
 // Error of one Y_lm at a float-rounded direction relative to the exact direction.
-double err_y(int l) { return target_eval(l + 1) + std::sqrt(3.0) * U32 * grad_scale(l); }
+double err_y(int l) {
+  return target_eval(l + 1) + std::sqrt(3.0) * U32 * grad_scale(l);
+}
 
 void eval_at(const glm::dvec3 &v, float *y) {
   float d[3] = {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
@@ -138,7 +144,8 @@ void test_rotation_invariance_projection() {
   std::vector<double> zx, zw;
   gauss_legendre(N, zx, zw);
   double c[NC], cp[NC], E[NB], B = 0, G = 0, worst = 0, maxdiff = 0;
-  for (int i = 0; i < NC; i++) c[i] = 2 * u01() - 1;
+  for (int i = 0; i < NC; i++)
+    c[i] = 2 * u01() - 1;
   for (int l = 0; l < NB; l++) {
     E[l] = 0;
     for (int m = -l; m <= l; m++) {
@@ -153,7 +160,8 @@ void test_rotation_invariance_projection() {
     glm::dmat3 R = r == 0 ? glm::dmat3(1.0) : rand_rotation();
     glm::dmat3 Rinv = glm::transpose(R);
     float y[NC], yr[NC];
-    for (int i = 0; i < NC; i++) cp[i] = 0;
+    for (int i = 0; i < NC; i++)
+      cp[i] = 0;
     for (int a = 0; a < N; a++)
       for (int b = 0; b < M; b++) {
         double z = zx[static_cast<size_t>(a)], s = std::sqrt(1 - z * z), ph = 2 * PI * b / M;
@@ -162,12 +170,15 @@ void test_rotation_invariance_projection() {
         eval_at(d, y);
         eval_at(Rinv * d, yr);
         double g = 0;
-        for (int i = 0; i < NC; i++) g += c[i] * static_cast<double>(yr[i]);
-        for (int i = 0; i < NC; i++) cp[i] += w * g * static_cast<double>(y[i]);
+        for (int i = 0; i < NC; i++)
+          g += c[i] * static_cast<double>(yr[i]);
+        for (int i = 0; i < NC; i++)
+          cp[i] += w * g * static_cast<double>(y[i]);
       }
     for (int l = 0; l < NB; l++) {
       double Ep = 0, dc = B * std::sqrt(4 * PI) + G * 4 * PI * err_y(l);
-      for (int m = -l; m <= l; m++) Ep += cp[l * (l + 1) + m] * cp[l * (l + 1) + m];
+      for (int m = -l; m <= l; m++)
+        Ep += cp[l * (l + 1) + m] * cp[l * (l + 1) + m];
       double tol = 2 * std::sqrt(E[l] * (2 * l + 1)) * dc + (2 * l + 1) * dc * dc;
       worst = std::fmax(worst, std::fabs(Ep - E[l]) / tol);
       maxdiff = std::fmax(maxdiff, std::fabs(Ep - E[l]) / E[l]);
@@ -175,7 +186,7 @@ void test_rotation_invariance_projection() {
         bad++;
         std::printf("  rotation %d band %d: E' %.9g vs E %.9g (tol %.2e)\n", r, l, Ep, E[l], tol);
       }
-      if (r == 0)  // identity: the projection must give back c itself
+      if (r == 0) // identity: the projection must give back c itself
         for (int m = -l; m <= l; m++)
           TL_CHECK(std::fabs(cp[l * (l + 1) + m] - c[l * (l + 1) + m]) <= dc,
                    "identity projection l=%d m=%d: %.3e", l, m,
@@ -196,7 +207,7 @@ void test_addition_theorem_rotated() {
   for (int r = 0; r < 200; r++) {
     glm::dmat3 R = rand_rotation();
     glm::dvec3 a = rand_dir(), b = rand_dir();
-    if (r % 10 == 0) b = glm::normalize(a + 1e-3 * rand_dir());  // nearly parallel pairs
+    if (r % 10 == 0) b = glm::normalize(a + 1e-3 * rand_dir()); // nearly parallel pairs
     double t = glm::dot(a, b) / (glm::length(a) * glm::length(b));
     eval_at(R * a, ya);
     eval_at(R * b, yb);
@@ -220,7 +231,7 @@ void test_addition_theorem_rotated() {
   TL_CHECK(bad == 0, "%d (pair, band) sums off", bad);
 }
 
-}  // namespace
+} // namespace
 
 int main() {
   TL_RUN(test_band_energy_rotated);

@@ -333,6 +333,128 @@ def gen_batch(n):
     return declare(L, [('SHLI_V', v, None) for v in ('pc', 'ps', 'qc', 'gc', 'gs', 'xa', 'xb', 'dd')])
 
 
+
+# ---------------------------------------------------------------- small n: float polynomials
+POLY_BANDS = 4     # n <= POLY_BANDS: Horner forms in float straight from d (Sloan-style)
+
+
+def xpoly(l, m):
+    """X_l^m(z) as polynomial coefficients [c0, c1, ...] in z (plain recurrence, double)"""
+    p2, p1 = [0.0], [diag(m)]
+    if l == m:
+        return p1
+    for k in range(m + 1, l + 1):
+        a, b = alpha(k, m), beta(k, m)
+        p = [0.0] + [a * c for c in p1]
+        for i, c in enumerate(p2):
+            p[i] -= b * c
+        p2, p1 = p1, p
+    return p1
+
+
+def horner(coefs, var):
+    """expression for sum coefs[i] var^i (float literals)"""
+    e = lit_f(coefs[-1])
+    for c in reversed(coefs[:-1]):
+        e = '%s * %s + %s' % (e, var, lit_f(c)) if c != 0.0 else '%s * %s' % (e, var)
+    return e
+
+
+def gen_poly(n):
+    """shli_sh_poly_<n>(d, out_y): float Horner forms in z^2 times (x + iy)^m, d unit"""
+    L = []
+    w = L.append
+    w('SHLIGHT_INLINE void shli_sh_poly_%d(const float d[3], float *out_y) {' % n)
+    if n == 1:
+        w('  SHLIGHT_UNUSED(d);')
+        w('  out_y[0] = %s;' % lit_f(diag(0)))
+        w('}')
+        return L
+    w('  float x = d[0];')
+    w('  float y = d[1];')
+    w('  float z = d[2];')
+    w('@DECLS@')
+    if n >= 3:
+        w('  z2 = z * z;')
+    for m in range(n):
+        if m == 2:
+            w('  pc = x * x - y * y;')
+            w('  ps = 2.0f * x * y;')
+        elif m == 3:
+            w('  qc = x * pc - y * ps;')
+            w('  ps = x * ps + y * pc;')
+            w('  pc = qc;')
+        cu = 'x' if m == 1 else 'pc'
+        su = 'y' if m == 1 else 'ps'
+        for l in range(m, n):
+            c = xpoly(l, m)
+            odd = (l - m) % 2 == 1
+            ev = [c[i] for i in range(1 if odd else 0, len(c), 2)]
+            e = horner(ev, 'z2') if len(ev) > 1 else lit_f(ev[0])
+            if odd:
+                e = '(%s) * z' % e if len(ev) > 1 else '%s * z' % e
+            if m == 0:
+                w('  out_y[%d] = %s;' % (idx(l, 0), e))
+            elif len(ev) == 1 and not odd:
+                w('  out_y[%d] = %s * %s;' % (idx(l, m), e, cu))
+                w('  out_y[%d] = %s * %s;' % (idx(l, -m), e, su))
+            else:
+                w('  xf = %s;' % e)
+                w('  out_y[%d] = xf * %s;' % (idx(l, m), cu))
+                w('  out_y[%d] = xf * %s;' % (idx(l, -m), su))
+    w('}')
+    return declare(L, [('float', 'z2', None), ('float', 'pc', None), ('float', 'ps', None),
+                       ('float', 'qc', None), ('float', 'xf', None)])
+
+
+def gen_batch_poly(n):
+    """SIMD twin of gen_poly: the batch kernel for n <= POLY_BANDS"""
+    L = []
+    w = L.append
+    w('static void shli_sh_batch_%d(SHLI_V x, SHLI_V y, SHLI_V z, float *out, ptrdiff_t stride) {' % n)
+    if n == 1:
+        for v in ('x', 'y', 'z', 'stride'):
+            w('  (void)%s;' % v)
+        w('  SHLI_VSTORE(out, SHLI_VSET(%s));' % lit_f(diag(0)))
+        w('}')
+        return L
+    w('@DECLS@')
+    if n >= 3:
+        w('  z2 = SHLI_VMUL(z, z);')
+
+    def vh(coefs, var):
+        e = 'SHLI_VSET(%s)' % lit_f(coefs[-1])
+        for c in reversed(coefs[:-1]):
+            e = 'SHLI_VMADD(%s, %s, SHLI_VSET(%s))' % (e, var, lit_f(c)) if c != 0.0 else \
+                'SHLI_VMUL(%s, %s)' % (e, var)
+        return e
+    for m in range(n):
+        if m == 2:
+            w('  pc = SHLI_VNMADD(y, y, SHLI_VMUL(x, x));')
+            w('  ps = SHLI_VMUL(SHLI_VADD(x, x), y);')
+        elif m == 3:
+            w('  qc = SHLI_VNMADD(y, ps, SHLI_VMUL(x, pc));')
+            w('  ps = SHLI_VMADD(x, ps, SHLI_VMUL(y, pc));')
+            w('  pc = qc;')
+        cu = 'x' if m == 1 else 'pc'
+        su = 'y' if m == 1 else 'ps'
+        for l in range(m, n):
+            c = xpoly(l, m)
+            odd = (l - m) % 2 == 1
+            ev = [c[i] for i in range(1 if odd else 0, len(c), 2)]
+            e = vh(ev, 'z2') if len(ev) > 1 else 'SHLI_VSET(%s)' % lit_f(ev[0])
+            if odd:
+                e = 'SHLI_VMUL(%s, z)' % e
+            if m == 0:
+                w('  SHLI_VSTORE(out + %d * stride, %s);' % (idx(l, 0), e))
+            else:
+                w('  xf = %s;' % e)
+                w('  SHLI_VSTORE(out + %d * stride, SHLI_VMUL(xf, %s));' % (idx(l, m), cu))
+                w('  SHLI_VSTORE(out + %d * stride, SHLI_VMUL(xf, %s));' % (idx(l, -m), su))
+    w('}')
+    return declare(L, [('SHLI_V', v, None) for v in ('z2', 'pc', 'ps', 'qc', 'xf')])
+
+
 # ---------------------------------------------------------------- regions
 def c_regions():
     tab, diagv = gen_tables()
@@ -340,6 +462,8 @@ def c_regions():
     body = []
     body += fmt_table('shli_real', 'SHLI_SH_TAB', '%d' % len(tab), tab, lit_d, False)
     body += fmt_table('float', 'SHLI_SH_DIAG', '%d' % len(diagv), diagv, lit_f, False)
+    for n in range(1, POLY_BANDS + 1):
+        body += [''] + gen_poly(n)
     for n in range(1, UNROLLED + 1):
         body += [''] + gen_core(n)
     R['basis'] = body
@@ -349,7 +473,7 @@ def c_regions():
     R['gradient'] = gb
     bb = []
     for n in range(1, UNROLLED + 1):
-        bb += [''] + gen_batch(n)
+        bb += [''] + (gen_batch_poly(n) if n <= POLY_BANDS else gen_batch(n))
     bb += ['', 'typedef void (*shli_sh_batch_fn)(SHLI_V, SHLI_V, SHLI_V, float *, ptrdiff_t);',
            'static const shli_sh_batch_fn SHLI_SH_BATCH[%d] = {' % (UNROLLED + 1),
            '    0, ' + ', '.join('shli_sh_batch_%d' % n for n in range(1, UNROLLED + 1)) + '};']
@@ -426,7 +550,7 @@ def split_items(lines):
 def guard(kind, name):
     if kind == 'tab' or name.endswith('_loop'):
         return '#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS'
-    m = re.match(r'shli_sh_(?:core|grad)_(\d+)$', name)
+    m = re.match(r'shli_sh_(?:core|grad|poly)_(\d+)$', name)
     if m:
         return '#if SHLIGHT_MAX_BANDS >= %s' % m.group(1)
     return None

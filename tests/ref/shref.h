@@ -78,7 +78,9 @@ extern shref_q sqrtq(shref_q);
 #define SHREF_FN static inline
 #endif
 
-SHREF_FN shref_q shref_pi(void) { return acosq((shref_q)-1); }
+SHREF_FN shref_q shref_pi(void) {
+  return acosq((shref_q)-1);
+}
 
 /* Coefficients of the theta recurrence, built once (quad, exact up to final rounding):
  * A[l][m] = sqrt((4l^2-1)/(l^2-m^2)), B[l][m] = sqrt(((l-1)^2-m^2)/(4(l-1)^2-1)) for l >= m+2;
@@ -139,14 +141,14 @@ SHREF_FN void shref_eval_q(int n, shref_q x, shref_q y, shref_q z, shref_q *out)
       cm = sqrt2 * cosq((shref_q)m * phi);
       sm = sqrt2 * sinq((shref_q)m * phi);
     }
-#define SHREF_PUT(L, P)                                                      \
-  do {                                                                       \
-    if (m == 0) {                                                            \
-      out[(L) * ((L) + 1)] = (P);                                            \
-    } else {                                                                 \
-      out[(L) * ((L) + 1) + m] = (P) * cm;                                   \
-      out[(L) * ((L) + 1) - m] = (P) * sm;                                   \
-    }                                                                        \
+#define SHREF_PUT(L, P)                                                                            \
+  do {                                                                                             \
+    if (m == 0) {                                                                                  \
+      out[(L) * ((L) + 1)] = (P);                                                                  \
+    } else {                                                                                       \
+      out[(L) * ((L) + 1) + m] = (P)*cm;                                                           \
+      out[(L) * ((L) + 1) - m] = (P)*sm;                                                           \
+    }                                                                                              \
   } while (0)
     SHREF_PUT(m, pmm);
     if (m + 1 >= n) continue;
@@ -169,18 +171,21 @@ SHREF_FN shref_q shref_binom(int a, int b) {
   int i;
   if (b < 0 || b > a) return 0;
   if (b > a - b) b = a - b;
-  for (i = 1; i <= b; i++) r = r * (shref_q)(a - b + i) / (shref_q)i;
+  for (i = 1; i <= b; i++)
+    r = r * (shref_q)(a - b + i) / (shref_q)i;
   return r;
 }
 SHREF_FN shref_q shref_fact(int a) {
   shref_q r = 1;
   int i;
-  for (i = 2; i <= a; i++) r *= (shref_q)i;
+  for (i = 2; i <= a; i++)
+    r *= (shref_q)i;
   return r;
 }
 SHREF_FN shref_q shref_powi(shref_q v, int e) {
   shref_q r = 1;
-  while (e-- > 0) r *= v;
+  while (e-- > 0)
+    r *= v;
   return r;
 }
 
@@ -249,7 +254,9 @@ SHREF_FN shref_q *shref_scratch(int which, int count) {
   return buf[which];
 }
 
-SHREF_FN int shref_clamp_n(int n) { return n > SHREF_MAX_BANDS ? SHREF_MAX_BANDS : n; }
+SHREF_FN int shref_clamp_n(int n) {
+  return n > SHREF_MAX_BANDS ? SHREF_MAX_BANDS : n;
+}
 
 /* The quad reference at the float input (normalised in quad), rounded to double. */
 SHREF_FN void shref_eval_d(int n, const float d[3], double *out) {
@@ -259,7 +266,8 @@ SHREF_FN void shref_eval_d(int n, const float d[3], double *out) {
   n = shref_clamp_n(n);
   t = shref_scratch(0, n * n);
   shref_eval_q(n, (shref_q)d[0], (shref_q)d[1], (shref_q)d[2], t);
-  for (i = 0; i < n * n; i++) out[i] = (double)t[i];
+  for (i = 0; i < n * n; i++)
+    out[i] = (double)t[i];
 }
 
 /* Gradient of Y_i(d/|d|) with respect to d (Cartesian), quad, by the 5-point central stencil
@@ -274,7 +282,8 @@ SHREF_FN void shref_grad_q(int n, const shref_q d[3], shref_q *out_y, shref_q (*
   n = shref_clamp_n(n);
   nn = n * n;
   if (out_y) shref_eval_q(n, d[0], d[1], d[2], out_y);
-  for (i = 0; i < nn; i++) out_grad[i][0] = out_grad[i][1] = out_grad[i][2] = 0;
+  for (i = 0; i < nn; i++)
+    out_grad[i][0] = out_grad[i][1] = out_grad[i][2] = 0;
   if (shref_degenerate(d[0], d[1], d[2])) return;
   t = shref_scratch(1, nn);
   r = sqrtq(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
@@ -287,9 +296,11 @@ SHREF_FN void shref_grad_q(int n, const shref_q d[3], shref_q *out_y, shref_q (*
       p[2] = d[2];
       p[k] += (shref_q)step[s] * h;
       shref_eval_q(n, p[0], p[1], p[2], t);
-      for (i = 0; i < nn; i++) out_grad[i][k] += (shref_q)wt[s] * t[i];
+      for (i = 0; i < nn; i++)
+        out_grad[i][k] += (shref_q)wt[s] * t[i];
     }
-    for (i = 0; i < nn; i++) out_grad[i][k] /= 12 * h;
+    for (i = 0; i < nn; i++)
+      out_grad[i][k] /= 12 * h;
   }
 }
 
@@ -308,7 +319,8 @@ SHREF_FN void shref_grad_d(int n, const float d[3], double *out_y, double (*out_
   shref_grad_q(n, dq, y, g);
   for (i = 0; i < n * n; i++) {
     if (out_y) out_y[i] = (double)y[i];
-    for (k = 0; k < 3; k++) out_grad[i][k] = (double)g[i][k];
+    for (k = 0; k < 3; k++)
+      out_grad[i][k] = (double)g[i][k];
   }
 }
 
@@ -333,14 +345,17 @@ SHREF_FN void shref_dtheta_dphi_q(int n, const shref_q d[3], shref_q *dtheta, sh
   }
   h = ldexpq((shref_q)1, -30);
   t = shref_scratch(1, nn);
-  for (i = 0; i < nn; i++) dtheta[i] = dphi[i] = 0;
+  for (i = 0; i < nn; i++)
+    dtheta[i] = dphi[i] = 0;
   for (s = 0; s < 4; s++) {
     shref_q a = th + (shref_q)step[s] * h;
     shref_eval_q(n, sinq(a) * cosq(ph), sinq(a) * sinq(ph), cosq(a), t);
-    for (i = 0; i < nn; i++) dtheta[i] += (shref_q)wt[s] * t[i];
+    for (i = 0; i < nn; i++)
+      dtheta[i] += (shref_q)wt[s] * t[i];
     a = ph + (shref_q)step[s] * h;
     shref_eval_q(n, sinq(th) * cosq(a), sinq(th) * sinq(a), cosq(th), t);
-    for (i = 0; i < nn; i++) dphi[i] += (shref_q)wt[s] * t[i];
+    for (i = 0; i < nn; i++)
+      dphi[i] += (shref_q)wt[s] * t[i];
   }
   for (i = 0; i < nn; i++) {
     dtheta[i] /= 12 * h;
