@@ -6177,25 +6177,21 @@ static const float SHLI_SH_DIAG[64] = {
     1.15274901f,  -1.15797692f,  1.16313498f,  -1.16822531f,  1.17324995f,  -1.17821086f,
     1.18310989f,  -1.18794881f,  1.1927293f,   -1.197453f};
 
-SHLIGHT_INLINE void shli_sh_poly_1(const float d[3], float *out_y) {
-  SHLIGHT_UNUSED(d);
+SHLIGHT_INLINE void shli_sh_poly_1(float x, float y, float z, float *out_y) {
+  SHLIGHT_UNUSED(x);
+  SHLIGHT_UNUSED(y);
+  SHLIGHT_UNUSED(z);
   out_y[0] = 0.282094792f;
 }
 
-SHLIGHT_INLINE void shli_sh_poly_2(const float d[3], float *out_y) {
-  float x = d[0];
-  float y = d[1];
-  float z = d[2];
+SHLIGHT_INLINE void shli_sh_poly_2(float x, float y, float z, float *out_y) {
   out_y[0] = 0.282094792f;
   out_y[2] = 0.488602512f * z;
   out_y[3] = -0.488602512f * x;
   out_y[1] = -0.488602512f * y;
 }
 
-SHLIGHT_INLINE void shli_sh_poly_3(const float d[3], float *out_y) {
-  float x = d[0];
-  float y = d[1];
-  float z = d[2];
+SHLIGHT_INLINE void shli_sh_poly_3(float x, float y, float z, float *out_y) {
   float z2;
   float pc;
   float ps;
@@ -6215,10 +6211,7 @@ SHLIGHT_INLINE void shli_sh_poly_3(const float d[3], float *out_y) {
   out_y[4] = 0.546274215f * ps;
 }
 
-SHLIGHT_INLINE void shli_sh_poly_4(const float d[3], float *out_y) {
-  float x = d[0];
-  float y = d[1];
-  float z = d[2];
+SHLIGHT_INLINE void shli_sh_poly_4(float x, float y, float z, float *out_y) {
   float z2;
   float pc;
   float ps;
@@ -10828,41 +10821,235 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
   }
 }
 
-/* shl_sh_eval: Y_i(d) for i < n * n, d a unit direction (see >>numerics).
-   out_y: n * n floats. Cost: about 4 instructions per coefficient (README, bench/). */
-SHLIGHT_INLINE void shl_sh_eval(int n, const float d[3], float *out_y) {
-  shli_real x = SHLIGHT_REAL(d[0]);
-  shli_real y = SHLIGHT_REAL(d[1]);
-  shli_real z = SHLIGHT_REAL(d[2]);
+/* Across-m SIMD core (C only, AVX-512): one 16-lane register holds X_l^m of every order m of
+   band l, so a band costs one Reinsch step (4 vector ops) and its outputs two multiplies, one
+   lane reversal and two masked stores. Float lanes: the Reinsch form keeps the float error
+   within the stated targets (README, tests/test_basis); the scalar kernel (double) stays the
+   reference and SHLIGHT_NO_SIMD selects it. Used by shl_sh_eval for 5 <= n <= 16. */
+#if !defined(SHLIGHT_NO_SIMD) && defined(__AVX512F__)
+#define SHLIGHT_SIMD_EVAL 1
+#include <immintrin.h>
+/* @generated begin lanes */
+#if SHLIGHT_SIMD_EVAL
+static const float SHLI_SH_LANES[720] = {
+    1.73205081f,  0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         1.73205081f,  1.0f,
+    1.0f,         1.0f,         1.0f,         1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         1.0f,         1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    1.93649167f,  2.23606798f,  0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         1.29099445f,  2.23606798f,
+    1.0f,         1.0f,         1.0f,         1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         1.0f,         1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         0.645497224f, 0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    1.97202659f,  2.09165007f,  2.64575131f,  0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         1.18321596f,  1.67332005f,
+    2.64575131f,  1.0f,         1.0f,         1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         1.0f,         1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         0.788810638f, 0.418330013f, 0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    1.98431348f,  2.04939015f,  2.29128785f,  3.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         1.13389342f,  1.46385011f,
+    1.96396101f,  3.0f,         1.0f,         1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         1.0f,         1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         0.850420064f, 0.585540044f, 0.327326835f, 0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    1.98997487f,  2.0310096f,   2.17124059f,  2.48746859f,  3.31662479f,  0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         1.1055416f,   1.3540064f,
+    1.68874268f,  2.21108319f,  3.31662479f,  1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         1.0f,         1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         0.884433277f, 0.6770032f,   0.48249791f,  0.276385399f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    1.99304346f,  2.02131499f,  2.11394182f,  2.30136835f,  2.67394839f,  3.60555128f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         1.08711461f,  1.28629136f,
+    1.53741223f,  1.88293774f,  2.43086217f,  3.60555128f,  1.0f,         1.0f,
+    1.0f,         1.0f,         1.0f,         1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         0.905928844f, 0.735023632f, 0.576529586f, 0.41843061f,
+    0.243086217f, 0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    1.99489143f,  2.01556444f,  2.081666f,    2.20794022f,  2.43086217f,  2.85043856f,
+    3.87298335f,  0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         1.07417231f,  1.24034735f,
+    1.44115338f,  1.69841555f,  2.05688338f,  2.63117406f,  3.87298335f,  1.0f,
+    1.0f,         1.0f,         1.0f,         1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         0.920719124f, 0.775217091f, 0.640512615f, 0.509524665f,
+    0.373978796f, 0.219264505f, 0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    1.99608993f,  2.01186954f,  2.06155281f,  2.15322169f,  2.30488611f,  2.55704156f,
+    3.01780431f,  4.12310563f,  0.0f,         0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         1.06458129f,  1.20712172f,
+    1.37436854f,  1.57902924f,  1.84390889f,  2.21610269f,  2.81661736f,  4.12310563f,
+    1.0f,         1.0f,         1.0f,         1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         0.931508633f, 0.804747816f, 0.687184271f, 0.57419245f,
+    0.460977223f, 0.340938875f, 0.201186954f, 0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    1.9969112f,   2.00935313f,  2.04812236f,  2.11804417f,  2.22917715f,  2.40163635f,
+    2.67913751f,  3.17706626f,  4.35889894f,  0.0f,         0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         1.05718828f,  1.18197243f,
+    1.32525564f,  1.49509f,     1.70466488f,  1.97781817f,  2.36394486f,  2.99018001f,
+    4.35889894f,  1.0f,         1.0f,         1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         0.939722915f, 0.8273807f,   0.722866715f, 0.622954168f,
+    0.524512271f, 0.423818179f, 0.315192648f, 0.18688625f,  0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    1.99749844f,  2.00756146f,  2.0386883f,   2.09394732f,  2.17944947f,  2.30651252f,
+    2.49687304f,  2.79705728f,  3.32916406f,  4.58257569f,  0.0f,         0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         1.05131497f,  1.16227243f,
+    1.28759261f,  1.4327008f,   1.60591014f,  1.82093094f,  2.10262993f,  2.5026302f,
+    3.1539449f,   4.58257569f,  1.0f,         1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         0.946183469f, 0.845289037f, 0.751095691f, 0.661246523f,
+    0.573539335f, 0.485581583f, 0.394243112f, 0.294427082f, 0.175219161f, 0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    1.99793282f,  2.00624026f,  2.0317985f,   2.07665597f,  2.14476106f,  2.24304481f,
+    2.38376864f,  2.59004504f,  2.91095933f,  3.47491007f,  4.79583152f,  0.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         1.04653624f,  1.14642301f,
+    1.25778002f,  1.38443731f,  1.53197218f,  1.70898652f,  1.92971747f,  2.22003861f,
+    2.63372511f,  3.30943816f,  4.79583152f,  1.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         0.951396579f, 0.859817256f, 0.774018475f, 0.692218655f,
+    0.612788874f, 0.534058287f, 0.45405117f,  0.370006435f, 0.277234222f, 0.165471908f,
+    0.0f,         0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    1.99826313f,  2.0052379f,   2.02660871f,  2.06379729f,  2.11947812f,  2.19816577f,
+    2.30739552f,  2.46020966f,  2.68095132f,  3.02108989f,  3.61499403f,  5.0f,
+    0.0f,         0.0f,         0.0f,         0.0f,         1.04257207f,  1.13339533f,
+    1.23358791f,  1.34595476f,  1.47441956f,  1.62473122f,  1.8057878f,   2.03234711f,
+    2.33126202f,  2.75838642f,  3.45782037f,  5.0f,         1.0f,         1.0f,
+    1.0f,         1.0f,         0.955691064f, 0.871842564f, 0.793020799f, 0.717842536f,
+    0.645058558f, 0.57343455f,  0.501607721f, 0.42786255f,  0.349689303f, 0.262703469f,
+    0.157173653f, 0.0f,         0.0f,         0.0f,         0.0f,         0.0f,
+    1.99852016f,  2.00445931f,  2.02259959f,  2.05395959f,  2.10042013f,  2.16506351f,
+    2.25281778f,  2.37170825f,  2.53546276f,  2.76955855f,  3.12771621f,  3.75f,
+    5.19615242f,  0.0f,         0.0f,         0.0f,         1.03923048f,  1.12249722f,
+    1.21355975f,  1.31453414f,  1.42828569f,  1.55884573f,  1.71214152f,  1.8973666f,
+    2.12978872f,  2.43721152f,  2.87749891f,  3.6f,         5.19615242f,  1.0f,
+    1.0f,         1.0f,         0.959289678f, 0.881962098f, 0.809039835f, 0.739425453f,
+    0.67213444f,  0.606217783f, 0.540676268f, 0.474341649f, 0.405674042f, 0.332347026f,
+    0.250217297f, 0.15f,        0.0f,         0.0f,         0.0f,         0.0f,
+    1.99872408f,  2.00384246f,  2.0194368f,   2.04625653f,  2.08566536f,  2.13984751f,
+    2.21218218f,  2.30792777f,  2.43553242f,  2.60934774f,  2.85591491f,  3.23109888f,
+    3.88042424f,  5.38516481f,  0.0f,         0.0f,         1.03637545f,  1.11324581f,
+    1.19670329f,  1.28838374f,  1.39044357f,  1.50581862f,  1.63865347f,  1.79505494f,
+    1.9845079f,   2.22277771f,  2.53859104f,  2.99175823f,  3.73670483f,  5.38516481f,
+    1.0f,         1.0f,         0.962348632f, 0.89059665f,  0.822733512f, 0.757872788f,
+    0.695221787f, 0.634028892f, 0.573528713f, 0.512872839f, 0.451024523f, 0.386570036f,
+    0.317323879f, 0.239340658f, 0.143719416f, 0.0f,         0.0f,         0.0f,
+    1.99888858f,  2.00334542f,  2.01689695f,  2.04010711f,  2.07399021f,  2.1201415f,
+    2.18096624f,  2.26007844f,  2.36301734f,  2.49861073f,  2.68179045f,  2.94010727f,
+    3.33148097f,  4.00669083f,  5.56776436f,  0.0f,         1.03390789f,  1.10529402f,
+    1.1823189f,   1.26627338f,  1.35882117f,  1.46216655f,  1.57932038f,  1.71454226f,
+    1.8741172f,   2.06781577f,  2.31188832f,  2.63595824f,  3.10172366f,  3.86852908f,
+    5.56776436f,  1.0f,         0.964980694f, 0.898051394f, 0.834578048f, 0.773833733f,
+    0.715169039f, 0.65797495f,  0.60164586f,  0.545536175f, 0.488900139f, 0.430794953f,
+    0.369902131f, 0.304149028f, 0.229757308f, 0.138161753f, 0.0f,         0.0f};
+#endif
+/* @generated end lanes */
+SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, float *out_y) {
+  static const unsigned short bits[4] = {0xAAAA, 0xCCCC, 0xF0F0, 0xFF00};
+  /* float prologue, short latency: t = 1 - |z| / |d| = s2 / (|d| (|d| + |z|)) is s2 / (1 + |z|)
+     to a relative O(|d| - 1), no normalisation needed; (x + iy) is renormalised to second
+     order with e = |d|^2 - 1 formed without cancellation near the poles */
+  float s2 = x * x + y * y;
+  float e = (z - 1.0f) * (z + 1.0f) + s2;
+  float k = 1.0f + e * (-0.5f + 0.375f * e);
+  float cr = x * k, ci = y * k, sg, q;
+  __m512 c = _mm512_set1_ps(1.0f), s = _mm512_setzero_ps(), co, so, vs, xv, dd, vt;
+  __m512i iota = _mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0);
+  int b, l;
+  vt = _mm512_set1_ps(s2 / (1.0f + fabsf(z)));
+  sg = copysignf(1.0f, z);
+  /* lane m gets (x + iy)^m as the product of (x + iy)^(2^b) over the set bits b of m */
+  for (b = 0; (1 << b) < n; ++b) {
+    __m512 vc = _mm512_set1_ps(cr), vi = _mm512_set1_ps(ci);
+    __m512 nc = _mm512_fmsub_ps(c, vc, _mm512_mul_ps(s, vi));
+    __m512 ns = _mm512_fmadd_ps(s, vc, _mm512_mul_ps(c, vi));
+    c = _mm512_mask_mov_ps(c, (__mmask16)bits[b], nc);
+    s = _mm512_mask_mov_ps(s, (__mmask16)bits[b], ns);
+    q = cr * cr - ci * ci;
+    ci = 2.0f * cr * ci;
+    cr = q;
+  }
+  /* parity: X_l^m(z) = sg^(l-m) X_l^m(|z|), sg^m into the odd lanes, sg^l per band */
+  vs = _mm512_set1_ps(sg);
+  c = _mm512_mask_mul_ps(c, (__mmask16)0xAAAA, c, vs);
+  s = _mm512_mask_mul_ps(s, (__mmask16)0xAAAA, s, vs);
+  co = _mm512_mul_ps(c, vs);
+  so = _mm512_mul_ps(s, vs);
+  xv = _mm512_loadu_ps(SHLI_SH_DIAG);
+  dd = _mm512_setzero_ps();
+  out_y[0] = SHLI_SH_DIAG[0];
+  for (l = 1; l < n; ++l) {
+    const float *tb = SHLI_SH_LANES + (l - 1) * 48;
+    __m512 at = _mm512_mul_ps(_mm512_loadu_ps(tb), vt);
+    __m512 yc, ys;
+    dd = _mm512_fnmadd_ps(at, xv, _mm512_mul_ps(_mm512_loadu_ps(tb + 32), dd));
+    xv = _mm512_fmadd_ps(_mm512_loadu_ps(tb + 16), xv, dd);
+    yc = _mm512_mul_ps(xv, (l & 1) ? co : c);
+    ys = _mm512_mul_ps(xv, (l & 1) ? so : s);
+    ys = _mm512_permutexvar_ps(_mm512_sub_epi32(_mm512_set1_epi32(l), iota), ys);
+    _mm512_mask_storeu_ps(out_y + l * l, (__mmask16)((1u << l) - 1u), ys);
+    _mm512_mask_storeu_ps(out_y + l * l + l, (__mmask16)((2u << l) - 1u), yc);
+  }
+}
+#else
+#define SHLIGHT_SIMD_EVAL 0
+#endif
+
+/* Y_i at the unit direction (dx, dy, dz): the one evaluation path of shl_sh_eval and
+   shl_sh_eval_grad (n <= 4: float Horner forms; 5..16 with AVX-512: the across-m SIMD core;
+   otherwise the double Reinsch-form core). */
+SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float *out_y) {
+  shli_real x = SHLIGHT_REAL(dx);
+  shli_real y = SHLIGHT_REAL(dy);
+  shli_real z = SHLIGHT_REAL(dz);
   shli_real e;
   shli_real k;
   shli_real az;
   float sg;
   SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  if (n < 1) {
+    return;
+  }
   switch (n) {
-  /* up to 4 bands, float Horner forms straight from d are within 2.1e-7 (README): no
+  /* up to 4 bands, float Horner forms straight from d are within 3e-7 (README): no
      normalisation, no division, no double */
   case 1:
-    shli_sh_poly_1(d, out_y);
+    shli_sh_poly_1(dx, dy, dz, out_y);
     return;
 #if SHLIGHT_MAX_BANDS >= 2
   case 2:
-    shli_sh_poly_2(d, out_y);
+    shli_sh_poly_2(dx, dy, dz, out_y);
     return;
 #endif
 #if SHLIGHT_MAX_BANDS >= 3
   case 3:
-    shli_sh_poly_3(d, out_y);
+    shli_sh_poly_3(dx, dy, dz, out_y);
     return;
 #endif
 #if SHLIGHT_MAX_BANDS >= 4
   case 4:
-    shli_sh_poly_4(d, out_y);
+    shli_sh_poly_4(dx, dy, dz, out_y);
     return;
 #endif
   default:
     break;
   }
+#if SHLIGHT_SIMD_EVAL
+  if (n <= SHLIGHT_UNROLLED_BANDS) {
+    shli_sh_eval_avx512(n, dx, dy, dz, out_y);
+    return;
+  }
+#endif
   if (n > SHLIGHT_MAX_BANDS) {
     n = SHLIGHT_MAX_BANDS;
   }
@@ -10874,6 +11061,12 @@ SHLIGHT_INLINE void shl_sh_eval(int n, const float d[3], float *out_y) {
   az = SHLIGHT_ABSR(z);
   sg = SHLIGHT_SIGN1(z);
   shli_sh_core(n, x, y, z, (x * x + y * y) / (1.0 + az), sg, out_y);
+}
+
+/* shl_sh_eval: Y_i(d) for i < n * n, d a unit direction (see >>numerics).
+   out_y: n * n floats. Cost and accuracy per n: README (bench/, tests/test_basis). */
+SHLIGHT_INLINE void shl_sh_eval(int n, const float d[3], float *out_y) {
+  shli_sh_eval_xyz(n, d[0], d[1], d[2], out_y);
 }
 
 /* >>gradient --------------------------------------------------------------------------------
@@ -18370,7 +18563,6 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
   shli_real iu;
   float ir;
   float ib;
-  float sg;
   int i;
   SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
   if (n > SHLIGHT_MAX_BANDS) {
@@ -18413,8 +18605,7 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
       ib = ir;
     }
   }
-  sg = SHLIGHT_SIGN1(z);
-  shli_sh_core(n, x, y, z, (x * x + y * y) / (1.0 + SHLIGHT_ABSR(z)), sg, out_y);
+  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), out_y);
   if (ib == 1.0f) {
     shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, out_grad);
   } else {

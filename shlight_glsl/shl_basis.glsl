@@ -5,17 +5,16 @@
 #define SHL_BASIS_GLSL
 
 #if SHLIGHT_MAX_BANDS >= 1
-void shli_sh_poly_1(vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
-  SHLIGHT_UNUSED(d);
+void shli_sh_poly_1(float x, float y, float z, out float out_y[SHLIGHT_MAX_COEFFS]) {
+  SHLIGHT_UNUSED(x);
+  SHLIGHT_UNUSED(y);
+  SHLIGHT_UNUSED(z);
   out_y[0] = 0.282094792f;
 }
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 2
-void shli_sh_poly_2(vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
-  float x = d[0];
-  float y = d[1];
-  float z = d[2];
+void shli_sh_poly_2(float x, float y, float z, out float out_y[SHLIGHT_MAX_COEFFS]) {
   out_y[0] = 0.282094792f;
   out_y[2] = 0.488602512f * z;
   out_y[3] = -0.488602512f * x;
@@ -24,10 +23,7 @@ void shli_sh_poly_2(vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 3
-void shli_sh_poly_3(vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
-  float x = d[0];
-  float y = d[1];
-  float z = d[2];
+void shli_sh_poly_3(float x, float y, float z, out float out_y[SHLIGHT_MAX_COEFFS]) {
   float z2;
   float pc;
   float ps;
@@ -49,10 +45,7 @@ void shli_sh_poly_3(vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
 #endif
 
 #if SHLIGHT_MAX_BANDS >= 4
-void shli_sh_poly_4(vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
-  float x = d[0];
-  float y = d[1];
-  float z = d[2];
+void shli_sh_poly_4(float x, float y, float z, out float out_y[SHLIGHT_MAX_COEFFS]) {
   float z2;
   float pc;
   float ps;
@@ -4634,39 +4627,48 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
   }
 }
 
-void shl_sh_eval(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
-  shli_real x = SHLIGHT_REAL(d[0]);
-  shli_real y = SHLIGHT_REAL(d[1]);
-  shli_real z = SHLIGHT_REAL(d[2]);
+void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIGHT_MAX_COEFFS]) {
+  shli_real x = SHLIGHT_REAL(dx);
+  shli_real y = SHLIGHT_REAL(dy);
+  shli_real z = SHLIGHT_REAL(dz);
   shli_real e;
   shli_real k;
   shli_real az;
   float sg;
   SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  if (n < 1) {
+    return;
+  }
   switch (n) {
-  /* up to 4 bands, float Horner forms straight from d are within 2.1e-7 (README): no
+  /* up to 4 bands, float Horner forms straight from d are within 3e-7 (README): no
      normalisation, no division, no double */
   case 1:
-    shli_sh_poly_1(d, out_y);
+    shli_sh_poly_1(dx, dy, dz, out_y);
     return;
 #if SHLIGHT_MAX_BANDS >= 2
   case 2:
-    shli_sh_poly_2(d, out_y);
+    shli_sh_poly_2(dx, dy, dz, out_y);
     return;
 #endif
 #if SHLIGHT_MAX_BANDS >= 3
   case 3:
-    shli_sh_poly_3(d, out_y);
+    shli_sh_poly_3(dx, dy, dz, out_y);
     return;
 #endif
 #if SHLIGHT_MAX_BANDS >= 4
   case 4:
-    shli_sh_poly_4(d, out_y);
+    shli_sh_poly_4(dx, dy, dz, out_y);
     return;
 #endif
   default:
     break;
   }
+#if SHLIGHT_SIMD_EVAL
+  if (n <= SHLIGHT_UNROLLED_BANDS) {
+    shli_sh_eval_avx512(n, dx, dy, dz, out_y);
+    return;
+  }
+#endif
   if (n > SHLIGHT_MAX_BANDS) {
     n = SHLIGHT_MAX_BANDS;
   }
@@ -4678,6 +4680,10 @@ void shl_sh_eval(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
   az = SHLIGHT_ABSR(z);
   sg = SHLIGHT_SIGN1(z);
   shli_sh_core(n, x, y, z, (x * x + y * y) / (1.0 + az), sg, out_y);
+}
+
+void shl_sh_eval(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
+  shli_sh_eval_xyz(n, d[0], d[1], d[2], out_y);
 }
 
 #endif

@@ -6399,7 +6399,6 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
   shli_real iu;
   float ir;
   float ib;
-  float sg;
   int i;
   SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
   if (n > SHLIGHT_MAX_BANDS) {
@@ -6442,8 +6441,7 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
       ib = ir;
     }
   }
-  sg = SHLIGHT_SIGN1(z);
-  shli_sh_core(n, x, y, z, (x * x + y * y) / (1.0 + SHLIGHT_ABSR(z)), sg, out_y);
+  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), out_y);
   if (ib == 1.0f) {
     shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, out_grad);
   } else {

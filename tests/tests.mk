@@ -88,3 +88,9 @@ fuzz: $(TESTS_BUILD)/fuzz_basis
 
 # do not become the including Makefile's default goal
 .DEFAULT_GOAL := $(TESTS_SAVED_DEFAULT_GOAL)
+
+# The same tests built for this machine's SIMD (AVX-512 / AVX2 paths of shl_sh_eval and the
+# batch), with FMA contraction as a user's -O3 -march=native build would have it.
+$(TESTS_BUILD)/native/test_basis: $(TESTS_BASIS_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -march=native -ffp-contract=fast -o $@ tests/test_basis.c $(TESTS_QUADLIBS)

@@ -364,15 +364,14 @@ def gen_poly(n):
     """shli_sh_poly_<n>(d, out_y): float Horner forms in z^2 times (x + iy)^m, d unit"""
     L = []
     w = L.append
-    w('SHLIGHT_INLINE void shli_sh_poly_%d(const float d[3], float *out_y) {' % n)
+    w('SHLIGHT_INLINE void shli_sh_poly_%d(float x, float y, float z, float *out_y) {' % n)
     if n == 1:
-        w('  SHLIGHT_UNUSED(d);')
+        w('  SHLIGHT_UNUSED(x);')
+        w('  SHLIGHT_UNUSED(y);')
+        w('  SHLIGHT_UNUSED(z);')
         w('  out_y[0] = %s;' % lit_f(diag(0)))
         w('}')
         return L
-    w('  float x = d[0];')
-    w('  float y = d[1];')
-    w('  float z = d[2];')
     w('@DECLS@')
     if n >= 3:
         w('  z2 = z * z;')
@@ -456,6 +455,24 @@ def gen_batch_poly(n):
 
 
 # ---------------------------------------------------------------- regions
+def gen_lane_table():
+    """SHLI_SH_LANES[(l - 1) * 48 + {0, 16, 32} + m]: alpha, g, c of band l in lane m for the
+    across-m SIMD core; lanes m >= l hold the identity step (0, 1, 0)"""
+    vals = []
+    for l in range(1, UNROLLED):
+        a_s, g_s, c_s = [], [], []
+        for m in range(16):
+            if m < l:
+                a, g, c = reinsch(l, m)
+            else:
+                a, g, c = 0.0, 1.0, 0.0
+            a_s.append(a)
+            g_s.append(g)
+            c_s.append(c)
+        vals += a_s + g_s + c_s
+    return vals
+
+
 def c_regions():
     tab, diagv = gen_tables()
     R = {}
@@ -478,6 +495,8 @@ def c_regions():
            'static const shli_sh_batch_fn SHLI_SH_BATCH[%d] = {' % (UNROLLED + 1),
            '    0, ' + ', '.join('shli_sh_batch_%d' % n for n in range(1, UNROLLED + 1)) + '};']
     R['batch'] = bb
+    lt = gen_lane_table()
+    R['lanes'] = ['#if SHLIGHT_SIMD_EVAL'] + fmt_table('float', 'SHLI_SH_LANES', '%d' % len(lt), lt, lit_f, False) + ['#endif']
     return R
 
 

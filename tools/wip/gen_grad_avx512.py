@@ -1,0 +1,140 @@
+#!/usr/bin/env python3
+"""Generates the tables of tools/wip/grad_avx512.h (shli_sh_grad_avx512).
+
+Band l (1..15) writes its 2l+1 gradients, 3(2l+1) floats at out_grad + l*l, in chunks of 16
+floats; local float f = 16 c + j is coefficient k = f // 3 (band order: k < l sine m = l - k,
+k >= l cosine m = k - l) and component f % 3.  Each lane is
+    out = c1 * P[i1] + c2 * P[i2] - Q[iy] * u[f % 3]
+where P (32 lanes, two zmm) is band l-1 in band order (y + (l-1)^2, 2l-1 lanes) times ir, zero
+beyond, and Q band l (y + l*l, 2l+1 lanes) times l * ir.  In band order YC_{l-1}[m] sits at
+l-1+m and YS_{l-1}[m] at l-1-m, so with k the output position:
+  cosine m = k-l: gx = Ap P[k-2] + Bp P[k]; gy = -A[m>=2] P[2l-k] + Bp P[2l-k-2]; gz = C P[k-1]
+  sine   m = l-k: gx = A[m>=2] P[k] + B P[k-2]; gy = Ap P[2l-k-2] - B P[2l-k]; gz = C P[k-1]
+Unused taps point at lane 31 (always zero: 2l-1 <= 29) with coefficient 0.
+Usage: python3 gen_grad_avx512.py > tables.inc (pasted between the markers of grad_avx512.h)
+"""
+import math
+import sys
+
+NB = 16  # bands
+ZERO = 31
+S2 = math.sqrt(2.0)
+
+
+def grad_abc(l, m):
+    f = (2 * l + 1) / (2 * l - 1)
+    a = -0.5 * math.sqrt(f * (l + m) * (l + m - 1)) if m >= 1 else 0.0
+    b = 0.5 * math.sqrt(f * max(0, (l - m) * (l - m - 1)))
+    c = math.sqrt(f * (l - m) * (l + m))
+    return a, b, c
+
+
+def lane_terms(l, k, comp):
+    """[(tap, coef), (tap, coef)] for output position k (band order) and component comp"""
+    if k >= l:
+        m = k - l
+        a, b, c = grad_abc(l, m)
+        ap = a * S2 if m == 1 else a
+        bp = b * S2 if m == 0 else b
+        if comp == 0:
+            t = [(k - 2, ap), (k, bp)]
+        elif comp == 1:
+            t = [(2 * l - k, -a if m >= 2 else 0.0), (2 * l - k - 2, bp)]
+        else:
+            t = [(k - 1, c), (ZERO, 0.0)]
+    else:
+        m = l - k
+        a, b, c = grad_abc(l, m)
+        ap = a * S2 if m == 1 else a
+        if comp == 0:
+            t = [(k, a if m >= 2 else 0.0), (k - 2, b)]
+        elif comp == 1:
+            t = [(2 * l - k - 2, ap), (2 * l - k, -b)]
+        else:
+            t = [(k - 1, c), (ZERO, 0.0)]
+    out = []
+    for tap, cf in t:
+        if cf == 0.0:
+            out.append((ZERO, 0.0))
+        else:
+            assert 0 <= tap <= 2 * l - 2, (l, k, comp, tap)
+            out.append((tap, cf))
+    return out
+
+
+def lit(v):
+    if v == 0.0:
+        return '0.0f'
+    s = '%.9g' % v
+    if '.' not in s and 'e' not in s:
+        s += '.0'
+    return s + 'f'
+
+
+def fmt_rows(vals, per=8, ind='    '):
+    rows = []
+    for i in range(0, len(vals), per):
+        rows.append(ind + ', '.join(vals[i:i + per]) + ',')
+    return rows
+
+
+def main():
+    nchunk = [0] * (NB + 1)
+    ch0 = [0] * (NB + 1)
+    idx = []
+    coef = []
+    tot = 0
+    for l in range(1, NB):
+        ch0[l] = tot
+        nf = 3 * (2 * l + 1)
+        nc = (nf + 15) // 16
+        for c in range(nc):
+            i1 = []
+            i2 = []
+            c1 = []
+            c2 = []
+            for j in range(16):
+                f = 16 * c + j
+                if f >= nf:
+                    (t1, a1), (t2, a2) = (ZERO, 0.0), (ZERO, 0.0)
+                else:
+                    (t1, a1), (t2, a2) = lane_terms(l, f // 3, f % 3)
+                i1.append(t1)
+                i2.append(t2)
+                c1.append(a1)
+                c2.append(a2)
+            idx.append((l, c, i1, i2))
+            coef.append((l, c, c1, c2))
+        tot += nc
+    ch0[NB] = tot
+    L = []
+    w = L.append
+    w('#define SHLI_GRADV_CHUNKS %d' % tot)
+    w('/* first chunk of band l (l = 1..15; [16] = total) */')
+    w('static const short SHLI_GRADV_CH0[17] = {%s};' % ', '.join(str(v) for v in ch0))
+    w('/* Q tap (coefficient k = f / 3 of the band) of chunk c = 0..5 */')
+    w('SHLI_GRADV_ALIGN static const int SHLI_GRADV_IY[6 * 16] = {')
+    iy = []
+    for c in range(6):
+        iy += [str(min((16 * c + j) // 3, 31)) for j in range(16)]
+    L += fmt_rows(iy, 16)
+    w('};')
+    w('/* per chunk: P taps of the two terms, 2 x 16 lane indices into band l-1 (band order) */')
+    w('SHLI_GRADV_ALIGN static const int SHLI_GRADV_IDX[SHLI_GRADV_CHUNKS * 32] = {')
+    for l, c, i1, i2 in idx:
+        w('    /* l = %d, chunk %d */' % (l, c))
+        L += fmt_rows([str(v) for v in i1], 16)
+        L += fmt_rows([str(v) for v in i2], 16)
+    w('};')
+    w('/* per chunk: coefficients of the two terms, 2 x 16 */')
+    w('SHLI_GRADV_ALIGN static const float SHLI_GRADV_COEF[SHLI_GRADV_CHUNKS * 32] = {')
+    for l, c, c1, c2 in coef:
+        w('    /* l = %d, chunk %d */' % (l, c))
+        L += fmt_rows([lit(v) for v in c1], 8)
+        L += fmt_rows([lit(v) for v in c2], 8)
+    w('};')
+    sys.stdout.write('\n'.join(L) + '\n')
+
+
+if __name__ == '__main__':
+    main()
