@@ -4639,6 +4639,9 @@ void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIG
   if (n < 1) {
     return;
   }
+  if (n > SHLIGHT_MAX_BANDS) {
+    n = SHLIGHT_MAX_BANDS;
+  }
   switch (n) {
   /* up to 4 bands, float Horner forms straight from d are within 3e-7 (README): no
      normalisation, no division, no double */
@@ -4665,13 +4668,12 @@ void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIG
   }
 #if SHLIGHT_SIMD_EVAL
   if (n <= SHLIGHT_UNROLLED_BANDS) {
+    shli_sh_eval_avx512_16(n, dx, dy, dz, out_y);
+  } else {
     shli_sh_eval_avx512(n, dx, dy, dz, out_y);
-    return;
   }
+  return;
 #endif
-  if (n > SHLIGHT_MAX_BANDS) {
-    n = SHLIGHT_MAX_BANDS;
-  }
   e = x * x + y * y + z * z - 1.0;
   k = 1.0 + e * (-0.5 + 0.375 * e);
   x = x * k;

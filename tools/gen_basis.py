@@ -456,20 +456,23 @@ def gen_batch_poly(n):
 
 # ---------------------------------------------------------------- regions
 def gen_lane_table():
-    """SHLI_SH_LANES[(l - 1) * 48 + {0, 16, 32} + m]: alpha, g, c of band l in lane m for the
-    across-m SIMD core; lanes m >= l hold the identity step (0, 1, 0)"""
+    """SHLI_SH_LANES[(c * (MAX_BANDS - 1) + l - 1) * 48 + {0, 16, 32} + j]: alpha, g, c of band l
+    for order m = 16 c + j in the across-m SIMD core; orders m >= l hold the identity step
+    (0, 1, 0). Chunk-major, so the bands of chunk 0 (n <= 16) are contiguous."""
     vals = []
-    for l in range(1, UNROLLED):
-        a_s, g_s, c_s = [], [], []
-        for m in range(16):
-            if m < l:
-                a, g, c = reinsch(l, m)
-            else:
-                a, g, c = 0.0, 1.0, 0.0
-            a_s.append(a)
-            g_s.append(g)
-            c_s.append(c)
-        vals += a_s + g_s + c_s
+    for ch in range(MAX_BANDS // 16):
+        for l in range(1, MAX_BANDS):
+            a_s, g_s, c_s = [], [], []
+            for j in range(16):
+                m = 16 * ch + j
+                if m < l:
+                    a, g, c = reinsch(l, m)
+                else:
+                    a, g, c = 0.0, 1.0, 0.0
+                a_s.append(a)
+                g_s.append(g)
+                c_s.append(c)
+            vals += a_s + g_s + c_s
     return vals
 
 
