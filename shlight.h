@@ -12850,6 +12850,57 @@ static const float SHLI_SH_LANES[12096] = {
     0.163918948f,  0.136885737f,  0.104945463f,  0.0640060481f, 0.0f,          0.0f};
 #endif
 /* @generated end lanes */
+#ifdef __AVX512VL__
+/* n <= 8: the same in 256-bit registers (8 orders; three ports instead of two) */
+SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_8(int n, float x, float y, float z, float *out_y) {
+  static const unsigned short bits[4] = {0xAA, 0xCC, 0xF0, 0x00};
+  /* float prologue, short latency: t = 1 - |z| / |d| = s2 / (|d| (|d| + |z|)) is s2 / (1 + |z|)
+     to a relative O(|d| - 1), no normalisation needed; (x + iy) is renormalised to second
+     order with e = |d|^2 - 1 formed without cancellation near the poles */
+  float s2 = x * x + y * y;
+  float e = (z - 1.0f) * (z + 1.0f) + s2;
+  float k = 1.0f + e * (-0.5f + 0.375f * e);
+  float cr = x * k, ci = y * k, sg, q;
+  __m256 c = _mm256_set1_ps(1.0f), s = _mm256_setzero_ps(), co, so, vs, xv, dd, vt;
+  __m256i iota = _mm256_set_epi32(7, 6, 5, 4, 3, 2, 1, 0);
+  int b, l;
+  vt = _mm256_set1_ps(s2 / (1.0f + fabsf(z)));
+  sg = copysignf(1.0f, z);
+  /* lane m gets (x + iy)^m as the product of (x + iy)^(2^b) over the set bits b of m */
+  for (b = 0; (1 << b) < n; ++b) {
+    __m256 vc = _mm256_set1_ps(cr), vi = _mm256_set1_ps(ci);
+    __m256 nc = _mm256_fmsub_ps(c, vc, _mm256_mul_ps(s, vi));
+    __m256 ns = _mm256_fmadd_ps(s, vc, _mm256_mul_ps(c, vi));
+    c = _mm256_mask_mov_ps(c, (__mmask8)bits[b], nc);
+    s = _mm256_mask_mov_ps(s, (__mmask8)bits[b], ns);
+    q = cr * cr - ci * ci;
+    ci = 2.0f * cr * ci;
+    cr = q;
+  }
+  /* parity: X_l^m(z) = sg^(l-m) X_l^m(|z|), sg^m into the odd lanes, sg^l per band */
+  vs = _mm256_set1_ps(sg);
+  c = _mm256_mask_mul_ps(c, (__mmask8)0xAA, c, vs);
+  s = _mm256_mask_mul_ps(s, (__mmask8)0xAA, s, vs);
+  co = _mm256_mul_ps(c, vs);
+  so = _mm256_mul_ps(s, vs);
+  xv = _mm256_loadu_ps(SHLI_SH_DIAG);
+  dd = _mm256_setzero_ps();
+  out_y[0] = SHLI_SH_DIAG[0];
+  for (l = 1; l < n; ++l) {
+    const float *tb = SHLI_SH_LANES + (l - 1) * 48;
+    __m256 at = _mm256_mul_ps(_mm256_loadu_ps(tb), vt);
+    __m256 yc, ys;
+    dd = _mm256_fnmadd_ps(at, xv, _mm256_mul_ps(_mm256_loadu_ps(tb + 32), dd));
+    xv = _mm256_fmadd_ps(_mm256_loadu_ps(tb + 16), xv, dd);
+    yc = _mm256_mul_ps(xv, (l & 1) ? co : c);
+    ys = _mm256_mul_ps(xv, (l & 1) ? so : s);
+    ys = _mm256_permutexvar_ps(_mm256_sub_epi32(_mm256_set1_epi32(l), iota), ys);
+    _mm256_mask_storeu_ps(out_y + l * l, (__mmask8)((1u << l) - 1u), ys);
+    _mm256_mask_storeu_ps(out_y + l * l + l, (__mmask8)((2u << l) - 1u), yc);
+  }
+}
+#endif
+
 /* n <= 16: one register per band (the common case; no chunk bookkeeping) */
 SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16(int n, float x, float y, float z, float *out_y) {
   static const unsigned short bits[4] = {0xAAAA, 0xCCCC, 0xF0F0, 0xFF00};
@@ -13011,6 +13062,12 @@ SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float 
     break;
   }
 #if SHLIGHT_SIMD_EVAL
+#ifdef __AVX512VL__
+  if (n <= 8) {
+    shli_sh_eval_avx512_8(n, dx, dy, dz, out_y);
+    return;
+  }
+#endif
   if (n <= SHLIGHT_UNROLLED_BANDS) {
     shli_sh_eval_avx512_16(n, dx, dy, dz, out_y);
   } else {

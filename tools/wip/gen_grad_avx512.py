@@ -5,8 +5,9 @@ Band l (1..15) writes its 2l+1 gradients, 3(2l+1) floats at out_grad + l*l, in c
 floats; local float f = 16 c + j is coefficient k = f // 3 (band order: k < l sine m = l - k,
 k >= l cosine m = k - l) and component f % 3.  Each lane is
     out = c1 * P[i1] + c2 * P[i2] - Q[iy] * u[f % 3]
-where P (32 lanes, two zmm) is band l-1 in band order (y + (l-1)^2, 2l-1 lanes) times ir, zero
-beyond, and Q band l (y + l*l, 2l+1 lanes) times l * ir.  In band order YC_{l-1}[m] sits at
+where Q is band l (y + l*l, 2l+1 lanes, band order) times l * ir, zero beyond, and P the
+previous band's Q (band l-1 times (l-1) ir; for l = 1: y[0] times ir), so the coefficients of
+band l >= 2 carry a factor 1 / (l-1).  P and Q are 32 lanes (two zmm) for l >= 8.  In band order YC_{l-1}[m] sits at
 l-1+m and YS_{l-1}[m] at l-1-m, so with k the output position:
   cosine m = k-l: gx = Ap P[k-2] + Bp P[k]; gy = -A[m>=2] P[2l-k] + Bp P[2l-k-2]; gz = C P[k-1]
   sine   m = l-k: gx = A[m>=2] P[k] + B P[k-2]; gy = Ap P[2l-k-2] - B P[2l-k]; gz = C P[k-1]
@@ -99,6 +100,9 @@ def main():
                     (t1, a1), (t2, a2) = (ZERO, 0.0), (ZERO, 0.0)
                 else:
                     (t1, a1), (t2, a2) = lane_terms(l, f // 3, f % 3)
+                if l >= 2:
+                    a1 /= (l - 1)
+                    a2 /= (l - 1)
                 i1.append(t1)
                 i2.append(t2)
                 c1.append(a1)
@@ -112,6 +116,20 @@ def main():
     w('#define SHLI_GRADV_CHUNKS %d' % tot)
     w('/* first chunk of band l (l = 1..15; [16] = total) */')
     w('static const short SHLI_GRADV_CH0[17] = {%s};' % ', '.join(str(v) for v in ch0))
+    w('/* mask of the last chunk of band l */')
+    lm = []
+    ym = []
+    for l in range(NB):
+        nf = 3 * (2 * l + 1)
+        rem = nf - 16 * ((nf + 15) // 16 - 1)
+        lm.append('0x%04X' % ((1 << rem) - 1))
+        mk = (1 << (2 * l + 1)) - 1
+        ym.append('0x%04X, 0x%04X' % (mk & 0xFFFF, mk >> 16))
+    w('static const unsigned short SHLI_GRADV_LASTM[16] = {%s};' % ', '.join(lm))
+    w('/* load masks of band l (2l+1 lanes), low and high zmm */')
+    w('static const unsigned short SHLI_GRADV_YM[16 * 2] = {')
+    L += fmt_rows(ym, 4)
+    w('};')
     w('/* Q tap (coefficient k = f / 3 of the band) of chunk c = 0..5 */')
     w('SHLI_GRADV_ALIGN static const int SHLI_GRADV_IY[6 * 16] = {')
     iy = []
