@@ -6395,7 +6395,7 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
   shli_real y = SHLIGHT_REAL(d[1]);
   shli_real z = SHLIGHT_REAL(d[2]);
   shli_real mx = SHLIGHT_ABSR(x);
-  shli_real r;
+  shli_real im;
   shli_real iu;
   float ir;
   float ib;
@@ -6407,6 +6407,20 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
   if (n < 1) {
     return;
   }
+#if SHLIGHT_REAL_WIDE
+  /* double: squares of floats neither overflow nor underflow, no scaling needed */
+  SHLIGHT_UNUSED(mx);
+  iu = x * x + y * y + z * z;
+  im = 1.0;
+  if (!(iu > 0.0 && iu <= 1.0e300)) {
+    /* zero, NaN or infinite (|d|^2 of a finite float is below 1.2e77) */
+    x = 0.0;
+    y = 0.0;
+    z = 1.0;
+    im = 0.0;
+    iu = 1.0;
+  }
+#else
   if (SHLIGHT_ABSR(y) > mx) {
     mx = SHLIGHT_ABSR(y);
   }
@@ -6418,30 +6432,37 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
     x = 0.0;
     y = 0.0;
     z = 1.0;
-    mx = 0.0;
+    im = 0.0;
   } else {
-    x = x / mx;
-    y = y / mx;
-    z = z / mx;
+    im = 1.0 / mx;
+    x = x * im;
+    y = y * im;
+    z = z * im;
   }
-  r = SHLIGHT_SQRTR(x * x + y * y + z * z);
-  iu = 1.0 / r;
+  iu = x * x + y * y + z * z;
+#endif
+  iu = 1.0 / SHLIGHT_SQRTR(iu);
   x = x * iu;
   y = y * iu;
   z = z * iu;
-  /* 1 / |d|; below |d| = 1e-30 the projection runs at unit radius and 1 / |d| is applied
-     afterwards as two finite factors, so entries that fit in a float stay exact and the others
-     overflow to +-inf (never inf * 0 or inf - inf) */
-  ir = 0.0f;
+  /* 1 / |d| (0 for the substituted direction); below |d| = 1e-30 the projection runs at unit
+     radius and 1 / |d| is applied afterwards as two finite factors, so entries that fit in a
+     float stay exact and the others overflow to +-inf (never inf * 0 or inf - inf) */
+  iu = iu * im;
+  ir = SHLIGHT_FLOAT(iu);
   ib = 1.0f;
-  if (mx > 0.0) {
-    ir = SHLIGHT_FLOAT(iu / mx);
-    if (iu / mx > 1.0e30) {
-      ir = SHLIGHT_FLOAT(SHLIGHT_SQRTR(iu / mx));
-      ib = ir;
-    }
+  if (iu > 1.0e30) {
+    ir = SHLIGHT_FLOAT(SHLIGHT_SQRTR(iu));
+    ib = ir;
   }
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), out_y);
+#if SHLIGHT_SIMD_EVAL
+  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && ib == 1.0f) {
+    shli_sh_grad_avx512(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir,
+                        out_grad);
+    return;
+  }
+#endif
   if (ib == 1.0f) {
     shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, out_grad);
   } else {

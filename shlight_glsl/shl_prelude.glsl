@@ -18,6 +18,7 @@
 #define SHLIGHT_SQRTR(x) sqrt(x)
 #define SHLIGHT_ABSR(x) abs(x)
 #define SHLIGHT_REAL_MAX 3.4028234e38
+#define SHLIGHT_REAL_WIDE 0
 #define SHLIGHT_UNUSED(x)
 #define SHLIGHT_SIGN1(x) ((x) < 0.0 ? -1.0 : 1.0)
 #define SHLIGHT_SIMD_EVAL 0

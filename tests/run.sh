@@ -52,8 +52,10 @@ step format-check $MAKE -s format-check
 step example $MAKE -s example
 step compile-matrix $MAKE -s compile-matrix
 step build-tests $MAKE -s build/tests/test_basis build/tests/test_glm build/tests/test_glsl \
-  build/tests/test_gl_smoke build/tests/fuzz_replay
+  build/tests/test_gl_smoke build/tests/fuzz_replay build/tests/native/test_basis
 step test_basis build/tests/test_basis
+# the same tests on this machine's SIMD paths (AVX-512 / AVX2 kernels) with FMA contraction
+step test_basis-march-native build/tests/native/test_basis
 step test_glm build/tests/test_glm
 step fuzz-corpus-replay build/tests/fuzz_replay tests/corpus/basis
 for b in $backends; do

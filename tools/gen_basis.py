@@ -24,6 +24,7 @@ import sys
 UNROLLED = 16      # straight-line code for n <= UNROLLED
 MAX_BANDS = 64     # tables for the run-time loops
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 
 def lit_d(v):
@@ -498,6 +499,8 @@ def c_regions():
            'static const shli_sh_batch_fn SHLI_SH_BATCH[%d] = {' % (UNROLLED + 1),
            '    0, ' + ', '.join('shli_sh_batch_%d' % n for n in range(1, UNROLLED + 1)) + '};']
     R['batch'] = bb
+    import gen_grad_simd
+    R['gradv'] = gen_grad_simd.main()
     lt = gen_lane_table()
     R['lanes'] = ['#if SHLIGHT_SIMD_EVAL'] + fmt_table('float', 'SHLI_SH_LANES', '%d' % len(lt), lt, lit_f, False) + ['#endif']
     return R

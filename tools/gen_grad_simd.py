@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Generates the tables of tools/wip/grad_avx512.h (shli_sh_grad_avx512).
+"""Tables of shli_sh_grad_avx512 in shlight.h (the AVX-512 gradient pass); imported by
+tools/gen_basis.py, which writes them into the @generated gradv region.
 
 Band l (1..15) writes its 2l+1 gradients, 3(2l+1) floats at out_grad + l*l, in chunks of 16
 floats; local float f = 16 c + j is coefficient k = f // 3 (band order: k < l sine m = l - k,
@@ -12,7 +13,6 @@ l-1+m and YS_{l-1}[m] at l-1-m, so with k the output position:
   cosine m = k-l: gx = Ap P[k-2] + Bp P[k]; gy = -A[m>=2] P[2l-k] + Bp P[2l-k-2]; gz = C P[k-1]
   sine   m = l-k: gx = A[m>=2] P[k] + B P[k-2]; gy = Ap P[2l-k-2] - B P[2l-k]; gz = C P[k-1]
 Unused taps point at lane 31 (always zero: 2l-1 <= 29) with coefficient 0.
-Usage: python3 gen_grad_avx512.py > tables.inc (pasted between the markers of grad_avx512.h)
 """
 import math
 import sys
@@ -116,6 +116,8 @@ def main():
     w('#define SHLI_GRADV_CHUNKS %d' % tot)
     w('/* first chunk of band l (l = 1..15; [16] = total) */')
     w('static const short SHLI_GRADV_CH0[17] = {%s};' % ', '.join(str(v) for v in ch0))
+    w('/* l as a float */')
+    w('static const float SHLI_GRADV_LF[16] = {%s};' % ', '.join('%d.0f' % l for l in range(NB)))
     w('/* mask of the last chunk of band l */')
     lm = []
     ym = []
@@ -151,8 +153,8 @@ def main():
         L += fmt_rows([lit(v) for v in c1], 8)
         L += fmt_rows([lit(v) for v in c2], 8)
     w('};')
-    sys.stdout.write('\n'.join(L) + '\n')
+    return L
 
 
 if __name__ == '__main__':
-    main()
+    sys.stdout.write('\n'.join(main()) + '\n')
