@@ -125,6 +125,9 @@ typedef struct {
   float *bout;                   /* batch output, n*n*NDIR */
 } bufs;
 typedef void (*wfn)(int n, const float *d, bufs *b);
+/* after each library call in a wrapper: no tail call, so callgrind's --toggle-collect on the
+ * wrapper sees the callee's instructions too */
+#define NOTAIL() __asm__ volatile("" ::: "memory")
 
 NOINL void bw_loop(int n, const float *d, bufs *b) {
   float x = d[0], y = d[1], z = d[2], c = 1.0f, s = 0.0f, p0, p1, p2, t;
@@ -161,17 +164,21 @@ NOINL void bw_empty(int n, const float *d, bufs *b) {
 }
 NOINL void bw_eval_rt(int n, const float *d, bufs *b) {
   shl_sh_eval(n, d, b->y);
+  NOTAIL();
 }
 NOINL void bw_accurate(int n, const float *d, bufs *b) {
   shl_sh_eval_accurate(n, d, b->y);
+  NOTAIL();
 }
 NOINL void bw_batch(int n, const float *d, bufs *b) {
   (void)d;
   shl_sh_eval_batch(n, NDIR, soa_rnd[0], soa_rnd[1], soa_rnd[2], b->bout);
+  NOTAIL();
 }
 NOINL void bw_batch16(int n, const float *d, bufs *b) { /* the 16 directions from d's block */
   int j = (int)((d - rnd_f[0]) / 3) & (NDIR - 16);
   shl_sh_eval_batch(n, 16, soa_rnd[0] + j, soa_rnd[1] + j, soa_rnd[2] + j, b->bout);
+  NOTAIL();
 }
 
 /* one wrapper per n for the static-inline kernels (n a literal, as in user code) */
@@ -181,17 +188,21 @@ NOINL void bw_batch16(int n, const float *d, bufs *b) { /* the 16 directions fro
   NOINL void bw_eval_##N(int n, const float *d, bufs *b) {                                         \
     (void)n;                                                                                       \
     shl_sh_eval(N, d, b->y);                                                                       \
+    NOTAIL();                                                                                      \
   }
 #define W_GRAD(N)                                                                                  \
   NOINL void bw_grad_##N(int n, const float *d, bufs *b) {                                         \
     (void)n;                                                                                       \
     shl_sh_eval_grad(N, d, b->y, b->g);                                                            \
+    NOTAIL();                                                                                      \
   }
 #define W_GSPH(N)                                                                                  \
   NOINL void bw_grad_sph_##N(int n, const float *d, bufs *b) {                                     \
     (void)n;                                                                                       \
     shl_sh_eval_grad_spherical(N, d, b->y, b->dth, b->dph);                                        \
+    NOTAIL();                                                                                      \
     shl_sh_grad_from_spherical(N, d, b->dth, b->dph, b->g);                                        \
+    NOTAIL();                                                                                      \
   }
 NLIST(W_EVAL)
 NLIST(W_GRAD)
