@@ -16785,6 +16785,112 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_avx512(int n, const float *y, float nx, flo
   }
 }
 
+/* Values and gradient in one pass for 5..16 bands (C only): the value kernel's band registers
+   feed the gradient chunks directly (one two-source permute builds the band-order vector), so
+   Y is neither stored and reloaded nor recomputed. (x, y, z) unit, ir = 1 / |d|. */
+SHLIGHT_CPU_INLINE void shli_sh_eval_grad_avx512(int n, float x, float y, float z, float ir,
+                                                 float *out_y, float (*out_grad)[3]) {
+  static const unsigned short bits[4] = {0xAAAA, 0xCCCC, 0xF0F0, 0xFF00};
+  float s2 = x * x + y * y;
+  float e = (z - 1.0f) * (z + 1.0f) + s2;
+  float k = 1.0f + e * (-0.5f + 0.375f * e);
+  float cr = x * k, ci = y * k, sg, q;
+  float *o = &out_grad[0][0];
+  __m512 c = _mm512_set1_ps(1.0f), s = _mm512_setzero_ps(), co, so, vs, xv, dd, vt;
+  __m512 vx = _mm512_set1_ps(x), vy = _mm512_set1_ps(y), vz = _mm512_set1_ps(z);
+  __m512 u0, u1, u2, p0, p1, q0, q1, r;
+  __m512i iota = _mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0);
+  __m512i iy0 = _mm512_loadu_si512((const void *)(SHLI_GRADV_IY));
+  __m512i iy1 = _mm512_loadu_si512((const void *)(SHLI_GRADV_IY + 16));
+  __m512i iy2 = _mm512_loadu_si512((const void *)(SHLI_GRADV_IY + 32));
+  __m512i iy3 = _mm512_loadu_si512((const void *)(SHLI_GRADV_IY + 48));
+  __m512i iy4 = _mm512_loadu_si512((const void *)(SHLI_GRADV_IY + 64));
+  __m512i iy5 = _mm512_loadu_si512((const void *)(SHLI_GRADV_IY + 80));
+  int b, l, nc;
+  vt = _mm512_set1_ps(s2 / (1.0f + fabsf(z)));
+  sg = copysignf(1.0f, z);
+  for (b = 0; (1 << b) < n; ++b) {
+    __m512 vc = _mm512_set1_ps(cr), vi = _mm512_set1_ps(ci);
+    __m512 nc2 = _mm512_fmsub_ps(c, vc, _mm512_mul_ps(s, vi));
+    __m512 ns = _mm512_fmadd_ps(s, vc, _mm512_mul_ps(c, vi));
+    c = _mm512_mask_mov_ps(c, (__mmask16)bits[b], nc2);
+    s = _mm512_mask_mov_ps(s, (__mmask16)bits[b], ns);
+    q = cr * cr - ci * ci;
+    ci = 2.0f * cr * ci;
+    cr = q;
+  }
+  vs = _mm512_set1_ps(sg);
+  c = _mm512_mask_mul_ps(c, (__mmask16)0xAAAA, c, vs);
+  s = _mm512_mask_mul_ps(s, (__mmask16)0xAAAA, s, vs);
+  co = _mm512_mul_ps(c, vs);
+  so = _mm512_mul_ps(s, vs);
+  xv = _mm512_loadu_ps(SHLI_SH_DIAG);
+  dd = _mm512_setzero_ps();
+  /* uK lane j = u[(K + j) % 3] for the AoS chunks */
+  u0 = _mm512_mask_blend_ps((__mmask16)0x4924, _mm512_mask_blend_ps((__mmask16)0x2492, vx, vy), vz);
+  u1 = _mm512_mask_blend_ps((__mmask16)0x4924, _mm512_mask_blend_ps((__mmask16)0x2492, vy, vz), vx);
+  u2 = _mm512_mask_blend_ps((__mmask16)0x4924, _mm512_mask_blend_ps((__mmask16)0x2492, vz, vx), vy);
+  out_y[0] = SHLI_SH_DIAG[0];
+  _mm512_mask_storeu_ps(o, (__mmask16)7, _mm512_setzero_ps());
+  p0 = _mm512_maskz_mov_ps((__mmask16)1, _mm512_set1_ps(SHLI_SH_DIAG[0] * ir));
+  p1 = _mm512_setzero_ps();
+  for (l = 1; l < n; ++l) {
+    const float *tb = SHLI_SH_LANES + (l - 1) * 48;
+    const int *ix = SHLI_GRADV_IDX + 32 * SHLI_GRADV_CH0[l];
+    const float *cf = SHLI_GRADV_COEF + 32 * SHLI_GRADV_CH0[l];
+    float *ol = o + 3 * l * l;
+    __m512 at = _mm512_mul_ps(_mm512_loadu_ps(tb), vt), yc, ys, lv;
+    __m512i rev = _mm512_sub_epi32(_mm512_set1_epi32(l), iota);
+    /* band order k: k < l sine m = l - k (lane l - k of ys), k >= l cosine m = k - l (lane
+       k - l of yc, 16 + k - l as the second permute source) */
+    __m512i bo = _mm512_mask_sub_epi32(rev, (__mmask16)(0xFFFFu << l), _mm512_set1_epi32(16), rev);
+    dd = _mm512_fnmadd_ps(at, xv, _mm512_mul_ps(_mm512_loadu_ps(tb + 32), dd));
+    xv = _mm512_fmadd_ps(_mm512_loadu_ps(tb + 16), xv, dd);
+    yc = _mm512_mul_ps(xv, (l & 1) ? co : c);
+    ys = _mm512_mul_ps(xv, (l & 1) ? so : s);
+    _mm512_mask_storeu_ps(out_y + l * l, (__mmask16)((1u << l) - 1u),
+                          _mm512_permutexvar_ps(rev, ys));
+    _mm512_mask_storeu_ps(out_y + l * l + l, (__mmask16)((2u << l) - 1u), yc);
+    lv = _mm512_set1_ps(SHLI_GRADV_LF[l] * ir);
+    nc = SHLI_GRADV_CH0[l + 1] - SHLI_GRADV_CH0[l];
+    if (l < 8) {
+      q0 = _mm512_mul_ps(
+          _mm512_maskz_permutex2var_ps((__mmask16)((2u << (2 * l)) - 1u), ys, bo, yc), lv);
+      do {
+        SHLI_GRADV_CHUNK1(0, u0);
+        SHLI_GRADV_STORE(0);
+        SHLI_GRADV_CHUNK1(1, u1);
+        SHLI_GRADV_STORE(1);
+        SHLI_GRADV_CHUNK1(2, u2);
+        _mm512_mask_storeu_ps(ol + 32, SHLI_GRADV_MASK(SHLI_GRADV_LASTM + l), r);
+      } while (0);
+      p0 = q0;
+    } else {
+      q0 = _mm512_mul_ps(_mm512_permutex2var_ps(ys, bo, yc), lv);
+      q1 = _mm512_mul_ps(
+          _mm512_maskz_permutexvar_ps((__mmask16)((2u << (2 * l - 16)) - 1u),
+                                      _mm512_sub_epi32(iota, _mm512_set1_epi32(l - 16)), yc),
+          lv);
+      do {
+        SHLI_GRADV_CHUNK2(0, u0);
+        _mm512_storeu_ps(ol, r);
+        SHLI_GRADV_CHUNK2(1, u1);
+        _mm512_storeu_ps(ol + 16, r);
+        SHLI_GRADV_CHUNK2(2, u2);
+        _mm512_storeu_ps(ol + 32, r);
+        SHLI_GRADV_CHUNK2(3, u0);
+        SHLI_GRADV_STORE(3);
+        SHLI_GRADV_CHUNK2(4, u1);
+        SHLI_GRADV_STORE(4);
+        SHLI_GRADV_CHUNK2(5, u2);
+        _mm512_mask_storeu_ps(ol + 80, SHLI_GRADV_MASK(SHLI_GRADV_LASTM + l), r);
+      } while (0);
+      p0 = q0;
+      p1 = q1;
+    }
+  }
+}
+
 #undef SHLI_GRADV_CHUNK1
 #undef SHLI_GRADV_CHUNK2
 #undef SHLI_GRADV_STORE
@@ -24415,14 +24521,14 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
     ir = SHLIGHT_FLOAT(SHLIGHT_SQRTR(iu));
     ib = ir;
   }
-  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), out_y);
 #if SHLIGHT_SIMD_EVAL
   if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && ib == 1.0f) {
-    shli_sh_grad_avx512(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir,
-                        out_grad);
+    shli_sh_eval_grad_avx512(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, out_y,
+                             out_grad);
     return;
   }
 #endif
+  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), out_y);
   if (ib == 1.0f) {
     shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, out_grad);
   } else {
