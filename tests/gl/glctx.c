@@ -28,7 +28,9 @@ static int load(glctx_proc (*getproc)(const char *)) {
 #include <GL/osmesa.h>
 static OSMesaContext os_ctx;
 static unsigned char os_pixel[4]; /* 1x1 default framebuffer; results go to FBOs and SSBOs */
-static glctx_proc os_getproc(const char *name) { return (glctx_proc)OSMesaGetProcAddress(name); }
+static glctx_proc os_getproc(const char *name) {
+  return (glctx_proc)OSMesaGetProcAddress(name);
+}
 static void os_close(void) {
   OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
   OSMesaDestroyContext(os_ctx);
@@ -60,11 +62,12 @@ static int os_open(void) {
 #endif
 static EGLDisplay egl_dpy = EGL_NO_DISPLAY;
 static EGLContext egl_ctx = EGL_NO_CONTEXT;
-static glctx_proc egl_getproc(const char *name) { return (glctx_proc)eglGetProcAddress(name); }
+static glctx_proc egl_getproc(const char *name) {
+  return (glctx_proc)eglGetProcAddress(name);
+}
 static void egl_close(void) {
   eglMakeCurrent(egl_dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-  if (egl_ctx != EGL_NO_CONTEXT)
-    eglDestroyContext(egl_dpy, egl_ctx);
+  if (egl_ctx != EGL_NO_CONTEXT) eglDestroyContext(egl_dpy, egl_ctx);
 #ifndef GLCTX_ASAN /* eglTerminate unloads swrast_dri.so: LSan could not symbolise its blocks */
   eglTerminate(egl_dpy);
 #endif
@@ -95,10 +98,8 @@ static int egl_open(void) {
 int glctx_open(const char *backend) {
   const char *any = getenv("SHLIGHT_GL_ANY_RENDERER"), *renderer;
   int rc = -1;
-  if (close_fn)
-    return 0;
-  if (!backend || !*backend)
-    backend = getenv("SHLIGHT_GL_BACKEND");
+  if (close_fn) return 0;
+  if (!backend || !*backend) backend = getenv("SHLIGHT_GL_BACKEND");
   if (!backend || !*backend)
 #ifndef GLCTX_NO_OSMESA
     backend = "osmesa";
@@ -106,17 +107,13 @@ int glctx_open(const char *backend) {
     backend = "egl";
 #endif
 #ifndef GLCTX_NO_OSMESA
-  if (!strcmp(backend, "osmesa"))
-    cur_backend = "osmesa", rc = os_open();
+  if (!strcmp(backend, "osmesa")) cur_backend = "osmesa", rc = os_open();
 #endif
 #ifndef GLCTX_NO_EGL
-  if (!strcmp(backend, "egl"))
-    cur_backend = "egl", rc = egl_open();
+  if (!strcmp(backend, "egl")) cur_backend = "egl", rc = egl_open();
 #endif
-  if (!*cur_backend)
-    fprintf(stderr, "glctx: backend '%s' is not built in\n", backend);
-  if (rc)
-    return glctx_close(), -1;
+  if (!*cur_backend) fprintf(stderr, "glctx: backend '%s' is not built in\n", backend);
+  if (rc) return glctx_close(), -1;
   renderer = (const char *)gl.GetString(GL_RENDERER);
   printf("glctx: %s | %s | %s\n", cur_backend, renderer ? renderer : "?",
          (const char *)gl.GetString(GL_VERSION));
@@ -129,20 +126,20 @@ int glctx_open(const char *backend) {
 }
 
 void glctx_close(void) {
-  if (close_fn)
-    close_fn();
+  if (close_fn) close_fn();
   close_fn = NULL;
   cur_backend = "";
   memset(&gl, 0, sizeof gl);
 }
 
-const char *glctx_backend(void) { return cur_backend; }
+const char *glctx_backend(void) {
+  return cur_backend;
+}
 
 int glctx_has_extension(const char *name) {
   GLint i, n = 0;
   gl.GetIntegerv(GL_NUM_EXTENSIONS, &n);
   for (i = 0; i < n; i++)
-    if (!strcmp((const char *)gl.GetStringi(GL_EXTENSIONS, (GLuint)i), name))
-      return 1;
+    if (!strcmp((const char *)gl.GetStringi(GL_EXTENSIONS, (GLuint)i), name)) return 1;
   return 0;
 }

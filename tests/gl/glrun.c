@@ -24,8 +24,7 @@ struct sbuf {
 };
 
 static void sb_put(struct sbuf *b, const char *s, size_t n) {
-  if (b->oom)
-    return;
+  if (b->oom) return;
   if (b->len + n + 1 > b->cap) {
     size_t cap = b->cap ? b->cap : 4096;
     char *p;
@@ -42,7 +41,9 @@ static void sb_put(struct sbuf *b, const char *s, size_t n) {
   b->p[b->len] = '\0';
 }
 
-static void sb_puts(struct sbuf *b, const char *s) { sb_put(b, s, strlen(s)); }
+static void sb_puts(struct sbuf *b, const char *s) {
+  sb_put(b, s, strlen(s));
+}
 
 static void sb_printf(struct sbuf *b, const char *fmt, ...) {
   char tmp[1024];
@@ -61,42 +62,43 @@ static void sb_printf(struct sbuf *b, const char *fmt, ...) {
 static int ensure_ctx(const char *backend) {
   if (ctx_state == 0) {
     ctx_state = glctx_open(backend) ? -1 : 1;
-    if (ctx_state == 1)
-      named_lines = glctx_has_extension("GL_ARB_shading_language_include");
+    if (ctx_state == 1) named_lines = glctx_has_extension("GL_ARB_shading_language_include");
   }
   return ctx_state == 1 ? 0 : -1;
 }
 
-int glrun_open(const char *backend) { return ensure_ctx(backend); }
+int glrun_open(const char *backend) {
+  return ensure_ctx(backend);
+}
 
 void glrun_close(void) {
-  if (ctx_state == 1)
-    glctx_close();
+  if (ctx_state == 1) glctx_close();
   ctx_state = 0;
   free(last_log);
   last_log = NULL;
 }
 
-const char *glrun_backend(void) { return ensure_ctx(NULL) ? "" : glctx_backend(); }
+const char *glrun_backend(void) {
+  return ensure_ctx(NULL) ? "" : glctx_backend();
+}
 
 const char *glrun_renderer(void) {
   return ensure_ctx(NULL) ? "(no context)" : (const char *)gl.GetString(GL_RENDERER);
 }
 
 void glrun_set_versions(const char *compute_version, const char *fragment_version) {
-  if (compute_version)
-    version_cs = compute_version;
-  if (fragment_version)
-    version_fs = fragment_version;
+  if (compute_version) version_cs = compute_version;
+  if (fragment_version) version_fs = fragment_version;
 }
 
-const char *glrun_last_log(void) { return last_log ? last_log : ""; }
+const char *glrun_last_log(void) {
+  return last_log ? last_log : "";
+}
 
 static void set_log(const char *text) {
   free(last_log);
   last_log = text ? malloc(strlen(text) + 1) : NULL;
-  if (last_log)
-    strcpy(last_log, text);
+  if (last_log) strcpy(last_log, text);
 }
 
 /* ---- source assembly ---- */
@@ -123,8 +125,7 @@ static void add_part(struct sbuf *b, struct sbuf *legend, int named, int k, cons
     sb_printf(legend, "  lines %dxxxxx: %s\n", k, name);
   }
   sb_puts(b, text);
-  if (!*text || text[strlen(text) - 1] != '\n')
-    sb_puts(b, "\n");
+  if (!*text || text[strlen(text) - 1] != '\n') sb_puts(b, "\n");
 }
 
 static char *read_file(const char *path) {
@@ -140,10 +141,8 @@ static char *read_file(const char *path) {
       s = NULL;
     }
   }
-  if (!s)
-    fprintf(stderr, "glrun: cannot read %s\n", path);
-  if (f)
-    fclose(f);
+  if (!s) fprintf(stderr, "glrun: cannot read %s\n", path);
+  if (f) fclose(f);
   return s;
 }
 
@@ -154,10 +153,8 @@ static char *build_source(const char *version, const char *defines, const char *
   struct sbuf b = {0}, legend = {0};
   int named = named_lines && !is_es(version), k = 0, i;
   sb_printf(&b, "%s\n", version);
-  if (named)
-    sb_puts(&b, "#extension GL_ARB_shading_language_include : enable\n");
-  if (is_es(version))
-    sb_puts(&b, "precision highp float;\nprecision highp int;\n");
+  if (named) sb_puts(&b, "#extension GL_ARB_shading_language_include : enable\n");
+  if (is_es(version)) sb_puts(&b, "precision highp float;\nprecision highp int;\n");
   add_part(&b, &legend, named, ++k, "defines", defines ? defines : "");
   for (i = 0; i < nfiles; i++) {
     char *text = read_file(files[i]);
@@ -188,8 +185,7 @@ static GLuint build_program(const char *vs_src, GLenum type, const char *src, co
   char *text;
   int i;
   sh[0] = gl.CreateShader(type);
-  if (vs_src)
-    sh[1] = gl.CreateShader(GL_VERTEX_SHADER);
+  if (vs_src) sh[1] = gl.CreateShader(GL_VERTEX_SHADER);
   for (i = 0; i < 2 && ok && sh[i]; i++) {
     const char *s = i ? vs_src : src;
     gl.ShaderSource(sh[i], 1, &s, NULL);
@@ -216,11 +212,9 @@ static GLuint build_program(const char *vs_src, GLenum type, const char *src, co
     }
   }
   for (i = 0; i < 2; i++)
-    if (sh[i])
-      gl.DeleteShader(sh[i]); /* flagged; freed with the program */
+    if (sh[i]) gl.DeleteShader(sh[i]); /* flagged; freed with the program */
   if (!ok) {
-    if (!log.p)
-      sb_puts(&log, "glrun: shader build failed (no log)\n");
+    if (!log.p) sb_puts(&log, "glrun: shader build failed (no log)\n");
     if (legend) { /* numbered #line (ES): which part a line number belongs to */
       sb_puts(&log, "source parts (line = part * 100000 + line in part):\n");
       sb_puts(&log, legend);
@@ -259,8 +253,7 @@ static GLuint make_program(const char *version, const char *vs_body, const char 
 
 static int gl_failed(const char *what) {
   GLenum e = gl.GetError();
-  if (e == GL_NO_ERROR)
-    return 0;
+  if (e == GL_NO_ERROR) return 0;
   while (gl.GetError() != GL_NO_ERROR) {
   }
   fprintf(stderr, "glrun: %s: GL error 0x%04x\n", what, e);
@@ -300,14 +293,12 @@ int glrun_compute(const char *defines, const char *const *files, int nfiles, con
   struct sbuf prefix = {0};
   GLuint prog, buf[2] = {0, 0};
   int rc = -1;
-  if (count < 1 || count > 65535 * GLRUN_GROUP)
-    return bad_args("glrun_compute", "bad count");
+  if (count < 1 || count > 65535 * GLRUN_GROUP) return bad_args("glrun_compute", "bad count");
   if (!main_src || !out || !n_out || (n_in && !in) || nfiles < 0 || (nfiles && !files))
     return bad_args("glrun_compute", "bad arguments");
   if (n_in / (size_t)count > 0x7fffffff || n_out / (size_t)count > 0x7fffffff)
     return bad_args("glrun_compute", "too many floats per item");
-  if (ensure_ctx(NULL))
-    return -1;
+  if (ensure_ctx(NULL)) return -1;
   sb_printf(&prefix, "#define GLRUN_COUNT %d\n#define GLRUN_IN_STRIDE %d\n", count,
             (int)(n_in / (size_t)count));
   sb_printf(&prefix, "#define GLRUN_OUT_STRIDE %d\n", (int)(n_out / (size_t)count));
@@ -316,8 +307,7 @@ int glrun_compute(const char *defines, const char *const *files, int nfiles, con
              ? 0
              : make_program(version_cs, NULL, defines, files, nfiles, prefix.p, main_src, CS_MAIN);
   free(prefix.p);
-  if (!prog)
-    return -1;
+  if (!prog) return -1;
   gl_failed("before glrun_compute");
   memcpy(&fill, &qnan, sizeof fill);
   gl.GenBuffers(2, buf);
@@ -334,8 +324,7 @@ int glrun_compute(const char *defines, const char *const *files, int nfiles, con
   gl.DispatchCompute((GLuint)(count + GLRUN_GROUP - 1) / GLRUN_GROUP, 1, 1);
   gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT); /* shader writes -> glGetBufferSubData */
   gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, (GLsizeiptr)(sizeof(float) * n_out), out);
-  if (!gl_failed("glrun_compute"))
-    rc = 0;
+  if (!gl_failed("glrun_compute")) rc = 0;
   gl.UseProgram(0);
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   gl.DeleteBuffers(2, buf);
@@ -374,8 +363,7 @@ int glrun_fragment(const char *defines, const char *const *files, int nfiles, co
   if (count < 1 || !main_src || !out || (in_vec4_per_item && !in) || nfiles < 0 ||
       (nfiles && !files))
     return bad_args("glrun_fragment", "bad arguments");
-  if (ensure_ctx(NULL))
-    return -1;
+  if (ensure_ctx(NULL)) return -1;
   h = (count + w - 1) / w;
   gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_tex);
   gl.GetIntegerv(GL_MAX_DRAW_BUFFERS, &max_draw);
@@ -383,14 +371,12 @@ int glrun_fragment(const char *defines, const char *const *files, int nfiles, co
     return bad_args("glrun_fragment", "in_vec4_per_item out of range");
   if (out_vec4_per_item < 1 || out_vec4_per_item > GLRUN_MAX_OUT || out_vec4_per_item > max_draw)
     return bad_args("glrun_fragment", "out_vec4_per_item out of range (1..8)");
-  if (h > max_tex)
-    return bad_args("glrun_fragment", "count too large");
+  if (h > max_tex) return bad_args("glrun_fragment", "count too large");
 
   sb_printf(&prefix, "#define GLRUN_COUNT %d\n#define GLRUN_W %d\n", count, w);
   sb_printf(&prefix, "#define GLRUN_IN_VEC4 %d\n#define GLRUN_OUT_VEC4 %d\n", in_vec4_per_item,
             out_vec4_per_item);
-  if (in_vec4_per_item)
-    sb_puts(&prefix, "uniform highp sampler2D glrun_tex;\n");
+  if (in_vec4_per_item) sb_puts(&prefix, "uniform highp sampler2D glrun_tex;\n");
   for (k = 0; k < out_vec4_per_item; k++)
     sb_printf(&prefix, "layout(location = %d) out vec4 glrun_o%d;\n", k, k);
   sb_puts(&prefix, FS_PREFIX);
@@ -406,14 +392,12 @@ int glrun_fragment(const char *defines, const char *const *files, int nfiles, co
                                   : make_program(version_fs, VS_BODY, defines, files, nfiles,
                                                  prefix.p, main_src, suffix.p);
   free(prefix.p), free(suffix.p);
-  if (!prog)
-    return -1;
+  if (!prog) return -1;
 
   px = malloc(sizeof(float) * 4 * (size_t)w * (size_t)h);
   if (in_vec4_per_item && (size_t)w * (size_t)h != (size_t)count) {
     padded = calloc((size_t)w * (size_t)h * per_in, sizeof(float)); /* zero inputs past count */
-    if (padded)
-      memcpy(padded, in, sizeof(float) * per_in * (size_t)count);
+    if (padded) memcpy(padded, in, sizeof(float) * per_in * (size_t)count);
   }
   if (!px || (in_vec4_per_item && (size_t)w * (size_t)h != (size_t)count && !padded)) {
     fprintf(stderr, "glrun: out of memory\n");
@@ -447,8 +431,7 @@ int glrun_fragment(const char *defines, const char *const *files, int nfiles, co
   gl.BindVertexArray(vao); /* core profile: drawing needs a bound (empty) VAO */
   gl.Viewport(0, 0, w, h);
   gl.UseProgram(prog);
-  if (in_vec4_per_item)
-    gl.Uniform1i(gl.GetUniformLocation(prog, "glrun_tex"), 0);
+  if (in_vec4_per_item) gl.Uniform1i(gl.GetUniformLocation(prog, "glrun_tex"), 0);
   gl.ActiveTexture(GL_TEXTURE0);
   gl.BindTexture(GL_TEXTURE_2D, tex[0]);
   gl.DrawArrays(GL_TRIANGLES, 0, 3);
@@ -459,19 +442,15 @@ int glrun_fragment(const char *defines, const char *const *files, int nfiles, co
       for (c = 0; c < 4; c++)
         out[(size_t)i * per_out + 4 * (size_t)k + (size_t)c] = px[4 * i + c];
   }
-  if (!gl_failed("glrun_fragment"))
-    rc = 0;
+  if (!gl_failed("glrun_fragment")) rc = 0;
 done:
   gl.UseProgram(0);
   gl.BindVertexArray(0);
   gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
   gl.BindTexture(GL_TEXTURE_2D, 0);
-  if (vao)
-    gl.DeleteVertexArrays(1, &vao);
-  if (fbo)
-    gl.DeleteFramebuffers(1, &fbo);
-  if (tex[0])
-    gl.DeleteTextures(1 + out_vec4_per_item, tex);
+  if (vao) gl.DeleteVertexArrays(1, &vao);
+  if (fbo) gl.DeleteFramebuffers(1, &fbo);
+  if (tex[0]) gl.DeleteTextures(1 + out_vec4_per_item, tex);
   gl.DeleteProgram(prog);
   free(padded), free(px);
   return rc;

@@ -62,8 +62,7 @@ static double compare_toy(const float *out, int *inexact) {
     toy_poly(dirs + 4 * i, ref);
     for (k = 0; k < 4; k++) {
       double e = fabs((double)out[4 * i + k] - (double)ref[k]);
-      if (!(e <= worst))
-        worst = e; /* NaN sticks */
+      if (!(e <= worst)) worst = e; /* NaN sticks */
       *inexact += memcmp(&out[4 * i + k], &ref[k], sizeof(float)) != 0;
     }
   }
@@ -74,8 +73,7 @@ static void check_toy(const char *path, int rc) {
   int inexact = 0;
   double worst;
   TL_CHECK(rc == 0, "%s run failed", path);
-  if (rc)
-    return;
+  if (rc) return;
   worst = compare_toy(got, &inexact);
   printf("  %s: max |GLSL - C| = %.3g, %d of %d values not bit-identical\n", path, worst, inexact,
          4 * N);
@@ -172,8 +170,7 @@ static void test_errors(void) {
 int main(void) {
   make_dirs();
   TL_CHECK(glrun_open(NULL) == 0, "no GL context (see the message above)");
-  if (tl_failed)
-    return tl_summary();
+  if (tl_failed) return tl_summary();
   TL_RUN(test_info);
   TL_RUN(test_toy_compute);
   TL_RUN(test_toy_fragment);
