@@ -16,6 +16,9 @@
      >>basis      SH basis Y_i(d): shl_sh_eval, shl_sh_eval_accurate, shl_sh_eval_batch
      >>gradient   Cartesian gradient of Y(d/|d|): shl_sh_eval_grad; the paper's spherical
                   partials: shl_sh_eval_grad_spherical, shl_sh_grad_from_spherical
+     >>zonal      ZH of a uniform spherical cap (stable), its half-angle derivative, ZH -> SH
+     >>light      sphere and triangle lights (SH and gradient w.r.t. the shading point),
+                  exact signed triangle solid angle
 
    THE IMPORTANT PARTS
      float y[16];                         4 bands = 16 coefficients
@@ -6243,6 +6246,120 @@ SHLIGHT_INLINE void shli_sh_poly_4(float x, float y, float z, float *out_y) {
   pc = qc;
   out_y[15] = -0.59004359f * pc;
   out_y[9] = -0.59004359f * ps;
+}
+
+SHLIGHT_INLINE void shli_sh_poly_5(float x, float y, float z, float *out_y) {
+  float z2;
+  float pc;
+  float ps;
+  float qc;
+  float xf;
+  z2 = z * z;
+  out_y[0] = 0.282094792f;
+  out_y[2] = 0.488602512f * z;
+  out_y[6] = 0.946174696f * z2 + -0.315391565f;
+  out_y[12] = (1.86588166f * z2 + -1.119529f) * z;
+  out_y[20] = (3.70249414f * z2 + -3.17356641f) * z2 + 0.317356641f;
+  out_y[3] = -0.488602512f * x;
+  out_y[1] = -0.488602512f * y;
+  xf = -1.09254843f * z;
+  out_y[7] = xf * x;
+  out_y[5] = xf * y;
+  xf = -2.285229f * z2 + 0.457045799f;
+  out_y[13] = xf * x;
+  out_y[11] = xf * y;
+  xf = (-4.6833258f * z2 + 2.00713963f) * z;
+  out_y[21] = xf * x;
+  out_y[19] = xf * y;
+  pc = x * x - y * y;
+  ps = 2.0f * x * y;
+  out_y[8] = 0.546274215f * pc;
+  out_y[4] = 0.546274215f * ps;
+  xf = 1.44530572f * z;
+  out_y[14] = xf * pc;
+  out_y[10] = xf * ps;
+  xf = 3.31161144f * z2 + -0.473087348f;
+  out_y[22] = xf * pc;
+  out_y[18] = xf * ps;
+  qc = x * pc - y * ps;
+  ps = x * ps + y * pc;
+  pc = qc;
+  out_y[15] = -0.59004359f * pc;
+  out_y[9] = -0.59004359f * ps;
+  xf = -1.77013077f * z;
+  out_y[23] = xf * pc;
+  out_y[17] = xf * ps;
+  qc = x * pc - y * ps;
+  ps = x * ps + y * pc;
+  pc = qc;
+  out_y[24] = 0.625835735f * pc;
+  out_y[16] = 0.625835735f * ps;
+}
+
+SHLIGHT_INLINE void shli_sh_poly_6(float x, float y, float z, float *out_y) {
+  float z2;
+  float pc;
+  float ps;
+  float qc;
+  float xf;
+  z2 = z * z;
+  out_y[0] = 0.282094792f;
+  out_y[2] = 0.488602512f * z;
+  out_y[6] = 0.946174696f * z2 + -0.315391565f;
+  out_y[12] = (1.86588166f * z2 + -1.119529f) * z;
+  out_y[20] = (3.70249414f * z2 + -3.17356641f) * z2 + 0.317356641f;
+  out_y[30] = ((7.36787031f * z2 + -8.18652257f) * z2 + 1.75425484f) * z;
+  out_y[3] = -0.488602512f * x;
+  out_y[1] = -0.488602512f * y;
+  xf = -1.09254843f * z;
+  out_y[7] = xf * x;
+  out_y[5] = xf * y;
+  xf = -2.285229f * z2 + 0.457045799f;
+  out_y[13] = xf * x;
+  out_y[11] = xf * y;
+  xf = (-4.6833258f * z2 + 2.00713963f) * z;
+  out_y[21] = xf * x;
+  out_y[19] = xf * y;
+  xf = (-9.51187968f * z2 + 6.34125312f) * z2 + -0.452946651f;
+  out_y[31] = xf * x;
+  out_y[29] = xf * y;
+  pc = x * x - y * y;
+  ps = 2.0f * x * y;
+  out_y[8] = 0.546274215f * pc;
+  out_y[4] = 0.546274215f * ps;
+  xf = 1.44530572f * z;
+  out_y[14] = xf * pc;
+  out_y[10] = xf * ps;
+  xf = 3.31161144f * z2 + -0.473087348f;
+  out_y[22] = xf * pc;
+  out_y[18] = xf * ps;
+  xf = (7.19030518f * z2 + -2.39676839f) * z;
+  out_y[32] = xf * pc;
+  out_y[28] = xf * ps;
+  qc = x * pc - y * ps;
+  ps = x * ps + y * pc;
+  pc = qc;
+  out_y[15] = -0.59004359f * pc;
+  out_y[9] = -0.59004359f * ps;
+  xf = -1.77013077f * z;
+  out_y[23] = xf * pc;
+  out_y[17] = xf * ps;
+  xf = -4.40314469f * z2 + 0.489238299f;
+  out_y[33] = xf * pc;
+  out_y[27] = xf * ps;
+  qc = x * pc - y * ps;
+  ps = x * ps + y * pc;
+  pc = qc;
+  out_y[24] = 0.625835735f * pc;
+  out_y[16] = 0.625835735f * ps;
+  xf = 2.07566231f * z;
+  out_y[34] = xf * pc;
+  out_y[26] = xf * ps;
+  qc = x * pc - y * ps;
+  ps = x * ps + y * pc;
+  pc = qc;
+  out_y[35] = -0.656382057f * pc;
+  out_y[25] = -0.656382057f * ps;
 }
 
 SHLIGHT_INLINE void shli_sh_core_1(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
@@ -16900,7 +17017,7 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_grad_avx512(int n, float x, float y, float 
 #endif
 
 /* Y_i at the unit direction (dx, dy, dz): the one evaluation path of shl_sh_eval and
-   shl_sh_eval_grad (n <= 4: float Horner forms; 5..16 with AVX-512: the across-m SIMD core;
+   shl_sh_eval_grad (n <= 6: float Horner forms; 7..64 with AVX-512: the across-m SIMD core;
    otherwise the double Reinsch-form core). */
 SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float *out_y) {
   shli_real x = SHLIGHT_REAL(dx);
@@ -16918,7 +17035,7 @@ SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float 
     n = SHLIGHT_MAX_BANDS;
   }
   switch (n) {
-  /* up to 4 bands, float Horner forms straight from d are within 3e-7 (README): no
+  /* up to 6 bands, float Horner forms straight from d are within the targets (README): no
      normalisation, no division, no double */
   case 1:
     shli_sh_poly_1(dx, dy, dz, out_y);
@@ -16936,6 +17053,16 @@ SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float 
 #if SHLIGHT_MAX_BANDS >= 4
   case 4:
     shli_sh_poly_4(dx, dy, dz, out_y);
+    return;
+#endif
+#if SHLIGHT_MAX_BANDS >= 5
+  case 5:
+    shli_sh_poly_5(dx, dy, dz, out_y);
+    return;
+#endif
+#if SHLIGHT_MAX_BANDS >= 6
+  case 6:
+    shli_sh_poly_6(dx, dy, dz, out_y);
     return;
 #endif
   default:
@@ -24696,6 +24823,976 @@ SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const fl
   }
 }
 
+/* >>zonal -----------------------------------------------------------------------------------
+   Zonal harmonics (ZH) of a uniform spherical cap and the ZH -> SH rotation (MATH.md sec. 2,
+   seed 003 eq. 9-11, 14-16 with erratum E4 applied). A sphere of radius r seen from distance d
+   covers the cap of half-angle a, s = sin a = min(r / d, 1), alpha = cos a. The unit-radiance
+   cap about +z projects onto band l as
+     L_0 = sqrt(pi) (1 - alpha)  = sqrt(pi) s^2 / (1 + alpha)
+     L_l = sqrt(pi / (2l+1)) (P_{l-1}(alpha) - P_{l+1}(alpha))
+         = sqrt(pi (2l+1)) / (l (l+1)) s^2 P'_l(alpha)                       (l >= 1)
+   The second forms have no cancellation: alpha = sqrt((d - r)(d + r)) / d, and
+   P'_{l+1} = P'_{l-1} + (2l+1) P_l sums positive terms near alpha = 1 (small caps). The printed
+   first forms lose everything to 1 - alpha for small caps (float: every L_l = 0 below
+   s = 2.4e-4); shl_zh_cap_printed keeps them as the comparison point.
+   Common domain of the cap kernels: r and d in float; r <= 0 or NaN (no light), NaN or
+   infinite d: every output 0. d <= r (the point on or inside the sphere): the hemisphere,
+   s = 1, alpha = 0, which is the limit at the sphere's surface. Internal precision shli_real
+   (double in C, float in GLSL). */
+
+/* Per band l < 64: (2l+1)/(l+1), l/(l+1), 1/(l(l+1)) (0 for l = 0), sqrt(4 pi/(2l+1)),
+   sqrt(pi(2l+1)): the Legendre recurrence and the ZH normalisations without divisions
+   (tools/gen_basis.py; the GLSL twin holds the first 16 bands). */
+/* @generated begin zh_tab */
+static const shli_real SHLI_ZH_TAB[320] = {1.0,
+                                           0.0,
+                                           0.0,
+                                           3.5449077018110318,
+                                           1.7724538509055159,
+                                           1.5,
+                                           0.5,
+                                           0.5,
+                                           2.046653415892977,
+                                           3.0699801238394655,
+                                           1.6666666666666667,
+                                           0.6666666666666666,
+                                           0.16666666666666666,
+                                           1.5853309190424043,
+                                           3.963327297606011,
+                                           1.75,
+                                           0.75,
+                                           0.08333333333333333,
+                                           1.3398491713813576,
+                                           4.689472099834751,
+                                           1.8,
+                                           0.8,
+                                           0.05,
+                                           1.1816359006036774,
+                                           5.317361552716548,
+                                           1.8333333333333333,
+                                           0.8333333333333334,
+                                           0.03333333333333333,
+                                           1.0688298875771143,
+                                           5.878564381674128,
+                                           1.8571428571428572,
+                                           0.8571428571428571,
+                                           0.023809523809523808,
+                                           0.9831804988974527,
+                                           6.390673242833443,
+                                           1.875,
+                                           0.875,
+                                           0.017857142857142856,
+                                           0.9152912328637689,
+                                           6.864684246478267,
+                                           1.8888888888888888,
+                                           0.8888888888888888,
+                                           0.013888888888888888,
+                                           0.8597664051548494,
+                                           7.308014443816219,
+                                           1.9,
+                                           0.9,
+                                           0.011111111111111112,
+                                           0.8132576019143845,
+                                           7.7259472181866515,
+                                           1.9090909090909092,
+                                           0.9090909090909091,
+                                           0.00909090909090909,
+                                           0.7735622797705238,
+                                           8.1224039375905,
+                                           1.9166666666666667,
+                                           0.9166666666666666,
+                                           0.007575757575757576,
+                                           0.7391643523295388,
+                                           8.500390051789697,
+                                           1.9230769230769231,
+                                           0.9230769230769231,
+                                           0.00641025641025641,
+                                           0.7089815403622064,
+                                           8.86226925452758,
+                                           1.9285714285714286,
+                                           0.9285714285714286,
+                                           0.005494505494505495,
+                                           0.682217805297659,
+                                           9.209940371518396,
+                                           1.9333333333333333,
+                                           0.9333333333333333,
+                                           0.004761904761904762,
+                                           0.6582728344942353,
+                                           9.544956100166413,
+                                           1.9375,
+                                           0.9375,
+                                           0.004166666666666667,
+                                           0.6366842184408109,
+                                           9.868605385832568,
+                                           1.9411764705882353,
+                                           0.9411764705882353,
+                                           0.003676470588235294,
+                                           0.6170892233105644,
+                                           10.181972184624312,
+                                           1.9444444444444444,
+                                           0.9444444444444444,
+                                           0.0032679738562091504,
+                                           0.5991987653610963,
+                                           10.485978393819185,
+                                           1.9473684210526316,
+                                           0.9473684210526315,
+                                           0.0029239766081871343,
+                                           0.5827792362686951,
+                                           10.78141587097086,
+                                           1.95,
+                                           0.95,
+                                           0.002631578947368421,
+                                           0.5676395257004349,
+                                           11.06897075115848,
+                                           1.9523809523809523,
+                                           0.9523809523809523,
+                                           0.002380952380952381,
+                                           0.5536215713397219,
+                                           11.349242212464297,
+                                           1.9545454545454546,
+                                           0.9545454545454546,
+                                           0.0021645021645021645,
+                                           0.5405933564872216,
+                                           11.622757164475265,
+                                           1.9565217391304348,
+                                           0.9565217391304348,
+                                           0.001976284584980237,
+                                           0.5284436396808014,
+                                           11.889981892818033,
+                                           1.9583333333333333,
+                                           0.9583333333333334,
+                                           0.0018115942028985507,
+                                           0.5170779317854871,
+                                           12.151331396958948,
+                                           1.96,
+                                           0.96,
+                                           0.0016666666666666668,
+                                           0.5064153859730045,
+                                           12.407176956338612,
+                                           1.9615384615384615,
+                                           0.9615384615384616,
+                                           0.0015384615384615385,
+                                           0.4963863654563491,
+                                           12.657852319136902,
+                                           1.962962962962963,
+                                           0.9629629629629629,
+                                           0.0014245014245014246,
+                                           0.4869305210668145,
+                                           12.903658808270585,
+                                           1.9642857142857142,
+                                           0.9642857142857143,
+                                           0.0013227513227513227,
+                                           0.47799525700117707,
+                                           13.14486956753237,
+                                           1.9655172413793103,
+                                           0.9655172413793104,
+                                           0.0012315270935960591,
+                                           0.46953449538577935,
+                                           13.381733118494711,
+                                           1.9666666666666666,
+                                           0.9666666666666667,
+                                           0.0011494252873563218,
+                                           0.46150767322631336,
+                                           13.614476360176244,
+                                           1.967741935483871,
+                                           0.967741935483871,
+                                           0.001075268817204301,
+                                           0.4538789217899773,
+                                           13.843307114594309,
+                                           1.96875,
+                                           0.96875,
+                                           0.0010080645161290322,
+                                           0.44661639046045254,
+                                           14.068416299504255,
+                                           1.9696969696969697,
+                                           0.9696969696969697,
+                                           0.000946969696969697,
+                                           0.43969168593737223,
+                                           14.289979792964598,
+                                           1.9705882352941178,
+                                           0.9705882352941176,
+                                           0.00089126559714795,
+                                           0.4330794042246407,
+                                           14.508160041525464,
+                                           1.9714285714285715,
+                                           0.9714285714285714,
+                                           0.0008403361344537816,
+                                           0.42675673779283463,
+                                           14.723107453852794,
+                                           1.9722222222222223,
+                                           0.9722222222222222,
+                                           0.0007936507936507937,
+                                           0.42070314404994585,
+                                           14.934961613773078,
+                                           1.972972972972973,
+                                           0.972972972972973,
+                                           0.0007507507507507507,
+                                           0.4149000641243619,
+                                           15.14385234053921,
+                                           1.9736842105263157,
+                                           0.9736842105263158,
+                                           0.0007112375533428165,
+                                           0.4093306831785954,
+                                           15.349900619197326,
+                                           1.9743589743589745,
+                                           0.9743589743589743,
+                                           0.0006747638326585695,
+                                           0.4039797251945956,
+                                           15.55321941999193,
+                                           1.975,
+                                           0.975,
+                                           0.000641025641025641,
+                                           0.39883327652070694,
+                                           15.753914422567926,
+                                           1.975609756097561,
+                                           0.975609756097561,
+                                           0.0006097560975609756,
+                                           0.3938786335345591,
+                                           15.952084658149644,
+                                           1.9761904761904763,
+                                           0.9761904761904762,
+                                           0.0005807200929152149,
+                                           0.38910417062104186,
+                                           16.147823080773236,
+                                           1.9767441860465116,
+                                           0.9767441860465116,
+                                           0.0005537098560354374,
+                                           0.38449922533937375,
+                                           16.341217076923385,
+                                           1.9772727272727273,
+                                           0.9772727272727273,
+                                           0.0005285412262156448,
+                                           0.3800539981954647,
+                                           16.532348921502717,
+                                           1.9777777777777779,
+                                           0.9777777777777777,
+                                           0.000505050505050505,
+                                           0.37575946487379114,
+                                           16.721296186883706,
+                                           1.9782608695652173,
+                                           0.9782608695652174,
+                                           0.0004830917874396135,
+                                           0.3716072991387248,
+                                           16.90813211081198,
+                                           1.9787234042553192,
+                                           0.9787234042553191,
+                                           0.00046253469010175765,
+                                           0.3675898049055887,
+                                           17.09292592810987,
+                                           1.9791666666666667,
+                                           0.9791666666666666,
+                                           0.0004432624113475177,
+                                           0.3636998562198054,
+                                           17.275743170440755,
+                                           1.9795918367346939,
+                                           0.9795918367346939,
+                                           0.00042517006802721087,
+                                           0.35993084407864623,
+                                           17.45664593781434,
+                                           1.98,
+                                           0.98,
+                                           0.00040816326530612246,
+                                           0.3562766291923714,
+                                           17.635693145022387,
+                                           1.9803921568627452,
+                                           0.9803921568627451,
+                                           0.000392156862745098,
+                                           0.3527314999163799,
+                                           17.812940745777187,
+                                           1.9807692307692308,
+                                           0.9807692307692307,
+                                           0.0003770739064856712,
+                                           0.3492901346984507,
+                                           17.98844193697021,
+                                           1.9811320754716981,
+                                           0.9811320754716981,
+                                           0.000362844702467344,
+                                           0.34594756847932034,
+                                           18.162247345164317,
+                                           1.9814814814814814,
+                                           0.9814814814814815,
+                                           0.00034940600978336826,
+                                           0.3426991625639729,
+                                           18.33440519717255,
+                                           1.981818181818182,
+                                           0.9818181818181818,
+                                           0.0003367003367003367,
+                                           0.33954057754775097,
+                                           18.504961476352427,
+                                           1.9821428571428572,
+                                           0.9821428571428571,
+                                           0.0003246753246753247,
+                                           0.33646774893785564,
+                                           18.673960066050988,
+                                           1.9824561403508771,
+                                           0.9824561403508771,
+                                           0.0003132832080200501,
+                                           0.33347686515873765,
+                                           18.841442881468677,
+                                           1.9827586206896552,
+                                           0.9827586206896551,
+                                           0.00030248033877797946,
+                                           0.33056434767069076,
+                                           19.00744999106472,
+                                           1.9830508474576272,
+                                           0.9830508474576272,
+                                           0.0002922267679719462,
+                                           0.32772683296581756,
+                                           19.172019728500327,
+                                           1.9833333333333334,
+                                           0.9833333333333333,
+                                           0.0002824858757062147,
+                                           0.32496115623539035,
+                                           19.335188796005728,
+                                           1.9836065573770492,
+                                           0.9836065573770492,
+                                           0.000273224043715847,
+                                           0.32226433652827563,
+                                           19.496992359960675,
+                                           1.9838709677419355,
+                                           0.9838709677419355,
+                                           0.00026441036488630354,
+                                           0.319633563242172,
+                                           19.65746413939358,
+                                           1.9841269841269842,
+                                           0.9841269841269841,
+                                           0.0002560163850486431,
+                                           0.3170661838084809,
+                                           19.816636488030053,
+                                           1.984375,
+                                           0.984375,
+                                           0.000248015873015873,
+                                           0.31455969244813353,
+                                           19.97454047045648};
+/* @generated end zh_tab */
+
+/* Geometry of a sphere seen from a point, in shli_real: (dx, dy, dz) = c - x, r = radius.
+   out_g[0..2]: unit axis (c - x) / |c - x|, (0, 0, 1) when x == c;
+   out_g[3]: 1 / |c - x|, capped at 1e20 (0 when x == c); out_g[4]: s^2 = min(r / |c - x|, 1)^2;
+   out_g[5]: alpha = sqrt((d - r)(d + r)) / d, 0 on or inside the sphere;
+   out_g[6]: 1 for a light, 0 for none (rr <= 0 or NaN, c - x NaN or infinite: out_g[0..5]
+   then hold the values of an empty cap about +z). With shli_real = float (GLSL) the
+   difference is scaled by its largest component first, so |c - x|^2 neither overflows nor
+   underflows; double needs no scaling (squares of floats fit). */
+SHLIGHT_INLINE void shli_cap_frame(shli_real dx, shli_real dy, shli_real dz, shli_real r,
+                                   shli_real *out_g) {
+  shli_real rr = r;
+  shli_real mx = 1.0;
+  shli_real dd;
+  shli_real sm = SHLIGHT_ABSR(dx) + SHLIGHT_ABSR(dy) + SHLIGHT_ABSR(dz);
+  shli_real u;
+  shli_real iu;
+  shli_real s;
+  out_g[0] = 0.0;
+  out_g[1] = 0.0;
+  out_g[2] = 1.0;
+  out_g[3] = 0.0;
+  out_g[4] = 0.0;
+  out_g[5] = 1.0;
+  out_g[6] = 0.0;
+  if (!(rr > 0.0) || !(sm <= SHLIGHT_REAL_MAX)) {
+    return;
+  }
+  out_g[6] = 1.0;
+  if (!(sm > 0.0)) {
+    /* x == c: inside, the hemisphere about +z */
+    out_g[4] = 1.0;
+    out_g[5] = 0.0;
+    return;
+  }
+#if !SHLIGHT_REAL_WIDE
+  mx = SHLIGHT_ABSR(dx);
+  if (SHLIGHT_ABSR(dy) > mx) {
+    mx = SHLIGHT_ABSR(dy);
+  }
+  if (SHLIGHT_ABSR(dz) > mx) {
+    mx = SHLIGHT_ABSR(dz);
+  }
+  iu = 1.0 / mx;
+  dx = dx * iu;
+  dy = dy * iu;
+  dz = dz * iu;
+  rr = rr * iu;
+#endif
+  u = SHLIGHT_SQRTR(dx * dx + dy * dy + dz * dz);
+  iu = 1.0 / u;
+  out_g[0] = dx * iu;
+  out_g[1] = dy * iu;
+  out_g[2] = dz * iu;
+  /* dd = |c - x| unscaled: d - r is then exact near the surface (Sterbenz), with no second
+     rounding of r; the relative forms (d -+ r) / d neither overflow nor underflow */
+  dd = mx * u;
+  out_g[3] = 1.0e20;
+  if (dd > 1.0e-20) {
+    out_g[3] = iu / mx;
+  }
+  if (r >= dd) {
+    out_g[4] = 1.0;
+    out_g[5] = 0.0;
+  } else {
+    s = rr * iu;
+    out_g[4] = s * s;
+    out_g[5] = SHLIGHT_SQRTR(((dd - r) / dd) * ((dd + r) / dd));
+  }
+}
+
+/* shl_zh_cap: ZH coefficients L_l, l < n, of the unit-radiance cap that a sphere of radius r
+   subtends at distance d (its centre on +z): out_zh[l] = int_cap Y_l^0. Stable s^2 P'_l form
+   (see >>zonal), any s from 1e-30 to 1: relative error at the float rounding floor in C.
+   Small caps: L_l -> pi s^2 K_l (a point light). r <= 0, NaN r or d, infinite d: zeros;
+   d <= r: the hemisphere. out_zh: n floats. Cost: O(n), one sqrt and 2 divisions per band. */
+SHLIGHT_INLINE void shl_zh_cap(int n, float r, float d, float *out_zh) {
+  shli_real g[8];
+  shli_real f;
+  shli_real al;
+  shli_real fl;
+  shli_real pm = 1.0;
+  shli_real pl;
+  shli_real pn;
+  shli_real dm = 0.0;
+  shli_real dl = 1.0;
+  shli_real dn;
+  int l;
+  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  if (n > SHLIGHT_MAX_BANDS) {
+    n = SHLIGHT_MAX_BANDS;
+  }
+  if (n < 1) {
+    return;
+  }
+  shli_cap_frame(0.0, 0.0, SHLIGHT_REAL(d), SHLIGHT_REAL(r), g);
+  if (!(SHLIGHT_REAL(d) >= 0.0)) {
+    g[4] = 0.0; /* negative d: no light (a NaN d is caught by shli_cap_frame) */
+  }
+  al = g[5];
+  f = g[4];
+  out_zh[0] = SHLIGHT_FLOAT(1.7724538509055160 * f / (1.0 + al));
+  pl = al;
+  fl = 1.0;
+  for (l = 1; l < n; ++l) {
+    /* pl = P_l, pm = P_{l-1}, dl = P'_l, dm = P'_{l-1}; fl = l */
+    out_zh[l] = SHLIGHT_FLOAT(f * dl * (SHLI_ZH_TAB[5 * l + 2] * SHLI_ZH_TAB[5 * l + 4]));
+    dn = dm + (2.0 * fl + 1.0) * pl;
+    pn = SHLI_ZH_TAB[5 * l] * al * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
+    dm = dl;
+    dl = dn;
+    pm = pl;
+    pl = pn;
+    fl = fl + 1.0;
+  }
+}
+
+/* shl_zh_cap_da: derivative of shl_zh_cap with respect to the half-angle a,
+   out_dzh[l] = dL_l / da = sqrt(pi (2l+1)) P_l(alpha) s (MATH.md sec. 2: the paper's eq. 16 is
+   O'_l = -(2l+1) P_l, no division by alpha^2 - 1). Chain with da/dd = -s / (d alpha), or use
+   shl_sphere_light_grad, which does it for the full SH. Same domain as shl_zh_cap; d <= r: the
+   value at a = pi/2 (s = 1, alpha = 0). out_dzh: n floats. Cost: O(n), one sqrt per band. */
+SHLIGHT_INLINE void shl_zh_cap_da(int n, float r, float d, float *out_dzh) {
+  shli_real g[8];
+  shli_real s;
+  shli_real al;
+  shli_real pm = 1.0;
+  shli_real pl = 1.0;
+  shli_real pn;
+  int l;
+  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  if (n > SHLIGHT_MAX_BANDS) {
+    n = SHLIGHT_MAX_BANDS;
+  }
+  if (n < 1) {
+    return;
+  }
+  shli_cap_frame(0.0, 0.0, SHLIGHT_REAL(d), SHLIGHT_REAL(r), g);
+  if (!(SHLIGHT_REAL(d) >= 0.0)) {
+    g[4] = 0.0;
+  }
+  s = SHLIGHT_SQRTR(g[4]);
+  al = g[5];
+  for (l = 0; l < n; ++l) {
+    /* pl = P_l, pm = P_{l-1} */
+    out_dzh[l] = SHLIGHT_FLOAT(SHLI_ZH_TAB[5 * l + 4] * pl * s);
+    pn = SHLI_ZH_TAB[5 * l] * al * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
+    pm = pl;
+    pl = pn;
+  }
+}
+
+/* shl_zh_cap_printed: the printed form of seed 003 eq. 9 / seed 000 eq. 14, as a shader would
+   write it, all in float: alpha = sqrt(1 - s^2) (= cos(asin(s))), L_0 = sqrt(pi)(1 - alpha),
+   L_l = sqrt(pi / (2l+1)) (P_{l-1}(alpha) - P_{l+1}(alpha)). Comparison point for tests and
+   bench only (erratum E4): relative error 1.4e-4 at s = 1e-2, 4.6e-2 at s = 1e-3, and every
+   L_l is 0 for s < 2.4e-4. Use shl_zh_cap. Same domain and degenerate results as shl_zh_cap.
+   out_zh: n floats. Cost: O(n). */
+SHLIGHT_INLINE void shl_zh_cap_printed(int n, float r, float d, float *out_zh) {
+  float s = 0.0f;
+  float al;
+  float fl;
+  float pm = 1.0f;
+  float pl;
+  float pn;
+  int l;
+  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  if (n > SHLIGHT_MAX_BANDS) {
+    n = SHLIGHT_MAX_BANDS;
+  }
+  if (n < 1) {
+    return;
+  }
+  if (r > 0.0f && d >= 0.0f && d <= 3.4028234e38f) {
+    s = 1.0f;
+    if (d > r) {
+      s = r / d;
+    }
+  }
+  al = SHLIGHT_FLOAT(SHLIGHT_SQRTR(SHLIGHT_REAL(1.0f - s * s)));
+  out_zh[0] = 1.77245385f * (1.0f - al);
+  /* walk P_{l-1}, P_l, P_{l+1} */
+  pl = al;
+  fl = 1.0f;
+  for (l = 1; l < n; ++l) {
+    pn = ((2.0f * fl + 1.0f) * al * pl - fl * pm) / (fl + 1.0f);
+    out_zh[l] =
+        SHLIGHT_FLOAT(SHLIGHT_SQRTR(SHLIGHT_REAL(3.14159265f / (2.0f * fl + 1.0f)))) * (pm - pn);
+    pm = pl;
+    pl = pn;
+    fl = fl + 1.0f;
+  }
+}
+
+/* shl_zh_rotate: SH of a circularly symmetric function with ZH coefficients zh about the axis
+   dir (seed 003 eq. 11): out_sh[l (l+1) + m] = sqrt(4 pi / (2l+1)) Y_l^m(dir) zh[l]. dir: any
+   finite non-zero vector (normalised in shli_real); zero, NaN or infinite dir: the axis +z.
+   zh: n floats; out_sh: n * n floats. Cost: one shl_sh_eval plus n sqrt and n * n mul. */
+SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], float *out_sh) {
+  shli_real g[8];
+  float k;
+  int l;
+  int m;
+  int b;
+  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  if (n > SHLIGHT_MAX_BANDS) {
+    n = SHLIGHT_MAX_BANDS;
+  }
+  if (n < 1) {
+    return;
+  }
+  shli_cap_frame(SHLIGHT_REAL(dir[0]), SHLIGHT_REAL(dir[1]), SHLIGHT_REAL(dir[2]), 1.0, g);
+  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), out_sh);
+  for (l = 0; l < n; ++l) {
+    k = SHLIGHT_FLOAT(SHLI_ZH_TAB[5 * l + 3]) * zh[l];
+    b = l * (l + 1);
+    for (m = -l; m <= l; ++m) {
+      out_sh[b + m] = k * out_sh[b + m];
+    }
+  }
+}
+
+/* >>light -----------------------------------------------------------------------------------
+   Unit-radiance lights seen from a shading point x: their SH (the projection of the
+   indicator of the light's solid angle, so out_sh[0] = Omega Y_0^0 and the irradiance of a
+   normal n follows by convolution with the clamped cosine) and its gradient with respect to
+   x, out_grad[i][k] = d out_sh[i] / d x_k.
+   Sphere light (centre c, radius r; seed 003 eq. 9-14, MATH.md sec. 2-3): with d = |c - x|,
+   s = min(r / d, 1), alpha = sqrt((d - r)(d + r)) / d, w = (c - x) / d, and
+     q_0 = 1 / (1 + alpha),  q_l = P'_l(alpha) / (l (l+1))                 (l >= 1)
+     out_sh[l,m] = 2 pi s^2 q_l Y_l^m(w)        [= sqrt(4 pi / (2l+1)) L_l Y_l^m(w)]
+     grad_x      = -2 pi s^2 q_l grad_d Y_l^m(w) + 2 pi s^2 P_l(alpha) / (d alpha) Y_l^m(w) w
+   (MATH.md sec. 3, "complete coefficient gradient, simplified"), grad_d Y from the pole-free
+   Cartesian gradient of >>gradient.
+   Inside and on the surface (d <= r): the value at the nearest surface point, i.e. the
+   hemisphere about w; it is constant along rays from c, so its gradient is the rotational
+   term only (radial derivative 0). The exact gradient is unbounded as d -> r+ (1 / alpha,
+   genuinely singular); outside it stays finite because alpha >= ~1e-8 (C) / ~3e-4 (GLSL)
+   for any d > r representable. x == c: the hemisphere about +z, gradient 0. r <= 0 or NaN,
+   NaN or infinite x or c: zeros (no light). 1 / |c - x| is capped at 1e20 in the gradient.
+   Triangle light as a sphere (seed 003 eq. 24-28): the sphere at the centroid with the
+   triangle's area (r_s = sqrt(|e1 x e2| / (2 pi))), weighted by |cos gamma|, cos gamma the
+   cosine between the triangle's normal and w (two-sided). This is the paper's far-field
+   model: exact in L_0 only as d / sqrt(area) -> inf (MATH.md sec. 4 table). The exact solid
+   angle is shl_triangle_solid_angle. */
+
+/* ZH factors of the cap (g from shli_cap_frame) applied in place to Y in out_sh, scaled by
+   wgt: out_sh[l,m] = wgt 2 pi s^2 q_l Y_l^m. */
+SHLIGHT_INLINE void shli_cap_light_apply(int n, const shli_real *g, shli_real wgt, float *io_sh) {
+  shli_real f = 6.283185307179586 * g[4] * wgt;
+  shli_real al = g[5];
+  shli_real fl;
+  shli_real pm = 1.0;
+  shli_real pl;
+  shli_real pn;
+  shli_real dm = 0.0;
+  shli_real dl = 1.0;
+  shli_real dn;
+  float k;
+  int l;
+  int m;
+  int b;
+  io_sh[0] = SHLIGHT_FLOAT(f / (1.0 + al)) * io_sh[0];
+  pl = al;
+  fl = 1.0;
+  for (l = 1; l < n; ++l) {
+    /* pl = P_l, pm = P_{l-1}, dl = P'_l, dm = P'_{l-1}; fl = l */
+    k = SHLIGHT_FLOAT(f * dl * SHLI_ZH_TAB[5 * l + 2]);
+    b = l * (l + 1);
+    for (m = -l; m <= l; ++m) {
+      io_sh[b + m] = k * io_sh[b + m];
+    }
+    dn = dm + (2.0 * fl + 1.0) * pl;
+    pn = SHLI_ZH_TAB[5 * l] * al * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
+    dm = dl;
+    dl = dn;
+    pm = pl;
+    pl = pn;
+    fl = fl + 1.0;
+  }
+}
+
+/* Y and the unit-radius gradient scaled by ir at the unit direction (nx, ny, nz): the
+   evaluation and gradient passes of shl_sh_eval_grad without its input normalisation. */
+SHLIGHT_INLINE void shli_sh_eval_grad_unit(int n, float nx, float ny, float nz, float ir,
+                                           float *out_y, float (*out_grad)[3]) {
+  shli_sh_eval_xyz(n, nx, ny, nz, out_y);
+#if SHLIGHT_SIMD_EVAL
+  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS) {
+    shli_sh_grad_avx512(n, out_y, nx, ny, nz, ir, out_grad);
+    return;
+  }
+#endif
+  shli_sh_grad(n, out_y, nx, ny, nz, ir, out_grad);
+}
+
+/* Cap light and gradient from g (shli_cap_frame), times the weight wgt whose gradient with
+   respect to x is (gw0, gw1, gw2): out_sh = wgt S, out_grad = wgt grad S + S grad wgt. */
+SHLIGHT_INLINE void shli_cap_light_grad(int n, const shli_real *g, shli_real wgt, shli_real gw0,
+                                        shli_real gw1, shli_real gw2, float *io_sh,
+                                        float (*io_grad)[3]) {
+  shli_real f = 6.283185307179586 * g[4];
+  shli_real ir = g[3];
+  shli_real al = g[5];
+  shli_real h = 0.0;
+  shli_real fl;
+  shli_real pm = 1.0;
+  shli_real pl = 1.0;
+  shli_real pn;
+  shli_real dm = 0.0;
+  shli_real dl = 0.0;
+  shli_real dn;
+  shli_real q;
+  shli_real q0 = 1.0 / (1.0 + al);
+  float nx = SHLIGHT_FLOAT(g[0]);
+  float ny = SHLIGHT_FLOAT(g[1]);
+  float nz = SHLIGHT_FLOAT(g[2]);
+  float kv;
+  float kg;
+  float kx;
+  float ky;
+  float kz;
+  float y;
+  int l;
+  int m;
+  int i;
+  shli_sh_eval_grad_unit(n, nx, ny, nz, 1.0f, io_sh, io_grad);
+  if (al > 0.0) {
+    h = f * ir / al;
+  }
+  fl = 0.0;
+  for (l = 0; l < n; ++l) {
+    /* pl = P_l, pm = P_{l-1}, dl = P'_l, dm = P'_{l-1}; fl = l; q = q_l */
+    q = dl * SHLI_ZH_TAB[5 * l + 2];
+    if (l == 0) {
+      q = q0;
+    }
+    /* value wgt f q Y; gradient wgt (-f q ir grad1 Y + h P_l Y w) + f q Y grad wgt */
+    kv = SHLIGHT_FLOAT(f * q * wgt);
+    kg = SHLIGHT_FLOAT(-f * q * ir * wgt);
+    kx = SHLIGHT_FLOAT(h * pl * wgt * g[0] + f * q * gw0);
+    ky = SHLIGHT_FLOAT(h * pl * wgt * g[1] + f * q * gw1);
+    kz = SHLIGHT_FLOAT(h * pl * wgt * g[2] + f * q * gw2);
+    for (m = -l; m <= l; ++m) {
+      i = l * (l + 1) + m;
+      y = io_sh[i];
+      io_sh[i] = kv * y;
+      io_grad[i][0] = kg * io_grad[i][0] + kx * y;
+      io_grad[i][1] = kg * io_grad[i][1] + ky * y;
+      io_grad[i][2] = kg * io_grad[i][2] + kz * y;
+    }
+    dn = dm + (2.0 * fl + 1.0) * pl;
+    pn = SHLI_ZH_TAB[5 * l] * al * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
+    dm = dl;
+    dl = dn;
+    pm = pl;
+    pl = pn;
+    fl = fl + 1.0;
+  }
+}
+
+/* shl_sphere_light: SH of the unit-radiance sphere light (centre c, radius r) seen from x:
+   out_sh[l (l+1) + m] = 2 pi s^2 q_l Y_l^m(w) (see >>light). Accuracy: the cap factors in
+   shli_real by the stable s^2 P'_l form for every s from 1e-30 to 1 (float rounding floor in
+   C); Y at the float-rounded axis. Degenerate inputs (see >>light): r <= 0 / NaN, NaN or
+   infinite positions: zeros; x on or inside the sphere: the hemisphere about c - x (its
+   value at the surface); x == c: the hemisphere about +z. out_sh: n * n floats. Cost: one
+   shl_sh_eval, n * n mul, O(n) double recurrence (2 divisions per band). */
+SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], float r,
+                                     float *out_sh) {
+  shli_real g[8];
+  int i;
+  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  if (n > SHLIGHT_MAX_BANDS) {
+    n = SHLIGHT_MAX_BANDS;
+  }
+  if (n < 1) {
+    return;
+  }
+  shli_cap_frame(SHLIGHT_REAL(c[0]) - SHLIGHT_REAL(x[0]), SHLIGHT_REAL(c[1]) - SHLIGHT_REAL(x[1]),
+                 SHLIGHT_REAL(c[2]) - SHLIGHT_REAL(x[2]), SHLIGHT_REAL(r), g);
+  if (g[6] == 0.0) {
+    for (i = 0; i < n * n; ++i) {
+      out_sh[i] = 0.0f;
+    }
+    return;
+  }
+  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), out_sh);
+  shli_cap_light_apply(n, g, 1.0, out_sh);
+}
+
+/* shl_sphere_light_grad: shl_sphere_light and its gradient with respect to the shading point
+   x, out_grad[i][k] = d out_sh[i] / d x_k: the rotational term through the pole-free
+   Cartesian gradient of Y (finite for a probe exactly below or above the light) plus the
+   radial term 2 pi s^2 P_l(alpha) / (d alpha) Y w (MATH.md sec. 3). Singular only as
+   d -> r+ (1 / alpha: exact, large, finite); on or inside the sphere the radial term is 0
+   (the hemisphere extension is constant along rays from c); x == c, r <= 0 / NaN, NaN or
+   infinite positions: zero gradient (values as shl_sphere_light). out_sh: n * n floats,
+   out_grad: n * n float[3]. Cost: one shl_sh_eval_grad (without its input normalisation)
+   plus 7 mul per coefficient and the O(n) recurrence. */
+SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c[3], float r,
+                                          float *out_sh, float (*out_grad)[3]) {
+  shli_real g[8];
+  int i;
+  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  if (n > SHLIGHT_MAX_BANDS) {
+    n = SHLIGHT_MAX_BANDS;
+  }
+  if (n < 1) {
+    return;
+  }
+  shli_cap_frame(SHLIGHT_REAL(c[0]) - SHLIGHT_REAL(x[0]), SHLIGHT_REAL(c[1]) - SHLIGHT_REAL(x[1]),
+                 SHLIGHT_REAL(c[2]) - SHLIGHT_REAL(x[2]), SHLIGHT_REAL(r), g);
+  if (g[6] == 0.0) {
+    for (i = 0; i < n * n; ++i) {
+      out_sh[i] = 0.0f;
+      out_grad[i][0] = 0.0f;
+      out_grad[i][1] = 0.0f;
+      out_grad[i][2] = 0.0f;
+    }
+    return;
+  }
+  shli_cap_light_grad(n, g, 1.0, 0.0, 0.0, 0.0, out_sh, out_grad);
+}
+
+/* Triangle as a sphere (seed 003 eq. 24-25): out_g as shli_cap_frame for the sphere at the
+   centroid with radius sqrt(|e1 x e2| / (2 pi)) seen from x, and out_g[7] = n_t . w = -cos gamma
+   (n_t = unit (p1 - p0) x (p2 - p0), w the unit axis from x to the centroid); the weight is
+   |out_g[7]|. out_nt: n_t (0 for a zero-area triangle, which gives out_g[6] = 0: no light;
+   as do NaN and infinite input). */
+SHLIGHT_INLINE void shli_tri_frame(const float x[3], const float p0[3], const float p1[3],
+                                   const float p2[3], shli_real *out_g, shli_real *out_nt) {
+  shli_real ax = SHLIGHT_REAL(p1[0]) - SHLIGHT_REAL(p0[0]);
+  shli_real ay = SHLIGHT_REAL(p1[1]) - SHLIGHT_REAL(p0[1]);
+  shli_real az = SHLIGHT_REAL(p1[2]) - SHLIGHT_REAL(p0[2]);
+  shli_real bx = SHLIGHT_REAL(p2[0]) - SHLIGHT_REAL(p0[0]);
+  shli_real by = SHLIGHT_REAL(p2[1]) - SHLIGHT_REAL(p0[1]);
+  shli_real bz = SHLIGHT_REAL(p2[2]) - SHLIGHT_REAL(p0[2]);
+  shli_real nx = ay * bz - az * by;
+  shli_real ny = az * bx - ax * bz;
+  shli_real nz = ax * by - ay * bx;
+  shli_real ar = SHLIGHT_SQRTR(nx * nx + ny * ny + nz * nz);
+  shli_real rs = 0.0;
+  shli_real cx =
+      (SHLIGHT_REAL(p0[0]) - SHLIGHT_REAL(x[0]) + (SHLIGHT_REAL(p1[0]) - SHLIGHT_REAL(x[0])) +
+       (SHLIGHT_REAL(p2[0]) - SHLIGHT_REAL(x[0]))) /
+      3.0;
+  shli_real cy =
+      (SHLIGHT_REAL(p0[1]) - SHLIGHT_REAL(x[1]) + (SHLIGHT_REAL(p1[1]) - SHLIGHT_REAL(x[1])) +
+       (SHLIGHT_REAL(p2[1]) - SHLIGHT_REAL(x[1]))) /
+      3.0;
+  shli_real cz =
+      (SHLIGHT_REAL(p0[2]) - SHLIGHT_REAL(x[2]) + (SHLIGHT_REAL(p1[2]) - SHLIGHT_REAL(x[2])) +
+       (SHLIGHT_REAL(p2[2]) - SHLIGHT_REAL(x[2]))) /
+      3.0;
+  out_nt[0] = 0.0;
+  out_nt[1] = 0.0;
+  out_nt[2] = 0.0;
+  if (ar > 0.0 && ar <= SHLIGHT_REAL_MAX) {
+    rs = SHLIGHT_SQRTR(ar * 0.15915494309189535);
+    out_nt[0] = nx / ar;
+    out_nt[1] = ny / ar;
+    out_nt[2] = nz / ar;
+  }
+  shli_cap_frame(cx, cy, cz, rs, out_g);
+  out_g[7] = out_nt[0] * out_g[0] + out_nt[1] * out_g[1] + out_nt[2] * out_g[2];
+}
+
+/* shl_triangle_light: SH of the unit-radiance two-sided triangle light (p0, p1, p2) seen
+   from x, approximated by the paper's sphere (seed 003 eq. 24-26): the sphere light at the
+   centroid with r_s = sqrt(area / pi), times |cos gamma|, gamma the angle between the
+   triangle's normal and the direction from x to the centroid. A model, not the exact
+   projection: its error is set by distance / sqrt(area) (MATH.md sec. 4: L_0 within 1e-3 at
+   20, 3e-5 at 100 for well-shaped triangles; slivers are worse). x closer to the centroid than
+   r_s: the hemisphere (as shl_sphere_light) times |cos gamma|; x == centroid: axis +z.
+   Zero-area triangle, NaN or infinite input: zeros. out_sh: n * n floats. Cost: one
+   shl_sphere_light plus a cross product. */
+SHLIGHT_INLINE void shl_triangle_light(int n, const float x[3], const float p0[3],
+                                       const float p1[3], const float p2[3], float *out_sh) {
+  shli_real g[8];
+  shli_real nt[3];
+  int i;
+  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  if (n > SHLIGHT_MAX_BANDS) {
+    n = SHLIGHT_MAX_BANDS;
+  }
+  if (n < 1) {
+    return;
+  }
+  shli_tri_frame(x, p0, p1, p2, g, nt);
+  if (g[6] == 0.0) {
+    for (i = 0; i < n * n; ++i) {
+      out_sh[i] = 0.0f;
+    }
+    return;
+  }
+  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), out_sh);
+  shli_cap_light_apply(n, g, SHLIGHT_ABSR(g[7]), out_sh);
+}
+
+/* shl_triangle_light_grad: shl_triangle_light and its gradient with respect to x (seed 003
+   eq. 27-28): |cos gamma| grad S + S grad |cos gamma|, grad_x |cos gamma| =
+   sign(cos gamma) (n_t - (n_t . w) w) / d. Edge-on (cos gamma = 0, the kink of |.|): the
+   gradient of |cos gamma| is taken as 0 (the mean of the one-sided limits). Other degenerate
+   inputs as shl_triangle_light (zeros) and shl_sphere_light_grad (inside the sphere: radial
+   term 0). out_sh: n * n floats, out_grad: n * n float[3]. Cost: one shl_sphere_light_grad
+   plus a cross product. */
+SHLIGHT_INLINE void shl_triangle_light_grad(int n, const float x[3], const float p0[3],
+                                            const float p1[3], const float p2[3], float *out_sh,
+                                            float (*out_grad)[3]) {
+  shli_real g[8];
+  shli_real nt[3];
+  shli_real sg = 0.0;
+  shli_real cg;
+  int i;
+  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  if (n > SHLIGHT_MAX_BANDS) {
+    n = SHLIGHT_MAX_BANDS;
+  }
+  if (n < 1) {
+    return;
+  }
+  shli_tri_frame(x, p0, p1, p2, g, nt);
+  if (g[6] == 0.0) {
+    for (i = 0; i < n * n; ++i) {
+      out_sh[i] = 0.0f;
+      out_grad[i][0] = 0.0f;
+      out_grad[i][1] = 0.0f;
+      out_grad[i][2] = 0.0f;
+    }
+    return;
+  }
+  /* cg = n_t . w = -cos gamma; grad_x |cg| = -sign(cg) (n_t - cg w) / d */
+  cg = g[7];
+  if (cg > 0.0) {
+    sg = -g[3];
+  }
+  if (cg < 0.0) {
+    sg = g[3];
+  }
+  shli_cap_light_grad(n, g, SHLIGHT_ABSR(cg), sg * (nt[0] - cg * g[0]), sg * (nt[1] - cg * g[1]),
+                      sg * (nt[2] - cg * g[2]), out_sh, out_grad);
+}
+
+/* atan2(y, x) in shli_real from the shims alone, so C and GLSL run the same code (GLSL's
+   atan is a driver approximation: llvmpipe's is off by 3.4e-6). Octant reduction to
+   t = min / max in [0, 1], two half-angle steps t -> t / (1 + sqrt(1 + t^2)) to
+   t <= tan(pi / 16), then the Taylor series to t^15: relative error <= 4e-13 (below the float
+   rounding floor by 5 orders; C double, GLSL float rounding). atan2(0, 0) = 0; y = -0 counts as
+   +0 (atan2(-0, x < 0) = +pi). Inputs must be finite. */
+SHLIGHT_INLINE shli_real shli_atan2r(shli_real y, shli_real x) {
+  shli_real ay = SHLIGHT_ABSR(y);
+  shli_real ax = SHLIGHT_ABSR(x);
+  shli_real t;
+  shli_real t2;
+  shli_real a;
+  if (!(ax > 0.0 || ay > 0.0)) {
+    return 0.0;
+  }
+  if (ay > ax) {
+    t = ax / ay;
+  } else {
+    t = ay / ax;
+  }
+  t = t / (1.0 + SHLIGHT_SQRTR(1.0 + t * t));
+  t = t / (1.0 + SHLIGHT_SQRTR(1.0 + t * t));
+  t2 = t * t;
+  a = -0.066666666666666667;
+  a = 0.076923076923076923 + t2 * a;
+  a = -0.090909090909090909 + t2 * a;
+  a = 0.11111111111111111 + t2 * a;
+  a = -0.14285714285714286 + t2 * a;
+  a = 0.2 + t2 * a;
+  a = -0.33333333333333333 + t2 * a;
+  a = 4.0 * (t + t * (t2 * a));
+  if (ay > ax) {
+    a = 1.5707963267948966 - a;
+  }
+  if (x < 0.0) {
+    a = 3.1415926535897932 - a;
+  }
+  if (y < 0.0) {
+    a = -a;
+  }
+  return a;
+}
+
+/* shl_triangle_solid_angle: signed solid angle of the triangle (p0, p1, p2) seen from x, by
+   van Oosterom-Strackee in the edge form with atan2 (MATH.md sec. 4, erratum E6):
+   Omega = 2 atan2(N, D), R_i = p_i - x, N = R_0 . ((p1 - p0) x (p2 - p0)),
+   D = |R0||R1||R2| + (R0.R1)|R2| + (R0.R2)|R1| + (R1.R2)|R0|, in shli_real. Positive when
+   x is behind the triangle, i.e. on the side opposite to n = (p1 - p0) x (p2 - p0) (p0, p1,
+   p2 clockwise as seen from x); |Omega| for a two-sided light. Range [-2 pi, 2 pi]; Omega >
+   pi (D < 0) for points close to the triangle. Accuracy (float inputs): relative 1e-7 at
+   distance 1e4 (no unit-vector cancellation: the printed form loses 6e-2 there). Degenerate:
+   zero-area triangle 0; x at a vertex 0; x in the triangle's plane: 0 outside the triangle,
+   2 pi inside it (both sides' limits are +-2 pi), 0 or 2 pi on an edge; NaN or infinite input:
+   0. GLSL: |p_i - x| up to 1e12 (the triple product of lengths stays below FLT_MAX). Cost:
+   3 sqrt, ~40 flops and the own atan2 (2 sqrt, 8-term polynomial). */
+SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3],
+                                              const float p1[3], const float p2[3]) {
+  shli_real ax = SHLIGHT_REAL(p0[0]) - SHLIGHT_REAL(x[0]);
+  shli_real ay = SHLIGHT_REAL(p0[1]) - SHLIGHT_REAL(x[1]);
+  shli_real az = SHLIGHT_REAL(p0[2]) - SHLIGHT_REAL(x[2]);
+  shli_real bx = SHLIGHT_REAL(p1[0]) - SHLIGHT_REAL(x[0]);
+  shli_real by = SHLIGHT_REAL(p1[1]) - SHLIGHT_REAL(x[1]);
+  shli_real bz = SHLIGHT_REAL(p1[2]) - SHLIGHT_REAL(x[2]);
+  shli_real cx = SHLIGHT_REAL(p2[0]) - SHLIGHT_REAL(x[0]);
+  shli_real cy = SHLIGHT_REAL(p2[1]) - SHLIGHT_REAL(x[1]);
+  shli_real cz = SHLIGHT_REAL(p2[2]) - SHLIGHT_REAL(x[2]);
+  shli_real ux = SHLIGHT_REAL(p1[0]) - SHLIGHT_REAL(p0[0]);
+  shli_real uy = SHLIGHT_REAL(p1[1]) - SHLIGHT_REAL(p0[1]);
+  shli_real uz = SHLIGHT_REAL(p1[2]) - SHLIGHT_REAL(p0[2]);
+  shli_real vx = SHLIGHT_REAL(p2[0]) - SHLIGHT_REAL(p0[0]);
+  shli_real vy = SHLIGHT_REAL(p2[1]) - SHLIGHT_REAL(p0[1]);
+  shli_real vz = SHLIGHT_REAL(p2[2]) - SHLIGHT_REAL(p0[2]);
+  shli_real la = SHLIGHT_SQRTR(ax * ax + ay * ay + az * az);
+  shli_real lb = SHLIGHT_SQRTR(bx * bx + by * by + bz * bz);
+  shli_real lc = SHLIGHT_SQRTR(cx * cx + cy * cy + cz * cz);
+  shli_real nm = ax * (uy * vz - uz * vy) + ay * (uz * vx - ux * vz) + az * (ux * vy - uy * vx);
+  shli_real dn = la * lb * lc + (ax * bx + ay * by + az * bz) * lc +
+                 (ax * cx + ay * cy + az * cz) * lb + (bx * cx + by * cy + bz * cz) * la;
+  if (!(SHLIGHT_ABSR(nm) + SHLIGHT_ABSR(dn) <= SHLIGHT_REAL_MAX)) {
+    return 0.0f;
+  }
+  return SHLIGHT_FLOAT(2.0 * shli_atan2r(nm, dn));
+}
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -24864,203 +25961,136 @@ static void shli_sh_batch_4(SHLI_V x, SHLI_V y, SHLI_V z, float *out, ptrdiff_t 
 }
 
 static void shli_sh_batch_5(SHLI_V x, SHLI_V y, SHLI_V z, float *out, ptrdiff_t stride) {
-  SHLI_V s2 = SHLI_VMADD(x, x, SHLI_VMUL(y, y));
-  SHLI_V ir = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(z, z, s2)));
-  SHLI_V az = SHLI_VMUL(SHLI_VABS(z), ir);
-  SHLI_V t = SHLI_VDIV(SHLI_VMUL(s2, SHLI_VMUL(ir, ir)), SHLI_VADD(SHLI_VSET(1.0f), az));
-  SHLI_V sg = SHLI_VSIGN1(z);
+  SHLI_V z2;
   SHLI_V pc;
   SHLI_V ps;
   SHLI_V qc;
-  SHLI_V gc;
-  SHLI_V gs;
-  SHLI_V xa;
-  SHLI_V xb;
-  SHLI_V dd;
-  x = SHLI_VMUL(x, ir);
-  y = SHLI_VMUL(y, ir);
-  pc = x;
-  ps = y;
-  SHLI_VSTORE(out, SHLI_VSET(0.282094792f));
-  dd = SHLI_VMUL(SHLI_VSET(-0.488602512f), t);
-  xa = SHLI_VADD(SHLI_VSET(0.488602512f), dd);
-  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(sg, xa));
-  dd =
-      SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(t, xa), SHLI_VMUL(SHLI_VSET(0.645497224f), dd));
-  xb = SHLI_VMADD(SHLI_VSET(1.29099445f), xa, dd);
-  SHLI_VSTORE(out + 6 * stride, xb);
-  dd =
-      SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(t, xb), SHLI_VMUL(SHLI_VSET(0.788810638f), dd));
-  xa = SHLI_VMADD(SHLI_VSET(1.18321596f), xb, dd);
-  SHLI_VSTORE(out + 12 * stride, SHLI_VMUL(sg, xa));
-  dd =
-      SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(t, xa), SHLI_VMUL(SHLI_VSET(0.850420064f), dd));
-  xb = SHLI_VMADD(SHLI_VSET(1.13389342f), xa, dd);
-  SHLI_VSTORE(out + 20 * stride, xb);
-  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pc));
-  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), ps));
-  gc = SHLI_VMUL(sg, pc);
-  gs = SHLI_VMUL(sg, ps);
-  dd = SHLI_VMUL(SHLI_VSET(1.09254843f), t);
-  xa = SHLI_VADD(SHLI_VSET(-1.09254843f), dd);
-  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xa, gc));
-  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xa, gs));
-  dd =
-      SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(t, xa), SHLI_VMUL(SHLI_VSET(0.418330013f), dd));
-  xb = SHLI_VMADD(SHLI_VSET(1.67332005f), xa, dd);
-  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xb, pc));
-  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xb, ps));
-  dd =
-      SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(t, xb), SHLI_VMUL(SHLI_VSET(0.585540044f), dd));
-  xa = SHLI_VMADD(SHLI_VSET(1.46385011f), xb, dd);
-  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xa, gc));
-  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xa, gs));
+  SHLI_V xf;
+  z2 = SHLI_VMUL(z, z);
+  SHLI_VSTORE(out + 0 * stride, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(SHLI_VSET(0.488602512f), z));
+  SHLI_VSTORE(out + 6 * stride, SHLI_VMADD(SHLI_VSET(0.946174696f), z2, SHLI_VSET(-0.315391565f)));
+  SHLI_VSTORE(out + 12 * stride,
+              SHLI_VMUL(SHLI_VMADD(SHLI_VSET(1.86588166f), z2, SHLI_VSET(-1.119529f)), z));
+  SHLI_VSTORE(out + 20 * stride,
+              SHLI_VMADD(SHLI_VMADD(SHLI_VSET(3.70249414f), z2, SHLI_VSET(-3.17356641f)), z2,
+                         SHLI_VSET(0.317356641f)));
+  xf = SHLI_VSET(-0.488602512f);
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(xf, x));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(xf, y));
+  xf = SHLI_VMUL(SHLI_VSET(-1.09254843f), z);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xf, x));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xf, y));
+  xf = SHLI_VMADD(SHLI_VSET(-2.285229f), z2, SHLI_VSET(0.457045799f));
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xf, x));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xf, y));
+  xf = SHLI_VMUL(SHLI_VMADD(SHLI_VSET(-4.6833258f), z2, SHLI_VSET(2.00713963f)), z);
+  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xf, x));
+  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xf, y));
+  pc = SHLI_VNMADD(y, y, SHLI_VMUL(x, x));
+  ps = SHLI_VMUL(SHLI_VADD(x, x), y);
+  xf = SHLI_VSET(0.546274215f);
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(xf, ps));
+  xf = SHLI_VMUL(SHLI_VSET(1.44530572f), z);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xf, ps));
+  xf = SHLI_VMADD(SHLI_VSET(3.31161144f), z2, SHLI_VSET(-0.473087348f));
+  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xf, ps));
   qc = SHLI_VNMADD(y, ps, SHLI_VMUL(x, pc));
   ps = SHLI_VMADD(x, ps, SHLI_VMUL(y, pc));
   pc = qc;
-  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pc));
-  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), ps));
-  gc = SHLI_VMUL(sg, pc);
-  gs = SHLI_VMUL(sg, ps);
-  dd = SHLI_VMUL(SHLI_VSET(-1.44530572f), t);
-  xa = SHLI_VADD(SHLI_VSET(1.44530572f), dd);
-  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xa, gc));
-  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xa, gs));
-  dd =
-      SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(t, xa), SHLI_VMUL(SHLI_VSET(0.327326835f), dd));
-  xb = SHLI_VMADD(SHLI_VSET(1.96396101f), xa, dd);
-  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xb, pc));
-  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xb, ps));
+  xf = SHLI_VSET(-0.59004359f);
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(xf, ps));
+  xf = SHLI_VMUL(SHLI_VSET(-1.77013077f), z);
+  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xf, ps));
   qc = SHLI_VNMADD(y, ps, SHLI_VMUL(x, pc));
   ps = SHLI_VMADD(x, ps, SHLI_VMUL(y, pc));
   pc = qc;
-  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pc));
-  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), ps));
-  gc = SHLI_VMUL(sg, pc);
-  gs = SHLI_VMUL(sg, ps);
-  dd = SHLI_VMUL(SHLI_VSET(1.77013077f), t);
-  xa = SHLI_VADD(SHLI_VSET(-1.77013077f), dd);
-  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xa, gc));
-  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xa, gs));
-  qc = SHLI_VNMADD(y, ps, SHLI_VMUL(x, pc));
-  ps = SHLI_VMADD(x, ps, SHLI_VMUL(y, pc));
-  pc = qc;
-  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pc));
-  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), ps));
+  xf = SHLI_VSET(0.625835735f);
+  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(xf, ps));
 }
 
 static void shli_sh_batch_6(SHLI_V x, SHLI_V y, SHLI_V z, float *out, ptrdiff_t stride) {
-  SHLI_V s2 = SHLI_VMADD(x, x, SHLI_VMUL(y, y));
-  SHLI_V ir = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(z, z, s2)));
-  SHLI_V az = SHLI_VMUL(SHLI_VABS(z), ir);
-  SHLI_V t = SHLI_VDIV(SHLI_VMUL(s2, SHLI_VMUL(ir, ir)), SHLI_VADD(SHLI_VSET(1.0f), az));
-  SHLI_V sg = SHLI_VSIGN1(z);
+  SHLI_V z2;
   SHLI_V pc;
   SHLI_V ps;
   SHLI_V qc;
-  SHLI_V gc;
-  SHLI_V gs;
-  SHLI_V xa;
-  SHLI_V xb;
-  SHLI_V dd;
-  x = SHLI_VMUL(x, ir);
-  y = SHLI_VMUL(y, ir);
-  pc = x;
-  ps = y;
-  SHLI_VSTORE(out, SHLI_VSET(0.282094792f));
-  dd = SHLI_VMUL(SHLI_VSET(-0.488602512f), t);
-  xa = SHLI_VADD(SHLI_VSET(0.488602512f), dd);
-  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(sg, xa));
-  dd =
-      SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(t, xa), SHLI_VMUL(SHLI_VSET(0.645497224f), dd));
-  xb = SHLI_VMADD(SHLI_VSET(1.29099445f), xa, dd);
-  SHLI_VSTORE(out + 6 * stride, xb);
-  dd =
-      SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(t, xb), SHLI_VMUL(SHLI_VSET(0.788810638f), dd));
-  xa = SHLI_VMADD(SHLI_VSET(1.18321596f), xb, dd);
-  SHLI_VSTORE(out + 12 * stride, SHLI_VMUL(sg, xa));
-  dd =
-      SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(t, xa), SHLI_VMUL(SHLI_VSET(0.850420064f), dd));
-  xb = SHLI_VMADD(SHLI_VSET(1.13389342f), xa, dd);
-  SHLI_VSTORE(out + 20 * stride, xb);
-  dd =
-      SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(t, xb), SHLI_VMUL(SHLI_VSET(0.884433277f), dd));
-  xa = SHLI_VMADD(SHLI_VSET(1.1055416f), xb, dd);
-  SHLI_VSTORE(out + 30 * stride, SHLI_VMUL(sg, xa));
-  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pc));
-  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), ps));
-  gc = SHLI_VMUL(sg, pc);
-  gs = SHLI_VMUL(sg, ps);
-  dd = SHLI_VMUL(SHLI_VSET(1.09254843f), t);
-  xa = SHLI_VADD(SHLI_VSET(-1.09254843f), dd);
-  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xa, gc));
-  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xa, gs));
-  dd =
-      SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(t, xa), SHLI_VMUL(SHLI_VSET(0.418330013f), dd));
-  xb = SHLI_VMADD(SHLI_VSET(1.67332005f), xa, dd);
-  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xb, pc));
-  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xb, ps));
-  dd =
-      SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(t, xb), SHLI_VMUL(SHLI_VSET(0.585540044f), dd));
-  xa = SHLI_VMADD(SHLI_VSET(1.46385011f), xb, dd);
-  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xa, gc));
-  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xa, gs));
-  dd = SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(t, xa), SHLI_VMUL(SHLI_VSET(0.6770032f), dd));
-  xb = SHLI_VMADD(SHLI_VSET(1.3540064f), xa, dd);
-  SHLI_VSTORE(out + 31 * stride, SHLI_VMUL(xb, pc));
-  SHLI_VSTORE(out + 29 * stride, SHLI_VMUL(xb, ps));
+  SHLI_V xf;
+  z2 = SHLI_VMUL(z, z);
+  SHLI_VSTORE(out + 0 * stride, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(SHLI_VSET(0.488602512f), z));
+  SHLI_VSTORE(out + 6 * stride, SHLI_VMADD(SHLI_VSET(0.946174696f), z2, SHLI_VSET(-0.315391565f)));
+  SHLI_VSTORE(out + 12 * stride,
+              SHLI_VMUL(SHLI_VMADD(SHLI_VSET(1.86588166f), z2, SHLI_VSET(-1.119529f)), z));
+  SHLI_VSTORE(out + 20 * stride,
+              SHLI_VMADD(SHLI_VMADD(SHLI_VSET(3.70249414f), z2, SHLI_VSET(-3.17356641f)), z2,
+                         SHLI_VSET(0.317356641f)));
+  SHLI_VSTORE(out + 30 * stride,
+              SHLI_VMUL(SHLI_VMADD(SHLI_VMADD(SHLI_VSET(7.36787031f), z2, SHLI_VSET(-8.18652257f)),
+                                   z2, SHLI_VSET(1.75425484f)),
+                        z));
+  xf = SHLI_VSET(-0.488602512f);
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(xf, x));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(xf, y));
+  xf = SHLI_VMUL(SHLI_VSET(-1.09254843f), z);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xf, x));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xf, y));
+  xf = SHLI_VMADD(SHLI_VSET(-2.285229f), z2, SHLI_VSET(0.457045799f));
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xf, x));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xf, y));
+  xf = SHLI_VMUL(SHLI_VMADD(SHLI_VSET(-4.6833258f), z2, SHLI_VSET(2.00713963f)), z);
+  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xf, x));
+  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xf, y));
+  xf = SHLI_VMADD(SHLI_VMADD(SHLI_VSET(-9.51187968f), z2, SHLI_VSET(6.34125312f)), z2,
+                  SHLI_VSET(-0.452946651f));
+  SHLI_VSTORE(out + 31 * stride, SHLI_VMUL(xf, x));
+  SHLI_VSTORE(out + 29 * stride, SHLI_VMUL(xf, y));
+  pc = SHLI_VNMADD(y, y, SHLI_VMUL(x, x));
+  ps = SHLI_VMUL(SHLI_VADD(x, x), y);
+  xf = SHLI_VSET(0.546274215f);
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(xf, ps));
+  xf = SHLI_VMUL(SHLI_VSET(1.44530572f), z);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xf, ps));
+  xf = SHLI_VMADD(SHLI_VSET(3.31161144f), z2, SHLI_VSET(-0.473087348f));
+  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xf, ps));
+  xf = SHLI_VMUL(SHLI_VMADD(SHLI_VSET(7.19030518f), z2, SHLI_VSET(-2.39676839f)), z);
+  SHLI_VSTORE(out + 32 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 28 * stride, SHLI_VMUL(xf, ps));
   qc = SHLI_VNMADD(y, ps, SHLI_VMUL(x, pc));
   ps = SHLI_VMADD(x, ps, SHLI_VMUL(y, pc));
   pc = qc;
-  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pc));
-  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), ps));
-  gc = SHLI_VMUL(sg, pc);
-  gs = SHLI_VMUL(sg, ps);
-  dd = SHLI_VMUL(SHLI_VSET(-1.44530572f), t);
-  xa = SHLI_VADD(SHLI_VSET(1.44530572f), dd);
-  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xa, gc));
-  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xa, gs));
-  dd =
-      SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(t, xa), SHLI_VMUL(SHLI_VSET(0.327326835f), dd));
-  xb = SHLI_VMADD(SHLI_VSET(1.96396101f), xa, dd);
-  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xb, pc));
-  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xb, ps));
-  dd = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(t, xb), SHLI_VMUL(SHLI_VSET(0.48249791f), dd));
-  xa = SHLI_VMADD(SHLI_VSET(1.68874268f), xb, dd);
-  SHLI_VSTORE(out + 32 * stride, SHLI_VMUL(xa, gc));
-  SHLI_VSTORE(out + 28 * stride, SHLI_VMUL(xa, gs));
+  xf = SHLI_VSET(-0.59004359f);
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(xf, ps));
+  xf = SHLI_VMUL(SHLI_VSET(-1.77013077f), z);
+  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xf, ps));
+  xf = SHLI_VMADD(SHLI_VSET(-4.40314469f), z2, SHLI_VSET(0.489238299f));
+  SHLI_VSTORE(out + 33 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 27 * stride, SHLI_VMUL(xf, ps));
   qc = SHLI_VNMADD(y, ps, SHLI_VMUL(x, pc));
   ps = SHLI_VMADD(x, ps, SHLI_VMUL(y, pc));
   pc = qc;
-  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pc));
-  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), ps));
-  gc = SHLI_VMUL(sg, pc);
-  gs = SHLI_VMUL(sg, ps);
-  dd = SHLI_VMUL(SHLI_VSET(1.77013077f), t);
-  xa = SHLI_VADD(SHLI_VSET(-1.77013077f), dd);
-  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xa, gc));
-  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xa, gs));
-  dd =
-      SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(t, xa), SHLI_VMUL(SHLI_VSET(0.276385399f), dd));
-  xb = SHLI_VMADD(SHLI_VSET(2.21108319f), xa, dd);
-  SHLI_VSTORE(out + 33 * stride, SHLI_VMUL(xb, pc));
-  SHLI_VSTORE(out + 27 * stride, SHLI_VMUL(xb, ps));
+  xf = SHLI_VSET(0.625835735f);
+  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(xf, ps));
+  xf = SHLI_VMUL(SHLI_VSET(2.07566231f), z);
+  SHLI_VSTORE(out + 34 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 26 * stride, SHLI_VMUL(xf, ps));
   qc = SHLI_VNMADD(y, ps, SHLI_VMUL(x, pc));
   ps = SHLI_VMADD(x, ps, SHLI_VMUL(y, pc));
   pc = qc;
-  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pc));
-  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), ps));
-  gc = SHLI_VMUL(sg, pc);
-  gs = SHLI_VMUL(sg, ps);
-  dd = SHLI_VMUL(SHLI_VSET(-2.07566231f), t);
-  xa = SHLI_VADD(SHLI_VSET(2.07566231f), dd);
-  SHLI_VSTORE(out + 34 * stride, SHLI_VMUL(xa, gc));
-  SHLI_VSTORE(out + 26 * stride, SHLI_VMUL(xa, gs));
-  qc = SHLI_VNMADD(y, ps, SHLI_VMUL(x, pc));
-  ps = SHLI_VMADD(x, ps, SHLI_VMUL(y, pc));
-  pc = qc;
-  SHLI_VSTORE(out + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pc));
-  SHLI_VSTORE(out + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), ps));
+  xf = SHLI_VSET(-0.656382057f);
+  SHLI_VSTORE(out + 35 * stride, SHLI_VMUL(xf, pc));
+  SHLI_VSTORE(out + 25 * stride, SHLI_VMUL(xf, ps));
 }
 
 static void shli_sh_batch_7(SHLI_V x, SHLI_V y, SHLI_V z, float *out, ptrdiff_t stride) {

@@ -79,6 +79,124 @@ void shli_sh_poly_4(float x, float y, float z, out float out_y[SHLIGHT_MAX_COEFF
 }
 #endif
 
+#if SHLIGHT_MAX_BANDS >= 5
+void shli_sh_poly_5(float x, float y, float z, out float out_y[SHLIGHT_MAX_COEFFS]) {
+  float z2;
+  float pc;
+  float ps;
+  float qc;
+  float xf;
+  z2 = z * z;
+  out_y[0] = 0.282094792f;
+  out_y[2] = 0.488602512f * z;
+  out_y[6] = 0.946174696f * z2 + -0.315391565f;
+  out_y[12] = (1.86588166f * z2 + -1.119529f) * z;
+  out_y[20] = (3.70249414f * z2 + -3.17356641f) * z2 + 0.317356641f;
+  out_y[3] = -0.488602512f * x;
+  out_y[1] = -0.488602512f * y;
+  xf = -1.09254843f * z;
+  out_y[7] = xf * x;
+  out_y[5] = xf * y;
+  xf = -2.285229f * z2 + 0.457045799f;
+  out_y[13] = xf * x;
+  out_y[11] = xf * y;
+  xf = (-4.6833258f * z2 + 2.00713963f) * z;
+  out_y[21] = xf * x;
+  out_y[19] = xf * y;
+  pc = x * x - y * y;
+  ps = 2.0f * x * y;
+  out_y[8] = 0.546274215f * pc;
+  out_y[4] = 0.546274215f * ps;
+  xf = 1.44530572f * z;
+  out_y[14] = xf * pc;
+  out_y[10] = xf * ps;
+  xf = 3.31161144f * z2 + -0.473087348f;
+  out_y[22] = xf * pc;
+  out_y[18] = xf * ps;
+  qc = x * pc - y * ps;
+  ps = x * ps + y * pc;
+  pc = qc;
+  out_y[15] = -0.59004359f * pc;
+  out_y[9] = -0.59004359f * ps;
+  xf = -1.77013077f * z;
+  out_y[23] = xf * pc;
+  out_y[17] = xf * ps;
+  qc = x * pc - y * ps;
+  ps = x * ps + y * pc;
+  pc = qc;
+  out_y[24] = 0.625835735f * pc;
+  out_y[16] = 0.625835735f * ps;
+}
+#endif
+
+#if SHLIGHT_MAX_BANDS >= 6
+void shli_sh_poly_6(float x, float y, float z, out float out_y[SHLIGHT_MAX_COEFFS]) {
+  float z2;
+  float pc;
+  float ps;
+  float qc;
+  float xf;
+  z2 = z * z;
+  out_y[0] = 0.282094792f;
+  out_y[2] = 0.488602512f * z;
+  out_y[6] = 0.946174696f * z2 + -0.315391565f;
+  out_y[12] = (1.86588166f * z2 + -1.119529f) * z;
+  out_y[20] = (3.70249414f * z2 + -3.17356641f) * z2 + 0.317356641f;
+  out_y[30] = ((7.36787031f * z2 + -8.18652257f) * z2 + 1.75425484f) * z;
+  out_y[3] = -0.488602512f * x;
+  out_y[1] = -0.488602512f * y;
+  xf = -1.09254843f * z;
+  out_y[7] = xf * x;
+  out_y[5] = xf * y;
+  xf = -2.285229f * z2 + 0.457045799f;
+  out_y[13] = xf * x;
+  out_y[11] = xf * y;
+  xf = (-4.6833258f * z2 + 2.00713963f) * z;
+  out_y[21] = xf * x;
+  out_y[19] = xf * y;
+  xf = (-9.51187968f * z2 + 6.34125312f) * z2 + -0.452946651f;
+  out_y[31] = xf * x;
+  out_y[29] = xf * y;
+  pc = x * x - y * y;
+  ps = 2.0f * x * y;
+  out_y[8] = 0.546274215f * pc;
+  out_y[4] = 0.546274215f * ps;
+  xf = 1.44530572f * z;
+  out_y[14] = xf * pc;
+  out_y[10] = xf * ps;
+  xf = 3.31161144f * z2 + -0.473087348f;
+  out_y[22] = xf * pc;
+  out_y[18] = xf * ps;
+  xf = (7.19030518f * z2 + -2.39676839f) * z;
+  out_y[32] = xf * pc;
+  out_y[28] = xf * ps;
+  qc = x * pc - y * ps;
+  ps = x * ps + y * pc;
+  pc = qc;
+  out_y[15] = -0.59004359f * pc;
+  out_y[9] = -0.59004359f * ps;
+  xf = -1.77013077f * z;
+  out_y[23] = xf * pc;
+  out_y[17] = xf * ps;
+  xf = -4.40314469f * z2 + 0.489238299f;
+  out_y[33] = xf * pc;
+  out_y[27] = xf * ps;
+  qc = x * pc - y * ps;
+  ps = x * ps + y * pc;
+  pc = qc;
+  out_y[24] = 0.625835735f * pc;
+  out_y[16] = 0.625835735f * ps;
+  xf = 2.07566231f * z;
+  out_y[34] = xf * pc;
+  out_y[26] = xf * ps;
+  qc = x * pc - y * ps;
+  ps = x * ps + y * pc;
+  pc = qc;
+  out_y[35] = -0.656382057f * pc;
+  out_y[25] = -0.656382057f * ps;
+}
+#endif
+
 #if SHLIGHT_MAX_BANDS >= 1
 void shli_sh_core_1(shli_real x, shli_real y, shli_real z, shli_real t, float sg,
                     out float out_y[SHLIGHT_MAX_COEFFS]) {
@@ -4643,7 +4761,7 @@ void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIG
     n = SHLIGHT_MAX_BANDS;
   }
   switch (n) {
-  /* up to 4 bands, float Horner forms straight from d are within 3e-7 (README): no
+  /* up to 6 bands, float Horner forms straight from d are within the targets (README): no
      normalisation, no division, no double */
   case 1:
     shli_sh_poly_1(dx, dy, dz, out_y);
@@ -4661,6 +4779,16 @@ void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIG
 #if SHLIGHT_MAX_BANDS >= 4
   case 4:
     shli_sh_poly_4(dx, dy, dz, out_y);
+    return;
+#endif
+#if SHLIGHT_MAX_BANDS >= 5
+  case 5:
+    shli_sh_poly_5(dx, dy, dz, out_y);
+    return;
+#endif
+#if SHLIGHT_MAX_BANDS >= 6
+  case 6:
+    shli_sh_poly_6(dx, dy, dz, out_y);
     return;
 #endif
   default:

@@ -94,3 +94,18 @@ fuzz: $(TESTS_BUILD)/fuzz_basis
 $(TESTS_BUILD)/native/test_basis: $(TESTS_BASIS_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) -march=native -ffp-contract=fast -o $@ tests/test_basis.c $(TESTS_QUADLIBS)
+
+# >>zonal / >>light: kernels against binary128 references (tests/ref/lightref.h), and the
+# references' own self-checks
+$(TESTS_BUILD)/test_light: tests/test_light.c tests/ref/lightref.h tests/ref/shref.h tests/tl.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -o $@ tests/test_light.c $(TESTS_QUADLIBS)
+$(TESTS_BUILD)/native/test_light: tests/test_light.c tests/ref/lightref.h tests/ref/shref.h tests/tl.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -march=native -ffp-contract=fast -o $@ tests/test_light.c $(TESTS_QUADLIBS)
+$(TESTS_BUILD)/selftest_lightref: tests/ref/selftest_lightref.c tests/ref/lightref.h tests/ref/shref.h
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O2 -g -o $@ tests/ref/selftest_lightref.c $(TESTS_QUADLIBS)
+$(TESTS_BUILD)/asan/test_light: tests/test_light.c tests/ref/lightref.h tests/ref/shref.h tests/tl.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/test_light.c $(TESTS_QUADLIBS)

@@ -336,7 +336,7 @@ def gen_batch(n):
 
 
 # ---------------------------------------------------------------- small n: float polynomials
-POLY_BANDS = 4     # n <= POLY_BANDS: Horner forms in float straight from d (Sloan-style)
+POLY_BANDS = 6     # n <= POLY_BANDS: Horner forms in float straight from d (Sloan-style)
 
 
 def xpoly(l, m):
@@ -357,6 +357,8 @@ def horner(coefs, var):
     """expression for sum coefs[i] var^i (float literals)"""
     e = lit_f(coefs[-1])
     for c in reversed(coefs[:-1]):
+        if ' ' in e:
+            e = '(%s)' % e
         e = '%s * %s + %s' % (e, var, lit_f(c)) if c != 0.0 else '%s * %s' % (e, var)
     return e
 
@@ -380,7 +382,7 @@ def gen_poly(n):
         if m == 2:
             w('  pc = x * x - y * y;')
             w('  ps = 2.0f * x * y;')
-        elif m == 3:
+        elif m >= 3:
             w('  qc = x * pc - y * ps;')
             w('  ps = x * ps + y * pc;')
             w('  pc = qc;')
@@ -432,7 +434,7 @@ def gen_batch_poly(n):
         if m == 2:
             w('  pc = SHLI_VNMADD(y, y, SHLI_VMUL(x, x));')
             w('  ps = SHLI_VMUL(SHLI_VADD(x, x), y);')
-        elif m == 3:
+        elif m >= 3:
             w('  qc = SHLI_VNMADD(y, ps, SHLI_VMUL(x, pc));')
             w('  ps = SHLI_VMADD(x, ps, SHLI_VMUL(y, pc));')
             w('  pc = qc;')
@@ -456,6 +458,20 @@ def gen_batch_poly(n):
 
 
 # ---------------------------------------------------------------- regions
+def zh_table(nb):
+    """>>zonal: per band l, (2l+1)/(l+1), l/(l+1), 1/(l(l+1)) (0 for l = 0), sqrt(4 pi/(2l+1)),
+    sqrt(pi (2l+1))"""
+    vals = []
+    for l in range(nb):
+        vals += [(2 * l + 1) / (l + 1), l / (l + 1), 1.0 / (l * (l + 1)) if l else 0.0,
+                 math.sqrt(4 * math.pi / (2 * l + 1)), math.sqrt(math.pi * (2 * l + 1))]
+    return vals
+
+
+# tables the kernels read: mirrored into GLSL as the prefix for UNROLLED bands
+MIRRORED_TABLES = {'SHLI_ZH_TAB': lambda: zh_table(UNROLLED)}
+
+
 def gen_lane_table():
     """SHLI_SH_LANES[(c * (MAX_BANDS - 1) + l - 1) * 48 + {0, 16, 32} + j]: alpha, g, c of band l
     for order m = 16 c + j in the across-m SIMD core; orders m >= l hold the identity step
@@ -499,6 +515,8 @@ def c_regions():
            'static const shli_sh_batch_fn SHLI_SH_BATCH[%d] = {' % (UNROLLED + 1),
            '    0, ' + ', '.join('shli_sh_batch_%d' % n for n in range(1, UNROLLED + 1)) + '};']
     R['batch'] = bb
+    R['zh_tab'] = fmt_table('shli_real', 'SHLI_ZH_TAB', '%d' % (5 * MAX_BANDS), zh_table(MAX_BANDS),
+                            lit_d, False)
     import gen_grad_simd
     R['gradv'] = gen_grad_simd.main()
     lt = gen_lane_table()
@@ -508,15 +526,29 @@ def c_regions():
 
 import re
 
-GLSL_PARAM_MAP = [
-    (re.compile(r'^const float (\w+)\[3\]$'), r'vec3 \1'),
-    (re.compile(r'^float \(\*(\w+)\)\[3\]$'), r'out vec3 \1[SHLIGHT_MAX_COEFFS]'),
-    (re.compile(r'^const float \(\*(\w+)\)\[3\]$'), r'vec3 \1[SHLIGHT_MAX_COEFFS]'),
-    (re.compile(r'^float \*(io_\w+)$'), r'inout float \1[SHLIGHT_MAX_COEFFS]'),
-    (re.compile(r'^float \*(\w+)$'), r'out float \1[SHLIGHT_MAX_COEFFS]'),
-    (re.compile(r'^const float \*(\w+)$'), r'float \1[SHLIGHT_MAX_COEFFS]'),
-    (re.compile(r'^(int|float|shli_real) (\w+)$'), r'\1 \2'),
-]
+# GLSL array length of a pointer parameter, by name (default: n * n coefficients)
+ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
+               'out_dzh': 'SHLIGHT_MAX_BANDS', 'g': '8', 'out_g': '8', 'out_nt': '3'}
+
+
+def glsl_param(prm, fname):
+    """DESIGN.md section 4's fixed mapping of a C parameter to GLSL"""
+    prm = ' '.join(prm.split())
+    m = re.match(r'^const float (\w+)\[3\]$', prm)
+    if m:
+        return 'vec3 ' + m.group(1)
+    m = re.match(r'^(const )?float \(\*(\w+)\)\[3\]$', prm)
+    if m:
+        qual = '' if m.group(1) else ('inout ' if m.group(2).startswith('io_') else 'out ')
+        return '%svec3 %s[SHLIGHT_MAX_COEFFS]' % (qual, m.group(2))
+    m = re.match(r'^(const )?(float|shli_real|int) \*(\w+)$', prm)
+    if m:
+        const, typ, name = m.groups()
+        qual = '' if const else ('inout ' if name.startswith('io_') else 'out ')
+        return '%s%s %s[%s]' % (qual, typ, name, ARRAY_SIZES.get(name, 'SHLIGHT_MAX_COEFFS'))
+    if re.match(r'^(int|float|shli_real) (\w+)$', prm):
+        return prm
+    raise SystemExit('gen_basis: no GLSL mapping for parameter "%s" of %s' % (prm, fname))
 
 
 def glsl_signature(sig):
@@ -524,16 +556,8 @@ def glsl_signature(sig):
     sig = ' '.join(sig.split())
     m = re.match(r'SHLIGHT_INLINE (\w+) (\w+)\((.*)\) \{$', sig)
     ret, name, params = m.groups()
-    out = []
-    for prm in params.split(','):
-        prm = prm.strip()
-        for rx, rep in GLSL_PARAM_MAP:
-            if rx.match(prm):
-                out.append(rx.sub(rep, prm))
-                break
-        else:
-            raise SystemExit('gen_basis: no GLSL mapping for parameter "%s" of %s' % (prm, name))
-    return name, '%s %s(%s) {' % (ret, name, ', '.join(out))
+    return name, '%s %s(%s) {' % (ret, name, ', '.join(glsl_param(p, name)
+                                                      for p in params.split(',')))
 
 
 def split_items(lines):
@@ -551,6 +575,15 @@ def split_items(lines):
             while lines[k] != '}':
                 k += 1
             items.append(('fn', name, [sig] + lines[j + 1:k + 1]))
+            i = k + 1
+        elif ln.startswith('static const ') and re.match(r'static const \w+ (\w+)\[', ln).group(1) \
+                in MIRRORED_TABLES:
+            name = re.match(r'static const \w+ (\w+)\[', ln).group(1)
+            vals = MIRRORED_TABLES[name]()
+            k = i
+            while lines[k] != '};':
+                k += 1
+            items.append(('mtab', name, fmt_table('float', name, '%d' % len(vals), vals, lit_d, True)))
             i = k + 1
         elif ln.startswith('SHLIGHT_CPU_INLINE ') or ln.startswith('static const '):
             # C-only: the run-time loops and their tables (GLSL stops at UNROLLED bands)
@@ -636,7 +669,10 @@ def main():
         new = replace_region(new, name, lines, hpath)
     outputs = [(hpath, text, new)]
     for sec, deps in (('basis', ['shl_prelude.glsl']),
-                      ('gradient', ['shl_prelude.glsl', 'shl_basis.glsl'])):
+                      ('gradient', ['shl_prelude.glsl', 'shl_basis.glsl']),
+                      ('zonal', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl']),
+                      ('light', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
+                                 'shl_zonal.glsl'])):
         gp = os.path.join(ROOT, 'shlight_glsl', 'shl_%s.glsl' % sec)
         old = open(gp).read() if os.path.exists(gp) else ''
         outputs.append((gp, old, glsl_module(new, sec, deps)))
