@@ -29,3 +29,14 @@ bench-basis: build/bench/bench_basis
 bench: bench-basis
 
 .PHONY: bench bench-basis
+
+build/bench/bench_light: bench/bench_light.c shlight.h tests/ref/lightref.h tests/ref/shref.h
+	@mkdir -p build/bench
+	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_light.c $(BENCH_LDLIBS)
+
+bench-light: build/bench/bench_light
+	@mkdir -p bench/out
+	build/bench/bench_light
+
+bench: bench-light
+.PHONY: bench-light
