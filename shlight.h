@@ -19,6 +19,8 @@
      >>zonal      ZH of a uniform spherical cap (stable), its half-angle derivative, ZH -> SH
      >>light      sphere and triangle lights (SH and gradient w.r.t. the shading point),
                   exact signed triangle solid angle
+     >>grid       light grid: build (values + gradients, culling, 2 threads) and cell sampling
+                  (trilinear, first-order Taylor, Hermite)
 
    THE IMPORTANT PARTS
      float y[16];                         4 bands = 16 coefficients
@@ -63,7 +65,11 @@
 #endif
 
 #ifdef SHLIGHT_STATIC
+#if defined(__GNUC__) || defined(__clang__)
+#define SHLIGHT_API static __attribute__((unused)) /* no warning for the functions not called */
+#else
 #define SHLIGHT_API static
+#endif
 #elif defined(__cplusplus)
 #define SHLIGHT_API extern "C"
 #else
@@ -25793,6 +25799,272 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
   return SHLIGHT_FLOAT(2.0 * shli_atan2r(nm, dn));
 }
 
+/* >>grid ------------------------------------------------------------------------------------
+   SH lighting on a regular 3D grid (seed 003 sec. 5, after [WCZR20]): the SH coefficients of
+   many sphere lights and their spatial gradients at the vertices of a grid (shl_grid_build,
+   CPU), then reconstruction at any point from the 8 corners of its cell (kernels with GLSL
+   twins: trilinear, first-order Taylor, Hermite; shl_grid_sample gathers the corners on the
+   CPU).
+   Grid: vertex (ix, iy, iz), 0 <= ix < nx ..., index v = ix + nx (iy + ny iz), position
+     p_k = float(double(origin[k]) + double(i_k) double(spacing[k]))    (exact product, one
+   rounding: the same bits whatever the compiler's FMA contraction). Storage: sh[v n^2 + i],
+   grad[v n^2 + i][k] = d sh[v n^2 + i] / d x_k (float[3] per coefficient: 4 floats per
+   coefficient with gradients, 1 without).
+   Light j: centre c_j, radius r_j, intensity I_j (NULL: every I_j = 1); its contribution
+   I_j shl_sphere_light(_grad) (see >>light: inside a light, the hemisphere).
+   Culling (shl_grid.cull = eps >= 0; 0: every light reaches every vertex): light j is skipped
+   at the vertices farther than R_j = max(r_j sqrt(2 pi |I_j| / eps), 2 r_j) from c_j (test in
+   double: |c - p|^2 > R_j^2). Error bound, per skipped light and coefficient of band l
+   (solid angle Omega = 2 pi (1 - alpha) <= 2 pi r^2 / d^2 < eps / |I|, |Z_l| <= Omega for the
+   cap's ZH (|P_l| <= 1), |Y_l^m| <= sqrt((2l+1) / 4 pi)):
+     |I_j sh_i| <= eps sqrt((2l+1) / (4 pi))
+     |I_j grad sh_i| <= (eps / d) sqrt((2l+1) / (4 pi)) (sqrt(l (l+1)) + 2 / alpha),
+   d > R_j >= 2 r_j so alpha >= sqrt(3) / 2 and the last factor <= l + 1 + 2.31; (the first
+   term bounds the rotational part by the sum rule sum_m |grad_S Y_l^m|^2 =
+   l (l+1) (2l+1) / 4 pi, the second the radial part 2 pi s^2 P_l / (d alpha) Y). The error at
+   a vertex is at most the number of lights skipped there times these. The L2 norm over all
+   n^2 coefficients is also <= |I_j| sqrt(Omega) < sqrt(eps |I_j|) (Bessel).
+   Orders: SHLIGHT_GRID_FORWARD loops the vertices, then the lights (all lights, culling
+   test per pair); SHLIGHT_GRID_REVERSED loops the lights, then the vertices of the box around
+   the culling sphere (all vertices when eps = 0). Both add the lights to a vertex in index
+   order with the same arithmetic: the two orders and 1 or 2 threads give the same bits.
+   Threads: 2 splits the vertices into two z slabs (pthreads; define SHLIGHT_NO_THREADS, or a
+   platform without <pthread.h> (not __unix__ / __APPLE__), and the work runs in the calling
+   thread; a failed pthread_create runs the second slab in the caller too). glibc >= 2.34 has
+   pthreads in libc; older systems link with -pthread.
+   Reconstruction: the cell of p is (i0, i0+1) per axis with i0 = min(floor(u), dims - 2),
+   u = (p - origin) / spacing clamped to [0, dims - 1], fraction f = u - i0 in [0, 1]; an axis
+   with dims = 1 has f = 0 and both corners equal. Corner k of the cell: bit 0 x, bit 1 y,
+   bit 2 z (k = cx + 2 cy + 4 cz); c8[k n^2 + i], g8[k n^2 + i][axis]. GLSL twins:
+   c8 is float[8 * SHLIGHT_MAX_COEFFS], g8 vec3[8 * SHLIGHT_MAX_COEFFS].
+   - trilinear: exact for multilinear data, error O(h^2), C0.
+   - Taylor (first order from the nearest corner, [AKDS04]; ties f = 0.5 go to corner 1):
+     exact for linear data, error O(h^2), discontinuous at the mid-planes of the cell.
+   - Hermite: the tensor-product cubic Hermite interpolant (tricubic Hermite, 64 conditions)
+     whose values and gradients at the corners are the grid's, and whose mixed derivatives,
+     which the grid does not store, are estimated inside the cell from the gradients:
+       h_x h_y f_xy ~ ((G_x(cx,1,cz) - G_x(cx,0,cz)) + (G_y(1,cy,cz) - G_y(0,cy,cz))) / 2,
+       h_x h_y h_z f_xyz ~ (D_yz G_x(cx) + D_xz G_y(cy) + D_xy G_z(cz)) / 3,
+     G_a = h_a g_a, D the differences across the cell (so the mixed estimates on a face use
+     that face's data only: the interpolant is C0 across cells). It reproduces the
+     corner values and gradients exactly, every polynomial of total degree <= 2 exactly, and
+     has error O(h^3) (zero mixed derivatives would leave O(h^2)). Evaluated as one linear
+     combination of the 32 corner data with weights computed once per call (32 FMA per
+     coefficient). The seed and [WCZR20] do not spell out their mixed-derivative treatment;
+     this is ours. */
+#define SHLIGHT_GRID_FORWARD 0
+#define SHLIGHT_GRID_REVERSED 1
+#define SHLIGHT_GRID_TRILINEAR 0
+#define SHLIGHT_GRID_TAYLOR 1
+#define SHLIGHT_GRID_HERMITE 2
+
+#ifndef SHLIGHT_RESULT_DEFINED
+#define SHLIGHT_RESULT_DEFINED
+/* Status of the CPU functions that can fail. */
+typedef enum shl_result { SHLIGHT_OK = 0, SHLIGHT_EINVAL = -1, SHLIGHT_ENOMEM = -2 } shl_result;
+#endif
+
+/* shl_grid: plain data (no pointers), the same fields in GLSL. spacing: the cell size per
+   axis (> 0 and finite where the dims > 1; ignored where dims = 1). n: bands of the stored
+   SH. cull: the culling tolerance eps (>= 0, see >>grid). */
+typedef struct shl_grid {
+  float origin[3];
+  float spacing[3];
+  int nx;
+  int ny;
+  int nz;
+  int n;
+  float cull;
+} shl_grid;
+
+/* shl_grid_trilinear: out_sh[i] = sum_k w_k c8[k n^2 + i], w the trilinear weights of the
+   fraction f (in [0, 1]^3; outside: linear extrapolation). out_sh: n * n floats. Cost: 7 FMA
+   per coefficient. */
+SHLIGHT_INLINE void shl_grid_trilinear(int n, const float *c8, const float f[3], float *out_sh) {
+  float x1 = f[0];
+  float x0 = 1.0f - f[0];
+  float y1 = f[1];
+  float y0 = 1.0f - f[1];
+  float z1 = f[2];
+  float z0 = 1.0f - f[2];
+  float a;
+  float b;
+  float c;
+  float d;
+  int nn;
+  int i;
+  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  if (n > SHLIGHT_MAX_BANDS) {
+    n = SHLIGHT_MAX_BANDS;
+  }
+  if (n < 1) {
+    return;
+  }
+  nn = n * n;
+  for (i = 0; i < nn; ++i) {
+    a = x0 * c8[i] + x1 * c8[nn + i];
+    b = x0 * c8[2 * nn + i] + x1 * c8[3 * nn + i];
+    c = x0 * c8[4 * nn + i] + x1 * c8[5 * nn + i];
+    d = x0 * c8[6 * nn + i] + x1 * c8[7 * nn + i];
+    a = y0 * a + y1 * b;
+    c = y0 * c + y1 * d;
+    out_sh[i] = z0 * a + z1 * c;
+  }
+}
+
+/* shl_grid_taylor: first-order Taylor expansion from the nearest corner k (cx = f[0] >= 0.5,
+   ...): out_sh[i] = c8[k n^2 + i] + g8[k n^2 + i] . ((f - corner) * cell), cell the cell size
+   (shl_grid.spacing). out_sh: n * n floats. Cost: 3 FMA per coefficient. */
+SHLIGHT_INLINE void shl_grid_taylor(int n, const float *c8, const float (*g8)[3], const float f[3],
+                                    const float cell[3], float *out_sh) {
+  int cx = 0;
+  int cy = 0;
+  int cz = 0;
+  int o;
+  int nn;
+  int i;
+  float dx;
+  float dy;
+  float dz;
+  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  if (n > SHLIGHT_MAX_BANDS) {
+    n = SHLIGHT_MAX_BANDS;
+  }
+  if (n < 1) {
+    return;
+  }
+  if (f[0] >= 0.5f) {
+    cx = 1;
+  }
+  if (f[1] >= 0.5f) {
+    cy = 1;
+  }
+  if (f[2] >= 0.5f) {
+    cz = 1;
+  }
+  dx = (f[0] - SHLIGHT_ITOF(cx)) * cell[0];
+  dy = (f[1] - SHLIGHT_ITOF(cy)) * cell[1];
+  dz = (f[2] - SHLIGHT_ITOF(cz)) * cell[2];
+  nn = n * n;
+  o = (cx + 2 * cy + 4 * cz) * nn;
+  for (i = 0; i < nn; ++i) {
+    out_sh[i] = c8[o + i] + (g8[o + i][0] * dx + g8[o + i][1] * dy + g8[o + i][2] * dz);
+  }
+}
+
+/* shl_grid_hermite: tricubic Hermite from the corner values and gradients, mixed
+   derivatives estimated in the cell (see >>grid): out_sh[i] = sum_k (wv_k c8[k n^2 + i] +
+   wx_k g8[..][0] + wy_k g8[..][1] + wz_k g8[..][2]). f in [0, 1]^3, cell the cell size.
+   out_sh: n * n floats. Cost: ~150 flops for the weights, 32 FMA per coefficient. */
+SHLIGHT_INLINE void shl_grid_hermite(int n, const float *c8, const float (*g8)[3], const float f[3],
+                                     const float cell[3], float *out_sh) {
+  float ha[6];
+  float hb[6];
+  float sb[3];
+  float wv[8];
+  float wx[8];
+  float wy[8];
+  float wz[8];
+  float t;
+  float u;
+  float ax;
+  float ay;
+  float az;
+  float bx;
+  float by;
+  float bz;
+  float sx;
+  float sy;
+  float sz;
+  float s;
+  int j;
+  int k;
+  int cx;
+  int cy;
+  int cz;
+  int o;
+  int nn;
+  int i;
+  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  if (n > SHLIGHT_MAX_BANDS) {
+    n = SHLIGHT_MAX_BANDS;
+  }
+  if (n < 1) {
+    return;
+  }
+  /* per axis j: value bases ha[2j + c] and slope bases hb[2j + c] of corner c, sb = their
+     sum of slopes t (1 - t) (1 - 2t) */
+  for (j = 0; j < 3; ++j) {
+    t = f[j];
+    u = 1.0f - t;
+    ha[2 * j] = u * u * (1.0f + 2.0f * t);
+    ha[2 * j + 1] = t * t * (1.0f + 2.0f * u);
+    hb[2 * j] = t * u * u;
+    hb[2 * j + 1] = -(t * t * u);
+    sb[j] = hb[2 * j] + hb[2 * j + 1];
+  }
+  for (k = 0; k < 8; ++k) {
+    cx = k % 2;
+    cy = (k / 2) % 2;
+    cz = k / 4;
+    ax = ha[cx];
+    ay = ha[2 + cy];
+    az = ha[4 + cz];
+    bx = hb[cx];
+    by = hb[2 + cy];
+    bz = hb[4 + cz];
+    sx = SHLIGHT_ITOF(2 * cx - 1);
+    sy = SHLIGHT_ITOF(2 * cy - 1);
+    sz = SHLIGHT_ITOF(2 * cz - 1);
+    wv[k] = ax * ay * az;
+    wx[k] = cell[0] * bx *
+            (ay * az + 0.5f * (sb[1] * sy * az + sb[2] * sz * ay) +
+             0.33333333f * (sb[1] * sb[2] * sy * sz));
+    wy[k] = cell[1] * by *
+            (ax * az + 0.5f * (sb[0] * sx * az + sb[2] * sz * ax) +
+             0.33333333f * (sb[0] * sb[2] * sx * sz));
+    wz[k] = cell[2] * bz *
+            (ax * ay + 0.5f * (sb[0] * sx * ay + sb[1] * sy * ax) +
+             0.33333333f * (sb[0] * sb[1] * sx * sy));
+  }
+  nn = n * n;
+  for (i = 0; i < nn; ++i) {
+    s = 0.0f;
+    for (k = 0; k < 8; ++k) {
+      o = k * nn + i;
+      s = s + (wv[k] * c8[o] + wx[k] * g8[o][0] + wy[k] * g8[o][1] + wz[k] * g8[o][2]);
+    }
+    out_sh[i] = s;
+  }
+}
+
+/* CPU only (declared here, defined with SHLIGHT_IMPLEMENTATION). */
+
+/* shl_grid_build: out_sh[v n^2 + i] = sum_j I_j shl_sphere_light(n, p_v, c_j, r_j)[i] over
+   the lights that reach vertex v (culling, see >>grid), out_grad likewise with
+   shl_sphere_light_grad (out_grad NULL: no gradients, values by shl_sphere_light). With
+   cull = 0 each vertex holds exactly the per-point sum (same bits as a caller's loop
+   out += I * shl_sphere_light(_grad) in light order). intensity NULL: all 1. order
+   SHLIGHT_GRID_FORWARD or SHLIGHT_GRID_REVERSED, threads 1 or 2 (more: 2): the same bits.
+   Lights with r <= 0 / NaN, non-finite centres or a non-finite intensity add nothing. Returns
+   SHLIGHT_EINVAL (and writes nothing) for: g or out_sh NULL, n outside [1, SHLIGHT_MAX_BANDS], a
+   dim < 1, a spacing <= 0 or non-finite on an axis with dims > 1, non-finite origin, cull < 0 or
+   NaN, nlights < 0, centres or radii NULL with nlights > 0, an unknown order, threads < 1. Cost:
+   (vertices) x (lights reaching them) shl_sphere_light_grad calls. */
+SHLIGHT_API shl_result shl_grid_build(const shl_grid *g, const float (*centres)[3],
+                                      const float *radii, const float *intensity, int nlights,
+                                      float *out_sh, float (*out_grad)[3], int order, int threads);
+
+/* shl_grid_sample: reconstruction at p from a grid built by shl_grid_build: clamps p to the
+   grid's box (NaN components: the origin's), gathers the 8 corners of its cell and calls
+   shl_grid_trilinear, shl_grid_taylor or shl_grid_hermite (method SHLIGHT_GRID_TRILINEAR,
+   _TAYLOR, _HERMITE). grad may be NULL for trilinear only. out_sh: g->n^2 floats. Returns
+   SHLIGHT_EINVAL for NULL g / sh / out_sh, invalid g (as shl_grid_build), an unknown method
+   or a NULL grad that the method needs; SHLIGHT_ENOMEM if n > 16 and the corner buffer
+   (8 n^2 x 4 floats, on the stack up to 16 bands) cannot be allocated. */
+SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const float (*grad)[3],
+                                       const float p[3], int method, float *out_sh);
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -30051,6 +30323,271 @@ SHLIGHT_API void shl_sh_eval_accurate(int n, const float d[3], float *out_y) {
   y *= ir;
   z *= ir;
   shli_sh_core_accurate(n, x, y, (x * x + y * y) / (1.0 + fabs(z)), copysign(1.0, z), out_y);
+}
+
+/* >>grid implementation ------------------------------------------------------------ */
+/* (paste inside the SHLIGHT_IMPLEMENTATION part) */
+#include <stdlib.h>
+#if !defined(SHLIGHT_NO_THREADS) && (defined(__unix__) || defined(__APPLE__))
+#include <pthread.h>
+#define SHLI_GRID_PTHREADS 1
+#else
+#define SHLI_GRID_PTHREADS 0
+#endif
+
+typedef struct shli_grid_job {
+  const shl_grid *g;
+  const float (*centres)[3];
+  const float *radii;
+  const float *intensity;
+  const double *cut2; /* per light: squared culling radius (< 0: the light is skipped) */
+  int nlights;
+  float *out_sh;
+  float (*out_grad)[3];
+  int order;
+  int z0; /* vertex slab iz in [z0, z1) */
+  int z1;
+} shli_grid_job;
+
+static void shli_grid_vertex(const shl_grid *g, int ix, int iy, int iz, float p[3]) {
+  p[0] = (float)((double)g->origin[0] + (double)ix * (double)g->spacing[0]);
+  p[1] = (float)((double)g->origin[1] + (double)iy * (double)g->spacing[1]);
+  p[2] = (float)((double)g->origin[2] + (double)iz * (double)g->spacing[2]);
+}
+
+/* light j at vertex (ix, iy, iz): culling test and accumulation */
+static void shli_grid_add(const shli_grid_job *jb, int j, int ix, int iy, int iz, float *tsh,
+                          float (*tg)[3]) {
+  const shl_grid *g = jb->g;
+  int n = g->n, nn = n * n, i;
+  size_t v = (size_t)ix + (size_t)g->nx * ((size_t)iy + (size_t)g->ny * (size_t)iz);
+  float p[3], w = jb->intensity ? jb->intensity[j] : 1.0f;
+  float *o = jb->out_sh + v * (size_t)nn;
+  double dx, dy, dz;
+  shli_grid_vertex(g, ix, iy, iz, p);
+  if (jb->cut2[j] < 0.0) return;
+  dx = (double)jb->centres[j][0] - (double)p[0];
+  dy = (double)jb->centres[j][1] - (double)p[1];
+  dz = (double)jb->centres[j][2] - (double)p[2];
+  if (dx * dx + dy * dy + dz * dz > jb->cut2[j]) return;
+  if (jb->out_grad) {
+    float(*og)[3] = jb->out_grad + v * (size_t)nn;
+    shl_sphere_light_grad(n, p, jb->centres[j], jb->radii[j], tsh, tg);
+    for (i = 0; i < nn; ++i) {
+      o[i] += w * tsh[i];
+      og[i][0] += w * tg[i][0];
+      og[i][1] += w * tg[i][1];
+      og[i][2] += w * tg[i][2];
+    }
+  } else {
+    shl_sphere_light(n, p, jb->centres[j], jb->radii[j], tsh);
+    for (i = 0; i < nn; ++i)
+      o[i] += w * tsh[i];
+  }
+}
+
+/* index range [lo, hi] of the vertices within distance rad of c along one axis */
+static void shli_grid_range(double c, double rad, float org, float sp, int dims, int *lo, int *hi) {
+  double a, b;
+  if (dims == 1 || !(rad < 1e30)) {
+    *lo = 0;
+    *hi = dims - 1;
+    return;
+  }
+  a = floor((c - rad - (double)org) / (double)sp) - 1.0; /* widened by one: the exact test */
+  b = ceil((c + rad - (double)org) / (double)sp) + 1.0;  /* is done per vertex */
+  if (a < 0.0) a = 0.0;
+  if (b > (double)(dims - 1)) b = (double)(dims - 1);
+  if (a > b) {
+    *lo = 1;
+    *hi = 0;
+    return;
+  }
+  *lo = (int)a;
+  *hi = (int)b;
+}
+
+static void *shli_grid_run(void *arg) {
+  const shli_grid_job *jb = (const shli_grid_job *)arg;
+  const shl_grid *g = jb->g;
+  float *tsh = (float *)malloc(sizeof(float) * (size_t)(g->n * g->n) * 4u);
+  float(*tg)[3];
+  int ix, iy, iz, j;
+  if (!tsh) return (void *)1;
+  tg = (float(*)[3])(void *)(tsh + g->n * g->n);
+  if (jb->order == SHLIGHT_GRID_FORWARD) {
+    for (iz = jb->z0; iz < jb->z1; ++iz)
+      for (iy = 0; iy < g->ny; ++iy)
+        for (ix = 0; ix < g->nx; ++ix)
+          for (j = 0; j < jb->nlights; ++j)
+            shli_grid_add(jb, j, ix, iy, iz, tsh, tg);
+  } else {
+    for (j = 0; j < jb->nlights; ++j) {
+      int x0, x1, y0, y1, zl, zh;
+      double rad = jb->cut2[j] < 0.0 ? -1.0 : sqrt(jb->cut2[j]);
+      if (rad < 0.0) continue;
+      shli_grid_range((double)jb->centres[j][0], rad, g->origin[0], g->spacing[0], g->nx, &x0, &x1);
+      shli_grid_range((double)jb->centres[j][1], rad, g->origin[1], g->spacing[1], g->ny, &y0, &y1);
+      shli_grid_range((double)jb->centres[j][2], rad, g->origin[2], g->spacing[2], g->nz, &zl, &zh);
+      if (zl < jb->z0) zl = jb->z0;
+      if (zh > jb->z1 - 1) zh = jb->z1 - 1;
+      for (iz = zl; iz <= zh; ++iz)
+        for (iy = y0; iy <= y1; ++iy)
+          for (ix = x0; ix <= x1; ++ix)
+            shli_grid_add(jb, j, ix, iy, iz, tsh, tg);
+    }
+  }
+  free(tsh);
+  return NULL;
+}
+
+static int shli_grid_valid(const shl_grid *g) {
+  int k, dims[3];
+  if (!g || g->n < 1 || g->n > SHLIGHT_MAX_BANDS || g->nx < 1 || g->ny < 1 || g->nz < 1) return 0;
+  if (!(g->cull >= 0.0f)) return 0;
+  dims[0] = g->nx;
+  dims[1] = g->ny;
+  dims[2] = g->nz;
+  for (k = 0; k < 3; ++k) {
+    if (!(fabs((double)g->origin[k]) <= 3.4e38)) return 0;
+    if (dims[k] > 1 && !(g->spacing[k] > 0.0f && (double)g->spacing[k] <= 3.4e38)) return 0;
+  }
+  return 1;
+}
+
+SHLIGHT_API shl_result shl_grid_build(const shl_grid *g, const float (*centres)[3],
+                                      const float *radii, const float *intensity, int nlights,
+                                      float *out_sh, float (*out_grad)[3], int order, int threads) {
+  shli_grid_job jb[2];
+  double *cut2;
+  size_t nv, nn, k;
+  int j, nt = threads > 2 ? 2 : threads;
+  void *rc0 = NULL, *rc1 = NULL;
+  if (!shli_grid_valid(g) || !out_sh || nlights < 0 || threads < 1 ||
+      (nlights > 0 && (!centres || !radii)) ||
+      (order != SHLIGHT_GRID_FORWARD && order != SHLIGHT_GRID_REVERSED))
+    return SHLIGHT_EINVAL;
+  nn = (size_t)g->n * (size_t)g->n;
+  nv = (size_t)g->nx * (size_t)g->ny * (size_t)g->nz;
+  cut2 = (double *)malloc(sizeof(double) * (size_t)(nlights > 0 ? nlights : 1));
+  if (!cut2) return SHLIGHT_ENOMEM;
+  for (k = 0; k < nv * nn; ++k)
+    out_sh[k] = 0.0f;
+  if (out_grad)
+    for (k = 0; k < nv * nn; ++k)
+      out_grad[k][0] = out_grad[k][1] = out_grad[k][2] = 0.0f;
+  for (j = 0; j < nlights; ++j) {
+    double r = (double)radii[j], w = intensity ? fabs((double)intensity[j]) : 1.0;
+    double s =
+        fabs((double)centres[j][0]) + fabs((double)centres[j][1]) + fabs((double)centres[j][2]);
+    double rc = 1e300;
+    if (!(r > 0.0) || !(s <= 3.4e38) || !(w <= 3.4e38)) {
+      cut2[j] = -1.0; /* no light */
+      continue;
+    }
+    if (g->cull > 0.0f) {
+      rc = r * sqrt(6.283185307179586 * w / (double)g->cull);
+      if (rc < 2.0 * r) rc = 2.0 * r;
+    }
+    cut2[j] = rc < 1e150 ? rc * rc : 1e300;
+  }
+  for (j = 0; j < 2; ++j) {
+    jb[j].g = g;
+    jb[j].centres = centres;
+    jb[j].radii = radii;
+    jb[j].intensity = intensity;
+    jb[j].cut2 = cut2;
+    jb[j].nlights = nlights;
+    jb[j].out_sh = out_sh;
+    jb[j].out_grad = out_grad;
+    jb[j].order = order;
+  }
+  if (nt < 2 || g->nz < 2) {
+    jb[0].z0 = 0;
+    jb[0].z1 = g->nz;
+    rc0 = shli_grid_run(&jb[0]);
+  } else {
+    jb[0].z0 = 0;
+    jb[0].z1 = g->nz / 2;
+    jb[1].z0 = g->nz / 2;
+    jb[1].z1 = g->nz;
+#if SHLI_GRID_PTHREADS
+    {
+      pthread_t th;
+      if (pthread_create(&th, NULL, shli_grid_run, &jb[1]) == 0) {
+        rc0 = shli_grid_run(&jb[0]);
+        pthread_join(th, &rc1);
+      } else {
+        rc0 = shli_grid_run(&jb[0]);
+        rc1 = shli_grid_run(&jb[1]);
+      }
+    }
+#else
+    rc0 = shli_grid_run(&jb[0]);
+    rc1 = shli_grid_run(&jb[1]);
+#endif
+  }
+  free(cut2);
+  return (rc0 || rc1) ? SHLIGHT_ENOMEM : SHLIGHT_OK;
+}
+
+SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const float (*grad)[3],
+                                       const float p[3], int method, float *out_sh) {
+  float sbuf[8 * 256], gbuf[8 * 256][3], f[3];
+  float *c8 = sbuf;
+  float(*g8)[3] = gbuf;
+  void *heap = NULL;
+  int lo[3], hi[3], dims[3], k, c, n, nn;
+  shl_result res = SHLIGHT_OK;
+  if (!shli_grid_valid(g) || !sh || !out_sh || !p ||
+      (method != SHLIGHT_GRID_TRILINEAR && method != SHLIGHT_GRID_TAYLOR &&
+       method != SHLIGHT_GRID_HERMITE) ||
+      (method != SHLIGHT_GRID_TRILINEAR && !grad))
+    return SHLIGHT_EINVAL;
+  n = g->n;
+  nn = n * n;
+  if (nn > 256) {
+    heap = malloc(sizeof(float) * 32u * (size_t)nn);
+    if (!heap) return SHLIGHT_ENOMEM;
+    c8 = (float *)heap;
+    g8 = (float(*)[3])(void *)(c8 + 8 * nn);
+  }
+  dims[0] = g->nx;
+  dims[1] = g->ny;
+  dims[2] = g->nz;
+  for (k = 0; k < 3; ++k) {
+    double u = 0.0, fl;
+    if (dims[k] > 1) u = ((double)p[k] - (double)g->origin[k]) / (double)g->spacing[k];
+    if (!(u >= 0.0)) u = 0.0; /* NaN too */
+    if (u > (double)(dims[k] - 1)) u = (double)(dims[k] - 1);
+    fl = floor(u);
+    if (fl > (double)(dims[k] - 2)) fl = (double)(dims[k] - 2);
+    if (fl < 0.0) fl = 0.0;
+    lo[k] = (int)fl;
+    hi[k] = dims[k] > 1 ? lo[k] + 1 : lo[k];
+    f[k] = dims[k] > 1 ? (float)(u - fl) : 0.0f;
+  }
+  for (c = 0; c < 8; ++c) {
+    int ix = (c & 1) ? hi[0] : lo[0], iy = (c & 2) ? hi[1] : lo[1], iz = (c & 4) ? hi[2] : lo[2];
+    size_t v = (size_t)ix + (size_t)g->nx * ((size_t)iy + (size_t)g->ny * (size_t)iz);
+    for (k = 0; k < nn; ++k) {
+      c8[c * nn + k] = sh[v * (size_t)nn + (size_t)k];
+      if (method != SHLIGHT_GRID_TRILINEAR) {
+        g8[c * nn + k][0] = grad[v * (size_t)nn + (size_t)k][0];
+        g8[c * nn + k][1] = grad[v * (size_t)nn + (size_t)k][1];
+        g8[c * nn + k][2] = grad[v * (size_t)nn + (size_t)k][2];
+      }
+    }
+  }
+  if (method == SHLIGHT_GRID_TRILINEAR) {
+    shl_grid_trilinear(n, c8, f, out_sh);
+  } else if (method == SHLIGHT_GRID_TAYLOR) {
+    shl_grid_taylor(n, c8, (const float(*)[3])g8, f, g->spacing, out_sh);
+  } else {
+    shl_grid_hermite(n, c8, (const float(*)[3])g8, f, g->spacing, out_sh);
+  }
+  free(heap);
+  return res;
 }
 
 #endif /* SHLIGHT_IMPLEMENTATION */

@@ -40,3 +40,13 @@ bench-light: build/bench/bench_light
 
 bench: bench-light
 .PHONY: bench-light
+
+build/bench/bench_grid: bench/bench_grid.c shlight.h
+	@mkdir -p build/bench
+	$(BENCH_CC) $(BENCH_CFLAGS) -o $@ bench/bench_grid.c -lm -pthread
+
+bench-grid: build/bench/bench_grid
+	build/bench/bench_grid | tee bench/out/grid.md
+
+bench: bench-grid
+.PHONY: bench-grid

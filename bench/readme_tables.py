@@ -46,7 +46,10 @@ def tables():
     ac.append('| `shl_sh_eval_grad`: error / max abs grad, abs d in [0.1, 10] | ' + ' | '.join(cells) + ' |')
     light = open(os.path.join(ROOT, 'bench/out/light.md')).read().split('\n')
     light = [l for l in light if l.startswith('|') or l.startswith('shl_triangle_solid')]
-    return {'speed': '\n'.join(sp), 'accuracy': '\n'.join(ac), 'light': '\n'.join(light)}
+    grid = open(os.path.join(ROOT, 'bench/out/grid.md')).read().rstrip('\n').split('\n')
+    grid = ['    ' + l for l in grid]
+    return {'speed': '\n'.join(sp), 'accuracy': '\n'.join(ac), 'light': '\n'.join(light),
+            'grid': '\n'.join(grid)}
 
 
 def main():

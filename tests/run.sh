@@ -53,23 +53,29 @@ step example $MAKE -s example
 step compile-matrix $MAKE -s compile-matrix
 step build-tests $MAKE -s build/tests/test_basis build/tests/test_glm build/tests/test_glsl \
   build/tests/test_gl_smoke build/tests/fuzz_replay build/tests/native/test_basis \
-  build/tests/test_light build/tests/native/test_light build/tests/selftest_lightref
+  build/tests/test_light build/tests/native/test_light build/tests/selftest_lightref \
+  build/tests/test_grid build/tests/native/test_grid build/tests/test_grid_glsl
 step test_basis build/tests/test_basis
 # the same tests on this machine's SIMD paths (AVX-512 / AVX2 kernels) with FMA contraction
 step test_basis-march-native build/tests/native/test_basis
 step test_light build/tests/test_light
 step test_light-march-native build/tests/native/test_light
 step lightref-selftest build/tests/selftest_lightref
+step test_grid build/tests/test_grid
+step test_grid-march-native build/tests/native/test_grid
 step test_glm build/tests/test_glm
 step fuzz-corpus-replay build/tests/fuzz_replay tests/corpus/basis
 for b in $backends; do
   step "gl-smoke-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_gl_smoke
   step "glsl-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_glsl
+  step "glsl-grid-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_grid_glsl
 done
 if [ "${SHLIGHT_TEST_QUICK:-0}" != 1 ]; then
   step asan-ubsan $MAKE -s test-asan
   step asan-ubsan-light $MAKE -s build/tests/asan/test_light
   step asan-ubsan-light-run build/tests/asan/test_light
+  step asan-ubsan-grid $MAKE -s build/tests/asan/test_grid
+  step asan-ubsan-grid-run build/tests/asan/test_grid
   step asan-ubsan-gl $MAKE -s gl-test-asan
 fi
 echo "time: $(($(date +%s) - t0)) s"

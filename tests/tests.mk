@@ -109,3 +109,15 @@ $(TESTS_BUILD)/selftest_lightref: tests/ref/selftest_lightref.c tests/ref/lightr
 $(TESTS_BUILD)/asan/test_light: tests/test_light.c tests/ref/lightref.h tests/ref/shref.h tests/tl.h shlight.h
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/test_light.c $(TESTS_QUADLIBS)
+
+# >>grid: build orders, threads, culling bound, interpolation against per-point evaluation
+TESTS_GRID_FLAGS := -Wno-conversion -Wno-double-promotion -pthread
+$(TESTS_BUILD)/test_grid: tests/test_grid.c tests/tl.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) -o $@ tests/test_grid.c -lm
+$(TESTS_BUILD)/native/test_grid: tests/test_grid.c tests/tl.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) -march=native -ffp-contract=fast -o $@ tests/test_grid.c -lm
+$(TESTS_BUILD)/asan/test_grid: tests/test_grid.c tests/tl.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) $(TESTS_ASAN) -o $@ tests/test_grid.c -lm

@@ -528,7 +528,8 @@ import re
 
 # GLSL array length of a pointer parameter, by name (default: n * n coefficients)
 ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
-               'out_dzh': 'SHLIGHT_MAX_BANDS', 'g': '8', 'out_g': '8', 'out_nt': '3'}
+               'out_dzh': 'SHLIGHT_MAX_BANDS', 'g': '8', 'out_g': '8', 'out_nt': '3',
+               'c8': '8 * SHLIGHT_MAX_COEFFS', 'g8': '8 * SHLIGHT_MAX_COEFFS'}
 
 
 def glsl_param(prm, fname):
@@ -540,7 +541,7 @@ def glsl_param(prm, fname):
     m = re.match(r'^(const )?float \(\*(\w+)\)\[3\]$', prm)
     if m:
         qual = '' if m.group(1) else ('inout ' if m.group(2).startswith('io_') else 'out ')
-        return '%svec3 %s[SHLIGHT_MAX_COEFFS]' % (qual, m.group(2))
+        return '%svec3 %s[%s]' % (qual, m.group(2), ARRAY_SIZES.get(m.group(2), 'SHLIGHT_MAX_COEFFS'))
     m = re.match(r'^(const )?(float|shli_real|int) \*(\w+)$', prm)
     if m:
         const, typ, name = m.groups()
@@ -672,7 +673,8 @@ def main():
                       ('gradient', ['shl_prelude.glsl', 'shl_basis.glsl']),
                       ('zonal', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl']),
                       ('light', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
-                                 'shl_zonal.glsl'])):
+                                 'shl_zonal.glsl']),
+                      ('grid', ['shl_prelude.glsl'])):
         gp = os.path.join(ROOT, 'shlight_glsl', 'shl_%s.glsl' % sec)
         old = open(gp).read() if os.path.exists(gp) else ''
         outputs.append((gp, old, glsl_module(new, sec, deps)))
