@@ -45,7 +45,15 @@ def tables():
              for n in NS]
     ac.append('| `shl_sh_eval_grad`: error / max abs grad, abs d in [0.1, 10] | ' + ' | '.join(cells) + ' |')
     light = open(os.path.join(ROOT, 'bench/out/light.md')).read().split('\n')
-    light = [l for l in light if l.startswith('|') or l.startswith('shl_triangle_solid')]
+    kept = []
+    for l in light:  # the tables and the solid-angle line, blank lines between blocks
+        if l.startswith('|') or l.startswith('shl_triangle_solid'):
+            if kept and (kept[-1].startswith('|') != l.startswith('|')):
+                kept.append('')
+            kept.append(l)
+        elif kept and kept[-1] != '':
+            kept.append('')
+    light = [l for i, l in enumerate(kept) if not (l == '' and (i + 1 == len(kept) or kept[i + 1] == ''))]
     grid = open(os.path.join(ROOT, 'bench/out/grid.md')).read().rstrip('\n').split('\n')
     grid = ['    ' + l for l in grid]
     return {'speed': '\n'.join(sp), 'accuracy': '\n'.join(ac), 'light': '\n'.join(light),
@@ -56,8 +64,8 @@ def main():
     path = os.path.join(ROOT, 'README.md')
     text = open(path).read()
     for name, body in tables().items():
-        text = re.sub(r'(<!-- bench:%s -->\n).*?(\n<!-- /bench:%s -->)' % (name, name),
-                      lambda m: m.group(1) + body + m.group(2), text, flags=re.S)
+        text = re.sub(r'(<!-- bench:%s -->\n)(?:.*?\n)?(<!-- /bench:%s -->)' % (name, name),
+                      lambda m: m.group(1) + body + '\n' + m.group(2), text, flags=re.S)
     open(path, 'w').write(text)
 
 
