@@ -4,6 +4,17 @@
 #ifndef SHL_BASIS_GLSL
 #define SHL_BASIS_GLSL
 
+int shli_bands(int n) {
+  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  if (n > SHLIGHT_MAX_BANDS) {
+    return SHLIGHT_MAX_BANDS;
+  }
+  if (n < 1) {
+    return 0;
+  }
+  return n;
+}
+
 #if SHLIGHT_MAX_BANDS >= 1
 void shli_sh_poly_1(float x, float y, float z, out float out_y[SHLIGHT_MAX_COEFFS]) {
   SHLIGHT_UNUSED(x);
@@ -4753,12 +4764,9 @@ void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIG
   shli_real k;
   shli_real az;
   float sg;
-  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
+  n = shli_bands(n);
   if (n < 1) {
     return;
-  }
-  if (n > SHLIGHT_MAX_BANDS) {
-    n = SHLIGHT_MAX_BANDS;
   }
   switch (n) {
   /* up to 6 bands, float Horner forms straight from d are within the targets (README): no

@@ -6400,10 +6400,7 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
   float ir;
   float ib;
   int i;
-  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
-  if (n > SHLIGHT_MAX_BANDS) {
-    n = SHLIGHT_MAX_BANDS;
-  }
+  n = shli_bands(n);
   if (n < 1) {
     return;
   }
@@ -6504,10 +6501,7 @@ void shl_sh_eval_grad_spherical(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFF
   int m;
   int l;
   int b;
-  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
-  if (n > SHLIGHT_MAX_BANDS) {
-    n = SHLIGHT_MAX_BANDS;
-  }
+  n = shli_bands(n);
   if (n < 1) {
     return;
   }
@@ -6602,10 +6596,7 @@ void shl_sh_grad_from_spherical(int n, vec3 d, float dtheta[SHLIGHT_MAX_COEFFS],
   float px = 0.0f;
   float py = 0.0f;
   int i;
-  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
-  if (n > SHLIGHT_MAX_BANDS) {
-    n = SHLIGHT_MAX_BANDS;
-  }
+  n = shli_bands(n);
   if (n < 1) {
     return;
   }

@@ -119,10 +119,7 @@ void shli_cap_light_grad(int n, shli_real g[8], shli_real wgt, shli_real gw0, sh
 void shl_sphere_light(int n, vec3 x, vec3 c, float r, out float out_sh[SHLIGHT_MAX_COEFFS]) {
   shli_real g[8];
   int i;
-  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
-  if (n > SHLIGHT_MAX_BANDS) {
-    n = SHLIGHT_MAX_BANDS;
-  }
+  n = shli_bands(n);
   if (n < 1) {
     return;
   }
@@ -142,10 +139,7 @@ void shl_sphere_light_grad(int n, vec3 x, vec3 c, float r, out float out_sh[SHLI
                            out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   shli_real g[8];
   int i;
-  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
-  if (n > SHLIGHT_MAX_BANDS) {
-    n = SHLIGHT_MAX_BANDS;
-  }
+  n = shli_bands(n);
   if (n < 1) {
     return;
   }
@@ -206,10 +200,7 @@ void shl_triangle_light(int n, vec3 x, vec3 p0, vec3 p1, vec3 p2,
   shli_real g[8];
   shli_real nt[3];
   int i;
-  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
-  if (n > SHLIGHT_MAX_BANDS) {
-    n = SHLIGHT_MAX_BANDS;
-  }
+  n = shli_bands(n);
   if (n < 1) {
     return;
   }
@@ -232,10 +223,7 @@ void shl_triangle_light_grad(int n, vec3 x, vec3 p0, vec3 p1, vec3 p2,
   shli_real sg = 0.0;
   shli_real cg;
   int i;
-  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
-  if (n > SHLIGHT_MAX_BANDS) {
-    n = SHLIGHT_MAX_BANDS;
-  }
+  n = shli_bands(n);
   if (n < 1) {
     return;
   }

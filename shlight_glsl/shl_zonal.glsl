@@ -96,10 +96,7 @@ void shl_zh_cap(int n, float r, float d, out float out_zh[SHLIGHT_MAX_BANDS]) {
   shli_real dl = 1.0;
   shli_real dn;
   int l;
-  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
-  if (n > SHLIGHT_MAX_BANDS) {
-    n = SHLIGHT_MAX_BANDS;
-  }
+  n = shli_bands(n);
   if (n < 1) {
     return;
   }
@@ -133,10 +130,7 @@ void shl_zh_cap_da(int n, float r, float d, out float out_dzh[SHLIGHT_MAX_BANDS]
   shli_real pl = 1.0;
   shli_real pn;
   int l;
-  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
-  if (n > SHLIGHT_MAX_BANDS) {
-    n = SHLIGHT_MAX_BANDS;
-  }
+  n = shli_bands(n);
   if (n < 1) {
     return;
   }
@@ -163,10 +157,7 @@ void shl_zh_cap_printed(int n, float r, float d, out float out_zh[SHLIGHT_MAX_BA
   float pl;
   float pn;
   int l;
-  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
-  if (n > SHLIGHT_MAX_BANDS) {
-    n = SHLIGHT_MAX_BANDS;
-  }
+  n = shli_bands(n);
   if (n < 1) {
     return;
   }
@@ -198,10 +189,7 @@ void shl_zh_rotate(int n, float zh[SHLIGHT_MAX_BANDS], vec3 dir,
   int l;
   int m;
   int b;
-  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
-  if (n > SHLIGHT_MAX_BANDS) {
-    n = SHLIGHT_MAX_BANDS;
-  }
+  n = shli_bands(n);
   if (n < 1) {
     return;
   }

@@ -21,7 +21,8 @@ static float rndf(void) {
 
 static void test_glsl_grid(void) {
   static float in[NI * IN], out[NI * OUTS], ref[NI * OUTS];
-  const char *files[2] = {"shlight_glsl/shl_prelude.glsl", "shlight_glsl/shl_grid.glsl"};
+  const char *files[3] = {"shlight_glsl/shl_prelude.glsl", "shlight_glsl/shl_basis.glsl",
+                          "shlight_glsl/shl_grid.glsl"};
   const char *defines = "#define SHLIGHT_MAX_BANDS 3\n";
   const char *main_src =
       "void glrun_main(int item) {\n"
@@ -61,7 +62,7 @@ static void test_glsl_grid(void) {
     shl_grid_hermite(NB, p, (const float(*)[3])(p + 8 * NN), p + 32 * NN, p + 32 * NN + 3,
                      ref + i * OUTS + 2 * NN);
   }
-  TL_CHECK(glrun_compute(defines, files, 2, main_src, in, (size_t)NI * IN, out, (size_t)NI * OUTS,
+  TL_CHECK(glrun_compute(defines, files, 3, main_src, in, (size_t)NI * IN, out, (size_t)NI * OUTS,
                          NI) == 0,
            "glrun: %s", glrun_last_log());
   for (i = 0; i < NI * OUTS; ++i) {

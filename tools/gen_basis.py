@@ -674,7 +674,7 @@ def main():
                       ('zonal', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl']),
                       ('light', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
                                  'shl_zonal.glsl']),
-                      ('grid', ['shl_prelude.glsl'])):
+                      ('grid', ['shl_prelude.glsl', 'shl_basis.glsl'])):
         gp = os.path.join(ROOT, 'shlight_glsl', 'shl_%s.glsl' % sec)
         old = open(gp).read() if os.path.exists(gp) else ''
         outputs.append((gp, old, glsl_module(new, sec, deps)))

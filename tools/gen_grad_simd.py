@@ -22,12 +22,7 @@ ZERO = 31
 S2 = math.sqrt(2.0)
 
 
-def grad_abc(l, m):
-    f = (2 * l + 1) / (2 * l - 1)
-    a = -0.5 * math.sqrt(f * (l + m) * (l + m - 1)) if m >= 1 else 0.0
-    b = 0.5 * math.sqrt(f * max(0, (l - m) * (l - m - 1)))
-    c = math.sqrt(f * (l - m) * (l + m))
-    return a, b, c
+from gen_basis import grad_abc  # the one definition of the coefficients
 
 
 def lane_terms(l, k, comp):
