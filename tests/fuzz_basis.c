@@ -89,7 +89,7 @@ static int bounded(const float *y, int nb) {
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
-  uint8_t buf[14];
+  uint8_t buf[30];
   int n, nb, count, j, degenerate, in_range;
   float d[3];
   size_t nn;
@@ -113,7 +113,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   {
     float *y = alloc_f(nn), *g = alloc_f(3 * nn), *dt = alloc_f(nn), *dp = alloc_f(nn);
     float *g2 = alloc_f(3 * nn);
-    float dn[3];
+    float dn[3] = {0.0f, 0.0f, 1.0f};
 
     shl_sh_eval(n, d, y); /* raw input: only memory safety */
 
@@ -185,6 +185,32 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
       free(ys);
       free(zs);
       free(out);
+    }
+    /* >>zonal / >>light: bytes 14..29 are a light centre c and radius r (shading point x = d);
+     * every output must be finite for every input, NaN and infinity included (documented:
+     * zeros for r <= 0, NaN or non-finite positions; the surface limit inside the light) */
+    {
+      float c[3], rr, p2[3], om;
+      memcpy(c, buf + 14, sizeof c);
+      memcpy(&rr, buf + 26, sizeof rr);
+      p2[0] = c[1];
+      p2[1] = c[2];
+      p2[2] = d[0];
+      if (nb >= 1) {
+        shl_sphere_light(n, d, c, rr, y);
+        FUZZ_CHECK(finite_all(y, nn), "shl_sphere_light non-finite");
+        shl_sphere_light_grad(n, d, c, rr, y, (float(*)[3])g);
+        FUZZ_CHECK(finite_all(y, nn) && finite_all(g, 3 * nn), "shl_sphere_light_grad non-finite");
+        shl_triangle_light(n, d, c, p2, dn, y);
+        FUZZ_CHECK(finite_all(y, nn), "shl_triangle_light non-finite");
+        shl_triangle_light_grad(n, d, c, p2, dn, y, (float(*)[3])g);
+        FUZZ_CHECK(finite_all(y, nn) && finite_all(g, 3 * nn),
+                   "shl_triangle_light_grad non-finite");
+        shl_zh_cap(n, rr, c[0], y);
+        FUZZ_CHECK(finite_all(y, (size_t)nb), "shl_zh_cap non-finite");
+      }
+      om = shl_triangle_solid_angle(d, c, p2, dn);
+      FUZZ_CHECK(isfinite(om), "shl_triangle_solid_angle non-finite");
     }
     free(y);
     free(g);
