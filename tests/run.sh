@@ -51,7 +51,7 @@ step glslang-450-330-300es bash tools/glsl_validate.sh
 step format-check $MAKE -s format-check
 step example $MAKE -s example
 step compile-matrix $MAKE -s compile-matrix
-step build-tests $MAKE -s build/tests/test_basis build/tests/test_glm build/tests/test_glsl \
+step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/tests/test_glsl \
   build/tests/test_gl_smoke build/tests/fuzz_replay build/tests/native/test_basis \
   build/tests/test_light build/tests/native/test_light build/tests/selftest_lightref \
   build/tests/test_grid build/tests/native/test_grid build/tests/test_grid_glsl
@@ -71,11 +71,13 @@ for b in $backends; do
   step "glsl-grid-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_grid_glsl
 done
 if [ "${SHLIGHT_TEST_QUICK:-0}" != 1 ]; then
+  # build every sanitizer binary at once on both cores, then run them
+  step asan-ubsan-build $MAKE -s -j2 build/tests/asan/test_basis build/tests/asan/test_glm \
+    build/tests/asan/fuzz_replay build/tests/asan/test_light build/tests/asan/test_grid \
+    build/tests/asan/test_gl_smoke
   step asan-ubsan $MAKE -s test-asan
-  step asan-ubsan-light $MAKE -s build/tests/asan/test_light
-  step asan-ubsan-light-run build/tests/asan/test_light
-  step asan-ubsan-grid $MAKE -s build/tests/asan/test_grid
-  step asan-ubsan-grid-run build/tests/asan/test_grid
+  step asan-ubsan-light build/tests/asan/test_light
+  step asan-ubsan-grid build/tests/asan/test_grid
   step asan-ubsan-gl $MAKE -s gl-test-asan
 fi
 echo "time: $(($(date +%s) - t0)) s"
