@@ -16926,7 +16926,8 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_avx512(int n, const float *y, float nx, flo
    feed the gradient chunks directly (one two-source permute builds the band-order vector), so
    Y is neither stored and reloaded nor recomputed. (x, y, z) unit, ir = 1 / |d|. */
 SHLIGHT_CPU_INLINE void shli_sh_eval_grad_avx512(int n, float x, float y, float z, float ir,
-                                                 float *out_y, float (*out_grad)[3]) {
+                                                 const float *bw, float *out_y,
+                                                 float (*out_grad)[3]) {
   static const unsigned short bits[4] = {0xAAAA, 0xCCCC, 0xF0F0, 0xFF00};
   float s2 = x * x + y * y;
   float e = (z - 1.0f) * (z + 1.0f) + s2;
@@ -16935,7 +16936,7 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_grad_avx512(int n, float x, float y, float 
   float *o = &out_grad[0][0];
   __m512 c = _mm512_set1_ps(1.0f), s = _mm512_setzero_ps(), co, so, vs, xv, dd, vt;
   __m512 vx = _mm512_set1_ps(x), vy = _mm512_set1_ps(y), vz = _mm512_set1_ps(z);
-  __m512 u0, u1, u2, p0, p1, q0, q1, r;
+  __m512 u0, u1, u2, w0, w1, w2, p0, p1, q0, q1, r;
   __m512i iota = _mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0);
   __m512i iy0 = _mm512_loadu_si512((const void *)(SHLI_GRADV_IY));
   __m512i iy1 = _mm512_loadu_si512((const void *)(SHLI_GRADV_IY + 16));
@@ -16969,6 +16970,12 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_grad_avx512(int n, float x, float y, float 
   u2 = _mm512_mask_blend_ps((__mmask16)0x4924, _mm512_mask_blend_ps((__mmask16)0x2492, vz, vx), vy);
   out_y[0] = SHLI_SH_DIAG[0];
   _mm512_mask_storeu_ps(o, (__mmask16)7, _mm512_setzero_ps());
+  if (bw) {
+    out_y[0] = bw[0] * SHLI_SH_DIAG[0];
+    o[0] = bw[2] * SHLI_SH_DIAG[0];
+    o[1] = bw[3] * SHLI_SH_DIAG[0];
+    o[2] = bw[4] * SHLI_SH_DIAG[0];
+  }
   p0 = _mm512_maskz_mov_ps((__mmask16)1, _mm512_set1_ps(SHLI_SH_DIAG[0] * ir));
   p1 = _mm512_setzero_ps();
   for (l = 1; l < n; ++l) {
@@ -16990,15 +16997,47 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_grad_avx512(int n, float x, float y, float 
     _mm512_mask_storeu_ps(out_y + l * l + l, (__mmask16)((2u << l) - 1u), yc);
     lv = _mm512_set1_ps(SHLI_GRADV_LF[l] * ir);
     nc = SHLI_GRADV_CH0[l + 1] - SHLI_GRADV_CH0[l];
+    w0 = u0;
+    w1 = u1;
+    w2 = u2;
+    if (bw) {
+      /* light weights of band l (bw[5 l ..]: kv, kg, kx, ky, kz; ir = 1): gradient
+         kg (c1 P + c2 P - l Y u) + k Y = c1 (kg P) + c2 (kg P) - l Y (kg u - k / l) */
+      __m512 kg = _mm512_set1_ps(bw[5 * l + 1]), kl = _mm512_set1_ps(1.0f / SHLI_GRADV_LF[l]);
+      __m512 kx = _mm512_set1_ps(bw[5 * l + 2]), ky = _mm512_set1_ps(bw[5 * l + 3]);
+      __m512 kz = _mm512_set1_ps(bw[5 * l + 4]);
+      __m512 kv = _mm512_set1_ps(bw[5 * l]);
+      w0 = _mm512_fmsub_ps(
+          kg, u0,
+          _mm512_mul_ps(kl,
+                        _mm512_mask_blend_ps((__mmask16)0x4924,
+                                             _mm512_mask_blend_ps((__mmask16)0x2492, kx, ky), kz)));
+      w1 = _mm512_fmsub_ps(
+          kg, u1,
+          _mm512_mul_ps(kl,
+                        _mm512_mask_blend_ps((__mmask16)0x4924,
+                                             _mm512_mask_blend_ps((__mmask16)0x2492, ky, kz), kx)));
+      w2 = _mm512_fmsub_ps(
+          kg, u2,
+          _mm512_mul_ps(kl,
+                        _mm512_mask_blend_ps((__mmask16)0x4924,
+                                             _mm512_mask_blend_ps((__mmask16)0x2492, kz, kx), ky)));
+      p0 = _mm512_mul_ps(p0, kg);
+      p1 = _mm512_mul_ps(p1, kg);
+      /* the weighted values replace the ones stored above; Q keeps the unweighted Y */
+      _mm512_mask_storeu_ps(out_y + l * l, (__mmask16)((1u << l) - 1u),
+                            _mm512_permutexvar_ps(rev, _mm512_mul_ps(ys, kv)));
+      _mm512_mask_storeu_ps(out_y + l * l + l, (__mmask16)((2u << l) - 1u), _mm512_mul_ps(yc, kv));
+    }
     if (l < 8) {
       q0 = _mm512_mul_ps(
           _mm512_maskz_permutex2var_ps((__mmask16)((2u << (2 * l)) - 1u), ys, bo, yc), lv);
       do {
-        SHLI_GRADV_CHUNK1(0, u0);
+        SHLI_GRADV_CHUNK1(0, w0);
         SHLI_GRADV_STORE(0);
-        SHLI_GRADV_CHUNK1(1, u1);
+        SHLI_GRADV_CHUNK1(1, w1);
         SHLI_GRADV_STORE(1);
-        SHLI_GRADV_CHUNK1(2, u2);
+        SHLI_GRADV_CHUNK1(2, w2);
         _mm512_mask_storeu_ps(ol + 32, SHLI_GRADV_MASK(SHLI_GRADV_LASTM + l), r);
       } while (0);
       p0 = q0;
@@ -17009,17 +17048,17 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_grad_avx512(int n, float x, float y, float 
                                       _mm512_sub_epi32(iota, _mm512_set1_epi32(l - 16)), yc),
           lv);
       do {
-        SHLI_GRADV_CHUNK2(0, u0);
+        SHLI_GRADV_CHUNK2(0, w0);
         _mm512_storeu_ps(ol, r);
-        SHLI_GRADV_CHUNK2(1, u1);
+        SHLI_GRADV_CHUNK2(1, w1);
         _mm512_storeu_ps(ol + 16, r);
-        SHLI_GRADV_CHUNK2(2, u2);
+        SHLI_GRADV_CHUNK2(2, w2);
         _mm512_storeu_ps(ol + 32, r);
-        SHLI_GRADV_CHUNK2(3, u0);
+        SHLI_GRADV_CHUNK2(3, w0);
         SHLI_GRADV_STORE(3);
-        SHLI_GRADV_CHUNK2(4, u1);
+        SHLI_GRADV_CHUNK2(4, w1);
         SHLI_GRADV_STORE(4);
-        SHLI_GRADV_CHUNK2(5, u2);
+        SHLI_GRADV_CHUNK2(5, w2);
         _mm512_mask_storeu_ps(ol + 80, SHLI_GRADV_MASK(SHLI_GRADV_LASTM + l), r);
       } while (0);
       p0 = q0;
@@ -24664,7 +24703,7 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
   }
 #if SHLIGHT_SIMD_EVAL
   if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && ib == 1.0f) {
-    shli_sh_eval_grad_avx512(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, out_y,
+    shli_sh_eval_grad_avx512(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, 0, out_y,
                              out_grad);
     return;
   }
@@ -25487,10 +25526,38 @@ SHLIGHT_INLINE void shli_cap_light_grad(int n, const shli_real *g, shli_real wgt
   int l;
   int m;
   int i;
-  shli_sh_eval_grad_unit(n, nx, ny, nz, 1.0f, io_sh, io_grad);
+  float bw[5 * SHLIGHT_UNROLLED_BANDS];
   if (al > 0.0) {
     h = f * ir / al;
   }
+#if SHLIGHT_SIMD_EVAL
+  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS) {
+    /* the per-band weights first, then one fused AVX-512 pass applies them */
+    fl = 0.0;
+    for (l = 0; l < n; ++l) {
+      q = dl * SHLI_ZH_TAB[5 * l + 2];
+      if (l == 0) {
+        q = q0;
+      }
+      bw[5 * l] = SHLIGHT_FLOAT(f * q * wgt);
+      bw[5 * l + 1] = SHLIGHT_FLOAT(-f * q * ir * wgt);
+      bw[5 * l + 2] = SHLIGHT_FLOAT(h * pl * wgt * g[0] + f * q * gw0);
+      bw[5 * l + 3] = SHLIGHT_FLOAT(h * pl * wgt * g[1] + f * q * gw1);
+      bw[5 * l + 4] = SHLIGHT_FLOAT(h * pl * wgt * g[2] + f * q * gw2);
+      dn = dm + (2.0 * fl + 1.0) * pl;
+      pn = SHLI_ZH_TAB[5 * l] * al * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
+      dm = dl;
+      dl = dn;
+      pm = pl;
+      pl = pn;
+      fl = fl + 1.0;
+    }
+    shli_sh_eval_grad_avx512(n, nx, ny, nz, 1.0f, bw, io_sh, io_grad);
+    return;
+  }
+#endif
+  SHLIGHT_UNUSED(bw);
+  shli_sh_eval_grad_unit(n, nx, ny, nz, 1.0f, io_sh, io_grad);
   fl = 0.0;
   for (l = 0; l < n; ++l) {
     /* pl = P_l, pm = P_{l-1}, dl = P'_l, dm = P'_{l-1}; fl = l; q = q_l */

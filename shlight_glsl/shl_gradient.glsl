@@ -6454,7 +6454,7 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
   }
 #if SHLIGHT_SIMD_EVAL
   if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && ib == 1.0f) {
-    shli_sh_eval_grad_avx512(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, out_y,
+    shli_sh_eval_grad_avx512(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, 0, out_y,
                              out_grad);
     return;
   }

@@ -81,10 +81,38 @@ void shli_cap_light_grad(int n, shli_real g[8], shli_real wgt, shli_real gw0, sh
   int l;
   int m;
   int i;
-  shli_sh_eval_grad_unit(n, nx, ny, nz, 1.0f, io_sh, io_grad);
+  float bw[5 * SHLIGHT_UNROLLED_BANDS];
   if (al > 0.0) {
     h = f * ir / al;
   }
+#if SHLIGHT_SIMD_EVAL
+  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS) {
+    /* the per-band weights first, then one fused AVX-512 pass applies them */
+    fl = 0.0;
+    for (l = 0; l < n; ++l) {
+      q = dl * SHLI_ZH_TAB[5 * l + 2];
+      if (l == 0) {
+        q = q0;
+      }
+      bw[5 * l] = SHLIGHT_FLOAT(f * q * wgt);
+      bw[5 * l + 1] = SHLIGHT_FLOAT(-f * q * ir * wgt);
+      bw[5 * l + 2] = SHLIGHT_FLOAT(h * pl * wgt * g[0] + f * q * gw0);
+      bw[5 * l + 3] = SHLIGHT_FLOAT(h * pl * wgt * g[1] + f * q * gw1);
+      bw[5 * l + 4] = SHLIGHT_FLOAT(h * pl * wgt * g[2] + f * q * gw2);
+      dn = dm + (2.0 * fl + 1.0) * pl;
+      pn = SHLI_ZH_TAB[5 * l] * al * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
+      dm = dl;
+      dl = dn;
+      pm = pl;
+      pl = pn;
+      fl = fl + 1.0;
+    }
+    shli_sh_eval_grad_avx512(n, nx, ny, nz, 1.0f, bw, io_sh, io_grad);
+    return;
+  }
+#endif
+  SHLIGHT_UNUSED(bw);
+  shli_sh_eval_grad_unit(n, nx, ny, nz, 1.0f, io_sh, io_grad);
   fl = 0.0;
   for (l = 0; l < n; ++l) {
     /* pl = P_l, pm = P_{l-1}, dl = P'_l, dm = P'_{l-1}; fl = l; q = q_l */
