@@ -72,47 +72,16 @@ void shli_cap_light_grad(int n, shli_real g[8], shli_real wgt, shli_real gw0, sh
   float nx = SHLIGHT_FLOAT(g[0]);
   float ny = SHLIGHT_FLOAT(g[1]);
   float nz = SHLIGHT_FLOAT(g[2]);
-  float kv;
-  float kg;
-  float kx;
-  float ky;
-  float kz;
   float y;
   int l;
   int m;
   int i;
-  float bw[5 * SHLIGHT_UNROLLED_BANDS];
+  float bw[5 * SHLIGHT_MAX_BANDS];
   if (al > 0.0) {
     h = f * ir / al;
   }
-#if SHLIGHT_SIMD_EVAL
-  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS) {
-    /* the per-band weights first, then one fused AVX-512 pass applies them */
-    fl = 0.0;
-    for (l = 0; l < n; ++l) {
-      q = dl * SHLI_ZH_TAB[5 * l + 2];
-      if (l == 0) {
-        q = q0;
-      }
-      bw[5 * l] = SHLIGHT_FLOAT(f * q * wgt);
-      bw[5 * l + 1] = SHLIGHT_FLOAT(-f * q * ir * wgt);
-      bw[5 * l + 2] = SHLIGHT_FLOAT(h * pl * wgt * g[0] + f * q * gw0);
-      bw[5 * l + 3] = SHLIGHT_FLOAT(h * pl * wgt * g[1] + f * q * gw1);
-      bw[5 * l + 4] = SHLIGHT_FLOAT(h * pl * wgt * g[2] + f * q * gw2);
-      dn = dm + (2.0 * fl + 1.0) * pl;
-      pn = SHLI_ZH_TAB[5 * l] * al * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
-      dm = dl;
-      dl = dn;
-      pm = pl;
-      pl = pn;
-      fl = fl + 1.0;
-    }
-    shli_sh_eval_grad_avx512(n, nx, ny, nz, 1.0f, bw, io_sh, io_grad);
-    return;
-  }
-#endif
-  SHLIGHT_UNUSED(bw);
-  shli_sh_eval_grad_unit(n, nx, ny, nz, 1.0f, io_sh, io_grad);
+  /* per band l: value weight kv, gradient weights kg (of grad Y) and (kx, ky, kz) (of Y):
+     value wgt f q_l Y; gradient wgt (-f q_l ir grad1 Y + h P_l Y w) + f q_l Y grad wgt */
   fl = 0.0;
   for (l = 0; l < n; ++l) {
     /* pl = P_l, pm = P_{l-1}, dl = P'_l, dm = P'_{l-1}; fl = l; q = q_l */
@@ -120,20 +89,11 @@ void shli_cap_light_grad(int n, shli_real g[8], shli_real wgt, shli_real gw0, sh
     if (l == 0) {
       q = q0;
     }
-    /* value wgt f q Y; gradient wgt (-f q ir grad1 Y + h P_l Y w) + f q Y grad wgt */
-    kv = SHLIGHT_FLOAT(f * q * wgt);
-    kg = SHLIGHT_FLOAT(-f * q * ir * wgt);
-    kx = SHLIGHT_FLOAT(h * pl * wgt * g[0] + f * q * gw0);
-    ky = SHLIGHT_FLOAT(h * pl * wgt * g[1] + f * q * gw1);
-    kz = SHLIGHT_FLOAT(h * pl * wgt * g[2] + f * q * gw2);
-    for (m = -l; m <= l; ++m) {
-      i = l * (l + 1) + m;
-      y = io_sh[i];
-      io_sh[i] = kv * y;
-      io_grad[i][0] = kg * io_grad[i][0] + kx * y;
-      io_grad[i][1] = kg * io_grad[i][1] + ky * y;
-      io_grad[i][2] = kg * io_grad[i][2] + kz * y;
-    }
+    bw[5 * l] = SHLIGHT_FLOAT(f * q * wgt);
+    bw[5 * l + 1] = SHLIGHT_FLOAT(-f * q * ir * wgt);
+    bw[5 * l + 2] = SHLIGHT_FLOAT(h * pl * wgt * g[0] + f * q * gw0);
+    bw[5 * l + 3] = SHLIGHT_FLOAT(h * pl * wgt * g[1] + f * q * gw1);
+    bw[5 * l + 4] = SHLIGHT_FLOAT(h * pl * wgt * g[2] + f * q * gw2);
     dn = dm + (2.0 * fl + 1.0) * pl;
     pn = SHLI_ZH_TAB[5 * l] * al * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
     dm = dl;
@@ -141,6 +101,24 @@ void shli_cap_light_grad(int n, shli_real g[8], shli_real wgt, shli_real gw0, sh
     pm = pl;
     pl = pn;
     fl = fl + 1.0;
+  }
+#if SHLIGHT_SIMD_EVAL
+  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS) {
+    /* one fused AVX-512 pass evaluates Y, its gradient and applies the weights */
+    shli_sh_eval_grad_avx512(n, nx, ny, nz, 1.0f, bw, io_sh, io_grad);
+    return;
+  }
+#endif
+  shli_sh_eval_grad_unit(n, nx, ny, nz, 1.0f, io_sh, io_grad);
+  for (l = 0; l < n; ++l) {
+    for (m = -l; m <= l; ++m) {
+      i = l * (l + 1) + m;
+      y = io_sh[i];
+      io_sh[i] = bw[5 * l] * y;
+      io_grad[i][0] = bw[5 * l + 1] * io_grad[i][0] + bw[5 * l + 2] * y;
+      io_grad[i][1] = bw[5 * l + 1] * io_grad[i][1] + bw[5 * l + 3] * y;
+      io_grad[i][2] = bw[5 * l + 1] * io_grad[i][2] + bw[5 * l + 4] * y;
+    }
   }
 }
 
