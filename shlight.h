@@ -30181,6 +30181,8285 @@ static void shli_sh_batch_16(SHLI_V x, SHLI_V y, SHLI_V z, float *out, ptrdiff_t
   SHLI_VSTORE(out + 225 * stride, SHLI_VMUL(SHLI_VSET(-0.844250651f), ps));
 }
 
+static void shli_sh_batch2_1(const float *x, const float *y, const float *z, float *out,
+                             ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_VSTORE(out, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W, SHLI_VSET(0.282094792f));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_2(const float *x, const float *y, const float *z, float *out,
+                             ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V xfA;
+  SHLI_V xfB;
+  SHLI_VSTORE(out + 0 * stride, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W + 0 * stride, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(SHLI_VSET(0.488602512f), zA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(SHLI_VSET(0.488602512f), zB));
+  xfA = SHLI_VSET(-0.488602512f);
+  xfB = SHLI_VSET(-0.488602512f);
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(xfB, yB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_3(const float *x, const float *y, const float *z, float *out,
+                             ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V z2A;
+  SHLI_V z2B;
+  SHLI_V pcA;
+  SHLI_V pcB;
+  SHLI_V psA;
+  SHLI_V psB;
+  SHLI_V xfA;
+  SHLI_V xfB;
+  z2A = SHLI_VMUL(zA, zA);
+  z2B = SHLI_VMUL(zB, zB);
+  SHLI_VSTORE(out + 0 * stride, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W + 0 * stride, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(SHLI_VSET(0.488602512f), zA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(SHLI_VSET(0.488602512f), zB));
+  SHLI_VSTORE(out + 6 * stride, SHLI_VMADD(SHLI_VSET(0.946174696f), z2A, SHLI_VSET(-0.315391565f)));
+  SHLI_VSTORE(out + SHLI_W + 6 * stride,
+              SHLI_VMADD(SHLI_VSET(0.946174696f), z2B, SHLI_VSET(-0.315391565f)));
+  xfA = SHLI_VSET(-0.488602512f);
+  xfB = SHLI_VSET(-0.488602512f);
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(xfB, yB));
+  xfA = SHLI_VMUL(SHLI_VSET(-1.09254843f), zA);
+  xfB = SHLI_VMUL(SHLI_VSET(-1.09254843f), zB);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 7 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 5 * stride, SHLI_VMUL(xfB, yB));
+  pcA = SHLI_VNMADD(yA, yA, SHLI_VMUL(xA, xA));
+  pcB = SHLI_VNMADD(yB, yB, SHLI_VMUL(xB, xB));
+  psA = SHLI_VMUL(SHLI_VADD(xA, xA), yA);
+  psB = SHLI_VMUL(SHLI_VADD(xB, xB), yB);
+  xfA = SHLI_VSET(0.546274215f);
+  xfB = SHLI_VSET(0.546274215f);
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 8 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 4 * stride, SHLI_VMUL(xfB, psB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_4(const float *x, const float *y, const float *z, float *out,
+                             ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V z2A;
+  SHLI_V z2B;
+  SHLI_V pcA;
+  SHLI_V pcB;
+  SHLI_V psA;
+  SHLI_V psB;
+  SHLI_V qcA;
+  SHLI_V qcB;
+  SHLI_V xfA;
+  SHLI_V xfB;
+  z2A = SHLI_VMUL(zA, zA);
+  z2B = SHLI_VMUL(zB, zB);
+  SHLI_VSTORE(out + 0 * stride, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W + 0 * stride, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(SHLI_VSET(0.488602512f), zA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(SHLI_VSET(0.488602512f), zB));
+  SHLI_VSTORE(out + 6 * stride, SHLI_VMADD(SHLI_VSET(0.946174696f), z2A, SHLI_VSET(-0.315391565f)));
+  SHLI_VSTORE(out + SHLI_W + 6 * stride,
+              SHLI_VMADD(SHLI_VSET(0.946174696f), z2B, SHLI_VSET(-0.315391565f)));
+  SHLI_VSTORE(out + 12 * stride,
+              SHLI_VMUL(SHLI_VMADD(SHLI_VSET(1.86588166f), z2A, SHLI_VSET(-1.119529f)), zA));
+  SHLI_VSTORE(out + SHLI_W + 12 * stride,
+              SHLI_VMUL(SHLI_VMADD(SHLI_VSET(1.86588166f), z2B, SHLI_VSET(-1.119529f)), zB));
+  xfA = SHLI_VSET(-0.488602512f);
+  xfB = SHLI_VSET(-0.488602512f);
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(xfB, yB));
+  xfA = SHLI_VMUL(SHLI_VSET(-1.09254843f), zA);
+  xfB = SHLI_VMUL(SHLI_VSET(-1.09254843f), zB);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 7 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 5 * stride, SHLI_VMUL(xfB, yB));
+  xfA = SHLI_VMADD(SHLI_VSET(-2.285229f), z2A, SHLI_VSET(0.457045799f));
+  xfB = SHLI_VMADD(SHLI_VSET(-2.285229f), z2B, SHLI_VSET(0.457045799f));
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 13 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 11 * stride, SHLI_VMUL(xfB, yB));
+  pcA = SHLI_VNMADD(yA, yA, SHLI_VMUL(xA, xA));
+  pcB = SHLI_VNMADD(yB, yB, SHLI_VMUL(xB, xB));
+  psA = SHLI_VMUL(SHLI_VADD(xA, xA), yA);
+  psB = SHLI_VMUL(SHLI_VADD(xB, xB), yB);
+  xfA = SHLI_VSET(0.546274215f);
+  xfB = SHLI_VSET(0.546274215f);
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 8 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 4 * stride, SHLI_VMUL(xfB, psB));
+  xfA = SHLI_VMUL(SHLI_VSET(1.44530572f), zA);
+  xfB = SHLI_VMUL(SHLI_VSET(1.44530572f), zB);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 14 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 10 * stride, SHLI_VMUL(xfB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  xfA = SHLI_VSET(-0.59004359f);
+  xfB = SHLI_VSET(-0.59004359f);
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 15 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 9 * stride, SHLI_VMUL(xfB, psB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_5(const float *x, const float *y, const float *z, float *out,
+                             ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V z2A;
+  SHLI_V z2B;
+  SHLI_V pcA;
+  SHLI_V pcB;
+  SHLI_V psA;
+  SHLI_V psB;
+  SHLI_V qcA;
+  SHLI_V qcB;
+  SHLI_V xfA;
+  SHLI_V xfB;
+  z2A = SHLI_VMUL(zA, zA);
+  z2B = SHLI_VMUL(zB, zB);
+  SHLI_VSTORE(out + 0 * stride, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W + 0 * stride, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(SHLI_VSET(0.488602512f), zA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(SHLI_VSET(0.488602512f), zB));
+  SHLI_VSTORE(out + 6 * stride, SHLI_VMADD(SHLI_VSET(0.946174696f), z2A, SHLI_VSET(-0.315391565f)));
+  SHLI_VSTORE(out + SHLI_W + 6 * stride,
+              SHLI_VMADD(SHLI_VSET(0.946174696f), z2B, SHLI_VSET(-0.315391565f)));
+  SHLI_VSTORE(out + 12 * stride,
+              SHLI_VMUL(SHLI_VMADD(SHLI_VSET(1.86588166f), z2A, SHLI_VSET(-1.119529f)), zA));
+  SHLI_VSTORE(out + SHLI_W + 12 * stride,
+              SHLI_VMUL(SHLI_VMADD(SHLI_VSET(1.86588166f), z2B, SHLI_VSET(-1.119529f)), zB));
+  SHLI_VSTORE(out + 20 * stride,
+              SHLI_VMADD(SHLI_VMADD(SHLI_VSET(3.70249414f), z2A, SHLI_VSET(-3.17356641f)), z2A,
+                         SHLI_VSET(0.317356641f)));
+  SHLI_VSTORE(out + SHLI_W + 20 * stride,
+              SHLI_VMADD(SHLI_VMADD(SHLI_VSET(3.70249414f), z2B, SHLI_VSET(-3.17356641f)), z2B,
+                         SHLI_VSET(0.317356641f)));
+  xfA = SHLI_VSET(-0.488602512f);
+  xfB = SHLI_VSET(-0.488602512f);
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(xfB, yB));
+  xfA = SHLI_VMUL(SHLI_VSET(-1.09254843f), zA);
+  xfB = SHLI_VMUL(SHLI_VSET(-1.09254843f), zB);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 7 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 5 * stride, SHLI_VMUL(xfB, yB));
+  xfA = SHLI_VMADD(SHLI_VSET(-2.285229f), z2A, SHLI_VSET(0.457045799f));
+  xfB = SHLI_VMADD(SHLI_VSET(-2.285229f), z2B, SHLI_VSET(0.457045799f));
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 13 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 11 * stride, SHLI_VMUL(xfB, yB));
+  xfA = SHLI_VMUL(SHLI_VMADD(SHLI_VSET(-4.6833258f), z2A, SHLI_VSET(2.00713963f)), zA);
+  xfB = SHLI_VMUL(SHLI_VMADD(SHLI_VSET(-4.6833258f), z2B, SHLI_VSET(2.00713963f)), zB);
+  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 21 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 19 * stride, SHLI_VMUL(xfB, yB));
+  pcA = SHLI_VNMADD(yA, yA, SHLI_VMUL(xA, xA));
+  pcB = SHLI_VNMADD(yB, yB, SHLI_VMUL(xB, xB));
+  psA = SHLI_VMUL(SHLI_VADD(xA, xA), yA);
+  psB = SHLI_VMUL(SHLI_VADD(xB, xB), yB);
+  xfA = SHLI_VSET(0.546274215f);
+  xfB = SHLI_VSET(0.546274215f);
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 8 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 4 * stride, SHLI_VMUL(xfB, psB));
+  xfA = SHLI_VMUL(SHLI_VSET(1.44530572f), zA);
+  xfB = SHLI_VMUL(SHLI_VSET(1.44530572f), zB);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 14 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 10 * stride, SHLI_VMUL(xfB, psB));
+  xfA = SHLI_VMADD(SHLI_VSET(3.31161144f), z2A, SHLI_VSET(-0.473087348f));
+  xfB = SHLI_VMADD(SHLI_VSET(3.31161144f), z2B, SHLI_VSET(-0.473087348f));
+  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 22 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 18 * stride, SHLI_VMUL(xfB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  xfA = SHLI_VSET(-0.59004359f);
+  xfB = SHLI_VSET(-0.59004359f);
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 15 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 9 * stride, SHLI_VMUL(xfB, psB));
+  xfA = SHLI_VMUL(SHLI_VSET(-1.77013077f), zA);
+  xfB = SHLI_VMUL(SHLI_VSET(-1.77013077f), zB);
+  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 23 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 17 * stride, SHLI_VMUL(xfB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  xfA = SHLI_VSET(0.625835735f);
+  xfB = SHLI_VSET(0.625835735f);
+  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 24 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 16 * stride, SHLI_VMUL(xfB, psB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_6(const float *x, const float *y, const float *z, float *out,
+                             ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V z2A;
+  SHLI_V z2B;
+  SHLI_V pcA;
+  SHLI_V pcB;
+  SHLI_V psA;
+  SHLI_V psB;
+  SHLI_V qcA;
+  SHLI_V qcB;
+  SHLI_V xfA;
+  SHLI_V xfB;
+  z2A = SHLI_VMUL(zA, zA);
+  z2B = SHLI_VMUL(zB, zB);
+  SHLI_VSTORE(out + 0 * stride, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W + 0 * stride, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(SHLI_VSET(0.488602512f), zA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(SHLI_VSET(0.488602512f), zB));
+  SHLI_VSTORE(out + 6 * stride, SHLI_VMADD(SHLI_VSET(0.946174696f), z2A, SHLI_VSET(-0.315391565f)));
+  SHLI_VSTORE(out + SHLI_W + 6 * stride,
+              SHLI_VMADD(SHLI_VSET(0.946174696f), z2B, SHLI_VSET(-0.315391565f)));
+  SHLI_VSTORE(out + 12 * stride,
+              SHLI_VMUL(SHLI_VMADD(SHLI_VSET(1.86588166f), z2A, SHLI_VSET(-1.119529f)), zA));
+  SHLI_VSTORE(out + SHLI_W + 12 * stride,
+              SHLI_VMUL(SHLI_VMADD(SHLI_VSET(1.86588166f), z2B, SHLI_VSET(-1.119529f)), zB));
+  SHLI_VSTORE(out + 20 * stride,
+              SHLI_VMADD(SHLI_VMADD(SHLI_VSET(3.70249414f), z2A, SHLI_VSET(-3.17356641f)), z2A,
+                         SHLI_VSET(0.317356641f)));
+  SHLI_VSTORE(out + SHLI_W + 20 * stride,
+              SHLI_VMADD(SHLI_VMADD(SHLI_VSET(3.70249414f), z2B, SHLI_VSET(-3.17356641f)), z2B,
+                         SHLI_VSET(0.317356641f)));
+  SHLI_VSTORE(out + 30 * stride,
+              SHLI_VMUL(SHLI_VMADD(SHLI_VMADD(SHLI_VSET(7.36787031f), z2A, SHLI_VSET(-8.18652257f)),
+                                   z2A, SHLI_VSET(1.75425484f)),
+                        zA));
+  SHLI_VSTORE(out + SHLI_W + 30 * stride,
+              SHLI_VMUL(SHLI_VMADD(SHLI_VMADD(SHLI_VSET(7.36787031f), z2B, SHLI_VSET(-8.18652257f)),
+                                   z2B, SHLI_VSET(1.75425484f)),
+                        zB));
+  xfA = SHLI_VSET(-0.488602512f);
+  xfB = SHLI_VSET(-0.488602512f);
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(xfB, yB));
+  xfA = SHLI_VMUL(SHLI_VSET(-1.09254843f), zA);
+  xfB = SHLI_VMUL(SHLI_VSET(-1.09254843f), zB);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 7 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 5 * stride, SHLI_VMUL(xfB, yB));
+  xfA = SHLI_VMADD(SHLI_VSET(-2.285229f), z2A, SHLI_VSET(0.457045799f));
+  xfB = SHLI_VMADD(SHLI_VSET(-2.285229f), z2B, SHLI_VSET(0.457045799f));
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 13 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 11 * stride, SHLI_VMUL(xfB, yB));
+  xfA = SHLI_VMUL(SHLI_VMADD(SHLI_VSET(-4.6833258f), z2A, SHLI_VSET(2.00713963f)), zA);
+  xfB = SHLI_VMUL(SHLI_VMADD(SHLI_VSET(-4.6833258f), z2B, SHLI_VSET(2.00713963f)), zB);
+  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 21 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 19 * stride, SHLI_VMUL(xfB, yB));
+  xfA = SHLI_VMADD(SHLI_VMADD(SHLI_VSET(-9.51187968f), z2A, SHLI_VSET(6.34125312f)), z2A,
+                   SHLI_VSET(-0.452946651f));
+  xfB = SHLI_VMADD(SHLI_VMADD(SHLI_VSET(-9.51187968f), z2B, SHLI_VSET(6.34125312f)), z2B,
+                   SHLI_VSET(-0.452946651f));
+  SHLI_VSTORE(out + 31 * stride, SHLI_VMUL(xfA, xA));
+  SHLI_VSTORE(out + SHLI_W + 31 * stride, SHLI_VMUL(xfB, xB));
+  SHLI_VSTORE(out + 29 * stride, SHLI_VMUL(xfA, yA));
+  SHLI_VSTORE(out + SHLI_W + 29 * stride, SHLI_VMUL(xfB, yB));
+  pcA = SHLI_VNMADD(yA, yA, SHLI_VMUL(xA, xA));
+  pcB = SHLI_VNMADD(yB, yB, SHLI_VMUL(xB, xB));
+  psA = SHLI_VMUL(SHLI_VADD(xA, xA), yA);
+  psB = SHLI_VMUL(SHLI_VADD(xB, xB), yB);
+  xfA = SHLI_VSET(0.546274215f);
+  xfB = SHLI_VSET(0.546274215f);
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 8 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 4 * stride, SHLI_VMUL(xfB, psB));
+  xfA = SHLI_VMUL(SHLI_VSET(1.44530572f), zA);
+  xfB = SHLI_VMUL(SHLI_VSET(1.44530572f), zB);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 14 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 10 * stride, SHLI_VMUL(xfB, psB));
+  xfA = SHLI_VMADD(SHLI_VSET(3.31161144f), z2A, SHLI_VSET(-0.473087348f));
+  xfB = SHLI_VMADD(SHLI_VSET(3.31161144f), z2B, SHLI_VSET(-0.473087348f));
+  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 22 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 18 * stride, SHLI_VMUL(xfB, psB));
+  xfA = SHLI_VMUL(SHLI_VMADD(SHLI_VSET(7.19030518f), z2A, SHLI_VSET(-2.39676839f)), zA);
+  xfB = SHLI_VMUL(SHLI_VMADD(SHLI_VSET(7.19030518f), z2B, SHLI_VSET(-2.39676839f)), zB);
+  SHLI_VSTORE(out + 32 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 32 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 28 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 28 * stride, SHLI_VMUL(xfB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  xfA = SHLI_VSET(-0.59004359f);
+  xfB = SHLI_VSET(-0.59004359f);
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 15 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 9 * stride, SHLI_VMUL(xfB, psB));
+  xfA = SHLI_VMUL(SHLI_VSET(-1.77013077f), zA);
+  xfB = SHLI_VMUL(SHLI_VSET(-1.77013077f), zB);
+  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 23 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 17 * stride, SHLI_VMUL(xfB, psB));
+  xfA = SHLI_VMADD(SHLI_VSET(-4.40314469f), z2A, SHLI_VSET(0.489238299f));
+  xfB = SHLI_VMADD(SHLI_VSET(-4.40314469f), z2B, SHLI_VSET(0.489238299f));
+  SHLI_VSTORE(out + 33 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 33 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 27 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 27 * stride, SHLI_VMUL(xfB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  xfA = SHLI_VSET(0.625835735f);
+  xfB = SHLI_VSET(0.625835735f);
+  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 24 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 16 * stride, SHLI_VMUL(xfB, psB));
+  xfA = SHLI_VMUL(SHLI_VSET(2.07566231f), zA);
+  xfB = SHLI_VMUL(SHLI_VSET(2.07566231f), zB);
+  SHLI_VSTORE(out + 34 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 34 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 26 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 26 * stride, SHLI_VMUL(xfB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  xfA = SHLI_VSET(-0.656382057f);
+  xfB = SHLI_VSET(-0.656382057f);
+  SHLI_VSTORE(out + 35 * stride, SHLI_VMUL(xfA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 35 * stride, SHLI_VMUL(xfB, pcB));
+  SHLI_VSTORE(out + 25 * stride, SHLI_VMUL(xfA, psA));
+  SHLI_VSTORE(out + SHLI_W + 25 * stride, SHLI_VMUL(xfB, psB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_7(const float *x, const float *y, const float *z, float *out,
+                             ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V s2A = SHLI_VMADD(xA, xA, SHLI_VMUL(yA, yA));
+  SHLI_V s2B = SHLI_VMADD(xB, xB, SHLI_VMUL(yB, yB));
+  SHLI_V irA = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zA, zA, s2A)));
+  SHLI_V irB = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zB, zB, s2B)));
+  SHLI_V azA = SHLI_VMUL(SHLI_VABS(zA), irA);
+  SHLI_V azB = SHLI_VMUL(SHLI_VABS(zB), irB);
+  SHLI_V tA = SHLI_VDIV(SHLI_VMUL(s2A, SHLI_VMUL(irA, irA)), SHLI_VADD(SHLI_VSET(1.0f), azA));
+  SHLI_V tB = SHLI_VDIV(SHLI_VMUL(s2B, SHLI_VMUL(irB, irB)), SHLI_VADD(SHLI_VSET(1.0f), azB));
+  SHLI_V sgA = SHLI_VSIGN1(zA);
+  SHLI_V sgB = SHLI_VSIGN1(zB);
+  SHLI_V pcA;
+  SHLI_V pcB;
+  SHLI_V psA;
+  SHLI_V psB;
+  SHLI_V qcA;
+  SHLI_V qcB;
+  SHLI_V gcA;
+  SHLI_V gcB;
+  SHLI_V gsA;
+  SHLI_V gsB;
+  SHLI_V xaA;
+  SHLI_V xaB;
+  SHLI_V xbA;
+  SHLI_V xbB;
+  SHLI_V ddA;
+  SHLI_V ddB;
+  xA = SHLI_VMUL(xA, irA);
+  xB = SHLI_VMUL(xB, irB);
+  yA = SHLI_VMUL(yA, irA);
+  yB = SHLI_VMUL(yB, irB);
+  pcA = xA;
+  pcB = xB;
+  psA = yA;
+  psB = yB;
+  SHLI_VSTORE(out, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W, SHLI_VSET(0.282094792f));
+  ddA = SHLI_VMUL(SHLI_VSET(-0.488602512f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-0.488602512f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(0.488602512f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(0.488602512f), ddB);
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.29099445f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.29099445f), xaB, ddB);
+  SHLI_VSTORE(out + 6 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 6 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.18321596f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.18321596f), xbB, ddB);
+  SHLI_VSTORE(out + 12 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 12 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.13389342f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.13389342f), xaB, ddB);
+  SHLI_VSTORE(out + 20 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 20 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.1055416f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.1055416f), xbB, ddB);
+  SHLI_VSTORE(out + 30 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 30 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.08711461f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.08711461f), xaB, ddB);
+  SHLI_VSTORE(out + 42 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 42 * stride, xbB);
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.09254843f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.09254843f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.09254843f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.09254843f), ddB);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 7 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 5 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.67332005f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.67332005f), xaB, ddB);
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 13 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 11 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.46385011f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.46385011f), xbB, ddB);
+  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 21 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 19 * stride, SHLI_VMUL(xaB, gsB));
+  ddA =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tA, xaA), SHLI_VMUL(SHLI_VSET(0.6770032f), ddA));
+  ddB =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tB, xaB), SHLI_VMUL(SHLI_VSET(0.6770032f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.3540064f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.3540064f), xaB, ddB);
+  SHLI_VSTORE(out + 31 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 31 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 29 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 29 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.28629136f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.28629136f), xbB, ddB);
+  SHLI_VSTORE(out + 43 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 43 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 41 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 41 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcB));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psA));
+  SHLI_VSTORE(out + SHLI_W + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-1.44530572f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-1.44530572f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(1.44530572f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(1.44530572f), ddB);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 14 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 10 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.96396101f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.96396101f), xaB, ddB);
+  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 22 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 18 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.68874268f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.68874268f), xbB, ddB);
+  SHLI_VSTORE(out + 32 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 32 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 28 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 28 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.53741223f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.53741223f), xaB, ddB);
+  SHLI_VSTORE(out + 44 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 44 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 40 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 40 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcB));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psA));
+  SHLI_VSTORE(out + SHLI_W + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.77013077f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.77013077f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.77013077f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.77013077f), ddB);
+  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 23 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 17 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.21108319f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.21108319f), xaB, ddB);
+  SHLI_VSTORE(out + 33 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 33 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 27 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 27 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.88293774f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.88293774f), xbB, ddB);
+  SHLI_VSTORE(out + 45 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 45 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 39 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 39 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcB));
+  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psA));
+  SHLI_VSTORE(out + SHLI_W + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.07566231f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.07566231f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.07566231f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.07566231f), ddB);
+  SHLI_VSTORE(out + 34 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 34 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 26 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 26 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.43086217f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.43086217f), xaB, ddB);
+  SHLI_VSTORE(out + 46 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 46 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 38 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 38 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcB));
+  SHLI_VSTORE(out + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psA));
+  SHLI_VSTORE(out + SHLI_W + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.36661916f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.36661916f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.36661916f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.36661916f), ddB);
+  SHLI_VSTORE(out + 47 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 47 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 37 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 37 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcB));
+  SHLI_VSTORE(out + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psA));
+  SHLI_VSTORE(out + SHLI_W + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_8(const float *x, const float *y, const float *z, float *out,
+                             ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V s2A = SHLI_VMADD(xA, xA, SHLI_VMUL(yA, yA));
+  SHLI_V s2B = SHLI_VMADD(xB, xB, SHLI_VMUL(yB, yB));
+  SHLI_V irA = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zA, zA, s2A)));
+  SHLI_V irB = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zB, zB, s2B)));
+  SHLI_V azA = SHLI_VMUL(SHLI_VABS(zA), irA);
+  SHLI_V azB = SHLI_VMUL(SHLI_VABS(zB), irB);
+  SHLI_V tA = SHLI_VDIV(SHLI_VMUL(s2A, SHLI_VMUL(irA, irA)), SHLI_VADD(SHLI_VSET(1.0f), azA));
+  SHLI_V tB = SHLI_VDIV(SHLI_VMUL(s2B, SHLI_VMUL(irB, irB)), SHLI_VADD(SHLI_VSET(1.0f), azB));
+  SHLI_V sgA = SHLI_VSIGN1(zA);
+  SHLI_V sgB = SHLI_VSIGN1(zB);
+  SHLI_V pcA;
+  SHLI_V pcB;
+  SHLI_V psA;
+  SHLI_V psB;
+  SHLI_V qcA;
+  SHLI_V qcB;
+  SHLI_V gcA;
+  SHLI_V gcB;
+  SHLI_V gsA;
+  SHLI_V gsB;
+  SHLI_V xaA;
+  SHLI_V xaB;
+  SHLI_V xbA;
+  SHLI_V xbB;
+  SHLI_V ddA;
+  SHLI_V ddB;
+  xA = SHLI_VMUL(xA, irA);
+  xB = SHLI_VMUL(xB, irB);
+  yA = SHLI_VMUL(yA, irA);
+  yB = SHLI_VMUL(yB, irB);
+  pcA = xA;
+  pcB = xB;
+  psA = yA;
+  psB = yB;
+  SHLI_VSTORE(out, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W, SHLI_VSET(0.282094792f));
+  ddA = SHLI_VMUL(SHLI_VSET(-0.488602512f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-0.488602512f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(0.488602512f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(0.488602512f), ddB);
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.29099445f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.29099445f), xaB, ddB);
+  SHLI_VSTORE(out + 6 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 6 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.18321596f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.18321596f), xbB, ddB);
+  SHLI_VSTORE(out + 12 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 12 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.13389342f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.13389342f), xaB, ddB);
+  SHLI_VSTORE(out + 20 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 20 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.1055416f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.1055416f), xbB, ddB);
+  SHLI_VSTORE(out + 30 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 30 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.08711461f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.08711461f), xaB, ddB);
+  SHLI_VSTORE(out + 42 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 42 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.07417231f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.07417231f), xbB, ddB);
+  SHLI_VSTORE(out + 56 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 56 * stride, SHLI_VMUL(sgB, xaB));
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.09254843f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.09254843f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.09254843f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.09254843f), ddB);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 7 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 5 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.67332005f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.67332005f), xaB, ddB);
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 13 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 11 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.46385011f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.46385011f), xbB, ddB);
+  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 21 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 19 * stride, SHLI_VMUL(xaB, gsB));
+  ddA =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tA, xaA), SHLI_VMUL(SHLI_VSET(0.6770032f), ddA));
+  ddB =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tB, xaB), SHLI_VMUL(SHLI_VSET(0.6770032f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.3540064f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.3540064f), xaB, ddB);
+  SHLI_VSTORE(out + 31 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 31 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 29 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 29 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.28629136f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.28629136f), xbB, ddB);
+  SHLI_VSTORE(out + 43 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 43 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 41 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 41 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.24034735f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.24034735f), xaB, ddB);
+  SHLI_VSTORE(out + 57 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 57 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 55 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 55 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcB));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psA));
+  SHLI_VSTORE(out + SHLI_W + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-1.44530572f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-1.44530572f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(1.44530572f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(1.44530572f), ddB);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 14 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 10 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.96396101f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.96396101f), xaB, ddB);
+  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 22 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 18 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.68874268f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.68874268f), xbB, ddB);
+  SHLI_VSTORE(out + 32 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 32 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 28 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 28 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.53741223f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.53741223f), xaB, ddB);
+  SHLI_VSTORE(out + 44 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 44 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 40 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 40 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.44115338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.44115338f), xbB, ddB);
+  SHLI_VSTORE(out + 58 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 58 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 54 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 54 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcB));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psA));
+  SHLI_VSTORE(out + SHLI_W + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.77013077f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.77013077f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.77013077f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.77013077f), ddB);
+  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 23 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 17 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.21108319f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.21108319f), xaB, ddB);
+  SHLI_VSTORE(out + 33 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 33 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 27 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 27 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.88293774f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.88293774f), xbB, ddB);
+  SHLI_VSTORE(out + 45 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 45 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 39 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 39 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.69841555f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.69841555f), xaB, ddB);
+  SHLI_VSTORE(out + 59 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 59 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 53 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 53 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcB));
+  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psA));
+  SHLI_VSTORE(out + SHLI_W + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.07566231f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.07566231f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.07566231f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.07566231f), ddB);
+  SHLI_VSTORE(out + 34 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 34 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 26 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 26 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.43086217f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.43086217f), xaB, ddB);
+  SHLI_VSTORE(out + 46 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 46 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 38 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 38 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.05688338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.05688338f), xbB, ddB);
+  SHLI_VSTORE(out + 60 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 60 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 52 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 52 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcB));
+  SHLI_VSTORE(out + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psA));
+  SHLI_VSTORE(out + SHLI_W + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.36661916f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.36661916f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.36661916f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.36661916f), ddB);
+  SHLI_VSTORE(out + 47 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 47 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 37 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 37 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.63117406f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.63117406f), xaB, ddB);
+  SHLI_VSTORE(out + 61 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 61 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 51 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 51 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcB));
+  SHLI_VSTORE(out + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psA));
+  SHLI_VSTORE(out + SHLI_W + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.64596066f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.64596066f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.64596066f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.64596066f), ddB);
+  SHLI_VSTORE(out + 62 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 62 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 50 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 50 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcB));
+  SHLI_VSTORE(out + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psA));
+  SHLI_VSTORE(out + SHLI_W + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_9(const float *x, const float *y, const float *z, float *out,
+                             ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V s2A = SHLI_VMADD(xA, xA, SHLI_VMUL(yA, yA));
+  SHLI_V s2B = SHLI_VMADD(xB, xB, SHLI_VMUL(yB, yB));
+  SHLI_V irA = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zA, zA, s2A)));
+  SHLI_V irB = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zB, zB, s2B)));
+  SHLI_V azA = SHLI_VMUL(SHLI_VABS(zA), irA);
+  SHLI_V azB = SHLI_VMUL(SHLI_VABS(zB), irB);
+  SHLI_V tA = SHLI_VDIV(SHLI_VMUL(s2A, SHLI_VMUL(irA, irA)), SHLI_VADD(SHLI_VSET(1.0f), azA));
+  SHLI_V tB = SHLI_VDIV(SHLI_VMUL(s2B, SHLI_VMUL(irB, irB)), SHLI_VADD(SHLI_VSET(1.0f), azB));
+  SHLI_V sgA = SHLI_VSIGN1(zA);
+  SHLI_V sgB = SHLI_VSIGN1(zB);
+  SHLI_V pcA;
+  SHLI_V pcB;
+  SHLI_V psA;
+  SHLI_V psB;
+  SHLI_V qcA;
+  SHLI_V qcB;
+  SHLI_V gcA;
+  SHLI_V gcB;
+  SHLI_V gsA;
+  SHLI_V gsB;
+  SHLI_V xaA;
+  SHLI_V xaB;
+  SHLI_V xbA;
+  SHLI_V xbB;
+  SHLI_V ddA;
+  SHLI_V ddB;
+  xA = SHLI_VMUL(xA, irA);
+  xB = SHLI_VMUL(xB, irB);
+  yA = SHLI_VMUL(yA, irA);
+  yB = SHLI_VMUL(yB, irB);
+  pcA = xA;
+  pcB = xB;
+  psA = yA;
+  psB = yB;
+  SHLI_VSTORE(out, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W, SHLI_VSET(0.282094792f));
+  ddA = SHLI_VMUL(SHLI_VSET(-0.488602512f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-0.488602512f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(0.488602512f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(0.488602512f), ddB);
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.29099445f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.29099445f), xaB, ddB);
+  SHLI_VSTORE(out + 6 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 6 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.18321596f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.18321596f), xbB, ddB);
+  SHLI_VSTORE(out + 12 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 12 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.13389342f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.13389342f), xaB, ddB);
+  SHLI_VSTORE(out + 20 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 20 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.1055416f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.1055416f), xbB, ddB);
+  SHLI_VSTORE(out + 30 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 30 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.08711461f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.08711461f), xaB, ddB);
+  SHLI_VSTORE(out + 42 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 42 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.07417231f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.07417231f), xbB, ddB);
+  SHLI_VSTORE(out + 56 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 56 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.06458129f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.06458129f), xaB, ddB);
+  SHLI_VSTORE(out + 72 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 72 * stride, xbB);
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.09254843f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.09254843f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.09254843f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.09254843f), ddB);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 7 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 5 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.67332005f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.67332005f), xaB, ddB);
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 13 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 11 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.46385011f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.46385011f), xbB, ddB);
+  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 21 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 19 * stride, SHLI_VMUL(xaB, gsB));
+  ddA =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tA, xaA), SHLI_VMUL(SHLI_VSET(0.6770032f), ddA));
+  ddB =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tB, xaB), SHLI_VMUL(SHLI_VSET(0.6770032f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.3540064f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.3540064f), xaB, ddB);
+  SHLI_VSTORE(out + 31 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 31 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 29 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 29 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.28629136f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.28629136f), xbB, ddB);
+  SHLI_VSTORE(out + 43 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 43 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 41 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 41 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.24034735f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.24034735f), xaB, ddB);
+  SHLI_VSTORE(out + 57 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 57 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 55 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 55 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.20712172f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.20712172f), xbB, ddB);
+  SHLI_VSTORE(out + 73 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 73 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 71 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 71 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcB));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psA));
+  SHLI_VSTORE(out + SHLI_W + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-1.44530572f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-1.44530572f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(1.44530572f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(1.44530572f), ddB);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 14 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 10 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.96396101f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.96396101f), xaB, ddB);
+  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 22 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 18 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.68874268f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.68874268f), xbB, ddB);
+  SHLI_VSTORE(out + 32 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 32 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 28 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 28 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.53741223f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.53741223f), xaB, ddB);
+  SHLI_VSTORE(out + 44 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 44 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 40 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 40 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.44115338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.44115338f), xbB, ddB);
+  SHLI_VSTORE(out + 58 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 58 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 54 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 54 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.37436854f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.37436854f), xaB, ddB);
+  SHLI_VSTORE(out + 74 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 74 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 70 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 70 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcB));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psA));
+  SHLI_VSTORE(out + SHLI_W + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.77013077f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.77013077f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.77013077f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.77013077f), ddB);
+  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 23 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 17 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.21108319f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.21108319f), xaB, ddB);
+  SHLI_VSTORE(out + 33 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 33 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 27 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 27 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.88293774f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.88293774f), xbB, ddB);
+  SHLI_VSTORE(out + 45 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 45 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 39 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 39 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.69841555f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.69841555f), xaB, ddB);
+  SHLI_VSTORE(out + 59 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 59 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 53 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 53 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.57902924f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.57902924f), xbB, ddB);
+  SHLI_VSTORE(out + 75 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 75 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 69 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 69 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcB));
+  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psA));
+  SHLI_VSTORE(out + SHLI_W + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.07566231f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.07566231f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.07566231f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.07566231f), ddB);
+  SHLI_VSTORE(out + 34 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 34 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 26 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 26 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.43086217f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.43086217f), xaB, ddB);
+  SHLI_VSTORE(out + 46 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 46 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 38 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 38 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.05688338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.05688338f), xbB, ddB);
+  SHLI_VSTORE(out + 60 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 60 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 52 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 52 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.84390889f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.84390889f), xaB, ddB);
+  SHLI_VSTORE(out + 76 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 76 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 68 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 68 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcB));
+  SHLI_VSTORE(out + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psA));
+  SHLI_VSTORE(out + SHLI_W + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.36661916f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.36661916f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.36661916f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.36661916f), ddB);
+  SHLI_VSTORE(out + 47 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 47 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 37 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 37 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.63117406f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.63117406f), xaB, ddB);
+  SHLI_VSTORE(out + 61 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 61 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 51 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 51 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.21610269f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.21610269f), xbB, ddB);
+  SHLI_VSTORE(out + 77 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 77 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 67 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 67 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcB));
+  SHLI_VSTORE(out + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psA));
+  SHLI_VSTORE(out + SHLI_W + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.64596066f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.64596066f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.64596066f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.64596066f), ddB);
+  SHLI_VSTORE(out + 62 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 62 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 50 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 50 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.81661736f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.81661736f), xaB, ddB);
+  SHLI_VSTORE(out + 78 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 78 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 66 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 66 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcB));
+  SHLI_VSTORE(out + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psA));
+  SHLI_VSTORE(out + SHLI_W + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.91570664f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.91570664f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.91570664f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.91570664f), ddB);
+  SHLI_VSTORE(out + 79 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 79 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 65 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 65 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcB));
+  SHLI_VSTORE(out + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psA));
+  SHLI_VSTORE(out + SHLI_W + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_10(const float *x, const float *y, const float *z, float *out,
+                              ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V s2A = SHLI_VMADD(xA, xA, SHLI_VMUL(yA, yA));
+  SHLI_V s2B = SHLI_VMADD(xB, xB, SHLI_VMUL(yB, yB));
+  SHLI_V irA = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zA, zA, s2A)));
+  SHLI_V irB = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zB, zB, s2B)));
+  SHLI_V azA = SHLI_VMUL(SHLI_VABS(zA), irA);
+  SHLI_V azB = SHLI_VMUL(SHLI_VABS(zB), irB);
+  SHLI_V tA = SHLI_VDIV(SHLI_VMUL(s2A, SHLI_VMUL(irA, irA)), SHLI_VADD(SHLI_VSET(1.0f), azA));
+  SHLI_V tB = SHLI_VDIV(SHLI_VMUL(s2B, SHLI_VMUL(irB, irB)), SHLI_VADD(SHLI_VSET(1.0f), azB));
+  SHLI_V sgA = SHLI_VSIGN1(zA);
+  SHLI_V sgB = SHLI_VSIGN1(zB);
+  SHLI_V pcA;
+  SHLI_V pcB;
+  SHLI_V psA;
+  SHLI_V psB;
+  SHLI_V qcA;
+  SHLI_V qcB;
+  SHLI_V gcA;
+  SHLI_V gcB;
+  SHLI_V gsA;
+  SHLI_V gsB;
+  SHLI_V xaA;
+  SHLI_V xaB;
+  SHLI_V xbA;
+  SHLI_V xbB;
+  SHLI_V ddA;
+  SHLI_V ddB;
+  xA = SHLI_VMUL(xA, irA);
+  xB = SHLI_VMUL(xB, irB);
+  yA = SHLI_VMUL(yA, irA);
+  yB = SHLI_VMUL(yB, irB);
+  pcA = xA;
+  pcB = xB;
+  psA = yA;
+  psB = yB;
+  SHLI_VSTORE(out, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W, SHLI_VSET(0.282094792f));
+  ddA = SHLI_VMUL(SHLI_VSET(-0.488602512f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-0.488602512f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(0.488602512f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(0.488602512f), ddB);
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.29099445f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.29099445f), xaB, ddB);
+  SHLI_VSTORE(out + 6 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 6 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.18321596f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.18321596f), xbB, ddB);
+  SHLI_VSTORE(out + 12 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 12 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.13389342f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.13389342f), xaB, ddB);
+  SHLI_VSTORE(out + 20 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 20 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.1055416f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.1055416f), xbB, ddB);
+  SHLI_VSTORE(out + 30 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 30 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.08711461f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.08711461f), xaB, ddB);
+  SHLI_VSTORE(out + 42 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 42 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.07417231f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.07417231f), xbB, ddB);
+  SHLI_VSTORE(out + 56 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 56 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.06458129f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.06458129f), xaB, ddB);
+  SHLI_VSTORE(out + 72 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 72 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.9969112f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.939722915f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.9969112f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.939722915f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.05718828f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.05718828f), xbB, ddB);
+  SHLI_VSTORE(out + 90 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 90 * stride, SHLI_VMUL(sgB, xaB));
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.09254843f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.09254843f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.09254843f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.09254843f), ddB);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 7 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 5 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.67332005f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.67332005f), xaB, ddB);
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 13 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 11 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.46385011f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.46385011f), xbB, ddB);
+  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 21 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 19 * stride, SHLI_VMUL(xaB, gsB));
+  ddA =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tA, xaA), SHLI_VMUL(SHLI_VSET(0.6770032f), ddA));
+  ddB =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tB, xaB), SHLI_VMUL(SHLI_VSET(0.6770032f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.3540064f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.3540064f), xaB, ddB);
+  SHLI_VSTORE(out + 31 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 31 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 29 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 29 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.28629136f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.28629136f), xbB, ddB);
+  SHLI_VSTORE(out + 43 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 43 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 41 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 41 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.24034735f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.24034735f), xaB, ddB);
+  SHLI_VSTORE(out + 57 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 57 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 55 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 55 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.20712172f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.20712172f), xbB, ddB);
+  SHLI_VSTORE(out + 73 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 73 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 71 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 71 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00935313f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.8273807f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00935313f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.8273807f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.18197243f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.18197243f), xaB, ddB);
+  SHLI_VSTORE(out + 91 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 91 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 89 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 89 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcB));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psA));
+  SHLI_VSTORE(out + SHLI_W + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-1.44530572f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-1.44530572f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(1.44530572f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(1.44530572f), ddB);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 14 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 10 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.96396101f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.96396101f), xaB, ddB);
+  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 22 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 18 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.68874268f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.68874268f), xbB, ddB);
+  SHLI_VSTORE(out + 32 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 32 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 28 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 28 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.53741223f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.53741223f), xaB, ddB);
+  SHLI_VSTORE(out + 44 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 44 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 40 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 40 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.44115338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.44115338f), xbB, ddB);
+  SHLI_VSTORE(out + 58 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 58 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 54 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 54 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.37436854f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.37436854f), xaB, ddB);
+  SHLI_VSTORE(out + 74 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 74 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 70 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 70 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04812236f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.722866715f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04812236f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.722866715f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.32525564f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.32525564f), xbB, ddB);
+  SHLI_VSTORE(out + 92 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 92 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 88 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 88 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcB));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psA));
+  SHLI_VSTORE(out + SHLI_W + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.77013077f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.77013077f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.77013077f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.77013077f), ddB);
+  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 23 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 17 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.21108319f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.21108319f), xaB, ddB);
+  SHLI_VSTORE(out + 33 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 33 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 27 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 27 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.88293774f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.88293774f), xbB, ddB);
+  SHLI_VSTORE(out + 45 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 45 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 39 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 39 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.69841555f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.69841555f), xaB, ddB);
+  SHLI_VSTORE(out + 59 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 59 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 53 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 53 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.57902924f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.57902924f), xbB, ddB);
+  SHLI_VSTORE(out + 75 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 75 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 69 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 69 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11804417f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.622954168f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11804417f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.622954168f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.49509f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.49509f), xaB, ddB);
+  SHLI_VSTORE(out + 93 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 93 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 87 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 87 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcB));
+  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psA));
+  SHLI_VSTORE(out + SHLI_W + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.07566231f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.07566231f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.07566231f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.07566231f), ddB);
+  SHLI_VSTORE(out + 34 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 34 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 26 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 26 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.43086217f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.43086217f), xaB, ddB);
+  SHLI_VSTORE(out + 46 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 46 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 38 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 38 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.05688338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.05688338f), xbB, ddB);
+  SHLI_VSTORE(out + 60 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 60 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 52 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 52 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.84390889f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.84390889f), xaB, ddB);
+  SHLI_VSTORE(out + 76 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 76 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 68 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 68 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.22917715f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.524512271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.22917715f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.524512271f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.70466488f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.70466488f), xbB, ddB);
+  SHLI_VSTORE(out + 94 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 94 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 86 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 86 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcB));
+  SHLI_VSTORE(out + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psA));
+  SHLI_VSTORE(out + SHLI_W + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.36661916f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.36661916f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.36661916f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.36661916f), ddB);
+  SHLI_VSTORE(out + 47 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 47 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 37 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 37 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.63117406f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.63117406f), xaB, ddB);
+  SHLI_VSTORE(out + 61 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 61 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 51 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 51 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.21610269f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.21610269f), xbB, ddB);
+  SHLI_VSTORE(out + 77 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 77 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 67 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 67 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.40163635f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.423818179f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.40163635f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.423818179f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.97781817f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.97781817f), xaB, ddB);
+  SHLI_VSTORE(out + 95 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 95 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 85 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 85 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcB));
+  SHLI_VSTORE(out + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psA));
+  SHLI_VSTORE(out + SHLI_W + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.64596066f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.64596066f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.64596066f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.64596066f), ddB);
+  SHLI_VSTORE(out + 62 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 62 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 50 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 50 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.81661736f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.81661736f), xaB, ddB);
+  SHLI_VSTORE(out + 78 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 78 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 66 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 66 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67913751f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.315192648f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67913751f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.315192648f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.36394486f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.36394486f), xbB, ddB);
+  SHLI_VSTORE(out + 96 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 96 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 84 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 84 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcB));
+  SHLI_VSTORE(out + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psA));
+  SHLI_VSTORE(out + SHLI_W + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.91570664f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.91570664f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.91570664f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.91570664f), ddB);
+  SHLI_VSTORE(out + 79 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 79 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 65 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 65 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.17706626f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.18688625f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.17706626f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.18688625f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.99018001f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.99018001f), xaB, ddB);
+  SHLI_VSTORE(out + 97 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 97 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 83 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 83 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcB));
+  SHLI_VSTORE(out + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psA));
+  SHLI_VSTORE(out + SHLI_W + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-3.17731765f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-3.17731765f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(3.17731765f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(3.17731765f), ddB);
+  SHLI_VSTORE(out + 98 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 98 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 82 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 82 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 99 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 99 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), pcB));
+  SHLI_VSTORE(out + 81 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), psA));
+  SHLI_VSTORE(out + SHLI_W + 81 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), psB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_11(const float *x, const float *y, const float *z, float *out,
+                              ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V s2A = SHLI_VMADD(xA, xA, SHLI_VMUL(yA, yA));
+  SHLI_V s2B = SHLI_VMADD(xB, xB, SHLI_VMUL(yB, yB));
+  SHLI_V irA = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zA, zA, s2A)));
+  SHLI_V irB = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zB, zB, s2B)));
+  SHLI_V azA = SHLI_VMUL(SHLI_VABS(zA), irA);
+  SHLI_V azB = SHLI_VMUL(SHLI_VABS(zB), irB);
+  SHLI_V tA = SHLI_VDIV(SHLI_VMUL(s2A, SHLI_VMUL(irA, irA)), SHLI_VADD(SHLI_VSET(1.0f), azA));
+  SHLI_V tB = SHLI_VDIV(SHLI_VMUL(s2B, SHLI_VMUL(irB, irB)), SHLI_VADD(SHLI_VSET(1.0f), azB));
+  SHLI_V sgA = SHLI_VSIGN1(zA);
+  SHLI_V sgB = SHLI_VSIGN1(zB);
+  SHLI_V pcA;
+  SHLI_V pcB;
+  SHLI_V psA;
+  SHLI_V psB;
+  SHLI_V qcA;
+  SHLI_V qcB;
+  SHLI_V gcA;
+  SHLI_V gcB;
+  SHLI_V gsA;
+  SHLI_V gsB;
+  SHLI_V xaA;
+  SHLI_V xaB;
+  SHLI_V xbA;
+  SHLI_V xbB;
+  SHLI_V ddA;
+  SHLI_V ddB;
+  xA = SHLI_VMUL(xA, irA);
+  xB = SHLI_VMUL(xB, irB);
+  yA = SHLI_VMUL(yA, irA);
+  yB = SHLI_VMUL(yB, irB);
+  pcA = xA;
+  pcB = xB;
+  psA = yA;
+  psB = yB;
+  SHLI_VSTORE(out, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W, SHLI_VSET(0.282094792f));
+  ddA = SHLI_VMUL(SHLI_VSET(-0.488602512f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-0.488602512f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(0.488602512f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(0.488602512f), ddB);
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.29099445f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.29099445f), xaB, ddB);
+  SHLI_VSTORE(out + 6 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 6 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.18321596f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.18321596f), xbB, ddB);
+  SHLI_VSTORE(out + 12 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 12 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.13389342f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.13389342f), xaB, ddB);
+  SHLI_VSTORE(out + 20 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 20 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.1055416f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.1055416f), xbB, ddB);
+  SHLI_VSTORE(out + 30 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 30 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.08711461f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.08711461f), xaB, ddB);
+  SHLI_VSTORE(out + 42 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 42 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.07417231f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.07417231f), xbB, ddB);
+  SHLI_VSTORE(out + 56 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 56 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.06458129f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.06458129f), xaB, ddB);
+  SHLI_VSTORE(out + 72 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 72 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.9969112f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.939722915f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.9969112f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.939722915f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.05718828f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.05718828f), xbB, ddB);
+  SHLI_VSTORE(out + 90 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 90 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99749844f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.946183469f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99749844f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.946183469f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.05131497f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.05131497f), xaB, ddB);
+  SHLI_VSTORE(out + 110 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 110 * stride, xbB);
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.09254843f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.09254843f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.09254843f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.09254843f), ddB);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 7 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 5 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.67332005f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.67332005f), xaB, ddB);
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 13 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 11 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.46385011f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.46385011f), xbB, ddB);
+  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 21 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 19 * stride, SHLI_VMUL(xaB, gsB));
+  ddA =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tA, xaA), SHLI_VMUL(SHLI_VSET(0.6770032f), ddA));
+  ddB =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tB, xaB), SHLI_VMUL(SHLI_VSET(0.6770032f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.3540064f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.3540064f), xaB, ddB);
+  SHLI_VSTORE(out + 31 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 31 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 29 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 29 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.28629136f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.28629136f), xbB, ddB);
+  SHLI_VSTORE(out + 43 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 43 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 41 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 41 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.24034735f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.24034735f), xaB, ddB);
+  SHLI_VSTORE(out + 57 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 57 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 55 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 55 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.20712172f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.20712172f), xbB, ddB);
+  SHLI_VSTORE(out + 73 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 73 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 71 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 71 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00935313f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.8273807f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00935313f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.8273807f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.18197243f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.18197243f), xaB, ddB);
+  SHLI_VSTORE(out + 91 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 91 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 89 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 89 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00756146f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.845289037f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00756146f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.845289037f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.16227243f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.16227243f), xbB, ddB);
+  SHLI_VSTORE(out + 111 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 111 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 109 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 109 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcB));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psA));
+  SHLI_VSTORE(out + SHLI_W + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-1.44530572f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-1.44530572f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(1.44530572f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(1.44530572f), ddB);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 14 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 10 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.96396101f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.96396101f), xaB, ddB);
+  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 22 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 18 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.68874268f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.68874268f), xbB, ddB);
+  SHLI_VSTORE(out + 32 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 32 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 28 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 28 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.53741223f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.53741223f), xaB, ddB);
+  SHLI_VSTORE(out + 44 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 44 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 40 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 40 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.44115338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.44115338f), xbB, ddB);
+  SHLI_VSTORE(out + 58 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 58 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 54 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 54 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.37436854f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.37436854f), xaB, ddB);
+  SHLI_VSTORE(out + 74 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 74 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 70 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 70 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04812236f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.722866715f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04812236f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.722866715f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.32525564f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.32525564f), xbB, ddB);
+  SHLI_VSTORE(out + 92 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 92 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 88 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 88 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0386883f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.751095691f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0386883f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.751095691f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.28759261f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.28759261f), xaB, ddB);
+  SHLI_VSTORE(out + 112 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 112 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 108 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 108 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcB));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psA));
+  SHLI_VSTORE(out + SHLI_W + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.77013077f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.77013077f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.77013077f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.77013077f), ddB);
+  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 23 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 17 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.21108319f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.21108319f), xaB, ddB);
+  SHLI_VSTORE(out + 33 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 33 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 27 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 27 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.88293774f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.88293774f), xbB, ddB);
+  SHLI_VSTORE(out + 45 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 45 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 39 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 39 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.69841555f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.69841555f), xaB, ddB);
+  SHLI_VSTORE(out + 59 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 59 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 53 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 53 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.57902924f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.57902924f), xbB, ddB);
+  SHLI_VSTORE(out + 75 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 75 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 69 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 69 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11804417f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.622954168f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11804417f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.622954168f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.49509f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.49509f), xaB, ddB);
+  SHLI_VSTORE(out + 93 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 93 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 87 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 87 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09394732f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.661246523f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09394732f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.661246523f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.4327008f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.4327008f), xbB, ddB);
+  SHLI_VSTORE(out + 113 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 113 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 107 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 107 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcB));
+  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psA));
+  SHLI_VSTORE(out + SHLI_W + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.07566231f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.07566231f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.07566231f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.07566231f), ddB);
+  SHLI_VSTORE(out + 34 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 34 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 26 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 26 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.43086217f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.43086217f), xaB, ddB);
+  SHLI_VSTORE(out + 46 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 46 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 38 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 38 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.05688338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.05688338f), xbB, ddB);
+  SHLI_VSTORE(out + 60 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 60 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 52 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 52 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.84390889f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.84390889f), xaB, ddB);
+  SHLI_VSTORE(out + 76 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 76 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 68 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 68 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.22917715f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.524512271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.22917715f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.524512271f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.70466488f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.70466488f), xbB, ddB);
+  SHLI_VSTORE(out + 94 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 94 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 86 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 86 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17944947f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.573539335f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17944947f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.573539335f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.60591014f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.60591014f), xaB, ddB);
+  SHLI_VSTORE(out + 114 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 114 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 106 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 106 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcB));
+  SHLI_VSTORE(out + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psA));
+  SHLI_VSTORE(out + SHLI_W + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.36661916f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.36661916f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.36661916f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.36661916f), ddB);
+  SHLI_VSTORE(out + 47 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 47 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 37 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 37 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.63117406f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.63117406f), xaB, ddB);
+  SHLI_VSTORE(out + 61 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 61 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 51 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 51 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.21610269f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.21610269f), xbB, ddB);
+  SHLI_VSTORE(out + 77 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 77 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 67 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 67 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.40163635f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.423818179f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.40163635f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.423818179f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.97781817f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.97781817f), xaB, ddB);
+  SHLI_VSTORE(out + 95 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 95 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 85 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 85 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30651252f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.485581583f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30651252f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.485581583f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.82093094f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.82093094f), xbB, ddB);
+  SHLI_VSTORE(out + 115 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 115 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 105 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 105 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcB));
+  SHLI_VSTORE(out + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psA));
+  SHLI_VSTORE(out + SHLI_W + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.64596066f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.64596066f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.64596066f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.64596066f), ddB);
+  SHLI_VSTORE(out + 62 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 62 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 50 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 50 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.81661736f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.81661736f), xaB, ddB);
+  SHLI_VSTORE(out + 78 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 78 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 66 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 66 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67913751f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.315192648f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67913751f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.315192648f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.36394486f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.36394486f), xbB, ddB);
+  SHLI_VSTORE(out + 96 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 96 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 84 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 84 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.49687304f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.394243112f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.49687304f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.394243112f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.10262993f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.10262993f), xaB, ddB);
+  SHLI_VSTORE(out + 116 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 116 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 104 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 104 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcB));
+  SHLI_VSTORE(out + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psA));
+  SHLI_VSTORE(out + SHLI_W + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.91570664f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.91570664f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.91570664f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.91570664f), ddB);
+  SHLI_VSTORE(out + 79 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 79 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 65 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 65 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.17706626f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.18688625f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.17706626f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.18688625f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.99018001f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.99018001f), xaB, ddB);
+  SHLI_VSTORE(out + 97 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 97 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 83 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 83 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.79705728f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.294427082f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.79705728f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.294427082f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.5026302f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.5026302f), xbB, ddB);
+  SHLI_VSTORE(out + 117 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 117 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 103 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 103 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcB));
+  SHLI_VSTORE(out + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psA));
+  SHLI_VSTORE(out + SHLI_W + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-3.17731765f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-3.17731765f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(3.17731765f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(3.17731765f), ddB);
+  SHLI_VSTORE(out + 98 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 98 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 82 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 82 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.32916406f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.175219161f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.32916406f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.175219161f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.1539449f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.1539449f), xaB, ddB);
+  SHLI_VSTORE(out + 118 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 118 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 102 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 102 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 99 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 99 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), pcB));
+  SHLI_VSTORE(out + 81 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), psA));
+  SHLI_VSTORE(out + SHLI_W + 81 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(3.4318953f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(3.4318953f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-3.4318953f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-3.4318953f), ddB);
+  SHLI_VSTORE(out + 119 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 119 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 101 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 101 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 120 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 120 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), pcB));
+  SHLI_VSTORE(out + 100 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), psA));
+  SHLI_VSTORE(out + SHLI_W + 100 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), psB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_12(const float *x, const float *y, const float *z, float *out,
+                              ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V s2A = SHLI_VMADD(xA, xA, SHLI_VMUL(yA, yA));
+  SHLI_V s2B = SHLI_VMADD(xB, xB, SHLI_VMUL(yB, yB));
+  SHLI_V irA = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zA, zA, s2A)));
+  SHLI_V irB = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zB, zB, s2B)));
+  SHLI_V azA = SHLI_VMUL(SHLI_VABS(zA), irA);
+  SHLI_V azB = SHLI_VMUL(SHLI_VABS(zB), irB);
+  SHLI_V tA = SHLI_VDIV(SHLI_VMUL(s2A, SHLI_VMUL(irA, irA)), SHLI_VADD(SHLI_VSET(1.0f), azA));
+  SHLI_V tB = SHLI_VDIV(SHLI_VMUL(s2B, SHLI_VMUL(irB, irB)), SHLI_VADD(SHLI_VSET(1.0f), azB));
+  SHLI_V sgA = SHLI_VSIGN1(zA);
+  SHLI_V sgB = SHLI_VSIGN1(zB);
+  SHLI_V pcA;
+  SHLI_V pcB;
+  SHLI_V psA;
+  SHLI_V psB;
+  SHLI_V qcA;
+  SHLI_V qcB;
+  SHLI_V gcA;
+  SHLI_V gcB;
+  SHLI_V gsA;
+  SHLI_V gsB;
+  SHLI_V xaA;
+  SHLI_V xaB;
+  SHLI_V xbA;
+  SHLI_V xbB;
+  SHLI_V ddA;
+  SHLI_V ddB;
+  xA = SHLI_VMUL(xA, irA);
+  xB = SHLI_VMUL(xB, irB);
+  yA = SHLI_VMUL(yA, irA);
+  yB = SHLI_VMUL(yB, irB);
+  pcA = xA;
+  pcB = xB;
+  psA = yA;
+  psB = yB;
+  SHLI_VSTORE(out, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W, SHLI_VSET(0.282094792f));
+  ddA = SHLI_VMUL(SHLI_VSET(-0.488602512f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-0.488602512f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(0.488602512f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(0.488602512f), ddB);
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.29099445f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.29099445f), xaB, ddB);
+  SHLI_VSTORE(out + 6 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 6 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.18321596f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.18321596f), xbB, ddB);
+  SHLI_VSTORE(out + 12 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 12 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.13389342f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.13389342f), xaB, ddB);
+  SHLI_VSTORE(out + 20 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 20 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.1055416f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.1055416f), xbB, ddB);
+  SHLI_VSTORE(out + 30 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 30 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.08711461f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.08711461f), xaB, ddB);
+  SHLI_VSTORE(out + 42 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 42 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.07417231f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.07417231f), xbB, ddB);
+  SHLI_VSTORE(out + 56 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 56 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.06458129f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.06458129f), xaB, ddB);
+  SHLI_VSTORE(out + 72 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 72 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.9969112f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.939722915f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.9969112f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.939722915f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.05718828f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.05718828f), xbB, ddB);
+  SHLI_VSTORE(out + 90 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 90 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99749844f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.946183469f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99749844f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.946183469f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.05131497f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.05131497f), xaB, ddB);
+  SHLI_VSTORE(out + 110 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 110 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99793282f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.951396579f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99793282f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.951396579f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.04653624f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.04653624f), xbB, ddB);
+  SHLI_VSTORE(out + 132 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 132 * stride, SHLI_VMUL(sgB, xaB));
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.09254843f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.09254843f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.09254843f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.09254843f), ddB);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 7 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 5 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.67332005f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.67332005f), xaB, ddB);
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 13 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 11 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.46385011f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.46385011f), xbB, ddB);
+  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 21 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 19 * stride, SHLI_VMUL(xaB, gsB));
+  ddA =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tA, xaA), SHLI_VMUL(SHLI_VSET(0.6770032f), ddA));
+  ddB =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tB, xaB), SHLI_VMUL(SHLI_VSET(0.6770032f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.3540064f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.3540064f), xaB, ddB);
+  SHLI_VSTORE(out + 31 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 31 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 29 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 29 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.28629136f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.28629136f), xbB, ddB);
+  SHLI_VSTORE(out + 43 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 43 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 41 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 41 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.24034735f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.24034735f), xaB, ddB);
+  SHLI_VSTORE(out + 57 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 57 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 55 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 55 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.20712172f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.20712172f), xbB, ddB);
+  SHLI_VSTORE(out + 73 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 73 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 71 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 71 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00935313f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.8273807f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00935313f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.8273807f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.18197243f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.18197243f), xaB, ddB);
+  SHLI_VSTORE(out + 91 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 91 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 89 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 89 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00756146f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.845289037f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00756146f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.845289037f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.16227243f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.16227243f), xbB, ddB);
+  SHLI_VSTORE(out + 111 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 111 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 109 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 109 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00624026f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.859817256f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00624026f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.859817256f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.14642301f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.14642301f), xaB, ddB);
+  SHLI_VSTORE(out + 133 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 133 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 131 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 131 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcB));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psA));
+  SHLI_VSTORE(out + SHLI_W + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-1.44530572f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-1.44530572f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(1.44530572f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(1.44530572f), ddB);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 14 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 10 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.96396101f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.96396101f), xaB, ddB);
+  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 22 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 18 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.68874268f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.68874268f), xbB, ddB);
+  SHLI_VSTORE(out + 32 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 32 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 28 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 28 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.53741223f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.53741223f), xaB, ddB);
+  SHLI_VSTORE(out + 44 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 44 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 40 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 40 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.44115338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.44115338f), xbB, ddB);
+  SHLI_VSTORE(out + 58 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 58 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 54 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 54 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.37436854f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.37436854f), xaB, ddB);
+  SHLI_VSTORE(out + 74 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 74 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 70 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 70 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04812236f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.722866715f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04812236f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.722866715f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.32525564f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.32525564f), xbB, ddB);
+  SHLI_VSTORE(out + 92 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 92 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 88 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 88 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0386883f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.751095691f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0386883f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.751095691f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.28759261f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.28759261f), xaB, ddB);
+  SHLI_VSTORE(out + 112 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 112 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 108 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 108 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0317985f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.774018475f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0317985f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.774018475f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.25778002f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.25778002f), xbB, ddB);
+  SHLI_VSTORE(out + 134 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 134 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 130 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 130 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcB));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psA));
+  SHLI_VSTORE(out + SHLI_W + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.77013077f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.77013077f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.77013077f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.77013077f), ddB);
+  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 23 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 17 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.21108319f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.21108319f), xaB, ddB);
+  SHLI_VSTORE(out + 33 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 33 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 27 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 27 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.88293774f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.88293774f), xbB, ddB);
+  SHLI_VSTORE(out + 45 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 45 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 39 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 39 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.69841555f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.69841555f), xaB, ddB);
+  SHLI_VSTORE(out + 59 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 59 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 53 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 53 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.57902924f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.57902924f), xbB, ddB);
+  SHLI_VSTORE(out + 75 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 75 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 69 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 69 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11804417f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.622954168f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11804417f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.622954168f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.49509f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.49509f), xaB, ddB);
+  SHLI_VSTORE(out + 93 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 93 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 87 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 87 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09394732f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.661246523f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09394732f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.661246523f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.4327008f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.4327008f), xbB, ddB);
+  SHLI_VSTORE(out + 113 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 113 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 107 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 107 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.07665597f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.692218655f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.07665597f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.692218655f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.38443731f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.38443731f), xaB, ddB);
+  SHLI_VSTORE(out + 135 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 135 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 129 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 129 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcB));
+  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psA));
+  SHLI_VSTORE(out + SHLI_W + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.07566231f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.07566231f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.07566231f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.07566231f), ddB);
+  SHLI_VSTORE(out + 34 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 34 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 26 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 26 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.43086217f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.43086217f), xaB, ddB);
+  SHLI_VSTORE(out + 46 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 46 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 38 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 38 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.05688338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.05688338f), xbB, ddB);
+  SHLI_VSTORE(out + 60 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 60 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 52 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 52 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.84390889f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.84390889f), xaB, ddB);
+  SHLI_VSTORE(out + 76 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 76 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 68 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 68 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.22917715f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.524512271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.22917715f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.524512271f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.70466488f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.70466488f), xbB, ddB);
+  SHLI_VSTORE(out + 94 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 94 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 86 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 86 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17944947f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.573539335f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17944947f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.573539335f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.60591014f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.60591014f), xaB, ddB);
+  SHLI_VSTORE(out + 114 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 114 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 106 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 106 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.14476106f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.612788874f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.14476106f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.612788874f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.53197218f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.53197218f), xbB, ddB);
+  SHLI_VSTORE(out + 136 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 136 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 128 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 128 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcB));
+  SHLI_VSTORE(out + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psA));
+  SHLI_VSTORE(out + SHLI_W + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.36661916f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.36661916f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.36661916f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.36661916f), ddB);
+  SHLI_VSTORE(out + 47 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 47 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 37 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 37 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.63117406f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.63117406f), xaB, ddB);
+  SHLI_VSTORE(out + 61 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 61 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 51 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 51 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.21610269f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.21610269f), xbB, ddB);
+  SHLI_VSTORE(out + 77 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 77 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 67 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 67 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.40163635f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.423818179f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.40163635f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.423818179f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.97781817f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.97781817f), xaB, ddB);
+  SHLI_VSTORE(out + 95 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 95 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 85 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 85 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30651252f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.485581583f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30651252f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.485581583f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.82093094f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.82093094f), xbB, ddB);
+  SHLI_VSTORE(out + 115 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 115 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 105 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 105 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.24304481f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.534058287f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.24304481f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.534058287f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.70898652f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.70898652f), xaB, ddB);
+  SHLI_VSTORE(out + 137 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 137 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 127 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 127 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcB));
+  SHLI_VSTORE(out + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psA));
+  SHLI_VSTORE(out + SHLI_W + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.64596066f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.64596066f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.64596066f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.64596066f), ddB);
+  SHLI_VSTORE(out + 62 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 62 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 50 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 50 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.81661736f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.81661736f), xaB, ddB);
+  SHLI_VSTORE(out + 78 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 78 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 66 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 66 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67913751f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.315192648f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67913751f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.315192648f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.36394486f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.36394486f), xbB, ddB);
+  SHLI_VSTORE(out + 96 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 96 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 84 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 84 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.49687304f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.394243112f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.49687304f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.394243112f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.10262993f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.10262993f), xaB, ddB);
+  SHLI_VSTORE(out + 116 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 116 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 104 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 104 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.38376864f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.45405117f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.38376864f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.45405117f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.92971747f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.92971747f), xbB, ddB);
+  SHLI_VSTORE(out + 138 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 138 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 126 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 126 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcB));
+  SHLI_VSTORE(out + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psA));
+  SHLI_VSTORE(out + SHLI_W + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.91570664f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.91570664f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.91570664f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.91570664f), ddB);
+  SHLI_VSTORE(out + 79 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 79 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 65 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 65 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.17706626f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.18688625f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.17706626f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.18688625f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.99018001f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.99018001f), xaB, ddB);
+  SHLI_VSTORE(out + 97 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 97 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 83 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 83 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.79705728f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.294427082f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.79705728f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.294427082f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.5026302f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.5026302f), xbB, ddB);
+  SHLI_VSTORE(out + 117 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 117 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 103 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 103 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.59004504f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.370006435f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.59004504f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.370006435f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.22003861f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.22003861f), xaB, ddB);
+  SHLI_VSTORE(out + 139 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 139 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 125 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 125 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcB));
+  SHLI_VSTORE(out + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psA));
+  SHLI_VSTORE(out + SHLI_W + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-3.17731765f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-3.17731765f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(3.17731765f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(3.17731765f), ddB);
+  SHLI_VSTORE(out + 98 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 98 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 82 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 82 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.32916406f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.175219161f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.32916406f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.175219161f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.1539449f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.1539449f), xaB, ddB);
+  SHLI_VSTORE(out + 118 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 118 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 102 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 102 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.91095933f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.277234222f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.91095933f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.277234222f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.63372511f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.63372511f), xbB, ddB);
+  SHLI_VSTORE(out + 140 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 140 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 124 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 124 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 99 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 99 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), pcB));
+  SHLI_VSTORE(out + 81 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), psA));
+  SHLI_VSTORE(out + SHLI_W + 81 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(3.4318953f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(3.4318953f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-3.4318953f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-3.4318953f), ddB);
+  SHLI_VSTORE(out + 119 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 119 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 101 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 101 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.47491007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.165471908f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.47491007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.165471908f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.30943816f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.30943816f), xaB, ddB);
+  SHLI_VSTORE(out + 141 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 141 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 123 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 123 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 120 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 120 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), pcB));
+  SHLI_VSTORE(out + 100 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), psA));
+  SHLI_VSTORE(out + SHLI_W + 100 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-3.6802977f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-3.6802977f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(3.6802977f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(3.6802977f), ddB);
+  SHLI_VSTORE(out + 142 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 142 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 122 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 122 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 143 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 143 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), pcB));
+  SHLI_VSTORE(out + 121 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), psA));
+  SHLI_VSTORE(out + SHLI_W + 121 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), psB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_13(const float *x, const float *y, const float *z, float *out,
+                              ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V s2A = SHLI_VMADD(xA, xA, SHLI_VMUL(yA, yA));
+  SHLI_V s2B = SHLI_VMADD(xB, xB, SHLI_VMUL(yB, yB));
+  SHLI_V irA = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zA, zA, s2A)));
+  SHLI_V irB = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zB, zB, s2B)));
+  SHLI_V azA = SHLI_VMUL(SHLI_VABS(zA), irA);
+  SHLI_V azB = SHLI_VMUL(SHLI_VABS(zB), irB);
+  SHLI_V tA = SHLI_VDIV(SHLI_VMUL(s2A, SHLI_VMUL(irA, irA)), SHLI_VADD(SHLI_VSET(1.0f), azA));
+  SHLI_V tB = SHLI_VDIV(SHLI_VMUL(s2B, SHLI_VMUL(irB, irB)), SHLI_VADD(SHLI_VSET(1.0f), azB));
+  SHLI_V sgA = SHLI_VSIGN1(zA);
+  SHLI_V sgB = SHLI_VSIGN1(zB);
+  SHLI_V pcA;
+  SHLI_V pcB;
+  SHLI_V psA;
+  SHLI_V psB;
+  SHLI_V qcA;
+  SHLI_V qcB;
+  SHLI_V gcA;
+  SHLI_V gcB;
+  SHLI_V gsA;
+  SHLI_V gsB;
+  SHLI_V xaA;
+  SHLI_V xaB;
+  SHLI_V xbA;
+  SHLI_V xbB;
+  SHLI_V ddA;
+  SHLI_V ddB;
+  xA = SHLI_VMUL(xA, irA);
+  xB = SHLI_VMUL(xB, irB);
+  yA = SHLI_VMUL(yA, irA);
+  yB = SHLI_VMUL(yB, irB);
+  pcA = xA;
+  pcB = xB;
+  psA = yA;
+  psB = yB;
+  SHLI_VSTORE(out, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W, SHLI_VSET(0.282094792f));
+  ddA = SHLI_VMUL(SHLI_VSET(-0.488602512f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-0.488602512f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(0.488602512f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(0.488602512f), ddB);
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.29099445f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.29099445f), xaB, ddB);
+  SHLI_VSTORE(out + 6 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 6 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.18321596f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.18321596f), xbB, ddB);
+  SHLI_VSTORE(out + 12 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 12 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.13389342f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.13389342f), xaB, ddB);
+  SHLI_VSTORE(out + 20 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 20 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.1055416f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.1055416f), xbB, ddB);
+  SHLI_VSTORE(out + 30 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 30 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.08711461f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.08711461f), xaB, ddB);
+  SHLI_VSTORE(out + 42 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 42 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.07417231f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.07417231f), xbB, ddB);
+  SHLI_VSTORE(out + 56 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 56 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.06458129f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.06458129f), xaB, ddB);
+  SHLI_VSTORE(out + 72 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 72 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.9969112f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.939722915f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.9969112f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.939722915f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.05718828f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.05718828f), xbB, ddB);
+  SHLI_VSTORE(out + 90 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 90 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99749844f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.946183469f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99749844f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.946183469f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.05131497f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.05131497f), xaB, ddB);
+  SHLI_VSTORE(out + 110 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 110 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99793282f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.951396579f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99793282f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.951396579f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.04653624f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.04653624f), xbB, ddB);
+  SHLI_VSTORE(out + 132 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 132 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99826313f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.955691064f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99826313f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.955691064f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.04257207f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.04257207f), xaB, ddB);
+  SHLI_VSTORE(out + 156 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 156 * stride, xbB);
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.09254843f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.09254843f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.09254843f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.09254843f), ddB);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 7 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 5 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.67332005f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.67332005f), xaB, ddB);
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 13 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 11 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.46385011f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.46385011f), xbB, ddB);
+  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 21 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 19 * stride, SHLI_VMUL(xaB, gsB));
+  ddA =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tA, xaA), SHLI_VMUL(SHLI_VSET(0.6770032f), ddA));
+  ddB =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tB, xaB), SHLI_VMUL(SHLI_VSET(0.6770032f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.3540064f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.3540064f), xaB, ddB);
+  SHLI_VSTORE(out + 31 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 31 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 29 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 29 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.28629136f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.28629136f), xbB, ddB);
+  SHLI_VSTORE(out + 43 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 43 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 41 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 41 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.24034735f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.24034735f), xaB, ddB);
+  SHLI_VSTORE(out + 57 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 57 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 55 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 55 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.20712172f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.20712172f), xbB, ddB);
+  SHLI_VSTORE(out + 73 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 73 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 71 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 71 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00935313f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.8273807f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00935313f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.8273807f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.18197243f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.18197243f), xaB, ddB);
+  SHLI_VSTORE(out + 91 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 91 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 89 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 89 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00756146f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.845289037f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00756146f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.845289037f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.16227243f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.16227243f), xbB, ddB);
+  SHLI_VSTORE(out + 111 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 111 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 109 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 109 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00624026f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.859817256f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00624026f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.859817256f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.14642301f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.14642301f), xaB, ddB);
+  SHLI_VSTORE(out + 133 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 133 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 131 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 131 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0052379f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.871842564f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0052379f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.871842564f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.13339533f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.13339533f), xbB, ddB);
+  SHLI_VSTORE(out + 157 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 157 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 155 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 155 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcB));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psA));
+  SHLI_VSTORE(out + SHLI_W + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-1.44530572f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-1.44530572f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(1.44530572f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(1.44530572f), ddB);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 14 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 10 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.96396101f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.96396101f), xaB, ddB);
+  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 22 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 18 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.68874268f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.68874268f), xbB, ddB);
+  SHLI_VSTORE(out + 32 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 32 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 28 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 28 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.53741223f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.53741223f), xaB, ddB);
+  SHLI_VSTORE(out + 44 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 44 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 40 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 40 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.44115338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.44115338f), xbB, ddB);
+  SHLI_VSTORE(out + 58 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 58 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 54 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 54 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.37436854f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.37436854f), xaB, ddB);
+  SHLI_VSTORE(out + 74 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 74 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 70 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 70 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04812236f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.722866715f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04812236f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.722866715f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.32525564f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.32525564f), xbB, ddB);
+  SHLI_VSTORE(out + 92 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 92 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 88 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 88 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0386883f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.751095691f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0386883f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.751095691f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.28759261f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.28759261f), xaB, ddB);
+  SHLI_VSTORE(out + 112 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 112 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 108 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 108 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0317985f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.774018475f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0317985f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.774018475f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.25778002f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.25778002f), xbB, ddB);
+  SHLI_VSTORE(out + 134 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 134 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 130 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 130 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02660871f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.793020799f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02660871f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.793020799f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.23358791f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.23358791f), xaB, ddB);
+  SHLI_VSTORE(out + 158 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 158 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 154 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 154 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcB));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psA));
+  SHLI_VSTORE(out + SHLI_W + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.77013077f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.77013077f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.77013077f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.77013077f), ddB);
+  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 23 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 17 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.21108319f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.21108319f), xaB, ddB);
+  SHLI_VSTORE(out + 33 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 33 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 27 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 27 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.88293774f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.88293774f), xbB, ddB);
+  SHLI_VSTORE(out + 45 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 45 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 39 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 39 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.69841555f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.69841555f), xaB, ddB);
+  SHLI_VSTORE(out + 59 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 59 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 53 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 53 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.57902924f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.57902924f), xbB, ddB);
+  SHLI_VSTORE(out + 75 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 75 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 69 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 69 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11804417f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.622954168f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11804417f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.622954168f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.49509f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.49509f), xaB, ddB);
+  SHLI_VSTORE(out + 93 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 93 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 87 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 87 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09394732f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.661246523f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09394732f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.661246523f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.4327008f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.4327008f), xbB, ddB);
+  SHLI_VSTORE(out + 113 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 113 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 107 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 107 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.07665597f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.692218655f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.07665597f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.692218655f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.38443731f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.38443731f), xaB, ddB);
+  SHLI_VSTORE(out + 135 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 135 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 129 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 129 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.06379729f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.717842536f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.06379729f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.717842536f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.34595476f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.34595476f), xbB, ddB);
+  SHLI_VSTORE(out + 159 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 159 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 153 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 153 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcB));
+  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psA));
+  SHLI_VSTORE(out + SHLI_W + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.07566231f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.07566231f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.07566231f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.07566231f), ddB);
+  SHLI_VSTORE(out + 34 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 34 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 26 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 26 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.43086217f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.43086217f), xaB, ddB);
+  SHLI_VSTORE(out + 46 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 46 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 38 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 38 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.05688338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.05688338f), xbB, ddB);
+  SHLI_VSTORE(out + 60 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 60 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 52 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 52 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.84390889f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.84390889f), xaB, ddB);
+  SHLI_VSTORE(out + 76 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 76 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 68 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 68 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.22917715f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.524512271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.22917715f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.524512271f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.70466488f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.70466488f), xbB, ddB);
+  SHLI_VSTORE(out + 94 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 94 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 86 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 86 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17944947f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.573539335f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17944947f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.573539335f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.60591014f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.60591014f), xaB, ddB);
+  SHLI_VSTORE(out + 114 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 114 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 106 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 106 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.14476106f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.612788874f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.14476106f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.612788874f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.53197218f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.53197218f), xbB, ddB);
+  SHLI_VSTORE(out + 136 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 136 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 128 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 128 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11947812f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.645058558f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11947812f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.645058558f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.47441956f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.47441956f), xaB, ddB);
+  SHLI_VSTORE(out + 160 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 160 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 152 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 152 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcB));
+  SHLI_VSTORE(out + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psA));
+  SHLI_VSTORE(out + SHLI_W + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.36661916f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.36661916f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.36661916f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.36661916f), ddB);
+  SHLI_VSTORE(out + 47 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 47 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 37 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 37 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.63117406f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.63117406f), xaB, ddB);
+  SHLI_VSTORE(out + 61 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 61 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 51 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 51 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.21610269f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.21610269f), xbB, ddB);
+  SHLI_VSTORE(out + 77 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 77 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 67 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 67 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.40163635f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.423818179f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.40163635f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.423818179f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.97781817f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.97781817f), xaB, ddB);
+  SHLI_VSTORE(out + 95 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 95 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 85 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 85 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30651252f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.485581583f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30651252f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.485581583f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.82093094f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.82093094f), xbB, ddB);
+  SHLI_VSTORE(out + 115 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 115 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 105 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 105 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.24304481f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.534058287f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.24304481f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.534058287f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.70898652f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.70898652f), xaB, ddB);
+  SHLI_VSTORE(out + 137 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 137 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 127 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 127 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.19816577f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.57343455f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.19816577f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.57343455f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.62473122f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.62473122f), xbB, ddB);
+  SHLI_VSTORE(out + 161 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 161 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 151 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 151 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcB));
+  SHLI_VSTORE(out + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psA));
+  SHLI_VSTORE(out + SHLI_W + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.64596066f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.64596066f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.64596066f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.64596066f), ddB);
+  SHLI_VSTORE(out + 62 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 62 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 50 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 50 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.81661736f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.81661736f), xaB, ddB);
+  SHLI_VSTORE(out + 78 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 78 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 66 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 66 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67913751f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.315192648f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67913751f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.315192648f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.36394486f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.36394486f), xbB, ddB);
+  SHLI_VSTORE(out + 96 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 96 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 84 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 84 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.49687304f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.394243112f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.49687304f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.394243112f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.10262993f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.10262993f), xaB, ddB);
+  SHLI_VSTORE(out + 116 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 116 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 104 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 104 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.38376864f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.45405117f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.38376864f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.45405117f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.92971747f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.92971747f), xbB, ddB);
+  SHLI_VSTORE(out + 138 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 138 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 126 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 126 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30739552f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.501607721f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30739552f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.501607721f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.8057878f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.8057878f), xaB, ddB);
+  SHLI_VSTORE(out + 162 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 162 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 150 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 150 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcB));
+  SHLI_VSTORE(out + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psA));
+  SHLI_VSTORE(out + SHLI_W + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.91570664f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.91570664f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.91570664f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.91570664f), ddB);
+  SHLI_VSTORE(out + 79 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 79 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 65 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 65 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.17706626f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.18688625f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.17706626f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.18688625f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.99018001f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.99018001f), xaB, ddB);
+  SHLI_VSTORE(out + 97 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 97 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 83 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 83 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.79705728f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.294427082f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.79705728f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.294427082f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.5026302f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.5026302f), xbB, ddB);
+  SHLI_VSTORE(out + 117 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 117 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 103 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 103 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.59004504f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.370006435f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.59004504f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.370006435f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.22003861f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.22003861f), xaB, ddB);
+  SHLI_VSTORE(out + 139 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 139 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 125 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 125 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.46020966f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.42786255f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.46020966f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.42786255f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.03234711f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.03234711f), xbB, ddB);
+  SHLI_VSTORE(out + 163 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 163 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 149 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 149 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcB));
+  SHLI_VSTORE(out + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psA));
+  SHLI_VSTORE(out + SHLI_W + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-3.17731765f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-3.17731765f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(3.17731765f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(3.17731765f), ddB);
+  SHLI_VSTORE(out + 98 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 98 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 82 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 82 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.32916406f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.175219161f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.32916406f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.175219161f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.1539449f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.1539449f), xaB, ddB);
+  SHLI_VSTORE(out + 118 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 118 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 102 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 102 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.91095933f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.277234222f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.91095933f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.277234222f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.63372511f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.63372511f), xbB, ddB);
+  SHLI_VSTORE(out + 140 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 140 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 124 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 124 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.68095132f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.349689303f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.68095132f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.349689303f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.33126202f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.33126202f), xaB, ddB);
+  SHLI_VSTORE(out + 164 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 164 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 148 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 148 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 99 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 99 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), pcB));
+  SHLI_VSTORE(out + 81 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), psA));
+  SHLI_VSTORE(out + SHLI_W + 81 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(3.4318953f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(3.4318953f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-3.4318953f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-3.4318953f), ddB);
+  SHLI_VSTORE(out + 119 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 119 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 101 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 101 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.47491007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.165471908f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.47491007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.165471908f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.30943816f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.30943816f), xaB, ddB);
+  SHLI_VSTORE(out + 141 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 141 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 123 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 123 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.02108989f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.262703469f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.02108989f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.262703469f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.75838642f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.75838642f), xbB, ddB);
+  SHLI_VSTORE(out + 165 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 165 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 147 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 147 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 120 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 120 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), pcB));
+  SHLI_VSTORE(out + 100 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), psA));
+  SHLI_VSTORE(out + SHLI_W + 100 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-3.6802977f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-3.6802977f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(3.6802977f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(3.6802977f), ddB);
+  SHLI_VSTORE(out + 142 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 142 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 122 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 122 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.61499403f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.157173653f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.61499403f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.157173653f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.45782037f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.45782037f), xaB, ddB);
+  SHLI_VSTORE(out + 166 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 166 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 146 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 146 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 143 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 143 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), pcB));
+  SHLI_VSTORE(out + 121 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), psA));
+  SHLI_VSTORE(out + SHLI_W + 121 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(3.92321053f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(3.92321053f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-3.92321053f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-3.92321053f), ddB);
+  SHLI_VSTORE(out + 167 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 167 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 145 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 145 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 168 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 168 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), pcB));
+  SHLI_VSTORE(out + 144 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), psA));
+  SHLI_VSTORE(out + SHLI_W + 144 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), psB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_14(const float *x, const float *y, const float *z, float *out,
+                              ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V s2A = SHLI_VMADD(xA, xA, SHLI_VMUL(yA, yA));
+  SHLI_V s2B = SHLI_VMADD(xB, xB, SHLI_VMUL(yB, yB));
+  SHLI_V irA = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zA, zA, s2A)));
+  SHLI_V irB = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zB, zB, s2B)));
+  SHLI_V azA = SHLI_VMUL(SHLI_VABS(zA), irA);
+  SHLI_V azB = SHLI_VMUL(SHLI_VABS(zB), irB);
+  SHLI_V tA = SHLI_VDIV(SHLI_VMUL(s2A, SHLI_VMUL(irA, irA)), SHLI_VADD(SHLI_VSET(1.0f), azA));
+  SHLI_V tB = SHLI_VDIV(SHLI_VMUL(s2B, SHLI_VMUL(irB, irB)), SHLI_VADD(SHLI_VSET(1.0f), azB));
+  SHLI_V sgA = SHLI_VSIGN1(zA);
+  SHLI_V sgB = SHLI_VSIGN1(zB);
+  SHLI_V pcA;
+  SHLI_V pcB;
+  SHLI_V psA;
+  SHLI_V psB;
+  SHLI_V qcA;
+  SHLI_V qcB;
+  SHLI_V gcA;
+  SHLI_V gcB;
+  SHLI_V gsA;
+  SHLI_V gsB;
+  SHLI_V xaA;
+  SHLI_V xaB;
+  SHLI_V xbA;
+  SHLI_V xbB;
+  SHLI_V ddA;
+  SHLI_V ddB;
+  xA = SHLI_VMUL(xA, irA);
+  xB = SHLI_VMUL(xB, irB);
+  yA = SHLI_VMUL(yA, irA);
+  yB = SHLI_VMUL(yB, irB);
+  pcA = xA;
+  pcB = xB;
+  psA = yA;
+  psB = yB;
+  SHLI_VSTORE(out, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W, SHLI_VSET(0.282094792f));
+  ddA = SHLI_VMUL(SHLI_VSET(-0.488602512f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-0.488602512f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(0.488602512f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(0.488602512f), ddB);
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.29099445f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.29099445f), xaB, ddB);
+  SHLI_VSTORE(out + 6 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 6 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.18321596f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.18321596f), xbB, ddB);
+  SHLI_VSTORE(out + 12 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 12 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.13389342f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.13389342f), xaB, ddB);
+  SHLI_VSTORE(out + 20 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 20 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.1055416f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.1055416f), xbB, ddB);
+  SHLI_VSTORE(out + 30 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 30 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.08711461f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.08711461f), xaB, ddB);
+  SHLI_VSTORE(out + 42 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 42 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.07417231f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.07417231f), xbB, ddB);
+  SHLI_VSTORE(out + 56 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 56 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.06458129f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.06458129f), xaB, ddB);
+  SHLI_VSTORE(out + 72 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 72 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.9969112f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.939722915f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.9969112f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.939722915f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.05718828f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.05718828f), xbB, ddB);
+  SHLI_VSTORE(out + 90 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 90 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99749844f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.946183469f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99749844f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.946183469f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.05131497f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.05131497f), xaB, ddB);
+  SHLI_VSTORE(out + 110 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 110 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99793282f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.951396579f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99793282f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.951396579f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.04653624f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.04653624f), xbB, ddB);
+  SHLI_VSTORE(out + 132 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 132 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99826313f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.955691064f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99826313f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.955691064f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.04257207f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.04257207f), xaB, ddB);
+  SHLI_VSTORE(out + 156 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 156 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99852016f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.959289678f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99852016f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.959289678f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.03923048f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.03923048f), xbB, ddB);
+  SHLI_VSTORE(out + 182 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 182 * stride, SHLI_VMUL(sgB, xaB));
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.09254843f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.09254843f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.09254843f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.09254843f), ddB);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 7 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 5 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.67332005f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.67332005f), xaB, ddB);
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 13 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 11 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.46385011f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.46385011f), xbB, ddB);
+  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 21 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 19 * stride, SHLI_VMUL(xaB, gsB));
+  ddA =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tA, xaA), SHLI_VMUL(SHLI_VSET(0.6770032f), ddA));
+  ddB =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tB, xaB), SHLI_VMUL(SHLI_VSET(0.6770032f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.3540064f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.3540064f), xaB, ddB);
+  SHLI_VSTORE(out + 31 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 31 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 29 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 29 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.28629136f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.28629136f), xbB, ddB);
+  SHLI_VSTORE(out + 43 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 43 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 41 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 41 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.24034735f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.24034735f), xaB, ddB);
+  SHLI_VSTORE(out + 57 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 57 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 55 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 55 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.20712172f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.20712172f), xbB, ddB);
+  SHLI_VSTORE(out + 73 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 73 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 71 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 71 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00935313f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.8273807f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00935313f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.8273807f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.18197243f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.18197243f), xaB, ddB);
+  SHLI_VSTORE(out + 91 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 91 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 89 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 89 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00756146f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.845289037f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00756146f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.845289037f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.16227243f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.16227243f), xbB, ddB);
+  SHLI_VSTORE(out + 111 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 111 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 109 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 109 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00624026f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.859817256f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00624026f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.859817256f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.14642301f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.14642301f), xaB, ddB);
+  SHLI_VSTORE(out + 133 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 133 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 131 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 131 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0052379f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.871842564f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0052379f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.871842564f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.13339533f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.13339533f), xbB, ddB);
+  SHLI_VSTORE(out + 157 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 157 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 155 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 155 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00445931f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.881962098f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00445931f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.881962098f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.12249722f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.12249722f), xaB, ddB);
+  SHLI_VSTORE(out + 183 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 183 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 181 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 181 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcB));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psA));
+  SHLI_VSTORE(out + SHLI_W + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-1.44530572f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-1.44530572f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(1.44530572f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(1.44530572f), ddB);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 14 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 10 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.96396101f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.96396101f), xaB, ddB);
+  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 22 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 18 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.68874268f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.68874268f), xbB, ddB);
+  SHLI_VSTORE(out + 32 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 32 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 28 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 28 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.53741223f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.53741223f), xaB, ddB);
+  SHLI_VSTORE(out + 44 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 44 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 40 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 40 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.44115338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.44115338f), xbB, ddB);
+  SHLI_VSTORE(out + 58 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 58 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 54 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 54 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.37436854f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.37436854f), xaB, ddB);
+  SHLI_VSTORE(out + 74 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 74 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 70 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 70 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04812236f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.722866715f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04812236f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.722866715f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.32525564f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.32525564f), xbB, ddB);
+  SHLI_VSTORE(out + 92 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 92 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 88 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 88 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0386883f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.751095691f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0386883f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.751095691f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.28759261f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.28759261f), xaB, ddB);
+  SHLI_VSTORE(out + 112 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 112 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 108 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 108 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0317985f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.774018475f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0317985f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.774018475f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.25778002f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.25778002f), xbB, ddB);
+  SHLI_VSTORE(out + 134 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 134 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 130 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 130 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02660871f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.793020799f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02660871f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.793020799f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.23358791f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.23358791f), xaB, ddB);
+  SHLI_VSTORE(out + 158 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 158 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 154 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 154 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02259959f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.809039835f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02259959f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.809039835f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.21355975f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.21355975f), xbB, ddB);
+  SHLI_VSTORE(out + 184 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 184 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 180 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 180 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcB));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psA));
+  SHLI_VSTORE(out + SHLI_W + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.77013077f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.77013077f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.77013077f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.77013077f), ddB);
+  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 23 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 17 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.21108319f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.21108319f), xaB, ddB);
+  SHLI_VSTORE(out + 33 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 33 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 27 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 27 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.88293774f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.88293774f), xbB, ddB);
+  SHLI_VSTORE(out + 45 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 45 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 39 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 39 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.69841555f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.69841555f), xaB, ddB);
+  SHLI_VSTORE(out + 59 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 59 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 53 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 53 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.57902924f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.57902924f), xbB, ddB);
+  SHLI_VSTORE(out + 75 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 75 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 69 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 69 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11804417f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.622954168f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11804417f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.622954168f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.49509f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.49509f), xaB, ddB);
+  SHLI_VSTORE(out + 93 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 93 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 87 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 87 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09394732f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.661246523f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09394732f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.661246523f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.4327008f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.4327008f), xbB, ddB);
+  SHLI_VSTORE(out + 113 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 113 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 107 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 107 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.07665597f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.692218655f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.07665597f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.692218655f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.38443731f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.38443731f), xaB, ddB);
+  SHLI_VSTORE(out + 135 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 135 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 129 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 129 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.06379729f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.717842536f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.06379729f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.717842536f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.34595476f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.34595476f), xbB, ddB);
+  SHLI_VSTORE(out + 159 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 159 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 153 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 153 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.05395959f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.739425453f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.05395959f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.739425453f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.31453414f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.31453414f), xaB, ddB);
+  SHLI_VSTORE(out + 185 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 185 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 179 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 179 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcB));
+  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psA));
+  SHLI_VSTORE(out + SHLI_W + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.07566231f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.07566231f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.07566231f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.07566231f), ddB);
+  SHLI_VSTORE(out + 34 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 34 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 26 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 26 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.43086217f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.43086217f), xaB, ddB);
+  SHLI_VSTORE(out + 46 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 46 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 38 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 38 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.05688338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.05688338f), xbB, ddB);
+  SHLI_VSTORE(out + 60 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 60 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 52 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 52 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.84390889f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.84390889f), xaB, ddB);
+  SHLI_VSTORE(out + 76 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 76 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 68 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 68 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.22917715f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.524512271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.22917715f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.524512271f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.70466488f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.70466488f), xbB, ddB);
+  SHLI_VSTORE(out + 94 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 94 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 86 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 86 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17944947f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.573539335f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17944947f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.573539335f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.60591014f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.60591014f), xaB, ddB);
+  SHLI_VSTORE(out + 114 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 114 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 106 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 106 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.14476106f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.612788874f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.14476106f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.612788874f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.53197218f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.53197218f), xbB, ddB);
+  SHLI_VSTORE(out + 136 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 136 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 128 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 128 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11947812f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.645058558f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11947812f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.645058558f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.47441956f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.47441956f), xaB, ddB);
+  SHLI_VSTORE(out + 160 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 160 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 152 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 152 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.10042013f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.67213444f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.10042013f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.67213444f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.42828569f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.42828569f), xbB, ddB);
+  SHLI_VSTORE(out + 186 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 186 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 178 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 178 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcB));
+  SHLI_VSTORE(out + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psA));
+  SHLI_VSTORE(out + SHLI_W + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.36661916f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.36661916f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.36661916f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.36661916f), ddB);
+  SHLI_VSTORE(out + 47 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 47 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 37 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 37 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.63117406f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.63117406f), xaB, ddB);
+  SHLI_VSTORE(out + 61 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 61 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 51 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 51 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.21610269f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.21610269f), xbB, ddB);
+  SHLI_VSTORE(out + 77 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 77 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 67 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 67 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.40163635f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.423818179f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.40163635f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.423818179f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.97781817f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.97781817f), xaB, ddB);
+  SHLI_VSTORE(out + 95 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 95 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 85 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 85 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30651252f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.485581583f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30651252f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.485581583f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.82093094f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.82093094f), xbB, ddB);
+  SHLI_VSTORE(out + 115 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 115 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 105 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 105 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.24304481f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.534058287f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.24304481f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.534058287f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.70898652f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.70898652f), xaB, ddB);
+  SHLI_VSTORE(out + 137 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 137 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 127 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 127 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.19816577f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.57343455f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.19816577f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.57343455f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.62473122f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.62473122f), xbB, ddB);
+  SHLI_VSTORE(out + 161 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 161 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 151 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 151 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.16506351f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.606217783f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.16506351f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.606217783f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.55884573f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.55884573f), xaB, ddB);
+  SHLI_VSTORE(out + 187 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 187 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 177 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 177 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcB));
+  SHLI_VSTORE(out + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psA));
+  SHLI_VSTORE(out + SHLI_W + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.64596066f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.64596066f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.64596066f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.64596066f), ddB);
+  SHLI_VSTORE(out + 62 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 62 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 50 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 50 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.81661736f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.81661736f), xaB, ddB);
+  SHLI_VSTORE(out + 78 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 78 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 66 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 66 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67913751f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.315192648f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67913751f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.315192648f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.36394486f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.36394486f), xbB, ddB);
+  SHLI_VSTORE(out + 96 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 96 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 84 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 84 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.49687304f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.394243112f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.49687304f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.394243112f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.10262993f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.10262993f), xaB, ddB);
+  SHLI_VSTORE(out + 116 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 116 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 104 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 104 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.38376864f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.45405117f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.38376864f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.45405117f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.92971747f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.92971747f), xbB, ddB);
+  SHLI_VSTORE(out + 138 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 138 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 126 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 126 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30739552f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.501607721f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30739552f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.501607721f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.8057878f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.8057878f), xaB, ddB);
+  SHLI_VSTORE(out + 162 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 162 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 150 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 150 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.25281778f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.540676268f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.25281778f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.540676268f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.71214152f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.71214152f), xbB, ddB);
+  SHLI_VSTORE(out + 188 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 188 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 176 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 176 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcB));
+  SHLI_VSTORE(out + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psA));
+  SHLI_VSTORE(out + SHLI_W + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.91570664f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.91570664f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.91570664f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.91570664f), ddB);
+  SHLI_VSTORE(out + 79 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 79 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 65 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 65 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.17706626f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.18688625f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.17706626f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.18688625f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.99018001f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.99018001f), xaB, ddB);
+  SHLI_VSTORE(out + 97 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 97 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 83 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 83 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.79705728f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.294427082f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.79705728f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.294427082f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.5026302f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.5026302f), xbB, ddB);
+  SHLI_VSTORE(out + 117 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 117 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 103 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 103 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.59004504f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.370006435f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.59004504f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.370006435f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.22003861f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.22003861f), xaB, ddB);
+  SHLI_VSTORE(out + 139 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 139 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 125 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 125 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.46020966f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.42786255f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.46020966f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.42786255f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.03234711f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.03234711f), xbB, ddB);
+  SHLI_VSTORE(out + 163 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 163 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 149 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 149 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.37170825f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.474341649f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.37170825f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.474341649f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.8973666f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.8973666f), xaB, ddB);
+  SHLI_VSTORE(out + 189 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 189 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 175 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 175 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcB));
+  SHLI_VSTORE(out + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psA));
+  SHLI_VSTORE(out + SHLI_W + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-3.17731765f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-3.17731765f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(3.17731765f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(3.17731765f), ddB);
+  SHLI_VSTORE(out + 98 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 98 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 82 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 82 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.32916406f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.175219161f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.32916406f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.175219161f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.1539449f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.1539449f), xaB, ddB);
+  SHLI_VSTORE(out + 118 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 118 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 102 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 102 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.91095933f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.277234222f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.91095933f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.277234222f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.63372511f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.63372511f), xbB, ddB);
+  SHLI_VSTORE(out + 140 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 140 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 124 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 124 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.68095132f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.349689303f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.68095132f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.349689303f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.33126202f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.33126202f), xaB, ddB);
+  SHLI_VSTORE(out + 164 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 164 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 148 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 148 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.53546276f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.405674042f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.53546276f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.405674042f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.12978872f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.12978872f), xbB, ddB);
+  SHLI_VSTORE(out + 190 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 190 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 174 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 174 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 99 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 99 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), pcB));
+  SHLI_VSTORE(out + 81 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), psA));
+  SHLI_VSTORE(out + SHLI_W + 81 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(3.4318953f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(3.4318953f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-3.4318953f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-3.4318953f), ddB);
+  SHLI_VSTORE(out + 119 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 119 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 101 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 101 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.47491007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.165471908f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.47491007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.165471908f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.30943816f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.30943816f), xaB, ddB);
+  SHLI_VSTORE(out + 141 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 141 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 123 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 123 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.02108989f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.262703469f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.02108989f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.262703469f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.75838642f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.75838642f), xbB, ddB);
+  SHLI_VSTORE(out + 165 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 165 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 147 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 147 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.76955855f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.332347026f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.76955855f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.332347026f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.43721152f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.43721152f), xaB, ddB);
+  SHLI_VSTORE(out + 191 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 191 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 173 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 173 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 120 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 120 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), pcB));
+  SHLI_VSTORE(out + 100 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), psA));
+  SHLI_VSTORE(out + SHLI_W + 100 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-3.6802977f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-3.6802977f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(3.6802977f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(3.6802977f), ddB);
+  SHLI_VSTORE(out + 142 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 142 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 122 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 122 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.61499403f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.157173653f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.61499403f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.157173653f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.45782037f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.45782037f), xaB, ddB);
+  SHLI_VSTORE(out + 166 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 166 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 146 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 146 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.12771621f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.250217297f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.12771621f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.250217297f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.87749891f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.87749891f), xbB, ddB);
+  SHLI_VSTORE(out + 192 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 192 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 172 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 172 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 143 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 143 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), pcB));
+  SHLI_VSTORE(out + 121 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), psA));
+  SHLI_VSTORE(out + SHLI_W + 121 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(3.92321053f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(3.92321053f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-3.92321053f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-3.92321053f), ddB);
+  SHLI_VSTORE(out + 167 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 167 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 145 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 145 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.75f), SHLI_VMUL(tA, xaA), SHLI_VMUL(SHLI_VSET(0.15f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.75f), SHLI_VMUL(tB, xaB), SHLI_VMUL(SHLI_VSET(0.15f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.6f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.6f), xaB, ddB);
+  SHLI_VSTORE(out + 193 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 193 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 171 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 171 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 168 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 168 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), pcB));
+  SHLI_VSTORE(out + 144 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), psA));
+  SHLI_VSTORE(out + SHLI_W + 144 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-4.16119315f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-4.16119315f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(4.16119315f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(4.16119315f), ddB);
+  SHLI_VSTORE(out + 194 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 194 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 170 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 170 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 195 * stride, SHLI_VMUL(SHLI_VSET(-0.816077119f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 195 * stride, SHLI_VMUL(SHLI_VSET(-0.816077119f), pcB));
+  SHLI_VSTORE(out + 169 * stride, SHLI_VMUL(SHLI_VSET(-0.816077119f), psA));
+  SHLI_VSTORE(out + SHLI_W + 169 * stride, SHLI_VMUL(SHLI_VSET(-0.816077119f), psB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_15(const float *x, const float *y, const float *z, float *out,
+                              ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V s2A = SHLI_VMADD(xA, xA, SHLI_VMUL(yA, yA));
+  SHLI_V s2B = SHLI_VMADD(xB, xB, SHLI_VMUL(yB, yB));
+  SHLI_V irA = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zA, zA, s2A)));
+  SHLI_V irB = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zB, zB, s2B)));
+  SHLI_V azA = SHLI_VMUL(SHLI_VABS(zA), irA);
+  SHLI_V azB = SHLI_VMUL(SHLI_VABS(zB), irB);
+  SHLI_V tA = SHLI_VDIV(SHLI_VMUL(s2A, SHLI_VMUL(irA, irA)), SHLI_VADD(SHLI_VSET(1.0f), azA));
+  SHLI_V tB = SHLI_VDIV(SHLI_VMUL(s2B, SHLI_VMUL(irB, irB)), SHLI_VADD(SHLI_VSET(1.0f), azB));
+  SHLI_V sgA = SHLI_VSIGN1(zA);
+  SHLI_V sgB = SHLI_VSIGN1(zB);
+  SHLI_V pcA;
+  SHLI_V pcB;
+  SHLI_V psA;
+  SHLI_V psB;
+  SHLI_V qcA;
+  SHLI_V qcB;
+  SHLI_V gcA;
+  SHLI_V gcB;
+  SHLI_V gsA;
+  SHLI_V gsB;
+  SHLI_V xaA;
+  SHLI_V xaB;
+  SHLI_V xbA;
+  SHLI_V xbB;
+  SHLI_V ddA;
+  SHLI_V ddB;
+  xA = SHLI_VMUL(xA, irA);
+  xB = SHLI_VMUL(xB, irB);
+  yA = SHLI_VMUL(yA, irA);
+  yB = SHLI_VMUL(yB, irB);
+  pcA = xA;
+  pcB = xB;
+  psA = yA;
+  psB = yB;
+  SHLI_VSTORE(out, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W, SHLI_VSET(0.282094792f));
+  ddA = SHLI_VMUL(SHLI_VSET(-0.488602512f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-0.488602512f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(0.488602512f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(0.488602512f), ddB);
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.29099445f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.29099445f), xaB, ddB);
+  SHLI_VSTORE(out + 6 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 6 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.18321596f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.18321596f), xbB, ddB);
+  SHLI_VSTORE(out + 12 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 12 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.13389342f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.13389342f), xaB, ddB);
+  SHLI_VSTORE(out + 20 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 20 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.1055416f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.1055416f), xbB, ddB);
+  SHLI_VSTORE(out + 30 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 30 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.08711461f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.08711461f), xaB, ddB);
+  SHLI_VSTORE(out + 42 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 42 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.07417231f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.07417231f), xbB, ddB);
+  SHLI_VSTORE(out + 56 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 56 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.06458129f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.06458129f), xaB, ddB);
+  SHLI_VSTORE(out + 72 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 72 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.9969112f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.939722915f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.9969112f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.939722915f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.05718828f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.05718828f), xbB, ddB);
+  SHLI_VSTORE(out + 90 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 90 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99749844f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.946183469f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99749844f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.946183469f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.05131497f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.05131497f), xaB, ddB);
+  SHLI_VSTORE(out + 110 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 110 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99793282f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.951396579f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99793282f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.951396579f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.04653624f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.04653624f), xbB, ddB);
+  SHLI_VSTORE(out + 132 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 132 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99826313f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.955691064f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99826313f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.955691064f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.04257207f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.04257207f), xaB, ddB);
+  SHLI_VSTORE(out + 156 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 156 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99852016f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.959289678f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99852016f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.959289678f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.03923048f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.03923048f), xbB, ddB);
+  SHLI_VSTORE(out + 182 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 182 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99872408f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.962348632f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99872408f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.962348632f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.03637545f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.03637545f), xaB, ddB);
+  SHLI_VSTORE(out + 210 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 210 * stride, xbB);
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.09254843f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.09254843f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.09254843f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.09254843f), ddB);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 7 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 5 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.67332005f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.67332005f), xaB, ddB);
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 13 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 11 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.46385011f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.46385011f), xbB, ddB);
+  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 21 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 19 * stride, SHLI_VMUL(xaB, gsB));
+  ddA =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tA, xaA), SHLI_VMUL(SHLI_VSET(0.6770032f), ddA));
+  ddB =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tB, xaB), SHLI_VMUL(SHLI_VSET(0.6770032f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.3540064f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.3540064f), xaB, ddB);
+  SHLI_VSTORE(out + 31 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 31 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 29 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 29 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.28629136f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.28629136f), xbB, ddB);
+  SHLI_VSTORE(out + 43 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 43 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 41 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 41 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.24034735f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.24034735f), xaB, ddB);
+  SHLI_VSTORE(out + 57 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 57 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 55 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 55 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.20712172f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.20712172f), xbB, ddB);
+  SHLI_VSTORE(out + 73 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 73 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 71 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 71 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00935313f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.8273807f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00935313f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.8273807f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.18197243f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.18197243f), xaB, ddB);
+  SHLI_VSTORE(out + 91 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 91 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 89 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 89 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00756146f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.845289037f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00756146f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.845289037f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.16227243f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.16227243f), xbB, ddB);
+  SHLI_VSTORE(out + 111 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 111 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 109 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 109 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00624026f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.859817256f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00624026f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.859817256f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.14642301f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.14642301f), xaB, ddB);
+  SHLI_VSTORE(out + 133 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 133 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 131 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 131 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0052379f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.871842564f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0052379f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.871842564f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.13339533f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.13339533f), xbB, ddB);
+  SHLI_VSTORE(out + 157 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 157 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 155 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 155 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00445931f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.881962098f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00445931f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.881962098f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.12249722f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.12249722f), xaB, ddB);
+  SHLI_VSTORE(out + 183 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 183 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 181 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 181 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00384246f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.89059665f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00384246f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.89059665f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.11324581f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.11324581f), xbB, ddB);
+  SHLI_VSTORE(out + 211 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 211 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 209 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 209 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcB));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psA));
+  SHLI_VSTORE(out + SHLI_W + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-1.44530572f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-1.44530572f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(1.44530572f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(1.44530572f), ddB);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 14 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 10 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.96396101f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.96396101f), xaB, ddB);
+  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 22 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 18 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.68874268f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.68874268f), xbB, ddB);
+  SHLI_VSTORE(out + 32 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 32 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 28 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 28 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.53741223f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.53741223f), xaB, ddB);
+  SHLI_VSTORE(out + 44 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 44 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 40 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 40 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.44115338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.44115338f), xbB, ddB);
+  SHLI_VSTORE(out + 58 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 58 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 54 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 54 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.37436854f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.37436854f), xaB, ddB);
+  SHLI_VSTORE(out + 74 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 74 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 70 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 70 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04812236f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.722866715f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04812236f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.722866715f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.32525564f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.32525564f), xbB, ddB);
+  SHLI_VSTORE(out + 92 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 92 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 88 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 88 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0386883f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.751095691f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0386883f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.751095691f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.28759261f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.28759261f), xaB, ddB);
+  SHLI_VSTORE(out + 112 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 112 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 108 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 108 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0317985f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.774018475f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0317985f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.774018475f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.25778002f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.25778002f), xbB, ddB);
+  SHLI_VSTORE(out + 134 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 134 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 130 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 130 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02660871f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.793020799f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02660871f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.793020799f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.23358791f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.23358791f), xaB, ddB);
+  SHLI_VSTORE(out + 158 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 158 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 154 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 154 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02259959f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.809039835f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02259959f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.809039835f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.21355975f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.21355975f), xbB, ddB);
+  SHLI_VSTORE(out + 184 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 184 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 180 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 180 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0194368f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.822733512f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0194368f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.822733512f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.19670329f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.19670329f), xaB, ddB);
+  SHLI_VSTORE(out + 212 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 212 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 208 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 208 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcB));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psA));
+  SHLI_VSTORE(out + SHLI_W + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.77013077f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.77013077f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.77013077f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.77013077f), ddB);
+  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 23 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 17 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.21108319f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.21108319f), xaB, ddB);
+  SHLI_VSTORE(out + 33 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 33 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 27 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 27 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.88293774f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.88293774f), xbB, ddB);
+  SHLI_VSTORE(out + 45 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 45 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 39 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 39 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.69841555f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.69841555f), xaB, ddB);
+  SHLI_VSTORE(out + 59 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 59 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 53 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 53 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.57902924f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.57902924f), xbB, ddB);
+  SHLI_VSTORE(out + 75 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 75 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 69 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 69 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11804417f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.622954168f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11804417f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.622954168f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.49509f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.49509f), xaB, ddB);
+  SHLI_VSTORE(out + 93 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 93 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 87 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 87 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09394732f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.661246523f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09394732f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.661246523f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.4327008f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.4327008f), xbB, ddB);
+  SHLI_VSTORE(out + 113 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 113 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 107 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 107 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.07665597f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.692218655f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.07665597f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.692218655f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.38443731f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.38443731f), xaB, ddB);
+  SHLI_VSTORE(out + 135 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 135 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 129 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 129 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.06379729f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.717842536f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.06379729f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.717842536f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.34595476f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.34595476f), xbB, ddB);
+  SHLI_VSTORE(out + 159 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 159 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 153 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 153 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.05395959f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.739425453f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.05395959f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.739425453f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.31453414f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.31453414f), xaB, ddB);
+  SHLI_VSTORE(out + 185 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 185 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 179 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 179 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04625653f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.757872788f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04625653f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.757872788f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.28838374f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.28838374f), xbB, ddB);
+  SHLI_VSTORE(out + 213 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 213 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 207 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 207 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcB));
+  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psA));
+  SHLI_VSTORE(out + SHLI_W + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.07566231f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.07566231f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.07566231f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.07566231f), ddB);
+  SHLI_VSTORE(out + 34 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 34 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 26 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 26 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.43086217f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.43086217f), xaB, ddB);
+  SHLI_VSTORE(out + 46 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 46 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 38 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 38 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.05688338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.05688338f), xbB, ddB);
+  SHLI_VSTORE(out + 60 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 60 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 52 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 52 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.84390889f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.84390889f), xaB, ddB);
+  SHLI_VSTORE(out + 76 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 76 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 68 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 68 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.22917715f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.524512271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.22917715f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.524512271f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.70466488f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.70466488f), xbB, ddB);
+  SHLI_VSTORE(out + 94 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 94 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 86 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 86 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17944947f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.573539335f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17944947f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.573539335f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.60591014f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.60591014f), xaB, ddB);
+  SHLI_VSTORE(out + 114 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 114 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 106 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 106 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.14476106f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.612788874f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.14476106f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.612788874f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.53197218f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.53197218f), xbB, ddB);
+  SHLI_VSTORE(out + 136 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 136 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 128 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 128 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11947812f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.645058558f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11947812f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.645058558f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.47441956f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.47441956f), xaB, ddB);
+  SHLI_VSTORE(out + 160 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 160 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 152 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 152 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.10042013f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.67213444f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.10042013f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.67213444f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.42828569f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.42828569f), xbB, ddB);
+  SHLI_VSTORE(out + 186 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 186 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 178 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 178 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.08566536f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.695221787f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.08566536f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.695221787f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.39044357f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.39044357f), xaB, ddB);
+  SHLI_VSTORE(out + 214 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 214 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 206 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 206 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcB));
+  SHLI_VSTORE(out + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psA));
+  SHLI_VSTORE(out + SHLI_W + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.36661916f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.36661916f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.36661916f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.36661916f), ddB);
+  SHLI_VSTORE(out + 47 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 47 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 37 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 37 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.63117406f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.63117406f), xaB, ddB);
+  SHLI_VSTORE(out + 61 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 61 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 51 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 51 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.21610269f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.21610269f), xbB, ddB);
+  SHLI_VSTORE(out + 77 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 77 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 67 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 67 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.40163635f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.423818179f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.40163635f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.423818179f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.97781817f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.97781817f), xaB, ddB);
+  SHLI_VSTORE(out + 95 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 95 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 85 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 85 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30651252f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.485581583f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30651252f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.485581583f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.82093094f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.82093094f), xbB, ddB);
+  SHLI_VSTORE(out + 115 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 115 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 105 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 105 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.24304481f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.534058287f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.24304481f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.534058287f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.70898652f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.70898652f), xaB, ddB);
+  SHLI_VSTORE(out + 137 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 137 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 127 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 127 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.19816577f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.57343455f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.19816577f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.57343455f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.62473122f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.62473122f), xbB, ddB);
+  SHLI_VSTORE(out + 161 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 161 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 151 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 151 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.16506351f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.606217783f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.16506351f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.606217783f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.55884573f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.55884573f), xaB, ddB);
+  SHLI_VSTORE(out + 187 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 187 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 177 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 177 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.13984751f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.634028892f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.13984751f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.634028892f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.50581862f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.50581862f), xbB, ddB);
+  SHLI_VSTORE(out + 215 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 215 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 205 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 205 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcB));
+  SHLI_VSTORE(out + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psA));
+  SHLI_VSTORE(out + SHLI_W + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.64596066f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.64596066f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.64596066f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.64596066f), ddB);
+  SHLI_VSTORE(out + 62 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 62 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 50 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 50 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.81661736f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.81661736f), xaB, ddB);
+  SHLI_VSTORE(out + 78 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 78 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 66 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 66 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67913751f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.315192648f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67913751f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.315192648f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.36394486f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.36394486f), xbB, ddB);
+  SHLI_VSTORE(out + 96 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 96 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 84 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 84 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.49687304f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.394243112f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.49687304f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.394243112f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.10262993f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.10262993f), xaB, ddB);
+  SHLI_VSTORE(out + 116 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 116 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 104 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 104 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.38376864f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.45405117f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.38376864f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.45405117f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.92971747f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.92971747f), xbB, ddB);
+  SHLI_VSTORE(out + 138 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 138 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 126 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 126 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30739552f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.501607721f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30739552f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.501607721f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.8057878f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.8057878f), xaB, ddB);
+  SHLI_VSTORE(out + 162 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 162 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 150 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 150 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.25281778f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.540676268f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.25281778f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.540676268f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.71214152f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.71214152f), xbB, ddB);
+  SHLI_VSTORE(out + 188 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 188 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 176 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 176 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.21218218f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.573528713f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.21218218f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.573528713f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.63865347f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.63865347f), xaB, ddB);
+  SHLI_VSTORE(out + 216 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 216 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 204 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 204 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcB));
+  SHLI_VSTORE(out + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psA));
+  SHLI_VSTORE(out + SHLI_W + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.91570664f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.91570664f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.91570664f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.91570664f), ddB);
+  SHLI_VSTORE(out + 79 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 79 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 65 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 65 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.17706626f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.18688625f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.17706626f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.18688625f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.99018001f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.99018001f), xaB, ddB);
+  SHLI_VSTORE(out + 97 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 97 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 83 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 83 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.79705728f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.294427082f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.79705728f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.294427082f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.5026302f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.5026302f), xbB, ddB);
+  SHLI_VSTORE(out + 117 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 117 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 103 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 103 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.59004504f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.370006435f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.59004504f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.370006435f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.22003861f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.22003861f), xaB, ddB);
+  SHLI_VSTORE(out + 139 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 139 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 125 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 125 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.46020966f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.42786255f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.46020966f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.42786255f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.03234711f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.03234711f), xbB, ddB);
+  SHLI_VSTORE(out + 163 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 163 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 149 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 149 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.37170825f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.474341649f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.37170825f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.474341649f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.8973666f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.8973666f), xaB, ddB);
+  SHLI_VSTORE(out + 189 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 189 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 175 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 175 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30792777f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.512872839f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30792777f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.512872839f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.79505494f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.79505494f), xbB, ddB);
+  SHLI_VSTORE(out + 217 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 217 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 203 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 203 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcB));
+  SHLI_VSTORE(out + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psA));
+  SHLI_VSTORE(out + SHLI_W + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-3.17731765f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-3.17731765f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(3.17731765f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(3.17731765f), ddB);
+  SHLI_VSTORE(out + 98 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 98 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 82 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 82 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.32916406f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.175219161f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.32916406f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.175219161f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.1539449f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.1539449f), xaB, ddB);
+  SHLI_VSTORE(out + 118 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 118 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 102 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 102 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.91095933f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.277234222f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.91095933f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.277234222f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.63372511f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.63372511f), xbB, ddB);
+  SHLI_VSTORE(out + 140 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 140 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 124 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 124 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.68095132f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.349689303f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.68095132f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.349689303f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.33126202f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.33126202f), xaB, ddB);
+  SHLI_VSTORE(out + 164 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 164 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 148 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 148 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.53546276f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.405674042f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.53546276f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.405674042f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.12978872f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.12978872f), xbB, ddB);
+  SHLI_VSTORE(out + 190 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 190 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 174 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 174 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.43553242f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.451024523f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.43553242f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.451024523f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.9845079f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.9845079f), xaB, ddB);
+  SHLI_VSTORE(out + 218 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 218 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 202 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 202 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 99 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 99 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), pcB));
+  SHLI_VSTORE(out + 81 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), psA));
+  SHLI_VSTORE(out + SHLI_W + 81 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(3.4318953f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(3.4318953f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-3.4318953f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-3.4318953f), ddB);
+  SHLI_VSTORE(out + 119 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 119 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 101 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 101 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.47491007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.165471908f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.47491007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.165471908f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.30943816f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.30943816f), xaB, ddB);
+  SHLI_VSTORE(out + 141 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 141 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 123 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 123 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.02108989f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.262703469f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.02108989f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.262703469f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.75838642f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.75838642f), xbB, ddB);
+  SHLI_VSTORE(out + 165 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 165 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 147 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 147 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.76955855f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.332347026f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.76955855f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.332347026f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.43721152f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.43721152f), xaB, ddB);
+  SHLI_VSTORE(out + 191 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 191 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 173 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 173 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.60934774f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.386570036f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.60934774f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.386570036f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.22277771f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.22277771f), xbB, ddB);
+  SHLI_VSTORE(out + 219 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 219 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 201 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 201 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 120 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 120 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), pcB));
+  SHLI_VSTORE(out + 100 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), psA));
+  SHLI_VSTORE(out + SHLI_W + 100 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-3.6802977f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-3.6802977f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(3.6802977f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(3.6802977f), ddB);
+  SHLI_VSTORE(out + 142 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 142 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 122 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 122 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.61499403f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.157173653f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.61499403f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.157173653f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.45782037f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.45782037f), xaB, ddB);
+  SHLI_VSTORE(out + 166 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 166 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 146 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 146 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.12771621f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.250217297f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.12771621f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.250217297f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.87749891f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.87749891f), xbB, ddB);
+  SHLI_VSTORE(out + 192 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 192 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 172 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 172 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.85591491f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.317323879f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.85591491f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.317323879f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.53859104f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.53859104f), xaB, ddB);
+  SHLI_VSTORE(out + 220 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 220 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 200 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 200 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 143 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 143 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), pcB));
+  SHLI_VSTORE(out + 121 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), psA));
+  SHLI_VSTORE(out + SHLI_W + 121 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(3.92321053f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(3.92321053f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-3.92321053f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-3.92321053f), ddB);
+  SHLI_VSTORE(out + 167 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 167 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 145 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 145 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.75f), SHLI_VMUL(tA, xaA), SHLI_VMUL(SHLI_VSET(0.15f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.75f), SHLI_VMUL(tB, xaB), SHLI_VMUL(SHLI_VSET(0.15f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.6f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.6f), xaB, ddB);
+  SHLI_VSTORE(out + 193 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 193 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 171 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 171 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.23109888f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.239340658f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.23109888f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.239340658f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.99175823f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.99175823f), xbB, ddB);
+  SHLI_VSTORE(out + 221 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 221 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 199 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 199 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 168 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 168 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), pcB));
+  SHLI_VSTORE(out + 144 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), psA));
+  SHLI_VSTORE(out + SHLI_W + 144 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-4.16119315f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-4.16119315f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(4.16119315f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(4.16119315f), ddB);
+  SHLI_VSTORE(out + 194 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 194 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 170 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 170 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.88042424f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.143719416f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.88042424f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.143719416f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.73670483f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.73670483f), xaB, ddB);
+  SHLI_VSTORE(out + 222 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 222 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 198 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 198 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 195 * stride, SHLI_VMUL(SHLI_VSET(-0.816077119f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 195 * stride, SHLI_VMUL(SHLI_VSET(-0.816077119f), pcB));
+  SHLI_VSTORE(out + 169 * stride, SHLI_VMUL(SHLI_VSET(-0.816077119f), psA));
+  SHLI_VSTORE(out + SHLI_W + 169 * stride, SHLI_VMUL(SHLI_VSET(-0.816077119f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(4.39470978f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(4.39470978f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-4.39470978f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-4.39470978f), ddB);
+  SHLI_VSTORE(out + 223 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 223 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 197 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 197 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 224 * stride, SHLI_VMUL(SHLI_VSET(0.830522083f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 224 * stride, SHLI_VMUL(SHLI_VSET(0.830522083f), pcB));
+  SHLI_VSTORE(out + 196 * stride, SHLI_VMUL(SHLI_VSET(0.830522083f), psA));
+  SHLI_VSTORE(out + SHLI_W + 196 * stride, SHLI_VMUL(SHLI_VSET(0.830522083f), psB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+static void shli_sh_batch2_16(const float *x, const float *y, const float *z, float *out,
+                              ptrdiff_t stride) {
+  SHLI_V xA = SHLI_VLOAD(x), yA = SHLI_VLOAD(y), zA = SHLI_VLOAD(z);
+  SHLI_V xB = SHLI_VLOAD(x + SHLI_W), yB = SHLI_VLOAD(y + SHLI_W), zB = SHLI_VLOAD(z + SHLI_W);
+  SHLI_V s2A = SHLI_VMADD(xA, xA, SHLI_VMUL(yA, yA));
+  SHLI_V s2B = SHLI_VMADD(xB, xB, SHLI_VMUL(yB, yB));
+  SHLI_V irA = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zA, zA, s2A)));
+  SHLI_V irB = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(zB, zB, s2B)));
+  SHLI_V azA = SHLI_VMUL(SHLI_VABS(zA), irA);
+  SHLI_V azB = SHLI_VMUL(SHLI_VABS(zB), irB);
+  SHLI_V tA = SHLI_VDIV(SHLI_VMUL(s2A, SHLI_VMUL(irA, irA)), SHLI_VADD(SHLI_VSET(1.0f), azA));
+  SHLI_V tB = SHLI_VDIV(SHLI_VMUL(s2B, SHLI_VMUL(irB, irB)), SHLI_VADD(SHLI_VSET(1.0f), azB));
+  SHLI_V sgA = SHLI_VSIGN1(zA);
+  SHLI_V sgB = SHLI_VSIGN1(zB);
+  SHLI_V pcA;
+  SHLI_V pcB;
+  SHLI_V psA;
+  SHLI_V psB;
+  SHLI_V qcA;
+  SHLI_V qcB;
+  SHLI_V gcA;
+  SHLI_V gcB;
+  SHLI_V gsA;
+  SHLI_V gsB;
+  SHLI_V xaA;
+  SHLI_V xaB;
+  SHLI_V xbA;
+  SHLI_V xbB;
+  SHLI_V ddA;
+  SHLI_V ddB;
+  xA = SHLI_VMUL(xA, irA);
+  xB = SHLI_VMUL(xB, irB);
+  yA = SHLI_VMUL(yA, irA);
+  yB = SHLI_VMUL(yB, irB);
+  pcA = xA;
+  pcB = xB;
+  psA = yA;
+  psB = yB;
+  SHLI_VSTORE(out, SHLI_VSET(0.282094792f));
+  SHLI_VSTORE(out + SHLI_W, SHLI_VSET(0.282094792f));
+  ddA = SHLI_VMUL(SHLI_VSET(-0.488602512f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-0.488602512f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(0.488602512f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(0.488602512f), ddB);
+  SHLI_VSTORE(out + 2 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 2 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.93649167f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.645497224f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.29099445f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.29099445f), xaB, ddB);
+  SHLI_VSTORE(out + 6 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 6 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.97202659f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.788810638f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.18321596f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.18321596f), xbB, ddB);
+  SHLI_VSTORE(out + 12 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 12 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98431348f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.850420064f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.13389342f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.13389342f), xaB, ddB);
+  SHLI_VSTORE(out + 20 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 20 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.98997487f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.884433277f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.1055416f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.1055416f), xbB, ddB);
+  SHLI_VSTORE(out + 30 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 30 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99304346f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.905928844f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.08711461f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.08711461f), xaB, ddB);
+  SHLI_VSTORE(out + 42 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 42 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99489143f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.920719124f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.07417231f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.07417231f), xbB, ddB);
+  SHLI_VSTORE(out + 56 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 56 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99608993f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.931508633f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.06458129f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.06458129f), xaB, ddB);
+  SHLI_VSTORE(out + 72 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 72 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.9969112f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.939722915f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.9969112f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.939722915f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.05718828f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.05718828f), xbB, ddB);
+  SHLI_VSTORE(out + 90 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 90 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99749844f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.946183469f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99749844f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.946183469f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.05131497f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.05131497f), xaB, ddB);
+  SHLI_VSTORE(out + 110 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 110 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99793282f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.951396579f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99793282f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.951396579f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.04653624f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.04653624f), xbB, ddB);
+  SHLI_VSTORE(out + 132 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 132 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99826313f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.955691064f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99826313f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.955691064f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.04257207f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.04257207f), xaB, ddB);
+  SHLI_VSTORE(out + 156 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 156 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99852016f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.959289678f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99852016f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.959289678f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.03923048f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.03923048f), xbB, ddB);
+  SHLI_VSTORE(out + 182 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 182 * stride, SHLI_VMUL(sgB, xaB));
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99872408f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.962348632f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99872408f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.962348632f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.03637545f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.03637545f), xaB, ddB);
+  SHLI_VSTORE(out + 210 * stride, xbA);
+  SHLI_VSTORE(out + SHLI_W + 210 * stride, xbB);
+  ddA = SHLI_VNMADD(SHLI_VSET(1.99888858f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.964980694f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(1.99888858f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.964980694f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.03390789f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.03390789f), xbB, ddB);
+  SHLI_VSTORE(out + 240 * stride, SHLI_VMUL(sgA, xaA));
+  SHLI_VSTORE(out + SHLI_W + 240 * stride, SHLI_VMUL(sgB, xaB));
+  SHLI_VSTORE(out + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 3 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), pcB));
+  SHLI_VSTORE(out + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psA));
+  SHLI_VSTORE(out + SHLI_W + 1 * stride, SHLI_VMUL(SHLI_VSET(-0.488602512f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.09254843f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.09254843f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.09254843f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.09254843f), ddB);
+  SHLI_VSTORE(out + 7 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 7 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 5 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 5 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09165007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.418330013f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.67332005f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.67332005f), xaB, ddB);
+  SHLI_VSTORE(out + 13 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 13 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 11 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 11 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04939015f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.585540044f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.46385011f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.46385011f), xbB, ddB);
+  SHLI_VSTORE(out + 21 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 21 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 19 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 19 * stride, SHLI_VMUL(xaB, gsB));
+  ddA =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tA, xaA), SHLI_VMUL(SHLI_VSET(0.6770032f), ddA));
+  ddB =
+      SHLI_VNMADD(SHLI_VSET(2.0310096f), SHLI_VMUL(tB, xaB), SHLI_VMUL(SHLI_VSET(0.6770032f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.3540064f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.3540064f), xaB, ddB);
+  SHLI_VSTORE(out + 31 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 31 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 29 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 29 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02131499f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.735023632f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.28629136f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.28629136f), xbB, ddB);
+  SHLI_VSTORE(out + 43 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 43 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 41 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 41 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01556444f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.775217091f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.24034735f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.24034735f), xaB, ddB);
+  SHLI_VSTORE(out + 57 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 57 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 55 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 55 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01186954f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.804747816f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.20712172f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.20712172f), xbB, ddB);
+  SHLI_VSTORE(out + 73 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 73 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 71 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 71 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00935313f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.8273807f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00935313f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.8273807f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.18197243f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.18197243f), xaB, ddB);
+  SHLI_VSTORE(out + 91 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 91 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 89 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 89 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00756146f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.845289037f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00756146f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.845289037f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.16227243f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.16227243f), xbB, ddB);
+  SHLI_VSTORE(out + 111 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 111 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 109 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 109 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00624026f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.859817256f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00624026f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.859817256f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.14642301f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.14642301f), xaB, ddB);
+  SHLI_VSTORE(out + 133 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 133 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 131 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 131 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0052379f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.871842564f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0052379f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.871842564f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.13339533f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.13339533f), xbB, ddB);
+  SHLI_VSTORE(out + 157 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 157 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 155 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 155 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00445931f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.881962098f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00445931f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.881962098f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.12249722f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.12249722f), xaB, ddB);
+  SHLI_VSTORE(out + 183 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 183 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 181 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 181 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00384246f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.89059665f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00384246f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.89059665f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.11324581f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.11324581f), xbB, ddB);
+  SHLI_VSTORE(out + 211 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 211 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 209 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 209 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.00334542f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.898051394f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.00334542f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.898051394f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.10529402f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.10529402f), xaB, ddB);
+  SHLI_VSTORE(out + 241 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 241 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 239 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 239 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 8 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), pcB));
+  SHLI_VSTORE(out + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psA));
+  SHLI_VSTORE(out + SHLI_W + 4 * stride, SHLI_VMUL(SHLI_VSET(0.546274215f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-1.44530572f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-1.44530572f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(1.44530572f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(1.44530572f), ddB);
+  SHLI_VSTORE(out + 14 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 14 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 10 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 10 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.29128785f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.327326835f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.96396101f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.96396101f), xaB, ddB);
+  SHLI_VSTORE(out + 22 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 22 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 18 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 18 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17124059f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.48249791f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.68874268f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.68874268f), xbB, ddB);
+  SHLI_VSTORE(out + 32 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 32 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 28 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 28 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11394182f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.576529586f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.53741223f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.53741223f), xaB, ddB);
+  SHLI_VSTORE(out + 44 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 44 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 40 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 40 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.081666f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.640512615f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.44115338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.44115338f), xbB, ddB);
+  SHLI_VSTORE(out + 58 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 58 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 54 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 54 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.06155281f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.687184271f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.37436854f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.37436854f), xaB, ddB);
+  SHLI_VSTORE(out + 74 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 74 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 70 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 70 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04812236f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.722866715f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04812236f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.722866715f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.32525564f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.32525564f), xbB, ddB);
+  SHLI_VSTORE(out + 92 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 92 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 88 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 88 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0386883f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.751095691f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0386883f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.751095691f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.28759261f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.28759261f), xaB, ddB);
+  SHLI_VSTORE(out + 112 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 112 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 108 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 108 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0317985f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.774018475f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0317985f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.774018475f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.25778002f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.25778002f), xbB, ddB);
+  SHLI_VSTORE(out + 134 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 134 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 130 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 130 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02660871f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.793020799f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02660871f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.793020799f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.23358791f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.23358791f), xaB, ddB);
+  SHLI_VSTORE(out + 158 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 158 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 154 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 154 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.02259959f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.809039835f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.02259959f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.809039835f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.21355975f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.21355975f), xbB, ddB);
+  SHLI_VSTORE(out + 184 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 184 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 180 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 180 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.0194368f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.822733512f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.0194368f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.822733512f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.19670329f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.19670329f), xaB, ddB);
+  SHLI_VSTORE(out + 212 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 212 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 208 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 208 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.01689695f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.834578048f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.01689695f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.834578048f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.1823189f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.1823189f), xbB, ddB);
+  SHLI_VSTORE(out + 242 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 242 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 238 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 238 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 15 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), pcB));
+  SHLI_VSTORE(out + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psA));
+  SHLI_VSTORE(out + SHLI_W + 9 * stride, SHLI_VMUL(SHLI_VSET(-0.59004359f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(1.77013077f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(1.77013077f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-1.77013077f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-1.77013077f), ddB);
+  SHLI_VSTORE(out + 23 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 23 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 17 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 17 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.48746859f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.276385399f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.21108319f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.21108319f), xaB, ddB);
+  SHLI_VSTORE(out + 33 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 33 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 27 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 27 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30136835f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.41843061f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.88293774f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.88293774f), xbB, ddB);
+  SHLI_VSTORE(out + 45 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 45 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 39 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 39 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.20794022f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.509524665f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.69841555f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.69841555f), xaB, ddB);
+  SHLI_VSTORE(out + 59 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 59 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 53 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 53 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.15322169f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.57419245f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.57902924f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.57902924f), xbB, ddB);
+  SHLI_VSTORE(out + 75 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 75 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 69 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 69 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11804417f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.622954168f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11804417f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.622954168f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.49509f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.49509f), xaB, ddB);
+  SHLI_VSTORE(out + 93 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 93 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 87 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 87 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.09394732f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.661246523f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.09394732f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.661246523f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.4327008f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.4327008f), xbB, ddB);
+  SHLI_VSTORE(out + 113 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 113 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 107 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 107 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.07665597f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.692218655f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.07665597f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.692218655f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.38443731f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.38443731f), xaB, ddB);
+  SHLI_VSTORE(out + 135 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 135 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 129 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 129 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.06379729f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.717842536f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.06379729f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.717842536f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.34595476f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.34595476f), xbB, ddB);
+  SHLI_VSTORE(out + 159 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 159 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 153 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 153 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.05395959f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.739425453f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.05395959f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.739425453f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.31453414f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.31453414f), xaB, ddB);
+  SHLI_VSTORE(out + 185 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 185 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 179 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 179 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04625653f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.757872788f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04625653f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.757872788f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.28838374f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.28838374f), xbB, ddB);
+  SHLI_VSTORE(out + 213 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 213 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 207 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 207 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.04010711f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.773833733f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.04010711f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.773833733f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.26627338f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.26627338f), xaB, ddB);
+  SHLI_VSTORE(out + 243 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 243 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 237 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 237 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 24 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), pcB));
+  SHLI_VSTORE(out + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psA));
+  SHLI_VSTORE(out + SHLI_W + 16 * stride, SHLI_VMUL(SHLI_VSET(0.625835735f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.07566231f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.07566231f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.07566231f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.07566231f), ddB);
+  SHLI_VSTORE(out + 34 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 34 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 26 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 26 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67394839f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.243086217f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.43086217f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.43086217f), xaB, ddB);
+  SHLI_VSTORE(out + 46 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 46 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 38 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 38 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.43086217f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.373978796f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.05688338f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.05688338f), xbB, ddB);
+  SHLI_VSTORE(out + 60 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 60 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 52 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 52 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30488611f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.460977223f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.84390889f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.84390889f), xaB, ddB);
+  SHLI_VSTORE(out + 76 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 76 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 68 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 68 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.22917715f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.524512271f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.22917715f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.524512271f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.70466488f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.70466488f), xbB, ddB);
+  SHLI_VSTORE(out + 94 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 94 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 86 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 86 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.17944947f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.573539335f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.17944947f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.573539335f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.60591014f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.60591014f), xaB, ddB);
+  SHLI_VSTORE(out + 114 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 114 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 106 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 106 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.14476106f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.612788874f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.14476106f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.612788874f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.53197218f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.53197218f), xbB, ddB);
+  SHLI_VSTORE(out + 136 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 136 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 128 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 128 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.11947812f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.645058558f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.11947812f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.645058558f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.47441956f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.47441956f), xaB, ddB);
+  SHLI_VSTORE(out + 160 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 160 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 152 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 152 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.10042013f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.67213444f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.10042013f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.67213444f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.42828569f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.42828569f), xbB, ddB);
+  SHLI_VSTORE(out + 186 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 186 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 178 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 178 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.08566536f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.695221787f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.08566536f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.695221787f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.39044357f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.39044357f), xaB, ddB);
+  SHLI_VSTORE(out + 214 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 214 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 206 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 206 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.07399021f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.715169039f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.07399021f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.715169039f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.35882117f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.35882117f), xbB, ddB);
+  SHLI_VSTORE(out + 244 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 244 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 236 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 236 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 35 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), pcB));
+  SHLI_VSTORE(out + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psA));
+  SHLI_VSTORE(out + SHLI_W + 25 * stride, SHLI_VMUL(SHLI_VSET(-0.656382057f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.36661916f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.36661916f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.36661916f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.36661916f), ddB);
+  SHLI_VSTORE(out + 47 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 47 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 37 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 37 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.85043856f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.219264505f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.63117406f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.63117406f), xaB, ddB);
+  SHLI_VSTORE(out + 61 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 61 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 51 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 51 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.55704156f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.340938875f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.21610269f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.21610269f), xbB, ddB);
+  SHLI_VSTORE(out + 77 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 77 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 67 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 67 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.40163635f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.423818179f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.40163635f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.423818179f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.97781817f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.97781817f), xaB, ddB);
+  SHLI_VSTORE(out + 95 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 95 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 85 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 85 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30651252f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.485581583f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30651252f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.485581583f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.82093094f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.82093094f), xbB, ddB);
+  SHLI_VSTORE(out + 115 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 115 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 105 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 105 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.24304481f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.534058287f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.24304481f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.534058287f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.70898652f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.70898652f), xaB, ddB);
+  SHLI_VSTORE(out + 137 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 137 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 127 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 127 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.19816577f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.57343455f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.19816577f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.57343455f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.62473122f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.62473122f), xbB, ddB);
+  SHLI_VSTORE(out + 161 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 161 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 151 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 151 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.16506351f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.606217783f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.16506351f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.606217783f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.55884573f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.55884573f), xaB, ddB);
+  SHLI_VSTORE(out + 187 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 187 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 177 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 177 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.13984751f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.634028892f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.13984751f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.634028892f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.50581862f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.50581862f), xbB, ddB);
+  SHLI_VSTORE(out + 215 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 215 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 205 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 205 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.1201415f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.65797495f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.1201415f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.65797495f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.46216655f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.46216655f), xaB, ddB);
+  SHLI_VSTORE(out + 245 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 245 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 235 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 235 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 48 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), pcB));
+  SHLI_VSTORE(out + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psA));
+  SHLI_VSTORE(out + SHLI_W + 36 * stride, SHLI_VMUL(SHLI_VSET(0.683184105f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-2.64596066f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-2.64596066f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(2.64596066f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(2.64596066f), ddB);
+  SHLI_VSTORE(out + 62 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 62 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 50 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 50 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.01780431f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.201186954f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.81661736f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.81661736f), xaB, ddB);
+  SHLI_VSTORE(out + 78 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 78 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 66 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 66 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.67913751f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.315192648f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.67913751f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.315192648f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.36394486f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.36394486f), xbB, ddB);
+  SHLI_VSTORE(out + 96 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 96 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 84 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 84 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.49687304f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.394243112f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.49687304f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.394243112f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.10262993f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.10262993f), xaB, ddB);
+  SHLI_VSTORE(out + 116 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 116 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 104 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 104 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.38376864f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.45405117f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.38376864f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.45405117f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.92971747f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.92971747f), xbB, ddB);
+  SHLI_VSTORE(out + 138 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 138 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 126 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 126 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30739552f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.501607721f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30739552f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.501607721f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.8057878f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.8057878f), xaB, ddB);
+  SHLI_VSTORE(out + 162 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 162 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 150 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 150 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.25281778f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.540676268f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.25281778f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.540676268f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.71214152f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.71214152f), xbB, ddB);
+  SHLI_VSTORE(out + 188 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 188 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 176 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 176 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.21218218f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.573528713f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.21218218f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.573528713f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.63865347f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.63865347f), xaB, ddB);
+  SHLI_VSTORE(out + 216 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 216 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 204 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 204 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.18096624f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.60164586f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.18096624f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.60164586f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.57932038f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.57932038f), xbB, ddB);
+  SHLI_VSTORE(out + 246 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 246 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 234 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 234 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 63 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), pcB));
+  SHLI_VSTORE(out + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psA));
+  SHLI_VSTORE(out + SHLI_W + 49 * stride, SHLI_VMUL(SHLI_VSET(-0.707162733f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(2.91570664f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(2.91570664f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-2.91570664f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-2.91570664f), ddB);
+  SHLI_VSTORE(out + 79 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 79 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 65 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 65 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.17706626f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.18688625f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.17706626f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.18688625f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.99018001f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.99018001f), xaB, ddB);
+  SHLI_VSTORE(out + 97 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 97 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 83 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 83 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.79705728f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.294427082f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.79705728f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.294427082f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.5026302f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.5026302f), xbB, ddB);
+  SHLI_VSTORE(out + 117 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 117 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 103 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 103 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.59004504f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.370006435f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.59004504f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.370006435f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.22003861f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.22003861f), xaB, ddB);
+  SHLI_VSTORE(out + 139 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 139 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 125 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 125 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.46020966f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.42786255f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.46020966f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.42786255f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.03234711f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.03234711f), xbB, ddB);
+  SHLI_VSTORE(out + 163 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 163 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 149 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 149 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.37170825f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.474341649f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.37170825f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.474341649f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.8973666f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.8973666f), xaB, ddB);
+  SHLI_VSTORE(out + 189 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 189 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 175 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 175 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.30792777f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.512872839f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.30792777f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.512872839f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.79505494f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.79505494f), xbB, ddB);
+  SHLI_VSTORE(out + 217 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 217 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 203 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 203 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.26007844f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.545536175f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.26007844f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.545536175f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.71454226f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.71454226f), xaB, ddB);
+  SHLI_VSTORE(out + 247 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 247 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 233 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 233 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 80 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), pcB));
+  SHLI_VSTORE(out + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psA));
+  SHLI_VSTORE(out + SHLI_W + 64 * stride, SHLI_VMUL(SHLI_VSET(0.72892666f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-3.17731765f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-3.17731765f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(3.17731765f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(3.17731765f), ddB);
+  SHLI_VSTORE(out + 98 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 98 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 82 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 82 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.32916406f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.175219161f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.32916406f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.175219161f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.1539449f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.1539449f), xaB, ddB);
+  SHLI_VSTORE(out + 118 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 118 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 102 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 102 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.91095933f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.277234222f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.91095933f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.277234222f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.63372511f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.63372511f), xbB, ddB);
+  SHLI_VSTORE(out + 140 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 140 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 124 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 124 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.68095132f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.349689303f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.68095132f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.349689303f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.33126202f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.33126202f), xaB, ddB);
+  SHLI_VSTORE(out + 164 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 164 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 148 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 148 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.53546276f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.405674042f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.53546276f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.405674042f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.12978872f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.12978872f), xbB, ddB);
+  SHLI_VSTORE(out + 190 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 190 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 174 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 174 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.43553242f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.451024523f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.43553242f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.451024523f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(1.9845079f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(1.9845079f), xaB, ddB);
+  SHLI_VSTORE(out + 218 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 218 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 202 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 202 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.36301734f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.488900139f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.36301734f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.488900139f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(1.8741172f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(1.8741172f), xbB, ddB);
+  SHLI_VSTORE(out + 248 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 248 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 232 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 232 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 99 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 99 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), pcB));
+  SHLI_VSTORE(out + 81 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), psA));
+  SHLI_VSTORE(out + SHLI_W + 81 * stride, SHLI_VMUL(SHLI_VSET(-0.748900952f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(3.4318953f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(3.4318953f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-3.4318953f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-3.4318953f), ddB);
+  SHLI_VSTORE(out + 119 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 119 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 101 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 101 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.47491007f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.165471908f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.47491007f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.165471908f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.30943816f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.30943816f), xaB, ddB);
+  SHLI_VSTORE(out + 141 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 141 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 123 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 123 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.02108989f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.262703469f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.02108989f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.262703469f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.75838642f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.75838642f), xbB, ddB);
+  SHLI_VSTORE(out + 165 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 165 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 147 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 147 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.76955855f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.332347026f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.76955855f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.332347026f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.43721152f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.43721152f), xaB, ddB);
+  SHLI_VSTORE(out + 191 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 191 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 173 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 173 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.60934774f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.386570036f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.60934774f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.386570036f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.22277771f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.22277771f), xbB, ddB);
+  SHLI_VSTORE(out + 219 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 219 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 201 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 201 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.49861073f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.430794953f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.49861073f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.430794953f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.06781577f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.06781577f), xaB, ddB);
+  SHLI_VSTORE(out + 249 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 249 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 231 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 231 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 120 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 120 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), pcB));
+  SHLI_VSTORE(out + 100 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), psA));
+  SHLI_VSTORE(out + SHLI_W + 100 * stride, SHLI_VMUL(SHLI_VSET(0.767395118f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-3.6802977f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-3.6802977f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(3.6802977f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(3.6802977f), ddB);
+  SHLI_VSTORE(out + 142 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 142 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 122 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 122 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.61499403f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.157173653f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.61499403f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.157173653f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.45782037f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.45782037f), xaB, ddB);
+  SHLI_VSTORE(out + 166 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 166 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 146 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 146 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.12771621f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.250217297f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.12771621f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.250217297f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.87749891f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.87749891f), xbB, ddB);
+  SHLI_VSTORE(out + 192 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 192 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 172 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 172 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.85591491f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.317323879f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.85591491f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.317323879f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.53859104f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.53859104f), xaB, ddB);
+  SHLI_VSTORE(out + 220 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 220 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 200 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 200 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.68179045f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.369902131f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.68179045f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.369902131f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.31188832f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.31188832f), xbB, ddB);
+  SHLI_VSTORE(out + 250 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 250 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 230 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 230 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 143 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 143 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), pcB));
+  SHLI_VSTORE(out + 121 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), psA));
+  SHLI_VSTORE(out + SHLI_W + 121 * stride, SHLI_VMUL(SHLI_VSET(-0.784642106f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(3.92321053f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(3.92321053f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-3.92321053f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-3.92321053f), ddB);
+  SHLI_VSTORE(out + 167 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 167 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 145 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 145 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.75f), SHLI_VMUL(tA, xaA), SHLI_VMUL(SHLI_VSET(0.15f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.75f), SHLI_VMUL(tB, xaB), SHLI_VMUL(SHLI_VSET(0.15f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.6f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.6f), xaB, ddB);
+  SHLI_VSTORE(out + 193 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 193 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 171 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 171 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.23109888f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.239340658f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.23109888f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.239340658f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(2.99175823f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(2.99175823f), xbB, ddB);
+  SHLI_VSTORE(out + 221 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 221 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 199 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 199 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(2.94010727f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.304149028f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(2.94010727f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.304149028f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(2.63595824f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(2.63595824f), xaB, ddB);
+  SHLI_VSTORE(out + 251 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 251 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 229 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 229 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 168 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 168 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), pcB));
+  SHLI_VSTORE(out + 144 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), psA));
+  SHLI_VSTORE(out + SHLI_W + 144 * stride, SHLI_VMUL(SHLI_VSET(0.800821996f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-4.16119315f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-4.16119315f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(4.16119315f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(4.16119315f), ddB);
+  SHLI_VSTORE(out + 194 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 194 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 170 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 170 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.88042424f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.143719416f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.88042424f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.143719416f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.73670483f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.73670483f), xaB, ddB);
+  SHLI_VSTORE(out + 222 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 222 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 198 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 198 * stride, SHLI_VMUL(xbB, psB));
+  ddA = SHLI_VNMADD(SHLI_VSET(3.33148097f), SHLI_VMUL(tA, xbA),
+                    SHLI_VMUL(SHLI_VSET(0.229757308f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(3.33148097f), SHLI_VMUL(tB, xbB),
+                    SHLI_VMUL(SHLI_VSET(0.229757308f), ddB));
+  xaA = SHLI_VMADD(SHLI_VSET(3.10172366f), xbA, ddA);
+  xaB = SHLI_VMADD(SHLI_VSET(3.10172366f), xbB, ddB);
+  SHLI_VSTORE(out + 252 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 252 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 228 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 228 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 195 * stride, SHLI_VMUL(SHLI_VSET(-0.816077119f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 195 * stride, SHLI_VMUL(SHLI_VSET(-0.816077119f), pcB));
+  SHLI_VSTORE(out + 169 * stride, SHLI_VMUL(SHLI_VSET(-0.816077119f), psA));
+  SHLI_VSTORE(out + SHLI_W + 169 * stride, SHLI_VMUL(SHLI_VSET(-0.816077119f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(4.39470978f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(4.39470978f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(-4.39470978f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(-4.39470978f), ddB);
+  SHLI_VSTORE(out + 223 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 223 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 197 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 197 * stride, SHLI_VMUL(xaB, gsB));
+  ddA = SHLI_VNMADD(SHLI_VSET(4.00669083f), SHLI_VMUL(tA, xaA),
+                    SHLI_VMUL(SHLI_VSET(0.138161753f), ddA));
+  ddB = SHLI_VNMADD(SHLI_VSET(4.00669083f), SHLI_VMUL(tB, xaB),
+                    SHLI_VMUL(SHLI_VSET(0.138161753f), ddB));
+  xbA = SHLI_VMADD(SHLI_VSET(3.86852908f), xaA, ddA);
+  xbB = SHLI_VMADD(SHLI_VSET(3.86852908f), xaB, ddB);
+  SHLI_VSTORE(out + 253 * stride, SHLI_VMUL(xbA, pcA));
+  SHLI_VSTORE(out + SHLI_W + 253 * stride, SHLI_VMUL(xbB, pcB));
+  SHLI_VSTORE(out + 227 * stride, SHLI_VMUL(xbA, psA));
+  SHLI_VSTORE(out + SHLI_W + 227 * stride, SHLI_VMUL(xbB, psB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 224 * stride, SHLI_VMUL(SHLI_VSET(0.830522083f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 224 * stride, SHLI_VMUL(SHLI_VSET(0.830522083f), pcB));
+  SHLI_VSTORE(out + 196 * stride, SHLI_VMUL(SHLI_VSET(0.830522083f), psA));
+  SHLI_VSTORE(out + SHLI_W + 196 * stride, SHLI_VMUL(SHLI_VSET(0.830522083f), psB));
+  gcA = SHLI_VMUL(sgA, pcA);
+  gcB = SHLI_VMUL(sgB, pcB);
+  gsA = SHLI_VMUL(sgA, psA);
+  gsB = SHLI_VMUL(sgB, psB);
+  ddA = SHLI_VMUL(SHLI_VSET(-4.62415126f), tA);
+  ddB = SHLI_VMUL(SHLI_VSET(-4.62415126f), tB);
+  xaA = SHLI_VADD(SHLI_VSET(4.62415126f), ddA);
+  xaB = SHLI_VADD(SHLI_VSET(4.62415126f), ddB);
+  SHLI_VSTORE(out + 254 * stride, SHLI_VMUL(xaA, gcA));
+  SHLI_VSTORE(out + SHLI_W + 254 * stride, SHLI_VMUL(xaB, gcB));
+  SHLI_VSTORE(out + 226 * stride, SHLI_VMUL(xaA, gsA));
+  SHLI_VSTORE(out + SHLI_W + 226 * stride, SHLI_VMUL(xaB, gsB));
+  qcA = SHLI_VNMADD(yA, psA, SHLI_VMUL(xA, pcA));
+  qcB = SHLI_VNMADD(yB, psB, SHLI_VMUL(xB, pcB));
+  psA = SHLI_VMADD(xA, psA, SHLI_VMUL(yA, pcA));
+  psB = SHLI_VMADD(xB, psB, SHLI_VMUL(yB, pcB));
+  pcA = qcA;
+  pcB = qcB;
+  SHLI_VSTORE(out + 255 * stride, SHLI_VMUL(SHLI_VSET(-0.844250651f), pcA));
+  SHLI_VSTORE(out + SHLI_W + 255 * stride, SHLI_VMUL(SHLI_VSET(-0.844250651f), pcB));
+  SHLI_VSTORE(out + 225 * stride, SHLI_VMUL(SHLI_VSET(-0.844250651f), psA));
+  SHLI_VSTORE(out + SHLI_W + 225 * stride, SHLI_VMUL(SHLI_VSET(-0.844250651f), psB));
+  (void)stride;
+  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;
+}
+
+typedef void (*shli_sh_batch2_fn)(const float *, const float *, const float *, float *, ptrdiff_t);
+static const shli_sh_batch2_fn SHLI_SH_BATCH2[17] = {0,
+                                                     shli_sh_batch2_1,
+                                                     shli_sh_batch2_2,
+                                                     shli_sh_batch2_3,
+                                                     shli_sh_batch2_4,
+                                                     shli_sh_batch2_5,
+                                                     shli_sh_batch2_6,
+                                                     shli_sh_batch2_7,
+                                                     shli_sh_batch2_8,
+                                                     shli_sh_batch2_9,
+                                                     shli_sh_batch2_10,
+                                                     shli_sh_batch2_11,
+                                                     shli_sh_batch2_12,
+                                                     shli_sh_batch2_13,
+                                                     shli_sh_batch2_14,
+                                                     shli_sh_batch2_15,
+                                                     shli_sh_batch2_16};
+
 typedef void (*shli_sh_batch_fn)(SHLI_V, SHLI_V, SHLI_V, float *, ptrdiff_t);
 static const shli_sh_batch_fn SHLI_SH_BATCH[17] = {0,
                                                    shli_sh_batch_1,
@@ -30262,6 +38541,16 @@ SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float
       shl_sh_eval(n, d, tmp);
       for (i = 0; i < n * n; ++i)
         out_y[(ptrdiff_t)i * count + j] = tmp[i];
+    }
+    return;
+  }
+  if (n <= SHLIGHT_UNROLLED_BANDS && count >= 2 * SHLI_W) {
+    /* two vectors per call: the straight-line kernels are decode-bound, this halves the code
+       run per direction; the last pair overlaps the previous one (same values rewritten) */
+    for (j = 0;; j += 2 * SHLI_W) {
+      if (j > count - 2 * SHLI_W) j = count - 2 * SHLI_W;
+      SHLI_SH_BATCH2[n](x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
+      if (j + 2 * SHLI_W >= count) break;
     }
     return;
   }

@@ -175,6 +175,11 @@ NOINL void bw_batch(int n, const float *d, bufs *b) {
   shl_sh_eval_batch(n, NDIR, soa_rnd[0], soa_rnd[1], soa_rnd[2], b->bout);
   NOTAIL();
 }
+NOINL void bw_batch32(int n, const float *d, bufs *b) { /* 32 directions: two vectors a call */
+  int j = (int)((d - rnd_f[0]) / 3) & (NDIR - 32);
+  shl_sh_eval_batch(n, 32, soa_rnd[0] + j, soa_rnd[1] + j, soa_rnd[2] + j, b->bout);
+  NOTAIL();
+}
 NOINL void bw_batch16(int n, const float *d, bufs *b) { /* the 16 directions from d's block */
   int j = (int)((d - rnd_f[0]) / 3) & (NDIR - 16);
   shl_sh_eval_batch(n, 16, soa_rnd[0] + j, soa_rnd[1] + j, soa_rnd[2] + j, b->bout);
@@ -218,7 +223,19 @@ static const wfn F_GRAD[NNS] = {NLIST(FGRAD)};
 static const wfn F_GSPH[NNS] = {NLIST(FGSPH)};
 
 /* ------------------------------------------------------------------ variants */
-enum { V_EVAL, V_EVAL_RT, V_ACC, V_BATCH, V_BATCH16, V_GRAD, V_GSPH, V_LOOP, V_EMPTY, NV };
+enum {
+  V_EVAL,
+  V_EVAL_RT,
+  V_ACC,
+  V_BATCH,
+  V_BATCH16,
+  V_BATCH32,
+  V_GRAD,
+  V_GSPH,
+  V_LOOP,
+  V_EMPTY,
+  NV
+};
 typedef struct {
   const char *name, *label;
   const wfn *per_n; /* wrapper per n, or NULL: rt */
@@ -232,6 +249,7 @@ static const variant VAR[NV] = {
     {"accurate", "shl_sh_eval_accurate", 0, bw_accurate, 0, 1},
     {"batch", "shl_sh_eval_batch, count 1024, time per direction", 0, bw_batch, 0, NDIR},
     {"batch16", "shl_sh_eval_batch, count 16 (output in L1), per direction", 0, bw_batch16, 0, 16},
+    {"batch32", "shl_sh_eval_batch, count 32 (output in L1), per direction", 0, bw_batch32, 0, 32},
     {"grad", "shl_sh_eval_grad: values + Cartesian gradient", F_GRAD, 0, 1, 1},
     {"grad_sph", "shl_sh_eval_grad_spherical + shl_sh_grad_from_spherical", F_GSPH, 0, 1, 1},
     {"loop", "plain-loop yardstick (research base_f), run-time n", 0, bw_loop, 0, 1},
@@ -362,7 +380,7 @@ static void errors_values(int nmax, bufs *b) {
         for (i = 0; i < nc; i++)
           upd(&R_floor[ni][set], fabs((double)(float)ref[i] - ref[i]));
         for (v = 0; v < NV; v++) {
-          if (!g_var[v] || VAR[v].is_grad || v == V_EMPTY) continue;
+          if (!g_var[v] || VAR[v].is_grad || v == V_EMPTY || v == V_BATCH32) continue;
           if (v == V_BATCH || v == V_BATCH16) {
             const float *o = bat[v == V_BATCH16][ni][set];
             for (i = 0; i < nc; i++)
@@ -519,7 +537,7 @@ static void table(FILE **fo, const char *title, int what, int grad_only, int err
 static int svg_pt(int v, int ni, double *lx, double *ly) {
   double e = VAR[v].is_grad ? fmax(R_gerr[v][ni][0], R_gerr_np[v][ni])
                             : fmax(R_err[v][ni][0], R_err[v][ni][1]);
-  if (!(e > 1e-12) || !(R_ns[v][ni] > 0) || v == V_EMPTY || !g_var[v]) return 0;
+  if (!(e > 1e-12) || !(R_ns[v][ni] > 0) || v == V_EMPTY || v == V_BATCH32 || !g_var[v]) return 0;
   *lx = log10(R_ns[v][ni]);
   *ly = log10(e);
   return 1;
@@ -633,7 +651,8 @@ static void usage(void) {
       "                   [--no-error] [--callgrind FILE] [--out DIR]\n"
       "       bench_basis --count-only VARIANT N K\n"
       "  LIST: comma separated; n from 1..16,32,64; variants: eval,eval_rt,accurate,batch,\n"
-      "  batch16,grad,grad_sph,loop,empty (loop and eval are always timed: they are the ratios' "
+      "  batch16,batch32,grad,grad_sph,loop,empty (loop and eval are always timed: they are the "
+      "ratios' "
       "bases)\n");
   exit(2);
 }
@@ -662,7 +681,7 @@ int main(int argc, char **argv) {
     int n = atoi(argv[3]), ni = n_index(n);
     v = var_find(argv[2]);
     if (v < 0 || ni < 0 || K < 1) usage();
-    if ((v == V_BATCH || v == V_BATCH16) &&
+    if ((v == V_BATCH || v == V_BATCH16 || v == V_BATCH32) &&
         !(b.bout = (float *)malloc(sizeof(float) * (size_t)n * n * NDIR)))
       return 2;
     for (k = 0; k < K; k++) {
@@ -729,7 +748,7 @@ int main(int argc, char **argv) {
       g_var[v] = 1;
   for (ii = 0; ii < g_nn; ii++)
     nmax = NSET[g_nlist[ii]] > nmax ? NSET[g_nlist[ii]] : nmax;
-  if ((g_var[V_BATCH] || g_var[V_BATCH16]) &&
+  if ((g_var[V_BATCH] || g_var[V_BATCH16] || g_var[V_BATCH32]) &&
       !(b.bout = (float *)malloc(sizeof(float) * (size_t)nmax * nmax * NDIR)))
     return 2;
   if (cgfile) load_callgrind(cgfile);

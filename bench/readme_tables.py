@@ -22,6 +22,7 @@ def tables():
             ('eval_rt', 'ratio_to_loop', '`shl_sh_eval`, n at run time: ratio'),
             ('accurate', 'ratio_to_loop', '`shl_sh_eval_accurate`: ratio'),
             ('batch16', 'ratio_to_loop', '`shl_sh_eval_batch`, 16 directions: ratio per direction'),
+            ('batch32', 'ratio_to_loop', '`shl_sh_eval_batch`, 32 directions: ratio per direction'),
             ('batch', 'ratio_to_loop', '`shl_sh_eval_batch`, 1024 directions: ratio per direction'),
             ('grad', 'ns', '`shl_sh_eval_grad`, ns'),
             ('grad_sph', 'ns', 'paper: spherical partials + Jacobian, ns'),

@@ -944,7 +944,7 @@ static void test_grad_spherical_pole(void) {
  * Also measured against the quad reference (all 1000 directions: 900 float-normalised + 100
  * near-pole, both unit), where the batch is held to the same issue target as shl_sh_eval. */
 static void test_batch(void) {
-  static const int counts[] = {0, 1, 3, 15, 16, 17, 1000};
+  static const int counts[] = {0, 1, 3, 15, 16, 17, 31, 32, 33, 47, 1000};
   static float x[1000], y[1000], z[1000];
   static double ref[1000][REFC > 4096 ? 4096 : REFC];
   float *out = (float *)malloc(sizeof(float) * ((size_t)MAXC * 1000 + 64));

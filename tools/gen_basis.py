@@ -457,6 +457,41 @@ def gen_batch_poly(n):
     return declare(L, [('SHLI_V', v, None) for v in ('z2', 'pc', 'ps', 'qc', 'xf')])
 
 
+
+def gen_batch2(n):
+    """the batch kernel of n bands for two vectors of directions at once (A: lanes j..j+W-1,
+    B: j+W..j+2W-1): every statement twice, constants shared, half the code per direction"""
+    one = gen_batch_poly(n) if n <= POLY_BANDS else gen_batch(n)
+    names = ['x', 'y', 'z', 's2', 'ir', 'az', 't', 'sg', 'pc', 'ps', 'qc', 'gc', 'gs', 'xa', 'xb',
+             'dd', 'z2', 'xf']
+    rx = re.compile(r'\b(%s)\b' % '|'.join(names))
+    L = ['static void shli_sh_batch2_%d(const float *x, const float *y, const float *z, float *out,'
+         % n, '                               ptrdiff_t stride) {']
+    body = one[1:-1]
+    decl = [l for l in body if l.startswith('  SHLI_V ')]
+    rest = [l for l in body if not l.startswith('  SHLI_V ')]
+    for suf in ('A', 'B'):
+        off = '' if suf == 'A' else ' + SHLI_W'
+        L.append('  SHLI_V xA%s = SHLI_VLOAD(x%s), yA%s = SHLI_VLOAD(y%s), zA%s = SHLI_VLOAD(z%s);'
+                 .replace('A%s', suf).replace('%s', off) if False else
+                 '  SHLI_V x%s = SHLI_VLOAD(x%s), y%s = SHLI_VLOAD(y%s), z%s = SHLI_VLOAD(z%s);'
+                 % (suf, off, suf, off, suf, off))
+    for l in decl:
+        for suf in ('A', 'B'):
+            L.append(rx.sub(lambda m: m.group(1) + suf, l))
+    for l in rest:
+        if l.strip().startswith('(void)'):
+            continue
+        for suf in ('A', 'B'):
+            s = rx.sub(lambda m: m.group(1) + suf, l)
+            if suf == 'B':
+                s = s.replace('SHLI_VSTORE(out', 'SHLI_VSTORE(out + SHLI_W')
+            L.append(s)
+    L.append('  (void)stride;')
+    L.append('  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;')
+    L.append('}')
+    return L
+
 # ---------------------------------------------------------------- regions
 def zh_table(nb):
     """>>zonal: per band l, (2l+1)/(l+1), l/(l+1), 1/(l(l+1)) (0 for l = 0), sqrt(4 pi/(2l+1)),
@@ -511,6 +546,12 @@ def c_regions():
     bb = []
     for n in range(1, UNROLLED + 1):
         bb += [''] + (gen_batch_poly(n) if n <= POLY_BANDS else gen_batch(n))
+    for n in range(1, UNROLLED + 1):
+        bb += [''] + gen_batch2(n)
+    bb += ['', 'typedef void (*shli_sh_batch2_fn)(const float *, const float *, const float *, float *,',
+           '                                  ptrdiff_t);',
+           'static const shli_sh_batch2_fn SHLI_SH_BATCH2[%d] = {' % (UNROLLED + 1),
+           '    0, ' + ', '.join('shli_sh_batch2_%d' % n for n in range(1, UNROLLED + 1)) + '};']
     bb += ['', 'typedef void (*shli_sh_batch_fn)(SHLI_V, SHLI_V, SHLI_V, float *, ptrdiff_t);',
            'static const shli_sh_batch_fn SHLI_SH_BATCH[%d] = {' % (UNROLLED + 1),
            '    0, ' + ', '.join('shli_sh_batch_%d' % n for n in range(1, UNROLLED + 1)) + '};']
