@@ -119,6 +119,7 @@ typedef double shli_real;
 #define SHLIGHT_REAL_MAX 3.4028234663852886e38
 #define SHLIGHT_REAL_WIDE 1 /* shli_real holds squares of any float: no input scaling needed */
 #define SHLIGHT_UNUSED(x) ((void)(x))
+#define SHLIGHT_FTOI(x) ((int)(x)) /* truncation toward 0 of a float or shli_real */
 #define SHLIGHT_SIGN1(x) ((float)copysign(1.0, (x))) /* +-1 with the sign bit of x, branch-free */
 
 /* >>basis -----------------------------------------------------------------------------------
@@ -26078,6 +26079,190 @@ SHLIGHT_API shl_result shl_grid_build(const shl_grid *g, const float (*centres)[
    (8 n^2 x 4 floats, on the stack up to 16 bands) cannot be allocated. */
 SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const float (*grad)[3],
                                        const float p[3], int method, float *out_sh);
+
+/* >>brdftab ---------------------------------------------------------------------------------
+   Kautz-style BRDF SH tables (seed 000 sec. 4.2, [KSS02]): for outgoing directions w_o on a
+   grid, the SH (n bands, the >>basis convention) of F(w_i) = cos(theta_i) f_s(w_o, w_i) and of
+   F'(w_i) = f_s(w_o, w_i), in the local frame (normal +z, tangent +x), w_i over the upper
+   hemisphere (both are 0 below it). Built on the CPU (shl_brdf_table_build, the CPU-only part
+   of this section after >>grid's CPU declarations); the lookup kernels below have GLSL twins.
+   Table layout (the CPU struct shl_brdf_table, the file format and the GPU layout contract):
+     data[((p * n_theta + t) * 2 + k) * n^2 + i]
+   p < n_phi, t < n_theta, k = 0: F (with the cosine), k = 1: F' (without), i < n^2 the SH
+   index. Sample t is at theta_o = t (pi/2) / (n_theta - 1) (theta_o = 0 when n_theta = 1: the
+   end points 0 and pi/2 are samples), sample p at phi_o = 2 pi p / n_phi. n_phi = 1: an
+   isotropic table, sampled at phi_o = 0 (seed 000 eq. 17-18); n_phi > 1: anisotropic, periodic
+   in phi_o. On a GPU the same flat float array is an SSBO (std430 float[]), or an RGBA32F
+   texture of n_theta * n_phi * 2 * n^2 / 4 texels read linearly (n^2 * 2 floats per sample:
+   whole texels for every n >= 2), in the same order.
+   Lookup (shl_brdf_table_cell, shl_brdf_table_lookup): theta_o = atan2(|w_xy|, w_z) (own
+   atan2, see >>light; w_z < 0 clamps to pi/2), linear in theta_o between the two bracketing
+   samples; anisotropic tables also linear in phi_o = atan2(w_y, w_x) (periodic). Isotropic
+   tables are rotated about z by phi_o (shl_sh_rotate_z): the result is the SH of F in the local
+   frame for that w_o, whatever its azimuth. Error: the interpolation error of the tabulated
+   function, O(h^2) in the sample step h (README has measured numbers), plus float rounding. */
+
+/* shl_sh_rotate_z: io_sh (n bands) becomes the SH of the function rotated by the angle phi
+   about +z, given c1 = cos(phi) and s1 = sin(phi) (unit: c1^2 + s1^2 = 1): for m > 0,
+   (a, b) = (io_sh[l(l+1)+m], io_sh[l(l+1)-m]) -> (a cos(m phi) - b sin(m phi),
+   a sin(m phi) + b cos(m phi)); m = 0 unchanged. cos(m phi), sin(m phi) by the angle-addition
+   recurrence in shli_real. Cost: 4 flops per coefficient. */
+SHLIGHT_INLINE void shl_sh_rotate_z(int n, float c1, float s1, float *io_sh) {
+  shli_real cm = 1.0;
+  shli_real sm = 0.0;
+  shli_real t;
+  shli_real a;
+  shli_real b;
+  int l;
+  int m;
+  int k;
+  n = shli_bands(n);
+  for (m = 1; m < n; ++m) {
+    t = cm * SHLIGHT_REAL(c1) - sm * SHLIGHT_REAL(s1);
+    sm = sm * SHLIGHT_REAL(c1) + cm * SHLIGHT_REAL(s1);
+    cm = t;
+    for (l = m; l < n; ++l) {
+      k = l * (l + 1);
+      a = SHLIGHT_REAL(io_sh[k + m]);
+      b = SHLIGHT_REAL(io_sh[k - m]);
+      io_sh[k + m] = SHLIGHT_FLOAT(a * cm - b * sm);
+      io_sh[k - m] = SHLIGHT_FLOAT(a * sm + b * cm);
+    }
+  }
+}
+
+/* shl_brdf_table_cell: the samples and weights of the lookup at the outgoing direction wo
+   (local frame, any non-zero finite vector; zero gives theta_o = 0, phi_o = 0). out_idx[j] is a
+   sample index s = p * n_theta + t (the table's F of sample s starts at float 2 s n^2, F' at
+   (2 s + 1) n^2), out_w[j] its weight, j < 4: (t0, p0), (t0 + 1, p0), (t0, p1), (t0 + 1, p1)
+   with p1 = (p0 + 1) mod n_phi; the weights add up to 1. Isotropic tables (n_phi = 1) have
+   weight 0 at j = 2, 3 (indices repeat j = 0, 1); n_theta = 1 puts all weight on t = 0.
+   n_theta < 1 or n_phi < 1: all indices 0, all weights 0. Cost: one atan2 (two with n_phi > 1),
+   ~30 flops. */
+SHLIGHT_INLINE void shl_brdf_table_cell(int n_theta, int n_phi, const float wo[3], int *out_idx,
+                                        float *out_w) {
+  shli_real x = SHLIGHT_REAL(wo[0]);
+  shli_real y = SHLIGHT_REAL(wo[1]);
+  shli_real z = SHLIGHT_REAL(wo[2]);
+  shli_real rho = SHLIGHT_SQRTR(x * x + y * y);
+  shli_real u;
+  shli_real v;
+  float ft = 0.0f;
+  float fp = 0.0f;
+  int t0 = 0;
+  int t1 = 0;
+  int p0 = 0;
+  int p1 = 0;
+  int j;
+  for (j = 0; j < 4; ++j) {
+    out_idx[j] = 0;
+    out_w[j] = 0.0f;
+  }
+  if (n_theta < 1 || n_phi < 1) {
+    return;
+  }
+  if (z < 0.0) {
+    z = 0.0;
+  }
+  if (n_theta > 1) {
+    u = shli_atan2r(rho, z) * (SHLIGHT_REAL(SHLIGHT_ITOF(n_theta - 1)) * 0.63661977236758134);
+    if (!(u > 0.0)) {
+      u = 0.0;
+    }
+    t0 = SHLIGHT_FTOI(u);
+    if (t0 > n_theta - 2) {
+      t0 = n_theta - 2;
+    }
+    ft = SHLIGHT_FLOAT(u - SHLIGHT_REAL(SHLIGHT_ITOF(t0)));
+    if (ft > 1.0f) {
+      ft = 1.0f;
+    }
+    t1 = t0 + 1;
+  }
+  if (n_phi > 1) {
+    v = shli_atan2r(y, x);
+    if (v < 0.0) {
+      v = v + 6.2831853071795865;
+    }
+    v = v * (SHLIGHT_REAL(SHLIGHT_ITOF(n_phi)) * 0.15915494309189534);
+    if (!(v > 0.0)) {
+      v = 0.0;
+    }
+    p0 = SHLIGHT_FTOI(v);
+    if (p0 > n_phi - 1) {
+      p0 = n_phi - 1;
+    }
+    fp = SHLIGHT_FLOAT(v - SHLIGHT_REAL(SHLIGHT_ITOF(p0)));
+    if (fp > 1.0f) {
+      fp = 1.0f;
+    }
+    p1 = p0 + 1;
+    if (p1 == n_phi) {
+      p1 = 0;
+    }
+  }
+  out_idx[0] = p0 * n_theta + t0;
+  out_idx[1] = p0 * n_theta + t1;
+  out_idx[2] = p1 * n_theta + t0;
+  out_idx[3] = p1 * n_theta + t1;
+  out_w[0] = (1.0f - ft) * (1.0f - fp);
+  out_w[1] = ft * (1.0f - fp);
+  out_w[2] = (1.0f - ft) * fp;
+  out_w[3] = ft * fp;
+}
+
+/* shl_brdf_table_lookup: the SH (n bands) of F (which = 0) or F' (which = 1) at the outgoing
+   direction wo (local frame, see shl_brdf_table_cell), interpolated from the table tab (layout
+   of >>brdftab: n_theta * n_phi * 2 * n^2 floats) and, for an isotropic table (n_phi = 1),
+   rotated about z to wo's azimuth (shl_sh_rotate_z with cos, sin of atan2(wo_y, wo_x); no
+   rotation when wo_x = wo_y = 0). out_sh: n * n floats. GLSL: tab is
+   float[SHLIGHT_BRDF_TABLE_FLOATS] (the host defines it; shl_prelude.glsl defaults it to
+   2 * 90 * SHLIGHT_MAX_COEFFS, one isotropic table of 90 samples); a shader that keeps the
+   table in an SSBO calls shl_brdf_table_cell, sums the 4 weighted samples itself and then
+   shl_sh_rotate_z. which outside {0, 1} is taken as 0; invalid n_theta / n_phi give zeros.
+   Cost: the cell, 4 FMA per coefficient, the rotation (4 flops per coefficient). */
+SHLIGHT_INLINE void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int which,
+                                          const float *tab, const float wo[3], float *out_sh) {
+  int idx[4];
+  float w[4];
+  float rho;
+  int nn;
+  int i;
+  int o0;
+  int o1;
+  int o2;
+  int o3;
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
+  nn = n * n;
+  if (n_theta < 1 || n_phi < 1) {
+    for (i = 0; i < nn; ++i) {
+      out_sh[i] = 0.0f;
+    }
+    return;
+  }
+  if (which != 1) {
+    which = 0;
+  }
+  shl_brdf_table_cell(n_theta, n_phi, wo, idx, w);
+  o0 = (2 * idx[0] + which) * nn;
+  o1 = (2 * idx[1] + which) * nn;
+  o2 = (2 * idx[2] + which) * nn;
+  o3 = (2 * idx[3] + which) * nn;
+  for (i = 0; i < nn; ++i) {
+    out_sh[i] =
+        (w[0] * tab[o0 + i] + w[1] * tab[o1 + i]) + (w[2] * tab[o2 + i] + w[3] * tab[o3 + i]);
+  }
+  if (n_phi == 1) {
+    rho = SHLIGHT_FLOAT(SHLIGHT_SQRTR(SHLIGHT_REAL(wo[0]) * SHLIGHT_REAL(wo[0]) +
+                                      SHLIGHT_REAL(wo[1]) * SHLIGHT_REAL(wo[1])));
+    if (rho > 0.0f) {
+      shl_sh_rotate_z(n, wo[0] / rho, wo[1] / rho, out_sh);
+    }
+  }
+}
 
 #ifdef __cplusplus
 extern "C" {

@@ -570,7 +570,8 @@ import re
 # GLSL array length of a pointer parameter, by name (default: n * n coefficients)
 ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
                'out_dzh': 'SHLIGHT_MAX_BANDS', 'g': '8', 'out_g': '8', 'out_nt': '3',
-               'c8': '8 * SHLIGHT_MAX_COEFFS', 'g8': '8 * SHLIGHT_MAX_COEFFS'}
+               'c8': '8 * SHLIGHT_MAX_COEFFS', 'g8': '8 * SHLIGHT_MAX_COEFFS',
+               'out_idx': '4', 'out_w': '4', 'tab': 'SHLIGHT_BRDF_TABLE_FLOATS'}
 
 
 def glsl_param(prm, fname):
@@ -715,7 +716,9 @@ def main():
                       ('zonal', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl']),
                       ('light', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
                                  'shl_zonal.glsl']),
-                      ('grid', ['shl_prelude.glsl', 'shl_basis.glsl'])):
+                      ('grid', ['shl_prelude.glsl', 'shl_basis.glsl']),
+                      ('brdftab', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
+                                   'shl_zonal.glsl', 'shl_light.glsl'])):
         gp = os.path.join(ROOT, 'shlight_glsl', 'shl_%s.glsl' % sec)
         old = open(gp).read() if os.path.exists(gp) else ''
         outputs.append((gp, old, glsl_module(new, sec, deps)))
