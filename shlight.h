@@ -25885,7 +25885,18 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
 #ifndef SHLIGHT_RESULT_DEFINED
 #define SHLIGHT_RESULT_DEFINED
 /* Status of the CPU functions that can fail. */
-typedef enum shl_result { SHLIGHT_OK = 0, SHLIGHT_EINVAL = -1, SHLIGHT_ENOMEM = -2 } shl_result;
+typedef enum shl_result {
+  SHLIGHT_OK = 0,
+  SHLIGHT_EINVAL = -1,     /* an invalid argument */
+  SHLIGHT_ENOMEM = -2,     /* an allocation failed */
+  SHLIGHT_ELENGTH = -3,    /* loaders: input truncated, or longer than its header says */
+  SHLIGHT_EMAGIC = -4,     /* loaders: not the expected file type (magic bytes) */
+  SHLIGHT_EVERSION = -5,   /* loaders: unsupported format version */
+  SHLIGHT_EDIMS = -6,      /* loaders: zero, negative, oversized or inconsistent dimensions */
+  SHLIGHT_ENONFINITE = -7, /* NaN or infinity in the data */
+  SHLIGHT_ECHECKSUM = -8,  /* loaders: checksum mismatch */
+  SHLIGHT_ESTORAGE = -9    /* the caller's buffer is missing or too small (size reported) */
+} shl_result;
 #endif
 
 /* shl_grid: plain data (no pointers), the same fields in GLSL. spacing: the cell size per
@@ -26089,18 +26100,21 @@ SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const
    Table layout (the CPU struct shl_brdf_table, the file format and the GPU layout contract):
      data[((p * n_theta + t) * 2 + k) * n^2 + i]
    p < n_phi, t < n_theta, k = 0: F (with the cosine), k = 1: F' (without), i < n^2 the SH
-   index. Sample t is at theta_o = t (pi/2) / (n_theta - 1) (theta_o = 0 when n_theta = 1: the
-   end points 0 and pi/2 are samples), sample p at phi_o = 2 pi p / n_phi. n_phi = 1: an
+   index. Sample t is at theta_o = (t + 1/2) (pi/2) / n_theta (cell centres: 90 samples are
+   0.5, 1.5, ..., 89.5 degrees; the exact grazing direction, where F' of a microfacet BRDF
+   grows like log(1 / cos theta_o), is never a sample), sample p at phi_o = 2 pi p / n_phi
+   (p = 0: phi_o = 0). n_phi = 1: an
    isotropic table, sampled at phi_o = 0 (seed 000 eq. 17-18); n_phi > 1: anisotropic, periodic
    in phi_o. On a GPU the same flat float array is an SSBO (std430 float[]), or an RGBA32F
    texture of n_theta * n_phi * 2 * n^2 / 4 texels read linearly (n^2 * 2 floats per sample:
    whole texels for every n >= 2), in the same order.
    Lookup (shl_brdf_table_cell, shl_brdf_table_lookup): theta_o = atan2(|w_xy|, w_z) (own
    atan2, see >>light; w_z < 0 clamps to pi/2), linear in theta_o between the two bracketing
-   samples; anisotropic tables also linear in phi_o = atan2(w_y, w_x) (periodic). Isotropic
-   tables are rotated about z by phi_o (shl_sh_rotate_z): the result is the SH of F in the local
-   frame for that w_o, whatever its azimuth. Error: the interpolation error of the tabulated
-   function, O(h^2) in the sample step h (README has measured numbers), plus float rounding. */
+   samples, constant beyond the first and the last sample centre; anisotropic tables also linear in
+   phi_o = atan2(w_y, w_x) (periodic). Isotropic tables are rotated about z by phi_o
+   (shl_sh_rotate_z): the result is the SH of F in the local frame for that w_o, whatever its
+   azimuth. Error: the interpolation error of the tabulated function, O(h^2) in the sample step h
+   (README has measured numbers), plus float rounding. */
 
 /* shl_sh_rotate_z: io_sh (n bands) becomes the SH of the function rotated by the angle phi
    about +z, given c1 = cos(phi) and s1 = sin(phi) (unit: c1^2 + s1^2 = 1): for m > 0,
@@ -26137,6 +26151,7 @@ SHLIGHT_INLINE void shl_sh_rotate_z(int n, float c1, float s1, float *io_sh) {
    (2 s + 1) n^2), out_w[j] its weight, j < 4: (t0, p0), (t0 + 1, p0), (t0, p1), (t0 + 1, p1)
    with p1 = (p0 + 1) mod n_phi; the weights add up to 1. Isotropic tables (n_phi = 1) have
    weight 0 at j = 2, 3 (indices repeat j = 0, 1); n_theta = 1 puts all weight on t = 0.
+   theta_o below the first sample centre or above the last one takes that sample (weight 1).
    n_theta < 1 or n_phi < 1: all indices 0, all weights 0. Cost: one atan2 (two with n_phi > 1),
    ~30 flops. */
 SHLIGHT_INLINE void shl_brdf_table_cell(int n_theta, int n_phi, const float wo[3], int *out_idx,
@@ -26165,7 +26180,7 @@ SHLIGHT_INLINE void shl_brdf_table_cell(int n_theta, int n_phi, const float wo[3
     z = 0.0;
   }
   if (n_theta > 1) {
-    u = shli_atan2r(rho, z) * (SHLIGHT_REAL(SHLIGHT_ITOF(n_theta - 1)) * 0.63661977236758134);
+    u = shli_atan2r(rho, z) * (SHLIGHT_REAL(SHLIGHT_ITOF(n_theta)) * 0.63661977236758134) - 0.5;
     if (!(u > 0.0)) {
       u = 0.0;
     }
@@ -26277,6 +26292,161 @@ SHLIGHT_API void shl_sh_eval_accurate(int n, const float d[3], float *out_y);
    input renormalised per lane); accuracy in README. count <= 0: nothing written. CPU only. */
 SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float *y, const float *z,
                                    float *out_y);
+
+/* CPU-only part of >>brdftab (declared here, defined with SHLIGHT_IMPLEMENTATION): analytic
+   BRDFs, table build by quadrature, the SHLT table file, the MERL measured-BRDF loader.
+   Analytic BRDFs (shl_brdf_params.model), w_o, w_i unit, local frame, both above the surface
+   (z > 0; f_s = 0 otherwise), kd = diffuse albedo, ks = specular scale:
+     SHLIGHT_BRDF_LAMBERT      kd / pi
+     SHLIGHT_BRDF_PHONG        kd / pi + ks (e + 1) / (2 pi) max(0, r . w_i)^e, r = the mirror
+                               direction of w_o, e = exponent (the lobe of MATH.md sec. 5: its
+                               integral over the sphere is ks, so albedo <= kd + ks)
+     SHLIGHT_BRDF_BLINN_PHONG  kd / pi + ks D F G2 / (4 cos_i cos_o), D = (e + 2) / (2 pi)
+                               (n.h)^e, G2 with Beckmann's Lambda at alpha = sqrt(2 / (e + 2))
+                               (Walter et al. 2007's equivalence)
+     SHLIGHT_BRDF_BECKMANN     kd / pi + ks D F G2 / (4 cos_i cos_o), anisotropic Beckmann D
+                               (alpha_x, alpha_y) and its exact Smith Lambda (erf)
+     SHLIGHT_BRDF_GGX          the same with the anisotropic GGX (Trowbridge-Reitz) D and Lambda
+   h = normalise(w_i + w_o); G2 = 1 / (1 + Lambda(w_o) + Lambda(w_i)) (height-correlated
+   Smith); F = f0 + (1 - f0) (1 - w_i . h)^5 (Schlick). Alpha is the slope roughness (GGX
+   alpha = roughness^2 in the usual artist mapping). All five are reciprocal; the Phong and
+   microfacet models keep albedo <= kd + ks (tests/test_brdftab measures it). */
+#define SHLIGHT_BRDF_LAMBERT 0
+#define SHLIGHT_BRDF_PHONG 1
+#define SHLIGHT_BRDF_BLINN_PHONG 2
+#define SHLIGHT_BRDF_BECKMANN 3
+#define SHLIGHT_BRDF_GGX 4
+/* shl_brdf_table.flags: bit 0 set for an anisotropic table (n_phi > 1); other bits 0. */
+#define SHLIGHT_BRDF_TABLE_ANISO 1
+/* SHLT file: version written and the only one read; header bytes before the payload. */
+#define SHLIGHT_BRDF_TABLE_VERSION 1
+#define SHLIGHT_BRDF_TABLE_HEADER 32
+/* limits the loaders enforce (SHLIGHT_EDIMS beyond them) */
+#define SHLIGHT_BRDF_TABLE_MAX_SAMPLES 4096 /* n_theta, n_phi each */
+#define SHLIGHT_MERL_MAX_DIM 1024           /* each of the three MERL dimensions */
+
+typedef struct shl_brdf_params {
+  int model;      /* SHLIGHT_BRDF_* */
+  float kd;       /* diffuse albedo, >= 0 */
+  float ks;       /* specular scale, >= 0 */
+  float exponent; /* Phong / Blinn-Phong exponent e >= 0 */
+  float alpha_x;  /* Beckmann / GGX slope roughness along x, > 0 (1e-3 .. 1 tested) */
+  float alpha_y;  /* along y (= alpha_x: isotropic) */
+  float f0;       /* Schlick reflectance at normal incidence, [0, 1] (1: no Fresnel) */
+} shl_brdf_params;
+
+/* shl_brdf_table: n bands, n_theta x n_phi outgoing samples, flags (SHLIGHT_BRDF_TABLE_ANISO
+   iff n_phi > 1), data: shl_brdf_table_size(n, n_theta, n_phi) floats owned by the caller, in
+   the layout of >>brdftab: data[((p * n_theta + t) * 2 + k) * n^2 + i]. */
+typedef struct shl_brdf_table {
+  int n;
+  int n_theta;
+  int n_phi;
+  int flags;
+  float *data;
+} shl_brdf_table;
+
+/* shl_merl: a measured isotropic BRDF in MERL's half-diff parametrisation [MPBM03]: dims
+   (n_theta_h, n_theta_d, n_phi_d), 90 x 90 x 180 in the MERL files; data: 3 * the product of
+   the dims floats owned by the caller, data[((c * n_theta_h + ih) * n_theta_d + id) * n_phi_d
+   + ip], channel c = 0 red, 1 green, 2 blue, the MERL scale factors (1, 1.15, 1.66) / 1500
+   applied, negative (invalid) samples kept as stored. */
+typedef struct shl_merl {
+  int n_theta_h;
+  int n_theta_d;
+  int n_phi_d;
+  float *data;
+} shl_merl;
+
+/* shl_brdf_eval: f_s(w_o, w_i) of an analytic BRDF (models above), evaluated in double. wo, wi
+   unit, local frame; 0 when either is at or below the surface (z <= 0), for an unknown model,
+   and for alpha <= 0 (microfacet models). Reciprocal: f(wo, wi) = f(wi, wo) up to rounding.
+   Cost: ~30 flops (Beckmann: two erf). */
+SHLIGHT_API float shl_brdf_eval(const shl_brdf_params *brdf, const float wo[3], const float wi[3]);
+
+/* shl_brdf_table_size: floats of a table of n bands and n_theta x n_phi samples:
+   n_phi n_theta 2 n^2; 0 for n outside [1, SHLIGHT_MAX_BANDS], n_theta or n_phi outside
+   [1, SHLIGHT_BRDF_TABLE_MAX_SAMPLES]. */
+SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
+
+/* shl_brdf_table_build: fills t->data (t->n, n_theta, n_phi, flags set by the caller, data
+   holding shl_brdf_table_size floats) with the SH of F and F' of the analytic BRDF at each
+   outgoing sample (layout and sampling of >>brdftab). Quadrature in double over w_i:
+   - the kd / pi term: Gauss-Legendre in cos(theta_i) x Gauss-Legendre in phi_i, exact for it
+     (polynomial of degree <= n in the direction);
+   - the specular term (ks > 0): in the frame whose pole is the mirror direction r of w_o, in
+     panels of the polar angle g from r with break points at 2 and 6 lobe widths (width:
+     1/sqrt(e + 1) Phong, 2/sqrt(e + 2) Blinn-Phong, 2 max(alpha) microfacet) and where the circle
+     of angle g around r first meets the horizon (g = pi/2 - theta_r); on each circle the part
+     above the horizon is one arc (its end points in closed form): quad_order Gauss-Legendre
+     nodes in g per panel x 2 quad_order Gauss-Legendre nodes along the arc. The integrand is
+     smooth in each panel, so the quadrature converges geometrically even for sharp lobes and
+     grazing w_o.
+   Y is evaluated in float (shl_sh_eval_accurate); sums in double. out_err_est (may be NULL):
+   max over the table of |T(quad_order) - T(quad_order / 2)|, absolute, in the table's units:
+   the error of the half-order table, an upper estimate of the returned table's error when the
+   quadrature converges (tests/test_brdftab checks it against closed forms). quad_order in
+   [2, 256]. Returns SHLIGHT_EINVAL (data untouched) for NULL t / data / brdf, n, n_theta,
+   n_phi out of range (see shl_brdf_table_size), flags != (n_phi > 1 ? ANISO : 0), an unknown
+   model, negative or non-finite kd / ks / exponent, alpha outside (0, 4] for the microfacet
+   models, f0 outside [0, 1], quad_order out of range; SHLIGHT_ENOMEM when n > 16 and the
+   2 n^2-double accumulator (on the stack up to 16 bands) cannot be allocated. Cost: per sample
+   about 4 panels x 2 quad_order^2 x 1.25 nodes x (one shl_sh_eval + 2 n^2 FMA) (README: ms per
+   table). */
+SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_params *brdf,
+                                            int quad_order, float *out_err_est);
+
+/* shl_brdf_table_write: the SHLT file of t into buf (capacity cap bytes); *out_len (may not be
+   NULL) = its length, 32 + 4 x shl_brdf_table_size bytes. Format (little-endian):
+     0  "SHLT"                4  uint32 version (1)       8  int32 bands n
+     12 int32 n_theta         16 int32 n_phi              20 uint32 flags
+     24 uint32 payload floats (= n_phi n_theta 2 n^2)     28 uint32 CRC-32 (IEEE 802.3,
+        reflected, as zlib's crc32) of bytes 0..27 followed by the payload
+     32 payload: the table's data, float32 little-endian, in the >>brdftab layout.
+   Returns SHLIGHT_EINVAL for NULL t / t->data / out_len or an invalid table (dims, flags),
+   SHLIGHT_ENONFINITE for a NaN / Inf in the data (nothing written), SHLIGHT_ESTORAGE (with
+   *out_len set) when buf is NULL or cap too small. Cost: one pass over the data. */
+SHLIGHT_API shl_result shl_brdf_table_write(const shl_brdf_table *t, void *buf, size_t cap,
+                                            size_t *out_len);
+
+/* shl_brdf_table_read: parses an SHLT file of len bytes at buf into *out, the payload copied to
+   storage (storage_floats floats; out->data = storage). Checks, in this order, each with its
+   error: len < 32: SHLIGHT_ELENGTH; magic: SHLIGHT_EMAGIC; version: SHLIGHT_EVERSION; n,
+   n_theta, n_phi out of range, flags inconsistent with n_phi or with unknown bits, payload
+   floats != n_phi n_theta 2 n^2: SHLIGHT_EDIMS; len != 32 + 4 x payload floats:
+   SHLIGHT_ELENGTH (truncated, or trailing bytes); CRC: SHLIGHT_ECHECKSUM; a NaN / Inf payload
+   float: SHLIGHT_ENONFINITE; storage NULL or storage_floats too small: SHLIGHT_ESTORAGE, with
+   out->n, n_theta, n_phi, flags set and out->data NULL, so that a caller can call with (NULL, 0) to
+   learn the size. NULL out or buf: SHLIGHT_EINVAL. Never reads outside [buf, buf + len) or writes
+   outside storage; on any error storage is untouched. Cost: two passes over the payload. */
+SHLIGHT_API shl_result shl_brdf_table_read(shl_brdf_table *out, const void *buf, size_t len,
+                                           float *storage, size_t storage_floats);
+
+/* shl_merl_read: parses a MERL binary BRDF of len bytes at buf (int32 n_theta_h, n_theta_d,
+   n_phi_d little-endian, then 3 x their product float64 little-endian: red, green, blue, each
+   [theta_h][theta_d][phi_d]) into *out, the samples scaled and stored as floats in storage
+   (storage_floats floats). Errors, in this order: len < 12: SHLIGHT_ELENGTH; a dimension < 1
+   or > SHLIGHT_MERL_MAX_DIM: SHLIGHT_EDIMS; len != 12 + 24 x product: SHLIGHT_ELENGTH; a NaN /
+   Inf sample (or one beyond float range once scaled): SHLIGHT_ENONFINITE; storage NULL / too small:
+   SHLIGHT_ESTORAGE (out's dims set, out->data NULL); NULL out / buf: SHLIGHT_EINVAL. Never reads
+   outside the buffer; storage untouched on error. Cost: two passes over the samples. */
+SHLIGHT_API shl_result shl_merl_read(shl_merl *out, const void *buf, size_t len, float *storage,
+                                     size_t storage_floats);
+
+/* shl_merl_eval: channel c (0 red, 1 green, 2 blue) of the measured BRDF at (wo, wi) (unit,
+   local frame; 0 when either z <= 0): the half-diff angles of [MPBM03] (theta_h, theta_d,
+   phi_d folded to [0, pi) by reciprocity), index coordinates u_h = sqrt(theta_h / (pi/2)) n_theta_h
+   (MERL's non-linear theta_h index), u_d = theta_d / (pi/2) n_theta_d, u_p = phi_d / pi n_phi_d,
+   sample i at coordinate i (MERL's convention: the index is the floor of the coordinate),
+   trilinear between samples (clamped at the ends of theta_h and theta_d, periodic in phi_d);
+   negative samples count as 0. Invalid m or c: 0. Cost: ~100 flops, 2 acos, 2 atan2. */
+SHLIGHT_API float shl_merl_eval(const shl_merl *m, int c, const float wo[3], const float wi[3]);
+
+/* shl_brdf_table_build_merl: shl_brdf_table_build for channel c of a measured BRDF (tables
+   must be isotropic: n_phi = 1, flags 0): the whole BRDF by the specular-frame quadrature,
+   lobe width 0.1 rad. Errors as shl_brdf_table_build (EINVAL also for an invalid m / c). */
+SHLIGHT_API shl_result shl_brdf_table_build_merl(shl_brdf_table *t, const shl_merl *m, int c,
+                                                 int quad_order, float *out_err_est);
 #ifdef __cplusplus
 }
 #endif
@@ -39074,6 +39244,819 @@ SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const
   }
   free(heap);
   return res;
+}
+
+/* ---- CPU-only part of >>brdftab: analytic BRDFs, table build, SHLT file, MERL loader ---- */
+#include <stdlib.h>
+#include <string.h>
+
+#define SHLI_PI 3.14159265358979323846
+
+static double shli_brdf_lambda(int ggx, double ax, double ay, const double w[3]) {
+  double t2 = (ax * w[0]) * (ax * w[0]) + (ay * w[1]) * (ay * w[1]);
+  double a;
+  if (t2 <= 0.0) {
+    return 0.0;
+  }
+  if (ggx) {
+    return 0.5 * (sqrt(1.0 + t2 / (w[2] * w[2])) - 1.0);
+  }
+  a = w[2] / sqrt(t2); /* 1 / (alpha tan theta), Beckmann */
+  if (a > 26.0) {
+    return 0.0; /* both terms below 1e-295 */
+  }
+  return 0.5 * (-erfc(a) + exp(-a * a) / (a * sqrt(SHLI_PI)));
+}
+
+/* f_s in double; spec_only: without the kd / pi term */
+static double shli_brdf_f(const shl_brdf_params *b, const double wo[3], const double wi[3],
+                          int spec_only) {
+  double f = 0.0;
+  double e = (double)b->exponent;
+  double h[3];
+  double hl;
+  double d;
+  double ax;
+  double ay;
+  double c;
+  double g2;
+  double fr;
+  int ggx;
+  if (!(wo[2] > 0.0) || !(wi[2] > 0.0)) {
+    return 0.0;
+  }
+  if (!spec_only) {
+    f = (double)b->kd / SHLI_PI;
+  }
+  if (b->model == SHLIGHT_BRDF_LAMBERT || !(b->ks != 0.0f)) {
+    return f;
+  }
+  if (b->model == SHLIGHT_BRDF_PHONG) {
+    c = 2.0 * wo[2] * wi[2] - (wo[0] * wi[0] + wo[1] * wi[1] + wo[2] * wi[2]);
+    if (c > 0.0) {
+      f += (double)b->ks * (e + 1.0) / (2.0 * SHLI_PI) * pow(c, e);
+    }
+    return f;
+  }
+  h[0] = wi[0] + wo[0];
+  h[1] = wi[1] + wo[1];
+  h[2] = wi[2] + wo[2];
+  hl = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+  if (!(hl > 0.0)) {
+    return f;
+  }
+  h[0] /= hl;
+  h[1] /= hl;
+  h[2] /= hl;
+  if (b->model == SHLIGHT_BRDF_BLINN_PHONG) {
+    ax = ay = sqrt(2.0 / (e + 2.0));
+    d = (e + 2.0) / (2.0 * SHLI_PI) * pow(h[2], e);
+    ggx = 0;
+  } else if (b->model == SHLIGHT_BRDF_BECKMANN || b->model == SHLIGHT_BRDF_GGX) {
+    double sx;
+    double sy;
+    ax = (double)b->alpha_x;
+    ay = (double)b->alpha_y;
+    if (!(ax > 0.0) || !(ay > 0.0)) {
+      return f;
+    }
+    sx = h[0] / ax;
+    sy = h[1] / ay;
+    ggx = b->model == SHLIGHT_BRDF_GGX;
+    if (ggx) {
+      double s = sx * sx + sy * sy + h[2] * h[2];
+      d = 1.0 / (SHLI_PI * ax * ay * s * s);
+    } else {
+      double h2 = h[2] * h[2];
+      d = exp(-(sx * sx + sy * sy) / h2) / (SHLI_PI * ax * ay * h2 * h2);
+    }
+  } else {
+    return 0.0;
+  }
+  g2 = 1.0 / (1.0 + shli_brdf_lambda(ggx, ax, ay, wo) + shli_brdf_lambda(ggx, ax, ay, wi));
+  c = 1.0 - (wi[0] * h[0] + wi[1] * h[1] + wi[2] * h[2]);
+  if (c < 0.0) {
+    c = 0.0;
+  }
+  fr = (double)b->f0 + (1.0 - (double)b->f0) * (c * c) * (c * c) * c;
+  return f + (double)b->ks * d * fr * g2 / (4.0 * wi[2] * wo[2]);
+}
+
+SHLIGHT_API float shl_brdf_eval(const shl_brdf_params *brdf, const float wo[3], const float wi[3]) {
+  double o[3];
+  double i[3];
+  int k;
+  if (!brdf || !wo || !wi) {
+    return 0.0f;
+  }
+  for (k = 0; k < 3; ++k) {
+    o[k] = (double)wo[k];
+    i[k] = (double)wi[k];
+  }
+  return (float)shli_brdf_f(brdf, o, i, 0);
+}
+
+SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi) {
+  if (n < 1 || n > SHLIGHT_MAX_BANDS || n_theta < 1 || n_theta > SHLIGHT_BRDF_TABLE_MAX_SAMPLES ||
+      n_phi < 1 || n_phi > SHLIGHT_BRDF_TABLE_MAX_SAMPLES) {
+    return 0;
+  }
+  return (size_t)n_phi * (size_t)n_theta * 2u * (size_t)n * (size_t)n;
+}
+
+static int shli_brdf_table_valid(const shl_brdf_table *t) {
+  return shl_brdf_table_size(t->n, t->n_theta, t->n_phi) != 0 &&
+         t->flags == (t->n_phi > 1 ? SHLIGHT_BRDF_TABLE_ANISO : 0);
+}
+
+/* Gauss-Legendre nodes and weights on [-1, 1], q <= 512 (Newton from Tricomi's guess, double) */
+static void shli_gauss_legendre(int q, double *x, double *w) {
+  int i;
+  int k;
+  int it;
+  for (i = 0; i < (q + 1) / 2; ++i) {
+    double z = cos(SHLI_PI * ((double)i + 0.75) / ((double)q + 0.5));
+    double p0 = 1.0;
+    double p1 = 0.0;
+    double dp = 1.0;
+    for (it = 0; it < 100; ++it) {
+      double dz;
+      p0 = 1.0;
+      p1 = 0.0;
+      for (k = 1; k <= q; ++k) {
+        double p2 = p1;
+        p1 = p0;
+        p0 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p2) / k;
+      }
+      dp = q * (z * p0 - p1) / (z * z - 1.0);
+      dz = p0 / dp;
+      z -= dz;
+      if (fabs(dz) < 1e-16) {
+        break;
+      }
+    }
+    p0 = 1.0;
+    p1 = 0.0;
+    for (k = 1; k <= q; ++k) {
+      double p2 = p1;
+      p1 = p0;
+      p0 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p2) / k;
+    }
+    dp = q * (z * p0 - p1) / (z * z - 1.0);
+    x[i] = -z;
+    x[q - 1 - i] = z;
+    w[i] = w[q - 1 - i] = 2.0 / ((1.0 - z * z) * dp * dp);
+  }
+}
+
+/* the integrand source of a build: an analytic BRDF (kd / pi split off) or a MERL channel */
+typedef struct shli_tabsrc {
+  const shl_brdf_params *brdf;
+  const shl_merl *merl;
+  int channel;
+  double width; /* lobe width in radians (specular frame break points) */
+  double gmax;  /* the lobe is 0 beyond this angle from r (pi: no limit) */
+} shli_tabsrc;
+
+static double shli_merl_f(const shl_merl *m, int c, const double wo[3], const double wi[3]);
+
+static double shli_src_f(const shli_tabsrc *s, const double wo[3], const double wi[3]) {
+  if (s->brdf) {
+    return shli_brdf_f(s->brdf, wo, wi, 1);
+  }
+  return shli_merl_f(s->merl, s->channel, wo, wi);
+}
+
+/* adds weight a f(wi) [cos_i Y(wi), Y(wi)] to acc[0 .. 2 nn) */
+static void shli_tab_node(int n, double *acc, float *y, double a, const double wi[3]) {
+  float d[3];
+  int nn = n * n;
+  int i;
+  double ac = a * wi[2];
+  d[0] = (float)wi[0];
+  d[1] = (float)wi[1];
+  d[2] = (float)wi[2];
+  shl_sh_eval(n, d, y);
+  for (i = 0; i < nn; ++i) {
+    acc[i] += ac * (double)y[i];
+    acc[nn + i] += a * (double)y[i];
+  }
+}
+
+/* the kd / pi term: Gauss-Legendre in cos(theta_i) x uniform phi_i, exact for degree <= n */
+static void shli_tab_diffuse(int n, double kd, double *acc, float *y) {
+  double x[40];
+  double w[40];
+  int qz = n / 2 + 2;
+  int np = n + 2;
+  int i;
+  int j;
+  double wi[3];
+  shli_gauss_legendre(qz, x, w);
+  for (i = 0; i < qz; ++i) {
+    double z = 0.5 * (x[i] + 1.0);
+    double s = sqrt((1.0 - z) * (1.0 + z));
+    for (j = 0; j < np; ++j) {
+      double ph = 2.0 * SHLI_PI * ((double)j + 0.5) / (double)np;
+      wi[0] = s * cos(ph);
+      wi[1] = s * sin(ph);
+      wi[2] = z;
+      shli_tab_node(n, acc, y, kd / SHLI_PI * 0.5 * w[i] * 2.0 * SHLI_PI / (double)np, wi);
+    }
+  }
+}
+
+/* the specular-frame quadrature (see shl_brdf_table_build) at order q */
+static void shli_tab_spec(int n, const shli_tabsrc *src, const double wo[3], int q, double *acc,
+                          float *y, const double *xg, const double *wg, double *ps_, double *pw_) {
+  double r[3];
+  double e1[3];
+  double e2[3];
+  double br[8];
+  double st;
+  double ct;
+  double gmax;
+  double gh;
+  int nb = 0;
+  int na;
+  int p;
+  int i;
+  int j;
+  int k;
+  r[0] = -wo[0];
+  r[1] = -wo[1];
+  r[2] = wo[2];
+  ct = r[2];
+  st = sqrt(r[0] * r[0] + r[1] * r[1]);
+  if (st > 1e-300) {
+    e1[0] = -ct * r[0] / st; /* (z - ct r) / st */
+    e1[1] = -ct * r[1] / st;
+    e1[2] = st;
+    e2[0] = -r[1] / st; /* r x e1 */
+    e2[1] = r[0] / st;
+    e2[2] = 0.0;
+  } else {
+    e1[0] = 1.0;
+    e1[1] = 0.0;
+    e1[2] = 0.0;
+    e2[0] = 0.0;
+    e2[1] = 1.0;
+    e2[2] = 0.0;
+  }
+  gh = 0.5 * SHLI_PI - atan2(st, ct);
+  gmax = 0.5 * SHLI_PI + atan2(st, ct);
+  if (gmax > SHLI_PI) {
+    gmax = SHLI_PI;
+  }
+  if (gmax > src->gmax) {
+    gmax = src->gmax;
+  }
+  br[nb++] = 0.0;
+  br[nb++] = gmax;
+  if (gh > 0.0 && gh < gmax) {
+    br[nb++] = gh;
+  }
+  for (k = 0; k < 4; ++k) {
+    double b = src->width * 2.0 * pow(3.0, (double)k);
+    if (b < gmax) {
+      br[nb++] = b;
+    }
+  }
+  for (i = 1; i < nb; ++i) { /* insertion sort */
+    double v = br[i];
+    for (j = i; j > 0 && br[j - 1] > v; --j) {
+      br[j] = br[j - 1];
+    }
+    br[j] = v;
+  }
+  for (p = 0; p + 1 < nb; ++p) {
+    double g0 = br[p];
+    double g1 = br[p + 1];
+    if (!(g1 - g0 > 1e-12)) {
+      continue;
+    }
+    for (i = 0; i < q; ++i) {
+      /* g = g0 + (g1 - g0) s^2 (3 - 2 s): smooth through the square-root ends of the arc
+         length where a circle meets or leaves the horizon */
+      double s = 0.5 * (xg[i] + 1.0);
+      double g = g0 + (g1 - g0) * s * s * (3.0 - 2.0 * s);
+      double sg = sin(g);
+      double cg = cos(g);
+      double wgi = 0.5 * wg[i] * (g1 - g0) * 6.0 * s * (1.0 - s) * sg;
+      double cs; /* the arc above the horizon: cos(psi) > cs */
+      double pm;
+      int full;
+      if (st > 1e-300 && sg > 0.0) {
+        cs = -cg * ct / (sg * st);
+      } else {
+        cs = cg > 0.0 ? -2.0 : 2.0;
+      }
+      if (cs >= 1.0) {
+        continue;
+      }
+      full = cs <= -1.0;
+      pm = full ? SHLI_PI : acos(cs);
+      /* the arc: 2q uniform nodes round a full circle; a partial arc (-pm, pm) in panels at
+         0, +-w/2, +-3w/2, +-9w/2 (the lobe of a grazing w_o is narrow in psi) and graded towards
+         the ends, q nodes each */
+      na = 0;
+      if (full) {
+        for (j = 0; j < 2 * q; ++j) {
+          ps_[na] = 2.0 * SHLI_PI * ((double)j + 0.5) / (double)(2 * q);
+          pw_[na++] = 2.0 * SHLI_PI / (double)(2 * q);
+        }
+      } else {
+        double ab[8];
+        double la;
+        int nab = 0;
+        int pa;
+        ab[nab++] = 0.0;
+        for (k = 0; k < 3; ++k) {
+          double v = 0.5 * src->width * pow(3.0, (double)k);
+          if (v < pm) {
+            ab[nab++] = v;
+          }
+        }
+        la = pm - ab[nab - 1]; /* graded towards the horizon, where F' of a grazing w_o has a
+                                  near-logarithmic peak (1 / cos_i until Lambda_i ~ Lambda_o) */
+        ab[nab++] = pm - la / 4.0;
+        ab[nab++] = pm - la / 16.0;
+        ab[nab++] = pm - la / 64.0;
+        ab[nab++] = pm;
+        for (pa = 0; pa + 1 < nab; ++pa) {
+          double a0 = ab[pa];
+          double a1 = ab[pa + 1];
+          for (j = 0; j < q; ++j) {
+            double v = 0.5 * (a0 + a1) + 0.5 * (a1 - a0) * xg[j];
+            ps_[na] = v;
+            pw_[na++] = 0.5 * (a1 - a0) * wg[j];
+            ps_[na] = -v;
+            pw_[na++] = 0.5 * (a1 - a0) * wg[j];
+          }
+        }
+      }
+      for (j = 0; j < na; ++j) {
+        double ps = ps_[j];
+        double wj = pw_[j];
+        double wi[3];
+        double cp;
+        double sp;
+        double f;
+        cp = cos(ps);
+        sp = sin(ps);
+        for (k = 0; k < 3; ++k) {
+          wi[k] = cg * r[k] + sg * (cp * e1[k] + sp * e2[k]);
+        }
+        if (!(wi[2] > 0.0)) {
+          continue;
+        }
+        f = shli_src_f(src, wo, wi);
+        if (f != 0.0) {
+          shli_tab_node(n, acc, y, wgi * wj * f, wi);
+        }
+      }
+    }
+  }
+}
+
+static shl_result shli_tab_build(shl_brdf_table *t, const shli_tabsrc *src, double kd,
+                                 int quad_order, float *out_err_est) {
+  double xg[256];
+  double wg[256];
+  double xg2[128];
+  double wg2[128];
+  double ps[14 * 256];
+  double pw[14 * 256];
+  double acc_s[2 * 256];
+  float y_s[256];
+  double *acc = acc_s;
+  float *y = y_s;
+  void *heap = NULL;
+  double err = 0.0;
+  int n = t->n;
+  int nn = n * n;
+  int q2 = quad_order / 2 > 0 ? quad_order / 2 : 1;
+  int spec = src->merl != NULL ||
+             (src->brdf && src->brdf->model != SHLIGHT_BRDF_LAMBERT && src->brdf->ks != 0.0f);
+  int p;
+  int ti;
+  int i;
+  if (nn > 256) {
+    heap = malloc((size_t)nn * (2 * sizeof(double) + sizeof(float)));
+    if (!heap) {
+      return SHLIGHT_ENOMEM;
+    }
+    acc = (double *)heap;
+    y = (float *)(acc + 2 * nn);
+  }
+  shli_gauss_legendre(quad_order, xg, wg);
+  shli_gauss_legendre(q2, xg2, wg2);
+  for (p = 0; p < t->n_phi; ++p) {
+    double ph = 2.0 * SHLI_PI * (double)p / (double)t->n_phi;
+    for (ti = 0; ti < t->n_theta; ++ti) {
+      double th = 0.5 * SHLI_PI * ((double)ti + 0.5) / (double)t->n_theta;
+      double wo[3];
+      float *out = t->data + (size_t)(p * t->n_theta + ti) * 2u * (size_t)nn;
+      wo[0] = sin(th) * cos(ph);
+      wo[1] = sin(th) * sin(ph);
+      wo[2] = cos(th);
+      memset(acc, 0, (size_t)(2 * nn) * sizeof(double));
+      if (kd != 0.0) {
+        shli_tab_diffuse(n, kd, acc, y);
+      }
+      if (spec && out_err_est) {
+        shli_tab_spec(n, src, wo, q2, acc, y, xg2, wg2, ps, pw);
+        for (i = 0; i < 2 * nn; ++i) {
+          out[i] = (float)acc[i]; /* the half-order table, compared below */
+        }
+        memset(acc, 0, (size_t)(2 * nn) * sizeof(double));
+        if (kd != 0.0) {
+          shli_tab_diffuse(n, kd, acc, y);
+        }
+      }
+      if (spec) {
+        shli_tab_spec(n, src, wo, quad_order, acc, y, xg, wg, ps, pw);
+      }
+      for (i = 0; i < 2 * nn; ++i) {
+        if (spec && out_err_est) {
+          double e = fabs(acc[i] - (double)out[i]);
+          if (e > err) {
+            err = e;
+          }
+        }
+        out[i] = (float)acc[i];
+      }
+    }
+  }
+  if (out_err_est) {
+    *out_err_est = (float)err;
+  }
+  free(heap);
+  return SHLIGHT_OK;
+}
+
+SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_params *brdf,
+                                            int quad_order, float *out_err_est) {
+  shli_tabsrc src;
+  int micro;
+  if (!t || !t->data || !brdf || !shli_brdf_table_valid(t) || quad_order < 2 || quad_order > 256) {
+    return SHLIGHT_EINVAL;
+  }
+  if (brdf->model < SHLIGHT_BRDF_LAMBERT || brdf->model > SHLIGHT_BRDF_GGX ||
+      !(brdf->kd >= 0.0f && brdf->kd < 3.4e38f) || !(brdf->ks >= 0.0f && brdf->ks < 3.4e38f)) {
+    return SHLIGHT_EINVAL;
+  }
+  micro = brdf->model == SHLIGHT_BRDF_BECKMANN || brdf->model == SHLIGHT_BRDF_GGX;
+  if ((brdf->model == SHLIGHT_BRDF_PHONG || brdf->model == SHLIGHT_BRDF_BLINN_PHONG) &&
+      !(brdf->exponent >= 0.0f && brdf->exponent < 3.4e38f)) {
+    return SHLIGHT_EINVAL;
+  }
+  if (micro && !(brdf->alpha_x > 0.0f && brdf->alpha_x <= 4.0f && brdf->alpha_y > 0.0f &&
+                 brdf->alpha_y <= 4.0f)) {
+    return SHLIGHT_EINVAL;
+  }
+  if (brdf->model >= SHLIGHT_BRDF_BLINN_PHONG && !(brdf->f0 >= 0.0f && brdf->f0 <= 1.0f)) {
+    return SHLIGHT_EINVAL;
+  }
+  src.brdf = brdf;
+  src.merl = NULL;
+  src.channel = 0;
+  src.gmax = SHLI_PI;
+  if (brdf->model == SHLIGHT_BRDF_PHONG) {
+    src.width = 1.0 / sqrt((double)brdf->exponent + 1.0);
+    src.gmax = 0.5 * SHLI_PI;
+  } else if (brdf->model == SHLIGHT_BRDF_BLINN_PHONG) {
+    src.width = 2.0 / sqrt((double)brdf->exponent + 2.0);
+  } else {
+    src.width = 2.0 * (double)(brdf->alpha_x > brdf->alpha_y ? brdf->alpha_x : brdf->alpha_y);
+  }
+  return shli_tab_build(t, &src, (double)brdf->kd, quad_order, out_err_est);
+}
+
+/* ---- MERL ---- */
+static double shli_merl_f(const shl_merl *m, int c, const double wo[3], const double wi[3]) {
+  double h[3];
+  double hl;
+  double th;
+  double ph;
+  double d[3];
+  double tmp[3];
+  double td;
+  double pd;
+  double u[3];
+  int nd[3];
+  int i0[3];
+  int i1[3];
+  double fr[3];
+  double v = 0.0;
+  int k;
+  int a;
+  int b;
+  int e;
+  if (!(wo[2] > 0.0) || !(wi[2] > 0.0)) {
+    return 0.0;
+  }
+  h[0] = wi[0] + wo[0];
+  h[1] = wi[1] + wo[1];
+  h[2] = wi[2] + wo[2];
+  hl = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+  for (k = 0; k < 3; ++k) {
+    h[k] /= hl;
+  }
+  th = acos(h[2] > 1.0 ? 1.0 : h[2]);
+  ph = atan2(h[1], h[0]);
+  /* w_i rotated by -phi_h about z, then by -theta_h about y */
+  tmp[0] = wi[0] * cos(ph) + wi[1] * sin(ph);
+  tmp[1] = -wi[0] * sin(ph) + wi[1] * cos(ph);
+  tmp[2] = wi[2];
+  d[0] = tmp[0] * cos(th) - tmp[2] * sin(th);
+  d[1] = tmp[1];
+  d[2] = tmp[0] * sin(th) + tmp[2] * cos(th);
+  td = acos(d[2] > 1.0 ? 1.0 : (d[2] < -1.0 ? -1.0 : d[2]));
+  pd = atan2(d[1], d[0]);
+  if (pd < 0.0) {
+    pd += SHLI_PI;
+  }
+  nd[0] = m->n_theta_h;
+  nd[1] = m->n_theta_d;
+  nd[2] = m->n_phi_d;
+  u[0] = sqrt(th / (0.5 * SHLI_PI)) * (double)nd[0];
+  u[1] = td / (0.5 * SHLI_PI) * (double)nd[1];
+  u[2] = pd / SHLI_PI * (double)nd[2];
+  for (k = 0; k < 3; ++k) {
+    double f0;
+    if (!(u[k] > 0.0)) {
+      u[k] = 0.0;
+    }
+    f0 = floor(u[k]);
+    if (f0 > (double)(nd[k] - 1)) {
+      f0 = (double)(nd[k] - 1);
+    }
+    i0[k] = (int)f0;
+    fr[k] = u[k] - f0;
+    if (fr[k] > 1.0) {
+      fr[k] = 1.0;
+    }
+    i1[k] = i0[k] + 1;
+    if (i1[k] >= nd[k]) {
+      i1[k] = k == 2 ? 0 : nd[k] - 1; /* periodic in phi_d, clamped in the thetas */
+    }
+  }
+  for (a = 0; a < 2; ++a) {
+    for (b = 0; b < 2; ++b) {
+      for (e = 0; e < 2; ++e) {
+        size_t ih = (size_t)(a ? i1[0] : i0[0]);
+        size_t id = (size_t)(b ? i1[1] : i0[1]);
+        size_t ip = (size_t)(e ? i1[2] : i0[2]);
+        double w =
+            (a ? fr[0] : 1.0 - fr[0]) * (b ? fr[1] : 1.0 - fr[1]) * (e ? fr[2] : 1.0 - fr[2]);
+        double s =
+            (double)
+                m->data[(((size_t)c * (size_t)nd[0] + ih) * (size_t)nd[1] + id) * (size_t)nd[2] +
+                        ip];
+        if (s > 0.0 && w != 0.0) {
+          v += w * s;
+        }
+      }
+    }
+  }
+  return v;
+}
+
+static int shli_merl_valid(const shl_merl *m) {
+  return m && m->data && m->n_theta_h >= 1 && m->n_theta_h <= SHLIGHT_MERL_MAX_DIM &&
+         m->n_theta_d >= 1 && m->n_theta_d <= SHLIGHT_MERL_MAX_DIM && m->n_phi_d >= 1 &&
+         m->n_phi_d <= SHLIGHT_MERL_MAX_DIM;
+}
+
+SHLIGHT_API float shl_merl_eval(const shl_merl *m, int c, const float wo[3], const float wi[3]) {
+  double o[3];
+  double i[3];
+  int k;
+  if (!shli_merl_valid(m) || c < 0 || c > 2 || !wo || !wi) {
+    return 0.0f;
+  }
+  for (k = 0; k < 3; ++k) {
+    o[k] = (double)wo[k];
+    i[k] = (double)wi[k];
+  }
+  return (float)shli_merl_f(m, c, o, i);
+}
+
+SHLIGHT_API shl_result shl_brdf_table_build_merl(shl_brdf_table *t, const shl_merl *m, int c,
+                                                 int quad_order, float *out_err_est) {
+  shli_tabsrc src;
+  if (!t || !t->data || !shli_brdf_table_valid(t) || t->n_phi != 1 || !shli_merl_valid(m) ||
+      c < 0 || c > 2 || quad_order < 2 || quad_order > 256) {
+    return SHLIGHT_EINVAL;
+  }
+  src.brdf = NULL;
+  src.merl = m;
+  src.channel = c;
+  src.width = 0.1;
+  src.gmax = SHLI_PI;
+  return shli_tab_build(t, &src, 0.0, quad_order, out_err_est);
+}
+
+/* ---- byte access and CRC-32 ---- */
+static unsigned long shli_rd32(const unsigned char *p) {
+  return (unsigned long)p[0] | ((unsigned long)p[1] << 8) | ((unsigned long)p[2] << 16) |
+         ((unsigned long)p[3] << 24);
+}
+static void shli_wr32(unsigned char *p, unsigned long v) {
+  p[0] = (unsigned char)(v & 0xffu);
+  p[1] = (unsigned char)((v >> 8) & 0xffu);
+  p[2] = (unsigned char)((v >> 16) & 0xffu);
+  p[3] = (unsigned char)((v >> 24) & 0xffu);
+}
+static int shli_rdi32(const unsigned char *p) {
+  unsigned long v = shli_rd32(p);
+  return v >= 0x80000000ul ? -(int)(0xfffffffful - v) - 1 : (int)v;
+}
+static float shli_rdf32(const unsigned char *p) {
+  unsigned long v = shli_rd32(p);
+  unsigned int u = (unsigned int)v;
+  float f;
+  memcpy(&f, &u, sizeof f); /* IEEE-754 binary32 host, as everywhere in shlight */
+  return f;
+}
+static double shli_rdf64(const unsigned char *p) {
+  unsigned long lo = shli_rd32(p);
+  unsigned long hi = shli_rd32(p + 4);
+  double d;
+  unsigned char b[8];
+  int k;
+  for (k = 0; k < 4; ++k) {
+    b[k] = (unsigned char)((lo >> (8 * k)) & 0xffu);
+    b[4 + k] = (unsigned char)((hi >> (8 * k)) & 0xffu);
+  }
+  { /* little-endian bytes to the host's order */
+    const unsigned int one = 1u;
+    unsigned char le;
+    memcpy(&le, &one, 1);
+    if (!le) {
+      for (k = 0; k < 4; ++k) {
+        unsigned char s = b[k];
+        b[k] = b[7 - k];
+        b[7 - k] = s;
+      }
+    }
+  }
+  memcpy(&d, b, sizeof d);
+  return d;
+}
+
+static const unsigned long shli_crc_nibble[16] = {
+    0x00000000ul, 0x1db71064ul, 0x3b6e20c8ul, 0x26d930acul, 0x76dc4190ul, 0x6b6b51f4ul,
+    0x4db26158ul, 0x5005713cul, 0xedb88320ul, 0xf00f9344ul, 0xd6d6a3e8ul, 0xcb61b38cul,
+    0x9b64c2b0ul, 0x86d3d2d4ul, 0xa00ae278ul, 0xbdbdf21cul};
+
+/* CRC-32 update (state pre- and post-inverted by the caller) */
+static unsigned long shli_crc32(unsigned long crc, const unsigned char *p, size_t len) {
+  size_t i;
+  for (i = 0; i < len; ++i) {
+    crc ^= p[i];
+    crc = (crc >> 4) ^ shli_crc_nibble[crc & 15u];
+    crc = (crc >> 4) ^ shli_crc_nibble[crc & 15u];
+  }
+  return crc & 0xfffffffful;
+}
+
+SHLIGHT_API shl_result shl_brdf_table_write(const shl_brdf_table *t, void *buf, size_t cap,
+                                            size_t *out_len) {
+  unsigned char *b = (unsigned char *)buf;
+  size_t count;
+  size_t need;
+  size_t i;
+  unsigned long crc;
+  if (!t || !t->data || !out_len || !shli_brdf_table_valid(t)) {
+    return SHLIGHT_EINVAL;
+  }
+  count = shl_brdf_table_size(t->n, t->n_theta, t->n_phi);
+  need = SHLIGHT_BRDF_TABLE_HEADER + 4u * count;
+  *out_len = need;
+  for (i = 0; i < count; ++i) {
+    if (!(fabsf(t->data[i]) <= 3.4028235e38f)) {
+      return SHLIGHT_ENONFINITE;
+    }
+  }
+  if (!b || cap < need) {
+    return SHLIGHT_ESTORAGE;
+  }
+  memcpy(b, "SHLT", 4);
+  shli_wr32(b + 4, SHLIGHT_BRDF_TABLE_VERSION);
+  shli_wr32(b + 8, (unsigned long)t->n);
+  shli_wr32(b + 12, (unsigned long)t->n_theta);
+  shli_wr32(b + 16, (unsigned long)t->n_phi);
+  shli_wr32(b + 20, (unsigned long)t->flags);
+  shli_wr32(b + 24, (unsigned long)count);
+  for (i = 0; i < count; ++i) {
+    unsigned int u;
+    memcpy(&u, t->data + i, sizeof u);
+    shli_wr32(b + SHLIGHT_BRDF_TABLE_HEADER + 4u * i, (unsigned long)u);
+  }
+  crc = shli_crc32(0xfffffffful, b, 28);
+  crc = shli_crc32(crc, b + SHLIGHT_BRDF_TABLE_HEADER, 4u * count) ^ 0xfffffffful;
+  shli_wr32(b + 28, crc);
+  return SHLIGHT_OK;
+}
+
+SHLIGHT_API shl_result shl_brdf_table_read(shl_brdf_table *out, const void *buf, size_t len,
+                                           float *storage, size_t storage_floats) {
+  const unsigned char *b = (const unsigned char *)buf;
+  shl_brdf_table t;
+  unsigned long count;
+  unsigned long flags;
+  unsigned long crc;
+  size_t want;
+  size_t i;
+  if (!out || !buf) {
+    return SHLIGHT_EINVAL;
+  }
+  if (len < SHLIGHT_BRDF_TABLE_HEADER) {
+    return SHLIGHT_ELENGTH;
+  }
+  if (memcmp(b, "SHLT", 4) != 0) {
+    return SHLIGHT_EMAGIC;
+  }
+  if (shli_rd32(b + 4) != SHLIGHT_BRDF_TABLE_VERSION) {
+    return SHLIGHT_EVERSION;
+  }
+  t.n = shli_rdi32(b + 8);
+  t.n_theta = shli_rdi32(b + 12);
+  t.n_phi = shli_rdi32(b + 16);
+  flags = shli_rd32(b + 20);
+  t.flags = flags > 1ul ? -1 : (int)flags;
+  t.data = NULL;
+  count = shli_rd32(b + 24);
+  want = shl_brdf_table_size(t.n, t.n_theta, t.n_phi);
+  if (want == 0 || !shli_brdf_table_valid(&t) || (size_t)count != want) {
+    return SHLIGHT_EDIMS;
+  }
+  if ((len - SHLIGHT_BRDF_TABLE_HEADER) % 4u != 0 ||
+      (len - SHLIGHT_BRDF_TABLE_HEADER) / 4u != want) {
+    return SHLIGHT_ELENGTH;
+  }
+  crc = shli_crc32(0xfffffffful, b, 28);
+  crc = shli_crc32(crc, b + SHLIGHT_BRDF_TABLE_HEADER, 4u * want) ^ 0xfffffffful;
+  if (crc != shli_rd32(b + 28)) {
+    return SHLIGHT_ECHECKSUM;
+  }
+  for (i = 0; i < want; ++i) {
+    if (!(fabsf(shli_rdf32(b + SHLIGHT_BRDF_TABLE_HEADER + 4u * i)) <= 3.4028235e38f)) {
+      return SHLIGHT_ENONFINITE;
+    }
+  }
+  *out = t;
+  if (!storage || storage_floats < want) {
+    return SHLIGHT_ESTORAGE;
+  }
+  for (i = 0; i < want; ++i) {
+    storage[i] = shli_rdf32(b + SHLIGHT_BRDF_TABLE_HEADER + 4u * i);
+  }
+  out->data = storage;
+  return SHLIGHT_OK;
+}
+
+SHLIGHT_API shl_result shl_merl_read(shl_merl *out, const void *buf, size_t len, float *storage,
+                                     size_t storage_floats) {
+  static const double scale[3] = {1.0 / 1500.0, 1.15 / 1500.0, 1.66 / 1500.0};
+  const unsigned char *b = (const unsigned char *)buf;
+  shl_merl m;
+  size_t per;
+  size_t i;
+  if (!out || !buf) {
+    return SHLIGHT_EINVAL;
+  }
+  if (len < 12) {
+    return SHLIGHT_ELENGTH;
+  }
+  m.n_theta_h = shli_rdi32(b);
+  m.n_theta_d = shli_rdi32(b + 4);
+  m.n_phi_d = shli_rdi32(b + 8);
+  m.data = NULL;
+  if (m.n_theta_h < 1 || m.n_theta_h > SHLIGHT_MERL_MAX_DIM || m.n_theta_d < 1 ||
+      m.n_theta_d > SHLIGHT_MERL_MAX_DIM || m.n_phi_d < 1 || m.n_phi_d > SHLIGHT_MERL_MAX_DIM) {
+    return SHLIGHT_EDIMS;
+  }
+  per = (size_t)m.n_theta_h * (size_t)m.n_theta_d * (size_t)m.n_phi_d;
+  if ((len - 12) % 24u != 0 || (len - 12) / 24u != per) {
+    return SHLIGHT_ELENGTH;
+  }
+  for (i = 0; i < 3 * per; ++i) {
+    if (!(fabs(shli_rdf64(b + 12 + 8 * i) * scale[i / per]) <= 3.4028234663852886e38)) {
+      return SHLIGHT_ENONFINITE; /* NaN, infinity, or beyond float once scaled */
+    }
+  }
+  *out = m;
+  if (!storage || storage_floats < 3 * per) {
+    return SHLIGHT_ESTORAGE;
+  }
+  for (i = 0; i < 3 * per; ++i) {
+    storage[i] = (float)(shli_rdf64(b + 12 + 8 * i) * scale[i / per]);
+  }
+  out->data = storage;
+  return SHLIGHT_OK;
 }
 
 #endif /* SHLIGHT_IMPLEMENTATION */

@@ -54,7 +54,7 @@ void shl_brdf_table_cell(int n_theta, int n_phi, vec3 wo, out int out_idx[4], ou
     z = 0.0;
   }
   if (n_theta > 1) {
-    u = shli_atan2r(rho, z) * (SHLIGHT_REAL(SHLIGHT_ITOF(n_theta - 1)) * 0.63661977236758134);
+    u = shli_atan2r(rho, z) * (SHLIGHT_REAL(SHLIGHT_ITOF(n_theta)) * 0.63661977236758134) - 0.5;
     if (!(u > 0.0)) {
       u = 0.0;
     }
