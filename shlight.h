@@ -39334,7 +39334,9 @@ static double shli_brdf_f(const shl_brdf_params *b, const double wo[3], const do
     return 0.0;
   }
   g2 = 1.0 / (1.0 + shli_brdf_lambda(ggx, ax, ay, wo) + shli_brdf_lambda(ggx, ax, ay, wi));
-  c = 1.0 - (wi[0] * h[0] + wi[1] * h[1] + wi[2] * h[2]);
+  /* 1 - (w_i . h): the mean of w_i . h and w_o . h (equal for unit inputs), so that float
+     inputs a few ulp off unit keep f exactly reciprocal */
+  c = 1.0 - 0.5 * ((wi[0] + wo[0]) * h[0] + (wi[1] + wo[1]) * h[1] + (wi[2] + wo[2]) * h[2]);
   if (c < 0.0) {
     c = 0.0;
   }
