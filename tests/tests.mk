@@ -122,3 +122,34 @@ $(TESTS_BUILD)/native/test_grid: tests/test_grid.c tests/tl.h shlight.h
 $(TESTS_BUILD)/asan/test_grid: tests/test_grid.c tests/tl.h shlight.h
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) $(TESTS_ASAN) -o $@ tests/test_grid.c -lm
+
+# >>brdftab: BRDF SH tables against closed forms and quadrature, the SHLT / MERL loaders and
+# their error paths (tests/test_brdftab.c); the loaders' fuzz corpus replayed (fuzz_brdftab.c)
+TESTS_BRDFTAB_FLAGS := -Wno-conversion -Wno-double-promotion
+TESTS_BRDFTAB_DEPS := tests/test_brdftab.c tests/ref/shref.h tests/tl.h shlight.h
+TESTS_FUZZ_BRDFTAB_DEPS := tests/fuzz_replay.c tests/fuzz_brdftab.c shlight.h
+$(TESTS_BUILD)/test_brdftab: $(TESTS_BRDFTAB_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_BRDFTAB_FLAGS) -o $@ tests/test_brdftab.c $(TESTS_QUADLIBS)
+$(TESTS_BUILD)/asan/test_brdftab: $(TESTS_BRDFTAB_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_BRDFTAB_FLAGS) $(TESTS_ASAN) -o $@ tests/test_brdftab.c $(TESTS_QUADLIBS)
+$(TESTS_BUILD)/fuzz_replay_brdftab: $(TESTS_FUZZ_BRDFTAB_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -o $@ tests/fuzz_replay.c tests/fuzz_brdftab.c -lm
+$(TESTS_BUILD)/asan/fuzz_replay_brdftab: $(TESTS_FUZZ_BRDFTAB_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/fuzz_replay.c tests/fuzz_brdftab.c -lm
+$(TESTS_BUILD)/fuzz_brdftab: tests/fuzz_brdftab.c shlight.h
+	@mkdir -p $(@D)
+	$(CLANG) -std=c99 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
+	    -o $@ tests/fuzz_brdftab.c -lm
+
+# libFuzzer run of the two loaders on one core, niced (FUZZ_SECONDS, default 60); the seed
+# corpus is copied to a scratch directory (tests/gen_brdftab_corpus.py rewrites the seeds)
+.PHONY: fuzz-brdftab
+fuzz-brdftab: $(TESTS_BUILD)/fuzz_brdftab
+	@mkdir -p $(TESTS_BUILD)/fuzz_brdftab_corpus
+	cp tests/corpus/brdftab/* $(TESTS_BUILD)/fuzz_brdftab_corpus/
+	nice -n 19 $(TESTS_BUILD)/fuzz_brdftab -max_len=4096 -max_total_time=$(FUZZ_SECONDS) \
+	    -print_final_stats=1 -artifact_prefix=$(TESTS_BUILD)/ $(TESTS_BUILD)/fuzz_brdftab_corpus
