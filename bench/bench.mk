@@ -50,3 +50,14 @@ bench-grid: build/bench/bench_grid
 
 bench: bench-grid
 .PHONY: bench-grid
+
+build/bench/bench_brdftab: bench/bench_brdftab.c shlight.h tests/ref/shref.h
+	@mkdir -p build/bench
+	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_brdftab.c $(BENCH_LDLIBS)
+
+bench-brdftab: build/bench/bench_brdftab
+	@mkdir -p bench/out
+	build/bench/bench_brdftab && cat bench/out/brdftab.md
+
+bench: bench-brdftab
+.PHONY: bench-brdftab
