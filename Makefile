@@ -3,6 +3,7 @@
 #   make test         everything CI runs; ends with "N passed, N failed"
 #   make bench        speed against error tables (bench/out/), callgrind instruction counts
 #   make fuzz         libFuzzer run of the basis entry point (FUZZ_SECONDS, default 60)
+#   make fuzz-brdftab libFuzzer run of the BRDF table loaders (SHLT, MERL), niced, one core
 #   make gen          regenerate the straight-line code and the GLSL twins (tools/gen_basis.py)
 #   make format       clang-format the hand-written sources
 CC ?= gcc

@@ -21,6 +21,8 @@
                   exact signed triangle solid angle
      >>grid       light grid: build (values + gradients, culling, 2 threads) and cell sampling
                   (trilinear, first-order Taylor, Hermite)
+     >>brdftab    BRDF SH tables (Kautz-style): lookup kernels; CPU: analytic BRDFs, table build
+                  by quadrature, SHLT table files, MERL measured-BRDF loader
 
    THE IMPORTANT PARTS
      float y[16];                         4 bands = 16 coefficients
@@ -26330,7 +26332,7 @@ typedef struct shl_brdf_params {
   float kd;       /* diffuse albedo, >= 0 */
   float ks;       /* specular scale, >= 0 */
   float exponent; /* Phong / Blinn-Phong exponent e >= 0 */
-  float alpha_x;  /* Beckmann / GGX slope roughness along x, > 0 (1e-3 .. 1 tested) */
+  float alpha_x;  /* Beckmann / GGX slope roughness along x, in (0, 4] (0.05 .. 1 tested) */
   float alpha_y;  /* along y (= alpha_x: isotropic) */
   float f0;       /* Schlick reflectance at normal incidence, [0, 1] (1: no Fresnel) */
 } shl_brdf_params;
@@ -26366,33 +26368,39 @@ SHLIGHT_API float shl_brdf_eval(const shl_brdf_params *brdf, const float wo[3], 
 
 /* shl_brdf_table_size: floats of a table of n bands and n_theta x n_phi samples:
    n_phi n_theta 2 n^2; 0 for n outside [1, SHLIGHT_MAX_BANDS], n_theta or n_phi outside
-   [1, SHLIGHT_BRDF_TABLE_MAX_SAMPLES]. */
+   [1, SHLIGHT_BRDF_TABLE_MAX_SAMPLES], or a size whose SHLT file would not fit in size_t.
+   The kernels index tables with int: keep n_theta n_phi 2 n^2 below 2^31 for them. */
 SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
 
 /* shl_brdf_table_build: fills t->data (t->n, n_theta, n_phi, flags set by the caller, data
    holding shl_brdf_table_size floats) with the SH of F and F' of the analytic BRDF at each
-   outgoing sample (layout and sampling of >>brdftab). Quadrature in double over w_i:
-   - the kd / pi term: Gauss-Legendre in cos(theta_i) x Gauss-Legendre in phi_i, exact for it
-     (polynomial of degree <= n in the direction);
-   - the specular term (ks > 0): in the frame whose pole is the mirror direction r of w_o, in
-     panels of the polar angle g from r with break points at 2 and 6 lobe widths (width:
-     1/sqrt(e + 1) Phong, 2/sqrt(e + 2) Blinn-Phong, 2 max(alpha) microfacet) and where the circle
-     of angle g around r first meets the horizon (g = pi/2 - theta_r); on each circle the part
-     above the horizon is one arc (its end points in closed form): quad_order Gauss-Legendre
-     nodes in g per panel x 2 quad_order Gauss-Legendre nodes along the arc. The integrand is
-     smooth in each panel, so the quadrature converges geometrically even for sharp lobes and
-     grazing w_o.
-   Y is evaluated in float (shl_sh_eval_accurate); sums in double. out_err_est (may be NULL):
-   max over the table of |T(quad_order) - T(quad_order / 2)|, absolute, in the table's units:
-   the error of the half-order table, an upper estimate of the returned table's error when the
-   quadrature converges (tests/test_brdftab checks it against closed forms). quad_order in
-   [2, 256]. Returns SHLIGHT_EINVAL (data untouched) for NULL t / data / brdf, n, n_theta,
-   n_phi out of range (see shl_brdf_table_size), flags != (n_phi > 1 ? ANISO : 0), an unknown
-   model, negative or non-finite kd / ks / exponent, alpha outside (0, 4] for the microfacet
-   models, f0 outside [0, 1], quad_order out of range; SHLIGHT_ENOMEM when n > 16 and the
-   2 n^2-double accumulator (on the stack up to 16 bands) cannot be allocated. Cost: per sample
-   about 4 panels x 2 quad_order^2 x 1.25 nodes x (one shl_sh_eval + 2 n^2 FMA) (README: ms per
-   table). */
+   outgoing sample (layout and sampling of >>brdftab). Quadrature over w_i, sums in double:
+   - the kd / pi term: Gauss-Legendre in cos(theta_i) (n/2 + 2 nodes) x uniform phi_i (n + 2
+     nodes), exact for it (its products with Y are polynomials of degree <= n);
+   - the specular term (ks > 0), in the frame whose pole is the mirror direction r of w_o:
+     panels of the angle g from r with break points at 2, 6, 18, 54 lobe widths (width:
+     1/sqrt(e + 1) Phong, 2/sqrt(e + 2) Blinn-Phong, 2 max(alpha) microfacet), where the circle
+     of angle g about r first meets the horizon (g = pi/2 - theta_o) and where it leaves it;
+     quad_order Gauss-Legendre nodes per panel after the substitution g = g0 + (g1 - g0) s^2
+     (3 - 2 s), which is smooth through the square-root ends of the arc length; on each circle
+     only the arc above the horizon (end points in closed form): 2 quad_order uniform nodes
+     round a whole circle, else panels at 0, +-w/2, +-3w/2, +-9w/2 and graded towards the arc's
+     ends (pm - L/4, /16, /64), quad_order Gauss-Legendre nodes each. Every panel's integrand is
+     smooth, so the error falls geometrically with quad_order even for sharp lobes and grazing
+     w_o (README: GGX alpha 0.1, F' at theta_o = 85.5 deg: 5.6e-4 at 32, 6e-7 at 64).
+   Y by shl_sh_eval in float at the float-rounded node; the table rounds to float.
+   out_err_est (may be NULL; NULL also skips the second pass): max over the table of
+   |T(quad_order) - T(quad_order / 2)|, absolute, in the table's units: the error of the
+   half-order table, an upper estimate of the returned table's error when the quadrature
+   converges (tests/test_brdftab checks it against closed forms). quad_order in [2, 256].
+   Returns SHLIGHT_EINVAL (data untouched) for NULL t / data / brdf, n, n_theta, n_phi out of
+   range (see shl_brdf_table_size), flags != (n_phi > 1 ? ANISO : 0), an unknown model,
+   negative or non-finite kd / ks / exponent, alpha outside (0, 4] for Beckmann / GGX, f0
+   outside [0, 1] (microfacet models), quad_order out of range; SHLIGHT_ENOMEM when n > 16 and
+   the 2 n^2-double accumulator (on the stack up to 16 bands) cannot be allocated. Cost: per
+   sample, up to ~12 panels x q x (2q .. 14q) nodes (x 1.25 with out_err_est), each one BRDF
+   evaluation, one shl_sh_eval and 2 n^2 FMA: 0.1-0.5 s for 90 samples at q = 32, n = 10
+   (README). */
 SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_params *brdf,
                                             int quad_order, float *out_err_est);
 
@@ -39363,6 +39371,10 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi) {
       n_phi < 1 || n_phi > SHLIGHT_BRDF_TABLE_MAX_SAMPLES) {
     return 0;
   }
+  if ((double)n_phi * (double)n_theta * 2.0 * (double)n * (double)n * 4.0 + 64.0 >
+      (double)(size_t)-1) {
+    return 0; /* the file length would overflow size_t (32-bit hosts) */
+  }
   return (size_t)n_phi * (size_t)n_theta * 2u * (size_t)n * (size_t)n;
 }
 
@@ -40040,6 +40052,10 @@ SHLIGHT_API shl_result shl_merl_read(shl_merl *out, const void *buf, size_t len,
   if (m.n_theta_h < 1 || m.n_theta_h > SHLIGHT_MERL_MAX_DIM || m.n_theta_d < 1 ||
       m.n_theta_d > SHLIGHT_MERL_MAX_DIM || m.n_phi_d < 1 || m.n_phi_d > SHLIGHT_MERL_MAX_DIM) {
     return SHLIGHT_EDIMS;
+  }
+  if ((double)m.n_theta_h * (double)m.n_theta_d * (double)m.n_phi_d * 24.0 + 64.0 >
+      (double)(size_t)-1) {
+    return SHLIGHT_EDIMS; /* 32-bit hosts: the length would overflow size_t */
   }
   per = (size_t)m.n_theta_h * (size_t)m.n_theta_d * (size_t)m.n_phi_d;
   if ((len - 12) % 24u != 0 || (len - 12) / 24u != per) {
