@@ -570,7 +570,9 @@ import re
 # GLSL array length of a pointer parameter, by name (default: n * n coefficients)
 ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
                'out_dzh': 'SHLIGHT_MAX_BANDS', 'g': '8', 'out_g': '8', 'out_nt': '3',
-               'c8': '8 * SHLIGHT_MAX_COEFFS', 'g8': '8 * SHLIGHT_MAX_COEFFS'}
+               'c8': '8 * SHLIGHT_MAX_COEFFS', 'g8': '8 * SHLIGHT_MAX_COEFFS',
+               'v': 'SHLIGHT_POLYGON_MAX', 'io_px': 'SHLIGHT_CLIP_MAX', 'io_py': 'SHLIGHT_CLIP_MAX',
+               'io_pz': 'SHLIGHT_CLIP_MAX'}
 
 
 def glsl_param(prm, fname):
@@ -715,7 +717,8 @@ def main():
                       ('zonal', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl']),
                       ('light', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
                                  'shl_zonal.glsl']),
-                      ('grid', ['shl_prelude.glsl', 'shl_basis.glsl'])):
+                      ('grid', ['shl_prelude.glsl', 'shl_basis.glsl']),
+                      ('edge', ['shl_prelude.glsl', 'shl_light.glsl'])):
         gp = os.path.join(ROOT, 'shlight_glsl', 'shl_%s.glsl' % sec)
         old = open(gp).read() if os.path.exists(gp) else ''
         outputs.append((gp, old, glsl_module(new, sec, deps)))
