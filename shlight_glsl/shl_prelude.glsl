@@ -23,6 +23,7 @@
 #define SHLIGHT_SIGN1(x) ((x) < 0.0 ? -1.0 : 1.0)
 #define SHLIGHT_SIMD_EVAL 0
 #define SHLIGHT_FTOI(x) int(x)
+#define SHLIGHT_ITOR(i) float(i)
 #define SHLIGHT_MAXR(a, b) max((a), (b))
 #define SHLIGHT_MINR(a, b) min((a), (b))
 #define SHLIGHT_EXPR(x) exp(x)

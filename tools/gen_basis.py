@@ -718,7 +718,8 @@ def main():
                       ('light', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
                                  'shl_zonal.glsl']),
                       ('grid', ['shl_prelude.glsl', 'shl_basis.glsl']),
-                      ('edge', ['shl_prelude.glsl', 'shl_light.glsl'])):
+                      ('edge', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl', 'shl_zonal.glsl',
+                                'shl_light.glsl'])):
         gp = os.path.join(ROOT, 'shlight_glsl', 'shl_%s.glsl' % sec)
         old = open(gp).read() if os.path.exists(gp) else ''
         outputs.append((gp, old, glsl_module(new, sec, deps)))
