@@ -26646,8 +26646,7 @@ SHLIGHT_INLINE shli_real shli_polygon_moment_r(shli_real *io_px, shli_real *io_p
    to the hemisphere u.axis > 0, of (u.axis)^exponent. nv in [3, SHLIGHT_POLYGON_MAX]; axis any
    non-zero vector (normalised inside); exponent >= 0 real. method:
    - SHLIGHT_EDGE_EXACT: Arvo's form with the O(e) recurrence (double inside in C); exponents
-     above 65536 use QUADRATURE; a non-integer exponent interpolates the normalised moments of
-     its two integer neighbours linearly (not exact; error in README).
+     above 65536 and non-integer exponents use QUADRATURE.
    - SHLIGHT_EDGE_LORENTZ / _LORENTZ_PEARSON / _ELLIPSOID: Arvo's form with the paper's O(1)
      fits of F (errata fixed), exponent rounded to the nearest integer.
    - SHLIGHT_EDGE_QUADRATURE: the Stokes form (see >>edge), O(1), any real exponent.
@@ -26666,9 +26665,6 @@ SHLIGHT_INLINE float shl_polygon_moment(const float (*v)[3], int nv, const float
   shli_real rz = SHLIGHT_REAL(axis[2]);
   shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
   shli_real e = SHLIGHT_REAL(exponent);
-  shli_real e0;
-  shli_real m0;
-  shli_real m1;
   int i;
   int mth = method;
   if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) ||
@@ -26699,15 +26695,7 @@ SHLIGHT_INLINE float shl_polygon_moment(const float (*v)[3], int nv, const float
     mth = SHLIGHT_EDGE_QUADRATURE;
   }
   if (mth == SHLIGHT_EDGE_EXACT && e != SHLIGHT_ITOR(SHLIGHT_FTOI(e))) {
-    e0 = SHLIGHT_ITOR(SHLIGHT_FTOI(e));
-    m0 = (e0 + 1.0) * shli_polygon_moment_r(px, py, pz, nv, rx, ry, rz, e0, mth);
-    for (i = 0; i < nv; ++i) {
-      px[i] = SHLIGHT_REAL(v[i][0]);
-      py[i] = SHLIGHT_REAL(v[i][1]);
-      pz[i] = SHLIGHT_REAL(v[i][2]);
-    }
-    m1 = (e0 + 2.0) * shli_polygon_moment_r(px, py, pz, nv, rx, ry, rz, e0 + 1.0, mth);
-    return SHLIGHT_FLOAT(((e0 + 1.0 - e) * m0 + (e - e0) * m1) / (e + 1.0));
+    mth = SHLIGHT_EDGE_QUADRATURE;
   }
   if (mth != SHLIGHT_EDGE_QUADRATURE) {
     e = SHLIGHT_ITOR(SHLIGHT_FTOI(e + 0.5));
@@ -26764,7 +26752,7 @@ SHLIGHT_INLINE float shl_polygon_phong(const float (*v)[3], int nv, const float 
       mth = SHLIGHT_EDGE_EXACT;
     }
   }
-  if (mth == SHLIGHT_EDGE_EXACT && e > 65536.0) {
+  if (mth == SHLIGHT_EDGE_EXACT && (e > 65536.0 || e != SHLIGHT_ITOR(SHLIGHT_FTOI(e)))) {
     mth = SHLIGHT_EDGE_QUADRATURE;
   }
   if (mth != SHLIGHT_EDGE_QUADRATURE) {

@@ -504,9 +504,6 @@ float shl_polygon_moment(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float e
   shli_real rz = SHLIGHT_REAL(axis[2]);
   shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
   shli_real e = SHLIGHT_REAL(exponent);
-  shli_real e0;
-  shli_real m0;
-  shli_real m1;
   int i;
   int mth = method;
   if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) ||
@@ -537,15 +534,7 @@ float shl_polygon_moment(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float e
     mth = SHLIGHT_EDGE_QUADRATURE;
   }
   if (mth == SHLIGHT_EDGE_EXACT && e != SHLIGHT_ITOR(SHLIGHT_FTOI(e))) {
-    e0 = SHLIGHT_ITOR(SHLIGHT_FTOI(e));
-    m0 = (e0 + 1.0) * shli_polygon_moment_r(px, py, pz, nv, rx, ry, rz, e0, mth);
-    for (i = 0; i < nv; ++i) {
-      px[i] = SHLIGHT_REAL(v[i][0]);
-      py[i] = SHLIGHT_REAL(v[i][1]);
-      pz[i] = SHLIGHT_REAL(v[i][2]);
-    }
-    m1 = (e0 + 2.0) * shli_polygon_moment_r(px, py, pz, nv, rx, ry, rz, e0 + 1.0, mth);
-    return SHLIGHT_FLOAT(((e0 + 1.0 - e) * m0 + (e - e0) * m1) / (e + 1.0));
+    mth = SHLIGHT_EDGE_QUADRATURE;
   }
   if (mth != SHLIGHT_EDGE_QUADRATURE) {
     e = SHLIGHT_ITOR(SHLIGHT_FTOI(e + 0.5));
@@ -596,7 +585,7 @@ float shl_polygon_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view
       mth = SHLIGHT_EDGE_EXACT;
     }
   }
-  if (mth == SHLIGHT_EDGE_EXACT && e > 65536.0) {
+  if (mth == SHLIGHT_EDGE_EXACT && (e > 65536.0 || e != SHLIGHT_ITOR(SHLIGHT_FTOI(e)))) {
     mth = SHLIGHT_EDGE_QUADRATURE;
   }
   if (mth != SHLIGHT_EDGE_QUADRATURE) {
