@@ -542,42 +542,30 @@ float shl_polygon_moment(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float e
   return SHLIGHT_FLOAT(shli_polygon_moment_r(px, py, pz, nv, rx, ry, rz, e, mth));
 }
 
-float shl_polygon_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float exponent,
-                        int method) {
-  shli_real px[SHLIGHT_CLIP_MAX];
-  shli_real py[SHLIGHT_CLIP_MAX];
-  shli_real pz[SHLIGHT_CLIP_MAX];
-  shli_real nx = SHLIGHT_REAL(nrm[0]);
-  shli_real ny = SHLIGHT_REAL(nrm[1]);
-  shli_real nz = SHLIGHT_REAL(nrm[2]);
-  shli_real dv =
-      nx * SHLIGHT_REAL(view[0]) + ny * SHLIGHT_REAL(view[1]) + nz * SHLIGHT_REAL(view[2]);
-  shli_real rx = 2.0 * dv * nx - SHLIGHT_REAL(view[0]);
-  shli_real ry = 2.0 * dv * ny - SHLIGHT_REAL(view[1]);
-  shli_real rz = 2.0 * dv * nz - SHLIGHT_REAL(view[2]);
-  shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
-  shli_real e = SHLIGHT_REAL(exponent);
+shli_real shli_phong_arrays(inout shli_real io_px[SHLIGHT_CLIP_MAX],
+                            inout shli_real io_py[SHLIGHT_CLIP_MAX],
+                            inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real nx,
+                            shli_real ny, shli_real nz, shli_real rx, shli_real ry, shli_real rz,
+                            shli_real exponent, int method) {
+  shli_real e = exponent;
   int i;
   int nc;
   int mth = method;
-  if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(dv > 0.0) || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) ||
-      !(e < 1.0e30)) {
-    return 0.0f;
+  if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(e < 1.0e30)) {
+    return 0.0;
   }
   if (!(e > 0.0)) {
     e = 0.0;
   }
   for (i = 0; i < nv; ++i) {
-    px[i] = SHLIGHT_REAL(v[i][0]);
-    py[i] = SHLIGHT_REAL(v[i][1]);
-    pz[i] = SHLIGHT_REAL(v[i][2]);
-    if (!(SHLIGHT_ABSR(px[i]) + SHLIGHT_ABSR(py[i]) + SHLIGHT_ABSR(pz[i]) < SHLIGHT_REAL_MAX)) {
-      return 0.0f;
+    if (!(SHLIGHT_ABSR(io_px[i]) + SHLIGHT_ABSR(io_py[i]) + SHLIGHT_ABSR(io_pz[i]) <
+          SHLIGHT_REAL_MAX)) {
+      return 0.0;
     }
   }
-  nc = shli_poly_clip(px, py, pz, nv, nx, ny, nz);
+  nc = shli_poly_clip(io_px, io_py, io_pz, nv, nx, ny, nz);
   if (nc < 3) {
-    return 0.0f;
+    return 0.0;
   }
   if (mth == SHLIGHT_EDGE_AUTO) {
     mth = SHLIGHT_EDGE_QUADRATURE;
@@ -591,8 +579,258 @@ float shl_polygon_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view
   if (mth != SHLIGHT_EDGE_QUADRATURE) {
     e = SHLIGHT_ITOR(SHLIGHT_FTOI(e + 0.5));
   }
-  return SHLIGHT_FLOAT((e + 1.0) * 0.15915494309189534 *
-                       shli_polygon_moment_r(px, py, pz, nc, rx / l, ry / l, rz / l, e, mth));
+  return (e + 1.0) * 0.15915494309189534 *
+         shli_polygon_moment_r(io_px, io_py, io_pz, nc, rx, ry, rz, e, mth);
+}
+
+shli_real shli_polygon_phong_r(vec3 v[SHLIGHT_POLYGON_MAX], int nv, shli_real nx, shli_real ny,
+                               shli_real nz, shli_real rx, shli_real ry, shli_real rz,
+                               shli_real exponent, int method) {
+  shli_real px[SHLIGHT_CLIP_MAX];
+  shli_real py[SHLIGHT_CLIP_MAX];
+  shli_real pz[SHLIGHT_CLIP_MAX];
+  int i;
+  if (nv < 3 || nv > SHLIGHT_POLYGON_MAX) {
+    return 0.0;
+  }
+  for (i = 0; i < nv; ++i) {
+    px[i] = SHLIGHT_REAL(v[i][0]);
+    py[i] = SHLIGHT_REAL(v[i][1]);
+    pz[i] = SHLIGHT_REAL(v[i][2]);
+  }
+  return shli_phong_arrays(px, py, pz, nv, nx, ny, nz, rx, ry, rz, exponent, method);
+}
+
+float shl_polygon_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float exponent,
+                        int method) {
+  shli_real nx = SHLIGHT_REAL(nrm[0]);
+  shli_real ny = SHLIGHT_REAL(nrm[1]);
+  shli_real nz = SHLIGHT_REAL(nrm[2]);
+  shli_real dv =
+      nx * SHLIGHT_REAL(view[0]) + ny * SHLIGHT_REAL(view[1]) + nz * SHLIGHT_REAL(view[2]);
+  shli_real rx = 2.0 * dv * nx - SHLIGHT_REAL(view[0]);
+  shli_real ry = 2.0 * dv * ny - SHLIGHT_REAL(view[1]);
+  shli_real rz = 2.0 * dv * nz - SHLIGHT_REAL(view[2]);
+  shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
+  if (!(dv > 0.0) || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX)) {
+    return 0.0f;
+  }
+  return SHLIGHT_FLOAT(shli_polygon_phong_r(v, nv, nx, ny, nz, rx / l, ry / l, rz / l,
+                                            SHLIGHT_REAL(exponent), method));
+}
+
+shli_real shli_log1pr(shli_real x) {
+  shli_real z;
+  shli_real z2;
+  shli_real p;
+  if (!(SHLIGHT_ABSR(x) <= 0.25)) {
+    return SHLIGHT_LOGR(1.0 + x);
+  }
+  z = x / (2.0 + x);
+  z2 = z * z;
+  p = 0.066666666666666667;
+  p = 0.076923076923076923 + z2 * p;
+  p = 0.090909090909090909 + z2 * p;
+  p = 0.11111111111111111 + z2 * p;
+  p = 0.14285714285714286 + z2 * p;
+  p = 0.2 + z2 * p;
+  p = 0.33333333333333333 + z2 * p;
+  return 2.0 * (z + z * (z2 * p));
+}
+
+float shl_lobe_to_sg(float n) {
+  shli_real e = SHLIGHT_REAL(n);
+  if (!(e > 0.0)) {
+    return 0.0f;
+  }
+  if (!(e < 1.0e30)) {
+    return n;
+  }
+  return SHLIGHT_FLOAT(0.69314718055994531 / -shli_expm1r(-0.69314718055994531 / e));
+}
+
+float shl_sg_to_lobe(float lambda) {
+  shli_real l = SHLIGHT_REAL(lambda);
+  if (!(l > 0.69314718055994531)) {
+    return 0.0f;
+  }
+  if (!(l < 1.0e30)) {
+    return lambda;
+  }
+  return SHLIGHT_FLOAT(-0.69314718055994531 / shli_log1pr(-0.69314718055994531 / l));
+}
+
+float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3],
+                       out float out_np[1]) {
+  shli_real l1 = SHLIGHT_REAL(shl_lobe_to_sg(n1));
+  shli_real l2 = SHLIGHT_REAL(shl_lobe_to_sg(n2));
+  shli_real px = l1 * SHLIGHT_REAL(r1[0]) + l2 * SHLIGHT_REAL(r2[0]);
+  shli_real py = l1 * SHLIGHT_REAL(r1[1]) + l2 * SHLIGHT_REAL(r2[1]);
+  shli_real pz = l1 * SHLIGHT_REAL(r1[2]) + l2 * SHLIGHT_REAL(r2[2]);
+  shli_real lp = SHLIGHT_SQRTR(px * px + py * py + pz * pz);
+  shli_real c1;
+  shli_real c2;
+  shli_real mu = 0.0;
+  out_rp[0] = r1[0];
+  out_rp[1] = r1[1];
+  out_rp[2] = r1[2];
+  out_np[0] = 0.0f;
+  if (!(lp > 1.0e-30) || !(lp < 1.0e30)) {
+    return 0.0f;
+  }
+  px = px / lp;
+  py = py / lp;
+  pz = pz / lp;
+  out_rp[0] = SHLIGHT_FLOAT(px);
+  out_rp[1] = SHLIGHT_FLOAT(py);
+  out_rp[2] = SHLIGHT_FLOAT(pz);
+  out_np[0] = shl_sg_to_lobe(SHLIGHT_FLOAT(lp));
+  c1 = px * SHLIGHT_REAL(r1[0]) + py * SHLIGHT_REAL(r1[1]) + pz * SHLIGHT_REAL(r1[2]);
+  c2 = px * SHLIGHT_REAL(r2[0]) + py * SHLIGHT_REAL(r2[1]) + pz * SHLIGHT_REAL(r2[2]);
+  if (c1 > 0.0 && c2 > 0.0) {
+    mu = SHLIGHT_POWR(c1, SHLIGHT_REAL(n1)) * SHLIGHT_POWR(c2, SHLIGHT_REAL(n2));
+  }
+  return SHLIGHT_FLOAT(mu);
+}
+
+float shl_polygon_phong2(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float exponent,
+                         int method) {
+  shli_real nx = SHLIGHT_REAL(nrm[0]);
+  shli_real ny = SHLIGHT_REAL(nrm[1]);
+  shli_real nz = SHLIGHT_REAL(nrm[2]);
+  shli_real dv =
+      nx * SHLIGHT_REAL(view[0]) + ny * SHLIGHT_REAL(view[1]) + nz * SHLIGHT_REAL(view[2]);
+  shli_real rx = 2.0 * dv * nx - SHLIGHT_REAL(view[0]);
+  shli_real ry = 2.0 * dv * ny - SHLIGHT_REAL(view[1]);
+  shli_real rz = 2.0 * dv * nz - SHLIGHT_REAL(view[2]);
+  shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
+  shli_real e = SHLIGHT_REAL(exponent);
+  shli_real l1;
+  shli_real l2 = SHLIGHT_REAL(shl_lobe_to_sg(1.0f));
+  shli_real lp;
+  shli_real np;
+  shli_real c1;
+  shli_real c2;
+  shli_real px;
+  shli_real py;
+  shli_real pz;
+  if (!(dv > 0.0) || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) || !(e >= 0.0) || !(e < 1.0e30)) {
+    return 0.0f;
+  }
+  rx = rx / l;
+  ry = ry / l;
+  rz = rz / l;
+  l1 = SHLIGHT_REAL(shl_lobe_to_sg(exponent));
+  px = l1 * rx + l2 * nx;
+  py = l1 * ry + l2 * ny;
+  pz = l1 * rz + l2 * nz;
+  lp = SHLIGHT_SQRTR(px * px + py * py + pz * pz);
+  px = px / lp;
+  py = py / lp;
+  pz = pz / lp;
+  np = SHLIGHT_REAL(shl_sg_to_lobe(SHLIGHT_FLOAT(lp)));
+  c1 = px * rx + py * ry + pz * rz;
+  c2 = px * nx + py * ny + pz * nz;
+  if (!(c1 > 0.0) || !(c2 > 0.0)) {
+    return 0.0f;
+  }
+  /* mu (e+1)/(2 pi) M^np(rp) = mu (e+1)/(np+1) * [(np+1)/(2 pi) M^np(rp)] */
+  return SHLIGHT_FLOAT(SHLIGHT_POWR(c1, e) * c2 * (e + 1.0) / (np + 1.0) *
+                       shli_polygon_phong_r(v, nv, nx, ny, nz, px, py, pz, np, method));
+}
+
+shli_real shli_ellipse_phong_r(shli_real cx, shli_real cy, shli_real cz, shli_real ux, shli_real uy,
+                               shli_real uz, shli_real vx, shli_real vy, shli_real vz, shli_real nx,
+                               shli_real ny, shli_real nz, shli_real rx, shli_real ry, shli_real rz,
+                               shli_real exponent, int method) {
+  shli_real px[SHLIGHT_CLIP_MAX];
+  shli_real py[SHLIGHT_CLIP_MAX];
+  shli_real pz[SHLIGHT_CLIP_MAX];
+  shli_real cs;
+  shli_real sn;
+  shli_real sum = 0.0;
+  int j;
+  int h;
+  for (h = 0; h < 2; ++h) {
+    for (j = 0; j < 8; ++j) {
+      cs = 1.0539686339182901 * SHLIGHT_COSR(0.39269908169872415 * SHLIGHT_ITOR(2 * j + h));
+      sn = 1.0539686339182901 * SHLIGHT_SINR(0.39269908169872415 * SHLIGHT_ITOR(2 * j + h));
+      px[j] = cx + cs * ux + sn * vx;
+      py[j] = cy + cs * uy + sn * vy;
+      pz[j] = cz + cs * uz + sn * vz;
+    }
+    sum = sum + shli_phong_arrays(px, py, pz, 8, nx, ny, nz, rx, ry, rz, exponent, method);
+  }
+  return 0.5 * sum;
+}
+
+float shl_ellipse_phong(vec3 c, vec3 a1, vec3 a2, vec3 nrm, vec3 view, float exponent, int method) {
+  shli_real nx = SHLIGHT_REAL(nrm[0]);
+  shli_real ny = SHLIGHT_REAL(nrm[1]);
+  shli_real nz = SHLIGHT_REAL(nrm[2]);
+  shli_real dv =
+      nx * SHLIGHT_REAL(view[0]) + ny * SHLIGHT_REAL(view[1]) + nz * SHLIGHT_REAL(view[2]);
+  shli_real rx = 2.0 * dv * nx - SHLIGHT_REAL(view[0]);
+  shli_real ry = 2.0 * dv * ny - SHLIGHT_REAL(view[1]);
+  shli_real rz = 2.0 * dv * nz - SHLIGHT_REAL(view[2]);
+  shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
+  if (!(dv > 0.0) || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX)) {
+    return 0.0f;
+  }
+  return SHLIGHT_FLOAT(shli_ellipse_phong_r(
+      SHLIGHT_REAL(c[0]), SHLIGHT_REAL(c[1]), SHLIGHT_REAL(c[2]), SHLIGHT_REAL(a1[0]),
+      SHLIGHT_REAL(a1[1]), SHLIGHT_REAL(a1[2]), SHLIGHT_REAL(a2[0]), SHLIGHT_REAL(a2[1]),
+      SHLIGHT_REAL(a2[2]), nx, ny, nz, rx / l, ry / l, rz / l, SHLIGHT_REAL(exponent), method));
+}
+
+float shl_sphere_phong(vec3 c, float r, vec3 nrm, vec3 view, float exponent, int method) {
+  shli_real nx = SHLIGHT_REAL(nrm[0]);
+  shli_real ny = SHLIGHT_REAL(nrm[1]);
+  shli_real nz = SHLIGHT_REAL(nrm[2]);
+  shli_real dv =
+      nx * SHLIGHT_REAL(view[0]) + ny * SHLIGHT_REAL(view[1]) + nz * SHLIGHT_REAL(view[2]);
+  shli_real rx = 2.0 * dv * nx - SHLIGHT_REAL(view[0]);
+  shli_real ry = 2.0 * dv * ny - SHLIGHT_REAL(view[1]);
+  shli_real rz = 2.0 * dv * nz - SHLIGHT_REAL(view[2]);
+  shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
+  shli_real cx = SHLIGHT_REAL(c[0]);
+  shli_real cy = SHLIGHT_REAL(c[1]);
+  shli_real cz = SHLIGHT_REAL(c[2]);
+  shli_real d = SHLIGHT_SQRTR(cx * cx + cy * cy + cz * cz);
+  shli_real rr = SHLIGHT_REAL(r);
+  shli_real rho;
+  shli_real sg;
+  shli_real a;
+  shli_real b;
+  shli_real ux;
+  shli_real uy;
+  shli_real uz;
+  if (!(dv > 0.0) || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) || !(rr > 0.0) ||
+      !(rr < SHLIGHT_REAL_MAX) || !(d < SHLIGHT_REAL_MAX)) {
+    return 0.0f;
+  }
+  rx = rx / l;
+  ry = ry / l;
+  rz = rz / l;
+  if (!(d > rr)) {
+    cx = rx;
+    cy = ry;
+    cz = rz;
+    d = 1.0;
+    rho = 1.0e4;
+  } else {
+    rho = rr * d / SHLIGHT_SQRTR((d - rr) * (d + rr));
+  }
+  ux = cx / d;
+  uy = cy / d;
+  uz = cz / d;
+  /* Duff et al. 2017 orthonormal basis about (ux, uy, uz) */
+  sg = SHLIGHT_REAL(SHLIGHT_SIGN1(uz));
+  a = -1.0 / (sg + uz);
+  b = ux * uy * a;
+  return SHLIGHT_FLOAT(shli_ellipse_phong_r(
+      cx, cy, cz, rho * (1.0 + sg * ux * ux * a), rho * sg * b, -rho * sg * ux, rho * b,
+      rho * (sg + uy * uy * a), -rho * uy, nx, ny, nz, rx, ry, rz, SHLIGHT_REAL(exponent), method));
 }
 
 #endif

@@ -572,7 +572,7 @@ ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
                'out_dzh': 'SHLIGHT_MAX_BANDS', 'g': '8', 'out_g': '8', 'out_nt': '3',
                'c8': '8 * SHLIGHT_MAX_COEFFS', 'g8': '8 * SHLIGHT_MAX_COEFFS',
                'v': 'SHLIGHT_POLYGON_MAX', 'io_px': 'SHLIGHT_CLIP_MAX', 'io_py': 'SHLIGHT_CLIP_MAX',
-               'io_pz': 'SHLIGHT_CLIP_MAX'}
+               'io_pz': 'SHLIGHT_CLIP_MAX', 'out_rp': '3', 'out_np': '1'}
 
 
 def glsl_param(prm, fname):
