@@ -21,6 +21,10 @@
                   exact signed triangle solid angle
      >>grid       light grid: build (values + gradients, culling, 2 threads) and cell sampling
                   (trilinear, first-order Taylor, Hermite)
+     >>edge       area lights without tables: Arvo edge integral (exact, the paper's O(1)
+                  fits), polygon axial moments with horizon clipping (exact, constant-cost
+                  quadrature), Phong (single / double axis), cosine lobe <-> SG, ellipse /
+                  disc / sphere lights: shl_polygon_moment, shl_polygon_phong
 
    THE IMPORTANT PARTS
      float y[16];                         4 bands = 16 coefficients
@@ -30,6 +34,7 @@
      shl_sh_eval_grad(4, d, y, g);        values and gradient with respect to d, any d != 0
      shl_sh_eval_accurate(4, d, y);       renormalises in double: at the float rounding floor
      shl_sh_eval_batch(4, count, xs, ys, zs, out);   SoA, SIMD across directions
+     shl_polygon_phong(quad, 4, nrm, view, e, SHLIGHT_EDGE_AUTO);   Phong from a quad light
 
    CONVENTIONS
      Real SH with the Condon-Shortley phase (Sloan / D3DX / DirectXMath):
