@@ -26497,7 +26497,7 @@ SHLIGHT_INLINE shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az
   if (SHLIGHT_ABSR(xa) < 1.0e-5 && SHLIGHT_ABSR(xb) < 1.0e-5) {
     /* an edge on the clip circle u.r = 0 (made by the clip): its normal is +-r, c = 0; the
        end points' rounding would otherwise decide where its arc lies */
-    w = SHLIGHT_SIGN1(nx * rx + ny * ry + nz * rz);
+    w = SHLIGHT_REAL(SHLIGHT_SIGN1(nx * rx + ny * ry + nz * rz));
     if (method != SHLIGHT_EDGE_QUADRATURE &&
         (!(e >= 1.0) || SHLIGHT_FTOI(e + 0.5) - 2 * (SHLIGHT_FTOI(e + 0.5) / 2) == 0)) {
       return 0.0;
@@ -26635,9 +26635,8 @@ SHLIGHT_INLINE shli_real shli_polygon_moment_r(shli_real *io_px, shli_real *io_p
                                             by * io_py[0] + bz * io_pz[0]);
     }
   }
-  if (method == SHLIGHT_EDGE_QUADRATURE) {
-    sum = sum;
-  } else if (SHLIGHT_FTOI(e + 0.5) - 2 * (SHLIGHT_FTOI(e + 0.5) / 2) == 0) {
+  if (method != SHLIGHT_EDGE_QUADRATURE &&
+      SHLIGHT_FTOI(e + 0.5) - 2 * (SHLIGHT_FTOI(e + 0.5) / 2) == 0) {
     sum = sum + omega;
   }
   if (orient < 0.0) {
