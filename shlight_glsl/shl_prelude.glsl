@@ -16,6 +16,7 @@
 #define SHLIGHT_REAL(x) (x)
 #define SHLIGHT_ITOF(i) float(i)
 #define SHLIGHT_SQRTR(x) sqrt(x)
+#define SHLIGHT_EXPR(x) exp(x)
 #define SHLIGHT_ABSR(x) abs(x)
 #define SHLIGHT_REAL_MAX 3.4028234e38
 #define SHLIGHT_REAL_WIDE 0

@@ -570,7 +570,9 @@ import re
 # GLSL array length of a pointer parameter, by name (default: n * n coefficients)
 ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
                'out_dzh': 'SHLIGHT_MAX_BANDS', 'g': '8', 'out_g': '8', 'out_nt': '3',
-               'c8': '8 * SHLIGHT_MAX_COEFFS', 'g8': '8 * SHLIGHT_MAX_COEFFS'}
+               'c8': '8 * SHLIGHT_MAX_COEFFS', 'g8': '8 * SHLIGHT_MAX_COEFFS',
+               'io_zh': 'SHLIGHT_MAX_BANDS', 'zh_a': 'SHLIGHT_MAX_BANDS', 'zh_b': 'SHLIGHT_MAX_BANDS',
+               'zh3': '3', 'fzh': 'SHLIGHT_MAX_BANDS', 'pn': '8', 'dn': '8'}
 
 
 def glsl_param(prm, fname):
@@ -715,7 +717,11 @@ def main():
                       ('zonal', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl']),
                       ('light', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
                                  'shl_zonal.glsl']),
-                      ('grid', ['shl_prelude.glsl', 'shl_basis.glsl'])):
+                      ('grid', ['shl_prelude.glsl', 'shl_basis.glsl']),
+                      ('brdf', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
+                                'shl_zonal.glsl', 'shl_light.glsl']),
+                      ('hvl', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
+                               'shl_zonal.glsl', 'shl_light.glsl', 'shl_brdf.glsl'])):
         gp = os.path.join(ROOT, 'shlight_glsl', 'shl_%s.glsl' % sec)
         old = open(gp).read() if os.path.exists(gp) else ''
         outputs.append((gp, old, glsl_module(new, sec, deps)))
