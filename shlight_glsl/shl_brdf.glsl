@@ -80,8 +80,8 @@ void shli_zh_ndf(int n, shli_real alpha, int kind, out float out_zh[SHLIGHT_MAX_
   int l;
   int k;
   int more = 1;
-  if (h > 0.5) {
-    h = 0.5;
+  if (h > 0.35) {
+    h = 0.35;
   }
   if (kind == 0) {
     vmax = 65659969.13733051; /* e^18 / min(alpha^2, 1): where x < 1e-8 and 1 - F < 1.5e-8 */

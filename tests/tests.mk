@@ -122,3 +122,14 @@ $(TESTS_BUILD)/native/test_grid: tests/test_grid.c tests/tl.h shlight.h
 $(TESTS_BUILD)/asan/test_grid: tests/test_grid.c tests/tl.h shlight.h
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) $(TESTS_ASAN) -o $@ tests/test_grid.c -lm
+
+# >>brdf / >>hvl: lobes, convolution, irradiance, windows, horizon fraction against quadrature
+$(TESTS_BUILD)/test_brdf: tests/test_brdf.c tests/tl.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) -o $@ tests/test_brdf.c $(TESTS_QUADLIBS)
+$(TESTS_BUILD)/native/test_brdf: tests/test_brdf.c tests/tl.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) -march=native -ffp-contract=fast -o $@ tests/test_brdf.c $(TESTS_QUADLIBS)
+$(TESTS_BUILD)/asan/test_brdf: tests/test_brdf.c tests/tl.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) $(TESTS_ASAN) -o $@ tests/test_brdf.c $(TESTS_QUADLIBS)
