@@ -26324,39 +26324,51 @@ SHLIGHT_INLINE void shl_zh_beckmann(int n, float alpha, float *out_zh) {
 }
 
 /* shl_sh_dot: sum_i a[i] b[i], i < n^2: the integral over the sphere of the product of two
-   functions given by their SH (seed 000 eq. 4), accumulated in shli_real. a, b: n^2 floats.
+   functions given by their SH (seed 000 eq. 4), accumulated in shli_real in four interleaved
+   partial sums (i mod 4: independent add chains, so the loop is not bound by the add
+   latency; the result does not depend on the compiler's reassociation). a, b: n^2 floats.
    n < 1: 0. Cost: n^2 FMA. */
 SHLIGHT_INLINE float shl_sh_dot(int n, const float *a, const float *b) {
-  shli_real s = 0.0;
-  int i;
+  shli_real s0 = 0.0;
+  shli_real s1 = 0.0;
+  shli_real s2 = 0.0;
+  shli_real s3 = 0.0;
+  int i = 0;
   int nn;
   n = shli_bands(n);
   nn = n * n;
-  for (i = 0; i < nn; ++i) {
-    s = s + SHLIGHT_REAL(a[i]) * SHLIGHT_REAL(b[i]);
+  while (i + 3 < nn) {
+    s0 = s0 + SHLIGHT_REAL(a[i]) * SHLIGHT_REAL(b[i]);
+    s1 = s1 + SHLIGHT_REAL(a[i + 1]) * SHLIGHT_REAL(b[i + 1]);
+    s2 = s2 + SHLIGHT_REAL(a[i + 2]) * SHLIGHT_REAL(b[i + 2]);
+    s3 = s3 + SHLIGHT_REAL(a[i + 3]) * SHLIGHT_REAL(b[i + 3]);
+    i = i + 4;
   }
-  return SHLIGHT_FLOAT(s);
+  while (i < nn) {
+    s0 = s0 + SHLIGHT_REAL(a[i]) * SHLIGHT_REAL(b[i]);
+    i = i + 1;
+  }
+  return SHLIGHT_FLOAT((s0 + s1) + (s2 + s3));
 }
 
 /* shl_sh_conv_zh on a unit axis (ux, uy, uz) given in shli_real. */
 SHLIGHT_INLINE float shli_sh_conv_zh_xyz(int n, const float *sh, const float *zh, shli_real ux,
                                          shli_real uy, shli_real uz) {
   float ysh[SHLIGHT_MAX_COEFFS];
-  shli_real s = 0.0;
-  shli_real t;
+  float k;
   int l;
   int m;
   int b;
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);
+  /* the rotated lobe in place, then one dot (independent add chains, see shl_sh_dot) */
   for (l = 0; l < n; ++l) {
     b = l * (l + 1);
-    t = 0.0;
+    k = SHLIGHT_FLOAT(SHLI_ZH_TAB[5 * l + 3] * SHLIGHT_REAL(zh[l]));
     for (m = -l; m <= l; ++m) {
-      t = t + SHLIGHT_REAL(sh[b + m]) * SHLIGHT_REAL(ysh[b + m]);
+      ysh[b + m] = k * ysh[b + m];
     }
-    s = s + SHLI_ZH_TAB[5 * l + 3] * SHLIGHT_REAL(zh[l]) * t;
   }
-  return SHLIGHT_FLOAT(s);
+  return shl_sh_dot(n, sh, ysh);
 }
 
 /* shl_sh_conv_zh: the integral of the SH function sh (n^2 coefficients) times the lobe with
@@ -26778,18 +26790,11 @@ SHLIGHT_INLINE float shl_hvl_geometric(const float x[3], const float nx[3], cons
 SHLIGHT_INLINE float shli_hvl_emission_xyz(int n, const float *femit, shli_real ux, shli_real uy,
                                            shli_real uz) {
   float ysh[SHLIGHT_MAX_COEFFS];
-  shli_real s = 0.0;
-  int i;
-  int nn;
   if (n == 1) {
     return SHLIGHT_FLOAT(0.28209479177387814 * SHLIGHT_REAL(femit[0]));
   }
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);
-  nn = n * n;
-  for (i = 0; i < nn; ++i) {
-    s = s + SHLIGHT_REAL(femit[i]) * SHLIGHT_REAL(ysh[i]);
-  }
-  return SHLIGHT_FLOAT(s);
+  return shl_sh_dot(n, femit, ysh);
 }
 
 /* shl_hvl_emission: the reconstruction F' . Y(dir) of an SH emission function femit (n^2

@@ -50,3 +50,14 @@ bench-grid: build/bench/bench_grid
 
 bench: bench-grid
 .PHONY: bench-grid
+
+build/bench/bench_brdf: bench/bench_brdf.c shlight.h
+	@mkdir -p build/bench
+	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_brdf.c -lm
+
+bench-brdf: build/bench/bench_brdf
+	@mkdir -p bench/out
+	build/bench/bench_brdf
+
+bench: bench-brdf
+.PHONY: bench-brdf

@@ -174,35 +174,45 @@ void shl_zh_beckmann(int n, float alpha, out float out_zh[SHLIGHT_MAX_BANDS]) {
 }
 
 float shl_sh_dot(int n, float a[SHLIGHT_MAX_COEFFS], float b[SHLIGHT_MAX_COEFFS]) {
-  shli_real s = 0.0;
-  int i;
+  shli_real s0 = 0.0;
+  shli_real s1 = 0.0;
+  shli_real s2 = 0.0;
+  shli_real s3 = 0.0;
+  int i = 0;
   int nn;
   n = shli_bands(n);
   nn = n * n;
-  for (i = 0; i < nn; ++i) {
-    s = s + SHLIGHT_REAL(a[i]) * SHLIGHT_REAL(b[i]);
+  while (i + 3 < nn) {
+    s0 = s0 + SHLIGHT_REAL(a[i]) * SHLIGHT_REAL(b[i]);
+    s1 = s1 + SHLIGHT_REAL(a[i + 1]) * SHLIGHT_REAL(b[i + 1]);
+    s2 = s2 + SHLIGHT_REAL(a[i + 2]) * SHLIGHT_REAL(b[i + 2]);
+    s3 = s3 + SHLIGHT_REAL(a[i + 3]) * SHLIGHT_REAL(b[i + 3]);
+    i = i + 4;
   }
-  return SHLIGHT_FLOAT(s);
+  while (i < nn) {
+    s0 = s0 + SHLIGHT_REAL(a[i]) * SHLIGHT_REAL(b[i]);
+    i = i + 1;
+  }
+  return SHLIGHT_FLOAT((s0 + s1) + (s2 + s3));
 }
 
 float shli_sh_conv_zh_xyz(int n, float sh[SHLIGHT_MAX_COEFFS], float zh[SHLIGHT_MAX_BANDS],
                           shli_real ux, shli_real uy, shli_real uz) {
   float ysh[SHLIGHT_MAX_COEFFS];
-  shli_real s = 0.0;
-  shli_real t;
+  float k;
   int l;
   int m;
   int b;
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);
+  /* the rotated lobe in place, then one dot (independent add chains, see shl_sh_dot) */
   for (l = 0; l < n; ++l) {
     b = l * (l + 1);
-    t = 0.0;
+    k = SHLIGHT_FLOAT(SHLI_ZH_TAB[5 * l + 3] * SHLIGHT_REAL(zh[l]));
     for (m = -l; m <= l; ++m) {
-      t = t + SHLIGHT_REAL(sh[b + m]) * SHLIGHT_REAL(ysh[b + m]);
+      ysh[b + m] = k * ysh[b + m];
     }
-    s = s + SHLI_ZH_TAB[5 * l + 3] * SHLIGHT_REAL(zh[l]) * t;
   }
-  return SHLIGHT_FLOAT(s);
+  return shl_sh_dot(n, sh, ysh);
 }
 
 float shl_sh_conv_zh(int n, float sh[SHLIGHT_MAX_COEFFS], float zh[SHLIGHT_MAX_BANDS], vec3 w) {

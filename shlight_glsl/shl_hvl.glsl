@@ -143,18 +143,11 @@ float shl_hvl_geometric(vec3 x, vec3 nx, vec3 y, vec3 ny, float r, int exact) {
 float shli_hvl_emission_xyz(int n, float femit[SHLIGHT_MAX_COEFFS], shli_real ux, shli_real uy,
                             shli_real uz) {
   float ysh[SHLIGHT_MAX_COEFFS];
-  shli_real s = 0.0;
-  int i;
-  int nn;
   if (n == 1) {
     return SHLIGHT_FLOAT(0.28209479177387814 * SHLIGHT_REAL(femit[0]));
   }
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);
-  nn = n * n;
-  for (i = 0; i < nn; ++i) {
-    s = s + SHLIGHT_REAL(femit[i]) * SHLIGHT_REAL(ysh[i]);
-  }
-  return SHLIGHT_FLOAT(s);
+  return shl_sh_dot(n, femit, ysh);
 }
 
 float shl_hvl_emission(int n, float femit[SHLIGHT_MAX_COEFFS], vec3 dir) {
