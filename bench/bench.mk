@@ -51,6 +51,19 @@ bench-grid: build/bench/bench_grid
 bench: bench-grid
 .PHONY: bench-grid
 
+build/bench/bench_edge: bench/bench_edge.c shlight.h tests/ref/arearef.h
+	@mkdir -p build/bench
+	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_edge.c -lm
+
+bench-edge: build/bench/bench_edge
+	@mkdir -p bench/out
+	CC=$(BENCH_CC) sh bench/callgrind_edge.sh
+	build/bench/bench_edge
+	cat bench/out/edge.md
+
+bench: bench-edge
+.PHONY: bench-edge
+
 build/bench/bench_brdf: bench/bench_brdf.c shlight.h
 	@mkdir -p build/bench
 	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_brdf.c -lm

@@ -57,8 +57,14 @@ def tables():
     light = [l for i, l in enumerate(kept) if not (l == '' and (i + 1 == len(kept) or kept[i + 1] == ''))]
     grid = open(os.path.join(ROOT, 'bench/out/grid.md')).read().rstrip('\n').split('\n')
     grid = ['    ' + l for l in grid]
-    return {'speed': '\n'.join(sp), 'accuracy': '\n'.join(ac), 'light': '\n'.join(light),
-            'grid': '\n'.join(grid)}
+    out = {'speed': '\n'.join(sp), 'accuracy': '\n'.join(ac), 'light': '\n'.join(light),
+           'grid': '\n'.join(grid)}
+    for name, fn in (('edge', 'edge.md'), ('edge_instr', 'edge_instr.md')):
+        p = os.path.join(ROOT, 'bench/out', fn)
+        if os.path.exists(p):  # the markdown tables as written, indented into the list item
+            out[name] = '\n'.join(('  ' + l) if l else '' for l in
+                                  open(p).read().rstrip('\n').split('\n'))
+    return out
 
 
 def main():

@@ -16,12 +16,28 @@
 #define SHLIGHT_REAL(x) (x)
 #define SHLIGHT_ITOF(i) float(i)
 #define SHLIGHT_SQRTR(x) sqrt(x)
-#define SHLIGHT_EXPR(x) exp(x)
 #define SHLIGHT_ABSR(x) abs(x)
 #define SHLIGHT_REAL_MAX 3.4028234e38
 #define SHLIGHT_REAL_WIDE 0
 #define SHLIGHT_UNUSED(x)
 #define SHLIGHT_SIGN1(x) ((x) < 0.0 ? -1.0 : 1.0)
 #define SHLIGHT_SIMD_EVAL 0
+#define SHLIGHT_FTOI(x) int(x)
+#define SHLIGHT_ITOR(i) float(i)
+#define SHLIGHT_MAXR(a, b) max((a), (b))
+#define SHLIGHT_MINR(a, b) min((a), (b))
+#define SHLIGHT_EXPR(x) exp(x)
+#define SHLIGHT_LOGR(x) log(x)
+#define SHLIGHT_SINR(x) sin(x)
+#define SHLIGHT_COSR(x) cos(x)
+#define SHLIGHT_POWR(x, y) pow((x), (y))
+#define SHLIGHT_EDGE_EXACT 0
+#define SHLIGHT_EDGE_LORENTZ 1
+#define SHLIGHT_EDGE_LORENTZ_PEARSON 2
+#define SHLIGHT_EDGE_ELLIPSOID 3
+#define SHLIGHT_EDGE_AUTO 4
+#define SHLIGHT_EDGE_QUADRATURE 5
+#define SHLIGHT_POLYGON_MAX 8
+#define SHLIGHT_CLIP_MAX 20
 #define SHLIGHT_ASSERT(x)
 #endif

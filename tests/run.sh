@@ -55,6 +55,7 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/tests/test_gl_smoke build/tests/fuzz_replay build/tests/native/test_basis \
   build/tests/test_light build/tests/native/test_light build/tests/selftest_lightref \
   build/tests/test_grid build/tests/native/test_grid build/tests/test_grid_glsl \
+  build/tests/test_edge build/tests/selftest_arearef build/tests/test_edge_glsl \
   build/tests/test_brdf build/tests/native/test_brdf build/tests/test_brdf_glsl
 step test_basis build/tests/test_basis
 # the same tests on this machine's SIMD paths (AVX-512 / AVX2 kernels) with FMA contraction
@@ -64,24 +65,34 @@ step test_light-march-native build/tests/native/test_light
 step lightref-selftest build/tests/selftest_lightref
 step test_grid build/tests/test_grid
 step test_grid-march-native build/tests/native/test_grid
+step test_edge build/tests/test_edge
+step arearef-selftest build/tests/selftest_arearef
 step test_brdf build/tests/test_brdf
 step test_brdf-march-native build/tests/native/test_brdf
 step test_glm build/tests/test_glm
 step fuzz-corpus-replay build/tests/fuzz_replay tests/corpus/basis
+# every GLSL check runs on the first backend (OSMesa); the second (EGL) runs the same llvmpipe
+# compiler, so it gets every harness with test_glsl's band-count subset (SHLIGHT_GLSL_SUBSET)
+first=1
 for b in $backends; do
+  sub=""
+  [ $first = 1 ] || sub="SHLIGHT_GLSL_SUBSET=1"
+  first=0
   step "gl-smoke-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_gl_smoke
-  step "glsl-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_glsl
+  step "glsl-vs-c-$b" env SHLIGHT_GL_BACKEND=$b $sub build/tests/test_glsl
   step "glsl-grid-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_grid_glsl
+  step "glsl-edge-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_edge_glsl
   step "glsl-brdf-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_brdf_glsl
 done
 if [ "${SHLIGHT_TEST_QUICK:-0}" != 1 ]; then
   # build every sanitizer binary at once on both cores, then run them
   step asan-ubsan-build $MAKE -s -j2 build/tests/asan/test_basis build/tests/asan/test_glm \
-    build/tests/asan/fuzz_replay build/tests/asan/test_light build/tests/asan/test_grid build/tests/asan/test_brdf \
+    build/tests/asan/fuzz_replay build/tests/asan/test_light build/tests/asan/test_grid build/tests/asan/test_edge build/tests/asan/test_brdf \
     build/tests/asan/test_gl_smoke
   step asan-ubsan $MAKE -s test-asan
   step asan-ubsan-light build/tests/asan/test_light
   step asan-ubsan-grid build/tests/asan/test_grid
+  step asan-ubsan-edge env SHLIGHT_TEST_QUICK=1 build/tests/asan/test_edge
   step asan-ubsan-brdf build/tests/asan/test_brdf
   step asan-ubsan-gl $MAKE -s gl-test-asan
 fi

@@ -123,6 +123,21 @@ $(TESTS_BUILD)/asan/test_grid: tests/test_grid.c tests/tl.h shlight.h
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) $(TESTS_ASAN) -o $@ tests/test_grid.c -lm
 
+# >>edge: edge integrals and polygon moments against long double cubature (tests/ref/arearef.h)
+TESTS_EDGE_DEPS := tests/test_edge.c tests/ref/arearef.h tests/tl.h shlight.h
+$(TESTS_BUILD)/test_edge: $(TESTS_EDGE_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion -o $@ tests/test_edge.c -lm
+$(TESTS_BUILD)/native/test_edge: $(TESTS_EDGE_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion -march=native -ffp-contract=fast -o $@ tests/test_edge.c -lm
+$(TESTS_BUILD)/asan/test_edge: $(TESTS_EDGE_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion $(TESTS_ASAN) -o $@ tests/test_edge.c -lm
+$(TESTS_BUILD)/selftest_arearef: tests/selftest_arearef.c tests/ref/arearef.h
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O2 -g -o $@ tests/selftest_arearef.c -lm
+
 # >>brdf / >>hvl: lobes, convolution, irradiance, windows, horizon fraction against quadrature
 $(TESTS_BUILD)/test_brdf: tests/test_brdf.c tests/tl.h shlight.h
 	@mkdir -p $(@D)

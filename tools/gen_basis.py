@@ -572,7 +572,9 @@ ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
                'out_dzh': 'SHLIGHT_MAX_BANDS', 'g': '8', 'out_g': '8', 'out_nt': '3',
                'c8': '8 * SHLIGHT_MAX_COEFFS', 'g8': '8 * SHLIGHT_MAX_COEFFS',
                'io_zh': 'SHLIGHT_MAX_BANDS', 'zh_a': 'SHLIGHT_MAX_BANDS', 'zh_b': 'SHLIGHT_MAX_BANDS',
-               'zh3': '3', 'fzh': 'SHLIGHT_MAX_BANDS', 'pn': '8', 'dn': '8'}
+               'zh3': '3', 'fzh': 'SHLIGHT_MAX_BANDS', 'pn': '8', 'dn': '8',
+               'v': 'SHLIGHT_POLYGON_MAX', 'io_px': 'SHLIGHT_CLIP_MAX', 'io_py': 'SHLIGHT_CLIP_MAX',
+               'io_pz': 'SHLIGHT_CLIP_MAX', 'out_rp': '3', 'out_np': '1'}
 
 
 def glsl_param(prm, fname):
@@ -718,6 +720,8 @@ def main():
                       ('light', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
                                  'shl_zonal.glsl']),
                       ('grid', ['shl_prelude.glsl', 'shl_basis.glsl']),
+                      ('edge', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl', 'shl_zonal.glsl',
+                                'shl_light.glsl']),
                       ('brdf', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
                                 'shl_zonal.glsl', 'shl_light.glsl']),
                       ('hvl', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
