@@ -832,4 +832,97 @@ float shl_sphere_phong(vec3 c, float r, vec3 nrm, vec3 view, float exponent, int
       rho * (sg + uy * uy * a), -rho * uy, nx, ny, nz, rx, ry, rz, SHLIGHT_REAL(exponent), method));
 }
 
+float shl_polygon_ggx_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float alpha) {
+  shli_real px[SHLIGHT_CLIP_MAX];
+  shli_real py[SHLIGHT_CLIP_MAX];
+  shli_real pz[SHLIGHT_CLIP_MAX];
+  shli_real rx = SHLIGHT_REAL(axis[0]);
+  shli_real ry = SHLIGHT_REAL(axis[1]);
+  shli_real rz = SHLIGHT_REAL(axis[2]);
+  shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
+  shli_real a2 = SHLIGHT_REAL(alpha);
+  shli_real ox = 0.0;
+  shli_real oy = 0.0;
+  shli_real oz = 0.0;
+  shli_real orient;
+  shli_real sum = 0.0;
+  shli_real nx;
+  shli_real ny;
+  shli_real nz;
+  shli_real sp;
+  shli_real cp;
+  shli_real w;
+  shli_real q;
+  shli_real t;
+  int i;
+  int j;
+  int nc;
+  if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) || !(a2 == a2)) {
+    return 0.0f;
+  }
+  a2 = SHLIGHT_MINR(SHLIGHT_MAXR(a2, 1.0e-4), 1.0);
+  a2 = a2 * a2;
+  rx = rx / l;
+  ry = ry / l;
+  rz = rz / l;
+  for (i = 0; i < nv; ++i) {
+    px[i] = SHLIGHT_REAL(v[i][0]);
+    py[i] = SHLIGHT_REAL(v[i][1]);
+    pz[i] = SHLIGHT_REAL(v[i][2]);
+    if (!(SHLIGHT_ABSR(px[i]) + SHLIGHT_ABSR(py[i]) + SHLIGHT_ABSR(pz[i]) < SHLIGHT_REAL_MAX)) {
+      return 0.0f;
+    }
+  }
+  for (i = 0; i < nv; ++i) {
+    j = i + 1;
+    if (j == nv) {
+      j = 0;
+    }
+    ox = ox + py[i] * pz[j] - pz[i] * py[j];
+    oy = oy + pz[i] * px[j] - px[i] * pz[j];
+    oz = oz + px[i] * py[j] - py[i] * px[j];
+  }
+  orient = ox * px[0] + oy * py[0] + oz * pz[0];
+  nc = shli_poly_clip(px, py, pz, nv, rx, ry, rz);
+  if (nc < 3 || !(orient != 0.0)) {
+    return 0.0f;
+  }
+  for (i = 0; i < nc; ++i) {
+    l = SHLIGHT_SQRTR(px[i] * px[i] + py[i] * py[i] + pz[i] * pz[i]);
+    if (!(l > 0.0)) {
+      return 0.0f;
+    }
+    px[i] = px[i] / l;
+    py[i] = py[i] / l;
+    pz[i] = pz[i] / l;
+  }
+  for (i = 0; i < nc; ++i) {
+    j = i + 1;
+    if (j == nc) {
+      j = 0;
+    }
+    nx = py[i] * pz[j] - pz[i] * py[j];
+    ny = pz[i] * px[j] - px[i] * pz[j];
+    nz = px[i] * py[j] - py[i] * px[j];
+    sp = SHLIGHT_SQRTR(nx * nx + ny * ny + nz * nz);
+    cp = px[i] * px[j] + py[i] * py[j] + pz[i] * pz[j];
+    if (sp > 1.0e-30) {
+      w = (nx * rx + ny * ry + nz * rz) / sp;
+      w = SHLIGHT_MINR(SHLIGHT_MAXR(w, -1.0), 1.0);
+      q = SHLIGHT_SQRTR(w * w + a2 * (1.0 - w * w));
+      t = SHLIGHT_ABSR(w) / q *
+          shli_atan2r(q * sp, cp - (1.0 - a2) * (px[i] * rx + py[i] * ry + pz[i] * rz) *
+                                       (px[j] * rx + py[j] * ry + pz[j] * rz));
+      if (w < 0.0) {
+        t = -t;
+      }
+      sum = sum + t;
+    }
+  }
+  if (orient < 0.0) {
+    sum = -sum;
+  }
+  return SHLIGHT_FLOAT(SHLIGHT_MAXR(sum, 0.0) * 0.15915494309189534);
+}
+
 #endif

@@ -564,6 +564,57 @@ static void test_sphere_ellipse(void) {
   }
 }
 
+typedef struct {
+  long double n[3], a2;
+} ndf_ctx;
+static long double ndf_f(const long double u[3], void *ctx) {
+  const ndf_ctx *c = (const ndf_ctx *)ctx;
+  long double x = u[0] * c->n[0] + u[1] * c->n[1] + u[2] * c->n[2], d;
+  if (x <= 0) return 0;
+  d = x * x * (c->a2 - 1) + 1;
+  return c->a2 / (PI_L * d * d) * x;
+}
+static void test_ggx_ndf(void) {
+  static const double rs[] = {0.03, 0.1, 0.3, 0.6, 1.0};
+  int ir, c;
+  for (ir = 0; ir < 5; ++ir) {
+    double worst = 0, alpha = rs[ir];
+    for (c = 0; c < n_cases(30); ++c) {
+      poly_case pc;
+      double v[SHLIGHT_POLYGON_MAX][3], ax[3];
+      ndf_ctx ctx;
+      arref_hint h;
+      arref_result res;
+      float got;
+      int i, k;
+      make_case(&pc, c % 5);
+      for (i = 0; i < pc.nv; ++i)
+        for (k = 0; k < 3; ++k)
+          v[i][k] = pc.v[i][k];
+      for (k = 0; k < 3; ++k)
+        ax[k] = pc.axis[k];
+      unit(ax);
+      for (k = 0; k < 3; ++k)
+        ctx.n[k] = ax[k], h.axis[k] = ax[k];
+      ctx.a2 = (long double)alpha * alpha;
+      h.sigma = alpha;
+      res = arref_polygon((const double(*)[3])v, pc.nv, (const double(*)[3])ax, 1, ndf_f, &ctx, &h,
+                          1e-12L);
+      got = shl_polygon_ggx_ndf((const float(*)[3])pc.v, pc.nv, pc.axis, (float)alpha);
+      if (fabsl(got - fabsl(res.value)) > worst) worst = (double)fabsl(got - fabsl(res.value));
+    }
+    printf("  GGX NDF moment, alpha %.2f: max abs error %.2e (the hemisphere gives 1)\n", alpha,
+           worst);
+    TL_CHECK(worst < 2e-7, "GGX NDF alpha %g: %g", alpha, worst);
+  }
+  {
+    float q[4][3] = {{-1e4f, -1e4f, 1}, {1e4f, -1e4f, 1}, {1e4f, 1e4f, 1}, {-1e4f, 1e4f, 1}},
+          z[3] = {0, 0, 1};
+    float a = shl_polygon_ggx_ndf((const float(*)[3])q, 4, z, 0.3f);
+    TL_CHECK(fabsf(a - 1) < 1e-4f, "whole hemisphere: %g", a);
+  }
+}
+
 int main(void) {
   gl_init();
   TL_RUN(test_edge_integral);
@@ -575,5 +626,6 @@ int main(void) {
   TL_RUN(test_lobe_sg);
   TL_RUN(test_phong2);
   TL_RUN(test_sphere_ellipse);
+  TL_RUN(test_ggx_ndf);
   return tl_summary();
 }

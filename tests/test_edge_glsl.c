@@ -13,7 +13,7 @@
 
 #define NI 192
 #define IN 32 /* 24 vertex floats, nv, axis (3), exponent, view (3) */
-#define OUTS 8
+#define OUTS 9
 
 static unsigned int st = 777u;
 static float rndf(void) {
@@ -47,11 +47,12 @@ static void test_glsl_edge(void) {
       "  out_float(4, shl_polygon_phong(v, nv, ax, vw, e, SHLIGHT_EDGE_AUTO));\n"
       "  out_float(6, shl_sphere_phong(v[0], 0.3 * length(v[0]), ax, vw, e, SHLIGHT_EDGE_AUTO));\n"
       "  out_float(7, shl_polygon_phong2(v, nv, ax, vw, e, SHLIGHT_EDGE_AUTO));\n"
+      "  out_float(8, shl_polygon_ggx_ndf(v, nv, ax, 0.02 + 0.001 * e));\n"
       "  out_float(5, shl_edge_integral(in_float(0) + 1.5, in_float(1) * 0.5 + 0.5, in_float(2),\n"
       "                                 e, SHLIGHT_EDGE_LORENTZ_PEARSON));\n"
       "}\n";
   int i, k, bad = 0;
-  double worst[OUTS] = {0, 0, 0, 0, 0, 0, 0, 0};
+  double worst[OUTS] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
   for (i = 0; i < NI; ++i) {
     float *p = in + i * IN, cx = 2 * rndf() - 1, cy = 2 * rndf() - 1, cz = 2 * rndf() - 0.5f;
     float rad = 0.1f + 1.2f * rndf(), e = es[i % 6], l, dv;
@@ -93,6 +94,7 @@ static void test_glsl_edge(void) {
       r[6] = shl_sphere_phong(p, 0.3f * sqrtf(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), p + 25,
                               p + 29, e, SHLIGHT_EDGE_AUTO);
       r[7] = shl_polygon_phong2(v, nv, p + 25, p + 29, e, SHLIGHT_EDGE_AUTO);
+      r[8] = shl_polygon_ggx_ndf(v, nv, p + 25, 0.02f + 0.001f * e);
     }
   }
   TL_CHECK(glrun_compute(defines, files, 6, main_src, in, (size_t)NI * IN, out, (size_t)NI * OUTS,
@@ -115,9 +117,10 @@ static void test_glsl_edge(void) {
     }
   }
   printf("  %s: max |GLSL - C| (normalised): exact %.2e, Lorentzian-Pearson %.2e, quadrature %.2e,"
-         " auto (e + 0.5) %.2e, Phong %.2e, F %.2e, sphere Phong %.2e, double-axis Phong %.2e\n",
+         " auto (e + 0.5) %.2e, Phong %.2e, F %.2e, sphere Phong %.2e, double-axis Phong %.2e,"
+         " GGX NDF %.2e\n",
          glrun_renderer(), worst[0], worst[1], worst[2], worst[3], worst[4], worst[5], worst[6],
-         worst[7]);
+         worst[7], worst[8]);
   TL_CHECK(bad == 0, "%d outputs differ beyond 2e-5 of the normalised lobe", bad);
 }
 
