@@ -85,6 +85,12 @@ $(BUILD)/tests/test_edge_glsl: tests/test_edge_glsl.c shlight.h tests/tl.h $(GL_
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
 	    -o $@ tests/test_edge_glsl.c $(GL_SRCS) $(GL_LIBS) -lm
+
+$(BUILD)/tests/test_brdf_glsl: tests/test_brdf_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
+	    -o $@ tests/test_brdf_glsl.c $(GL_SRCS) $(GL_LIBS)
+
 $(BUILD)/tests/test_brdftab_glsl: tests/test_brdftab_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \

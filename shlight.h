@@ -25,6 +25,10 @@
                   fits), polygon axial moments with horizon clipping (exact, constant-cost
                   quadrature), Phong (single / double axis), cosine lobe <-> SG, ellipse /
                   disc / sphere lights: shl_polygon_moment, shl_polygon_phong
+     >>brdf       ZH of Lambert / Phong / Blinn-Phong / GGX / Beckmann lobes; convolution
+                  (SH.SH, SH.ZH, ZH.ZH), irradiance from ZH, windowing, band selection
+     >>hvl        Harmonics Virtual Lights: emission, geometric factor with the exact horizon
+                  fraction, contribution, radius heuristics
      >>brdftab    BRDF SH tables (Kautz-style): lookup kernels; CPU: analytic BRDFs, table build
                   by quadrature, SHLT table files, MERL measured-BRDF loader
 
@@ -27166,6 +27170,900 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
     sum = -sum;
   }
   return SHLIGHT_FLOAT(SHLIGHT_MAXR(sum, 0.0) * 0.15915494309189534);
+}
+
+/* >>brdf ------------------------------------------------------------------------------------
+   ZH of circularly symmetric BRDF lobes, convolution with SH / ZH radiance, irradiance,
+   windowing and band selection (MATH.md sec. 5-6; seed 004 sec. 3.3 with erratum E7; seed 000
+   sec. 4.2, 6.3, Appendix B).
+   A lobe f(w . c) about its axis c (the normal for Lambert and the microfacet lobes, the
+   mirror direction for Phong) has ZH coefficients f_l = 2 pi int_0^pi f(cos t) Y_l^0(t)
+   sin t dt; its SH about c are sqrt(4 pi / (2l+1)) f_l Y_l^m(c) (shl_zh_rotate).
+   Cosine powers (Lambert, Phong, Blinn-Phong) use the factorial-free recurrence of MATH.md
+   sec. 5: Lambda_l(e) = (e+1) int_0^1 x^e P_l(x) dx, Lambda_0 = 1, Lambda_1 = (e+1)/(e+2),
+   Lambda_{l+2} = Lambda_l (e-l)/(e+l+3), in shli_real (double in C: within one float rounding
+   of a binary128 quadrature reference for e in [0, 1e4] and n <= 64, tests/test_brdf).
+   The microfacet lobes (GGX, Beckmann: the projected NDF D(h)(n . h), which integrates to 1)
+   use the substitution tan^2 t = alpha^2 v, after which f_l = K_l int w(v) P_l((1 + alpha^2
+   v)^-1/2) dv with w(v) = (1+v)^-2 (GGX) or e^-v (Beckmann), and the trapezoidal rule in
+   u = ln v (step h = min(0.35, 6 / (n+1)), u from -18 to where the weight is spent, both tails
+   added in closed form): exponentially accurate for these smooth, decaying integrands.
+   Measured against a long double quadrature in t: at the float rounding floor (shl_zh_ggx).
+   Convolution: for radiance L (SH) and a lobe F (SH), int L F = sum_i L_i F_i (shl_sh_dot).
+   For a ZH lobe f about the axis w, sum_l sqrt(4 pi / (2l+1)) f_l sum_m L_lm Y_lm(w)
+   (shl_sh_conv_zh, O(n^2)). For two ZH, a about axis u and b about axis v, the addition
+   theorem sum_m Y_lm(u) Y_lm(v) = (2l+1)/(4 pi) P_l(u . v) leaves
+     int A B = sum_l a_l b_l P_l(u . v)                   (shl_zh_dot_zh, O(n))
+   (no sqrt(4 pi / (2l+1)) factor: the two rotations' factors cancel against the theorem's).
+   Irradiance of a ZH radiance L about w at a normal n, z = w . n (MATH.md sec. 6):
+     E(z) = sum_l A_l K_l L_l P_l(z), A_l = pi Lambda_l(1)   (A_0 = pi, A_1 = 2pi/3, A_2 = pi/4)
+   which for n = 3 is seed 000's Appendix B 2x2 form c3 L2 z^2 + 2 c2 L1 z + c4 L0 - c5 L2. */
+#define SHLIGHT_WINDOW_NONE 0
+#define SHLIGHT_WINDOW_HANNING 1
+#define SHLIGHT_WINDOW_LANCZOS 2
+
+/* out_zh[l] = scale K_l Lambda_l(e), l < n (n already clamped, >= 1), e in [0, 1e30]. */
+SHLIGHT_INLINE void shli_zh_lambda(int n, shli_real e, shli_real scale, float *out_zh) {
+  shli_real pm2 = 1.0;
+  shli_real pm1 = 1.0;
+  shli_real c = 1.0;
+  shli_real fl = 0.0;
+  int l;
+  for (l = 0; l < n; ++l) {
+    if (l == 1) {
+      c = (e + 1.0) / (e + 2.0);
+    } else if (l > 1) {
+      c = pm2 * ((e - fl + 2.0) / (e + fl + 1.0));
+    }
+    out_zh[l] = SHLIGHT_FLOAT(scale * (SHLI_ZH_TAB[5 * l + 4] * 0.15915494309189535) * c);
+    pm2 = pm1;
+    pm1 = c;
+    fl = fl + 1.0;
+  }
+}
+
+/* The exponent as the cosine-power kernels use it: NaN or < 0 -> 0, > 1e30 -> 1e30. */
+SHLIGHT_INLINE shli_real shli_zh_exponent(float exponent) {
+  shli_real e = SHLIGHT_REAL(exponent);
+  if (!(e >= 0.0)) {
+    e = 0.0;
+  }
+  if (e > 1.0e30) {
+    e = 1.0e30;
+  }
+  return e;
+}
+
+/* shl_zh_phong: ZH of the normalised Phong lobe (e+1)/(2 pi) max(0, cos t)^e about its axis:
+   out_zh[l] = K_l Lambda_l(e) (MATH.md sec. 5; the printed products of seed 004 sec. 3.3.2).
+   exponent: any real >= 0 (non-integer too); NaN or negative: 0 (the uniform hemisphere
+   1/(2 pi)); above 1e30: 1e30, where every Lambda_l rounds to 1 (the Dirac limit, out_zh[l] =
+   K_l). out_zh[0] = K_0 = 0.2820948 always (unit integral). Accuracy: within one float rounding
+   of the exact value (binary128 quadrature) for e in [0, 1e4], n <= 64. out_zh: n floats.
+   Cost: O(n), one division per band. */
+SHLIGHT_INLINE void shl_zh_phong(int n, float exponent, float *out_zh) {
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
+  shli_zh_lambda(n, shli_zh_exponent(exponent), 1.0, out_zh);
+}
+
+/* shl_zh_cosine_power: ZH of the unnormalised clamped cosine power max(0, cos t)^e:
+   out_zh[l] = 2 pi K_l Lambda_l(e) / (e+1) = sqrt(pi (2l+1)) int_0^1 x^e P_l(x) dx. Same
+   exponent domain and accuracy as shl_zh_phong (e = 0: the hemisphere indicator, out_zh[0] =
+   sqrt(pi); e = 1: the clamped cosine, out_zh = A_l K_l of MATH.md sec. 6; above 1e30: 1e30,
+   every coefficient about 2 pi K_l 1e-30). out_zh: n floats. Cost: O(n). */
+SHLIGHT_INLINE void shl_zh_cosine_power(int n, float exponent, float *out_zh) {
+  shli_real e;
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
+  e = shli_zh_exponent(exponent);
+  shli_zh_lambda(n, e, 6.283185307179586 / (e + 1.0), out_zh);
+}
+
+/* shl_zh_lambert: ZH of the Lambert lobe max(0, cos t) / pi (k_d = 1; the BRDF times the
+   cosine) about the normal: out_zh[l] = K_l Lambda_l(1) = (1/pi) K_l A_l with the
+   Ramamoorthi-Hanrahan A_l (erratum E7: seed 004's even-l formula is off by 2, 16, 192, ...):
+   0.2820948, 0.3257350, 0.1576958, 0, -0.0352618, 0, 0.0158923, ... Multiply by pi for the
+   clamped cosine (irradiance). Accuracy: one float rounding. out_zh: n floats. Cost: O(n). */
+SHLIGHT_INLINE void shl_zh_lambert(int n, float *out_zh) {
+  shl_zh_phong(n, 1.0f, out_zh);
+}
+
+/* shl_zh_blinn_phong: ZH of the normalised Blinn-Phong NDF times the cosine, D(h) (n . h) with
+   D = (e+2)/(2 pi) (n . h)^e, about the normal n (unit integral over the hemisphere of h):
+   the Phong lobe of exponent e + 1, exactly (a lobe over half vectors h; turning it into a
+   lobe over light directions is the BRDF tables' business). exponent: NaN or < 0: 0, then as
+   shl_zh_phong. out_zh: n floats. Cost: O(n). */
+SHLIGHT_INLINE void shl_zh_blinn_phong(int n, float exponent, float *out_zh) {
+  float e = exponent;
+  if (!(e >= 0.0f)) {
+    e = 0.0f;
+  }
+  shl_zh_phong(n, e + 1.0f, out_zh);
+}
+
+/* Trapezoidal rule in u = ln v for the microfacet ZH (see >>brdf); kind 0: GGX, 1: Beckmann.
+   alpha already in [1e-6, 1e4]. */
+SHLIGHT_INLINE void shli_zh_ndf(int n, shli_real alpha, int kind, float *out_zh) {
+  shli_real acc[SHLIGHT_MAX_BANDS];
+  shli_real a2 = alpha * alpha;
+  shli_real h = 6.0 / (SHLIGHT_REAL(SHLIGHT_ITOF(n)) + 1.0);
+  shli_real u = -18.0;
+  shli_real v;
+  shli_real vmax = 45.0;
+  shli_real wt;
+  shli_real x;
+  shli_real pm;
+  shli_real pl;
+  shli_real pn;
+  int l;
+  int k;
+  int more = 1;
+  if (h > 0.35) {
+    h = 0.35;
+  }
+  if (kind == 0) {
+    vmax = 65659969.13733051; /* e^18 / min(alpha^2, 1): where x < 1e-8 and 1 - F < 1.5e-8 */
+    if (a2 < 1.0) {
+      vmax = vmax / a2;
+    }
+  }
+  /* left tail (u < -18 - h/2): P_l = 1 to O(alpha^2 v), its weight in closed form */
+  v = SHLIGHT_EXPR(u - 0.5 * h);
+  wt = v * (1.0 - 0.5 * v);
+  if (kind == 0) {
+    wt = v / (1.0 + v);
+  }
+  for (l = 0; l < n; ++l) {
+    acc[l] = wt;
+  }
+  k = 0;
+  while (more == 1) {
+    v = SHLIGHT_EXPR(u);
+    x = 1.0 / SHLIGHT_SQRTR(1.0 + a2 * v);
+    if (kind == 0) {
+      wt = h * v / ((1.0 + v) * (1.0 + v));
+    } else {
+      wt = h * v * SHLIGHT_EXPR(-v);
+    }
+    if (v > vmax || k > 4000) {
+      /* right tail (u > last node + h/2): GGX's 1 - F = 1 / (1 + v) at x = 0 (Beckmann's is
+         below 3e-20) */
+      more = 0;
+      x = 0.0;
+      wt = 0.0;
+      if (kind == 0) {
+        wt = 1.0 / (1.0 + SHLIGHT_EXPR(u - 0.5 * h));
+      }
+    }
+    pm = 1.0;
+    pl = x;
+    acc[0] = acc[0] + wt;
+    for (l = 1; l < n; ++l) {
+      acc[l] = acc[l] + wt * pl;
+      pn = SHLI_ZH_TAB[5 * l] * x * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
+      pm = pl;
+      pl = pn;
+    }
+    u = u + h;
+    k = k + 1;
+  }
+  for (l = 0; l < n; ++l) {
+    out_zh[l] = SHLIGHT_FLOAT(acc[l] * (SHLI_ZH_TAB[5 * l + 4] * 0.15915494309189535));
+  }
+}
+
+/* Delta lobe (alpha -> 0): out_zh[l] = K_l. */
+SHLIGHT_INLINE void shli_zh_delta(int n, float *out_zh) {
+  int l;
+  for (l = 0; l < n; ++l) {
+    out_zh[l] = SHLIGHT_FLOAT(SHLI_ZH_TAB[5 * l + 4] * 0.15915494309189535);
+  }
+}
+
+/* shl_zh_ggx: ZH of the GGX (Trowbridge-Reitz) NDF times the cosine about the normal,
+   D(h)(n . h) with D = alpha^2 / (pi ((n.h)^2 (alpha^2 - 1) + 1)^2) (unit integral:
+   out_zh[0] = K_0). alpha: the roughness (GGX alpha, not its square root); alpha < 1e-6, 0,
+   negative or NaN: the Dirac limit out_zh[l] = K_l (off by < 1e-7 K_l at alpha = 1e-6, l < 64);
+   alpha > 1e4: 1e4. Measured max |error| / K_l against a long double quadrature in t: 5.4e-8
+   (the float rounding of the output) for alpha in [1e-4, 1e2] and n in {1, 4, 8, 16, 32, 64}
+   (tests/test_brdf; the rule itself is good to ~1e-9 K_l). out_zh: n floats. Cost:
+   (36 + 2 ln(1/min(alpha, 1))) / h nodes, h = min(0.35, 6 / (n+1)), each one exp, one sqrt
+   and n Legendre steps: 116 nodes at n = 4 and 223 at n = 32 for alpha = 0.1. */
+SHLIGHT_INLINE void shl_zh_ggx(int n, float alpha, float *out_zh) {
+  shli_real a = SHLIGHT_REAL(alpha);
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
+  if (!(a >= 1.0e-6)) {
+    shli_zh_delta(n, out_zh);
+    return;
+  }
+  if (a > 1.0e4) {
+    a = 1.0e4;
+  }
+  shli_zh_ndf(n, a, 0, out_zh);
+}
+
+/* shl_zh_beckmann: ZH of the Beckmann NDF times the cosine about the normal, D(h)(n . h) with
+   D = exp(-tan^2 t / alpha^2) / (pi alpha^2 cos^4 t). alpha: the Beckmann roughness (RMS
+   slope); degenerate alpha as shl_zh_ggx. Accuracy as shl_zh_ggx (max 7e-8 K_l). out_zh: n
+   floats. Cost: about 22 / h nodes (alpha-independent: 63 at n = 4, 121 at n = 32), each two
+   exp, one sqrt and n Legendre steps. */
+SHLIGHT_INLINE void shl_zh_beckmann(int n, float alpha, float *out_zh) {
+  shli_real a = SHLIGHT_REAL(alpha);
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
+  if (!(a >= 1.0e-6)) {
+    shli_zh_delta(n, out_zh);
+    return;
+  }
+  if (a > 1.0e4) {
+    a = 1.0e4;
+  }
+  shli_zh_ndf(n, a, 1, out_zh);
+}
+
+/* shl_sh_dot: sum_i a[i] b[i], i < n^2: the integral over the sphere of the product of two
+   functions given by their SH (seed 000 eq. 4), accumulated in shli_real in four interleaved
+   partial sums (i mod 4: independent add chains, so the loop is not bound by the add
+   latency; the result does not depend on the compiler's reassociation). a, b: n^2 floats.
+   n < 1: 0. Cost: n^2 FMA. */
+SHLIGHT_INLINE float shl_sh_dot(int n, const float *a, const float *b) {
+  shli_real s0 = 0.0;
+  shli_real s1 = 0.0;
+  shli_real s2 = 0.0;
+  shli_real s3 = 0.0;
+  int i = 0;
+  int nn;
+  n = shli_bands(n);
+  nn = n * n;
+  while (i + 3 < nn) {
+    s0 = s0 + SHLIGHT_REAL(a[i]) * SHLIGHT_REAL(b[i]);
+    s1 = s1 + SHLIGHT_REAL(a[i + 1]) * SHLIGHT_REAL(b[i + 1]);
+    s2 = s2 + SHLIGHT_REAL(a[i + 2]) * SHLIGHT_REAL(b[i + 2]);
+    s3 = s3 + SHLIGHT_REAL(a[i + 3]) * SHLIGHT_REAL(b[i + 3]);
+    i = i + 4;
+  }
+  while (i < nn) {
+    s0 = s0 + SHLIGHT_REAL(a[i]) * SHLIGHT_REAL(b[i]);
+    i = i + 1;
+  }
+  return SHLIGHT_FLOAT((s0 + s1) + (s2 + s3));
+}
+
+/* shl_sh_conv_zh on a unit axis (ux, uy, uz) given in shli_real. */
+SHLIGHT_INLINE float shli_sh_conv_zh_xyz(int n, const float *sh, const float *zh, shli_real ux,
+                                         shli_real uy, shli_real uz) {
+  float ysh[SHLIGHT_MAX_COEFFS];
+  float k;
+  int l;
+  int m;
+  int b;
+  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);
+  /* the rotated lobe in place, then one dot (independent add chains, see shl_sh_dot) */
+  for (l = 0; l < n; ++l) {
+    b = l * (l + 1);
+    k = SHLIGHT_FLOAT(SHLI_ZH_TAB[5 * l + 3] * SHLIGHT_REAL(zh[l]));
+    for (m = -l; m <= l; ++m) {
+      ysh[b + m] = k * ysh[b + m];
+    }
+  }
+  return shl_sh_dot(n, sh, ysh);
+}
+
+/* shl_sh_conv_zh: the integral of the SH function sh (n^2 coefficients) times the lobe with
+   ZH coefficients zh (n floats) turned to the axis w: sum_l sqrt(4 pi/(2l+1)) zh[l] sum_m
+   sh[l(l+1)+m] Y_lm(w) = shl_sh_dot(sh, shl_zh_rotate(zh, w)) without the rotated copy. w: any
+   finite non-zero vector (normalised in shli_real); zero, NaN or infinite: +z. n < 1: 0.
+   Cost: one SH evaluation (n^2 values, a float[SHLIGHT_MAX_COEFFS] on the stack) and n^2 FMA. */
+SHLIGHT_INLINE float shl_sh_conv_zh(int n, const float *sh, const float *zh, const float w[3]) {
+  shli_real g[8];
+  n = shli_bands(n);
+  if (n < 1) {
+    return 0.0f;
+  }
+  shli_cap_frame(SHLIGHT_REAL(w[0]), SHLIGHT_REAL(w[1]), SHLIGHT_REAL(w[2]), 1.0, g);
+  return shli_sh_conv_zh_xyz(n, sh, zh, g[0], g[1], g[2]);
+}
+
+/* Cosine between two directions, each normalised in shli_real (zero, NaN or infinite: +z),
+   clamped to [-1, 1]. */
+SHLIGHT_INLINE shli_real shli_cos_between(const float a[3], const float b[3]) {
+  shli_real ga[8];
+  shli_real gb[8];
+  shli_real c;
+  shli_cap_frame(SHLIGHT_REAL(a[0]), SHLIGHT_REAL(a[1]), SHLIGHT_REAL(a[2]), 1.0, ga);
+  shli_cap_frame(SHLIGHT_REAL(b[0]), SHLIGHT_REAL(b[1]), SHLIGHT_REAL(b[2]), 1.0, gb);
+  c = ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2];
+  if (c > 1.0) {
+    c = 1.0;
+  }
+  if (c < -1.0) {
+    c = -1.0;
+  }
+  return c;
+}
+
+/* sum_l zh_a[l] zh_b[l] P_l(c), c in [-1, 1], n >= 1. */
+SHLIGHT_INLINE float shli_zh_dot_c(int n, const float *zh_a, const float *zh_b, shli_real c) {
+  shli_real s;
+  shli_real pm = 1.0;
+  shli_real pl;
+  shli_real pn;
+  int l;
+  s = SHLIGHT_REAL(zh_a[0]) * SHLIGHT_REAL(zh_b[0]);
+  pl = c;
+  for (l = 1; l < n; ++l) {
+    s = s + SHLIGHT_REAL(zh_a[l]) * SHLIGHT_REAL(zh_b[l]) * pl;
+    pn = SHLI_ZH_TAB[5 * l] * c * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
+    pm = pl;
+    pl = pn;
+  }
+  return SHLIGHT_FLOAT(s);
+}
+
+/* shl_zh_dot_zh: the integral over the sphere of the product of two circularly symmetric
+   functions, ZH zh_a about the axis u and ZH zh_b about the axis v (n floats each):
+   sum_l zh_a[l] zh_b[l] P_l(u . v) (see >>brdf; equal to shl_sh_dot of the two rotated SH).
+   Use it when the lobe is circularly symmetric about its own axis (Phong about the mirror
+   direction, a microfacet lobe about the normal) and the radiance is a ZH (a sphere light's
+   cap, an HVL). u, v: any finite non-zero vectors; zero, NaN or infinite: +z. n < 1: 0.
+   Cost: O(n): two normalisations, n Legendre steps, 3n flops. */
+SHLIGHT_INLINE float shl_zh_dot_zh(int n, const float *zh_a, const float u[3], const float *zh_b,
+                                   const float v[3]) {
+  n = shli_bands(n);
+  if (n < 1) {
+    return 0.0f;
+  }
+  return shli_zh_dot_c(n, zh_a, zh_b, shli_cos_between(u, v));
+}
+
+/* z clamped to [-1, 1]; NaN: 0 (the horizon). */
+SHLIGHT_INLINE shli_real shli_clamp_cos(float z) {
+  shli_real c = SHLIGHT_REAL(z);
+  if (!(c >= -1.0 && c <= 1.0)) {
+    if (c > 1.0) {
+      c = 1.0;
+    } else if (c < -1.0) {
+      c = -1.0;
+    } else {
+      c = 0.0;
+    }
+  }
+  return c;
+}
+
+/* shl_zh_irradiance3: irradiance E = int L(w) max(0, n . w) dw of a 3-band ZH radiance
+   zh3 = (L_0, L_1, L_2) about an axis w_l, at a normal with z = w_l . n: seed 000 Appendix B,
+   E = sigma^T M sigma, sigma = (z, 1), M = ((c3 L2, c2 L1), (c2 L1, c4 L0 - c5 L2)), i.e.
+   c3 L2 z^2 + 2 c2 L1 z + c4 L0 - c5 L2 with the exact constants c2 = sqrt(3 pi)/6,
+   c3 = 3 sqrt(5 pi)/16, c4 = sqrt(pi)/2, c5 = sqrt(5 pi)/16 (the printed 6-digit values
+   differ by <= 1.1e-6). z outside [-1, 1]: clamped; NaN: 0. Cost: 5 flops. */
+SHLIGHT_INLINE float shl_zh_irradiance3(const float *zh3, float z) {
+  shli_real c = shli_clamp_cos(z);
+  shli_real l2 = SHLIGHT_REAL(zh3[2]);
+  return SHLIGHT_FLOAT(0.7431238683011271 * l2 * c * c +
+                       2.0 * 0.5116633539732443 * SHLIGHT_REAL(zh3[1]) * c +
+                       0.8862269254527579 * SHLIGHT_REAL(zh3[0]) - 0.2477079561003757 * l2);
+}
+
+/* shl_zh_irradiance: the same for n bands, E(z) = sum_l A_l K_l L_l P_l(z), A_l = pi
+   Lambda_l(1) (MATH.md sec. 6): the exact irradiance of the band-limited radiance (its bands
+   >= n are zero, so the clamped cosine's are not needed). zh: n floats; z as
+   shl_zh_irradiance3. n < 1: 0. Cost: O(n). */
+SHLIGHT_INLINE float shl_zh_irradiance(int n, const float *zh, float z) {
+  shli_real c;
+  shli_real s;
+  shli_real pm = 1.0;
+  shli_real pl;
+  shli_real pn;
+  shli_real lm2 = 1.0;
+  shli_real lm1 = 1.0;
+  shli_real lam;
+  shli_real fl = 1.0;
+  int l;
+  n = shli_bands(n);
+  if (n < 1) {
+    return 0.0f;
+  }
+  c = shli_clamp_cos(z);
+  /* A_l K_l = pi Lambda_l(1) sqrt(pi (2l+1)) / (2 pi) */
+  s = 0.5 * SHLI_ZH_TAB[4] * SHLIGHT_REAL(zh[0]);
+  pl = c;
+  for (l = 1; l < n; ++l) {
+    if (l == 1) {
+      lam = 0.6666666666666666;
+    } else {
+      lam = lm2 * ((3.0 - fl) / (fl + 2.0));
+    }
+    s = s + 0.5 * SHLI_ZH_TAB[5 * l + 4] * lam * SHLIGHT_REAL(zh[l]) * pl;
+    pn = SHLI_ZH_TAB[5 * l] * c * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
+    pm = pl;
+    pl = pn;
+    lm2 = lm1;
+    lm1 = lam;
+    fl = fl + 1.0;
+  }
+  return SHLIGHT_FLOAT(s);
+}
+
+/* sin(pi t) for t in [0, 1] from the shims alone (Taylor to x^17 after folding to [0, 1/2]:
+   absolute error < 1e-13). */
+SHLIGHT_INLINE shli_real shli_sinpi(shli_real t) {
+  shli_real x;
+  shli_real x2;
+  shli_real p;
+  if (t > 0.5) {
+    t = 1.0 - t;
+  }
+  x = 3.141592653589793 * t;
+  x2 = x * x;
+  p = 2.8114572543455206e-15;
+  p = -7.647163731819816e-13 + x2 * p;
+  p = 1.6059043836821613e-10 + x2 * p;
+  p = -2.505210838544172e-08 + x2 * p;
+  p = 2.7557319223985893e-06 + x2 * p;
+  p = -0.0001984126984126984 + x2 * p;
+  p = 0.008333333333333333 + x2 * p;
+  p = -0.16666666666666666 + x2 * p;
+  return x + x * (x2 * p);
+}
+
+/* shl_sh_window: multiplies band l of a ZH (io_zh, n floats) by a window sigma_l against
+   ringing (Sloan, "Stupid SH tricks"; seed 000 sec. 4.2): kind SHLIGHT_WINDOW_HANNING (1):
+   sigma_l = (1 + cos(pi l / width)) / 2; SHLIGHT_WINDOW_LANCZOS (2): sigma_l = sinc(l / width)
+   = sin(pi l / width) / (pi l / width); both 0 for l >= width. width: the window's band count,
+   > 0 (typically n, or n + 1 to keep the last band); <= 0 or NaN: n. Another kind
+   (SHLIGHT_WINDOW_NONE): unchanged. For an SH vector multiply its band l by the sigma_l that
+   this returns for a ZH of ones. Measured on a cap (half-angle 30 deg, n = 8; tests/test_brdf,
+   bench/out/brdf.md): see README. Cost: O(n). */
+SHLIGHT_INLINE void shl_sh_window(int n, int kind, float width, float *io_zh) {
+  shli_real w = SHLIGHT_REAL(width);
+  shli_real t;
+  shli_real sg;
+  int l;
+  n = shli_bands(n);
+  if (n < 1 || (kind != 1 && kind != 2)) {
+    return;
+  }
+  if (!(w > 0.0)) {
+    w = SHLIGHT_REAL(SHLIGHT_ITOF(n));
+  }
+  for (l = 1; l < n; ++l) {
+    t = SHLIGHT_REAL(SHLIGHT_ITOF(l)) / w;
+    sg = 0.0;
+    if (t < 1.0) {
+      if (kind == 1) {
+        /* (1 + cos(pi t)) / 2 = 1 - sin(pi t / 2)^2 */
+        sg = shli_sinpi(0.5 * t);
+        sg = 1.0 - sg * sg;
+      } else {
+        sg = shli_sinpi(t) / (3.141592653589793 * t);
+      }
+    }
+    io_zh[l] = SHLIGHT_FLOAT(SHLIGHT_REAL(io_zh[l]) * sg);
+  }
+}
+
+/* shl_zh_bands_for: the smallest band count m in [1, n] whose truncation of the lobe zh (n
+   floats, n = the largest band count considered) has relative squared L2 error
+     sum_{m <= l < n} zh[l]^2 / sum_{l < n} zh[l]^2 <= target,
+   i.e. the fraction of the lobe's energy (over the sphere, within the first n bands) that the
+   dropped bands carry. (The bands >= n are not seen: pass a large n, e.g. 64, to measure
+   against the full lobe.) For an L2 error target eps relative to the lobe's norm, pass eps^2.
+   target NaN or < 0: n; a zero lobe: 1. Cost: O(n). */
+SHLIGHT_INLINE int shl_zh_bands_for(int n, const float *zh, float target) {
+  shli_real tot = 0.0;
+  shli_real tail = 0.0;
+  shli_real t = SHLIGHT_REAL(target);
+  shli_real q;
+  int l;
+  int m;
+  n = shli_bands(n);
+  if (n < 1) {
+    return 1;
+  }
+  for (l = 0; l < n; ++l) {
+    tot = tot + SHLIGHT_REAL(zh[l]) * SHLIGHT_REAL(zh[l]);
+  }
+  if (!(tot > 0.0)) {
+    return 1;
+  }
+  if (!(t >= 0.0)) {
+    return n;
+  }
+  m = n;
+  /* m: the smallest count found so far; tail = energy of the bands >= m - 1 when tested */
+  for (l = n - 1; l >= 1; --l) {
+    q = SHLIGHT_REAL(zh[l]);
+    tail = tail + q * q;
+    if (tail <= t * tot) {
+      m = l;
+    } else {
+      break;
+    }
+  }
+  return m;
+}
+
+/* >>hvl -------------------------------------------------------------------------------------
+   Harmonics Virtual Lights (seed 000 sec. 5; MATH.md sec. 6, errata E8, E9). An HVL j is a
+   sphere of radius r at y with normal n_j and power Phi_j, whose emission towards the shading
+   point x is the reconstruction of an SH emission function F' (the BRDF projected without the
+   cosine, in world axes). With w_j = (y - x) / |y - x| and n_x the normal at x:
+     eq. 20  L_j = Phi_j (F' . Y(-w_j)) G_j(-w_j)                      (shl_hvl_radiance)
+     eq. 21  G_j = max(0, n_j . -w_j) H(n_x, w_j) / (pi r^2)            (shl_hvl_geometric)
+     eq. 19  L_o = L_j (L . F), L = the SH of the unit cap that the sphere subtends at x
+             (shl_zh_cap rotated to w_j; shl_hvl_contribution, O(n^2)), or with a ZH lobe F
+             about its own axis, shl_zh_dot_zh (shl_hvl_contribution_zh, O(n)).
+   H is the fraction of the cap (half-angle a, sin a = s = min(r/d, 1), d = |y - x|) above the
+   horizon of n_x, with beta the angle between n_x and w_j. Exact (MATH.md sec. 6, two-cap
+   intersection), rewritten without cancellation for small caps: with c = cos beta,
+   t = c / s, k = cos a / sin beta, both in the crossing range |c| < s,
+     H = D / (pi (1 - cos a)) + acos(-t k) / pi,   D = acos(t k) - acos(t)
+   where sin D = t (s - c)(s + c) / (sin^2 beta (sqrt(1 - t^2 k^2) + k sqrt(1 - t^2))) and
+   cos D = t^2 k + sqrt(1 - t^2 k^2) sqrt(1 - t^2) (no difference of nearly equal angles),
+   1 - cos a = s^2 / (1 + cos a); H = 1 for c >= s, 0 for c <= -s (shl_hvl_horizon). The cheap
+   variant is seed 000's smoothstep (eq. 22) with the clamp corrected (erratum E8:
+   lower bound pi/2 - a, S clamped to [0, 1]): max abs error 0.039-0.089 against the exact H
+   (shl_hvl_horizon_smoothstep). The angles use the own atan2 of >>light. */
+
+/* exact H for the cosine c (in [-1, 1]) between the normal and the axis */
+SHLIGHT_INLINE float shli_hvl_h(shli_real c, float r, float d) {
+  shli_real q[8];
+  shli_real s;
+  shli_real al;
+  shli_real sb2;
+  shli_real t;
+  shli_real k;
+  shli_real tk;
+  shli_real st;
+  shli_real stk;
+  shli_real sd;
+  shli_real cd;
+  shli_real hh;
+  shli_cap_frame(0.0, 0.0, SHLIGHT_REAL(d), SHLIGHT_REAL(r), q);
+  s = SHLIGHT_SQRTR(q[4]);
+  al = q[5];
+  if (!(SHLIGHT_REAL(d) >= 0.0) || !(s > 0.0)) {
+    s = 0.0;
+  }
+  if (c >= s) {
+    if (c > 0.0 || s > 0.0) {
+      return 1.0f;
+    }
+    return 0.5f;
+  }
+  if (c <= -s) {
+    return 0.0f;
+  }
+  sb2 = (1.0 - c) * (1.0 + c);
+  t = c / s;
+  k = al / SHLIGHT_SQRTR(sb2);
+  tk = t * k;
+  st = SHLIGHT_SQRTR((1.0 - t) * (1.0 + t));
+  stk = SHLIGHT_SQRTR((1.0 - tk) * (1.0 + tk));
+  sd = t * (s - c) * (s + c) / (sb2 * (stk + k * st));
+  cd = t * tk + stk * st;
+  hh = shli_atan2r(sd, cd) * (1.0 + al) / (3.141592653589793 * s * s) +
+       shli_atan2r(stk, -tk) * 0.3183098861837907;
+  if (hh < 0.0) {
+    hh = 0.0;
+  }
+  if (hh > 1.0) {
+    hh = 1.0;
+  }
+  return SHLIGHT_FLOAT(hh);
+}
+
+/* shl_hvl_horizon: exact fraction H in [0, 1] of the cap of a sphere of radius r at distance
+   d in the direction w that lies above the plane of the normal nx (see >>hvl). nx, w: any
+   finite non-zero vectors (normalised in shli_real; zero, NaN or infinite: +z). d <= r (x on
+   or inside the sphere): the cap is the hemisphere about w (s = 1). r <= 0 or NaN, d NaN, or
+   a cap too small for float (s = 0): the point limit, 1 if nx . w > 0, 0 if < 0, 1/2 if 0.
+   Accuracy: max |error| 3.0e-8 (the float rounding of the output) against a long double
+   ring-by-ring quadrature of the cap, s from 1e-6 to 1, all crossing angles (tests/test_brdf).
+   Cost: 2 normalisations, ~8 sqrt, 2 own atan2. */
+SHLIGHT_INLINE float shl_hvl_horizon(const float nx[3], const float w[3], float r, float d) {
+  return shli_hvl_h(shli_cos_between(nx, w), r, d);
+}
+
+/* smoothstep H for the cosine c */
+SHLIGHT_INLINE float shli_hvl_hs(shli_real c, float r, float d) {
+  shli_real q[8];
+  shli_real s;
+  shli_real a;
+  shli_real be;
+  shli_real xx;
+  shli_cap_frame(0.0, 0.0, SHLIGHT_REAL(d), SHLIGHT_REAL(r), q);
+  s = SHLIGHT_SQRTR(q[4]);
+  if (!(SHLIGHT_REAL(d) >= 0.0) || !(s > 0.0)) {
+    if (c > 0.0) {
+      return 1.0f;
+    }
+    if (c < 0.0) {
+      return 0.0f;
+    }
+    return 0.5f;
+  }
+  a = shli_atan2r(s, q[5]);
+  be = shli_atan2r(SHLIGHT_SQRTR((1.0 - c) * (1.0 + c)), c);
+  if (be < 1.5707963267948966 - a) {
+    be = 1.5707963267948966 - a;
+  }
+  if (be > 1.5707963267948966 + a) {
+    be = 1.5707963267948966 + a;
+  }
+  xx = (1.5707963267948966 + a - be) / (2.0 * a);
+  if (xx < 0.0) {
+    xx = 0.0;
+  }
+  if (xx > 1.0) {
+    xx = 1.0;
+  }
+  return SHLIGHT_FLOAT(xx * xx * (3.0 - 2.0 * xx));
+}
+
+/* shl_hvl_horizon_smoothstep: seed 000 eq. 22 with erratum E8 fixed: H = S((a + pi/2 -
+   clamp(beta, pi/2 - a, pi/2 + a)) / (2a)), S(x) = 3x^2 - 2x^3 on x clamped to [0, 1]. Same
+   arguments and degenerate results as shl_hvl_horizon (a = 0: the point limit). Max abs
+   error against the exact H: 0.039 (a = 0.01) to 0.089 (a = 1.5) (MATH.md sec. 6; remeasured
+   in tests/test_brdf). Cost: 2 normalisations, 2 own atan2. */
+SHLIGHT_INLINE float shl_hvl_horizon_smoothstep(const float nx[3], const float w[3], float r,
+                                                float d) {
+  return shli_hvl_hs(shli_cos_between(nx, w), r, d);
+}
+
+/* shl_hvl_geometric: seed 000 eq. 21, G_j = max(0, n_j . (x - y)/|x - y|) H(n_x, w_j) /
+   (pi r^2), with H exact (exact != 0, shl_hvl_horizon) or the smoothstep variant (exact = 0).
+   x, nx: shading point and its normal; y, ny: the HVL's centre and normal (normals: any
+   non-zero vectors, normalised here). r <= 0 or NaN: 0 (no HVL). x == y: the direction +z
+   (then H is the hemisphere's). NaN or infinite positions: 0. Bounded by 1 / (pi r^2). Cost:
+   about 3 normalisations and one H. */
+SHLIGHT_INLINE float shl_hvl_geometric(const float x[3], const float nx[3], const float y[3],
+                                       const float ny[3], float r, int exact) {
+  shli_real g[8];
+  shli_real gn[8];
+  shli_real cj;
+  shli_real cx;
+  shli_real hh;
+  shli_real rr = SHLIGHT_REAL(r);
+  if (!(rr > 0.0)) {
+    return 0.0f;
+  }
+  shli_cap_frame(SHLIGHT_REAL(y[0]) - SHLIGHT_REAL(x[0]), SHLIGHT_REAL(y[1]) - SHLIGHT_REAL(x[1]),
+                 SHLIGHT_REAL(y[2]) - SHLIGHT_REAL(x[2]), rr, g);
+  if (!(g[6] > 0.0)) {
+    return 0.0f;
+  }
+  shli_cap_frame(SHLIGHT_REAL(ny[0]), SHLIGHT_REAL(ny[1]), SHLIGHT_REAL(ny[2]), 1.0, gn);
+  cj = -(gn[0] * g[0] + gn[1] * g[1] + gn[2] * g[2]);
+  if (!(cj > 0.0)) {
+    return 0.0f;
+  }
+  if (cj > 1.0) {
+    cj = 1.0;
+  }
+  shli_cap_frame(SHLIGHT_REAL(nx[0]), SHLIGHT_REAL(nx[1]), SHLIGHT_REAL(nx[2]), 1.0, gn);
+  cx = gn[0] * g[0] + gn[1] * g[1] + gn[2] * g[2];
+  if (cx > 1.0) {
+    cx = 1.0;
+  }
+  if (cx < -1.0) {
+    cx = -1.0;
+  }
+  /* d = 1 / g[3] (x == y: g[3] = 0 and d = 1e30 would be wrong; shli_cap_frame then holds
+     the inside cap, s = 1, which d = 0 reproduces) */
+  hh = 0.0;
+  if (g[3] > 0.0) {
+    hh = 1.0 / g[3];
+  }
+  if (exact != 0) {
+    hh = SHLIGHT_REAL(shli_hvl_h(cx, r, SHLIGHT_FLOAT(hh)));
+  } else {
+    hh = SHLIGHT_REAL(shli_hvl_hs(cx, r, SHLIGHT_FLOAT(hh)));
+  }
+  return SHLIGHT_FLOAT(cj * hh / (3.141592653589793 * rr * rr));
+}
+
+/* F' . Y(u) for a unit u given in shli_real, n >= 1. */
+SHLIGHT_INLINE float shli_hvl_emission_xyz(int n, const float *femit, shli_real ux, shli_real uy,
+                                           shli_real uz) {
+  float ysh[SHLIGHT_MAX_COEFFS];
+  if (n == 1) {
+    return SHLIGHT_FLOAT(0.28209479177387814 * SHLIGHT_REAL(femit[0]));
+  }
+  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);
+  return shl_sh_dot(n, femit, ysh);
+}
+
+/* shl_hvl_emission: the reconstruction F' . Y(dir) of an SH emission function femit (n^2
+   floats) in the direction dir (seed 000 eq. 20 with dir = -w_j, from the HVL to x; any
+   finite non-zero vector, normalised; zero, NaN or infinite: +z). n = 1 (isotropic HVL):
+   femit[0] Y_0^0, no SH evaluation. Not clamped: a band-limited emission can be negative.
+   n < 1: 0. Cost: one SH evaluation (a float[SHLIGHT_MAX_COEFFS] on the stack) and n^2 FMA. */
+SHLIGHT_INLINE float shl_hvl_emission(int n, const float *femit, const float dir[3]) {
+  shli_real g[8];
+  n = shli_bands(n);
+  if (n < 1) {
+    return 0.0f;
+  }
+  shli_cap_frame(SHLIGHT_REAL(dir[0]), SHLIGHT_REAL(dir[1]), SHLIGHT_REAL(dir[2]), 1.0, g);
+  return shli_hvl_emission_xyz(n, femit, g[0], g[1], g[2]);
+}
+
+/* shl_hvl_radiance: seed 000 eq. 20, L_j = power (F' . Y(-w_j)) G_j(-w_j): the radiance that
+   HVL j (centre y, normal ny, radius r, emission femit: n^2 floats of SH in world axes) sends
+   to the shading point x with normal nx; exact selects H as in shl_hvl_geometric. Degenerate
+   inputs: those of shl_hvl_geometric give 0. Cost: shl_hvl_emission + shl_hvl_geometric. */
+SHLIGHT_INLINE float shl_hvl_radiance(int n, const float *femit, float power, const float x[3],
+                                      const float nx[3], const float y[3], const float ny[3],
+                                      float r, int exact) {
+  shli_real g[8];
+  float gj;
+  n = shli_bands(n);
+  if (n < 1) {
+    return 0.0f;
+  }
+  gj = shl_hvl_geometric(x, nx, y, ny, r, exact);
+  if (!(gj > 0.0f)) {
+    return 0.0f;
+  }
+  shli_cap_frame(SHLIGHT_REAL(x[0]) - SHLIGHT_REAL(y[0]), SHLIGHT_REAL(x[1]) - SHLIGHT_REAL(y[1]),
+                 SHLIGHT_REAL(x[2]) - SHLIGHT_REAL(y[2]), 1.0, g);
+  return power * shli_hvl_emission_xyz(n, femit, g[0], g[1], g[2]) * gj;
+}
+
+/* shl_hvl_contribution: seed 000 eq. 19, lj (L . F): the light that HVL j (centre y, radius
+   r, radiance lj from shl_hvl_radiance) reflects at x through a lobe F given by its SH fsh
+   (n^2 floats, world axes; e.g. the BRDF with the cosine for the outgoing direction),
+   L = the SH of the sphere's unit cap at x (shl_zh_cap about w_j). x inside the sphere: the
+   hemisphere about w_j; r <= 0, NaN or infinite: 0. Cost: shl_zh_cap + shl_sh_conv_zh. */
+SHLIGHT_INLINE float shl_hvl_contribution(int n, float lj, const float *fsh, const float x[3],
+                                          const float y[3], float r) {
+  float zh[SHLIGHT_MAX_BANDS];
+  shli_real g[8];
+  shli_real dd;
+  n = shli_bands(n);
+  if (n < 1) {
+    return 0.0f;
+  }
+  shli_cap_frame(SHLIGHT_REAL(y[0]) - SHLIGHT_REAL(x[0]), SHLIGHT_REAL(y[1]) - SHLIGHT_REAL(x[1]),
+                 SHLIGHT_REAL(y[2]) - SHLIGHT_REAL(x[2]), SHLIGHT_REAL(r), g);
+  if (!(g[6] > 0.0)) {
+    return 0.0f;
+  }
+  dd = 0.0;
+  if (g[3] > 0.0) {
+    dd = 1.0 / g[3];
+  }
+  shl_zh_cap(n, r, SHLIGHT_FLOAT(dd), zh);
+  return lj * shli_sh_conv_zh_xyz(n, fsh, zh, g[0], g[1], g[2]);
+}
+
+/* shl_hvl_contribution_zh: the same with a circularly symmetric lobe, ZH fzh (n floats) about
+   the axis faxis (seed 000 sec. 6.3: Phong about the mirror direction, a microfacet lobe
+   about the normal): lj shl_zh_dot_zh(cap about w_j, fzh about faxis). Degenerate inputs as
+   shl_hvl_contribution (faxis zero, NaN or infinite: +z). Cost: shl_zh_cap + O(n). */
+SHLIGHT_INLINE float shl_hvl_contribution_zh(int n, float lj, const float *fzh,
+                                             const float faxis[3], const float x[3],
+                                             const float y[3], float r) {
+  float zh[SHLIGHT_MAX_BANDS];
+  shli_real g[8];
+  shli_real dd;
+  shli_real ga[8];
+  shli_real c;
+  n = shli_bands(n);
+  if (n < 1) {
+    return 0.0f;
+  }
+  shli_cap_frame(SHLIGHT_REAL(y[0]) - SHLIGHT_REAL(x[0]), SHLIGHT_REAL(y[1]) - SHLIGHT_REAL(x[1]),
+                 SHLIGHT_REAL(y[2]) - SHLIGHT_REAL(x[2]), SHLIGHT_REAL(r), g);
+  if (!(g[6] > 0.0)) {
+    return 0.0f;
+  }
+  dd = 0.0;
+  if (g[3] > 0.0) {
+    dd = 1.0 / g[3];
+  }
+  shl_zh_cap(n, r, SHLIGHT_FLOAT(dd), zh);
+  shli_cap_frame(SHLIGHT_REAL(faxis[0]), SHLIGHT_REAL(faxis[1]), SHLIGHT_REAL(faxis[2]), 1.0, ga);
+  c = g[0] * ga[0] + g[1] * ga[1] + g[2] * ga[2];
+  if (c > 1.0) {
+    c = 1.0;
+  }
+  if (c < -1.0) {
+    c = -1.0;
+  }
+  return lj * shli_zh_dot_c(n, zh, fzh, c);
+}
+
+/* shl_hvl_radius_neighbours: seed 000 eq. 23, r1 = sum w_i |p - pn_i| / sum w_i with
+   w_i = 1 / (|dist - dn_i| + eps): the HVL at p (distance dist to its primary light) and up
+   to 8 neighbours pn_i (distances dn_i) from the RSM. count: clamped to [0, 8]. eps: NaN or
+   below 1e-20: 1e-20. Neighbours with a non-finite position or distance are skipped; none
+   left: 0. Cost: count sqrt and divisions. */
+SHLIGHT_INLINE float shl_hvl_radius_neighbours(int count, const float p[3], float dist,
+                                               const float (*pn)[3], const float *dn, float eps) {
+  shli_real sw = 0.0;
+  shli_real sd = 0.0;
+  shli_real e = SHLIGHT_REAL(eps);
+  shli_real dx;
+  shli_real dy;
+  shli_real dz;
+  shli_real dd;
+  shli_real wt;
+  int i;
+  if (count > 8) {
+    count = 8;
+  }
+  if (!(e >= 1.0e-20)) {
+    e = 1.0e-20;
+  }
+  for (i = 0; i < count; ++i) {
+    dx = SHLIGHT_REAL(pn[i][0]) - SHLIGHT_REAL(p[0]);
+    dy = SHLIGHT_REAL(pn[i][1]) - SHLIGHT_REAL(p[1]);
+    dz = SHLIGHT_REAL(pn[i][2]) - SHLIGHT_REAL(p[2]);
+    dd = SHLIGHT_SQRTR(dx * dx + dy * dy + dz * dz);
+    wt = 1.0 / (SHLIGHT_ABSR(SHLIGHT_REAL(dist) - SHLIGHT_REAL(dn[i])) + e);
+    if (dd <= SHLIGHT_REAL_MAX && wt > 0.0 && wt <= 1.0e21) {
+      sw = sw + wt;
+      sd = sd + wt * dd;
+    }
+  }
+  if (!(sw > 0.0)) {
+    return 0.0f;
+  }
+  return SHLIGHT_FLOAT(sd / sw);
+}
+
+/* shl_hvl_radius_fov: seed 000 eq. 24-26, r2 = d (g + g^3 / 3), g = sqrt(2) fov / sqrt(m),
+   the Taylor form of d tan(g) (fov: the RSM's field of view in radians, m the number of
+   HVLs, d the HVL's distance to the light). Within 1 % absolute of tan for g <= 0.5786, i.e.
+   fov / sqrt(m) <= 0.41 (erratum E9; the seed's 0.2 is wrong). m < 1: 1. d or fov NaN or
+   < 0: 0. Cost: 1 sqrt, 6 flops. */
+SHLIGHT_INLINE float shl_hvl_radius_fov(float d, float fov, int m) {
+  shli_real dd = SHLIGHT_REAL(d);
+  shli_real f = SHLIGHT_REAL(fov);
+  shli_real g;
+  if (m < 1) {
+    m = 1;
+  }
+  if (!(dd >= 0.0) || !(f >= 0.0)) {
+    return 0.0f;
+  }
+  g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(m)));
+  return SHLIGHT_FLOAT(dd * (g + g * g * g / 3.0));
+}
+
+/* shl_hvl_radius_fov_tan: eq. 25 itself, r2 = d tan(g), g as shl_hvl_radius_fov, with the own
+   sine (no GLSL tan); g clamped to [0, 1.5707] (tan <= 1.3e4). Same degenerate inputs.
+   Cost: 1 sqrt, 2 short polynomials. */
+SHLIGHT_INLINE float shl_hvl_radius_fov_tan(float d, float fov, int m) {
+  shli_real dd = SHLIGHT_REAL(d);
+  shli_real f = SHLIGHT_REAL(fov);
+  shli_real g;
+  if (m < 1) {
+    m = 1;
+  }
+  if (!(dd >= 0.0) || !(f >= 0.0)) {
+    return 0.0f;
+  }
+  g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(m)));
+  if (g > 1.5707) {
+    g = 1.5707;
+  }
+  /* tan g = sin(pi t) / sin(pi (1/2 - t)), t = g / pi in [0, 1/2] */
+  g = g * 0.3183098861837907;
+  return SHLIGHT_FLOAT(dd * shli_sinpi(g) / shli_sinpi(0.5 - g));
 }
 
 /* >>brdftab ---------------------------------------------------------------------------------

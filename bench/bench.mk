@@ -63,6 +63,18 @@ bench-edge: build/bench/bench_edge
 
 bench: bench-edge
 .PHONY: bench-edge
+
+build/bench/bench_brdf: bench/bench_brdf.c shlight.h
+	@mkdir -p build/bench
+	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_brdf.c -lm
+
+bench-brdf: build/bench/bench_brdf
+	@mkdir -p bench/out
+	build/bench/bench_brdf
+
+bench: bench-brdf
+.PHONY: bench-brdf
+
 build/bench/bench_brdftab: bench/bench_brdftab.c shlight.h tests/ref/shref.h
 	@mkdir -p build/bench
 	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_brdftab.c $(BENCH_LDLIBS)

@@ -56,6 +56,7 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/tests/test_light build/tests/native/test_light build/tests/selftest_lightref \
   build/tests/test_grid build/tests/native/test_grid build/tests/test_grid_glsl \
   build/tests/test_edge build/tests/selftest_arearef build/tests/test_edge_glsl \
+  build/tests/test_brdf build/tests/native/test_brdf build/tests/test_brdf_glsl \
   build/tests/test_brdftab build/tests/fuzz_replay_brdftab build/tests/test_brdftab_glsl
 step test_basis build/tests/test_basis
 # the same tests on this machine's SIMD paths (AVX-512 / AVX2 kernels) with FMA contraction
@@ -67,6 +68,8 @@ step test_grid build/tests/test_grid
 step test_grid-march-native build/tests/native/test_grid
 step test_edge build/tests/test_edge
 step arearef-selftest build/tests/selftest_arearef
+step test_brdf build/tests/test_brdf
+step test_brdf-march-native build/tests/native/test_brdf
 step test_glm build/tests/test_glm
 step fuzz-corpus-replay build/tests/fuzz_replay tests/corpus/basis
 step test_brdftab build/tests/test_brdftab
@@ -82,17 +85,19 @@ for b in $backends; do
   step "glsl-vs-c-$b" env SHLIGHT_GL_BACKEND=$b $sub build/tests/test_glsl
   step "glsl-grid-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_grid_glsl
   step "glsl-edge-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_edge_glsl
+  step "glsl-brdf-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_brdf_glsl
   step "glsl-brdftab-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_brdftab_glsl
 done
 if [ "${SHLIGHT_TEST_QUICK:-0}" != 1 ]; then
   # build every sanitizer binary at once on both cores, then run them
   step asan-ubsan-build $MAKE -s -j2 build/tests/asan/test_basis build/tests/asan/test_glm \
-    build/tests/asan/fuzz_replay build/tests/asan/test_light build/tests/asan/test_grid build/tests/asan/test_edge \
+    build/tests/asan/fuzz_replay build/tests/asan/test_light build/tests/asan/test_grid build/tests/asan/test_edge build/tests/asan/test_brdf \
     build/tests/asan/test_gl_smoke build/tests/asan/test_brdftab build/tests/asan/fuzz_replay_brdftab
   step asan-ubsan $MAKE -s test-asan
   step asan-ubsan-light build/tests/asan/test_light
   step asan-ubsan-grid build/tests/asan/test_grid
   step asan-ubsan-edge env SHLIGHT_TEST_QUICK=1 build/tests/asan/test_edge
+  step asan-ubsan-brdf build/tests/asan/test_brdf
   step asan-ubsan-brdftab build/tests/asan/test_brdftab
   step asan-ubsan-fuzz-replay-brdftab build/tests/asan/fuzz_replay_brdftab tests/corpus/brdftab
   step asan-ubsan-gl $MAKE -s gl-test-asan

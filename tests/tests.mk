@@ -137,6 +137,18 @@ $(TESTS_BUILD)/asan/test_edge: $(TESTS_EDGE_DEPS)
 $(TESTS_BUILD)/selftest_arearef: tests/selftest_arearef.c tests/ref/arearef.h
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g -o $@ tests/selftest_arearef.c -lm
+
+# >>brdf / >>hvl: lobes, convolution, irradiance, windows, horizon fraction against quadrature
+$(TESTS_BUILD)/test_brdf: tests/test_brdf.c tests/tl.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) -o $@ tests/test_brdf.c $(TESTS_QUADLIBS)
+$(TESTS_BUILD)/native/test_brdf: tests/test_brdf.c tests/tl.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) -march=native -ffp-contract=fast -o $@ tests/test_brdf.c $(TESTS_QUADLIBS)
+$(TESTS_BUILD)/asan/test_brdf: tests/test_brdf.c tests/tl.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) $(TESTS_ASAN) -o $@ tests/test_brdf.c $(TESTS_QUADLIBS)
+
 # >>brdftab: BRDF SH tables against closed forms and quadrature, the SHLT / MERL loaders and
 # their error paths (tests/test_brdftab.c); the loaders' fuzz corpus replayed (fuzz_brdftab.c)
 TESTS_BRDFTAB_FLAGS := -Wno-conversion -Wno-double-promotion

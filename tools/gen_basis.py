@@ -571,6 +571,8 @@ import re
 ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
                'out_dzh': 'SHLIGHT_MAX_BANDS', 'g': '8', 'out_g': '8', 'out_nt': '3',
                'c8': '8 * SHLIGHT_MAX_COEFFS', 'g8': '8 * SHLIGHT_MAX_COEFFS',
+               'io_zh': 'SHLIGHT_MAX_BANDS', 'zh_a': 'SHLIGHT_MAX_BANDS', 'zh_b': 'SHLIGHT_MAX_BANDS',
+               'zh3': '3', 'fzh': 'SHLIGHT_MAX_BANDS', 'pn': '8', 'dn': '8',
                'v': 'SHLIGHT_POLYGON_MAX', 'io_px': 'SHLIGHT_CLIP_MAX', 'io_py': 'SHLIGHT_CLIP_MAX',
                'io_pz': 'SHLIGHT_CLIP_MAX', 'out_rp': '3', 'out_np': '1',
                'out_idx': '4', 'out_w': '4', 'tab': 'SHLIGHT_BRDF_TABLE_FLOATS'}
@@ -721,6 +723,10 @@ def main():
                       ('grid', ['shl_prelude.glsl', 'shl_basis.glsl']),
                       ('edge', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl', 'shl_zonal.glsl',
                                 'shl_light.glsl']),
+                      ('brdf', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
+                                'shl_zonal.glsl', 'shl_light.glsl']),
+                      ('hvl', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
+                               'shl_zonal.glsl', 'shl_light.glsl', 'shl_brdf.glsl']),
                       ('brdftab', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
                                    'shl_zonal.glsl', 'shl_light.glsl'])):
         gp = os.path.join(ROOT, 'shlight_glsl', 'shl_%s.glsl' % sec)
