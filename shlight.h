@@ -26581,31 +26581,21 @@ SHLIGHT_INLINE shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az
   return w * shli_edge_fit(pa, pb, SHLIGHT_SQRTR(c2), nf, method);
 }
 
-/* Moment (e+1)-normalised pieces of one polygon already in the arrays (shading point at the
-   origin), clipped to u.r >= 0; returns M^e. e integer for the Arvo-form methods. */
-SHLIGHT_INLINE shli_real shli_polygon_moment_r(shli_real *io_px, shli_real *io_py, shli_real *io_pz,
-                                               int nv, shli_real rx, shli_real ry, shli_real rz,
-                                               shli_real e, int method) {
-  shli_real ax;
-  shli_real ay;
-  shli_real az;
-  shli_real bx;
-  shli_real by;
-  shli_real bz;
-  shli_real l;
-  shli_real orient = 0.0;
-  shli_real omega = 0.0;
-  shli_real sum = 0.0;
+/* The shared start of every polygon sum: the orientation of the (unclipped, planar) polygon
+   as seen from the shading point, sign of (vector area) . (a vertex); the clip to u.r >= 0;
+   the clipped vertices normalised in place. Returns +-(clipped vertex count), the sign the
+   orientation's, or 0 when nothing usable is left (< 3 vertices, zero area, a vertex at the
+   shading point). */
+SHLIGHT_INLINE int shli_poly_clip_unit(shli_real *io_px, shli_real *io_py, shli_real *io_pz, int nv,
+                                       shli_real rx, shli_real ry, shli_real rz) {
   shli_real ox = 0.0;
   shli_real oy = 0.0;
   shli_real oz = 0.0;
-  shli_real cx;
-  shli_real cy;
-  shli_real cz;
+  shli_real orient;
+  shli_real l;
   int nc;
   int i;
   int j;
-  /* orientation from the unclipped polygon: sign of (vector area) . (centroid) */
   for (i = 0; i < nv; ++i) {
     j = i + 1;
     if (j == nv) {
@@ -26618,16 +26608,49 @@ SHLIGHT_INLINE shli_real shli_polygon_moment_r(shli_real *io_px, shli_real *io_p
   orient = ox * io_px[0] + oy * io_py[0] + oz * io_pz[0];
   nc = shli_poly_clip(io_px, io_py, io_pz, nv, rx, ry, rz);
   if (nc < 3 || !(orient != 0.0)) {
-    return 0.0;
+    return 0;
   }
   for (i = 0; i < nc; ++i) {
     l = SHLIGHT_SQRTR(io_px[i] * io_px[i] + io_py[i] * io_py[i] + io_pz[i] * io_pz[i]);
     if (!(l > 0.0)) {
-      return 0.0;
+      return 0;
     }
     io_px[i] = io_px[i] / l;
     io_py[i] = io_py[i] / l;
     io_pz[i] = io_pz[i] / l;
+  }
+  if (orient < 0.0) {
+    return -nc;
+  }
+  return nc;
+}
+
+/* Moment (e+1)-normalised pieces of one polygon already in the arrays (shading point at the
+   origin), clipped to u.r >= 0; returns M^e. e integer for the Arvo-form methods. */
+SHLIGHT_INLINE shli_real shli_polygon_moment_r(shli_real *io_px, shli_real *io_py, shli_real *io_pz,
+                                               int nv, shli_real rx, shli_real ry, shli_real rz,
+                                               shli_real e, int method) {
+  shli_real ax;
+  shli_real ay;
+  shli_real az;
+  shli_real bx;
+  shli_real by;
+  shli_real bz;
+  shli_real omega = 0.0;
+  shli_real sum = 0.0;
+  shli_real cx;
+  shli_real cy;
+  shli_real cz;
+  int nc = shli_poly_clip_unit(io_px, io_py, io_pz, nv, rx, ry, rz);
+  int sg = 1;
+  int i;
+  int j;
+  if (nc == 0) {
+    return 0.0;
+  }
+  if (nc < 0) {
+    nc = -nc;
+    sg = -1;
   }
   for (i = 0; i < nc; ++i) {
     j = i + 1;
@@ -26656,7 +26679,7 @@ SHLIGHT_INLINE shli_real shli_polygon_moment_r(shli_real *io_px, shli_real *io_p
       SHLIGHT_FTOI(e + 0.5) - 2 * (SHLIGHT_FTOI(e + 0.5) / 2) == 0) {
     sum = sum + omega;
   }
-  if (orient < 0.0) {
+  if (sg < 0) {
     sum = -sum;
   }
   return SHLIGHT_MAXR(sum, 0.0) / (e + 1.0);
@@ -27088,10 +27111,6 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
   shli_real rz = SHLIGHT_REAL(axis[2]);
   shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
   shli_real a2 = SHLIGHT_REAL(alpha);
-  shli_real ox = 0.0;
-  shli_real oy = 0.0;
-  shli_real oz = 0.0;
-  shli_real orient;
   shli_real sum = 0.0;
   shli_real nx;
   shli_real ny;
@@ -27104,6 +27123,7 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
   int i;
   int j;
   int nc;
+  int sg = 1;
   if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) || !(a2 == a2)) {
     return 0.0f;
   }
@@ -27120,28 +27140,13 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
       return 0.0f;
     }
   }
-  for (i = 0; i < nv; ++i) {
-    j = i + 1;
-    if (j == nv) {
-      j = 0;
-    }
-    ox = ox + py[i] * pz[j] - pz[i] * py[j];
-    oy = oy + pz[i] * px[j] - px[i] * pz[j];
-    oz = oz + px[i] * py[j] - py[i] * px[j];
-  }
-  orient = ox * px[0] + oy * py[0] + oz * pz[0];
-  nc = shli_poly_clip(px, py, pz, nv, rx, ry, rz);
-  if (nc < 3 || !(orient != 0.0)) {
+  nc = shli_poly_clip_unit(px, py, pz, nv, rx, ry, rz);
+  if (nc == 0) {
     return 0.0f;
   }
-  for (i = 0; i < nc; ++i) {
-    l = SHLIGHT_SQRTR(px[i] * px[i] + py[i] * py[i] + pz[i] * pz[i]);
-    if (!(l > 0.0)) {
-      return 0.0f;
-    }
-    px[i] = px[i] / l;
-    py[i] = py[i] / l;
-    pz[i] = pz[i] / l;
+  if (nc < 0) {
+    nc = -nc;
+    sg = -1;
   }
   for (i = 0; i < nc; ++i) {
     j = i + 1;
@@ -27166,7 +27171,7 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
       sum = sum + t;
     }
   }
-  if (orient < 0.0) {
+  if (sg < 0) {
     sum = -sum;
   }
   return SHLIGHT_FLOAT(SHLIGHT_MAXR(sum, 0.0) * 0.15915494309189534);

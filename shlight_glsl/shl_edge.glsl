@@ -413,30 +413,18 @@ shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx,
   return w * shli_edge_fit(pa, pb, SHLIGHT_SQRTR(c2), nf, method);
 }
 
-shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
-                                inout shli_real io_py[SHLIGHT_CLIP_MAX],
-                                inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real rx,
-                                shli_real ry, shli_real rz, shli_real e, int method) {
-  shli_real ax;
-  shli_real ay;
-  shli_real az;
-  shli_real bx;
-  shli_real by;
-  shli_real bz;
-  shli_real l;
-  shli_real orient = 0.0;
-  shli_real omega = 0.0;
-  shli_real sum = 0.0;
+int shli_poly_clip_unit(inout shli_real io_px[SHLIGHT_CLIP_MAX],
+                        inout shli_real io_py[SHLIGHT_CLIP_MAX],
+                        inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real rx, shli_real ry,
+                        shli_real rz) {
   shli_real ox = 0.0;
   shli_real oy = 0.0;
   shli_real oz = 0.0;
-  shli_real cx;
-  shli_real cy;
-  shli_real cz;
+  shli_real orient;
+  shli_real l;
   int nc;
   int i;
   int j;
-  /* orientation from the unclipped polygon: sign of (vector area) . (centroid) */
   for (i = 0; i < nv; ++i) {
     j = i + 1;
     if (j == nv) {
@@ -449,16 +437,48 @@ shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
   orient = ox * io_px[0] + oy * io_py[0] + oz * io_pz[0];
   nc = shli_poly_clip(io_px, io_py, io_pz, nv, rx, ry, rz);
   if (nc < 3 || !(orient != 0.0)) {
-    return 0.0;
+    return 0;
   }
   for (i = 0; i < nc; ++i) {
     l = SHLIGHT_SQRTR(io_px[i] * io_px[i] + io_py[i] * io_py[i] + io_pz[i] * io_pz[i]);
     if (!(l > 0.0)) {
-      return 0.0;
+      return 0;
     }
     io_px[i] = io_px[i] / l;
     io_py[i] = io_py[i] / l;
     io_pz[i] = io_pz[i] / l;
+  }
+  if (orient < 0.0) {
+    return -nc;
+  }
+  return nc;
+}
+
+shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
+                                inout shli_real io_py[SHLIGHT_CLIP_MAX],
+                                inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real rx,
+                                shli_real ry, shli_real rz, shli_real e, int method) {
+  shli_real ax;
+  shli_real ay;
+  shli_real az;
+  shli_real bx;
+  shli_real by;
+  shli_real bz;
+  shli_real omega = 0.0;
+  shli_real sum = 0.0;
+  shli_real cx;
+  shli_real cy;
+  shli_real cz;
+  int nc = shli_poly_clip_unit(io_px, io_py, io_pz, nv, rx, ry, rz);
+  int sg = 1;
+  int i;
+  int j;
+  if (nc == 0) {
+    return 0.0;
+  }
+  if (nc < 0) {
+    nc = -nc;
+    sg = -1;
   }
   for (i = 0; i < nc; ++i) {
     j = i + 1;
@@ -487,7 +507,7 @@ shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
       SHLIGHT_FTOI(e + 0.5) - 2 * (SHLIGHT_FTOI(e + 0.5) / 2) == 0) {
     sum = sum + omega;
   }
-  if (orient < 0.0) {
+  if (sg < 0) {
     sum = -sum;
   }
   return SHLIGHT_MAXR(sum, 0.0) / (e + 1.0);
@@ -841,10 +861,6 @@ float shl_polygon_ggx_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float 
   shli_real rz = SHLIGHT_REAL(axis[2]);
   shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
   shli_real a2 = SHLIGHT_REAL(alpha);
-  shli_real ox = 0.0;
-  shli_real oy = 0.0;
-  shli_real oz = 0.0;
-  shli_real orient;
   shli_real sum = 0.0;
   shli_real nx;
   shli_real ny;
@@ -857,6 +873,7 @@ float shl_polygon_ggx_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float 
   int i;
   int j;
   int nc;
+  int sg = 1;
   if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) || !(a2 == a2)) {
     return 0.0f;
   }
@@ -873,28 +890,13 @@ float shl_polygon_ggx_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float 
       return 0.0f;
     }
   }
-  for (i = 0; i < nv; ++i) {
-    j = i + 1;
-    if (j == nv) {
-      j = 0;
-    }
-    ox = ox + py[i] * pz[j] - pz[i] * py[j];
-    oy = oy + pz[i] * px[j] - px[i] * pz[j];
-    oz = oz + px[i] * py[j] - py[i] * px[j];
-  }
-  orient = ox * px[0] + oy * py[0] + oz * pz[0];
-  nc = shli_poly_clip(px, py, pz, nv, rx, ry, rz);
-  if (nc < 3 || !(orient != 0.0)) {
+  nc = shli_poly_clip_unit(px, py, pz, nv, rx, ry, rz);
+  if (nc == 0) {
     return 0.0f;
   }
-  for (i = 0; i < nc; ++i) {
-    l = SHLIGHT_SQRTR(px[i] * px[i] + py[i] * py[i] + pz[i] * pz[i]);
-    if (!(l > 0.0)) {
-      return 0.0f;
-    }
-    px[i] = px[i] / l;
-    py[i] = py[i] / l;
-    pz[i] = pz[i] / l;
+  if (nc < 0) {
+    nc = -nc;
+    sg = -1;
   }
   for (i = 0; i < nc; ++i) {
     j = i + 1;
@@ -919,7 +921,7 @@ float shl_polygon_ggx_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float 
       sum = sum + t;
     }
   }
-  if (orient < 0.0) {
+  if (sg < 0) {
     sum = -sum;
   }
   return SHLIGHT_FLOAT(SHLIGHT_MAXR(sum, 0.0) * 0.15915494309189534);
