@@ -26177,46 +26177,10 @@ SHLIGHT_INLINE shli_real shli_edge_isum(shli_real x, int nf) {
   return f * (shli_expm1r(0.5 * SHLIGHT_ITOR(m) * l) / shli_expm1r(l));
 }
 
-/* F over [pa, pb] inside [-pi/2, pi/2] (pb - pa = Phi, pa = -delta), c in [0, 1], order nf >= 0,
-   by the exact recurrence T_k = (x_B^(k-1) y_B - x_A^(k-1) y_A) / k + c^2 (k-1)/k T_(k-2),
-   T_0 = Phi, T_1 = y_B - y_A (x = c cos, y = c sin). Powers below 1.0e-30 are flushed to 0 so
-   large nf never runs on subnormals. Cost O(nf). */
-SHLIGHT_INLINE shli_real shli_edge_exact(shli_real pa, shli_real pb, shli_real c, int nf) {
-  shli_real xa = c * SHLIGHT_COSR(pa);
-  shli_real ya = c * SHLIGHT_SINR(pa);
-  shli_real xb = c * SHLIGHT_COSR(pb);
-  shli_real yb = c * SHLIGHT_SINR(pb);
-  shli_real c2 = c * c;
-  shli_real t = pb - pa;
-  shli_real pwa = xa;
-  shli_real pwb = xb;
-  shli_real sum;
-  int k = 2;
-  if (nf - 2 * (nf / 2) == 1) {
-    t = yb - ya;
-    pwa = xa * xa;
-    pwb = xb * xb;
-    k = 3;
-  }
-  sum = t;
-  while (k <= nf) {
-    t = (pwb * yb - pwa * ya) / SHLIGHT_ITOR(k) + c2 * (SHLIGHT_ITOR(k - 1) / SHLIGHT_ITOR(k)) * t;
-    sum = sum + t;
-    pwa = pwa * xa * xa;
-    pwb = pwb * xb * xb;
-    if (SHLIGHT_ABSR(pwa) < 1.0e-30) {
-      pwa = 0.0;
-    }
-    if (SHLIGHT_ABSR(pwb) < 1.0e-30) {
-      pwb = 0.0;
-    }
-    k = k + 2;
-  }
-  return sum;
-}
-
-/* The same recurrence from the arc's end points in the edge plane (x = u.r, y = u.(n x r)) and
-   its length phi: no angle placement, so it stays exact when c is tiny. */
+/* F by the exact recurrence T_k = (x_B^(k-1) y_B - x_A^(k-1) y_A) / k + c^2 (k-1)/k T_(k-2),
+   T_0 = phi, T_1 = y_B - y_A, from the arc's end points in the edge plane (x = u.r = c cos,
+   y = u.(n x r) = c sin) and its length phi: no angle placement, so it stays exact when c is
+   tiny. Powers below 1e-30 are flushed to 0 so large nf never runs on subnormals. Cost O(nf). */
 SHLIGHT_INLINE shli_real shli_edge_exact_xy(shli_real xa, shli_real ya, shli_real xb, shli_real yb,
                                             shli_real c2, shli_real phi, int nf) {
   shli_real t = phi;
@@ -26245,6 +26209,13 @@ SHLIGHT_INLINE shli_real shli_edge_exact_xy(shli_real xa, shli_real ya, shli_rea
     k = k + 2;
   }
   return sum;
+}
+
+/* F over [pa, pb] inside [-pi/2, pi/2] (pb - pa = Phi, pa = -delta), c in [0, 1], order nf >= 0:
+   the recurrence above at the arc's end points. */
+SHLIGHT_INLINE shli_real shli_edge_exact(shli_real pa, shli_real pb, shli_real c, int nf) {
+  return shli_edge_exact_xy(c * SHLIGHT_COSR(pa), c * SHLIGHT_SINR(pa), c * SHLIGHT_COSR(pb),
+                            c * SHLIGHT_SINR(pb), c * c, pb - pa, nf);
 }
 
 /* The paper's O(1) fits of F over [pa, pb] inside [-pi/2, pi/2], nf >= 3, c in (1.0e-3, 1]:

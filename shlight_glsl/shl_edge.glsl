@@ -42,40 +42,6 @@ shli_real shli_edge_isum(shli_real x, int nf) {
   return f * (shli_expm1r(0.5 * SHLIGHT_ITOR(m) * l) / shli_expm1r(l));
 }
 
-shli_real shli_edge_exact(shli_real pa, shli_real pb, shli_real c, int nf) {
-  shli_real xa = c * SHLIGHT_COSR(pa);
-  shli_real ya = c * SHLIGHT_SINR(pa);
-  shli_real xb = c * SHLIGHT_COSR(pb);
-  shli_real yb = c * SHLIGHT_SINR(pb);
-  shli_real c2 = c * c;
-  shli_real t = pb - pa;
-  shli_real pwa = xa;
-  shli_real pwb = xb;
-  shli_real sum;
-  int k = 2;
-  if (nf - 2 * (nf / 2) == 1) {
-    t = yb - ya;
-    pwa = xa * xa;
-    pwb = xb * xb;
-    k = 3;
-  }
-  sum = t;
-  while (k <= nf) {
-    t = (pwb * yb - pwa * ya) / SHLIGHT_ITOR(k) + c2 * (SHLIGHT_ITOR(k - 1) / SHLIGHT_ITOR(k)) * t;
-    sum = sum + t;
-    pwa = pwa * xa * xa;
-    pwb = pwb * xb * xb;
-    if (SHLIGHT_ABSR(pwa) < 1.0e-30) {
-      pwa = 0.0;
-    }
-    if (SHLIGHT_ABSR(pwb) < 1.0e-30) {
-      pwb = 0.0;
-    }
-    k = k + 2;
-  }
-  return sum;
-}
-
 shli_real shli_edge_exact_xy(shli_real xa, shli_real ya, shli_real xb, shli_real yb, shli_real c2,
                              shli_real phi, int nf) {
   shli_real t = phi;
@@ -104,6 +70,11 @@ shli_real shli_edge_exact_xy(shli_real xa, shli_real ya, shli_real xb, shli_real
     k = k + 2;
   }
   return sum;
+}
+
+shli_real shli_edge_exact(shli_real pa, shli_real pb, shli_real c, int nf) {
+  return shli_edge_exact_xy(c * SHLIGHT_COSR(pa), c * SHLIGHT_SINR(pa), c * SHLIGHT_COSR(pb),
+                            c * SHLIGHT_SINR(pb), c * c, pb - pa, nf);
 }
 
 shli_real shli_edge_fit(shli_real pa, shli_real pb, shli_real c, int nf, int method) {
