@@ -27898,6 +27898,25 @@ SHLIGHT_INLINE float shl_hvl_radiance(int n, const float *femit, float power, co
   return power * shli_hvl_emission_xyz(n, femit, g[0], g[1], g[2]) * gj;
 }
 
+/* The cap of HVL j (centre y, radius r) seen from x, shared by the contribution kernels:
+   out_g the cap frame of shli_cap_frame (axis w_j = out_g[0..2]), out_zh its ZH (n >= 1 bands,
+   shl_zh_cap). Returns 0 (nothing written to out_zh) when the cap is empty: r <= 0, NaN or
+   infinite input. */
+SHLIGHT_INLINE int shli_hvl_cap(int n, const float x[3], const float y[3], float r, float *out_zh,
+                                shli_real *out_g) {
+  shli_real dd = 0.0;
+  shli_cap_frame(SHLIGHT_REAL(y[0]) - SHLIGHT_REAL(x[0]), SHLIGHT_REAL(y[1]) - SHLIGHT_REAL(x[1]),
+                 SHLIGHT_REAL(y[2]) - SHLIGHT_REAL(x[2]), SHLIGHT_REAL(r), out_g);
+  if (!(out_g[6] > 0.0)) {
+    return 0;
+  }
+  if (out_g[3] > 0.0) {
+    dd = 1.0 / out_g[3];
+  }
+  shl_zh_cap(n, r, SHLIGHT_FLOAT(dd), out_zh);
+  return 1;
+}
+
 /* shl_hvl_contribution: seed 000 eq. 19, lj (L . F): the light that HVL j (centre y, radius
    r, radiance lj from shl_hvl_radiance) reflects at x through a lobe F given by its SH fsh
    (n^2 floats, world axes; e.g. the BRDF with the cosine for the outgoing direction),
@@ -27907,21 +27926,10 @@ SHLIGHT_INLINE float shl_hvl_contribution(int n, float lj, const float *fsh, con
                                           const float y[3], float r) {
   float zh[SHLIGHT_MAX_BANDS];
   shli_real g[8];
-  shli_real dd;
   n = shli_bands(n);
-  if (n < 1) {
+  if (n < 1 || shli_hvl_cap(n, x, y, r, zh, g) == 0) {
     return 0.0f;
   }
-  shli_cap_frame(SHLIGHT_REAL(y[0]) - SHLIGHT_REAL(x[0]), SHLIGHT_REAL(y[1]) - SHLIGHT_REAL(x[1]),
-                 SHLIGHT_REAL(y[2]) - SHLIGHT_REAL(x[2]), SHLIGHT_REAL(r), g);
-  if (!(g[6] > 0.0)) {
-    return 0.0f;
-  }
-  dd = 0.0;
-  if (g[3] > 0.0) {
-    dd = 1.0 / g[3];
-  }
-  shl_zh_cap(n, r, SHLIGHT_FLOAT(dd), zh);
   return lj * shli_sh_conv_zh_xyz(n, fsh, zh, g[0], g[1], g[2]);
 }
 
@@ -27934,23 +27942,12 @@ SHLIGHT_INLINE float shl_hvl_contribution_zh(int n, float lj, const float *fzh,
                                              const float y[3], float r) {
   float zh[SHLIGHT_MAX_BANDS];
   shli_real g[8];
-  shli_real dd;
   shli_real ga[8];
   shli_real c;
   n = shli_bands(n);
-  if (n < 1) {
+  if (n < 1 || shli_hvl_cap(n, x, y, r, zh, g) == 0) {
     return 0.0f;
   }
-  shli_cap_frame(SHLIGHT_REAL(y[0]) - SHLIGHT_REAL(x[0]), SHLIGHT_REAL(y[1]) - SHLIGHT_REAL(x[1]),
-                 SHLIGHT_REAL(y[2]) - SHLIGHT_REAL(x[2]), SHLIGHT_REAL(r), g);
-  if (!(g[6] > 0.0)) {
-    return 0.0f;
-  }
-  dd = 0.0;
-  if (g[3] > 0.0) {
-    dd = 1.0 / g[3];
-  }
-  shl_zh_cap(n, r, SHLIGHT_FLOAT(dd), zh);
   shli_cap_frame(SHLIGHT_REAL(faxis[0]), SHLIGHT_REAL(faxis[1]), SHLIGHT_REAL(faxis[2]), 1.0, ga);
   c = g[0] * ga[0] + g[1] * ga[1] + g[2] * ga[2];
   if (c > 1.0) {

@@ -177,25 +177,29 @@ float shl_hvl_radiance(int n, float femit[SHLIGHT_MAX_COEFFS], float power, vec3
   return power * shli_hvl_emission_xyz(n, femit, g[0], g[1], g[2]) * gj;
 }
 
+int shli_hvl_cap(int n, vec3 x, vec3 y, float r, out float out_zh[SHLIGHT_MAX_BANDS],
+                 out shli_real out_g[8]) {
+  shli_real dd = 0.0;
+  shli_cap_frame(SHLIGHT_REAL(y[0]) - SHLIGHT_REAL(x[0]), SHLIGHT_REAL(y[1]) - SHLIGHT_REAL(x[1]),
+                 SHLIGHT_REAL(y[2]) - SHLIGHT_REAL(x[2]), SHLIGHT_REAL(r), out_g);
+  if (!(out_g[6] > 0.0)) {
+    return 0;
+  }
+  if (out_g[3] > 0.0) {
+    dd = 1.0 / out_g[3];
+  }
+  shl_zh_cap(n, r, SHLIGHT_FLOAT(dd), out_zh);
+  return 1;
+}
+
 float shl_hvl_contribution(int n, float lj, float fsh[SHLIGHT_MAX_COEFFS], vec3 x, vec3 y,
                            float r) {
   float zh[SHLIGHT_MAX_BANDS];
   shli_real g[8];
-  shli_real dd;
   n = shli_bands(n);
-  if (n < 1) {
+  if (n < 1 || shli_hvl_cap(n, x, y, r, zh, g) == 0) {
     return 0.0f;
   }
-  shli_cap_frame(SHLIGHT_REAL(y[0]) - SHLIGHT_REAL(x[0]), SHLIGHT_REAL(y[1]) - SHLIGHT_REAL(x[1]),
-                 SHLIGHT_REAL(y[2]) - SHLIGHT_REAL(x[2]), SHLIGHT_REAL(r), g);
-  if (!(g[6] > 0.0)) {
-    return 0.0f;
-  }
-  dd = 0.0;
-  if (g[3] > 0.0) {
-    dd = 1.0 / g[3];
-  }
-  shl_zh_cap(n, r, SHLIGHT_FLOAT(dd), zh);
   return lj * shli_sh_conv_zh_xyz(n, fsh, zh, g[0], g[1], g[2]);
 }
 
@@ -203,23 +207,12 @@ float shl_hvl_contribution_zh(int n, float lj, float fzh[SHLIGHT_MAX_BANDS], vec
                               vec3 y, float r) {
   float zh[SHLIGHT_MAX_BANDS];
   shli_real g[8];
-  shli_real dd;
   shli_real ga[8];
   shli_real c;
   n = shli_bands(n);
-  if (n < 1) {
+  if (n < 1 || shli_hvl_cap(n, x, y, r, zh, g) == 0) {
     return 0.0f;
   }
-  shli_cap_frame(SHLIGHT_REAL(y[0]) - SHLIGHT_REAL(x[0]), SHLIGHT_REAL(y[1]) - SHLIGHT_REAL(x[1]),
-                 SHLIGHT_REAL(y[2]) - SHLIGHT_REAL(x[2]), SHLIGHT_REAL(r), g);
-  if (!(g[6] > 0.0)) {
-    return 0.0f;
-  }
-  dd = 0.0;
-  if (g[3] > 0.0) {
-    dd = 1.0 / g[3];
-  }
-  shl_zh_cap(n, r, SHLIGHT_FLOAT(dd), zh);
   shli_cap_frame(SHLIGHT_REAL(faxis[0]), SHLIGHT_REAL(faxis[1]), SHLIGHT_REAL(faxis[2]), 1.0, ga);
   c = g[0] * ga[0] + g[1] * ga[1] + g[2] * ga[2];
   if (c > 1.0) {
