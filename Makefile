@@ -64,7 +64,7 @@ compile-matrix: tests/matrix_a.c tests/matrix_b.c shlight.h
 gen:
 	$(PYTHON) tools/gen_basis.py
 
-FORMAT_FILES := shlight.h examples/*.c tests/*.c tests/*.h tests/*.cpp tests/gl/*.c tests/gl/*.h bench/*.c
+FORMAT_FILES := shlight.h render/*.c render/*.h examples/*.c tests/*.c tests/*.h tests/*.cpp tests/gl/*.c tests/gl/*.h bench/*.c
 format:
 	clang-format -i $(wildcard $(FORMAT_FILES))
 format-check:
@@ -95,3 +95,18 @@ $(BUILD)/tests/test_brdftab_glsl: tests/test_brdftab_glsl.c shlight.h tests/tl.h
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
 	    -o $@ tests/test_brdftab_glsl.c $(GL_SRCS) $(GL_LIBS)
+
+# shlrender: the headless renderer (render/), on the tests' GL context (tests/gl/glctx.c)
+# (application code: double where it helps, so no -Wdouble-promotion)
+RENDER_SRCS := $(wildcard render/*.c)
+RENDER_OBJS := $(patsubst render/%.c,$(BUILD)/render/%.o,$(RENDER_SRCS))
+RENDER_WARN := $(filter-out -Wdouble-promotion,$(WARN))
+RENDER_CFLAGS := -std=c99 -O2 -g $(RENDER_WARN) $(GL_CFLAGS) -DRD_GLSL_DIR='"$(CURDIR)/shlight_glsl"'
+$(BUILD)/render/%.o: render/%.c render/rd.h shlight.h tests/gl/glctx.h
+	@mkdir -p $(@D)
+	$(CC) $(RENDER_CFLAGS) -c -o $@ $<
+$(BUILD)/render/glctx.o: tests/gl/glctx.c tests/gl/glctx.h
+	@mkdir -p $(@D)
+	$(CC) $(RENDER_CFLAGS) -c -o $@ $<
+$(BUILD)/render/shlrender: $(RENDER_OBJS) $(BUILD)/render/glctx.o
+	$(CC) -o $@ $^ $(GL_LIBS) -lpthread

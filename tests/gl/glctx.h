@@ -64,7 +64,10 @@
   X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                                               \
   X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                                     \
   X(PFNGLVIEWPORTPROC, Viewport)                                                                   \
-  X(PFNGLDRAWARRAYSPROC, DrawArrays)
+  X(PFNGLDRAWARRAYSPROC, DrawArrays)                                                               \
+  X(PFNGLFINISHPROC, Finish)                                                                       \
+  X(PFNGLUNIFORM2IPROC, Uniform2i)                                                                 \
+  X(PFNGLUNIFORM3FPROC, Uniform3f)
 
 #define GLCTX_MEMBER(type, name) type name;
 struct glctx_gl {

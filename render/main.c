@@ -1,0 +1,166 @@
+/* main.c - shlrender command line. See `shlrender --help`. Exit codes: 0 success, 1 a GL-vs-CPU
+ * check failed (--check), 2 bad usage or scene file, 3 no GL context (GL paths requested),
+ * 4 a pass failed. */
+#include "rd.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+static void usage(FILE *f) {
+  fprintf(f, "usage: shlrender [options]\n"
+             "  --scene NAME|FILE   built-in cornell (default), spheres, manylights, glossy; or a\n"
+             "                      scene file (text format: see README, render/rd_scene.c)\n"
+             "  --pass LIST         comma-separated: grid, area, hvl, ssf, all (default all);\n"
+             "                      preview (head-light G-buffer view)\n"
+             "  --size WxH          image size (default 256x192)\n"
+             "  --paths LIST        gl, cpu (default gl,cpu); gl alone skips the CPU path\n"
+             "  --backend NAME      osmesa (default) or egl; the GL context\n"
+             "  --gt N              ground truth: 0 none, 1 quick, 2 full (default 1)\n"
+             "  --bands N           SH bands of the SH passes (default: the scene's, 5)\n"
+             "  --reps N            timed repetitions (median reported; default 3)\n"
+             "  --out DIR           write PNGs to DIR (created; default: none)\n"
+             "  --exposure X        PNG exposure (default: per pass, from the reference)\n"
+             "  --check             exit 1 when a GL image differs from its CPU twin beyond the\n"
+             "                      pass's tolerance; prints \"N passed, N failed\"\n");
+}
+
+static int has(const char *list, const char *item) {
+  size_t n = strlen(item);
+  const char *p = list;
+  while ((p = strstr(p, item)) != NULL) {
+    if ((p == list || p[-1] == ',') && (p[n] == 0 || p[n] == ',')) return 1;
+    p += n;
+  }
+  return 0;
+}
+
+int main(int argc, char **argv) {
+  const char *scene = "cornell", *passes = "all", *paths = "gl,cpu", *backend = NULL,
+             *outdir = NULL;
+  int w = 256, h = 192, gt = 1, bands = 0, reps = 3, check = 0, i, rc = 0, fails, bad = 0;
+  float exposure = 0;
+  rd_scene s;
+  rd_gbuf gb;
+  rd_run run;
+  char err[512];
+  for (i = 1; i < argc; i++) {
+    const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+    if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+      usage(stdout);
+      return 0;
+    }
+    if (!strcmp(a, "--check")) {
+      check = 1;
+      continue;
+    }
+    if (!v) {
+      fprintf(stderr, "shlrender: %s needs a value\n", a);
+      usage(stderr);
+      return 2;
+    }
+    i++;
+    if (!strcmp(a, "--scene"))
+      scene = v;
+    else if (!strcmp(a, "--pass"))
+      passes = v;
+    else if (!strcmp(a, "--paths"))
+      paths = v;
+    else if (!strcmp(a, "--backend"))
+      backend = v;
+    else if (!strcmp(a, "--out"))
+      outdir = v;
+    else if (!strcmp(a, "--size"))
+      bad = sscanf(v, "%dx%d", &w, &h) != 2 || w < 8 || h < 8 || w > 8192 || h > 8192;
+    else if (!strcmp(a, "--gt"))
+      bad = sscanf(v, "%d", &gt) != 1 || gt < 0 || gt > 2;
+    else if (!strcmp(a, "--bands"))
+      bad = sscanf(v, "%d", &bands) != 1 || bands < 1 || bands > 16;
+    else if (!strcmp(a, "--reps"))
+      bad = sscanf(v, "%d", &reps) != 1 || reps < 1 || reps > 1000;
+    else if (!strcmp(a, "--exposure"))
+      bad = sscanf(v, "%f", &exposure) != 1 || !(exposure > 0);
+    else {
+      fprintf(stderr, "shlrender: unknown option %s\n", a);
+      usage(stderr);
+      return 2;
+    }
+    if (bad) {
+      fprintf(stderr, "shlrender: bad value for %s: '%s'\n", a, v);
+      return 2;
+    }
+  }
+  if (!has("grid,area,hvl,ssf,preview,all", passes) && strcmp(passes, "all")) {
+    /* every listed pass must be known */
+    char buf[256], *tk;
+    snprintf(buf, sizeof buf, "%s", passes);
+    for (tk = strtok(buf, ","); tk; tk = strtok(NULL, ","))
+      if (!has("grid,area,hvl,ssf,preview,all", tk)) {
+        fprintf(stderr, "shlrender: unknown pass '%s' (grid, area, hvl, ssf, preview, all)\n", tk);
+        return 2;
+      }
+  }
+  if (rd_scene_builtin(scene, &s) != 0) {
+    if (!strchr(scene, '.') && !strchr(scene, '/')) {
+      fprintf(stderr,
+              "shlrender: unknown scene '%s' (cornell, spheres, manylights, glossy, or "
+              "a file)\n",
+              scene);
+      return 2;
+    }
+    if (rd_scene_load(scene, &s, err, sizeof err) != 0) {
+      fprintf(stderr, "shlrender: %s\n", err);
+      return 2;
+    }
+  }
+  if (outdir) {
+    struct stat st;
+    if (stat(outdir, &st) != 0 && mkdir(outdir, 0777) != 0) {
+      fprintf(stderr, "shlrender: cannot create %s\n", outdir);
+      rd_scene_free(&s);
+      return 2;
+    }
+  }
+  memset(&run, 0, sizeof run);
+  run.scene = &s;
+  run.use_gl = has(paths, "gl");
+  run.use_cpu = has(paths, "cpu");
+  run.gt = gt;
+  run.bands = bands ? bands : s.bands;
+  run.reps = reps;
+  run.outdir = outdir;
+  run.exposure = exposure;
+  if (run.use_gl && rd_gl_open(backend) != 0) {
+    fprintf(stderr, "shlrender: no OpenGL 4.5 context (install Mesa: libosmesa6 or libegl1 + "
+                    "libgl1-mesa-dri), or run with --paths cpu\n");
+    rd_scene_free(&s);
+    return 3;
+  }
+  if (rd_gbuffer(&s, w, h, &gb) != 0) {
+    fprintf(stderr, "shlrender: out of memory for a %dx%d G-buffer\n", w, h);
+    rd_scene_free(&s);
+    return 4;
+  }
+  run.gb = &gb;
+  printf("shlrender: scene %s (%d triangles, %d spheres, %d lights), %dx%d, %d bands, gl: %s\n",
+         s.name, s.ntris, s.nspheres, s.nlights, w, h, run.bands,
+         run.use_gl ? rd_gl_renderer() : "off");
+  if (has(passes, "preview") && rd_pass_preview(&run)) rc = 4;
+  if ((has(passes, "grid") || has(passes, "all")) && rd_pass_grid(&run)) rc = 4;
+  if ((has(passes, "area") || has(passes, "all")) && rd_pass_area(&run)) rc = 4;
+  if ((has(passes, "hvl") || has(passes, "all")) && rd_pass_hvl(&run)) rc = 4;
+  if ((has(passes, "ssf") || has(passes, "all")) && rd_pass_ssf(&run)) rc = 4;
+  fails = rd_report(&run, 1);
+  if (check) {
+    /* one check per (pass, method) with both a GL and a CPU image; a failed pass is one more */
+    int total = rd_report_checks(&run);
+    printf("%d passed, %d failed\n", total - fails, fails + (rc == 4));
+    if (!rc && fails) rc = 1;
+  }
+  rd_run_free(&run);
+  rd_gbuf_free(&gb);
+  rd_scene_free(&s);
+  if (run.use_gl) rd_gl_close();
+  return rc;
+}
