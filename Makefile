@@ -40,25 +40,35 @@ $(BUILD)/tests/test_glsl: tests/test_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL
 
 # compile matrix: C99/C11/C++98/11/17/20, gcc and clang, SHLIGHT_STATIC, two TUs linked
 MATRIX_DIR := $(BUILD)/matrix
-compile-matrix: tests/matrix_a.c tests/matrix_b.c shlight.h
-	@mkdir -p $(MATRIX_DIR)
-	@set -e; for cc in gcc clang; do for std in c99 c11; do \
-	  $$cc -std=$$std -O1 $(WARN) -c tests/matrix_a.c -o $(MATRIX_DIR)/a_$$cc$$std.o; \
-	  $$cc -std=$$std -O1 $(WARN) -c tests/matrix_b.c -o $(MATRIX_DIR)/b_$$cc$$std.o; \
-	  $$cc -o $(MATRIX_DIR)/ab_$$cc$$std $(MATRIX_DIR)/a_$$cc$$std.o $(MATRIX_DIR)/b_$$cc$$std.o -lm; \
-	  $(MATRIX_DIR)/ab_$$cc$$std; \
-	  $$cc -std=$$std -O1 $(WARN) -DSHLIGHT_STATIC -DSHLIGHT_NO_SIMD -o $(MATRIX_DIR)/st_$$cc$$std tests/matrix_a.c -DMATRIX_ALONE -lm; \
-	  $(MATRIX_DIR)/st_$$cc$$std; \
-	done; done
-	@set -e; for cxx in g++ clang++; do for std in c++98 c++11 c++17 c++20; do \
-	  $$cxx -x c++ -std=$$std -O1 $(WARNXX) -c tests/matrix_a.c -o $(MATRIX_DIR)/a_$$std.o; \
-	  $$cxx -x c++ -std=$$std -O1 $(WARNXX) -c tests/matrix_b.c -o $(MATRIX_DIR)/b_$$std.o; \
-	  $$cxx -o $(MATRIX_DIR)/ab_$$std $(MATRIX_DIR)/a_$$std.o $(MATRIX_DIR)/b_$$std.o -lm; \
-	  $(MATRIX_DIR)/ab_$$std; \
-	done; done
-	@set -e; for arch in x86-64 x86-64-v3 native; do \
-	  gcc -std=c99 -O2 -march=$$arch $(WARN) -o $(MATRIX_DIR)/simd_$$arch tests/matrix_a.c -DMATRIX_ALONE -lm; \
-	  $(MATRIX_DIR)/simd_$$arch; done
+MATRIX_C := gcc-c99 gcc-c11 clang-c99 clang-c11
+MATRIX_CXX := g++-c++98 g++-c++11 g++-c++17 g++-c++20 clang++-c++98 clang++-c++11 clang++-c++17 \
+              clang++-c++20
+MATRIX_SIMD := x86-64 x86-64-v3 native
+MATRIX_DEPS := tests/matrix_a.c tests/matrix_b.c shlight.h
+# one target per configuration, so `make -j2 compile-matrix` uses both cores
+$(MATRIX_DIR)/c-%.ok: $(MATRIX_DEPS)
+	@mkdir -p $(@D)
+	@set -e; cc=$(word 1,$(subst -, ,$*)); std=$(word 2,$(subst -, ,$*)); o=$(MATRIX_DIR)/$*; \
+	  $$cc -std=$$std -O1 $(WARN) -c tests/matrix_a.c -o $$o-a.o; \
+	  $$cc -std=$$std -O1 $(WARN) -c tests/matrix_b.c -o $$o-b.o; \
+	  $$cc -o $$o-ab $$o-a.o $$o-b.o -lm; $$o-ab; \
+	  $$cc -std=$$std -O1 $(WARN) -DSHLIGHT_STATIC -DSHLIGHT_NO_SIMD -o $$o-st tests/matrix_a.c \
+	    -DMATRIX_ALONE -lm; $$o-st; touch $@
+$(MATRIX_DIR)/cxx-%.ok: $(MATRIX_DEPS)
+	@mkdir -p $(@D)
+	@set -e; cxx=$(word 1,$(subst -, ,$*)); std=$(word 2,$(subst -, ,$*)); o=$(MATRIX_DIR)/$*; \
+	  $$cxx -x c++ -std=$$std -O1 $(WARNXX) -c tests/matrix_a.c -o $$o-a.o; \
+	  $$cxx -x c++ -std=$$std -O1 $(WARNXX) -c tests/matrix_b.c -o $$o-b.o; \
+	  $$cxx -o $$o-ab $$o-a.o $$o-b.o -lm; $$o-ab; touch $@
+$(MATRIX_DIR)/simd-%.ok: $(MATRIX_DEPS)
+	@mkdir -p $(@D)
+	@set -e; gcc -std=c99 -O2 -march=$* $(WARN) -o $(MATRIX_DIR)/simd_$* tests/matrix_a.c \
+	  -DMATRIX_ALONE -lm; $(MATRIX_DIR)/simd_$*; touch $@
+MATRIX_OKS := $(MATRIX_C:%=$(MATRIX_DIR)/c-%.ok) $(MATRIX_CXX:%=$(MATRIX_DIR)/cxx-%.ok) \
+              $(MATRIX_SIMD:%=$(MATRIX_DIR)/simd-%.ok)
+compile-matrix:
+	@rm -f $(MATRIX_OKS)
+	@$(MAKE) --no-print-directory $(MATRIX_OKS)
 	@echo "compile matrix: 1 passed, 0 failed"
 
 gen:
