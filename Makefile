@@ -120,3 +120,27 @@ $(BUILD)/render/glctx.o: tests/gl/glctx.c tests/gl/glctx.h
 	$(CC) $(RENDER_CFLAGS) -c -o $@ $<
 $(BUILD)/render/shlrender: $(RENDER_OBJS) $(BUILD)/render/glctx.o
 	$(CC) -o $@ $^ $(GL_LIBS) -lpthread
+
+# the scene parser's fuzz target: replay (CI, plain and ASan/UBSan) and libFuzzer (make fuzz-scene)
+FUZZ_SCENE_DEPS := tests/fuzz_scene.c tests/fuzz_replay.c render/rd_scene.c render/rd.h
+$(BUILD)/tests/fuzz_replay_scene: $(FUZZ_SCENE_DEPS)
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O2 -g $(RENDER_WARN) -Wno-missing-prototypes -o $@ tests/fuzz_replay.c \
+	    tests/fuzz_scene.c render/rd_scene.c -lm
+$(BUILD)/tests/asan/fuzz_replay_scene: $(FUZZ_SCENE_DEPS)
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefined \
+	    -o $@ tests/fuzz_replay.c tests/fuzz_scene.c render/rd_scene.c -lm
+$(BUILD)/tests/fuzz_scene: tests/fuzz_scene.c render/rd_scene.c render/rd.h
+	@mkdir -p $(@D)
+	clang -std=c99 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
+	    -o $@ tests/fuzz_scene.c render/rd_scene.c -lm
+.PHONY: fuzz-scene
+fuzz-scene: $(BUILD)/tests/fuzz_scene
+	@mkdir -p $(BUILD)/fuzz/scene
+	nice $< -max_len=2048 -max_total_time=$(or $(FUZZ_SECONDS),60) $(BUILD)/fuzz/scene tests/corpus/scene
+
+$(BUILD)/tests/test_ssf_glsl: tests/test_ssf_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
+	    -o $@ tests/test_ssf_glsl.c $(GL_SRCS) $(GL_LIBS) -lm

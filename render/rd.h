@@ -85,8 +85,9 @@ typedef struct {
  * Returns 0, or -1 for an unknown name. */
 int rd_scene_builtin(const char *name, rd_scene *out);
 /* Parse the text format (see rd_scene.c and README) from a file / from memory. On error
- * returns -1 and writes "file:line: message" into err (errlen bytes). OBJ files named by the
- * scene are read relative to the scene file's folder. */
+ * returns -1, leaves *out empty (zeroed) and writes "file:line: message" into err (errlen
+ * bytes). OBJ files named by the scene are read relative to the scene file's folder (`dir`;
+ * "" the working directory; NULL refuses `obj` lines: for untrusted text, e.g. the fuzzer). */
 int rd_scene_load(const char *path, rd_scene *out, char *err, size_t errlen);
 int rd_scene_parse(const char *text, size_t len, const char *dir, const char *name, rd_scene *out,
                    char *err, size_t errlen);

@@ -304,7 +304,8 @@ static int parse_line(builder *b, toks *t, const char *dir, perr *e) {
       } else
         return fail(e, "unknown obj option '%s'", w);
     }
-    if (f[0] == '/' || !dir || !dir[0])
+    if (!dir) return fail(e, "obj: this scene text has no folder to read files from");
+    if (f[0] == '/' || !dir[0])
       snprintf(full, sizeof full, "%s", f);
     else
       snprintf(full, sizeof full, "%s/%s", dir, f);
@@ -359,11 +360,12 @@ static int parse_line(builder *b, toks *t, const char *dir, perr *e) {
     if (vec(t, e, "light colour", l.radiance) || nonneg3(e, "light colour", l.radiance, 1e12f) ||
         end_of_line(t, e))
       return -1;
-    if (l.type == RD_LIGHT_DISC || l.type == RD_LIGHT_SPOT) {
-      float len = sqrtf(rd_dot(l.n, l.n));
-      l.n[0] /= len;
-      l.n[1] /= len;
-      l.n[2] /= len;
+    if (l.type == RD_LIGHT_DISC || l.type == RD_LIGHT_SPOT) { /* in double: no overflow */
+      double len =
+          sqrt((double)l.n[0] * l.n[0] + (double)l.n[1] * l.n[1] + (double)l.n[2] * l.n[2]);
+      l.n[0] = (float)(l.n[0] / len);
+      l.n[1] = (float)(l.n[1] / len);
+      l.n[2] = (float)(l.n[2] / len);
     }
     return add_light(b, &l) ? fail(e, "too many lights") : 0;
   }

@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# tests/test_render.sh [backend] - shlrender in CI: command-line and scene-file errors (exit
+# codes, file:line messages), then every built-in scene and examples/scenes/room.scene through
+# every pass at 64x48 with --check (each GL image against its CPU twin, per pass tolerance)
+# and a quick ground truth. SHLIGHT_RENDER_SCENES overrides the scene list. Ends with
+# "N passed, N failed". Run from the repository root after `make build/render/shlrender`.
+set -u
+R=build/render/shlrender
+backend=${1:-osmesa}
+pass=0
+fail=0
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+ok() { pass=$((pass + 1)); }
+ko() { fail=$((fail + 1)); echo "FAIL $*"; }
+expect() { # expect CODE PATTERN ARGS... : exit code CODE and PATTERN in stderr
+  local code=$1 pat=$2
+  shift 2
+  "$R" "$@" >"$t/out" 2>"$t/err"
+  local rc=$?
+  if [ "$rc" -eq "$code" ] && grep -q -- "$pat" "$t/err"; then ok; else
+    ko "shlrender $* -> exit $rc (want $code, stderr matching '$pat'):"
+    head -3 "$t/err"
+  fi
+}
+expect 2 "unknown scene" --scene nosuch --paths cpu
+expect 2 "unknown option" --frobnicate 1
+expect 2 "bad value for --size" --size 3x2
+expect 2 "bad value for --bands" --bands 0
+expect 2 "unknown pass" --pass grid,nosuch
+expect 2 "cannot read" --scene "$t/missing.scene"
+printf 'material m kd 0.5 0.5 0.5\nsphere 0 0 0 1 mm\n' >"$t/bad1.scene"
+expect 2 "bad1.scene:2: unknown material 'mm'" --scene "$t/bad1.scene" --paths cpu
+printf 'material m kd 0.5 0.5 0.5\nsphere 0 0 0 -1 m\n' >"$t/bad2.scene"
+expect 2 "bad2.scene:2: sphere radius must be > 0" --scene "$t/bad2.scene" --paths cpu
+printf 'material m kd 0.5 0.5 0.5\nobj none.obj m\n' >"$t/bad3.scene"
+expect 2 "bad3.scene:2: cannot read obj file" --scene "$t/bad3.scene" --paths cpu
+printf 'v 0 0 0\nv 1 0 0\nf 1 2 3\n' >"$t/bad.obj"
+printf 'material m kd 0.5 0.5 0.5\nobj bad.obj m\n' >"$t/bad4.scene"
+expect 2 "bad.obj:3: bad vertex index" --scene "$t/bad4.scene" --paths cpu
+if "$R" --help | grep -q "usage: shlrender"; then ok; else ko "--help"; fi
+# a CPU-only render of the example scene writes PNGs
+if "$R" --scene examples/scenes/room.scene --pass preview --paths cpu --size 32x24 --out "$t/png" \
+  >/dev/null && [ -s "$t/png/room_preview_headlight_cpu.png" ]; then ok; else ko "cpu-only PNG"; fi
+# every pass, GL against CPU
+for s in ${SHLIGHT_RENDER_SCENES:-cornell spheres manylights glossy examples/scenes/room.scene}; do
+  SHLIGHT_GL_BACKEND=$backend "$R" --scene "$s" --size 64x48 --gt 1 --reps 1 --check \
+    >"$t/log" 2>&1
+  rc=$?
+  line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$t/log" | tail -1)
+  p=$(echo "$line" | sed -E 's/ passed.*//')
+  f=$(echo "$line" | sed -E 's/.* passed, ([0-9]+) failed/\1/')
+  grep -E '^(check|\|)' "$t/log"
+  if [ -z "$line" ] || [ "$rc" -ne 0 ]; then
+    ko "scene $s (exit $rc)"
+    tail -5 "$t/log"
+    [ -n "$line" ] && pass=$((pass + p)) && fail=$((fail + f))
+  else
+    pass=$((pass + p))
+    fail=$((fail + f))
+  fi
+done
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
