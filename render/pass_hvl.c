@@ -1,0 +1,971 @@
+/* pass_hvl.c - one-bounce indirect light from a spot light's reflective shadow map (RSM):
+ * virtual point lights (VPL) against Harmonics Virtual Lights (HVL, seed 000 sec. 3 and 5).
+ *
+ * What is rendered. The pass outputs the one-bounce indirect radiance only (no direct light,
+ * like seed 000's GI figures): at a camera pixel x with shading normal n_x and albedo kd(x),
+ *   L(x) = kd(x) / pi * E_ind(x),
+ * E_ind the irradiance from the surfaces that the scene's first spot light lights directly.
+ * Visibility: the light's visibility is the RSM's (the first hit from the light); there is no
+ * receiver-side visibility (neither between the virtual lights and x nor in the ground truth).
+ * One geometric gate, in every method and the ground truth alike: light passes from y to x
+ * only when each point lies strictly in front of the other's geometric plane (n_g(y) . (x - y)
+ * > eps and n_g(x) . (y - x) > eps, eps = 1e-5 scene diagonal). Without normal maps it changes
+ * nothing (the shading cosines are then 0 there too); with one (cornell's floor) it stops the
+ * tilted shading normals from sending light between points of the same plane, an unphysical
+ * transfer whose integral diverges (log) at the receiver and kept the ground truth from
+ * converging (max error 0.125 of peak between N = 256 and 512 without it, 0.005 with it).
+ * Non-Lambert materials contribute their diffuse part kd only (bounce and receiver).
+ *
+ * The light set (rsm_lights). The RSM is rd_gbuffer_view from the spot (eye c, axis n, fov_y =
+ * 2 * angle) of m = w x h texels (16 x 16 = 256 by default; SHLIGHT_HVL_RSM=N for N x N); the
+ * same set serves every method. Texel (i, j) covers the square [sx -+ p/2] x [sy -+ p/2] of
+ * the image plane at unit distance (sx, sy as rd_gbuffer_view, p = 2 tan(fov_y / 2) / h), of
+ * solid angle Omega = F(x1, y1) - F(x0, y1) - F(x1, y0) + F(x0, y0), F(x, y) = atan(x y /
+ * sqrt(1 + x^2 + y^2)) (exact for a plane rectangle); only the part inside the cone
+ * (sx^2 + sy^2 <= tan^2 angle) is lit: texels that the cone's edge cuts are split into 16 x 16
+ * sub-rectangles, each counted when its centre is inside.
+ * Flux of a texel. The spot sends the flux I Omega into the texel's solid angle. It lands at
+ * distance d on the surface at y, whose geometric normal n_g makes the angle theta_g with the
+ * direction to the light -l: the texel's footprint is dA = d^2 Omega / cos theta_g and the
+ * irradiance there is E = I cos theta_s / d^2 (theta_s: the angle to the shading normal n_s,
+ * the normal map's; = theta_g without one). The diffusely reflected flux is
+ *   Phi = kd(y) E dA = kd(y) I Omega max(0, n_s . -l) / (n_g . -l)   (n_g . -l floored at 0.05)
+ * i.e. kd(y) I Omega on a plain surface: the cosine cancels against the footprint, and the
+ * brief's "kd I dOmega max(0, n . -l)" would count it twice. The reflected radiance is
+ * Lambertian, kd E / pi, so the intensity that the patch sends towards x is
+ * Phi / pi max(0, n_s . w_yx) (n_s: the VPL's normal).
+ *
+ * Methods (each on "cpu", C kernels, and "gl", the GLSL twins in a fragment shader with the
+ * light set in an SSBO):
+ *   vpl             E = sum Phi max(0, n_y . -w) max(0, n_x . w) / (pi d^2), w = (y - x)/d:
+ *                   the 1/d^2 spike is kept (what seed 000 removes);
+ *   vpl_clamp       the same with d^2 clamped below by r_fov^2 (the texel spacing of the
+ *                   fov heuristic at that VPL: the usual distance clamp, made scale-free);
+ *   hvl_neighbours  HVLs with radius r1 (eq. 23, shl_hvl_radius_neighbours over the 8-connected
+ *                   RSM neighbours, eps = r_fov / 4; no neighbour: r_fov);
+ *   hvl_fov         HVLs with radius r2 (eq. 24-26, shl_hvl_radius_fov with lambda = the full
+ *                   field of view 2 angle (erratum E9) and M = w h, the texel spacing).
+ * HVL j: L_j = Phi_j (F' . Y(-w_j)) G_j (eq. 20-21, shl_hvl_radiance with the exact H) with F'
+ * = 1/pi, the Lambert BRDF of unit albedo (kd(y) is in Phi): it is constant, so the emission
+ * needs band 0 only (n = 1, seed 000: "isotropic HVL reconstruction only use band 0"), exact at
+ * any band count. The receiver's lobe is Lambert's ZH (shl_zh_lambert, max(0, cos)/pi) about
+ * n_x with run->bands bands, and the contribution lj (cap . lobe) is shl_hvl_contribution_zh;
+ * L = kd(x) sum_j Phi_j (...) (in the point limit this is the VPL sum: G_j pi r^2 / d^2 -> 1).
+ *
+ * Ground truth (path "gt"): the same bounce integrated over the lit surfaces with an N x N RSM
+ * (N = 128 at --gt 1, 512 at --gt 2; SHLIGHT_HVL_GT=N), same texel flux, traced with rd_trace
+ * along rd_gbuffer_view's rays. Each texel is a Lambertian patch: the quad cut from the plane
+ * through its centre y, normal n_s, by its four corner rays (a flat wall: the quads tile it),
+ * radiance Phi / (pi A). A texel whose corner rays hit off the plane of its centre (an edge, a
+ * silhouette, the scene's boundary) is split 2 x 2, up to 3 times (gt_cell), so that the quads
+ * follow the surfaces up to their edges. Near a receiver (d < 6 patch radii) the patch's
+ * irradiance is the exact projected solid angle of the quad clipped to x's horizon (Lambert's
+ * polygon formula in double: bounded as x approaches the patch); farther away the point formula
+ * (the VPL term, relative error O((size / d)^2)). The GT is also computed at N / 2 and the
+ * difference is printed, an estimate of the error of the N / 2 image (the N image is closer).
+ * Measured on cornell at 64x48 against N = 512: N = 128 is within p99 0.0025, max 0.021 of the
+ * peak (N = 64: p99 0.0062, max 0.027).
+ *
+ * Printed per method and path: the 99th percentile and the max over the pixels of
+ * max_rgb |method - gt| / peak(gt) (the spikes show in the max). */
+#include "rd.h"
+#include "../shlight.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define HVL_PI 3.14159265358979323846
+#define HVL_STRIDE 15   /* floats per light in the set: y, n_s, Phi, n_g, r_nb, r_fov, dist */
+#define HVL_GT_NEAR 6.0 /* polygon form factor within this many patch radii */
+
+enum { M_VPL = 0, M_VPL_CLAMP = 1, M_HVL_NB = 2, M_HVL_FOV = 3, M_COUNT = 4 };
+static const char *const method_name[M_COUNT] = {"vpl", "vpl_clamp", "hvl_neighbours", "hvl_fov"};
+/* floats per light that each method reads (its buffer: mem) */
+static const int method_stride[M_COUNT] = {12, 13, 13, 13};
+/* rd_emit's gl tolerance, max |gl - cpu| / peak(cpu), ~3x the worst measured on llvmpipe
+   (Mesa 22.3.6; cornell and spheres, 64x48 and 256x256, bands 1, 3, 5, 9, 16): VPL 1.5e-7
+   (plain float arithmetic on both sides); HVL 8.8e-6 (cornell, 256x256, 1 band, one pixel;
+   typically 2e-7..3e-6: the kernels' shli_real is double in C and float in GLSL, and the exact
+   H has slope 1/s in the cosine for a cap of sine s) */
+static const double method_tol[M_COUNT] = {5e-7, 5e-7, 3e-5, 3e-5};
+
+/* ---- the spot and its RSM frame ----------------------------------------------------------- */
+typedef struct {
+  const rd_light *l;
+  float eye[3], dir[3], up[3];
+  float fov;              /* RSM fov_y = 2 angle (clamped to 2 * 85 degrees) */
+  double tcone;           /* tan(angle): the cone's radius on the image plane */
+  float f[3], r[3], u[3]; /* the frame of rd_gbuffer_view: forward, right, up */
+} spot_view;
+
+static void normf3(float v[3]) {
+  double a = (double)v[0], b = (double)v[1], c = (double)v[2], l = sqrt(a * a + b * b + c * c);
+  if (l > 0) {
+    v[0] = (float)(a / l);
+    v[1] = (float)(b / l);
+    v[2] = (float)(c / l);
+  } else {
+    v[0] = v[1] = 0.0f;
+    v[2] = 1.0f;
+  }
+}
+
+static void spot_setup(const rd_light *l, spot_view *sv) {
+  float ax = fabsf(l->n[0]), ay = fabsf(l->n[1]), az = fabsf(l->n[2]);
+  double ang = (double)l->angle;
+  int k;
+  memset(sv, 0, sizeof *sv);
+  sv->l = l;
+  for (k = 0; k < 3; k++) {
+    sv->eye[k] = l->c[k];
+    sv->dir[k] = l->n[k];
+  }
+  normf3(sv->dir);
+  /* up: the world axis least aligned with the axis */
+  if (ax <= ay && ax <= az)
+    sv->up[0] = 1.0f;
+  else if (ay <= az)
+    sv->up[1] = 1.0f;
+  else
+    sv->up[2] = 1.0f;
+  if (!(ang > 0.0)) ang = 1e-3;
+  if (ang > 85.0 * HVL_PI / 180.0) {
+    fprintf(stderr, "hvl: spot half-angle %.1f deg clamped to 85 deg for the RSM\n",
+            ang * 180.0 / HVL_PI);
+    ang = 85.0 * HVL_PI / 180.0;
+  }
+  sv->fov = (float)(2.0 * ang);
+  sv->tcone = tan(ang);
+  /* the frame exactly as rd_gbuffer_view builds it */
+  memcpy(sv->f, sv->dir, sizeof sv->f);
+  sv->r[0] = sv->f[1] * sv->up[2] - sv->f[2] * sv->up[1];
+  sv->r[1] = sv->f[2] * sv->up[0] - sv->f[0] * sv->up[2];
+  sv->r[2] = sv->f[0] * sv->up[1] - sv->f[1] * sv->up[0];
+  normf3(sv->r);
+  sv->u[0] = sv->r[1] * sv->f[2] - sv->r[2] * sv->f[1];
+  sv->u[1] = sv->r[2] * sv->f[0] - sv->r[0] * sv->f[2];
+  sv->u[2] = sv->r[0] * sv->f[1] - sv->r[1] * sv->f[0];
+}
+
+/* image-plane centre (sx, sy) and pitch p of texel (i, j) of a w x h view (rd_gbuffer_view) */
+static void texel_plane(const spot_view *sv, int w, int h, int i, int j, double *sx, double *sy,
+                        double *p) {
+  double th = (double)tanf(0.5f * sv->fov);
+  *sx = (2.0 * ((double)i + 0.5) / (double)w - 1.0) * th * (double)w / (double)h;
+  *sy = (1.0 - 2.0 * ((double)j + 0.5) / (double)h) * th;
+  *p = 2.0 * th / (double)h;
+}
+
+static double rect_f(double x, double y) {
+  return atan(x * y / sqrt(1.0 + x * x + y * y));
+}
+/* solid angle of the image-plane rectangle [x0, x1] x [y0, y1] (unit distance) */
+static double rect_omega(double x0, double x1, double y0, double y1) {
+  return rect_f(x1, y1) - rect_f(x0, y1) - rect_f(x1, y0) + rect_f(x0, y0);
+}
+/* lit solid angle of the texel centred at (sx, sy), pitch p, inside the cone of radius tc */
+static double texel_omega(double sx, double sy, double p, double tc) {
+  double x0 = sx - 0.5 * p, x1 = sx + 0.5 * p, y0 = sy - 0.5 * p, y1 = sy + 0.5 * p;
+  double fx = fmax(fabs(x0), fabs(x1)), fy = fmax(fabs(y0), fabs(y1));
+  double nx = (x0 > 0 ? x0 : x1 < 0 ? -x1 : 0), ny = (y0 > 0 ? y0 : y1 < 0 ? -y1 : 0);
+  double om = 0.0, q = p / 16.0;
+  int a, b;
+  if (fx * fx + fy * fy <= tc * tc) return rect_omega(x0, x1, y0, y1);
+  if (nx * nx + ny * ny >= tc * tc) return 0.0;
+  for (b = 0; b < 16; b++)
+    for (a = 0; a < 16; a++) {
+      double cx = x0 + ((double)a + 0.5) * q, cy = y0 + ((double)b + 0.5) * q;
+      if (cx * cx + cy * cy <= tc * tc)
+        om += rect_omega(cx - 0.5 * q, cx + 0.5 * q, cy - 0.5 * q, cy + 0.5 * q);
+    }
+  return om;
+}
+
+/* Reflected flux (rgb) of RSM texel k: see the header. Returns 0 when the texel sends none. */
+static int texel_flux(const rd_scene *s, const spot_view *sv, const float y[3], const float ns[3],
+                      const float ng[3], int m, double omega, double phi[3]) {
+  double l[3], d = 0, cs = 0, cg = 0, ratio;
+  int c;
+  if (m < 0 || m >= s->nmats || !(omega > 0)) return 0;
+  for (c = 0; c < 3; c++) {
+    l[c] = (double)sv->eye[c] - (double)y[c]; /* towards the light */
+    d += l[c] * l[c];
+  }
+  d = sqrt(d);
+  if (!(d > 0)) return 0;
+  for (c = 0; c < 3; c++) {
+    cs += (double)ns[c] * l[c] / d;
+    cg += (double)ng[c] * l[c] / d;
+  }
+  if (!(cs > 0) || !(cg > 0)) return 0;
+  ratio = cs / fmax(cg, 0.05); /* the normal map's irradiance over the footprint's cosine */
+  for (c = 0; c < 3; c++)
+    phi[c] = (double)s->mats[m].kd[c] * (double)sv->l->radiance[c] * omega * ratio;
+  return phi[0] > 0 || phi[1] > 0 || phi[2] > 0;
+}
+
+/* ---- the light set -------------------------------------------------------------------------- */
+typedef struct {
+  int w, h, count;
+  float *buf; /* count * HVL_STRIDE */
+} light_set;
+
+static int rsm_lights(const rd_run *run, const spot_view *sv, int w, int h, light_set *ls) {
+  const rd_scene *s = run->scene;
+  rd_gbuf g;
+  int i, j, m = w * h;
+  int *idx;
+  memset(ls, 0, sizeof *ls);
+  ls->w = w;
+  ls->h = h;
+  if (rd_gbuffer_view(s, sv->eye, sv->dir, sv->up, sv->fov, w, h, &g)) return -1;
+  ls->buf = (float *)calloc((size_t)m * HVL_STRIDE, sizeof(float));
+  idx = (int *)malloc((size_t)m * sizeof(int));
+  if (!ls->buf || !idx) {
+    free(idx);
+    free(ls->buf);
+    rd_gbuf_free(&g);
+    return -1;
+  }
+  for (j = 0; j < h; j++)
+    for (i = 0; i < w; i++) {
+      size_t k = (size_t)j * (size_t)w + (size_t)i;
+      double sx, sy, p, phi[3];
+      float *q = ls->buf + (size_t)ls->count * HVL_STRIDE;
+      int c;
+      idx[k] = -1;
+      texel_plane(sv, w, h, i, j, &sx, &sy, &p);
+      if (!texel_flux(s, sv, g.pos + 3 * k, g.nrm + 3 * k, g.gnrm + 3 * k, g.mat[k],
+                      texel_omega(sx, sy, p, sv->tcone), phi))
+        continue;
+      for (c = 0; c < 3; c++) {
+        q[c] = g.pos[3 * k + (size_t)c];
+        q[3 + c] = g.nrm[3 * k + (size_t)c];
+        q[6 + c] = (float)phi[c];
+        q[9 + c] = g.gnrm[3 * k + (size_t)c];
+      }
+      q[14] = g.depth[k];
+      q[13] = shl_hvl_radius_fov(q[14], sv->fov, m);
+      idx[k] = ls->count++;
+    }
+  /* eq. 23 over the 8-connected RSM neighbours that hit a surface (lit or not: they sample the
+     density of the RSM's positions) */
+  for (j = 0; j < h; j++)
+    for (i = 0; i < w; i++) {
+      size_t k = (size_t)j * (size_t)w + (size_t)i;
+      float pn[8][3], dn[8];
+      int cnt = 0, di, dj;
+      float *q;
+      if (idx[k] < 0) continue;
+      q = ls->buf + (size_t)idx[k] * HVL_STRIDE;
+      for (dj = -1; dj <= 1; dj++)
+        for (di = -1; di <= 1; di++) {
+          int a = i + di, b = j + dj;
+          size_t kk;
+          if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= w || b >= h) continue;
+          kk = (size_t)b * (size_t)w + (size_t)a;
+          if (g.mat[kk] < 0) continue;
+          memcpy(pn[cnt], g.pos + 3 * kk, sizeof pn[cnt]);
+          dn[cnt] = g.depth[kk];
+          cnt++;
+        }
+      q[12] = shl_hvl_radius_neighbours(cnt, q, q[14], (const float(*)[3])pn, dn, 0.25f * q[13]);
+      if (!(q[12] > 0.0f)) q[12] = q[13];
+    }
+  free(idx);
+  rd_gbuf_free(&g);
+  return 0;
+}
+
+/* the buffer a method reads: y, n_s, Phi, n_g (+ r) */
+static float *method_buffer(const light_set *ls, int method) {
+  int st = method_stride[method], j, c;
+  float *b = (float *)malloc((size_t)(ls->count > 0 ? ls->count : 1) * (size_t)st * sizeof(float));
+  if (!b) return NULL;
+  for (j = 0; j < ls->count; j++) {
+    const float *q = ls->buf + (size_t)j * HVL_STRIDE;
+    for (c = 0; c < 12; c++)
+      b[j * st + c] = q[c];
+    if (st > 12) b[j * st + 12] = method == M_HVL_NB ? q[12] : q[13];
+  }
+  return b;
+}
+
+/* ---- CPU shading ---------------------------------------------------------------------------- */
+static void shade_cpu(const rd_run *run, int method, const float *b, int nl, float eps,
+                      float *rgb) {
+  const rd_gbuf *gb = run->gb;
+  const rd_scene *s = run->scene;
+  int st = method_stride[method], bands = run->bands, px, j;
+  int npx = gb->w * gb->h;
+  float fzh[SHLIGHT_MAX_BANDS], femit[1];
+  femit[0] = 1.1283791670955126f; /* 2 / sqrt(pi): F' . Y = femit[0] Y_0^0 = 1 / pi */
+  shl_zh_lambert(bands, fzh);
+  for (px = 0; px < npx; px++) {
+    const float *x = gb->pos + 3 * px, *nx = gb->nrm + 3 * px, *gx = gb->gnrm + 3 * px;
+    int m = gb->mat[px];
+    float acc[3] = {0.0f, 0.0f, 0.0f};
+    if (m < 0 || m >= s->nmats) {
+      rgb[3 * px] = rgb[3 * px + 1] = rgb[3 * px + 2] = 0.0f;
+      continue;
+    }
+    for (j = 0; j < nl; j++) {
+      const float *y = b + j * st, *ny = y + 3, *phi = y + 6, *gy = y + 9;
+      float dv[3] = {y[0] - x[0], y[1] - x[1], y[2] - x[2]};
+      /* each point strictly in front of the other's geometric plane (see the header) */
+      if (!(-(gy[0] * dv[0] + gy[1] * dv[1] + gy[2] * dv[2]) > eps) ||
+          !(gx[0] * dv[0] + gx[1] * dv[1] + gx[2] * dv[2] > eps))
+        continue;
+      if (method <= M_VPL_CLAMP) {
+        float d2 = dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2], d, cy, cx, gf;
+        if (!(d2 > 0.0f)) continue;
+        d = sqrtf(d2);
+        cy = -(ny[0] * dv[0] + ny[1] * dv[1] + ny[2] * dv[2]) / d;
+        cx = (nx[0] * dv[0] + nx[1] * dv[1] + nx[2] * dv[2]) / d;
+        if (!(cy > 0.0f) || !(cx > 0.0f)) continue;
+        if (method == M_VPL_CLAMP && d2 < y[12] * y[12]) d2 = y[12] * y[12];
+        gf = cy * cx / (3.14159265f * d2);
+        acc[0] += phi[0] * gf;
+        acc[1] += phi[1] * gf;
+        acc[2] += phi[2] * gf;
+      } else {
+        float r = y[12], lj, cc;
+        lj = shl_hvl_radiance(1, femit, 1.0f, x, nx, y, ny, r, 1);
+        if (!(lj > 0.0f)) continue;
+        cc = shl_hvl_contribution_zh(bands, lj, fzh, nx, x, y, r);
+        acc[0] += phi[0] * cc;
+        acc[1] += phi[1] * cc;
+        acc[2] += phi[2] * cc;
+      }
+    }
+    for (j = 0; j < 3; j++) {
+      float kd = s->mats[m].kd[j];
+      rgb[3 * px + j] = method <= M_VPL_CLAMP ? kd * acc[j] * 0.318309886f : kd * acc[j];
+    }
+    if ((px + 1) % gb->w == 0) rd_progress(method_name[method], px + 1, npx);
+  }
+}
+
+/* ---- GL shading ----------------------------------------------------------------------------- */
+static const char *const gl_body =
+    "void main() {\n"
+    "  ivec2 px = rd_pixel();\n"
+    "  vec4 P = texelFetch(rd_pos, px, 0);\n"
+    "  vec4 N = texelFetch(rd_nrm, px, 0);\n"
+    "  vec3 acc = vec3(0.0);\n"
+    "  if (N.w >= 0.0) {\n"
+    "    int mi = int(N.w + 0.5);\n"
+    "    vec3 kd = vec3(rd_mats[12 * mi], rd_mats[12 * mi + 1], rd_mats[12 * mi + 2]);\n"
+    "    vec3 x = P.xyz;\n"
+    "    vec3 nx = N.xyz;\n"
+    "    vec3 gx = texelFetch(rd_gnrm, px, 0).xyz;\n"
+    "#if HVL_METHOD >= 2\n"
+    "    float fzh[SHLIGHT_MAX_BANDS];\n"
+    "    float femit[SHLIGHT_MAX_COEFFS];\n"
+    "    for (int k = 0; k < SHLIGHT_MAX_COEFFS; ++k) femit[k] = 0.0;\n"
+    "    femit[0] = 1.1283791670955126;\n"
+    "    shl_zh_lambert(HVL_BANDS, fzh);\n"
+    "#endif\n"
+    "    for (int j = 0; j < HVL_NL; ++j) {\n"
+    "      int b = HVL_ST * j;\n"
+    "      vec3 y = vec3(rd_buf1[b], rd_buf1[b + 1], rd_buf1[b + 2]);\n"
+    "      vec3 ny = vec3(rd_buf1[b + 3], rd_buf1[b + 4], rd_buf1[b + 5]);\n"
+    "      vec3 phi = vec3(rd_buf1[b + 6], rd_buf1[b + 7], rd_buf1[b + 8]);\n"
+    "      vec3 gy = vec3(rd_buf1[b + 9], rd_buf1[b + 10], rd_buf1[b + 11]);\n"
+    "      vec3 dv = y - x;\n"
+    "      if (!(-(gy.x * dv.x + gy.y * dv.y + gy.z * dv.z) > HVL_EPS) ||\n"
+    "          !(gx.x * dv.x + gx.y * dv.y + gx.z * dv.z > HVL_EPS)) continue;\n"
+    "#if HVL_METHOD < 2\n"
+    "      float d2 = dv.x * dv.x + dv.y * dv.y + dv.z * dv.z;\n"
+    "      if (!(d2 > 0.0)) continue;\n"
+    "      float d = sqrt(d2);\n"
+    "      float cy = -(ny.x * dv.x + ny.y * dv.y + ny.z * dv.z) / d;\n"
+    "      float cx = (nx.x * dv.x + nx.y * dv.y + nx.z * dv.z) / d;\n"
+    "      if (!(cy > 0.0) || !(cx > 0.0)) continue;\n"
+    "#if HVL_METHOD == 1\n"
+    "      float rc = rd_buf1[b + 12];\n"
+    "      if (d2 < rc * rc) d2 = rc * rc;\n"
+    "#endif\n"
+    "      acc += phi * (cy * cx / (3.14159265 * d2));\n"
+    "#else\n"
+    "      float r = rd_buf1[b + 12];\n"
+    "      float lj = shl_hvl_radiance(1, femit, 1.0, x, nx, y, ny, r, 1);\n"
+    "      if (!(lj > 0.0)) continue;\n"
+    "      acc += phi * shl_hvl_contribution_zh(HVL_BANDS, lj, fzh, nx, x, y, r);\n"
+    "#endif\n"
+    "    }\n"
+    "#if HVL_METHOD < 2\n"
+    "    acc = kd * acc * 0.318309886;\n"
+    "#else\n"
+    "    acc = kd * acc;\n"
+    "#endif\n"
+    "  }\n"
+    "  rd_out0 = vec4(acc, 1.0);\n"
+    "}\n";
+
+static int shade_gl(const rd_run *run, int method, const float *b, int nl, float eps, float *rgb,
+                    double *ms) {
+  static const char *const inc_hvl[7] = {"shl_prelude.glsl", "shl_basis.glsl", "shl_gradient.glsl",
+                                         "shl_zonal.glsl",   "shl_light.glsl", "shl_brdf.glsl",
+                                         "shl_hvl.glsl"};
+  static const char *const inc_vpl[1] = {"shl_prelude.glsl"};
+  const rd_gbuf *gb = run->gb;
+  char defs[256];
+  size_t npx = (size_t)gb->w * (size_t)gb->h, k, nf;
+  float *out4 = (float *)malloc(npx * 4 * sizeof(float));
+  float *outs[1];
+  const float *bufs[1];
+  rd_gl_pass p;
+  int rc;
+  if (!out4) return -1;
+  snprintf(defs, sizeof defs,
+           "#define SHLIGHT_MAX_BANDS %d\n#define HVL_BANDS %d\n#define HVL_NL %d\n"
+           "#define HVL_ST %d\n#define HVL_METHOD %d\n#define HVL_EPS %.9e\n",
+           run->bands, run->bands, nl, method_stride[method], method, (double)eps);
+  memset(&p, 0, sizeof p);
+  p.defines = defs;
+  p.includes = method <= M_VPL_CLAMP ? inc_vpl : inc_hvl;
+  p.ninclude = method <= M_VPL_CLAMP ? 1 : 7;
+  p.body = gl_body;
+  bufs[0] = b;
+  nf = (size_t)nl * (size_t)method_stride[method];
+  p.bufs = bufs;
+  p.buf_floats = &nf;
+  p.nbuf = 1;
+  p.nout = 1;
+  outs[0] = out4;
+  rc = rd_gl_run(run->scene, gb, &p, outs, run->reps, ms);
+  if (rc == 0)
+    for (k = 0; k < npx; k++) {
+      rgb[3 * k] = out4[4 * k];
+      rgb[3 * k + 1] = out4[4 * k + 1];
+      rgb[3 * k + 2] = out4[4 * k + 2];
+    }
+  free(out4);
+  return rc;
+}
+
+/* ---- ground truth --------------------------------------------------------------------------- */
+typedef struct {
+  double q[4][3]; /* quad corners (world) */
+  double ns[3];   /* quad normal (the shading normal of the centre) */
+  double a;       /* quad area */
+  int ok;         /* the quad is usable */
+} gt_quad;
+
+/* projected solid angle seen from x (normal nx) of the polygon v (relative to x), clipped to
+   nx . v >= 0: Lambert's formula 1/2 sum_i angle(v_i, v_i+1) nx . unit(v_i x v_i+1) */
+static double poly_projected(const double (*v)[3], int n, const double nx[3]) {
+  double c[12][3], sum = 0;
+  int i, k, nc = 0;
+  for (i = 0; i < n; i++) {
+    const double *a = v[i], *b = v[(i + 1) % n];
+    double da = nx[0] * a[0] + nx[1] * a[1] + nx[2] * a[2];
+    double db = nx[0] * b[0] + nx[1] * b[1] + nx[2] * b[2];
+    if (da >= 0 && nc < 12) {
+      memcpy(c[nc], a, sizeof c[nc]);
+      nc++;
+    }
+    if ((da >= 0) != (db >= 0) && nc < 12) {
+      double t = da / (da - db);
+      for (k = 0; k < 3; k++)
+        c[nc][k] = a[k] + t * (b[k] - a[k]);
+      nc++;
+    }
+  }
+  if (nc < 3) return 0;
+  for (i = 0; i < nc; i++) {
+    const double *a = c[i], *b = c[(i + 1) % nc];
+    double la = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    double lb = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+    double cr[3], s, dt;
+    if (!(la > 0) || !(lb > 0)) continue;
+    cr[0] = a[1] * b[2] - a[2] * b[1];
+    cr[1] = a[2] * b[0] - a[0] * b[2];
+    cr[2] = a[0] * b[1] - a[1] * b[0];
+    s = sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
+    if (!(s > 0)) continue;
+    dt = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    sum += atan2(s, dt) * (cr[0] * nx[0] + cr[1] * nx[1] + cr[2] * nx[2]) / s;
+  }
+  return fabs(0.5 * sum);
+}
+
+typedef struct {
+  int n;         /* patches */
+  double *p;     /* 3n centres */
+  double *ns;    /* 3n normals (shading) */
+  double *ng;    /* 3n geometric normals */
+  double *phi;   /* 3n flux / pi */
+  double *near2; /* n: squared distance below which the quad is integrated exactly */
+  gt_quad *quad; /* n */
+} gt_patches;
+
+static void gt_free(gt_patches *gp) {
+  free(gp->p);
+  free(gp->ns);
+  free(gp->ng);
+  free(gp->phi);
+  free(gp->near2);
+  free(gp->quad);
+  memset(gp, 0, sizeof *gp);
+}
+
+/* the ray of rd_gbuffer_view through the image-plane point (sx, sy); returns 1 on a hit */
+static int view_ray(const rd_scene *s, const spot_view *sv, double sx, double sy, float d[3],
+                    rd_hit *h) {
+  int c;
+  for (c = 0; c < 3; c++)
+    d[c] = sv->f[c] + (float)sx * sv->r[c] + (float)sy * sv->u[c];
+  normf3(d);
+  return rd_trace(s, sv->eye, d, 1e-6f, INFINITY, h);
+}
+
+/* distance along the ray c + t dir (dir need not be unit) to the plane through y with normal
+   n; -1 when the ray does not cross it in front of the light */
+static double plane_t(const spot_view *sv, const double dir[3], const double y[3],
+                      const double n[3]) {
+  double dc = 0, den = 0;
+  int c;
+  for (c = 0; c < 3; c++) {
+    dc += (y[c] - (double)sv->eye[c]) * n[c];
+    den += dir[c] * n[c];
+  }
+  return den != 0 && dc / den > 0 ? dc / den : -1.0;
+}
+
+static int gt_push(gt_patches *gp, int *cap) {
+  if (gp->n == *cap) {
+    int nc = *cap ? 2 * *cap : 4096;
+    double *p = (double *)realloc(gp->p, (size_t)nc * 3 * sizeof(double));
+    double *ns = p ? (double *)realloc(gp->ns, (size_t)nc * 3 * sizeof(double)) : NULL;
+    double *ng = ns ? (double *)realloc(gp->ng, (size_t)nc * 3 * sizeof(double)) : NULL;
+    double *phi = ng ? (double *)realloc(gp->phi, (size_t)nc * 3 * sizeof(double)) : NULL;
+    double *n2 = phi ? (double *)realloc(gp->near2, (size_t)nc * sizeof(double)) : NULL;
+    gt_quad *q = n2 ? (gt_quad *)realloc(gp->quad, (size_t)nc * sizeof(gt_quad)) : NULL;
+    if (p) gp->p = p;
+    if (ns) gp->ns = ns;
+    if (ng) gp->ng = ng;
+    if (phi) gp->phi = phi;
+    if (n2) gp->near2 = n2;
+    if (!q) return -1;
+    gp->quad = q;
+    *cap = nc;
+  }
+  return gp->n++;
+}
+
+/* One GT cell: the image-plane square centred at (sx, sy) of side p. Its centre ray gives the
+   patch; the four corner rays (ct: their hit distances, -1 for a miss; NULL: trace them) cut
+   the plane of the patch. A corner whose real hit is off that plane (an edge, a silhouette,
+   a miss) marks a cell that straddles two surfaces: it is split 2 x 2, up to `depth` times, so
+   that the quads tile the surfaces up to the edges. */
+static int gt_cell(const rd_scene *s, const spot_view *sv, double sx, double sy, double p,
+                   const double *ct, int depth, gt_patches *gp, int *cap) {
+  rd_hit h;
+  float dc[3];
+  double phi[3], y[3], ns[3], ng[3], cd[4][3], tq[4], r2 = 0, t0;
+  double om = texel_omega(sx, sy, p, sv->tcone);
+  int c, k, split = 0, o, hit;
+  gt_quad *q;
+  if (!(om > 0)) return 0;
+  hit = view_ray(s, sv, sx, sy, dc, &h);
+  if (!hit) {
+    split = 1; /* the centre misses: a corner may hit */
+  } else {
+    for (c = 0; c < 3; c++) {
+      y[c] = (double)h.p[c];
+      ns[c] = (double)h.n[c];
+      ng[c] = (double)h.ng[c];
+    }
+    t0 = (double)h.t;
+    for (k = 0; k < 4 && !split; k++) {
+      double cx = sx + (k == 1 || k == 2 ? 0.5 : -0.5) * p, cy = sy + (k >= 2 ? 0.5 : -0.5) * p;
+      double tc, tp, dl;
+      float d1[3];
+      rd_hit hc;
+      for (c = 0; c < 3; c++)
+        cd[k][c] = (double)sv->f[c] + cx * (double)sv->r[c] + cy * (double)sv->u[c];
+      dl = sqrt(cd[k][0] * cd[k][0] + cd[k][1] * cd[k][1] + cd[k][2] * cd[k][2]);
+      if (ct)
+        tc = ct[k];
+      else
+        tc = view_ray(s, sv, cx, cy, d1, &hc) ? (double)hc.t : -1.0;
+      tp = plane_t(sv, cd[k], y, ng) * dl;
+      if (!(tc > 0) || !(tp > 0) || fabs(tc - tp) > 0.25 * t0 * p * dl) split = 1;
+    }
+  }
+  if (split && depth > 0) {
+    double cc[9], sub[4];
+    int a, b, rc = 0;
+    /* corner distances of the 3 x 3 sub-grid */
+    for (b = 0; b < 3; b++)
+      for (a = 0; a < 3; a++) {
+        float d1[3];
+        rd_hit hc;
+        double cx = sx + 0.5 * p * (double)(a - 1), cy = sy + 0.5 * p * (double)(b - 1);
+        cc[3 * b + a] = view_ray(s, sv, cx, cy, d1, &hc) ? (double)hc.t : -1.0;
+      }
+    for (b = 0; b < 2 && !rc; b++)
+      for (a = 0; a < 2 && !rc; a++) {
+        sub[0] = cc[3 * b + a];
+        sub[1] = cc[3 * b + a + 1];
+        sub[2] = cc[3 * (b + 1) + a + 1];
+        sub[3] = cc[3 * (b + 1) + a];
+        rc = gt_cell(s, sv, sx + 0.25 * p * (double)(2 * a - 1),
+                     sy + 0.25 * p * (double)(2 * b - 1), 0.5 * p, sub, depth - 1, gp, cap);
+      }
+    return rc;
+  }
+  if (!hit || !texel_flux(s, sv, h.p, h.n, h.ng, h.mat, om, phi)) return 0;
+  if ((o = gt_push(gp, cap)) < 0) return -1;
+  q = &gp->quad[o];
+  for (c = 0; c < 3; c++) {
+    gp->p[3 * o + c] = y[c];
+    gp->ns[3 * o + c] = ns[c];
+    gp->ng[3 * o + c] = ng[c];
+    gp->phi[3 * o + c] = phi[c] / HVL_PI;
+    q->ns[c] = ns[c];
+  }
+  /* the emitting quad: the corner rays cut the plane through y with normal n_s */
+  q->ok = 1;
+  for (k = 0; k < 4; k++) {
+    double cx = sx + (k == 1 || k == 2 ? 0.5 : -0.5) * p, cy = sy + (k >= 2 ? 0.5 : -0.5) * p;
+    double dir[3];
+    for (c = 0; c < 3; c++)
+      dir[c] = (double)sv->f[c] + cx * (double)sv->r[c] + cy * (double)sv->u[c];
+    tq[k] = plane_t(sv, dir, y, ns);
+    /* a corner ray nearly parallel to the plane: no usable quad (point formula only) */
+    if (!(tq[k] > 0) || tq[k] > 8.0 * (double)h.t) {
+      q->ok = 0;
+      break;
+    }
+    for (c = 0; c < 3; c++)
+      q->q[k][c] = (double)sv->eye[c] + tq[k] * dir[c];
+    r2 = fmax(r2, (q->q[k][0] - y[0]) * (q->q[k][0] - y[0]) +
+                      (q->q[k][1] - y[1]) * (q->q[k][1] - y[1]) +
+                      (q->q[k][2] - y[2]) * (q->q[k][2] - y[2]));
+  }
+  if (q->ok) {
+    double e1[3], e2[3], cr[3];
+    for (c = 0; c < 3; c++) {
+      e1[c] = q->q[2][c] - q->q[0][c];
+      e2[c] = q->q[3][c] - q->q[1][c];
+    }
+    cr[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    cr[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    cr[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    q->a = 0.5 * sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
+    q->ok = q->a > 0;
+  }
+  gp->near2[o] = q->ok ? HVL_GT_NEAR * HVL_GT_NEAR * r2 : 0.0;
+  return 0;
+}
+
+static int gt_build(const rd_run *run, const spot_view *sv, int N, gt_patches *gp) {
+  const rd_scene *s = run->scene;
+  double *ct, sx, sy, p, c4[4];
+  int i, j, cap = 0, rc = 0;
+  memset(gp, 0, sizeof *gp);
+  /* hit distances of the (N + 1)^2 texel corners */
+  ct = (double *)malloc((size_t)(N + 1) * (size_t)(N + 1) * sizeof(double));
+  if (!ct) return -1;
+  for (j = 0; j <= N; j++) {
+    for (i = 0; i <= N; i++) {
+      float d[3];
+      rd_hit h;
+      texel_plane(sv, N, N, i, j, &sx, &sy, &p);
+      ct[(size_t)j * (size_t)(N + 1) + (size_t)i] =
+          view_ray(s, sv, sx - 0.5 * p, sy + 0.5 * p, d, &h) ? (double)h.t : -1.0;
+    }
+    rd_progress("hvl gt rays", j + 1, N + 1);
+  }
+  for (j = 0; j < N && !rc; j++)
+    for (i = 0; i < N && !rc; i++) {
+      size_t k = (size_t)j * (size_t)(N + 1) + (size_t)i;
+      texel_plane(sv, N, N, i, j, &sx, &sy, &p);
+      /* corners in the order (-,-), (+,-), (+,+), (-,+) of (sx, sy); row j is at +sy */
+      c4[0] = ct[k + (size_t)(N + 1)];
+      c4[1] = ct[k + (size_t)(N + 1) + 1];
+      c4[2] = ct[k + 1];
+      c4[3] = ct[k];
+      rc = gt_cell(s, sv, sx, sy, p, c4, 3, gp, &cap);
+    }
+  free(ct);
+  if (rc) gt_free(gp);
+  return rc;
+}
+
+/* indirect radiance kd(x)/pi E(x) of the patches at every camera pixel */
+static void gt_shade(const rd_run *run, const gt_patches *gp, double eps, const char *label,
+                     float *rgb) {
+  const rd_gbuf *gb = run->gb;
+  const rd_scene *s = run->scene;
+  int npx = gb->w * gb->h, px, j, c;
+  for (px = 0; px < npx; px++) {
+    double x[3], nx[3], gx[3], e[3] = {0, 0, 0};
+    int m = gb->mat[px];
+    if (m < 0 || m >= s->nmats) {
+      rgb[3 * px] = rgb[3 * px + 1] = rgb[3 * px + 2] = 0.0f;
+      continue;
+    }
+    for (c = 0; c < 3; c++) {
+      x[c] = (double)gb->pos[3 * px + c];
+      nx[c] = (double)gb->nrm[3 * px + c];
+      gx[c] = (double)gb->gnrm[3 * px + c];
+    }
+    for (j = 0; j < gp->n; j++) {
+      const double *p = gp->p + 3 * j, *ns = gp->ns + 3 * j, *phi = gp->phi + 3 * j;
+      const double *ng = gp->ng + 3 * j;
+      double dx = p[0] - x[0], dy = p[1] - x[1], dz = p[2] - x[2];
+      double d2 = dx * dx + dy * dy + dz * dz, cy, cx, gf;
+      /* the methods' geometric gate */
+      if (!(-(ng[0] * dx + ng[1] * dy + ng[2] * dz) > eps) ||
+          !(gx[0] * dx + gx[1] * dy + gx[2] * dz > eps))
+        continue;
+      if (d2 < gp->near2[j]) {
+        const gt_quad *q = &gp->quad[j];
+        double v[4][3], side = 0, ps;
+        int k, kk;
+        for (kk = 0; kk < 4; kk++)
+          for (k = 0; k < 3; k++)
+            v[kk][k] = q->q[kk][k] - x[k];
+        /* x must be in front of the patch (it emits on its normal's side only) */
+        side = -(dx * q->ns[0] + dy * q->ns[1] + dz * q->ns[2]);
+        if (!(side > 1e-9 * sqrt(d2 + q->a))) continue;
+        ps = poly_projected((const double(*)[3])v, 4, nx) / q->a; /* pi * radiance / flux */
+        for (c = 0; c < 3; c++)
+          e[c] += phi[c] * ps;
+        continue;
+      }
+      cy = -(ns[0] * dx + ns[1] * dy + ns[2] * dz);
+      cx = nx[0] * dx + nx[1] * dy + nx[2] * dz;
+      if (!(cy > 0) || !(cx > 0) || !(d2 > 0)) continue;
+      gf = cy * cx / (d2 * d2);
+      e[0] += phi[0] * gf;
+      e[1] += phi[1] * gf;
+      e[2] += phi[2] * gf;
+    }
+    for (c = 0; c < 3; c++)
+      rgb[3 * px + c] = (float)((double)s->mats[m].kd[c] / HVL_PI * e[c]);
+    if ((px + 1) % gb->w == 0) rd_progress(label, px + 1, npx);
+  }
+}
+
+static int gt_image(const rd_run *run, const spot_view *sv, int N, double eps, float *rgb,
+                    int *npatch) {
+  gt_patches gp;
+  char label[32];
+  if (gt_build(run, sv, N, &gp)) return -1;
+  snprintf(label, sizeof label, "hvl gt %d", N);
+  gt_shade(run, &gp, eps, label, rgb);
+  if (npatch) *npatch = gp.n;
+  gt_free(&gp);
+  return 0;
+}
+
+/* ---- error statistics ----------------------------------------------------------------------- */
+static int cmp_float(const void *a, const void *b) {
+  float x = *(const float *)a, y = *(const float *)b;
+  return x < y ? -1 : x > y;
+}
+
+static int cmp_d(const void *a, const void *b) {
+  double x = *(const double *)a, y = *(const double *)b;
+  return x < y ? -1 : x > y;
+}
+
+static double image_peak(const rd_gbuf *gb, const float *ref) {
+  size_t i, n = (size_t)gb->w * (size_t)gb->h;
+  double peak = 0;
+  for (i = 0; i < n * 3; i++)
+    if (gb->mat[i / 3] >= 0 && (double)ref[i] > peak) peak = (double)ref[i];
+  return peak;
+}
+
+/* p99 and max over the foreground pixels of max_rgb |a - ref| / peak(ref); rmse / peak */
+static void err_stats(const rd_gbuf *gb, const float *a, const float *ref, double *p99, double *mx,
+                      double *rmse) {
+  size_t i, n = (size_t)gb->w * (size_t)gb->h, cnt = 0;
+  double peak = image_peak(gb, ref), se = 0;
+  float *e = (float *)malloc((n ? n : 1) * sizeof(float));
+  *p99 = *mx = *rmse = (double)NAN;
+  if (!e || !(peak > 0)) {
+    free(e);
+    return;
+  }
+  for (i = 0; i < n; i++) {
+    double m = 0;
+    int c;
+    if (gb->mat[i] < 0) continue;
+    for (c = 0; c < 3; c++) {
+      double d = fabs((double)a[3 * i + (size_t)c] - (double)ref[3 * i + (size_t)c]);
+      se += d * d;
+      if (!(d <= m)) m = d;
+    }
+    e[cnt++] = (float)(m / peak);
+  }
+  if (cnt) {
+    qsort(e, cnt, sizeof(float), cmp_float);
+    *p99 = (double)e[(size_t)(0.99 * (double)(cnt - 1) + 0.5)];
+    *mx = (double)e[cnt - 1];
+    *rmse = sqrt(se / (3.0 * (double)cnt)) / peak;
+  }
+  free(e);
+}
+
+static int env_int(const char *name, int def, int lo, int hi) {
+  const char *v = getenv(name);
+  int x;
+  if (!v || !*v || sscanf(v, "%d", &x) != 1 || x < lo || x > hi) return def;
+  return x;
+}
+
+/* ---- the pass ------------------------------------------------------------------------------- */
+int rd_pass_hvl(rd_run *run) {
+  const rd_scene *s = run->scene;
+  const rd_gbuf *gb = run->gb;
+  const rd_light *l = NULL;
+  spot_view sv;
+  light_set ls;
+  size_t npx, nb;
+  float eps;
+  float *gt = NULL;
+  int i, method, rc = 0, rsm = env_int("SHLIGHT_HVL_RSM", 16, 2, 1024);
+  for (i = 0; i < s->nlights; i++)
+    if (s->lights[i].type == RD_LIGHT_SPOT) {
+      l = &s->lights[i];
+      break;
+    }
+  if (!l || !gb) return 0;
+  if (run->bands < 1 || run->bands > SHLIGHT_MAX_BANDS) {
+    fprintf(stderr, "hvl: bands %d out of [1, %d]\n", run->bands, SHLIGHT_MAX_BANDS);
+    return -1;
+  }
+  npx = (size_t)gb->w * (size_t)gb->h;
+  {
+    double dg = 0;
+    for (i = 0; i < 3; i++)
+      dg += ((double)s->bmax[i] - (double)s->bmin[i]) * ((double)s->bmax[i] - (double)s->bmin[i]);
+    eps = (float)(1e-5 * sqrt(dg));
+  }
+  nb = npx * 3 * sizeof(float);
+  spot_setup(l, &sv);
+  if (rsm_lights(run, &sv, rsm, rsm, &ls)) {
+    fprintf(stderr, "hvl: cannot build the RSM\n");
+    return -1;
+  }
+  {
+    double r1 = 0, r2 = 0;
+    for (i = 0; i < ls.count; i++) {
+      r1 += (double)ls.buf[(size_t)i * HVL_STRIDE + 12];
+      r2 += (double)ls.buf[(size_t)i * HVL_STRIDE + 13];
+    }
+    printf("hvl: spot at (%.3g, %.3g, %.3g), half-angle %.1f deg; RSM %dx%d, %d lights, "
+           "%d bands; mean radius r1 (neighbours) %.3g, r2 (fov) %.3g\n",
+           (double)l->c[0], (double)l->c[1], (double)l->c[2], (double)sv.fov * 90.0 / HVL_PI, rsm,
+           rsm, ls.count, run->bands, ls.count ? r1 / ls.count : 0.0,
+           ls.count ? r2 / ls.count : 0.0);
+  }
+  /* ground truth first: the statistics of the methods need it */
+  if (run->gt) {
+    int n1 = env_int("SHLIGHT_HVL_GT", run->gt >= 2 ? 512 : 128, 4, 4096), np1 = 0, np2 = 0;
+    float *half = (float *)malloc(nb);
+    double t0 = rd_cpu_ms(), t1, p99, mx, rmse;
+    gt = (float *)malloc(nb);
+    if (!gt || !half || gt_image(run, &sv, n1, (double)eps, gt, &np1)) {
+      free(half);
+      free(gt);
+      free(ls.buf);
+      fprintf(stderr, "hvl: ground truth failed\n");
+      return -1;
+    }
+    t1 = rd_cpu_ms();
+    if (gt_image(run, &sv, n1 / 2, (double)eps, half, &np2) == 0) {
+      err_stats(gb, half, gt, &p99, &mx, &rmse);
+      printf("hvl gt convergence: RSM %dx%d (%d patches) vs %dx%d (%d patches): "
+             "rmse/peak %.3g, p99 %.3g, max %.3g (the error of the coarse one; second order)\n",
+             n1 / 2, n1 / 2, np2, n1, n1, np1, rmse, p99, mx);
+    }
+    free(half);
+    {
+      rd_image im = rd_image_new(gb->w, gb->h);
+      if (im.rgb) {
+        memcpy(im.rgb, gt, nb);
+        rd_emit(run, "hvl", "gt", "gt", im, t1 - t0, 0, 0);
+      }
+    }
+  }
+  for (method = 0; method < M_COUNT; method++) {
+    float *b = method_buffer(&ls, method);
+    size_t mem = (size_t)ls.count * (size_t)method_stride[method] * sizeof(float);
+    float *cpu = NULL;
+    if (!b) {
+      rc = -1;
+      break;
+    }
+    if (run->use_cpu) {
+      double t[64], ms;
+      int r, reps = run->reps < 1 ? 1 : run->reps > 64 ? 64 : run->reps;
+      rd_image im = rd_image_new(gb->w, gb->h);
+      if (!im.rgb) {
+        free(b);
+        rc = -1;
+        break;
+      }
+      for (r = 0; r < reps; r++) {
+        double t0 = rd_cpu_ms();
+        shade_cpu(run, method, b, ls.count, eps, im.rgb);
+        t[r] = rd_cpu_ms() - t0;
+        if (t[r] > 2000.0) { /* slow: one timing is enough */
+          reps = r + 1;
+          break;
+        }
+      }
+      qsort(t, (size_t)reps, sizeof(double), cmp_d);
+      ms = t[reps / 2];
+      cpu = (float *)malloc(nb);
+      if (cpu) memcpy(cpu, im.rgb, nb);
+      if (gt) {
+        double p99, mx, rmse;
+        err_stats(gb, im.rgb, gt, &p99, &mx, &rmse);
+        printf("hvl %-15s cpu: |m - gt|/peak p99 %.4f max %.4f (rmse/peak %.4f)\n",
+               method_name[method], p99, mx, rmse);
+      }
+      rd_emit(run, "hvl", method_name[method], "cpu", im, ms, mem, 0);
+    }
+    if (run->use_gl) {
+      rd_image im = rd_image_new(gb->w, gb->h);
+      double ms = 0;
+      if (!im.rgb || run->bands > 16) {
+        if (run->bands > 16)
+          fprintf(stderr, "hvl: GLSL kernels take at most 16 bands; no gl path\n");
+        rd_image_free(&im);
+      } else if (shade_gl(run, method, b, ls.count, eps, im.rgb, &ms)) {
+        fprintf(stderr, "hvl: %s: GL pass failed\n", method_name[method]);
+        rd_image_free(&im);
+        rc = -1;
+      } else {
+        if (gt) {
+          double p99, mx, rmse;
+          err_stats(gb, im.rgb, gt, &p99, &mx, &rmse);
+          printf("hvl %-15s gl:  |m - gt|/peak p99 %.4f max %.4f (rmse/peak %.4f)\n",
+                 method_name[method], p99, mx, rmse);
+        }
+        if (cpu) {
+          double p99, mx, rmse;
+          err_stats(gb, im.rgb, cpu, &p99, &mx, &rmse);
+          printf("hvl %-15s gl vs cpu: max/peak %.3g\n", method_name[method], mx);
+        }
+        rd_emit(run, "hvl", method_name[method], "gl", im, ms, mem, method_tol[method]);
+      }
+    }
+    free(cpu);
+    free(b);
+  }
+  free(gt);
+  free(ls.buf);
+  return rc;
+}
