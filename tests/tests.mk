@@ -179,3 +179,13 @@ fuzz-brdftab: $(TESTS_BUILD)/fuzz_brdftab
 	cp tests/corpus/brdftab/* $(TESTS_BUILD)/fuzz_brdftab_corpus/
 	nice -n 19 $(TESTS_BUILD)/fuzz_brdftab -max_len=4096 -max_total_time=$(FUZZ_SECONDS) \
 	    -print_final_stats=1 -artifact_prefix=$(TESTS_BUILD)/ $(TESTS_BUILD)/fuzz_brdftab_corpus
+
+# >>ssf: VPL SH / irradiance, interleaving, filter weight against long double / binary128
+# references (tests/test_ssf.c)
+TESTS_SSF_DEPS := tests/test_ssf.c tests/ref/shref.h tests/tl.h shlight.h
+$(TESTS_BUILD)/test_ssf: $(TESTS_SSF_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -o $@ tests/test_ssf.c $(TESTS_QUADLIBS)
+$(TESTS_BUILD)/asan/test_ssf: $(TESTS_SSF_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/test_ssf.c $(TESTS_QUADLIBS)

@@ -575,7 +575,8 @@ ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
                'zh3': '3', 'fzh': 'SHLIGHT_MAX_BANDS', 'pn': '8', 'dn': '8',
                'v': 'SHLIGHT_POLYGON_MAX', 'io_px': 'SHLIGHT_CLIP_MAX', 'io_py': 'SHLIGHT_CLIP_MAX',
                'io_pz': 'SHLIGHT_CLIP_MAX', 'out_rp': '3', 'out_np': '1',
-               'out_idx': '4', 'out_w': '4', 'tab': 'SHLIGHT_BRDF_TABLE_FLOATS'}
+               'out_idx': '4', 'out_w': '4', 'tab': 'SHLIGHT_BRDF_TABLE_FLOATS',
+               'out_range': '2'}
 
 
 def glsl_param(prm, fname):
@@ -728,7 +729,9 @@ def main():
                       ('hvl', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
                                'shl_zonal.glsl', 'shl_light.glsl', 'shl_brdf.glsl']),
                       ('brdftab', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
-                                   'shl_zonal.glsl', 'shl_light.glsl'])):
+                                   'shl_zonal.glsl', 'shl_light.glsl']),
+                      ('ssf', ['shl_prelude.glsl', 'shl_basis.glsl', 'shl_gradient.glsl',
+                               'shl_zonal.glsl', 'shl_light.glsl', 'shl_brdf.glsl'])):
         gp = os.path.join(ROOT, 'shlight_glsl', 'shl_%s.glsl' % sec)
         old = open(gp).read() if os.path.exists(gp) else ''
         outputs.append((gp, old, glsl_module(new, sec, deps)))
