@@ -58,7 +58,8 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/tests/test_edge build/tests/selftest_arearef build/tests/test_edge_glsl \
   build/tests/test_brdf build/tests/native/test_brdf build/tests/test_brdf_glsl \
   build/tests/test_brdftab build/tests/fuzz_replay_brdftab build/tests/test_brdftab_glsl \
-  build/tests/test_ssf build/tests/test_ssf_glsl
+  build/tests/test_ssf build/tests/test_ssf_glsl \
+  build/render/shlrender build/tests/fuzz_replay_scene build/tests/test_rd_core
 step test_basis build/tests/test_basis
 # the same tests on this machine's SIMD paths (AVX-512 / AVX2 kernels) with FMA contraction
 step test_basis-march-native build/tests/native/test_basis
@@ -72,6 +73,9 @@ step arearef-selftest build/tests/selftest_arearef
 step test_brdf build/tests/test_brdf
 step test_brdf-march-native build/tests/native/test_brdf
 step test_ssf build/tests/test_ssf
+step test_rd_core build/tests/test_rd_core build/logs/rd_core.png
+step png-independent-decode $PY tests/png_check.py build/logs/rd_core.png 40 24
+step fuzz-corpus-replay-scene build/tests/fuzz_replay_scene tests/corpus/scene
 step test_glm build/tests/test_glm
 step fuzz-corpus-replay build/tests/fuzz_replay tests/corpus/basis
 step test_brdftab build/tests/test_brdftab
@@ -89,6 +93,10 @@ for b in $backends; do
   step "glsl-edge-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_edge_glsl
   step "glsl-brdf-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_brdf_glsl
   step "glsl-ssf-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_ssf_glsl
+  # the renderer: every scene and pass GL vs CPU on the first backend, cornell on the second
+  rsc=""
+  [ -z "$sub" ] || rsc="cornell"
+  step "render-$b" env SHLIGHT_RENDER_SCENES="$rsc" bash tests/test_render.sh $b
   step "glsl-brdftab-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_brdftab_glsl
 done
 if [ "${SHLIGHT_TEST_QUICK:-0}" != 1 ]; then
@@ -96,13 +104,14 @@ if [ "${SHLIGHT_TEST_QUICK:-0}" != 1 ]; then
   step asan-ubsan-build $MAKE -s -j2 build/tests/asan/test_basis build/tests/asan/test_glm \
     build/tests/asan/fuzz_replay build/tests/asan/test_light build/tests/asan/test_grid build/tests/asan/test_edge build/tests/asan/test_brdf \
     build/tests/asan/test_gl_smoke build/tests/asan/test_brdftab build/tests/asan/fuzz_replay_brdftab \
-    build/tests/asan/test_ssf
+    build/tests/asan/test_ssf build/tests/asan/fuzz_replay_scene
   step asan-ubsan $MAKE -s test-asan
   step asan-ubsan-light build/tests/asan/test_light
   step asan-ubsan-grid build/tests/asan/test_grid
   step asan-ubsan-edge env SHLIGHT_TEST_QUICK=1 build/tests/asan/test_edge
   step asan-ubsan-brdf build/tests/asan/test_brdf
   step asan-ubsan-ssf build/tests/asan/test_ssf
+  step asan-ubsan-fuzz-replay-scene build/tests/asan/fuzz_replay_scene tests/corpus/scene
   step asan-ubsan-brdftab build/tests/asan/test_brdftab
   step asan-ubsan-fuzz-replay-brdftab build/tests/asan/fuzz_replay_brdftab tests/corpus/brdftab
   step asan-ubsan-gl $MAKE -s gl-test-asan
