@@ -149,12 +149,12 @@ $(BUILD)/tests/test_ssf_glsl: tests/test_ssf_glsl.c shlight.h tests/tl.h $(GL_SR
 .PHONY: render-example render-results
 render-example: $(BUILD)/render/shlrender
 	$(BUILD)/render/shlrender --scene cornell --size 256x192 --gt 1 --out out
-# the README's results table and docs/ images: every scene at 256x192 with the full ground
+# the README's results table and docs/ images: every scene at 160x120 with the full ground
 # truth (opt-in: minutes on 2 cores); writes build/render/results/*.md and PNGs
 render-results: $(BUILD)/render/shlrender
 	@mkdir -p $(BUILD)/render/results
 	@set -e; for s in cornell spheres manylights glossy; do \
-	  $(BUILD)/render/shlrender --scene $$s --size 256x192 --gt 2 --reps 5 \
+	  $(BUILD)/render/shlrender --scene $$s --size 160x120 --gt 2 --reps 5 \
 	    --out $(BUILD)/render/results | tee $(BUILD)/render/results/$$s.md; done
 $(BUILD)/tests/test_rd_core: tests/test_rd_core.c render/rd_core.c render/rd.h tests/tl.h
 	@mkdir -p $(@D)
