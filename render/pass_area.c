@@ -1034,21 +1034,6 @@ static int ar_cmp(const void *a, const void *b) {
   return x < y ? -1 : x > y;
 }
 
-static double ar_relrmse(const rd_gbuf *gb, const rd_image *a, const rd_image *ref, int mat) {
-  size_t q, np = (size_t)gb->w * (size_t)gb->h;
-  double se = 0.0, ss = 0.0;
-  int c;
-  for (q = 0; q < np; q++) {
-    if (gb->mat[q] < 0 || (mat >= 0 && gb->mat[q] != mat)) continue;
-    for (c = 0; c < 3; c++) {
-      double r = (double)ref->rgb[3 * q + (size_t)c], d = (double)a->rgb[3 * q + (size_t)c] - r;
-      se += d * d;
-      ss += r * r;
-    }
-  }
-  return ss > 0.0 ? sqrt(se / ss) : 0.0;
-}
-
 /* CPU image of method m (index into ar_methods), reps times; median per-thread CPU ms */
 static double ar_cpu_image(const rd_run *run, const float *lb, int nl, const float *mats, int m,
                            rd_image *img) {
@@ -1237,7 +1222,7 @@ int rd_pass_area(rd_run *run) {
     printf("area gt: diffuse part of polygons and spheres in closed form, the rest by adaptive "
            "Gauss-Kronrod cubature, tolerance %.0e per light (%.0f ms); gt_coarse at %.0e (%.0f "
            "ms) vs gt: RMSE/RMS %.2e, max|diff|/peak %.2e\n",
-           tol, tms[0], 10.0 * tol, tms[1], ar_relrmse(gb, &outs[i0 + 1].img, &outs[i0].img, -1),
+           tol, tms[0], 10.0 * tol, tms[1], rd_relrmse(gb, &outs[i0 + 1].img, &outs[i0].img, -1),
            rd_compare(&outs[i0 + 1].img, &outs[i0].img, gb->mat).maxrel);
     printf("area vs gt, RMSE/RMS by material (");
     for (k = 0; k < s->nmats && k < 6; k++)
@@ -1249,9 +1234,9 @@ int rd_pass_area(rd_run *run) {
     for (m = 0; m < nout; m++) {
       if (m == i0 || (!strcmp(outs[m].path, "gl") && run->use_cpu)) continue;
       printf("  %-16s %-3s all %.2e:", outs[m].method, outs[m].path,
-             ar_relrmse(gb, &outs[m].img, &outs[i0].img, -1));
+             rd_relrmse(gb, &outs[m].img, &outs[i0].img, -1));
       for (k = 0; k < s->nmats && k < 6; k++)
-        printf(" %.2e", ar_relrmse(gb, &outs[m].img, &outs[i0].img, k));
+        printf(" %.2e", rd_relrmse(gb, &outs[m].img, &outs[i0].img, k));
       printf("\n");
     }
   }

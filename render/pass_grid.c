@@ -683,23 +683,6 @@ static void gd_shade_gt(const gd_lights *L, const float xf[3], const float nf[3]
     out[c] = (float)((double)kd[c] / GD_PI * acc[c]);
 }
 
-/* RMSE of a against ref over the pixels of material mat (-1: every surface pixel), relative
-   to the RMS of ref there */
-static double gd_relrmse(const rd_gbuf *gb, const rd_image *a, const rd_image *ref, int mat) {
-  size_t q, np = (size_t)gb->w * (size_t)gb->h;
-  double se = 0.0, ss = 0.0;
-  int c;
-  for (q = 0; q < np; q++) {
-    if (gb->mat[q] < 0 || (mat >= 0 && gb->mat[q] != mat)) continue;
-    for (c = 0; c < 3; c++) {
-      double r = (double)ref->rgb[3 * q + (size_t)c], d = (double)a->rgb[3 * q + (size_t)c] - r;
-      se += d * d;
-      ss += r * r;
-    }
-  }
-  return ss > 0.0 ? sqrt(se / ss) : 0.0;
-}
-
 /* ---- driver ------------------------------------------------------------------------------ */
 typedef struct {
   char method[40], path[8];
@@ -1001,10 +984,10 @@ int rd_pass_grid(rd_run *run) {
         if (i == ref || strcmp(outs[i].path, outs[ref].path) != 0) continue;
         printf("  %-16s %.2e  %.2e (", outs[i].method,
                rd_compare(&outs[i].img, &outs[ref].img, gb->mat).maxrel,
-               gd_relrmse(gb, &outs[i].img, &outs[ref].img, -1));
+               rd_relrmse(gb, &outs[i].img, &outs[ref].img, -1));
         for (m = 0; m < s->nmats && m < 6; m++)
           printf("%s%s %.2e", m ? ", " : "", s->mats[m].name,
-                 gd_relrmse(gb, &outs[i].img, &outs[ref].img, m));
+                 rd_relrmse(gb, &outs[i].img, &outs[ref].img, m));
         printf(")  %.3f (%.3f)  %.1f\n", outs[ref].ms > 0.0 ? outs[i].ms / outs[ref].ms : 0.0,
                outs[ref].ms > 0.0 ? (outs[i].ms + g->wall_ms) / outs[ref].ms : 0.0,
                (double)outs[i].mem / 1024.0);

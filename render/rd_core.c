@@ -200,6 +200,21 @@ rd_metrics rd_compare(const rd_image *a, const rd_image *ref, const int *mask) {
   return m;
 }
 
+double rd_relrmse(const rd_gbuf *gb, const rd_image *a, const rd_image *ref, int mat) {
+  size_t q, np = (size_t)gb->w * (size_t)gb->h;
+  double se = 0.0, ss = 0.0;
+  int c;
+  for (q = 0; q < np; q++) {
+    if (gb->mat[q] < 0 || (mat >= 0 && gb->mat[q] != mat)) continue;
+    for (c = 0; c < 3; c++) {
+      double r = (double)ref->rgb[3 * q + (size_t)c], d = (double)a->rgb[3 * q + (size_t)c] - r;
+      se += d * d;
+      ss += r * r;
+    }
+  }
+  return ss > 0.0 ? sqrt(se / ss) : 0.0;
+}
+
 void rd_progress(const char *label, long done, long total) {
   static int on = -1;
   int width = 40, k;
