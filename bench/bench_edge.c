@@ -134,12 +134,14 @@ static void stats(double *x, int n, double *med, double *p95, double *mx) {
   *med = n ? x[n / 2] : 0, *p95 = n ? x[n * 95 / 100] : 0, *mx = n ? x[n - 1] : 0;
 }
 
-#define NM 6
-static const int MS[NM] = {SHLIGHT_EDGE_EXACT,           SHLIGHT_EDGE_LORENTZ,
-                           SHLIGHT_EDGE_LORENTZ_PEARSON, SHLIGHT_EDGE_ELLIPSOID,
-                           SHLIGHT_EDGE_QUADRATURE,      SHLIGHT_EDGE_AUTO};
+#define NM 7
+static const int MS[NM] = {
+    SHLIGHT_EDGE_EXACT,     SHLIGHT_EDGE_LORENTZ,    SHLIGHT_EDGE_LORENTZ_PEARSON,
+    SHLIGHT_EDGE_ELLIPSOID, SHLIGHT_EDGE_QUADRATURE, SHLIGHT_EDGE_FAST,
+    SHLIGHT_EDGE_AUTO};
 static const char *MN[NM] = {"exact",     "Lorentzian",          "Lorentzian-Pearson",
-                             "ellipsoid", "quadrature (Stokes)", "auto"};
+                             "ellipsoid", "quadrature (Stokes)", "fast (Stokes, float SIMD)",
+                             "auto"};
 #define NE 6
 static const double ES[NE] = {1, 10, 100, 1000, 10000, 57.5};
 

@@ -14,9 +14,9 @@ ES="1 10 100 1000 10000"
   echo
   printf '| method |'; for e in $ES; do printf ' e=%s |' "$e"; done; echo
   printf '|---|'; for e in $ES; do printf -- '---|'; done; echo
-  for m in 0 1 2 3 5 4; do
+  for m in 0 1 2 3 5 6 4; do
     case $m in 0) n=exact ;; 1) n=Lorentzian ;; 2) n=Lorentzian-Pearson ;; 3) n=ellipsoid ;;
-      4) n=auto ;; 5) n="quadrature (Stokes)" ;; esac
+      4) n=auto ;; 5) n="quadrature (Stokes)" ;; 6) n="fast (Stokes, float SIMD)" ;; esac
     printf '| %s |' "$n"
     for e in $ES; do
       K=256

@@ -193,7 +193,7 @@ float shl_edge_integral(float phi, float c, float delta, float n, int method) {
     a = lo;
     b = SHLIGHT_MINR(hi, 1.5707963267948966);
     if (nf <= 2 || cc < 1.0e-3 || method == SHLIGHT_EDGE_EXACT || method == SHLIGHT_EDGE_AUTO ||
-        method == SHLIGHT_EDGE_QUADRATURE) {
+        method == SHLIGHT_EDGE_QUADRATURE || method == SHLIGHT_EDGE_FAST) {
       sum = sum + sg * shli_edge_exact(a, b, cc, nf);
     } else {
       sum = sum + sg * shli_edge_fit(a, b, cc, nf, method);
@@ -248,6 +248,260 @@ int shli_poly_clip(inout shli_real io_px[SHLIGHT_CLIP_MAX], inout shli_real io_p
   }
   return k;
 }
+
+#if SHLIGHT_EDGE_FAST_ON
+float shli_fast_node(float t, float beta, float c2, float w2, float hm) {
+  float r = 1.0f / (1.0f - t);
+  float su = SHLIGHT_FSIN(beta * t * r);
+  float q = SHLIGHT_MAXR(c2 * su * su, 1.0e-30f);
+  float y = w2 / q;
+  y = SHLIGHT_MINR(y, 1.0e30f);
+  return (1.0f - SHLIGHT_FEXP(-hm * SHLIGHT_FLOG1P(y))) * beta * r * r;
+}
+#endif
+
+#if SHLIGHT_EDGE_FAST_ON
+float shli_fast_half(float lo, float hi, float beta, float c2, float w2, float hm) {
+  float ulo = 1.57079633f - SHLIGHT_MAXR(hi, lo);
+  float uhi = 1.57079633f - lo;
+  float tl = ulo / (ulo + beta);
+  float th = uhi / (uhi + beta);
+  float m = 0.5f * (tl + th);
+  float r = 0.5f * (th - tl);
+  float s = 0.652145155f * (shli_fast_node(m - 0.339981044f * r, beta, c2, w2, hm) +
+                            shli_fast_node(m + 0.339981044f * r, beta, c2, w2, hm));
+  s = s + 0.347854845f * (shli_fast_node(m - 0.861136312f * r, beta, c2, w2, hm) +
+                          shli_fast_node(m + 0.861136312f * r, beta, c2, w2, hm));
+  return r * s;
+}
+#endif
+
+#if SHLIGHT_EDGE_FAST_ON
+int shli_fast_clip(inout float io_px[SHLIGHT_CLIP_MAX], inout float io_py[SHLIGHT_CLIP_MAX],
+                   inout float io_pz[SHLIGHT_CLIP_MAX], int nv, float mx, float my, float mz) {
+  float tx[SHLIGHT_CLIP_MAX];
+  float ty[SHLIGHT_CLIP_MAX];
+  float tz[SHLIGHT_CLIP_MAX];
+  float d[SHLIGHT_CLIP_MAX];
+  float dmin = 0.0f;
+  float t;
+  int i;
+  int j;
+  int k = 0;
+  for (i = 0; i < nv; ++i) {
+    d[i] = io_px[i] * mx + io_py[i] * my + io_pz[i] * mz;
+    dmin = SHLIGHT_MINR(dmin, d[i]);
+  }
+  if (dmin >= 0.0f) {
+    return nv;
+  }
+  for (i = 0; i < nv; ++i) {
+    j = i + 1;
+    if (j == nv) {
+      j = 0;
+    }
+    if (d[i] >= 0.0f && k < SHLIGHT_CLIP_MAX) {
+      tx[k] = io_px[i];
+      ty[k] = io_py[i];
+      tz[k] = io_pz[i];
+      k = k + 1;
+    }
+    if (((d[i] >= 0.0f && d[j] < 0.0f) || (d[i] < 0.0f && d[j] >= 0.0f)) && k < SHLIGHT_CLIP_MAX) {
+      t = d[i] / (d[i] - d[j]);
+      tx[k] = io_px[i] + t * (io_px[j] - io_px[i]);
+      ty[k] = io_py[i] + t * (io_py[j] - io_py[i]);
+      tz[k] = io_pz[i] + t * (io_pz[j] - io_pz[i]);
+      k = k + 1;
+    }
+  }
+  for (i = 0; i < k; ++i) {
+    io_px[i] = tx[i];
+    io_py[i] = ty[i];
+    io_pz[i] = tz[i];
+  }
+  return k;
+}
+#endif
+
+#if SHLIGHT_EDGE_FAST_ON
+float shli_fast_moment(inout float io_px[SHLIGHT_CLIP_MAX], inout float io_py[SHLIGHT_CLIP_MAX],
+                       inout float io_pz[SHLIGHT_CLIP_MAX], int nv, int clip_n, float nx, float ny,
+                       float nz, float rx, float ry, float rz, float e) {
+  float qx[SHLIGHT_FAST_PAD];
+  float qy[SHLIGHT_FAST_PAD];
+  float qz[SHLIGHT_FAST_PAD];
+  float eta[SHLIGHT_LANES];
+  float etb[SHLIGHT_LANES];
+  float ebe[SHLIGHT_LANES];
+  float ew2[SHLIGHT_LANES];
+  float esg[SHLIGHT_LANES];
+  float edi[SHLIGHT_LANES];
+  float hlo[2 * SHLIGHT_LANES];
+  float hhi[2 * SHLIGHT_LANES];
+  float hbe[2 * SHLIGHT_LANES];
+  float hw2[2 * SHLIGHT_LANES];
+  float hsg[2 * SHLIGHT_LANES];
+  float val[SHLIGHT_LANES];
+  float ox = 0.0f;
+  float oy = 0.0f;
+  float oz = 0.0f;
+  float orient;
+  float sum = 0.0f;
+  float l = 0.0f;
+  float ee = SHLIGHT_MAXR(e, 0.0f);
+  float hm = 0.5f * (ee + 1.0f);
+  float ax;
+  float ay;
+  float az;
+  float bx;
+  float by;
+  float bz;
+  float cx;
+  float cy;
+  float cz;
+  float nn;
+  float nr;
+  float xa;
+  float xb;
+  float ta;
+  float dt;
+  float w2;
+  float x;
+  float g;
+  int nc = nv;
+  int nh;
+  int i;
+  int j;
+  int i0;
+  int h0;
+  if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(e < 1.0e30f)) {
+    return 0.0f;
+  }
+  for (i = 0; i < nv; ++i) {
+    l = SHLIGHT_MAXR(l, SHLIGHT_ABSF(io_px[i]) + SHLIGHT_ABSF(io_py[i]) + SHLIGHT_ABSF(io_pz[i]));
+  }
+  if (!(l > 0.0f) || !(l <= 3.4028234e38f)) {
+    return 0.0f; /* zero, NaN or infinite vertices */
+  }
+  l = 1.0f / l;
+  for (i = 0; i < nv; ++i) {
+    io_px[i] = io_px[i] * l;
+    io_py[i] = io_py[i] * l;
+    io_pz[i] = io_pz[i] * l;
+  }
+  for (i = 0; i < nv; ++i) {
+    j = i + 1;
+    if (j == nv) {
+      j = 0;
+    }
+    ox = ox + io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+    oy = oy + io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+    oz = oz + io_px[i] * io_py[j] - io_py[i] * io_px[j];
+  }
+  orient = ox * io_px[0] + oy * io_py[0] + oz * io_pz[0];
+  if (clip_n != 0) {
+    nc = shli_fast_clip(io_px, io_py, io_pz, nc, nx, ny, nz);
+  }
+  nc = shli_fast_clip(io_px, io_py, io_pz, nc, rx, ry, rz);
+  if (nc < 3 || !(orient != 0.0f)) {
+    return 0.0f;
+  }
+  for (i = 0; i < nc; ++i) {
+    l = SHLIGHT_SQRTF(io_px[i] * io_px[i] + io_py[i] * io_py[i] + io_pz[i] * io_pz[i]);
+    if (!(l > 0.0f)) {
+      return 0.0f;
+    }
+    qx[i] = io_px[i] / l;
+    qy[i] = io_py[i] / l;
+    qz[i] = io_pz[i] / l;
+  }
+  /* closing vertex, then point edges (0 by construction) up to a whole block */
+  for (i = nc; i < SHLIGHT_FAST_PAD; ++i) {
+    qx[i] = qx[0];
+    qy[i] = qy[0];
+    qz[i] = qz[0];
+  }
+  for (i0 = 0; i0 < nc; i0 = i0 + SHLIGHT_LANES) {
+    /* pass 1, SHLIGHT_LANES edges a -> b: the arc [ta, tb] in theta, the grading scale beta,
+       w^2, sgn(w); an edge on the clip circle u.r = 0 (c = 0, integrand 1) gives its arc
+       length directly, a point edge or r in the edge's plane (w = 0, integrand 0) nothing */
+    for (j = 0; j < SHLIGHT_LANES; ++j) {
+      ax = qx[i0 + j];
+      ay = qy[i0 + j];
+      az = qz[i0 + j];
+      bx = qx[i0 + j + 1];
+      by = qy[i0 + j + 1];
+      bz = qz[i0 + j + 1];
+      cx = ay * bz - az * by;
+      cy = az * bx - ax * bz;
+      cz = ax * by - ay * bx;
+      nn = cx * cx + cy * cy + cz * cz;
+      nr = cx * rx + cy * ry + cz * rz;
+      xa = ax * rx + ay * ry + az * rz;
+      xb = bx * rx + by * ry + bz * rz;
+      w2 = nr * nr / SHLIGHT_MAXR(nn, 1.0e-36f);
+      w2 = SHLIGHT_MINR(w2, 1.0f);
+      ta = SHLIGHT_FATAN2(ax * (cy * rz - cz * ry) + ay * (cz * rx - cx * rz) +
+                              az * (cx * ry - cy * rx),
+                          SHLIGHT_ABSF(nr) * SHLIGHT_MAXR(xa, 0.0f));
+      dt = SHLIGHT_FATAN2(SHLIGHT_ABSF(nr), ax * bx + ay * by + az * bz - xa * xb);
+      x = SHLIGHT_FSQRT(w2 * (ee + 1.0f));
+      g = 1.5f * x / (1.0f + 0.63662f * x);
+      eta[j] = ta;
+      etb[j] = SHLIGHT_MINR(ta + dt, 1.57079633f);
+      ebe[j] = SHLIGHT_MAXR(g, 1.0e-20f);
+      ew2[j] = w2;
+      g = nr < 0.0f ? -1.0f : 1.0f;
+      x = (SHLIGHT_ABSF(xa) < 1.0e-5f && SHLIGHT_ABSF(xb) < 1.0e-5f) ? 1.0f : 0.0f;
+      x = (nn > 1.0e-36f && nr != 0.0f) ? x : -1.0f;
+      esg[j] = x == 0.0f ? g : 0.0f;
+      edi[j] = x > 0.0f ? g * dt : 0.0f;
+    }
+    /* pass 2: their non-empty half-arcs in |theta| (padding lanes are point edges: none) */
+    nh = 0;
+    for (j = 0; j < SHLIGHT_MINR(SHLIGHT_LANES, nc - i0); ++j) {
+      sum = sum + edi[j];
+      if (esg[j] != 0.0f && eta[j] < 0.0f) {
+        hlo[nh] = SHLIGHT_MAXR(-etb[j], 0.0f);
+        hhi[nh] = -eta[j];
+        hbe[nh] = ebe[j];
+        hw2[nh] = ew2[j];
+        hsg[nh] = esg[j];
+        nh = nh + 1;
+      }
+      if (esg[j] != 0.0f && etb[j] > 0.0f) {
+        hlo[nh] = SHLIGHT_MAXR(eta[j], 0.0f);
+        hhi[nh] = etb[j];
+        hbe[nh] = ebe[j];
+        hw2[nh] = ew2[j];
+        hsg[nh] = esg[j];
+        nh = nh + 1;
+      }
+    }
+    for (j = nh; j < SHLIGHT_LANES * ((nh + SHLIGHT_LANES - 1) / SHLIGHT_LANES); ++j) {
+      hlo[j] = 0.0f;
+      hhi[j] = 0.0f;
+      hbe[j] = 1.0f;
+      hw2[j] = 0.0f;
+      hsg[j] = 0.0f;
+    }
+    /* pass 3: the half-arcs' rules, SHLIGHT_LANES at a time */
+    for (h0 = 0; h0 < nh; h0 = h0 + SHLIGHT_LANES) {
+      for (j = 0; j < SHLIGHT_LANES; ++j) {
+        val[j] = hsg[h0 + j] * shli_fast_half(hlo[h0 + j], hhi[h0 + j], hbe[h0 + j],
+                                              1.0f - hw2[h0 + j], hw2[h0 + j], hm);
+      }
+      for (j = 0; j < SHLIGHT_LANES; ++j) {
+        sum = sum + val[j];
+      }
+    }
+  }
+  if (orient < 0.0f) {
+    sum = -sum;
+  }
+  return SHLIGHT_MAXR(sum, 0.0f);
+}
+#endif
 
 shli_real shli_stokes_node(shli_real s, shli_real beta, shli_real c2, shli_real w2, shli_real hm) {
   shli_real es = SHLIGHT_EXPR(s);
@@ -489,6 +743,9 @@ float shl_polygon_moment(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float e
   shli_real px[SHLIGHT_CLIP_MAX];
   shli_real py[SHLIGHT_CLIP_MAX];
   shli_real pz[SHLIGHT_CLIP_MAX];
+  float fx[SHLIGHT_CLIP_MAX];
+  float fy[SHLIGHT_CLIP_MAX];
+  float fz[SHLIGHT_CLIP_MAX];
   shli_real rx = SHLIGHT_REAL(axis[0]);
   shli_real ry = SHLIGHT_REAL(axis[1]);
   shli_real rz = SHLIGHT_REAL(axis[2]);
@@ -513,7 +770,22 @@ float shl_polygon_moment(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float e
     if (!(SHLIGHT_ABSR(px[i]) + SHLIGHT_ABSR(py[i]) + SHLIGHT_ABSR(pz[i]) < SHLIGHT_REAL_MAX)) {
       return 0.0f;
     }
+    fx[i] = v[i][0];
+    fy[i] = v[i][1];
+    fz[i] = v[i][2];
   }
+#if SHLIGHT_EDGE_FAST_ON
+  if (mth == SHLIGHT_EDGE_FAST) {
+    return shli_fast_moment(fx, fy, fz, nv, 0, SHLIGHT_FLOAT(rx), SHLIGHT_FLOAT(ry),
+                            SHLIGHT_FLOAT(rz), SHLIGHT_FLOAT(rx), SHLIGHT_FLOAT(ry),
+                            SHLIGHT_FLOAT(rz), SHLIGHT_FLOAT(e)) /
+           SHLIGHT_FLOAT(e + 1.0);
+  }
+#else
+  if (mth == SHLIGHT_EDGE_FAST) {
+    mth = SHLIGHT_EDGE_QUADRATURE;
+  }
+#endif
   if (mth == SHLIGHT_EDGE_AUTO) {
     mth = SHLIGHT_EDGE_QUADRATURE;
     if (e <= 16.0 && e == SHLIGHT_ITOR(SHLIGHT_FTOI(e))) {
@@ -537,10 +809,30 @@ shli_real shli_phong_arrays(inout shli_real io_px[SHLIGHT_CLIP_MAX],
                             inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real nx,
                             shli_real ny, shli_real nz, shli_real rx, shli_real ry, shli_real rz,
                             shli_real exponent, int method) {
+  float fx[SHLIGHT_CLIP_MAX];
+  float fy[SHLIGHT_CLIP_MAX];
+  float fz[SHLIGHT_CLIP_MAX];
   shli_real e = exponent;
   int i;
   int nc;
   int mth = method;
+#if SHLIGHT_EDGE_FAST_ON
+  if (mth == SHLIGHT_EDGE_FAST && nv >= 3 && nv <= SHLIGHT_POLYGON_MAX) {
+    for (i = 0; i < nv; ++i) {
+      fx[i] = SHLIGHT_FLOAT(io_px[i]);
+      fy[i] = SHLIGHT_FLOAT(io_py[i]);
+      fz[i] = SHLIGHT_FLOAT(io_pz[i]);
+    }
+    return 0.15915494309189534 *
+           SHLIGHT_REAL(shli_fast_moment(fx, fy, fz, nv, 1, SHLIGHT_FLOAT(nx), SHLIGHT_FLOAT(ny),
+                                         SHLIGHT_FLOAT(nz), SHLIGHT_FLOAT(rx), SHLIGHT_FLOAT(ry),
+                                         SHLIGHT_FLOAT(rz), SHLIGHT_FLOAT(e)));
+  }
+#else
+  if (mth == SHLIGHT_EDGE_FAST) {
+    mth = SHLIGHT_EDGE_QUADRATURE;
+  }
+#endif
   if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(e < 1.0e30)) {
     return 0.0;
   }
@@ -593,6 +885,9 @@ shli_real shli_polygon_phong_r(vec3 v[SHLIGHT_POLYGON_MAX], int nv, shli_real nx
 
 float shl_polygon_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float exponent,
                         int method) {
+  float fx[SHLIGHT_CLIP_MAX];
+  float fy[SHLIGHT_CLIP_MAX];
+  float fz[SHLIGHT_CLIP_MAX];
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -602,9 +897,22 @@ float shl_polygon_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view
   shli_real ry = 2.0 * dv * ny - SHLIGHT_REAL(view[1]);
   shli_real rz = 2.0 * dv * nz - SHLIGHT_REAL(view[2]);
   shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
+  int i;
   if (!(dv > 0.0) || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX)) {
     return 0.0f;
   }
+#if SHLIGHT_EDGE_FAST_ON
+  if (method == SHLIGHT_EDGE_FAST && nv >= 3 && nv <= SHLIGHT_POLYGON_MAX) {
+    for (i = 0; i < nv; ++i) {
+      fx[i] = v[i][0];
+      fy[i] = v[i][1];
+      fz[i] = v[i][2];
+    }
+    return 0.159154943f * shli_fast_moment(fx, fy, fz, nv, 1, nrm[0], nrm[1], nrm[2],
+                                           SHLIGHT_FLOAT(rx / l), SHLIGHT_FLOAT(ry / l),
+                                           SHLIGHT_FLOAT(rz / l), exponent);
+  }
+#endif
   return SHLIGHT_FLOAT(shli_polygon_phong_r(v, nv, nx, ny, nz, rx / l, ry / l, rz / l,
                                             SHLIGHT_REAL(exponent), method));
 }

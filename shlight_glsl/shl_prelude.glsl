@@ -34,6 +34,13 @@
 #define SHLIGHT_SINR(x) sin(x)
 #define SHLIGHT_COSR(x) cos(x)
 #define SHLIGHT_POWR(x, y) pow((x), (y))
+#define SHLIGHT_SQRTF(x) sqrt(x)
+#define SHLIGHT_ABSF(x) abs(x)
+#define SHLIGHT_FATAN2(y, x) atan((y), (x))
+#define SHLIGHT_FSIN(x) sin(x)
+#define SHLIGHT_FSQRT(x) sqrt(x)
+#define SHLIGHT_FLOG1P(x) ((x) < 0.01 ? (x) * (1.0 - (x) * (0.5 - (x) * (0.33333333 - 0.25 * (x)))) : log(1.0 + (x)))
+#define SHLIGHT_FEXP(x) exp(x)
 #define SHLIGHT_EDGE_EXACT 0
 #define SHLIGHT_EDGE_LORENTZ 1
 #define SHLIGHT_EDGE_LORENTZ_PEARSON 2
@@ -42,5 +49,11 @@
 #define SHLIGHT_EDGE_QUADRATURE 5
 #define SHLIGHT_POLYGON_MAX 8
 #define SHLIGHT_CLIP_MAX 20
+#define SHLIGHT_EDGE_FAST 6
+#ifndef SHLIGHT_EDGE_FAST_ON
+#define SHLIGHT_EDGE_FAST_ON 0
+#endif
+#define SHLIGHT_LANES 1
+#define SHLIGHT_FAST_PAD (SHLIGHT_CLIP_MAX + SHLIGHT_LANES)
 #define SHLIGHT_ASSERT(x)
 #endif

@@ -90,7 +90,7 @@ for b in $backends; do
   step "gl-smoke-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_gl_smoke
   step "glsl-vs-c-$b" env SHLIGHT_GL_BACKEND=$b $sub build/tests/test_glsl
   step "glsl-grid-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_grid_glsl
-  step "glsl-edge-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_edge_glsl
+  step "glsl-edge-vs-c-$b" env SHLIGHT_GL_BACKEND=$b $sub build/tests/test_edge_glsl
   step "glsl-brdf-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_brdf_glsl
   step "glsl-ssf-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_ssf_glsl
   # the renderer: every scene and pass GL vs CPU on the first backend, cornell on the second

@@ -656,6 +656,8 @@ def split_items(lines):
 def guard(kind, name):
     if kind == 'tab' or name.endswith('_loop'):
         return '#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS'
+    if name.startswith('shli_fast_'):
+        return '#if SHLIGHT_EDGE_FAST_ON'
     m = re.match(r'shli_sh_(?:core|grad|poly)_(\d+)$', name)
     if m:
         return '#if SHLIGHT_MAX_BANDS >= %s' % m.group(1)

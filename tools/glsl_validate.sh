@@ -93,6 +93,8 @@ for bands in 4 8; do
       echo "#extension GL_GOOGLE_cpp_style_line_directive : require"
       case $version in *es) printf 'precision highp float;\nprecision highp int;\n' ;; esac
       echo "#define SHLIGHT_MAX_BANDS $bands"
+      # the 8-band runs also compile the FAST edge method (off by default in GLSL)
+      [ "$bands" = 8 ] && echo "#define SHLIGHT_EDGE_FAST_ON 1"
       for f in "${files[@]}"; do
         echo "#line 1 \"$(basename "$f")\""
         cat "$f"
