@@ -28008,6 +28008,254 @@ SHLIGHT_INLINE shli_real shli_half_sum(shli_real *io_px, shli_real *io_py, shli_
   return sum * 0.15915494309189534;
 }
 
+/* integral along the great arc a -> b (unit, inside t = u.n >= 0, b != -a) of t^p (u.c)^j ds,
+   j = 0 or 1, p >= 0: t = R cos(s - s0) along the arc; the arc is cut at the peak s0 and each
+   side integrated by 8-node Gauss-Legendre in x after the graded change d = beta sinh(x) of
+   the distance d to the peak, beta = 1 / sqrt(p + 1) (the peak's width). */
+SHLIGHT_INLINE shli_real shli_half_arc(shli_real ax, shli_real ay, shli_real az, shli_real bx,
+                                       shli_real by, shli_real bz, shli_real nx, shli_real ny,
+                                       shli_real nz, shli_real cx, shli_real cy, shli_real cz,
+                                       shli_real p, int j) {
+  shli_real ex = ay * bz - az * by;
+  shli_real ey = az * bx - ax * bz;
+  shli_real ez = ax * by - ay * bx;
+  shli_real sp = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
+  shli_real cp = ax * bx + ay * by + az * bz;
+  shli_real phi;
+  shli_real ux;
+  shli_real uy;
+  shli_real uz;
+  shli_real ta;
+  shli_real tb;
+  shli_real ca;
+  shli_real cb;
+  shli_real rr;
+  shli_real s0;
+  shli_real beta;
+  shli_real lo;
+  shli_real hi;
+  shli_real x0;
+  shli_real x1;
+  shli_real xm;
+  shli_real xr;
+  shli_real x;
+  shli_real d;
+  shli_real s;
+  shli_real t;
+  shli_real f;
+  shli_real sum = 0.0;
+  shli_real gx;
+  shli_real gw;
+  int side;
+  int q;
+  if (!(sp > 1.0e-30)) {
+    return 0.0;
+  }
+  phi = shli_atan2r(sp, cp);
+  ux = (bx - cp * ax) / sp;
+  uy = (by - cp * ay) / sp;
+  uz = (bz - cp * az) / sp;
+  ta = ax * nx + ay * ny + az * nz;
+  tb = ux * nx + uy * ny + uz * nz;
+  ca = ax * cx + ay * cy + az * cz;
+  cb = ux * cx + uy * cy + uz * cz;
+  rr = SHLIGHT_SQRTR(ta * ta + tb * tb);
+  if (!(rr > 0.0)) {
+    return 0.0;
+  }
+  s0 = SHLIGHT_MINR(SHLIGHT_MAXR(shli_atan2r(tb, ta), 0.0), phi);
+  beta = 1.0 / SHLIGHT_SQRTR(p + 1.0);
+  for (side = 0; side < 2; ++side) {
+    lo = 0.0;
+    hi = phi - s0;
+    if (side == 1) {
+      hi = s0;
+    }
+    if (hi > 0.0) {
+      x0 = SHLIGHT_LOGR(lo / beta + SHLIGHT_SQRTR(lo * lo / (beta * beta) + 1.0));
+      x1 = SHLIGHT_LOGR(hi / beta + SHLIGHT_SQRTR(hi * hi / (beta * beta) + 1.0));
+      xm = 0.5 * (x0 + x1);
+      xr = 0.5 * (x1 - x0);
+      for (q = 0; q < 8; ++q) {
+        gx = 0.18343464249564980;
+        gw = 0.36268378337836198;
+        if (q == 2 || q == 3) {
+          gx = 0.52553240991632899;
+          gw = 0.31370664587788727;
+        }
+        if (q == 4 || q == 5) {
+          gx = 0.79666647741362674;
+          gw = 0.22238103445337447;
+        }
+        if (q == 6 || q == 7) {
+          gx = 0.96028985649753623;
+          gw = 0.10122853629037626;
+        }
+        if (q - 2 * (q / 2) == 1) {
+          gx = -gx;
+        }
+        x = xm + xr * gx;
+        d = 0.5 * beta * (SHLIGHT_EXPR(x) - SHLIGHT_EXPR(-x));
+        s = s0 + d;
+        if (side == 1) {
+          s = s0 - d;
+        }
+        t = SHLIGHT_MAXR(ta * SHLIGHT_COSR(s) + tb * SHLIGHT_SINR(s), 0.0);
+        f = 1.0;
+        if (p > 0.0) {
+          f = 0.0;
+        }
+        if (t > 0.0 && p > 0.0) {
+          f = SHLIGHT_EXPR(p * SHLIGHT_LOGR(t));
+        }
+        if (j == 1) {
+          f = f * (ca * SHLIGHT_COSR(s) + cb * SHLIGHT_SINR(s));
+        }
+        sum = sum + xr * gw * f * 0.5 * beta * (SHLIGHT_EXPR(x) + SHLIGHT_EXPR(-x));
+      }
+    }
+  }
+  return sum;
+}
+
+/* Blinn-Phong over the image polygon of shli_half_sum without a held factor: with
+   n.l = 2 (h.v)(h.n) - n.v, the integrand D (n.l) (h.v) = (e+2)/(2 pi) [2 t^(e+1) (h.v)^2 -
+   (n.v) t^e (h.v)], t = h.n, is a polynomial in h times a power of t; its integrals follow
+   from two moments (exponents e + 1 and e - 1, QUADRATURE edge terms) and two line integrals
+   per arc (shli_half_arc) by the surface divergence theorem applied to t^a P(v) and
+   t^a (h.v) P(v), P(v) = v - (v.h) h the tangential part of v. Returns the shading integral
+   signed by the light's winding. */
+SHLIGHT_INLINE shli_real shli_half_blinn(shli_real *io_px, shli_real *io_py, shli_real *io_pz,
+                                         int nc, shli_real nx, shli_real ny, shli_real nz,
+                                         shli_real vx, shli_real vy, shli_real vz, shli_real m,
+                                         int k, int bal, shli_real par) {
+  shli_real st[SHLIGHT_HALF_K];
+  shli_real rx;
+  shli_real ry;
+  shli_real rz;
+  shli_real dv = nx * vx + ny * vy + nz * vz;
+  shli_real ex;
+  shli_real ey;
+  shli_real ez;
+  shli_real sp;
+  shli_real cp;
+  shli_real phi;
+  shli_real ux;
+  shli_real uy;
+  shli_real uz;
+  shli_real hax;
+  shli_real hay;
+  shli_real haz;
+  shli_real hbx;
+  shli_real hby;
+  shli_real hbz;
+  shli_real tx;
+  shli_real ty;
+  shli_real tz;
+  shli_real cs;
+  shli_real sn;
+  shli_real l;
+  shli_real a1 = 0.0;
+  shli_real a0 = 0.0;
+  shli_real pp = 0.0;
+  shli_real qq = 0.0;
+  shli_real mx;
+  shli_real my;
+  shli_real mz;
+  shli_real j1;
+  shli_real j2;
+  int ns;
+  int i;
+  int j;
+  int jj;
+  rx = 2.0 * dv * nx - vx;
+  ry = 2.0 * dv * ny - vy;
+  rz = 2.0 * dv * nz - vz;
+  /* the edge sum over the image polygon: sub-edge end points mapped by H, joined by arcs */
+  for (i = 0; i < nc; ++i) {
+    j = i + 1;
+    if (j == nc) {
+      j = 0;
+    }
+    ex = io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+    ey = io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+    ez = io_px[i] * io_py[j] - io_py[i] * io_px[j];
+    sp = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
+    cp = io_px[i] * io_px[j] + io_py[i] * io_py[j] + io_pz[i] * io_pz[j];
+    ns = 0;
+    phi = 0.0;
+    ux = 0.0;
+    uy = 0.0;
+    uz = 0.0;
+    if (sp > 1.0e-12) {
+      ns = shli_half_splits(io_px[i], io_py[i], io_pz[i], io_px[j], io_py[j], io_pz[j], rx, ry, rz,
+                            vx, vy, vz, m, k, bal, st);
+      phi = shli_atan2r(sp, cp);
+      ux = (io_px[j] - cp * io_px[i]) / sp;
+      uy = (io_py[j] - cp * io_py[i]) / sp;
+      uz = (io_pz[j] - cp * io_pz[i]) / sp;
+    }
+    hax = io_px[i] + vx;
+    hay = io_py[i] + vy;
+    haz = io_pz[i] + vz;
+    l = SHLIGHT_SQRTR(hax * hax + hay * hay + haz * haz);
+    if (!(l > 1.0e-30)) {
+      return 0.0;
+    }
+    hax = hax / l;
+    hay = hay / l;
+    haz = haz / l;
+    for (jj = 0; jj <= ns; ++jj) {
+      tx = io_px[j];
+      ty = io_py[j];
+      tz = io_pz[j];
+      if (jj < ns) {
+        cs = SHLIGHT_COSR(st[jj] * phi);
+        sn = SHLIGHT_SINR(st[jj] * phi);
+        tx = cs * io_px[i] + sn * ux;
+        ty = cs * io_py[i] + sn * uy;
+        tz = cs * io_pz[i] + sn * uz;
+      }
+      hbx = tx + vx;
+      hby = ty + vy;
+      hbz = tz + vz;
+      l = SHLIGHT_SQRTR(hbx * hbx + hby * hby + hbz * hbz);
+      if (!(l > 1.0e-30)) {
+        return 0.0;
+      }
+      hbx = hbx / l;
+      hby = hby / l;
+      hbz = hbz / l;
+      a1 = a1 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par + 1.0,
+                               SHLIGHT_EDGE_QUADRATURE);
+      if (par > 0.0) {
+        a0 = a0 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par - 1.0,
+                                 SHLIGHT_EDGE_QUADRATURE);
+      }
+      mx = hay * hbz - haz * hby;
+      my = haz * hbx - hax * hbz;
+      mz = hax * hby - hay * hbx;
+      l = SHLIGHT_SQRTR(mx * mx + my * my + mz * mz);
+      if (l > 1.0e-30) {
+        l = -(mx * vx + my * vy + mz * vz) / l; /* outward conormal: -(a x b) */
+        pp = pp + l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par, 0);
+        qq = qq +
+             l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par + 1.0, 1);
+      }
+      hax = hbx;
+      hay = hby;
+      haz = hbz;
+    }
+  }
+  /* J1 = integral of t^e (h.v), J2 = of t^(e+1) (h.v)^2 over the image (surface divergence
+     identities, README): (a+2) J1(a) = a (n.v) M^(a-1) - sum (v.m) line(t^a),
+     (a+3) J2(a) = a (n.v) J1(a-1) + M^a - sum (v.m) line(t^a (h.v)), m the outward
+     conormal */
+  j1 = (dv * a0 - pp) / (par + 2.0);
+  j2 = ((par + 1.0) * dv * j1 + a1 / (par + 2.0) - qq) / (par + 4.0);
+  return (par + 2.0) * 0.15915494309189534 * (2.0 * j2 - dv * j1);
+}
+
 /* The common body of shl_polygon_blinn_phong (kind 0, par = e) and shl_polygon_beckmann (kind
    1, par = alpha): clip to the horizon, the representative direction l* (the point of the
    clipped light nearest the mirror direction r: r itself when every edge sees r on the same
@@ -28163,6 +28411,13 @@ SHLIGHT_INLINE shli_real shli_half_light(const float (*v)[3], int nv, const floa
     lsx = rx;
     lsy = ry;
     lsz = rz;
+  }
+  if (kind == 0) {
+    sum = shli_half_blinn(px, py, pz, nc, nx, ny, nz, vx, vy, vz, m, k, bal, par);
+    if (sg < 0) {
+      sum = -sum;
+    }
+    return SHLIGHT_MAXR(sum, 0.0);
   }
   sum = shli_half_sum(px, py, pz, nc, nx, ny, nz, vx, vy, vz, m, k, bal, par, kind);
   if (sg < 0) {
