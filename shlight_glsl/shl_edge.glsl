@@ -1221,7 +1221,7 @@ shli_real shli_beckmann_lambda(shli_real c, shli_real alpha) {
   return 0.5 * SHLIGHT_EXPR(-a * a) * (0.56418958354775629 / a - p);
 }
 
-shli_real shli_beckmann_node(shli_real s, shli_real beta, shli_real c2, shli_real b) {
+shli_real shli_beckmann_node(shli_real s, shli_real beta, shli_real c2, shli_real b, shli_real sa) {
   shli_real es = SHLIGHT_EXPR(s);
   shli_real u = 0.5 * beta * (es - 1.0 / es);
   shli_real su = SHLIGHT_SINR(u);
@@ -1229,12 +1229,15 @@ shli_real shli_beckmann_node(shli_real s, shli_real beta, shli_real c2, shli_rea
   shli_real g = 1.0;
   if (q > 0.0) {
     g = -shli_expm1r(-SHLIGHT_MINR(b / q, 700.0));
+    if (sa > 0.0) {
+      g = 1.0 - SHLIGHT_EXPR(-SHLIGHT_MINR(b / q, 700.0)) * (1.0 + sa * b / q);
+    }
   }
   return g * 0.5 * beta * (es + 1.0 / es);
 }
 
-shli_real shli_beckmann_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2,
-                             shli_real b) {
+shli_real shli_beckmann_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2, shli_real b,
+                             shli_real sa) {
   shli_real z0 = (1.5707963267948966 - hi) / beta;
   shli_real z1 = (1.5707963267948966 - lo) / beta;
   shli_real s0 = SHLIGHT_LOGR(z0 + SHLIGHT_SQRTR(z0 * z0 + 1.0));
@@ -1245,17 +1248,19 @@ shli_real shli_beckmann_half(shli_real lo, shli_real hi, shli_real beta, shli_re
   if (!(r > 0.0)) {
     return 0.0;
   }
-  sum = 0.56888888888888889 * shli_beckmann_node(m, beta, c2, b);
-  sum = sum + 0.47862867049936647 * (shli_beckmann_node(m - 0.53846931010568309 * r, beta, c2, b) +
-                                     shli_beckmann_node(m + 0.53846931010568309 * r, beta, c2, b));
-  sum = sum + 0.23692688505618909 * (shli_beckmann_node(m - 0.90617984593866399 * r, beta, c2, b) +
-                                     shli_beckmann_node(m + 0.90617984593866399 * r, beta, c2, b));
+  sum = 0.56888888888888889 * shli_beckmann_node(m, beta, c2, b, sa);
+  sum = sum +
+        0.47862867049936647 * (shli_beckmann_node(m - 0.53846931010568309 * r, beta, c2, b, sa) +
+                               shli_beckmann_node(m + 0.53846931010568309 * r, beta, c2, b, sa));
+  sum = sum +
+        0.23692688505618909 * (shli_beckmann_node(m - 0.90617984593866399 * r, beta, c2, b, sa) +
+                               shli_beckmann_node(m + 0.90617984593866399 * r, beta, c2, b, sa));
   return r * sum;
 }
 
 shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
                              shli_real bz, shli_real rx, shli_real ry, shli_real rz,
-                             shli_real alpha) {
+                             shli_real alpha, shli_real sa) {
   shli_real nx = ay * bz - az * by;
   shli_real ny = az * bx - ax * bz;
   shli_real nz = ax * by - ay * bx;
@@ -1306,11 +1311,12 @@ shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_real az, shli_real
     b = w * w / (alpha * alpha);
     beta = 0.5 * shli_atan2r(aw * 1.4142135623730951, alpha);
     if (ta < 0.0 && tb > 0.0) {
-      g = shli_beckmann_half(0.0, -ta, beta, c2, b) + shli_beckmann_half(0.0, tb, beta, c2, b);
+      g = shli_beckmann_half(0.0, -ta, beta, c2, b, sa) +
+          shli_beckmann_half(0.0, tb, beta, c2, b, sa);
     } else if (tb <= 0.0) {
-      g = shli_beckmann_half(-tb, -ta, beta, c2, b);
+      g = shli_beckmann_half(-tb, -ta, beta, c2, b, sa);
     } else {
-      g = shli_beckmann_half(ta, tb, beta, c2, b);
+      g = shli_beckmann_half(ta, tb, beta, c2, b, sa);
     }
   }
   if (w < 0.0) {
@@ -1361,7 +1367,7 @@ float shl_polygon_beckmann_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, f
     if (j == nc) {
       j = 0;
     }
-    sum = sum + shli_beckmann_edge(px[i], py[i], pz[i], px[j], py[j], pz[j], rx, ry, rz, al);
+    sum = sum + shli_beckmann_edge(px[i], py[i], pz[i], px[j], py[j], pz[j], rx, ry, rz, al, 0.0);
   }
   if (sg < 0) {
     sum = -sum;
@@ -1563,7 +1569,7 @@ shli_real shli_half_sum(inout shli_real io_px[SHLIGHT_CLIP_MAX],
         sum = sum + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par + 1.0,
                                    SHLIGHT_EDGE_QUADRATURE);
       } else {
-        sum = sum + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par);
+        sum = sum + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par, 0.0);
       }
       hax = hbx;
       hay = hby;
@@ -1625,6 +1631,9 @@ shli_real shli_half_arc(shli_real ax, shli_real ay, shli_real az, shli_real bx, 
   }
   s0 = SHLIGHT_MINR(SHLIGHT_MAXR(shli_atan2r(tb, ta), 0.0), phi);
   beta = 1.0 / SHLIGHT_SQRTR(p + 1.0);
+  if (j == 2) {
+    beta = 0.70710678118654752 * p;
+  }
   for (side = 0; side < 2; ++side) {
     lo = 0.0;
     hi = phi - s0;
@@ -1668,6 +1677,12 @@ shli_real shli_half_arc(shli_real ax, shli_real ay, shli_real az, shli_real bx, 
         if (t > 0.0 && p > 0.0) {
           f = SHLIGHT_EXPR(p * SHLIGHT_LOGR(t));
         }
+        if (j == 2) {
+          f = 0.0;
+          if (t > 0.0) {
+            f = SHLIGHT_EXPR(-SHLIGHT_MINR((1.0 - t * t) / (t * t * p * p), 700.0)) / (t * t);
+          }
+        }
         if (j == 1) {
           f = f * (ca * SHLIGHT_COSR(s) + cb * SHLIGHT_SINR(s));
         }
@@ -1676,6 +1691,122 @@ shli_real shli_half_arc(shli_real ax, shli_real ay, shli_real az, shli_real bx, 
     }
   }
   return sum;
+}
+
+shli_real shli_half_beckmann(inout shli_real io_px[SHLIGHT_CLIP_MAX],
+                             inout shli_real io_py[SHLIGHT_CLIP_MAX],
+                             inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nc, shli_real nx,
+                             shli_real ny, shli_real nz, shli_real vx, shli_real vy, shli_real vz,
+                             shli_real m, int k, int bal, shli_real par) {
+  shli_real st[SHLIGHT_HALF_K];
+  shli_real rx;
+  shli_real ry;
+  shli_real rz;
+  shli_real dv = nx * vx + ny * vy + nz * vz;
+  shli_real ex;
+  shli_real ey;
+  shli_real ez;
+  shli_real sp;
+  shli_real cp;
+  shli_real phi;
+  shli_real ux;
+  shli_real uy;
+  shli_real uz;
+  shli_real hax;
+  shli_real hay;
+  shli_real haz;
+  shli_real hbx;
+  shli_real hby;
+  shli_real hbz;
+  shli_real tx;
+  shli_real ty;
+  shli_real tz;
+  shli_real cs;
+  shli_real sn;
+  shli_real l;
+  shli_real sum = 0.0;
+  shli_real pp = 0.0;
+  shli_real mx;
+  shli_real my;
+  shli_real mz;
+  int ns;
+  int i;
+  int j;
+  int jj;
+  rx = 2.0 * dv * nx - vx;
+  ry = 2.0 * dv * ny - vy;
+  rz = 2.0 * dv * nz - vz;
+  /* the edge sum over the image polygon: sub-edge end points mapped by H, joined by arcs */
+  for (i = 0; i < nc; ++i) {
+    j = i + 1;
+    if (j == nc) {
+      j = 0;
+    }
+    ex = io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+    ey = io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+    ez = io_px[i] * io_py[j] - io_py[i] * io_px[j];
+    sp = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
+    cp = io_px[i] * io_px[j] + io_py[i] * io_py[j] + io_pz[i] * io_pz[j];
+    ns = 0;
+    phi = 0.0;
+    ux = 0.0;
+    uy = 0.0;
+    uz = 0.0;
+    if (sp > 1.0e-12) {
+      ns = shli_half_splits(io_px[i], io_py[i], io_pz[i], io_px[j], io_py[j], io_pz[j], rx, ry, rz,
+                            vx, vy, vz, m, k, bal, st);
+      phi = shli_atan2r(sp, cp);
+      ux = (io_px[j] - cp * io_px[i]) / sp;
+      uy = (io_py[j] - cp * io_py[i]) / sp;
+      uz = (io_pz[j] - cp * io_pz[i]) / sp;
+    }
+    hax = io_px[i] + vx;
+    hay = io_py[i] + vy;
+    haz = io_pz[i] + vz;
+    l = SHLIGHT_SQRTR(hax * hax + hay * hay + haz * haz);
+    if (!(l > 1.0e-30)) {
+      return 0.0;
+    }
+    hax = hax / l;
+    hay = hay / l;
+    haz = haz / l;
+    for (jj = 0; jj <= ns; ++jj) {
+      tx = io_px[j];
+      ty = io_py[j];
+      tz = io_pz[j];
+      if (jj < ns) {
+        cs = SHLIGHT_COSR(st[jj] * phi);
+        sn = SHLIGHT_SINR(st[jj] * phi);
+        tx = cs * io_px[i] + sn * ux;
+        ty = cs * io_py[i] + sn * uy;
+        tz = cs * io_pz[i] + sn * uz;
+      }
+      hbx = tx + vx;
+      hby = ty + vy;
+      hbz = tz + vz;
+      l = SHLIGHT_SQRTR(hbx * hbx + hby * hby + hbz * hbz);
+      if (!(l > 1.0e-30)) {
+        return 0.0;
+      }
+      hbx = hbx / l;
+      hby = hby / l;
+      hbz = hbz / l;
+      sum = sum + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par, par * par);
+      mx = hay * hbz - haz * hby;
+      my = haz * hbx - hax * hbz;
+      mz = hax * hby - hay * hbx;
+      l = SHLIGHT_SQRTR(mx * mx + my * my + mz * mz);
+      if (l > 1.0e-30) {
+        pp = pp - (mx * vx + my * vy + mz * vz) / l *
+                      shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par, 2);
+      }
+      hax = hbx;
+      hay = hby;
+      haz = hbz;
+    }
+  }
+  /* (n.v) (integral of g') - sum (v.m) line(g), g = E / (2 pi t^2) */
+  return (dv * sum - pp) * 0.15915494309189534;
 }
 
 shli_real shli_half_blinn(inout shli_real io_px[SHLIGHT_CLIP_MAX],
@@ -1840,16 +1971,12 @@ shli_real shli_half_light(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 vi
   shli_real lsy;
   shli_real lsz;
   shli_real cp;
-  shli_real hax;
-  shli_real hay;
-  shli_real haz;
   shli_real l;
   shli_real m;
   shli_real sum = 0.0;
   shli_real hn;
   shli_real hv;
   shli_real nl;
-  shli_real y;
   int npos = 0;
   int nneg = 0;
   int nc;
@@ -1967,28 +2094,14 @@ shli_real shli_half_light(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 vi
     }
     return SHLIGHT_MAXR(sum, 0.0);
   }
-  sum = shli_half_sum(px, py, pz, nc, nx, ny, nz, vx, vy, vz, m, k, bal, par, kind);
+  sum = shli_half_beckmann(px, py, pz, nc, nx, ny, nz, vx, vy, vz, m, k, bal, par);
   if (sg < 0) {
     sum = -sum;
   }
   sum = SHLIGHT_MAXR(sum, 0.0);
-  /* Y at h* = H(l*) */
-  hax = lsx + vx;
-  hay = lsy + vy;
-  haz = lsz + vz;
-  l = SHLIGHT_SQRTR(hax * hax + hay * hay + haz * haz);
-  hn = (hax * nx + hay * ny + haz * nz) / l;
-  hv = (hax * vx + hay * vy + haz * vz) / l;
+  /* G2 held at l* */
   nl = SHLIGHT_MAXR(lsx * nx + lsy * ny + lsz * nz, 0.0);
-  if (!(hn > 0.0)) {
-    return 0.0;
-  }
-  if (kind == 0) {
-    y = nl * hv / hn;
-  } else {
-    y = hv / ((1.0 + shli_beckmann_lambda(dv, par) + shli_beckmann_lambda(nl, par)) * dv * hn);
-  }
-  return sum * y;
+  return sum / ((1.0 + shli_beckmann_lambda(dv, par) + shli_beckmann_lambda(nl, par)) * dv);
 }
 
 float shl_polygon_blinn_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view,
