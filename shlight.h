@@ -27738,11 +27738,11 @@ SHLIGHT_INLINE shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_rea
    radial CDF 1 - exp(-tan^2(T) / alpha^2) of a cap of half-angle T: along an edge's arc the
    CDF is 1 - exp(-w^2 / (alpha^2 c^2 cos^2 theta)) (no elementary antiderivative: an Owen's T
    function), integrated with the graded 5+5-node Gauss-Legendre rule of QUADRATURE. Error
-   (tests/test_microfacet, against long double cubature): < 1e-6 of the normalised lobe in C
-   for alpha in [1e-3, 1]. Cost: one QUADRATURE moment (20 exp + 20 sin per edge). The
-   half-vector-space core of a Beckmann polygon light (shl_polygon_beckmann adds the map).
-   alpha clamped to [1e-4, 1]; NaN alpha and the degenerate inputs of shl_polygon_moment:
-   0. */
+   (tests/test_microfacet, against long double cubature): max 1.0e-4 of the normalised lobe
+   for alpha in [1e-3, 1] (as QUADRATURE moments). Cost: one QUADRATURE moment (20 exp + 20 sin per
+   edge). The half-vector-space core of a Beckmann polygon light (shl_polygon_beckmann adds the
+   map). alpha clamped to [1e-4, 1]; NaN alpha and the degenerate inputs of shl_polygon_moment: 0.
+ */
 SHLIGHT_INLINE float shl_polygon_beckmann_ndf(const float (*v)[3], int nv, const float axis[3],
                                               float alpha) {
   shli_real px[SHLIGHT_CLIP_MAX];

@@ -929,7 +929,8 @@ ARREF_FN long double arref_ellipse_ggx(const double c[3], const double a1[3], co
            integrand D_B G2 / (4 (n.v)), D_B = exp(-tan^2 t / alpha^2) / (pi alpha^2 cos^4 t);
    kind 2: the half-vector measure of seed 001 eq. 23-24, D_Blinn(h) / (4 (h.l)): its integral
            over the light is int over H(light) of D_Blinn(h) dh;
-   kind 3: D_B(h) (h.n) / (4 (h.l)): int over H(light) of D_B(h) (h.n) dh.
+   kind 3: D_B(h) (h.n) / (4 (h.l)): int over H(light) of D_B(h) (h.n) dh;
+   kind 4: D_B / (4 (n.v)), kind 1 without G2.
    par: the exponent e (kinds 0, 2) or alpha (kinds 1, 3). */
 typedef struct {
   long double n[3], v[3], par, nv, lv;
@@ -963,6 +964,8 @@ ARREF_FN long double arref__mf_f(const long double u[3], void *ctx) {
     return (M->par + 2) / (8 * ARREF_PI) * powl(nh, M->par) * nl;
   case 1:
     return arref__beck_d(nh, M->par) / (1 + M->lv + arref__beck_lambda(nl, M->par)) / (4 * M->nv);
+  case 4:
+    return arref__beck_d(nh, M->par) / (4 * M->nv);
   case 2:
     return (M->par + 2) / (2 * ARREF_PI) * powl(nh, M->par) / (4 * hu);
   default:
@@ -983,7 +986,7 @@ ARREF_FN void arref__mf_setup(arref__mf *M, arref_hint *h, const double nrm[3],
   M->lv = (kind == 1) ? arref__beck_lambda(M->nv, M->par) : 0;
   for (k = 0; k < 3; k++)
     h->axis[k] = 2 * M->nv * M->n[k] - M->v[k];
-  al = (kind == 1 || kind == 3) ? M->par : sqrtl(2 / (M->par + 2));
+  al = (kind == 1 || kind == 3 || kind == 4) ? M->par : sqrtl(2 / (M->par + 2));
   s = al * (M->nv > 0.05L ? M->nv : 0.05L);
   h->sigma = s < 1 ? s : 1;
 }
@@ -1011,7 +1014,6 @@ ARREF_FN long double arref_mf_albedo(const double nrm[3], const double view[3], 
       tri[q][1][k] = y;
       tri[q][2][k] = M.n[k];
     }
-  arref__gl_init();
   arref__st_init(&s, arref__mf_f, &M, &h, tol, 12);
   return arref__tris(&s, tri, 4);
 }
