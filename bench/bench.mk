@@ -64,6 +64,19 @@ bench-edge: build/bench/bench_edge
 bench: bench-edge
 .PHONY: bench-edge
 
+build/bench/bench_microfacet: bench/bench_microfacet.c shlight.h tests/ref/arearef.h
+	@mkdir -p build/bench
+	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_microfacet.c -lm
+
+bench-microfacet: build/bench/bench_microfacet
+	@mkdir -p bench/out
+	CC=$(BENCH_CC) sh bench/callgrind_microfacet.sh
+	build/bench/bench_microfacet
+	cat bench/out/microfacet.md
+
+bench: bench-microfacet
+.PHONY: bench-microfacet
+
 build/bench/bench_brdf: bench/bench_brdf.c shlight.h
 	@mkdir -p build/bench
 	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_brdf.c -lm

@@ -1206,4 +1206,922 @@ float shl_polygon_ggx_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float 
   return SHLIGHT_FLOAT(SHLIGHT_MAXR(sum, 0.0) * 0.15915494309189534);
 }
 
+shli_real shli_beckmann_lambda(shli_real c, shli_real alpha) {
+  shli_real s2 = 1.0 - c * c;
+  shli_real a;
+  shli_real t;
+  shli_real p;
+  if (!(s2 > 0.0)) {
+    return 0.0;
+  }
+  a = SHLIGHT_MAXR(c / (alpha * SHLIGHT_SQRTR(s2)), 1.0e-6);
+  t = 1.0 / (1.0 + 0.3275911 * a);
+  p = t *
+      (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+  return 0.5 * SHLIGHT_EXPR(-a * a) * (0.56418958354775629 / a - p);
+}
+
+shli_real shli_beckmann_node(shli_real s, shli_real beta, shli_real c2, shli_real b, shli_real sa) {
+  shli_real es = SHLIGHT_EXPR(s);
+  shli_real u = 0.5 * beta * (es - 1.0 / es);
+  shli_real su = SHLIGHT_SINR(u);
+  shli_real q = c2 * su * su;
+  shli_real g = 1.0;
+  if (q > 0.0) {
+    g = -shli_expm1r(-SHLIGHT_MINR(b / q, 700.0));
+    if (sa > 0.0) {
+      g = 1.0 - SHLIGHT_EXPR(-SHLIGHT_MINR(b / q, 700.0)) * (1.0 + sa * b / q);
+    }
+  }
+  return g * 0.5 * beta * (es + 1.0 / es);
+}
+
+shli_real shli_beckmann_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2, shli_real b,
+                             shli_real sa) {
+  shli_real z0 = (1.5707963267948966 - hi) / beta;
+  shli_real z1 = (1.5707963267948966 - lo) / beta;
+  shli_real s0 = SHLIGHT_LOGR(z0 + SHLIGHT_SQRTR(z0 * z0 + 1.0));
+  shli_real s1 = SHLIGHT_LOGR(z1 + SHLIGHT_SQRTR(z1 * z1 + 1.0));
+  shli_real m = 0.5 * (s0 + s1);
+  shli_real r = 0.5 * (s1 - s0);
+  shli_real sum;
+  if (!(r > 0.0)) {
+    return 0.0;
+  }
+  sum = 0.56888888888888889 * shli_beckmann_node(m, beta, c2, b, sa);
+  sum = sum +
+        0.47862867049936647 * (shli_beckmann_node(m - 0.53846931010568309 * r, beta, c2, b, sa) +
+                               shli_beckmann_node(m + 0.53846931010568309 * r, beta, c2, b, sa));
+  sum = sum +
+        0.23692688505618909 * (shli_beckmann_node(m - 0.90617984593866399 * r, beta, c2, b, sa) +
+                               shli_beckmann_node(m + 0.90617984593866399 * r, beta, c2, b, sa));
+  return r * sum;
+}
+
+shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
+                             shli_real bz, shli_real rx, shli_real ry, shli_real rz,
+                             shli_real alpha, shli_real sa) {
+  shli_real nx = ay * bz - az * by;
+  shli_real ny = az * bx - ax * bz;
+  shli_real nz = ax * by - ay * bx;
+  shli_real sp = SHLIGHT_SQRTR(nx * nx + ny * ny + nz * nz);
+  shli_real cp = ax * bx + ay * by + az * bz;
+  shli_real w;
+  shli_real tx;
+  shli_real ty;
+  shli_real tz;
+  shli_real xa;
+  shli_real xb;
+  shli_real ya;
+  shli_real c2;
+  shli_real aw;
+  shli_real ta;
+  shli_real tb;
+  shli_real beta;
+  shli_real b;
+  shli_real g;
+  if (!(sp > 1.0e-30)) {
+    return 0.0;
+  }
+  xa = ax * rx + ay * ry + az * rz;
+  xb = bx * rx + by * ry + bz * rz;
+  if (SHLIGHT_ABSR(xa) < 1.0e-5 && SHLIGHT_ABSR(xb) < 1.0e-5) {
+    /* an edge on the clip circle u.r = 0: the CDF is 1 along it */
+    w = SHLIGHT_REAL(SHLIGHT_SIGN1(nx * rx + ny * ry + nz * rz));
+    return w * shli_atan2r(sp, cp);
+  }
+  nx = nx / sp;
+  ny = ny / sp;
+  nz = nz / sp;
+  w = nx * rx + ny * ry + nz * rz;
+  tx = ny * rz - nz * ry;
+  ty = nz * rx - nx * rz;
+  tz = nx * ry - ny * rx;
+  ya = ax * tx + ay * ty + az * tz;
+  c2 = SHLIGHT_MAXR(1.0 - w * w, 0.0);
+  aw = SHLIGHT_ABSR(w);
+  if (!(aw > 0.0)) {
+    return 0.0;
+  }
+  if (c2 < 1.0e-12) { /* the arc hugs the equator of r: the CDF is 1 along it */
+    g = shli_atan2r(aw * sp, cp - xa * xb);
+  } else {
+    ta = shli_atan2r(ya, aw * SHLIGHT_MAXR(xa, 0.0));
+    tb = SHLIGHT_MINR(ta + shli_atan2r(aw * sp, cp - xa * xb), 1.5707963267948966);
+    b = w * w / (alpha * alpha);
+    beta = 0.5 * shli_atan2r(aw * 1.4142135623730951, alpha);
+    if (ta < 0.0 && tb > 0.0) {
+      g = shli_beckmann_half(0.0, -ta, beta, c2, b, sa) +
+          shli_beckmann_half(0.0, tb, beta, c2, b, sa);
+    } else if (tb <= 0.0) {
+      g = shli_beckmann_half(-tb, -ta, beta, c2, b, sa);
+    } else {
+      g = shli_beckmann_half(ta, tb, beta, c2, b, sa);
+    }
+  }
+  if (w < 0.0) {
+    g = -g;
+  }
+  return g;
+}
+
+float shl_polygon_beckmann_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float alpha) {
+  shli_real px[SHLIGHT_CLIP_MAX];
+  shli_real py[SHLIGHT_CLIP_MAX];
+  shli_real pz[SHLIGHT_CLIP_MAX];
+  shli_real rx = SHLIGHT_REAL(axis[0]);
+  shli_real ry = SHLIGHT_REAL(axis[1]);
+  shli_real rz = SHLIGHT_REAL(axis[2]);
+  shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
+  shli_real al = SHLIGHT_REAL(alpha);
+  shli_real sum = 0.0;
+  int i;
+  int j;
+  int nc;
+  int sg = 1;
+  if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) || !(al == al)) {
+    return 0.0f;
+  }
+  al = SHLIGHT_MINR(SHLIGHT_MAXR(al, 1.0e-4), 1.0);
+  rx = rx / l;
+  ry = ry / l;
+  rz = rz / l;
+  for (i = 0; i < nv; ++i) {
+    px[i] = SHLIGHT_REAL(v[i][0]);
+    py[i] = SHLIGHT_REAL(v[i][1]);
+    pz[i] = SHLIGHT_REAL(v[i][2]);
+    if (!(SHLIGHT_ABSR(px[i]) + SHLIGHT_ABSR(py[i]) + SHLIGHT_ABSR(pz[i]) < SHLIGHT_REAL_MAX)) {
+      return 0.0f;
+    }
+  }
+  nc = shli_poly_clip_unit(px, py, pz, nv, rx, ry, rz);
+  if (nc == 0) {
+    return 0.0f;
+  }
+  if (nc < 0) {
+    nc = -nc;
+    sg = -1;
+  }
+  for (i = 0; i < nc; ++i) {
+    j = i + 1;
+    if (j == nc) {
+      j = 0;
+    }
+    sum = sum + shli_beckmann_edge(px[i], py[i], pz[i], px[j], py[j], pz[j], rx, ry, rz, al, 0.0);
+  }
+  if (sg < 0) {
+    sum = -sum;
+  }
+  return SHLIGHT_FLOAT(SHLIGHT_MAXR(sum, 0.0) * 0.15915494309189534);
+}
+
+int shli_half_splits(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
+                     shli_real bz, shli_real rx, shli_real ry, shli_real rz, shli_real vx,
+                     shli_real vy, shli_real vz, shli_real m, int k, int bal,
+                     inout shli_real io_split[SHLIGHT_HALF_K]) {
+  shli_real nx = ay * bz - az * by;
+  shli_real ny = az * bx - ax * bz;
+  shli_real nz = ax * by - ay * bx;
+  shli_real sp = SHLIGHT_SQRTR(nx * nx + ny * ny + nz * nz);
+  shli_real cp = ax * bx + ay * by + az * bz;
+  shli_real phi;
+  shli_real w;
+  shli_real qx;
+  shli_real qy;
+  shli_real qz;
+  shli_real lq;
+  shli_real pa;
+  shli_real pb;
+  shli_real km;
+  shli_real mx;
+  shli_real my;
+  shli_real mz;
+  shli_real cx;
+  shli_real cy;
+  shli_real cz;
+  shli_real tp = 0.5;
+  shli_real u;
+  int inside = 0;
+  int ns = 0;
+  int nl;
+  int nr;
+  int j;
+  if (k < 2 || !(sp > 1.0e-12)) {
+    return 0;
+  }
+  phi = shli_atan2r(sp, cp);
+  nx = nx / sp;
+  ny = ny / sp;
+  nz = nz / sp;
+  w = nx * rx + ny * ry + nz * rz;
+  qx = rx - w * nx;
+  qy = ry - w * ny;
+  qz = rz - w * nz;
+  lq = SHLIGHT_SQRTR(qx * qx + qy * qy + qz * qz);
+  if (lq > 1.0e-12) {
+    qx = qx / lq;
+    qy = qy / lq;
+    qz = qz / lq;
+    pa = qx * ax + qy * ay + qz * az;
+    pb = qx * bx + qy * by + qz * bz;
+    if (pa - cp * pb > 0.0 && pb - cp * pa > 0.0) {
+      inside = 1;
+      if (bal != 0) {
+        km = SHLIGHT_MINR(2.0 * SHLIGHT_ABSR(nx * vx + ny * vy + nz * vz) * m, 1.0);
+        mx = ax + bx;
+        my = ay + by;
+        mz = az + bz;
+        lq = SHLIGHT_SQRTR(mx * mx + my * my + mz * mz);
+        qx = (1.0 - km) * qx + km * mx / lq;
+        qy = (1.0 - km) * qy + km * my / lq;
+        qz = (1.0 - km) * qz + km * mz / lq;
+      }
+      cx = ay * qz - az * qy;
+      cy = az * qx - ax * qz;
+      cz = ax * qy - ay * qx;
+      tp = shli_atan2r(SHLIGHT_SQRTR(cx * cx + cy * cy + cz * cz), ax * qx + ay * qy + az * qz) /
+           phi;
+      tp = SHLIGHT_MINR(SHLIGHT_MAXR(tp, 0.0), 1.0);
+    }
+  }
+  if (inside == 0) {
+    if (k == 2) {
+      return 0;
+    }
+    for (j = 1; j < k; ++j) {
+      io_split[ns] = SHLIGHT_ITOR(j) / SHLIGHT_ITOR(k);
+      ns = ns + 1;
+    }
+    return ns;
+  }
+  nl = SHLIGHT_FTOI(SHLIGHT_ITOR(k - 2) * tp + 0.5);
+  nr = k - 2 - nl;
+  for (j = 1; j <= nl; ++j) {
+    u = 1.0 - SHLIGHT_ITOR(j) / SHLIGHT_ITOR(nl + 1);
+    io_split[ns] = tp * (1.0 - u * u);
+    ns = ns + 1;
+  }
+  io_split[ns] = tp;
+  ns = ns + 1;
+  for (j = 1; j <= nr; ++j) {
+    u = SHLIGHT_ITOR(j) / SHLIGHT_ITOR(nr + 1);
+    io_split[ns] = tp + (1.0 - tp) * u * u;
+    ns = ns + 1;
+  }
+  return ns;
+}
+
+shli_real shli_half_sum(inout shli_real io_px[SHLIGHT_CLIP_MAX],
+                        inout shli_real io_py[SHLIGHT_CLIP_MAX],
+                        inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nc, shli_real nx, shli_real ny,
+                        shli_real nz, shli_real vx, shli_real vy, shli_real vz, shli_real m, int k,
+                        int bal, shli_real par, int kind) {
+  shli_real st[SHLIGHT_HALF_K];
+  shli_real rx;
+  shli_real ry;
+  shli_real rz;
+  shli_real dv = nx * vx + ny * vy + nz * vz;
+  shli_real ex;
+  shli_real ey;
+  shli_real ez;
+  shli_real sp;
+  shli_real cp;
+  shli_real phi;
+  shli_real ux;
+  shli_real uy;
+  shli_real uz;
+  shli_real hax;
+  shli_real hay;
+  shli_real haz;
+  shli_real hbx;
+  shli_real hby;
+  shli_real hbz;
+  shli_real tx;
+  shli_real ty;
+  shli_real tz;
+  shli_real cs;
+  shli_real sn;
+  shli_real l;
+  shli_real sum = 0.0;
+  int ns;
+  int i;
+  int j;
+  int jj;
+  rx = 2.0 * dv * nx - vx;
+  ry = 2.0 * dv * ny - vy;
+  rz = 2.0 * dv * nz - vz;
+  /* the edge sum over the image polygon: sub-edge end points mapped by H, joined by arcs */
+  for (i = 0; i < nc; ++i) {
+    j = i + 1;
+    if (j == nc) {
+      j = 0;
+    }
+    ex = io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+    ey = io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+    ez = io_px[i] * io_py[j] - io_py[i] * io_px[j];
+    sp = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
+    cp = io_px[i] * io_px[j] + io_py[i] * io_py[j] + io_pz[i] * io_pz[j];
+    ns = 0;
+    phi = 0.0;
+    ux = 0.0;
+    uy = 0.0;
+    uz = 0.0;
+    if (sp > 1.0e-12) {
+      ns = shli_half_splits(io_px[i], io_py[i], io_pz[i], io_px[j], io_py[j], io_pz[j], rx, ry, rz,
+                            vx, vy, vz, m, k, bal, st);
+      phi = shli_atan2r(sp, cp);
+      ux = (io_px[j] - cp * io_px[i]) / sp;
+      uy = (io_py[j] - cp * io_py[i]) / sp;
+      uz = (io_pz[j] - cp * io_pz[i]) / sp;
+    }
+    hax = io_px[i] + vx;
+    hay = io_py[i] + vy;
+    haz = io_pz[i] + vz;
+    l = SHLIGHT_SQRTR(hax * hax + hay * hay + haz * haz);
+    if (!(l > 1.0e-30)) {
+      return 0.0;
+    }
+    hax = hax / l;
+    hay = hay / l;
+    haz = haz / l;
+    for (jj = 0; jj <= ns; ++jj) {
+      tx = io_px[j];
+      ty = io_py[j];
+      tz = io_pz[j];
+      if (jj < ns) {
+        cs = SHLIGHT_COSR(st[jj] * phi);
+        sn = SHLIGHT_SINR(st[jj] * phi);
+        tx = cs * io_px[i] + sn * ux;
+        ty = cs * io_py[i] + sn * uy;
+        tz = cs * io_pz[i] + sn * uz;
+      }
+      hbx = tx + vx;
+      hby = ty + vy;
+      hbz = tz + vz;
+      l = SHLIGHT_SQRTR(hbx * hbx + hby * hby + hbz * hbz);
+      if (!(l > 1.0e-30)) {
+        return 0.0;
+      }
+      hbx = hbx / l;
+      hby = hby / l;
+      hbz = hbz / l;
+      if (kind == 0) {
+        sum = sum + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par + 1.0,
+                                   SHLIGHT_EDGE_QUADRATURE);
+      } else {
+        sum = sum + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par, 0.0);
+      }
+      hax = hbx;
+      hay = hby;
+      haz = hbz;
+    }
+  }
+  return sum * 0.15915494309189534;
+}
+
+shli_real shli_half_arc(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
+                        shli_real bz, shli_real nx, shli_real ny, shli_real nz, shli_real cx,
+                        shli_real cy, shli_real cz, shli_real p, int j) {
+  shli_real ex = ay * bz - az * by;
+  shli_real ey = az * bx - ax * bz;
+  shli_real ez = ax * by - ay * bx;
+  shli_real sp = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
+  shli_real cp = ax * bx + ay * by + az * bz;
+  shli_real phi;
+  shli_real ux;
+  shli_real uy;
+  shli_real uz;
+  shli_real ta;
+  shli_real tb;
+  shli_real ca;
+  shli_real cb;
+  shli_real rr;
+  shli_real s0;
+  shli_real beta;
+  shli_real lo;
+  shli_real hi;
+  shli_real x0;
+  shli_real x1;
+  shli_real xm;
+  shli_real xr;
+  shli_real x;
+  shli_real d;
+  shli_real s;
+  shli_real t;
+  shli_real f;
+  shli_real sum = 0.0;
+  shli_real gx;
+  shli_real gw;
+  int side;
+  int q;
+  if (!(sp > 1.0e-30)) {
+    return 0.0;
+  }
+  phi = shli_atan2r(sp, cp);
+  ux = (bx - cp * ax) / sp;
+  uy = (by - cp * ay) / sp;
+  uz = (bz - cp * az) / sp;
+  ta = ax * nx + ay * ny + az * nz;
+  tb = ux * nx + uy * ny + uz * nz;
+  ca = ax * cx + ay * cy + az * cz;
+  cb = ux * cx + uy * cy + uz * cz;
+  rr = SHLIGHT_SQRTR(ta * ta + tb * tb);
+  if (!(rr > 0.0)) {
+    return 0.0;
+  }
+  s0 = SHLIGHT_MINR(SHLIGHT_MAXR(shli_atan2r(tb, ta), 0.0), phi);
+  beta = 1.0 / SHLIGHT_SQRTR(p + 1.0);
+  if (j == 2) {
+    beta = 0.70710678118654752 * p;
+  }
+  for (side = 0; side < 2; ++side) {
+    lo = 0.0;
+    hi = phi - s0;
+    if (side == 1) {
+      hi = s0;
+    }
+    if (hi > 0.0) {
+      x0 = SHLIGHT_LOGR(lo / beta + SHLIGHT_SQRTR(lo * lo / (beta * beta) + 1.0));
+      x1 = SHLIGHT_LOGR(hi / beta + SHLIGHT_SQRTR(hi * hi / (beta * beta) + 1.0));
+      xm = 0.5 * (x0 + x1);
+      xr = 0.5 * (x1 - x0);
+      for (q = 0; q < 8; ++q) {
+        gx = 0.18343464249564980;
+        gw = 0.36268378337836198;
+        if (q == 2 || q == 3) {
+          gx = 0.52553240991632899;
+          gw = 0.31370664587788727;
+        }
+        if (q == 4 || q == 5) {
+          gx = 0.79666647741362674;
+          gw = 0.22238103445337447;
+        }
+        if (q == 6 || q == 7) {
+          gx = 0.96028985649753623;
+          gw = 0.10122853629037626;
+        }
+        if (q - 2 * (q / 2) == 1) {
+          gx = -gx;
+        }
+        x = xm + xr * gx;
+        d = 0.5 * beta * (SHLIGHT_EXPR(x) - SHLIGHT_EXPR(-x));
+        s = s0 + d;
+        if (side == 1) {
+          s = s0 - d;
+        }
+        t = SHLIGHT_MAXR(ta * SHLIGHT_COSR(s) + tb * SHLIGHT_SINR(s), 0.0);
+        f = 1.0;
+        if (p > 0.0) {
+          f = 0.0;
+        }
+        if (t > 0.0 && p > 0.0) {
+          f = SHLIGHT_EXPR(p * SHLIGHT_LOGR(t));
+        }
+        if (j == 2) {
+          f = 0.0;
+          if (t > 0.0) {
+            f = SHLIGHT_EXPR(-SHLIGHT_MINR((1.0 - t * t) / (t * t * p * p), 700.0)) / (t * t);
+          }
+        }
+        if (j == 1) {
+          f = f * (ca * SHLIGHT_COSR(s) + cb * SHLIGHT_SINR(s));
+        }
+        sum = sum + xr * gw * f * 0.5 * beta * (SHLIGHT_EXPR(x) + SHLIGHT_EXPR(-x));
+      }
+    }
+  }
+  return sum;
+}
+
+shli_real shli_half_beckmann(inout shli_real io_px[SHLIGHT_CLIP_MAX],
+                             inout shli_real io_py[SHLIGHT_CLIP_MAX],
+                             inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nc, shli_real nx,
+                             shli_real ny, shli_real nz, shli_real vx, shli_real vy, shli_real vz,
+                             shli_real m, int k, int bal, shli_real par) {
+  shli_real st[SHLIGHT_HALF_K];
+  shli_real rx;
+  shli_real ry;
+  shli_real rz;
+  shli_real dv = nx * vx + ny * vy + nz * vz;
+  shli_real ex;
+  shli_real ey;
+  shli_real ez;
+  shli_real sp;
+  shli_real cp;
+  shli_real phi;
+  shli_real ux;
+  shli_real uy;
+  shli_real uz;
+  shli_real hax;
+  shli_real hay;
+  shli_real haz;
+  shli_real hbx;
+  shli_real hby;
+  shli_real hbz;
+  shli_real tx;
+  shli_real ty;
+  shli_real tz;
+  shli_real cs;
+  shli_real sn;
+  shli_real l;
+  shli_real sum = 0.0;
+  shli_real pp = 0.0;
+  shli_real mx;
+  shli_real my;
+  shli_real mz;
+  int ns;
+  int i;
+  int j;
+  int jj;
+  rx = 2.0 * dv * nx - vx;
+  ry = 2.0 * dv * ny - vy;
+  rz = 2.0 * dv * nz - vz;
+  /* the edge sum over the image polygon: sub-edge end points mapped by H, joined by arcs */
+  for (i = 0; i < nc; ++i) {
+    j = i + 1;
+    if (j == nc) {
+      j = 0;
+    }
+    ex = io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+    ey = io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+    ez = io_px[i] * io_py[j] - io_py[i] * io_px[j];
+    sp = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
+    cp = io_px[i] * io_px[j] + io_py[i] * io_py[j] + io_pz[i] * io_pz[j];
+    ns = 0;
+    phi = 0.0;
+    ux = 0.0;
+    uy = 0.0;
+    uz = 0.0;
+    if (sp > 1.0e-12) {
+      ns = shli_half_splits(io_px[i], io_py[i], io_pz[i], io_px[j], io_py[j], io_pz[j], rx, ry, rz,
+                            vx, vy, vz, m, k, bal, st);
+      phi = shli_atan2r(sp, cp);
+      ux = (io_px[j] - cp * io_px[i]) / sp;
+      uy = (io_py[j] - cp * io_py[i]) / sp;
+      uz = (io_pz[j] - cp * io_pz[i]) / sp;
+    }
+    hax = io_px[i] + vx;
+    hay = io_py[i] + vy;
+    haz = io_pz[i] + vz;
+    l = SHLIGHT_SQRTR(hax * hax + hay * hay + haz * haz);
+    if (!(l > 1.0e-30)) {
+      return 0.0;
+    }
+    hax = hax / l;
+    hay = hay / l;
+    haz = haz / l;
+    for (jj = 0; jj <= ns; ++jj) {
+      tx = io_px[j];
+      ty = io_py[j];
+      tz = io_pz[j];
+      if (jj < ns) {
+        cs = SHLIGHT_COSR(st[jj] * phi);
+        sn = SHLIGHT_SINR(st[jj] * phi);
+        tx = cs * io_px[i] + sn * ux;
+        ty = cs * io_py[i] + sn * uy;
+        tz = cs * io_pz[i] + sn * uz;
+      }
+      hbx = tx + vx;
+      hby = ty + vy;
+      hbz = tz + vz;
+      l = SHLIGHT_SQRTR(hbx * hbx + hby * hby + hbz * hbz);
+      if (!(l > 1.0e-30)) {
+        return 0.0;
+      }
+      hbx = hbx / l;
+      hby = hby / l;
+      hbz = hbz / l;
+      sum = sum + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par, par * par);
+      mx = hay * hbz - haz * hby;
+      my = haz * hbx - hax * hbz;
+      mz = hax * hby - hay * hbx;
+      l = SHLIGHT_SQRTR(mx * mx + my * my + mz * mz);
+      if (l > 1.0e-30) {
+        pp = pp - (mx * vx + my * vy + mz * vz) / l *
+                      shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par, 2);
+      }
+      hax = hbx;
+      hay = hby;
+      haz = hbz;
+    }
+  }
+  /* (n.v) (integral of g') - sum (v.m) line(g), g = E / (2 pi t^2) */
+  return (dv * sum - pp) * 0.15915494309189534;
+}
+
+shli_real shli_half_blinn(inout shli_real io_px[SHLIGHT_CLIP_MAX],
+                          inout shli_real io_py[SHLIGHT_CLIP_MAX],
+                          inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nc, shli_real nx,
+                          shli_real ny, shli_real nz, shli_real vx, shli_real vy, shli_real vz,
+                          shli_real m, int k, int bal, shli_real par) {
+  shli_real st[SHLIGHT_HALF_K];
+  shli_real rx;
+  shli_real ry;
+  shli_real rz;
+  shli_real dv = nx * vx + ny * vy + nz * vz;
+  shli_real ex;
+  shli_real ey;
+  shli_real ez;
+  shli_real sp;
+  shli_real cp;
+  shli_real phi;
+  shli_real ux;
+  shli_real uy;
+  shli_real uz;
+  shli_real hax;
+  shli_real hay;
+  shli_real haz;
+  shli_real hbx;
+  shli_real hby;
+  shli_real hbz;
+  shli_real tx;
+  shli_real ty;
+  shli_real tz;
+  shli_real cs;
+  shli_real sn;
+  shli_real l;
+  shli_real a1 = 0.0;
+  shli_real a0 = 0.0;
+  shli_real pp = 0.0;
+  shli_real qq = 0.0;
+  shli_real mx;
+  shli_real my;
+  shli_real mz;
+  shli_real j1;
+  shli_real j2;
+  int ns;
+  int i;
+  int j;
+  int jj;
+  rx = 2.0 * dv * nx - vx;
+  ry = 2.0 * dv * ny - vy;
+  rz = 2.0 * dv * nz - vz;
+  /* the edge sum over the image polygon: sub-edge end points mapped by H, joined by arcs */
+  for (i = 0; i < nc; ++i) {
+    j = i + 1;
+    if (j == nc) {
+      j = 0;
+    }
+    ex = io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+    ey = io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+    ez = io_px[i] * io_py[j] - io_py[i] * io_px[j];
+    sp = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
+    cp = io_px[i] * io_px[j] + io_py[i] * io_py[j] + io_pz[i] * io_pz[j];
+    ns = 0;
+    phi = 0.0;
+    ux = 0.0;
+    uy = 0.0;
+    uz = 0.0;
+    if (sp > 1.0e-12) {
+      ns = shli_half_splits(io_px[i], io_py[i], io_pz[i], io_px[j], io_py[j], io_pz[j], rx, ry, rz,
+                            vx, vy, vz, m, k, bal, st);
+      phi = shli_atan2r(sp, cp);
+      ux = (io_px[j] - cp * io_px[i]) / sp;
+      uy = (io_py[j] - cp * io_py[i]) / sp;
+      uz = (io_pz[j] - cp * io_pz[i]) / sp;
+    }
+    hax = io_px[i] + vx;
+    hay = io_py[i] + vy;
+    haz = io_pz[i] + vz;
+    l = SHLIGHT_SQRTR(hax * hax + hay * hay + haz * haz);
+    if (!(l > 1.0e-30)) {
+      return 0.0;
+    }
+    hax = hax / l;
+    hay = hay / l;
+    haz = haz / l;
+    for (jj = 0; jj <= ns; ++jj) {
+      tx = io_px[j];
+      ty = io_py[j];
+      tz = io_pz[j];
+      if (jj < ns) {
+        cs = SHLIGHT_COSR(st[jj] * phi);
+        sn = SHLIGHT_SINR(st[jj] * phi);
+        tx = cs * io_px[i] + sn * ux;
+        ty = cs * io_py[i] + sn * uy;
+        tz = cs * io_pz[i] + sn * uz;
+      }
+      hbx = tx + vx;
+      hby = ty + vy;
+      hbz = tz + vz;
+      l = SHLIGHT_SQRTR(hbx * hbx + hby * hby + hbz * hbz);
+      if (!(l > 1.0e-30)) {
+        return 0.0;
+      }
+      hbx = hbx / l;
+      hby = hby / l;
+      hbz = hbz / l;
+      a1 = a1 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par + 1.0,
+                               SHLIGHT_EDGE_QUADRATURE);
+      if (par > 0.0) {
+        a0 = a0 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par - 1.0,
+                                 SHLIGHT_EDGE_QUADRATURE);
+      }
+      mx = hay * hbz - haz * hby;
+      my = haz * hbx - hax * hbz;
+      mz = hax * hby - hay * hbx;
+      l = SHLIGHT_SQRTR(mx * mx + my * my + mz * mz);
+      if (l > 1.0e-30) {
+        l = -(mx * vx + my * vy + mz * vz) / l; /* outward conormal: -(a x b) */
+        pp = pp + l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par, 0);
+        qq = qq +
+             l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par + 1.0, 1);
+      }
+      hax = hbx;
+      hay = hby;
+      haz = hbz;
+    }
+  }
+  /* J1 = integral of t^e (h.v), J2 = of t^(e+1) (h.v)^2 over the image (surface divergence
+     identities, README): (a+2) J1(a) = a (n.v) M^(a-1) - sum (v.m) line(t^a),
+     (a+3) J2(a) = a (n.v) J1(a-1) + M^a - sum (v.m) line(t^a (h.v)), m the outward
+     conormal */
+  j1 = (dv * a0 - pp) / (par + 2.0);
+  j2 = ((par + 1.0) * dv * j1 + a1 / (par + 2.0) - qq) / (par + 4.0);
+  return (par + 2.0) * 0.15915494309189534 * (2.0 * j2 - dv * j1);
+}
+
+shli_real shli_half_light(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, shli_real par,
+                          int subedges, int kind) {
+  shli_real px[SHLIGHT_CLIP_MAX];
+  shli_real py[SHLIGHT_CLIP_MAX];
+  shli_real pz[SHLIGHT_CLIP_MAX];
+  shli_real nx = SHLIGHT_REAL(nrm[0]);
+  shli_real ny = SHLIGHT_REAL(nrm[1]);
+  shli_real nz = SHLIGHT_REAL(nrm[2]);
+  shli_real vx = SHLIGHT_REAL(view[0]);
+  shli_real vy = SHLIGHT_REAL(view[1]);
+  shli_real vz = SHLIGHT_REAL(view[2]);
+  shli_real ln = SHLIGHT_SQRTR(nx * nx + ny * ny + nz * nz);
+  shli_real lv = SHLIGHT_SQRTR(vx * vx + vy * vy + vz * vz);
+  shli_real dv;
+  shli_real rx;
+  shli_real ry;
+  shli_real rz;
+  shli_real ex;
+  shli_real ey;
+  shli_real ez;
+  shli_real le;
+  shli_real wr;
+  shli_real qx;
+  shli_real qy;
+  shli_real qz;
+  shli_real best;
+  shli_real lsx;
+  shli_real lsy;
+  shli_real lsz;
+  shli_real cp;
+  shli_real l;
+  shli_real m;
+  shli_real sum = 0.0;
+  shli_real hn;
+  shli_real hv;
+  shli_real nl;
+  int npos = 0;
+  int nneg = 0;
+  int nc;
+  int sg = 1;
+  int k;
+  int bal = 0;
+  int i;
+  int j;
+  if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(ln > 0.0) || !(ln < SHLIGHT_REAL_MAX) ||
+      !(lv > 0.0) || !(lv < SHLIGHT_REAL_MAX)) {
+    return 0.0;
+  }
+  nx = nx / ln;
+  ny = ny / ln;
+  nz = nz / ln;
+  vx = vx / lv;
+  vy = vy / lv;
+  vz = vz / lv;
+  dv = nx * vx + ny * vy + nz * vz;
+  if (!(dv > 0.0)) {
+    return 0.0;
+  }
+  rx = 2.0 * dv * nx - vx;
+  ry = 2.0 * dv * ny - vy;
+  rz = 2.0 * dv * nz - vz;
+  for (i = 0; i < nv; ++i) {
+    px[i] = SHLIGHT_REAL(v[i][0]);
+    py[i] = SHLIGHT_REAL(v[i][1]);
+    pz[i] = SHLIGHT_REAL(v[i][2]);
+    if (!(SHLIGHT_ABSR(px[i]) + SHLIGHT_ABSR(py[i]) + SHLIGHT_ABSR(pz[i]) < SHLIGHT_REAL_MAX)) {
+      return 0.0;
+    }
+  }
+  nc = shli_poly_clip_unit(px, py, pz, nv, nx, ny, nz);
+  if (nc == 0) {
+    return 0.0;
+  }
+  if (nc < 0) {
+    nc = -nc;
+    sg = -1;
+  }
+  k = subedges;
+  if (k < 0) {
+    k = -k;
+  } else {
+    bal = 1;
+  }
+  if (k > SHLIGHT_HALF_K) {
+    k = SHLIGHT_HALF_K;
+  }
+  if (k < 1) {
+    k = 1;
+  }
+  m = par;
+  if (kind == 0) {
+    m = SHLIGHT_SQRTR(2.0 / (par + 2.0));
+  }
+  /* l*: r inside (every edge plane sees it on one side), else the nearest boundary point */
+  lsx = px[0];
+  lsy = py[0];
+  lsz = pz[0];
+  best = -2.0;
+  for (i = 0; i < nc; ++i) {
+    j = i + 1;
+    if (j == nc) {
+      j = 0;
+    }
+    ex = py[i] * pz[j] - pz[i] * py[j];
+    ey = pz[i] * px[j] - px[i] * pz[j];
+    ez = px[i] * py[j] - py[i] * px[j];
+    le = ex * ex + ey * ey + ez * ez;
+    wr = ex * rx + ey * ry + ez * rz;
+    if (wr > 0.0) {
+      npos = npos + 1;
+    }
+    if (wr < 0.0) {
+      nneg = nneg + 1;
+    }
+    if (px[i] * rx + py[i] * ry + pz[i] * rz > best) {
+      best = px[i] * rx + py[i] * ry + pz[i] * rz;
+      lsx = px[i];
+      lsy = py[i];
+      lsz = pz[i];
+    }
+    if (le > 1.0e-30) {
+      qx = rx - wr / le * ex;
+      qy = ry - wr / le * ey;
+      qz = rz - wr / le * ez;
+      l = SHLIGHT_SQRTR(qx * qx + qy * qy + qz * qz);
+      cp = px[i] * px[j] + py[i] * py[j] + pz[i] * pz[j];
+      if (l > 1.0e-12) {
+        qx = qx / l;
+        qy = qy / l;
+        qz = qz / l;
+        hn = qx * px[i] + qy * py[i] + qz * pz[i];
+        hv = qx * px[j] + qy * py[j] + qz * pz[j];
+        if (hn - cp * hv > 0.0 && hv - cp * hn > 0.0 && qx * rx + qy * ry + qz * rz > best) {
+          best = qx * rx + qy * ry + qz * rz;
+          lsx = qx;
+          lsy = qy;
+          lsz = qz;
+        }
+      }
+    }
+  }
+  if (npos == 0 || nneg == 0) {
+    lsx = rx;
+    lsy = ry;
+    lsz = rz;
+  }
+  if (kind == 0) {
+    sum = shli_half_blinn(px, py, pz, nc, nx, ny, nz, vx, vy, vz, m, k, bal, par);
+    if (sg < 0) {
+      sum = -sum;
+    }
+    return SHLIGHT_MAXR(sum, 0.0);
+  }
+  sum = shli_half_beckmann(px, py, pz, nc, nx, ny, nz, vx, vy, vz, m, k, bal, par);
+  if (sg < 0) {
+    sum = -sum;
+  }
+  sum = SHLIGHT_MAXR(sum, 0.0);
+  /* G2 held at l* */
+  nl = SHLIGHT_MAXR(lsx * nx + lsy * ny + lsz * nz, 0.0);
+  return sum / ((1.0 + shli_beckmann_lambda(dv, par) + shli_beckmann_lambda(nl, par)) * dv);
+}
+
+float shl_polygon_blinn_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view,
+                              float exponent, int subedges) {
+  shli_real e = SHLIGHT_REAL(exponent);
+  if (!(e == e)) {
+    return 0.0f;
+  }
+  e = SHLIGHT_MINR(SHLIGHT_MAXR(e, 0.0), 1.0e6);
+  return SHLIGHT_FLOAT(shli_half_light(v, nv, nrm, view, e, subedges, 0));
+}
+
+float shl_polygon_beckmann(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha,
+                           int subedges) {
+  shli_real al = SHLIGHT_REAL(alpha);
+  if (!(al == al)) {
+    return 0.0f;
+  }
+  al = SHLIGHT_MINR(SHLIGHT_MAXR(al, 1.0e-4), 1.0);
+  return SHLIGHT_FLOAT(shli_half_light(v, nv, nrm, view, al, subedges, 1));
+}
+
 #endif

@@ -55,5 +55,6 @@
 #endif
 #define SHLIGHT_LANES 1
 #define SHLIGHT_FAST_PAD (SHLIGHT_CLIP_MAX + SHLIGHT_LANES)
+#define SHLIGHT_HALF_K 8
 #define SHLIGHT_ASSERT(x)
 #endif

@@ -921,6 +921,112 @@ ARREF_FN long double arref_ellipse_ggx(const double c[3], const double a1[3], co
   return arref_ellipse(c, a1, a2, (const double(*)[3])nrm, 1, arref__ggx_f, &G, &h, tol).value;
 }
 
+/* ---------------------------------------------------------------- Blinn-Phong and Beckmann
+   kind 0: Blinn-Phong microfacet with the implicit G = (n.l)(n.v) (f = D_Blinn / 4), integrand
+           f (n.l) = (e+2)/(8 pi) (n.h)^e (n.l);
+   kind 1: Beckmann with the height-correlated Smith G2 = 1 / (1 + Lambda(v) + Lambda(l)),
+           Lambda(c) = (erf(a) - 1)/2 + exp(-a^2)/(2 a sqrt(pi)), a = c / (alpha sqrt(1 - c^2)),
+           integrand D_B G2 / (4 (n.v)), D_B = exp(-tan^2 t / alpha^2) / (pi alpha^2 cos^4 t);
+   kind 2: the half-vector measure of seed 001 eq. 23-24, D_Blinn(h) / (4 (h.l)): its integral
+           over the light is int over H(light) of D_Blinn(h) dh;
+   kind 3: D_B(h) (h.n) / (4 (h.l)): int over H(light) of D_B(h) (h.n) dh;
+   kind 4: D_B / (4 (n.v)), kind 1 without G2.
+   par: the exponent e (kinds 0, 2) or alpha (kinds 1, 3). */
+typedef struct {
+  long double n[3], v[3], par, nv, lv;
+  int kind;
+} arref__mf;
+ARREF_FN long double arref__beck_lambda(long double c, long double al) {
+  long double a;
+  if (c >= 1) return 0;
+  a = c / (al * sqrtl(1 - c * c));
+  return (erfl(a) - 1) / 2 + expl(-a * a) / (2 * a * sqrtl(ARREF_PI));
+}
+ARREF_FN long double arref__beck_d(long double nh, long double al) {
+  long double c2 = nh * nh, t2 = (1 - c2) / c2;
+  if (nh <= 0) return 0;
+  return expl(-t2 / (al * al)) / (ARREF_PI * al * al * c2 * c2);
+}
+ARREF_FN long double arref__mf_f(const long double u[3], void *ctx) {
+  const arref__mf *M = (const arref__mf *)ctx;
+  long double nl = arref__dot(M->n, u), h[3], hl, nh, hu;
+  if (nl <= 0) return 0;
+  h[0] = M->v[0] + u[0];
+  h[1] = M->v[1] + u[1];
+  h[2] = M->v[2] + u[2];
+  hl = sqrtl(arref__dot(h, h));
+  if (!(hl > 0)) return 0;
+  nh = arref__dot(M->n, h) / hl;
+  hu = arref__dot(u, h) / hl;
+  if (nh <= 0) return 0;
+  switch (M->kind) {
+  case 0:
+    return (M->par + 2) / (8 * ARREF_PI) * powl(nh, M->par) * nl;
+  case 1:
+    return arref__beck_d(nh, M->par) / (1 + M->lv + arref__beck_lambda(nl, M->par)) / (4 * M->nv);
+  case 4:
+    return arref__beck_d(nh, M->par) / (4 * M->nv);
+  case 2:
+    return (M->par + 2) / (2 * ARREF_PI) * powl(nh, M->par) / (4 * hu);
+  default:
+    return arref__beck_d(nh, M->par) * nh / (4 * hu);
+  }
+}
+ARREF_FN void arref__mf_setup(arref__mf *M, arref_hint *h, const double nrm[3],
+                              const double view[3], double par, int kind) {
+  long double s, al;
+  int k;
+  arref__ld3(nrm, M->n);
+  arref__normalize(M->n);
+  arref__ld3(view, M->v);
+  arref__normalize(M->v);
+  M->kind = kind;
+  M->par = (long double)par;
+  M->nv = arref__dot(M->n, M->v);
+  M->lv = (kind == 1) ? arref__beck_lambda(M->nv, M->par) : 0;
+  for (k = 0; k < 3; k++)
+    h->axis[k] = 2 * M->nv * M->n[k] - M->v[k];
+  al = (kind == 1 || kind == 3 || kind == 4) ? M->par : sqrtl(2 / (M->par + 2));
+  s = al * (M->nv > 0.05L ? M->nv : 0.05L);
+  h->sigma = s < 1 ? s : 1;
+}
+/* directional albedo of kinds 0 and 1 (the hemisphere as 4 octant triangles), abs tol tol */
+ARREF_FN long double arref_mf_albedo(const double nrm[3], const double view[3], double par,
+                                     int kind, long double tol) {
+  arref__mf M;
+  arref_hint h;
+  arref__st s;
+  long double t1[3], t2[3], tri[4][3][3];
+  int q, k;
+  arref__mf_setup(&M, &h, nrm, view, par, kind);
+  arref__frame(M.n, t1, t2);
+  for (q = 0; q < 4; q++)
+    for (k = 0; k < 3; k++) {
+      long double x = q == 0   ? t1[k]
+                      : q == 1 ? t2[k]
+                      : q == 2 ? -t1[k]
+                               : -t2[k],
+                  y = q == 0   ? t2[k]
+                      : q == 1 ? -t1[k]
+                      : q == 2 ? -t2[k]
+                               : t1[k];
+      tri[q][0][k] = x;
+      tri[q][1][k] = y;
+      tri[q][2][k] = M.n[k];
+    }
+  arref__st_init(&s, arref__mf_f, &M, &h, tol, 12);
+  return arref__tris(&s, tri, 4);
+}
+/* the integral over the polygon (clipped to n.l >= 0) of integrand `kind`, absolute tolerance
+   tol */
+ARREF_FN long double arref_polygon_mf(const double (*v)[3], int nv, const double nrm[3],
+                                      const double view[3], double par, int kind, long double tol) {
+  arref__mf M;
+  arref_hint h;
+  arref__mf_setup(&M, &h, nrm, view, par, kind);
+  return arref__polygon_o(v, nv, (const double(*)[3])nrm, 1, arref__mf_f, &M, &h, tol, 12).value;
+}
+
 /* ---------------------------------------------------------------- Arvo exact moment */
 ARREF_FN long double arref_polygon_moment_arvo(const double (*v)[3], int nv, const double axis[3],
                                                int e, const double *nrm) {
