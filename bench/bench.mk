@@ -88,3 +88,14 @@ bench-brdftab: build/bench/bench_brdftab
 
 bench: bench-brdftab
 .PHONY: bench-brdftab
+
+# issue 3: the GLSL solid angle's float error, reproduced by a float twin of the C kernel
+SOLID_N ?= 2000000
+build/bench/solid_angle_float: bench/solid_angle_float.c
+	@mkdir -p build/bench
+	$(BENCH_CC) -std=c99 -O2 -ffp-contract=off $(BENCH_WARN) -o $@ bench/solid_angle_float.c \
+	  -lquadmath -lm
+
+bench-solid-float: build/bench/solid_angle_float
+	build/bench/solid_angle_float $(SOLID_N)
+.PHONY: bench-solid-float
