@@ -25802,7 +25802,7 @@ shli_cap_light_grad_avx512(int n, const shli_real *g, shli_real wgt, shli_real g
     fl = fl + 1.0;
   }
   shli_sh_eval_xyz(n, wg[0], wg[1], wg[2], io_sh);
-  if (n >= 5) {
+  if (n >= 3) { /* n = 3, 4 too: faster than the straight-line scalar gradient here */
     shli_sh_grad_avx512(n, io_sh, wg[0], wg[1], wg[2], 1.0f, io_grad);
   } else {
     shli_sh_grad(n, io_sh, wg[0], wg[1], wg[2], 1.0f, io_grad);
