@@ -25619,8 +25619,8 @@ SHLIGHT_INLINE void shli_cap_light_apply(int n, const shli_real *g, shli_real wg
   int m;
   int b;
 #if SHLIGHT_SIMD_EVAL
-  if (n <= SHLIGHT_UNROLLED_BANDS) {
-    /* the weights first, then 16 coefficients per multiply */
+  if (n >= 3 && n <= SHLIGHT_UNROLLED_BANDS) {
+    /* the weights first, then 16 coefficients per multiply (n = 2: the scalar loop is faster) */
     float kw[SHLIGHT_UNROLLED_BANDS];
     kw[0] = SHLIGHT_FLOAT(f / (1.0 + al));
     pl = al;

@@ -21,8 +21,8 @@ void shli_cap_light_apply(int n, shli_real g[8], shli_real wgt,
   int m;
   int b;
 #if SHLIGHT_SIMD_EVAL
-  if (n <= SHLIGHT_UNROLLED_BANDS) {
-    /* the weights first, then 16 coefficients per multiply */
+  if (n >= 3 && n <= SHLIGHT_UNROLLED_BANDS) {
+    /* the weights first, then 16 coefficients per multiply (n = 2: the scalar loop is faster) */
     float kw[SHLIGHT_UNROLLED_BANDS];
     kw[0] = SHLIGHT_FLOAT(f / (1.0 + al));
     pl = al;
