@@ -25817,7 +25817,9 @@ shli_cap_light_grad_avx512(int n, const shli_real *g, shli_real wgt, shli_real g
    C); Y at the float-rounded axis. Degenerate inputs (see >>light): r <= 0 / NaN, NaN or
    infinite positions: zeros; x on or inside the sphere: the hemisphere about c - x (its
    value at the surface); x == c: the hemisphere about +z. out_sh: n * n floats. Cost: one
-   shl_sh_eval, n * n mul, O(n) double recurrence (2 divisions per band). */
+   shl_sh_eval, n * n mul (AVX-512, 3 <= n <= 16: one permute and one multiply per 16
+   coefficients), the O(n) double recurrence, 2 sqrt and 2 divisions; 15 / 40 / 91 ns at
+   n = 2 / 8 / 16 (bench/out/light.md, Zen 4). */
 SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], float r,
                                      float *out_sh) {
   shli_real g[8];
@@ -25845,8 +25847,12 @@ SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], 
    d -> r+ (1 / alpha: exact, large, finite); on or inside the sphere the radial term is 0
    (the hemisphere extension is constant along rays from c); x == c, r <= 0 / NaN, NaN or
    infinite positions: zero gradient (values as shl_sphere_light). out_sh: n * n floats,
-   out_grad: n * n float[3]. Cost: one shl_sh_eval_grad (without its input normalisation)
-   plus 7 mul per coefficient and the O(n) recurrence. */
+   out_grad: n * n float[3]. Cost: the basis values and gradient at the unit axis (the
+   passes of shl_sh_eval_grad without its input normalisation), the O(n) recurrence with 4
+   weights per band and 7 flops per coefficient (AVX-512, n <= 16: 16 floats at a time):
+   1.9 / 2.6 / 2.9 times shl_sphere_light at n = 2 / 8 / 16, 7.8 / 10.3 at n = 32 / 64 (the
+   basis gradient alone costs 1.7 - 1.9 times the whole value-only light from n = 4 up and
+   6 - 8 times at n = 32, 64; bench/out/light.md). */
 SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c[3], float r,
                                           float *out_sh, float (*out_grad)[3]) {
   shli_real g[8];
@@ -26049,8 +26055,13 @@ SHLIGHT_INLINE shli_real shli_atan2r(shli_real y, shli_real x) {
    distance 1e4 (no unit-vector cancellation: the printed form loses 6e-2 there). Degenerate:
    zero-area triangle 0; x at a vertex 0; x in the triangle's plane: 0 outside the triangle,
    2 pi inside it (both sides' limits are +-2 pi), 0 or 2 pi on an edge; NaN or infinite input:
-   0. GLSL: |p_i - x| up to 1e12 (the triple product of lengths stays below FLT_MAX). Cost:
-   3 sqrt, ~40 flops and the own atan2 (2 sqrt, 8-term polynomial). */
+   0. GLSL: |p_i - x| up to 1e12 (the triple product of lengths stays below FLT_MAX); in
+   float the sum D cancels when two pairs of the R_i are nearly opposite (x near an edge, or
+   near a vertex with the other two almost behind each other): the GLSL result is within
+   2.5 u (|Omega| + 2 (|D| EN + |N| ED) / (N^2 + D^2)) of the exact one, EN = |R0||p1 - p0|
+   |p2 - p0| and ED the sum of the magnitudes of D's terms (up to 1.2e-2 of the face-on solid
+   angle area / d^2 there; bench/solid_angle_float.c, tests/test_glsl). Cost: 3 sqrt, ~40 flops
+   and the own atan2 (2 sqrt, 8-term polynomial). */
 SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3],
                                               const float p1[3], const float p2[3]) {
   shli_real ax = SHLIGHT_REAL(p0[0]) - SHLIGHT_REAL(x[0]);
