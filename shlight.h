@@ -25818,7 +25818,7 @@ shli_cap_light_grad_avx512(int n, const shli_real *g, shli_real wgt, shli_real g
    infinite positions: zeros; x on or inside the sphere: the hemisphere about c - x (its
    value at the surface); x == c: the hemisphere about +z. out_sh: n * n floats. Cost: one
    shl_sh_eval, n * n mul (AVX-512, 3 <= n <= 16: one permute and one multiply per 16
-   coefficients), the O(n) double recurrence, 2 sqrt and 2 divisions; 15 / 40 / 91 ns at
+   coefficients), the O(n) double recurrence, 2 sqrt and 2 divisions; 12 / 40 / 93 ns at
    n = 2 / 8 / 16 (bench/out/light.md, Zen 4). */
 SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], float r,
                                      float *out_sh) {
@@ -25850,9 +25850,9 @@ SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], 
    out_grad: n * n float[3]. Cost: the basis values and gradient at the unit axis (the
    passes of shl_sh_eval_grad without its input normalisation), the O(n) recurrence with 4
    weights per band and 7 flops per coefficient (AVX-512, n <= 16: 16 floats at a time):
-   1.9 / 2.6 / 2.9 times shl_sphere_light at n = 2 / 8 / 16, 7.8 / 10.3 at n = 32 / 64 (the
-   basis gradient alone costs 1.7 - 1.9 times the whole value-only light from n = 4 up and
-   6 - 8 times at n = 32, 64; bench/out/light.md). */
+   2.5 / 2.7 / 3.1 times shl_sphere_light at n = 2 / 8 / 16, 8.4 / 11 at n = 32 / 64 (the
+   basis gradient alone costs 1.6 - 2.0 times the whole value-only light from n = 4 up and
+   6 - 9 times at n = 32, 64; bench/out/light.md). */
 SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c[3], float r,
                                           float *out_sh, float (*out_grad)[3]) {
   shli_real g[8];
