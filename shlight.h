@@ -25327,7 +25327,12 @@ SHLIGHT_INLINE void shli_cap_frame(shli_real dx, shli_real dy, shli_real dz, shl
   } else {
     s = rr * iu;
     out_g[4] = s * s;
+#if SHLIGHT_REAL_WIDE
+    /* double: (d - r)(d + r) of floats neither overflows nor underflows; one division less */
+    out_g[5] = SHLIGHT_SQRTR((dd - r) * (dd + r)) * iu;
+#else
     out_g[5] = SHLIGHT_SQRTR(((dd - r) / dd) * ((dd + r) / dd));
+#endif
   }
 }
 
@@ -25494,6 +25499,112 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    model: exact in L_0 only as d / sqrt(area) -> inf (MATH.md sec. 4 table). The exact solid
    angle is shl_triangle_solid_angle. */
 
+/* @generated begin light_idx */
+#if SHLIGHT_SIMD_EVAL
+static const int SHLI_LIGHT_BAND[256] = {
+    0,  1,  1,  1,  2,  2,  2,  2,  2,  3,  3,  3,  3,  3,  3,  3,  4,  4,  4,  4,  4,  4,  4,  4,
+    4,  5,  5,  5,  5,  5,  5,  5,  5,  5,  5,  5,  6,  6,  6,  6,  6,  6,  6,  6,  6,  6,  6,  6,
+    6,  7,  7,  7,  7,  7,  7,  7,  7,  7,  7,  7,  7,  7,  7,  7,  8,  8,  8,  8,  8,  8,  8,  8,
+    8,  8,  8,  8,  8,  8,  8,  8,  8,  9,  9,  9,  9,  9,  9,  9,  9,  9,  9,  9,  9,  9,  9,  9,
+    9,  9,  9,  9,  10, 10, 10, 10, 10, 10, 10, 10, 10, 10, 10, 10, 10, 10, 10, 10, 10, 10, 10, 10,
+    10, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11,
+    12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12, 12,
+    12, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13,
+    13, 13, 13, 13, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14,
+    14, 14, 14, 14, 14, 14, 14, 14, 14, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15,
+    15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15};
+static const int SHLI_LIGHT_AOS[48] = {
+    0, 0, 0, 1, 1, 1, 2,  2,  2,  3,  3,  3,  4,  4,  4,  5,  5,  5,  6,  6,  6,  7,  7,  7,
+    8, 8, 8, 9, 9, 9, 10, 10, 10, 11, 11, 11, 12, 12, 12, 13, 13, 13, 14, 14, 14, 15, 15, 15};
+#endif
+/* @generated end light_idx */
+
+#if SHLIGHT_SIMD_EVAL
+/* The per-band light weights on 16 coefficients at a time (C only, AVX-512, n <= 16): one
+   permute gives each lane the weight of its band (SHLI_LIGHT_BAND). */
+#if defined(__GNUC__) || defined(__clang__)
+#define SHLI_LIGHT_FORCE __attribute__((always_inline)) /* literal n specialises */
+#else
+#define SHLI_LIGHT_FORCE
+#endif
+#define SHLI_LIGHT_M16(k) ((__mmask16)((k) >= 16 ? 0xFFFFu : (1u << (k)) - 1u))
+#define SHLI_LIGHT_IDX(t, c) _mm512_loadu_si512((const void *)((t) + (c)))
+
+/* io[i] = k[l] io[i] for the coefficients i < n * n of band l. */
+SHLI_LIGHT_FORCE SHLIGHT_CPU_INLINE void shli_light_scale_avx512(int n, const float *k, float *io) {
+  __m512 kv = _mm512_maskz_loadu_ps(SHLI_LIGHT_M16(n), k);
+  int nn = n * n;
+  int c;
+  for (c = 0; c < nn; c += 16) {
+    __mmask16 m = SHLI_LIGHT_M16(nn - c);
+    _mm512_mask_storeu_ps(
+        io + c, m,
+        _mm512_mul_ps(_mm512_maskz_loadu_ps(m, io + c),
+                      _mm512_permutexvar_ps(SHLI_LIGHT_IDX(SHLI_LIGHT_BAND, c), kv)));
+  }
+}
+
+/* n <= 16: Y (io_sh) and its unit-radius gradient grad1 Y (io_grad) to the light's values and
+   gradient, per band l: io_sh = kv Y, io_grad = kg grad1 Y + (ka Y) w + (kb Y) gw, with
+   wg = (w, gw) (6 floats; gw = 0 skips its term). Per 16 coefficients: one vector of Y, four
+   band-weight permutes, then the 48 gradient floats as 3 vectors whose lane j holds component
+   (16 c + j) mod 3 of coefficient (16 c + j) / 3 (SHLI_LIGHT_AOS). */
+SHLI_LIGHT_FORCE SHLIGHT_CPU_INLINE void
+shli_light_wgrad_avx512(int n, const float *kv, const float *kg, const float *ka, const float *kb,
+                        const float *wg, float *io_sh, float (*io_grad)[3]) {
+  __mmask16 bm = SHLI_LIGHT_M16(n);
+  __m512 kvv = _mm512_maskz_loadu_ps(bm, kv);
+  __m512 kgv = _mm512_maskz_loadu_ps(bm, kg);
+  __m512 kav = _mm512_maskz_loadu_ps(bm, ka);
+  __m512 kbv = _mm512_maskz_loadu_ps(bm, kb);
+  __m512 vx = _mm512_set1_ps(wg[0]), vy = _mm512_set1_ps(wg[1]), vz = _mm512_set1_ps(wg[2]);
+  __m512 gx = _mm512_set1_ps(wg[3]), gy = _mm512_set1_ps(wg[4]), gz = _mm512_set1_ps(wg[5]);
+  __m512 u[3], v[3];
+  __m512i ai[3];
+  int hasg = wg[3] != 0.0f || wg[4] != 0.0f || wg[5] != 0.0f;
+  int nn = n * n;
+  int i0;
+  int c;
+  /* u[c] lane j = w[(16 c + j) mod 3] (lanes j mod 3 == 0, 1, 2: 0x9249, 0x2492, 0x4924) */
+  u[0] =
+      _mm512_mask_blend_ps((__mmask16)0x4924, _mm512_mask_blend_ps((__mmask16)0x2492, vx, vy), vz);
+  u[1] =
+      _mm512_mask_blend_ps((__mmask16)0x4924, _mm512_mask_blend_ps((__mmask16)0x2492, vy, vz), vx);
+  u[2] =
+      _mm512_mask_blend_ps((__mmask16)0x4924, _mm512_mask_blend_ps((__mmask16)0x2492, vz, vx), vy);
+  v[0] =
+      _mm512_mask_blend_ps((__mmask16)0x4924, _mm512_mask_blend_ps((__mmask16)0x2492, gx, gy), gz);
+  v[1] =
+      _mm512_mask_blend_ps((__mmask16)0x4924, _mm512_mask_blend_ps((__mmask16)0x2492, gy, gz), gx);
+  v[2] =
+      _mm512_mask_blend_ps((__mmask16)0x4924, _mm512_mask_blend_ps((__mmask16)0x2492, gz, gx), gy);
+  for (c = 0; c < 3; ++c) {
+    ai[c] = SHLI_LIGHT_IDX(SHLI_LIGHT_AOS, 16 * c);
+  }
+  for (i0 = 0; i0 < nn; i0 += 16) {
+    __mmask16 ym = SHLI_LIGHT_M16(nn - i0);
+    __m512i b = SHLI_LIGHT_IDX(SHLI_LIGHT_BAND, i0);
+    __m512 y = _mm512_maskz_loadu_ps(ym, io_sh + i0);
+    __m512 ya = _mm512_mul_ps(y, _mm512_permutexvar_ps(b, kav));
+    __m512 gk = _mm512_permutexvar_ps(b, kgv);
+    __m512 yb = _mm512_mul_ps(y, _mm512_permutexvar_ps(b, kbv));
+    float *o = &io_grad[i0][0];
+    int n3 = 3 * (nn - i0);
+    _mm512_mask_storeu_ps(io_sh + i0, ym, _mm512_mul_ps(y, _mm512_permutexvar_ps(b, kvv)));
+    for (c = 0; c < 3 && 16 * c < n3; ++c) {
+      __mmask16 m = SHLI_LIGHT_M16(n3 - 16 * c);
+      __m512 r =
+          _mm512_mul_ps(_mm512_permutexvar_ps(ai[c], gk), _mm512_maskz_loadu_ps(m, o + 16 * c));
+      r = _mm512_fmadd_ps(_mm512_permutexvar_ps(ai[c], ya), u[c], r);
+      if (hasg) {
+        r = _mm512_fmadd_ps(_mm512_permutexvar_ps(ai[c], yb), v[c], r);
+      }
+      _mm512_mask_storeu_ps(o + 16 * c, m, r);
+    }
+  }
+}
+#endif
+
 /* ZH factors of the cap (g from shli_cap_frame) applied in place to Y in out_sh, scaled by
    wgt: out_sh[l,m] = wgt 2 pi s^2 q_l Y_l^m. */
 SHLIGHT_INLINE void shli_cap_light_apply(int n, const shli_real *g, shli_real wgt, float *io_sh) {
@@ -25510,6 +25621,27 @@ SHLIGHT_INLINE void shli_cap_light_apply(int n, const shli_real *g, shli_real wg
   int l;
   int m;
   int b;
+#if SHLIGHT_SIMD_EVAL
+  if (n >= 3 && n <= SHLIGHT_UNROLLED_BANDS) {
+    /* the weights first, then 16 coefficients per multiply (n = 2: the scalar loop is faster) */
+    float kw[SHLIGHT_UNROLLED_BANDS];
+    kw[0] = SHLIGHT_FLOAT(f / (1.0 + al));
+    pl = al;
+    fl = 1.0;
+    for (l = 1; l < n; ++l) {
+      kw[l] = SHLIGHT_FLOAT(f * dl * SHLI_ZH_TAB[5 * l + 2]);
+      dn = dm + (2.0 * fl + 1.0) * pl;
+      pn = SHLI_ZH_TAB[5 * l] * al * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
+      dm = dl;
+      dl = dn;
+      pm = pl;
+      pl = pn;
+      fl = fl + 1.0;
+    }
+    shli_light_scale_avx512(n, kw, io_sh);
+    return;
+  }
+#endif
   io_sh[0] = SHLIGHT_FLOAT(f / (1.0 + al)) * io_sh[0];
   pl = al;
   fl = 1.0;
@@ -25545,11 +25677,15 @@ SHLIGHT_INLINE void shli_sh_eval_grad_unit(int n, float nx, float ny, float nz, 
 }
 
 /* Cap light and gradient from g (shli_cap_frame), times the weight wgt whose gradient with
-   respect to x is (gw0, gw1, gw2): out_sh = wgt S, out_grad = wgt grad S + S grad wgt. */
+   respect to x is (gw0, gw1, gw2): out_sh = wgt S, out_grad = wgt grad S + S grad wgt. Per band
+   l the double recurrence gives four float weights: kv = wgt f q_l (values), kg = -kv / d (of
+   the unit-radius gradient of Y), ka = wgt h P_l (of Y w, the radial term) and kb = f q_l (of
+   Y grad wgt); the products with w and grad wgt are formed in float. */
 SHLIGHT_INLINE void shli_cap_light_grad(int n, const shli_real *g, shli_real wgt, shli_real gw0,
                                         shli_real gw1, shli_real gw2, float *io_sh,
                                         float (*io_grad)[3]) {
   shli_real f = 6.283185307179586 * g[4];
+  shli_real fw = f * wgt;
   shli_real ir = g[3];
   shli_real al = g[5];
   shli_real h = 0.0;
@@ -25565,16 +25701,25 @@ SHLIGHT_INLINE void shli_cap_light_grad(int n, const shli_real *g, shli_real wgt
   float nx = SHLIGHT_FLOAT(g[0]);
   float ny = SHLIGHT_FLOAT(g[1]);
   float nz = SHLIGHT_FLOAT(g[2]);
+  float wg[6];
   float y;
   int l;
   int m;
   int i;
-  float bw[5 * SHLIGHT_MAX_BANDS];
+  float kv[SHLIGHT_MAX_BANDS];
+  float kg[SHLIGHT_MAX_BANDS];
+  float ka[SHLIGHT_MAX_BANDS];
+  float kb[SHLIGHT_MAX_BANDS];
+  wg[0] = nx;
+  wg[1] = ny;
+  wg[2] = nz;
+  wg[3] = SHLIGHT_FLOAT(gw0);
+  wg[4] = SHLIGHT_FLOAT(gw1);
+  wg[5] = SHLIGHT_FLOAT(gw2);
   if (al > 0.0) {
-    h = f * ir / al;
+    h = fw * ir / al;
   }
-  /* per band l: value weight kv, gradient weights kg (of grad Y) and (kx, ky, kz) (of Y):
-     value wgt f q_l Y; gradient wgt (-f q_l ir grad1 Y + h P_l Y w) + f q_l Y grad wgt */
+  /* value wgt f q_l Y; gradient wgt (-f q_l ir grad1 Y + h P_l Y w) + f q_l Y grad wgt */
   fl = 0.0;
   for (l = 0; l < n; ++l) {
     /* pl = P_l, pm = P_{l-1}, dl = P'_l, dm = P'_{l-1}; fl = l; q = q_l */
@@ -25582,11 +25727,10 @@ SHLIGHT_INLINE void shli_cap_light_grad(int n, const shli_real *g, shli_real wgt
     if (l == 0) {
       q = q0;
     }
-    bw[5 * l] = SHLIGHT_FLOAT(f * q * wgt);
-    bw[5 * l + 1] = SHLIGHT_FLOAT(-f * q * ir * wgt);
-    bw[5 * l + 2] = SHLIGHT_FLOAT(h * pl * wgt * g[0] + f * q * gw0);
-    bw[5 * l + 3] = SHLIGHT_FLOAT(h * pl * wgt * g[1] + f * q * gw1);
-    bw[5 * l + 4] = SHLIGHT_FLOAT(h * pl * wgt * g[2] + f * q * gw2);
+    kv[l] = SHLIGHT_FLOAT(fw * q);
+    kg[l] = SHLIGHT_FLOAT(-fw * q * ir);
+    ka[l] = SHLIGHT_FLOAT(h * pl);
+    kb[l] = SHLIGHT_FLOAT(f * q);
     dn = dm + (2.0 * fl + 1.0) * pl;
     pn = SHLI_ZH_TAB[5 * l] * al * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
     dm = dl;
@@ -25595,25 +25739,80 @@ SHLIGHT_INLINE void shli_cap_light_grad(int n, const shli_real *g, shli_real wgt
     pl = pn;
     fl = fl + 1.0;
   }
-#if SHLIGHT_SIMD_EVAL
-  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS) {
-    /* one fused AVX-512 pass evaluates Y, its gradient and applies the weights */
-    shli_sh_eval_grad_avx512(n, nx, ny, nz, 1.0f, bw, io_sh, io_grad);
-    return;
-  }
-#endif
   shli_sh_eval_grad_unit(n, nx, ny, nz, 1.0f, io_sh, io_grad);
   for (l = 0; l < n; ++l) {
     for (m = -l; m <= l; ++m) {
       i = l * (l + 1) + m;
       y = io_sh[i];
-      io_sh[i] = bw[5 * l] * y;
-      io_grad[i][0] = bw[5 * l + 1] * io_grad[i][0] + bw[5 * l + 2] * y;
-      io_grad[i][1] = bw[5 * l + 1] * io_grad[i][1] + bw[5 * l + 3] * y;
-      io_grad[i][2] = bw[5 * l + 1] * io_grad[i][2] + bw[5 * l + 4] * y;
+      io_sh[i] = kv[l] * y;
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 }
+
+#if SHLIGHT_SIMD_EVAL
+/* shli_cap_light_grad for n <= 16 (C only, AVX-512): the same weights, then Y and grad1 Y by
+   the basis kernels and the weights 16 floats at a time (shli_light_wgrad_avx512). Forced
+   inline (as the helpers above), so a literal n at the call specialises it as it does the
+   value path. */
+SHLI_LIGHT_FORCE SHLIGHT_CPU_INLINE void
+shli_cap_light_grad_avx512(int n, const shli_real *g, shli_real wgt, shli_real gw0, shli_real gw1,
+                           shli_real gw2, float *io_sh, float (*io_grad)[3]) {
+  shli_real f = 6.283185307179586 * g[4];
+  shli_real fw = f * wgt;
+  shli_real ir = g[3];
+  shli_real al = g[5];
+  shli_real h = 0.0;
+  shli_real fl = 0.0;
+  shli_real pm = 1.0;
+  shli_real pl = 1.0;
+  shli_real pn;
+  shli_real dm = 0.0;
+  shli_real dl = 0.0;
+  shli_real dn;
+  shli_real q = 1.0 / (1.0 + al);
+  float kv[SHLIGHT_UNROLLED_BANDS];
+  float kg[SHLIGHT_UNROLLED_BANDS];
+  float ka[SHLIGHT_UNROLLED_BANDS];
+  float kb[SHLIGHT_UNROLLED_BANDS];
+  float wg[6];
+  int l;
+  wg[0] = (float)g[0];
+  wg[1] = (float)g[1];
+  wg[2] = (float)g[2];
+  wg[3] = (float)gw0;
+  wg[4] = (float)gw1;
+  wg[5] = (float)gw2;
+  if (al > 0.0) {
+    h = fw * ir / al;
+  }
+  for (l = 0; l < n; ++l) {
+    if (l > 0) {
+      q = dl * SHLI_ZH_TAB[5 * l + 2];
+    }
+    kv[l] = (float)(fw * q);
+    kg[l] = (float)(-fw * q * ir);
+    ka[l] = (float)(h * pl);
+    kb[l] = (float)(f * q);
+    dn = dm + (2.0 * fl + 1.0) * pl;
+    pn = SHLI_ZH_TAB[5 * l] * al * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
+    dm = dl;
+    dl = dn;
+    pm = pl;
+    pl = pn;
+    fl = fl + 1.0;
+  }
+  shli_sh_eval_xyz(n, wg[0], wg[1], wg[2], io_sh);
+  if (n >= 3) { /* n = 3, 4 too: faster than the straight-line scalar gradient here */
+    shli_sh_grad_avx512(n, io_sh, wg[0], wg[1], wg[2], 1.0f, io_grad);
+  } else {
+    shli_sh_grad(n, io_sh, wg[0], wg[1], wg[2], 1.0f, io_grad);
+  }
+  shli_light_wgrad_avx512(n, kv, kg, ka, kb, wg, io_sh, io_grad);
+}
+#endif
 
 /* shl_sphere_light: SH of the unit-radiance sphere light (centre c, radius r) seen from x:
    out_sh[l (l+1) + m] = 2 pi s^2 q_l Y_l^m(w) (see >>light). Accuracy: the cap factors in
@@ -25621,7 +25820,9 @@ SHLIGHT_INLINE void shli_cap_light_grad(int n, const shli_real *g, shli_real wgt
    C); Y at the float-rounded axis. Degenerate inputs (see >>light): r <= 0 / NaN, NaN or
    infinite positions: zeros; x on or inside the sphere: the hemisphere about c - x (its
    value at the surface); x == c: the hemisphere about +z. out_sh: n * n floats. Cost: one
-   shl_sh_eval, n * n mul, O(n) double recurrence (2 divisions per band). */
+   shl_sh_eval, n * n mul (AVX-512, 3 <= n <= 16: one permute and one multiply per 16
+   coefficients), the O(n) double recurrence, 2 sqrt and 2 divisions; 12 / 40 / 93 ns at
+   n = 2 / 8 / 16 (bench/out/light.md, Zen 4). */
 SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], float r,
                                      float *out_sh) {
   shli_real g[8];
@@ -25649,8 +25850,12 @@ SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], 
    d -> r+ (1 / alpha: exact, large, finite); on or inside the sphere the radial term is 0
    (the hemisphere extension is constant along rays from c); x == c, r <= 0 / NaN, NaN or
    infinite positions: zero gradient (values as shl_sphere_light). out_sh: n * n floats,
-   out_grad: n * n float[3]. Cost: one shl_sh_eval_grad (without its input normalisation)
-   plus 7 mul per coefficient and the O(n) recurrence. */
+   out_grad: n * n float[3]. Cost: the basis values and gradient at the unit axis (the
+   passes of shl_sh_eval_grad without its input normalisation), the O(n) recurrence with 4
+   weights per band and 7 flops per coefficient (AVX-512, n <= 16: 16 floats at a time):
+   2.5 / 2.7 / 3.1 times shl_sphere_light at n = 2 / 8 / 16, 8.4 / 11 at n = 32 / 64 (the
+   basis gradient alone costs 1.6 - 2.0 times the whole value-only light from n = 4 up and
+   6 - 9 times at n = 32, 64; bench/out/light.md). */
 SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c[3], float r,
                                           float *out_sh, float (*out_grad)[3]) {
   shli_real g[8];
@@ -25670,6 +25875,12 @@ SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c
     }
     return;
   }
+#if SHLIGHT_SIMD_EVAL
+  if (n <= SHLIGHT_UNROLLED_BANDS) {
+    shli_cap_light_grad_avx512(n, g, 1.0, 0.0, 0.0, 0.0, out_sh, out_grad);
+    return;
+  }
+#endif
   shli_cap_light_grad(n, g, 1.0, 0.0, 0.0, 0.0, out_sh, out_grad);
 }
 
@@ -25782,6 +25993,14 @@ SHLIGHT_INLINE void shl_triangle_light_grad(int n, const float x[3], const float
   if (cg < 0.0) {
     sg = g[3];
   }
+#if SHLIGHT_SIMD_EVAL
+  if (n <= SHLIGHT_UNROLLED_BANDS) {
+    shli_cap_light_grad_avx512(n, g, SHLIGHT_ABSR(cg), sg * (nt[0] - cg * g[0]),
+                               sg * (nt[1] - cg * g[1]), sg * (nt[2] - cg * g[2]), out_sh,
+                               out_grad);
+    return;
+  }
+#endif
   shli_cap_light_grad(n, g, SHLIGHT_ABSR(cg), sg * (nt[0] - cg * g[0]), sg * (nt[1] - cg * g[1]),
                       sg * (nt[2] - cg * g[2]), out_sh, out_grad);
 }
@@ -25839,8 +26058,13 @@ SHLIGHT_INLINE shli_real shli_atan2r(shli_real y, shli_real x) {
    distance 1e4 (no unit-vector cancellation: the printed form loses 6e-2 there). Degenerate:
    zero-area triangle 0; x at a vertex 0; x in the triangle's plane: 0 outside the triangle,
    2 pi inside it (both sides' limits are +-2 pi), 0 or 2 pi on an edge; NaN or infinite input:
-   0. GLSL: |p_i - x| up to 1e12 (the triple product of lengths stays below FLT_MAX). Cost:
-   3 sqrt, ~40 flops and the own atan2 (2 sqrt, 8-term polynomial). */
+   0. GLSL: |p_i - x| up to 1e12 (the triple product of lengths stays below FLT_MAX); in
+   float the sum D cancels when two pairs of the R_i are nearly opposite (x near an edge, or
+   near a vertex with the other two almost behind each other): the GLSL result is within
+   2.5 u (|Omega| + 2 (|D| EN + |N| ED) / (N^2 + D^2)) of the exact one, EN = |R0||p1 - p0|
+   |p2 - p0| and ED the sum of the magnitudes of D's terms (up to 1.2e-2 of the face-on solid
+   angle area / d^2 there; bench/solid_angle_float.c, tests/test_glsl). Cost: 3 sqrt, ~40 flops
+   and the own atan2 (2 sqrt, 8-term polynomial). */
 SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3],
                                               const float p1[3], const float p2[3]) {
   shli_real ax = SHLIGHT_REAL(p0[0]) - SHLIGHT_REAL(x[0]);

@@ -32,11 +32,14 @@ bench: bench-basis
 
 build/bench/bench_light: bench/bench_light.c shlight.h tests/ref/lightref.h tests/ref/shref.h
 	@mkdir -p build/bench
-	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_light.c $(BENCH_LDLIBS)
+	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -DBENCH_FLAGS='"$(BENCH_CC) $(BENCH_CFLAGS)"' \
+	  -DBENCH_REV='"$(BENCH_REV)"' -o $@ bench/bench_light.c $(BENCH_LDLIBS)
 
 bench-light: build/bench/bench_light
 	@mkdir -p bench/out
+	CC=$(BENCH_CC) sh bench/callgrind_light.sh
 	build/bench/bench_light
+	cat bench/out/light_instr.md
 
 bench: bench-light
 .PHONY: bench-light
@@ -98,3 +101,14 @@ bench-brdftab: build/bench/bench_brdftab
 
 bench: bench-brdftab
 .PHONY: bench-brdftab
+
+# issue 3: the GLSL solid angle's float error, reproduced by a float twin of the C kernel
+SOLID_N ?= 2000000
+build/bench/solid_angle_float: bench/solid_angle_float.c
+	@mkdir -p build/bench
+	$(BENCH_CC) -std=c99 -O2 -ffp-contract=off $(BENCH_WARN) -o $@ bench/solid_angle_float.c \
+	  -lquadmath -lm
+
+bench-solid-float: build/bench/solid_angle_float
+	build/bench/solid_angle_float $(SOLID_N)
+.PHONY: bench-solid-float

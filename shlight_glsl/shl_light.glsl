@@ -20,6 +20,27 @@ void shli_cap_light_apply(int n, shli_real g[8], shli_real wgt,
   int l;
   int m;
   int b;
+#if SHLIGHT_SIMD_EVAL
+  if (n >= 3 && n <= SHLIGHT_UNROLLED_BANDS) {
+    /* the weights first, then 16 coefficients per multiply (n = 2: the scalar loop is faster) */
+    float kw[SHLIGHT_UNROLLED_BANDS];
+    kw[0] = SHLIGHT_FLOAT(f / (1.0 + al));
+    pl = al;
+    fl = 1.0;
+    for (l = 1; l < n; ++l) {
+      kw[l] = SHLIGHT_FLOAT(f * dl * SHLI_ZH_TAB[5 * l + 2]);
+      dn = dm + (2.0 * fl + 1.0) * pl;
+      pn = SHLI_ZH_TAB[5 * l] * al * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
+      dm = dl;
+      dl = dn;
+      pm = pl;
+      pl = pn;
+      fl = fl + 1.0;
+    }
+    shli_light_scale_avx512(n, kw, io_sh);
+    return;
+  }
+#endif
   io_sh[0] = SHLIGHT_FLOAT(f / (1.0 + al)) * io_sh[0];
   pl = al;
   fl = 1.0;
@@ -57,6 +78,7 @@ void shli_cap_light_grad(int n, shli_real g[8], shli_real wgt, shli_real gw0, sh
                          shli_real gw2, inout float io_sh[SHLIGHT_MAX_COEFFS],
                          inout vec3 io_grad[SHLIGHT_MAX_COEFFS]) {
   shli_real f = 6.283185307179586 * g[4];
+  shli_real fw = f * wgt;
   shli_real ir = g[3];
   shli_real al = g[5];
   shli_real h = 0.0;
@@ -72,16 +94,25 @@ void shli_cap_light_grad(int n, shli_real g[8], shli_real wgt, shli_real gw0, sh
   float nx = SHLIGHT_FLOAT(g[0]);
   float ny = SHLIGHT_FLOAT(g[1]);
   float nz = SHLIGHT_FLOAT(g[2]);
+  float wg[6];
   float y;
   int l;
   int m;
   int i;
-  float bw[5 * SHLIGHT_MAX_BANDS];
+  float kv[SHLIGHT_MAX_BANDS];
+  float kg[SHLIGHT_MAX_BANDS];
+  float ka[SHLIGHT_MAX_BANDS];
+  float kb[SHLIGHT_MAX_BANDS];
+  wg[0] = nx;
+  wg[1] = ny;
+  wg[2] = nz;
+  wg[3] = SHLIGHT_FLOAT(gw0);
+  wg[4] = SHLIGHT_FLOAT(gw1);
+  wg[5] = SHLIGHT_FLOAT(gw2);
   if (al > 0.0) {
-    h = f * ir / al;
+    h = fw * ir / al;
   }
-  /* per band l: value weight kv, gradient weights kg (of grad Y) and (kx, ky, kz) (of Y):
-     value wgt f q_l Y; gradient wgt (-f q_l ir grad1 Y + h P_l Y w) + f q_l Y grad wgt */
+  /* value wgt f q_l Y; gradient wgt (-f q_l ir grad1 Y + h P_l Y w) + f q_l Y grad wgt */
   fl = 0.0;
   for (l = 0; l < n; ++l) {
     /* pl = P_l, pm = P_{l-1}, dl = P'_l, dm = P'_{l-1}; fl = l; q = q_l */
@@ -89,11 +120,10 @@ void shli_cap_light_grad(int n, shli_real g[8], shli_real wgt, shli_real gw0, sh
     if (l == 0) {
       q = q0;
     }
-    bw[5 * l] = SHLIGHT_FLOAT(f * q * wgt);
-    bw[5 * l + 1] = SHLIGHT_FLOAT(-f * q * ir * wgt);
-    bw[5 * l + 2] = SHLIGHT_FLOAT(h * pl * wgt * g[0] + f * q * gw0);
-    bw[5 * l + 3] = SHLIGHT_FLOAT(h * pl * wgt * g[1] + f * q * gw1);
-    bw[5 * l + 4] = SHLIGHT_FLOAT(h * pl * wgt * g[2] + f * q * gw2);
+    kv[l] = SHLIGHT_FLOAT(fw * q);
+    kg[l] = SHLIGHT_FLOAT(-fw * q * ir);
+    ka[l] = SHLIGHT_FLOAT(h * pl);
+    kb[l] = SHLIGHT_FLOAT(f * q);
     dn = dm + (2.0 * fl + 1.0) * pl;
     pn = SHLI_ZH_TAB[5 * l] * al * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
     dm = dl;
@@ -102,22 +132,15 @@ void shli_cap_light_grad(int n, shli_real g[8], shli_real wgt, shli_real gw0, sh
     pl = pn;
     fl = fl + 1.0;
   }
-#if SHLIGHT_SIMD_EVAL
-  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS) {
-    /* one fused AVX-512 pass evaluates Y, its gradient and applies the weights */
-    shli_sh_eval_grad_avx512(n, nx, ny, nz, 1.0f, bw, io_sh, io_grad);
-    return;
-  }
-#endif
   shli_sh_eval_grad_unit(n, nx, ny, nz, 1.0f, io_sh, io_grad);
   for (l = 0; l < n; ++l) {
     for (m = -l; m <= l; ++m) {
       i = l * (l + 1) + m;
       y = io_sh[i];
-      io_sh[i] = bw[5 * l] * y;
-      io_grad[i][0] = bw[5 * l + 1] * io_grad[i][0] + bw[5 * l + 2] * y;
-      io_grad[i][1] = bw[5 * l + 1] * io_grad[i][1] + bw[5 * l + 3] * y;
-      io_grad[i][2] = bw[5 * l + 1] * io_grad[i][2] + bw[5 * l + 4] * y;
+      io_sh[i] = kv[l] * y;
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 }
@@ -160,6 +183,12 @@ void shl_sphere_light_grad(int n, vec3 x, vec3 c, float r, out float out_sh[SHLI
     }
     return;
   }
+#if SHLIGHT_SIMD_EVAL
+  if (n <= SHLIGHT_UNROLLED_BANDS) {
+    shli_cap_light_grad_avx512(n, g, 1.0, 0.0, 0.0, 0.0, out_sh, out_grad);
+    return;
+  }
+#endif
   shli_cap_light_grad(n, g, 1.0, 0.0, 0.0, 0.0, out_sh, out_grad);
 }
 
@@ -251,6 +280,14 @@ void shl_triangle_light_grad(int n, vec3 x, vec3 p0, vec3 p1, vec3 p2,
   if (cg < 0.0) {
     sg = g[3];
   }
+#if SHLIGHT_SIMD_EVAL
+  if (n <= SHLIGHT_UNROLLED_BANDS) {
+    shli_cap_light_grad_avx512(n, g, SHLIGHT_ABSR(cg), sg * (nt[0] - cg * g[0]),
+                               sg * (nt[1] - cg * g[1]), sg * (nt[2] - cg * g[2]), out_sh,
+                               out_grad);
+    return;
+  }
+#endif
   shli_cap_light_grad(n, g, SHLIGHT_ABSR(cg), sg * (nt[0] - cg * g[0]), sg * (nt[1] - cg * g[1]),
                       sg * (nt[2] - cg * g[2]), out_sh, out_grad);
 }

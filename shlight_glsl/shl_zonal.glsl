@@ -80,7 +80,12 @@ void shli_cap_frame(shli_real dx, shli_real dy, shli_real dz, shli_real r, out s
   } else {
     s = rr * iu;
     out_g[4] = s * s;
+#if SHLIGHT_REAL_WIDE
+    /* double: (d - r)(d + r) of floats neither overflows nor underflows; one division less */
+    out_g[5] = SHLIGHT_SQRTR((dd - r) * (dd + r)) * iu;
+#else
     out_g[5] = SHLIGHT_SQRTR(((dd - r) / dd) * ((dd + r) / dd));
+#endif
   }
 }
 

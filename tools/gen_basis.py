@@ -528,6 +528,20 @@ def gen_lane_table():
     return vals
 
 
+def gen_light_idx():
+    """>>light, C only (AVX-512): SHLI_LIGHT_BAND[i] = l for coefficient i = l (l+1) + m < 256
+    (the band of each lane when per-band light weights scale 16 coefficients at a time), and
+    SHLI_LIGHT_AOS[j] = j / 3 for the 48 floats of 16 gradients in float[3] layout (the
+    coefficient of each lane)"""
+    band = [int(math.isqrt(i)) for i in range(UNROLLED * UNROLLED)]
+    aos = [j // 3 for j in range(48)]
+    lit = lambda v: '%d' % v
+    return (['#if SHLIGHT_SIMD_EVAL'] +
+            fmt_table('int', 'SHLI_LIGHT_BAND', '%d' % len(band), band, lit, False) +
+            fmt_table('int', 'SHLI_LIGHT_AOS', '%d' % len(aos), aos, lit, False) +
+            ['#endif'])
+
+
 def c_regions():
     tab, diagv = gen_tables()
     R = {}
@@ -560,6 +574,7 @@ def c_regions():
                             lit_d, False)
     import gen_grad_simd
     R['gradv'] = gen_grad_simd.main()
+    R['light_idx'] = gen_light_idx()
     lt = gen_lane_table()
     R['lanes'] = ['#if SHLIGHT_SIMD_EVAL'] + fmt_table('float', 'SHLI_SH_LANES', '%d' % len(lt), lt, lit_f, False) + ['#endif']
     return R
