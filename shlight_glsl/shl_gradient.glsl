@@ -6452,18 +6452,15 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
     ir = SHLIGHT_FLOAT(SHLIGHT_SQRTR(iu));
     ib = ir;
   }
+#if SHLIGHT_SIMD_EVAL
+  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && ib == 1.0f) {
+    shli_sh_eval_grad_avx512(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, 0, out_y,
+                             out_grad);
+    return;
+  }
+#endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), out_y);
   if (ib == 1.0f) {
-#if SHLIGHT_SIMD_EVAL
-    /* the values, then the AVX-512 gradient pass from them: on Zen 4 faster than the fused
-       kernel shli_sh_eval_grad_avx512 (n = 10: ~270 against ~285 cycles without this
-       prologue; its gradient chunks wait on the value chain, here they run back to back) */
-    if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS) {
-      shli_sh_grad_avx512(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir,
-                          out_grad);
-      return;
-    }
-#endif
     shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, out_grad);
   } else {
     shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), 1.0f, out_grad);
