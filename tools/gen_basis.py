@@ -273,66 +273,77 @@ def gen_grad_tables():
 
 
 # ---------------------------------------------------------------- SIMD batch (C only)
-def gen_batch(n):
-    """shli_sh_batch_<n>(x, y, z, out, stride): one vector of directions, float Reinsch form"""
+def gen_batch_rs(n):
+    """shli_sh_batch_<n> for POLY_BANDS < n <= UNROLLED: one vector of directions, the float
+    Reinsch form of gen_core per column m (X_l^m in t = 1 - |z|, then Y = X U, X V with the
+    parity sign folded into U, V by a XOR, SHLI_VFLIP), products and sums kept apart (SHLI_VMULS, SHLI_VFMS2,
+    SHLI_VMADDS: never FMAs on AVX-512, see there), and column 0, whose chain is the longest,
+    interleaved evenly with the others (its variables are its own)."""
     L = []
     w = L.append
     w('static void shli_sh_batch_%d(SHLI_V x, SHLI_V y, SHLI_V z, float *out, ptrdiff_t stride) {' % n)
-    if n == 1:
-        w('  (void)x;')
-        w('  (void)y;')
-        w('  (void)z;')
-        w('  (void)stride;')
-        w('  SHLI_VSTORE(out, SHLI_VSET(%s));' % lit_f(diag(0)))
-        w('}')
-        return L
     w('  SHLI_V s2 = SHLI_VMADD(x, x, SHLI_VMUL(y, y));')
     w('  SHLI_V ir = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(z, z, s2)));')
     w('  SHLI_V az = SHLI_VMUL(SHLI_VABS(z), ir);')
     w('  SHLI_V t = SHLI_VDIV(SHLI_VMUL(s2, SHLI_VMUL(ir, ir)), SHLI_VADD(SHLI_VSET(1.0f), az));')
-    w('  SHLI_V sg = SHLI_VSIGN1(z);')
+    w('  SHLI_V sg = SHLI_VSGN(z);')
     w('@DECLS@')
     w('  x = SHLI_VMUL(x, ir);')
     w('  y = SHLI_VMUL(y, ir);')
-    w('  pc = x;')
-    w('  ps = y;')
+    cols = []
     for m in range(n):
-        if m >= 2:
-            w('  qc = SHLI_VNMADD(y, ps, SHLI_VMUL(x, pc));')
-            w('  ps = SHLI_VMADD(x, ps, SHLI_VMUL(y, pc));')
-            w('  pc = qc;')
+        C = []
+        v = (lambda s: s + '0') if m == 0 else (lambda s: s)
         k = diag(m)
         if m == 0:
-            w('  SHLI_VSTORE(out, SHLI_VSET(%s));' % lit_f(k))
+            C.append('  SHLI_VSTORE(out, SHLI_VSET(%s));' % lit_f(k))
         else:
-            w('  SHLI_VSTORE(out + %d * stride, SHLI_VMUL(SHLI_VSET(%s), pc));' % (idx(m, m), lit_f(k)))
-            w('  SHLI_VSTORE(out + %d * stride, SHLI_VMUL(SHLI_VSET(%s), ps));' % (idx(m, -m), lit_f(k)))
-            if m + 1 < n:
-                w('  gc = SHLI_VMUL(sg, pc);')
-                w('  gs = SHLI_VMUL(sg, ps);')
-        if m + 1 >= n:
-            continue
-        a, g, c = reinsch(m + 1, m)
-        w('  dd = SHLI_VMUL(SHLI_VSET(%s), t);' % lit_f(-a * k))
-        w('  xa = SHLI_VADD(SHLI_VSET(%s), dd);' % lit_f(g * k))
-        prev, cur = 'xa', 'xb'
-        for l in range(m + 1, n):
-            if l > m + 1:
-                a, g, c = reinsch(l, m)
-                w('  dd = SHLI_VNMADD(SHLI_VSET(%s), SHLI_VMUL(t, %s), SHLI_VMUL(SHLI_VSET(%s), dd));'
-                  % (lit_f(a), prev, lit_f(c)))
-                w('  %s = SHLI_VMADD(SHLI_VSET(%s), %s, dd);' % (cur, lit_f(g), prev))
-                prev, cur = cur, prev
-            odd = (l - m) % 2 == 1
-            if m == 0:
-                v = 'SHLI_VMUL(sg, %s)' % prev if odd else prev
-                w('  SHLI_VSTORE(out + %d * stride, %s);' % (idx(l, 0), v))
+            if m == 1:
+                C.append('  pc = x;')
+                C.append('  ps = y;')
             else:
-                w('  SHLI_VSTORE(out + %d * stride, SHLI_VMUL(%s, %s));' % (idx(l, m), prev, 'gc' if odd else 'pc'))
-                w('  SHLI_VSTORE(out + %d * stride, SHLI_VMUL(%s, %s));' % (idx(l, -m), prev, 'gs' if odd else 'ps'))
+                C.append('  qc = SHLI_VFMS2(x, pc, y, ps);')
+                C.append('  ps = SHLI_VFMA2(x, ps, y, pc);')
+                C.append('  pc = qc;')
+            C.append('  SHLI_VSTORE(out + %d * stride, SHLI_VMULS(SHLI_VSET(%s), pc));' % (idx(m, m), lit_f(k)))
+            C.append('  SHLI_VSTORE(out + %d * stride, SHLI_VMULS(SHLI_VSET(%s), ps));' % (idx(m, -m), lit_f(k)))
+            if m + 1 < n:
+                C.append('  gc = SHLI_VFLIP(pc, sg);')
+                C.append('  gs = SHLI_VFLIP(ps, sg);')
+        if m + 1 < n:
+            a, g, c = reinsch(m + 1, m)
+            C.append('  %s = SHLI_VMULS(SHLI_VSET(%s), t);' % (v('dd'), lit_f(-a * k)))
+            C.append('  %s = SHLI_VADD(SHLI_VSET(%s), %s);' % (v('xa'), lit_f(g * k), v('dd')))
+            prev, cur = v('xa'), v('xb')
+            for l in range(m + 1, n):
+                if l > m + 1:
+                    a, g, c = reinsch(l, m)
+                    C.append('  %s = SHLI_VMULS(t, %s);' % (v('tx'), prev))
+                    C.append('  %s = SHLI_VFMS2(SHLI_VSET(%s), %s, SHLI_VSET(%s), %s);'
+                             % (v('dd'), lit_f(c), v('dd'), lit_f(a), v('tx')))
+                    C.append('  %s = SHLI_VMADDS(SHLI_VSET(%s), %s, %s);' % (cur, lit_f(g), prev, v('dd')))
+                    prev, cur = cur, prev
+                odd = (l - m) % 2 == 1
+                if m == 0:
+                    e = 'SHLI_VFLIP(%s, sg)' % prev if odd else prev
+                    C.append('  SHLI_VSTORE(out + %d * stride, %s);' % (idx(l, 0), e))
+                else:
+                    C.append('  SHLI_VSTORE(out + %d * stride, SHLI_VMULS(%s, %s));'
+                             % (idx(l, m), prev, 'gc' if odd else 'pc'))
+                    C.append('  SHLI_VSTORE(out + %d * stride, SHLI_VMULS(%s, %s));'
+                             % (idx(l, -m), prev, 'gs' if odd else 'ps'))
+        cols.append(C)
+    c0 = cols[0]
+    cm = [st for C in cols[1:] for st in C]
+    k0 = len(c0)
+    for i, st in enumerate(cm):
+        while c0 and len(c0) * len(cm) > k0 * (len(cm) - i):
+            w(c0.pop(0))
+        w(st)
+    L += c0
     w('}')
-    return declare(L, [('SHLI_V', v, None) for v in ('pc', 'ps', 'qc', 'gc', 'gs', 'xa', 'xb', 'dd')])
-
+    return declare(L, [('SHLI_V', v, None) for v in ('pc', 'ps', 'qc', 'gc', 'gs', 'xa', 'xb', 'dd', 'tx',
+                                                     'xa0', 'xb0', 'dd0', 'tx0')])
 
 
 # ---------------------------------------------------------------- small n: float polynomials
@@ -461,9 +472,9 @@ def gen_batch_poly(n):
 def gen_batch2(n):
     """the batch kernel of n bands for two vectors of directions at once (A: lanes j..j+W-1,
     B: j+W..j+2W-1): every statement twice, constants shared, half the code per direction"""
-    one = gen_batch_poly(n) if n <= POLY_BANDS else gen_batch(n)
+    one = gen_batch_poly(n) if n <= POLY_BANDS else gen_batch_rs(n)
     names = ['x', 'y', 'z', 's2', 'ir', 'az', 't', 'sg', 'pc', 'ps', 'qc', 'gc', 'gs', 'xa', 'xb',
-             'dd', 'z2', 'xf']
+             'dd', 'z2', 'xf', 'tx', 'xa0', 'xb0', 'dd0', 'tx0']
     rx = re.compile(r'\b(%s)\b' % '|'.join(names))
     L = ['static void shli_sh_batch2_%d(const float *x, const float *y, const float *z, float *out,'
          % n, '                               ptrdiff_t stride) {']
@@ -559,7 +570,7 @@ def c_regions():
     R['gradient'] = gb
     bb = []
     for n in range(1, UNROLLED + 1):
-        bb += [''] + (gen_batch_poly(n) if n <= POLY_BANDS else gen_batch(n))
+        bb += [''] + (gen_batch_poly(n) if n <= POLY_BANDS else gen_batch_rs(n))
     for n in range(1, UNROLLED + 1):
         bb += [''] + gen_batch2(n)
     bb += ['', 'typedef void (*shli_sh_batch2_fn)(const float *, const float *, const float *, float *,',
