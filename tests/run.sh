@@ -55,7 +55,7 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/tests/test_gl_smoke build/tests/fuzz_replay build/tests/native/test_basis \
   build/tests/test_light build/tests/native/test_light build/tests/selftest_lightref \
   build/tests/test_grid build/tests/native/test_grid build/tests/test_grid_glsl \
-  build/tests/test_edge build/tests/selftest_arearef build/tests/test_edge_glsl \
+  build/tests/test_edge build/tests/selftest_arearef build/tests/test_edge_glsl build/tests/test_ggx \
   build/tests/test_brdf build/tests/native/test_brdf build/tests/test_brdf_glsl \
   build/tests/test_brdftab build/tests/fuzz_replay_brdftab build/tests/test_brdftab_glsl \
   build/tests/test_ssf build/tests/test_ssf_glsl \
@@ -69,6 +69,7 @@ step lightref-selftest build/tests/selftest_lightref
 step test_grid build/tests/test_grid
 step test_grid-march-native build/tests/native/test_grid
 step test_edge build/tests/test_edge
+step test_ggx build/tests/test_ggx
 step arearef-selftest build/tests/selftest_arearef
 step test_brdf build/tests/test_brdf
 step test_brdf-march-native build/tests/native/test_brdf

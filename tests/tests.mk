@@ -134,6 +134,11 @@ $(TESTS_BUILD)/native/test_edge: $(TESTS_EDGE_DEPS)
 $(TESTS_BUILD)/asan/test_edge: $(TESTS_EDGE_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion $(TESTS_ASAN) -o $@ tests/test_edge.c -lm
+# >>edge GGX polygon lights (shl_polygon_ggx) against long double cubature (tests/ref/arearef.h)
+TESTS_GGX_DEPS := tests/test_ggx.c tests/ref/arearef.h tests/ref/ggxcases.h tests/tl.h shlight.h
+$(TESTS_BUILD)/test_ggx: $(TESTS_GGX_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion -o $@ tests/test_ggx.c -lm
 $(TESTS_BUILD)/selftest_arearef: tests/selftest_arearef.c tests/ref/arearef.h
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g -o $@ tests/selftest_arearef.c -lm
