@@ -1208,13 +1208,21 @@ float shl_polygon_ggx_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float 
 
 shli_real shli_ggx_j(shli_real y, shli_real omy) {
   shli_real x;
-  shli_real p = 0.0;
-  int k = 15;
-  if (y < 0.1) {
-    while (k >= 1) {
-      p = SHLIGHT_ITOR(k) / SHLIGHT_ITOR(2 * k + 1) + y * p;
-      k = k - 1;
-    }
+  shli_real p;
+  if (y < 0.1) { /* 13 terms: the rest < 1e-13 */
+    p = 0.48148148148148145;
+    p = 0.48 + y * p;
+    p = 0.4782608695652174 + y * p;
+    p = 0.47619047619047616 + y * p;
+    p = 0.47368421052631576 + y * p;
+    p = 0.47058823529411764 + y * p;
+    p = 0.4666666666666667 + y * p;
+    p = 0.46153846153846156 + y * p;
+    p = 0.45454545454545453 + y * p;
+    p = 0.4444444444444444 + y * p;
+    p = 0.42857142857142855 + y * p;
+    p = 0.4 + y * p;
+    p = 0.3333333333333333 + y * p;
     return p;
   }
   x = SHLIGHT_SQRTR(y);
