@@ -27595,8 +27595,9 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    A = int_H D (h.n) dh, M1 = int_H D (h.n) h dh (both exact up to a 1D quadrature, below),
    k = D (h.n) / (4 h.v) (so that k dl = D (h.n) dh), g the gradient of w at h* (central
    differences), and the remainder by cubature over P: a fan from the direction of the vertex
-   centroid, each triangle split 1 -> 4 at its edge midpoints, a 7-point degree-5 rule on each
-   piece (the remainder is second order where D is narrow and smooth where D is wide).
+   centroid, triangles wider than 53 deg split 1 -> 4 at their edge midpoints, a 7-point
+   degree-5 rule on each piece (the remainder is second order where D is narrow and smooth where
+   D is wide).
    A and M1 by Stokes along the boundary of H(P), the image of P's great arcs l(t) = cos t a +
    sin t b, t in [0, Phi], under l -> l + v (homogeneous: no normalisation needed), with
    Q = l + v, Q_z = Q.n, |Q_xy|^2 = |Q|^2 - Q_z^2, c = 1 - alpha^2:
@@ -27917,6 +27918,7 @@ SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nr
   shli_real res = 0.0;
   shli_real w;
   int inside = 1;
+  int np;
   int nc;
   int i;
   int j;
@@ -28146,8 +28148,9 @@ SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nr
     }
   }
   aa = am[0] * 0.15915494309189534;
-  /* the remainder: a fan from the vertex centroid's direction, each triangle split 1 -> 4 at
-     its edge midpoints, the 7-point degree-5 rule (Dunavant) on each piece */
+  /* the remainder: a fan from the vertex centroid's direction, a triangle with a side over 53
+     deg (cos < 0.6) split 1 -> 4 at its edge midpoints, the 7-point degree-5 rule (Dunavant) on
+     each piece */
   sx = 0.0;
   sy = 0.0;
   sz = 0.0;
@@ -28180,7 +28183,12 @@ SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nr
     tr[2] = px[j] + sx;
     ts[2] = py[j] + sy;
     tw[2] = pz[j] + sz;
-    for (k = 0; k < 4; ++k) {
+    np = 1;
+    if (sx * px[i] + sy * py[i] + sz * pz[i] < 0.6 || sx * px[j] + sy * py[j] + sz * pz[j] < 0.6 ||
+        px[i] * px[j] + py[i] * py[j] + pz[i] * pz[j] < 0.6) {
+      np = 4;
+    }
+    for (k = 0; k < np; ++k) {
       /* (c, m0, m2), (m0, a, m1), (m2, m1, b), (m0, m1, m2): c centroid, a b the edge */
       tr[3] = tr[0];
       ts[3] = ts[0];
@@ -28212,6 +28220,14 @@ SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nr
         tr[3] = tr[2];
         ts[3] = ts[2];
         tw[3] = tw[2];
+        tr[5] = px[j];
+        ts[5] = py[j];
+        tw[5] = pz[j];
+      }
+      if (np == 1) {
+        tr[4] = px[i];
+        ts[4] = py[i];
+        tw[4] = pz[i];
         tr[5] = px[j];
         ts[5] = py[j];
         tw[5] = pz[j];

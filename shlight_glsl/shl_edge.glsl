@@ -1479,6 +1479,7 @@ float shl_polygon_ggx(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, 
   shli_real res = 0.0;
   shli_real w;
   int inside = 1;
+  int np;
   int nc;
   int i;
   int j;
@@ -1708,8 +1709,9 @@ float shl_polygon_ggx(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, 
     }
   }
   aa = am[0] * 0.15915494309189534;
-  /* the remainder: a fan from the vertex centroid's direction, each triangle split 1 -> 4 at
-     its edge midpoints, the 7-point degree-5 rule (Dunavant) on each piece */
+  /* the remainder: a fan from the vertex centroid's direction, a triangle with a side over 53
+     deg (cos < 0.6) split 1 -> 4 at its edge midpoints, the 7-point degree-5 rule (Dunavant) on
+     each piece */
   sx = 0.0;
   sy = 0.0;
   sz = 0.0;
@@ -1742,7 +1744,12 @@ float shl_polygon_ggx(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, 
     tr[2] = px[j] + sx;
     ts[2] = py[j] + sy;
     tw[2] = pz[j] + sz;
-    for (k = 0; k < 4; ++k) {
+    np = 1;
+    if (sx * px[i] + sy * py[i] + sz * pz[i] < 0.6 || sx * px[j] + sy * py[j] + sz * pz[j] < 0.6 ||
+        px[i] * px[j] + py[i] * py[j] + pz[i] * pz[j] < 0.6) {
+      np = 4;
+    }
+    for (k = 0; k < np; ++k) {
       /* (c, m0, m2), (m0, a, m1), (m2, m1, b), (m0, m1, m2): c centroid, a b the edge */
       tr[3] = tr[0];
       ts[3] = ts[0];
@@ -1774,6 +1781,14 @@ float shl_polygon_ggx(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, 
         tr[3] = tr[2];
         ts[3] = ts[2];
         tw[3] = tw[2];
+        tr[5] = px[j];
+        ts[5] = py[j];
+        tw[5] = pz[j];
+      }
+      if (np == 1) {
+        tr[4] = px[i];
+        ts[4] = py[i];
+        tw[4] = pz[i];
         tr[5] = px[j];
         ts[5] = py[j];
         tw[5] = pz[j];

@@ -58,16 +58,16 @@ static double ref(const double (*q)[3], int nv, const double nrm[3], const doubl
 
 /* The research sampler, 24 quads per roughness. Measured here (gcc -O2, x86-64), median rel.
    error on visible configurations / max error over albedo:
-     roughness 0.05: 1.8e-6 / 9.8e-4   0.1: 5.5e-6 / 4.5e-3   0.2: 3.6e-7 / 2.2e-3
-     roughness 0.3:  1.3e-5 / 2.0e-4   0.5: 1.1e-5 / 1.8e-4   0.7: 3.8e-5 / 1.2e-4
-     roughness 1.0:  1.8e-4 / 2.6e-4
+     roughness 0.05: 1.6e-6 / 9.8e-4   0.1: 5.5e-6 / 7.8e-3   0.2: 5.7e-7 / 2.1e-3
+     roughness 0.3:  1.3e-5 / 1.3e-4   0.5: 5.4e-6 / 1.9e-4   0.7: 3.0e-5 / 1.3e-4
+     roughness 1.0:  1.8e-4 / 3.0e-4
    asserted at ~3x; the medians also against LTC's published ones (7e-5, 1e-3, 4e-3, 1.6e-2,
    0.11, 6.8e-2, 1.1e-2). The full 1,750-quad comparison: bench/bench_ggx.c. */
 static void test_research_sampler(void) {
   static const double rough[7] = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0};
   static const double ltc[7] = {7.3e-5, 1.0e-3, 3.8e-3, 1.6e-2, 0.11, 6.8e-2, 1.1e-2};
-  static const double tol_med[7] = {5.4e-6, 1.7e-5, 1.1e-6, 3.9e-5, 3.3e-5, 1.2e-4, 5.5e-4};
-  static const double tol_max[7] = {3e-3, 1.4e-2, 6.6e-3, 6e-4, 5.5e-4, 3.5e-4, 7.7e-4};
+  static const double tol_med[7] = {4.8e-6, 1.7e-5, 1.7e-6, 3.9e-5, 1.6e-5, 9e-5, 5.3e-4};
+  static const double tol_max[7] = {3e-3, 2.3e-2, 6.4e-3, 4e-4, 5.7e-4, 3.9e-4, 9.1e-4};
   int ir, c;
   for (ir = 0; ir < 7; ++ir) {
     ggxc_rng r;
@@ -95,9 +95,10 @@ static void test_research_sampler(void) {
 }
 
 /* Hard cases, 6 each at alpha 0.01, 0.09, 0.49: max error / albedo. Measured: straddling
-   3.7e-5, grazing 7.2e-3, large 1.7e-2, sliver 6.3e-7 (asserted at ~3x). Grazing views and
+   5.2e-5, grazing 9.2e-3, large 1.7e-2, sliver 6.3e-7 (asserted at ~3x). Grazing views and
    very large lights are the weak spot: the BRDF apart from D (masking, Jacobian) varies inside
-   the lobe faster than the first-order model and the 28 cubature nodes per fan triangle follow. */
+   the lobe faster than the first-order model and the cubature nodes (7 or 28 per fan triangle)
+   follow. */
 static void hard_case(ggxc_rng *r, int kind, double q[4][3], double view[3]) {
   ggxc_case cs;
   int i, k;
@@ -130,7 +131,7 @@ static void hard_case(ggxc_rng *r, int kind, double q[4][3], double view[3]) {
 static void test_hard_cases(void) {
   static const char *names[4] = {"straddling", "grazing view", "large", "sliver"};
   static const double alphas[3] = {0.01, 0.09, 0.49};
-  static const double tol[4] = {1.1e-4, 2.2e-2, 5.1e-2, 1.9e-6};
+  static const double tol[4] = {1.6e-4, 2.8e-2, 5.1e-2, 1.9e-6};
   int kind, ia, c;
   for (kind = 0; kind < 4; ++kind) {
     ggxc_rng r;
@@ -197,7 +198,7 @@ static void test_rotation(void) {
       worst = fabs(rot - base) / (base > 1e-3 ? base : 1e-3);
   }
   printf("  rotated frames: max difference %.2e (relative, floor 1e-3)\n", worst);
-  TL_CHECK(worst < 3e-6, "rotation: %g", worst); /* float input rounding; measured 8.7e-7 */
+  TL_CHECK(worst < 3e-6, "rotation: %g", worst); /* float input rounding; measured 9.3e-7 */
 }
 
 /* a light entirely below the horizon gives exactly 0; one straddling it matches the clipped
