@@ -101,6 +101,11 @@ $(BUILD)/tests/test_microfacet_glsl: tests/test_microfacet_glsl.c shlight.h test
 	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
 	    -o $@ tests/test_microfacet_glsl.c $(GL_SRCS) $(GL_LIBS) -lm
 
+$(BUILD)/tests/test_ggx_glsl: tests/test_ggx_glsl.c tests/ref/ggxcases.h shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
+	    -o $@ tests/test_ggx_glsl.c $(GL_SRCS) $(GL_LIBS) -lm
+
 $(BUILD)/tests/test_brdf_glsl: tests/test_brdf_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \

@@ -80,6 +80,19 @@ bench-microfacet: build/bench/bench_microfacet
 bench: bench-microfacet
 .PHONY: bench-microfacet
 
+build/bench/bench_ggx: bench/bench_ggx.c shlight.h tests/ref/arearef.h tests/ref/ggxcases.h
+	@mkdir -p build/bench
+	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_ggx.c -lm
+
+bench-ggx: build/bench/bench_ggx
+	@mkdir -p bench/out
+	CC=$(BENCH_CC) sh bench/callgrind_ggx.sh
+	build/bench/bench_ggx
+	cat bench/out/ggx.md
+
+bench: bench-ggx
+.PHONY: bench-ggx
+
 build/bench/bench_brdf: bench/bench_brdf.c shlight.h
 	@mkdir -p build/bench
 	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_brdf.c -lm

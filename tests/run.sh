@@ -57,6 +57,7 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/tests/test_grid build/tests/native/test_grid build/tests/test_grid_glsl \
   build/tests/test_edge build/tests/selftest_arearef build/tests/test_edge_glsl \
   build/tests/test_microfacet build/tests/test_microfacet_glsl \
+  build/tests/test_ggx build/tests/test_ggx_glsl \
   build/tests/test_brdf build/tests/native/test_brdf build/tests/test_brdf_glsl \
   build/tests/test_brdftab build/tests/fuzz_replay_brdftab build/tests/test_brdftab_glsl \
   build/tests/test_ssf build/tests/test_ssf_glsl \
@@ -71,6 +72,7 @@ step test_grid build/tests/test_grid
 step test_grid-march-native build/tests/native/test_grid
 step test_edge build/tests/test_edge
 step test_microfacet build/tests/test_microfacet
+step test_ggx build/tests/test_ggx
 step arearef-selftest build/tests/selftest_arearef
 step test_brdf build/tests/test_brdf
 step test_brdf-march-native build/tests/native/test_brdf
@@ -95,6 +97,8 @@ for b in $backends; do
   step "glsl-edge-vs-c-$b" env SHLIGHT_GL_BACKEND=$b $sub build/tests/test_edge_glsl
   # the microfacet twins on the first backend only (~8 s of llvmpipe compile)
   [ -n "$sub" ] || step "glsl-microfacet-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_microfacet_glsl
+  # GGX polygon lights: first backend only (the second runs the same llvmpipe compiler)
+  [ -n "$sub" ] || step "glsl-ggx-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_ggx_glsl
   step "glsl-brdf-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_brdf_glsl
   step "glsl-ssf-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_ssf_glsl
   # the renderer: every scene and pass GL vs CPU on the first backend, cornell on the second

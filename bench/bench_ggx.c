@@ -1,0 +1,190 @@
+/* bench_ggx.c - GGX polygon (quad) lights: shl_polygon_ggx against long double cubature
+ * (tests/ref/arearef.h) on the LTC comparison's sampler (tests/ref/ggxcases.h, the research note
+ * shared/research/peers-arealight.md sec. 2.2: 7 roughness values x 250 quads), next to LTC's
+ * published numbers from that note. Per roughness: median / p95 / max relative error where the
+ * light gives >= 5 % of the directional albedo ("visible"), error / albedo over all quads; then
+ * pooled by configuration (straddling the horizon, grazing view >= 60 deg); ns per light
+ * (per-thread CPU time, median of 15 samples over the 1,750 quads). Writes bench/out/ggx.md.
+ * `--count-only K` runs K passes of the 1,750 calls of the wrapper bw_ggx for callgrind
+ * (bench/callgrind_ggx.sh). Build and run: make bench-ggx. */
+#define _POSIX_C_SOURCE 200809L
+#define SHLIGHT_IMPLEMENTATION
+#include "../shlight.h"
+#include "../tests/ref/arearef.h"
+#include "../tests/ref/ggxcases.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define NR 7
+#define NPER 250
+#define NCFG (NR * NPER)
+static const double ROUGH[NR] = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0};
+/* peers-arealight.md sec. 2.2, LTC reference (clipped quad, 64x64 tables): rel. error on visible
+   configurations median / p95 / max, err / albedo median / p95 / max */
+static const double LTC[NR][6] = {
+    {7.3e-5, 0.019, 0.24, 1.0e-5, 1.9e-3, 0.11}, {1.0e-3, 0.020, 0.20, 8.0e-5, 2.7e-3, 0.028},
+    {3.8e-3, 0.19, 1.3, 3.8e-4, 0.021, 0.18},    {0.016, 0.45, 0.68, 9.7e-4, 0.030, 0.20},
+    {0.11, 0.74, 0.97, 2.1e-3, 0.070, 0.20},     {0.068, 0.50, 0.64, 1.8e-3, 0.037, 0.071},
+    {0.011, 0.048, 0.13, 6.0e-4, 4.8e-3, 0.013}};
+typedef struct {
+  float q[4][3], view[3], alpha;
+  double gt, alb;
+  int straddle, grazing;
+} cfg;
+static cfg C[NCFG];
+static volatile float sink;
+static const float NZ[3] = {0, 0, 1};
+
+static double now(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+static int cmpd(const void *a, const void *b) {
+  double x = *(const double *)a, y = *(const double *)b;
+  return x < y ? -1 : x > y;
+}
+static double pct(double *a, int n, double p) {
+  if (n == 0) return 0;
+  qsort(a, (size_t)n, sizeof *a, cmpd);
+  return a[(int)floor(p * (n - 1) + 0.5)];
+}
+
+/* the yardstick timed in the same run: FAST Phong of the same quad (1.3k instructions, README) */
+__attribute__((noinline)) float yard_phong(const cfg *c) {
+  return shl_polygon_phong((const float(*)[3])c->q, 4, NZ, c->view, 2.0f / (c->alpha * c->alpha),
+                           SHLIGHT_EDGE_FAST);
+}
+/* the wrapper callgrind counts */
+__attribute__((noinline)) float bw_ggx(const cfg *c) {
+  return shl_polygon_ggx((const float(*)[3])c->q, 4, NZ, c->view, c->alpha);
+}
+
+int main(int argc, char **argv) {
+  ggxc_rng rg;
+  int i, ir, k, K = 0;
+  FILE *o;
+  if (argc == 3 && strcmp(argv[1], "--count-only") == 0) K = atoi(argv[2]);
+  rg.s = 2017u;
+  for (i = 0; i < NCFG; ++i) {
+    ggxc_case cs;
+    cfg *c = &C[i];
+    int j, below = 0, above = 0;
+    ggxc_make(&rg, &cs, -1);
+    for (j = 0; j < 12; ++j)
+      c->q[j / 3][j % 3] = (float)cs.q[j / 3][j % 3];
+    for (j = 0; j < 3; ++j)
+      c->view[j] = (float)cs.view[j];
+    c->alpha = (float)(ROUGH[i / NPER] * ROUGH[i / NPER]);
+    for (j = 0; j < 4; ++j)
+      below += c->q[j][2]<0, above += c->q[j][2]> 0;
+    c->straddle = below > 0 && above > 0;
+    c->grazing = c->view[2] < 0.5f;
+  }
+  if (K > 0) {
+    float s = 0;
+    for (k = 0; k < K; ++k)
+      for (i = 0; i < NCFG; ++i)
+        s += bw_ggx(&C[i]);
+    sink = s;
+    return 0;
+  }
+  for (i = 0; i < NCFG; ++i) { /* ground truth on the float-rounded input */
+    double q[4][3], v[3], n[3] = {0, 0, 1};
+    for (k = 0; k < 12; ++k)
+      q[k / 3][k % 3] = C[i].q[k / 3][k % 3];
+    for (k = 0; k < 3; ++k)
+      v[k] = C[i].view[k];
+    C[i].alb = (double)arref_ggx_albedo(n, v, (double)C[i].alpha);
+    C[i].gt = (double)arref_polygon_ggx((const double(*)[3])q, 4, n, v, (double)C[i].alpha);
+  }
+  o = fopen("bench/out/ggx.md", "w");
+  if (!o) o = stdout;
+  fprintf(o,
+          "### GGX quad lights: shl_polygon_ggx vs LTC (research sampler, %d quads per "
+          "roughness, F = 1, height-correlated G2)\n\n",
+          NPER);
+  fprintf(o, "| roughness (alpha = r^2) | vis. | shl_polygon_ggx rel. err vis. median / p95 / "
+             "max | err/albedo median / p95 / max | LTC rel. err vis. median / p95 / max "
+             "(published) | LTC err/albedo median / p95 / max |\n|---|---|---|---|---|---|\n");
+  for (ir = 0; ir < NR; ++ir) {
+    static double rel[NPER], ea[NPER];
+    int nv = 0;
+    for (i = ir * NPER; i < (ir + 1) * NPER; ++i) {
+      double got = shl_polygon_ggx((const float(*)[3])C[i].q, 4, NZ, C[i].view, C[i].alpha);
+      double d = fabs(got - C[i].gt);
+      ea[i - ir * NPER] = d / C[i].alb;
+      if (C[i].gt >= 0.05 * C[i].alb) {
+        rel[nv++] = d / C[i].gt;
+      }
+    }
+    fprintf(o,
+            "| %.2f | %d | %.1e / %.1e / %.1e | %.1e / %.1e / %.1e | %.1e / %.2g / %.2g | "
+            "%.1e / %.1e / %.2g |\n",
+            ROUGH[ir], nv, pct(rel, nv, 0.5), pct(rel, nv, 0.95), pct(rel, nv, 1),
+            pct(ea, NPER, 0.5), pct(ea, NPER, 0.95), pct(ea, NPER, 1), LTC[ir][0], LTC[ir][1],
+            LTC[ir][2], LTC[ir][3], LTC[ir][4], LTC[ir][5]);
+  }
+  fprintf(o, "\nBy configuration, all roughness values pooled: err/albedo median / p95 / max "
+             "(rel. err vis. median)\n\n| configuration | quads | shl_polygon_ggx | LTC "
+             "(published) |\n|---|---|---|---|\n");
+  {
+    static const char *nm[4] = {"light above the horizon, view < 60 deg",
+                                "light above the horizon, view >= 60 deg",
+                                "light straddles the horizon, view < 60 deg",
+                                "light straddles the horizon, view >= 60 deg"};
+    static const char *ltc[4] = {"1.5e-4 / 5.3e-3 / 0.033 (0.4 %)", "8.1e-4 / 0.031 / 0.12 (5 %)",
+                                 "7.5e-4 / 0.018 / 0.076 (1.1 %)", "1.7e-3 / 0.082 / 0.20 (6 %)"};
+    int g;
+    for (g = 0; g < 4; ++g) {
+      static double ea[NCFG], rel[NCFG];
+      int ne = 0, nv = 0;
+      for (i = 0; i < NCFG; ++i)
+        if (C[i].straddle == (g >= 2) && C[i].grazing == (g & 1)) {
+          double d = fabs(shl_polygon_ggx((const float(*)[3])C[i].q, 4, NZ, C[i].view, C[i].alpha) -
+                          C[i].gt);
+          ea[ne++] = d / C[i].alb;
+          if (C[i].gt >= 0.05 * C[i].alb) rel[nv++] = d / C[i].gt;
+        }
+      fprintf(o, "| %s | %d | %.1e / %.1e / %.1e (%.1e) | %s |\n", nm[g], ne, pct(ea, ne, 0.5),
+              pct(ea, ne, 0.95), pct(ea, ne, 1), pct(rel, nv, 0.5), ltc[g]);
+    }
+  }
+  { /* ns per light: median of 15 samples, each >= 2 ms over all quads; the yardstick alternates */
+    double ns[15], ny[15];
+    int s, reps = 1, w;
+    for (;;) {
+      double t0 = now(), t;
+      float acc = 0;
+      for (k = 0; k < reps; ++k)
+        for (i = 0; i < NCFG; ++i)
+          acc += bw_ggx(&C[i]);
+      sink = acc;
+      t = now() - t0;
+      if (t > 2e-3) break;
+      reps *= 2;
+    }
+    for (s = 0; s < 15; ++s)
+      for (w = 0; w < 2; ++w) {
+        double t0 = now();
+        float acc = 0;
+        for (k = 0; k < (w ? 4 * reps : reps); ++k)
+          for (i = 0; i < NCFG; ++i)
+            acc += w ? yard_phong(&C[i]) : bw_ggx(&C[i]);
+        sink = acc;
+        (w ? ny : ns)[s] = (now() - t0) * 1e9 / ((double)(w ? 4 * reps : reps) * NCFG);
+      }
+    fprintf(o,
+            "\nns per quad light (median of 15, this build): shl_polygon_ggx %.0f; in the same "
+            "run shl_polygon_phong FAST (the yardstick) %.0f: ratio %.1f. LTC's reference "
+            "shader on the CPU: 68 ns, 709 instructions, in the research note's run (not this "
+            "one)\n",
+            pct(ns, 15, 0.5), pct(ny, 15, 0.5), pct(ns, 15, 0.5) / pct(ny, 15, 0.5));
+  }
+  if (o != stdout) fclose(o);
+  return 0;
+}
