@@ -62,6 +62,24 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/tests/test_brdftab build/tests/fuzz_replay_brdftab build/tests/test_brdftab_glsl \
   build/tests/test_ssf build/tests/test_ssf_glsl \
   build/render/shlrender build/tests/fuzz_replay_scene build/tests/test_rd_core
+# the sanitizer binaries build in the background on the second core while the mostly
+# single-threaded steps below run (was a 100-170 s step of its own on the critical path)
+asan_targets="build/tests/asan/test_basis build/tests/asan/test_glm build/tests/asan/fuzz_replay \
+  build/tests/asan/test_light build/tests/asan/test_grid build/tests/asan/test_edge \
+  build/tests/asan/test_microfacet build/tests/asan/test_ggx build/tests/asan/test_brdf \
+  build/tests/asan/test_gl_smoke build/tests/asan/test_brdftab build/tests/asan/fuzz_replay_brdftab \
+  build/tests/asan/test_ssf build/tests/asan/fuzz_replay_scene"
+asan_pid=""
+if [ "${SHLIGHT_TEST_QUICK:-0}" != 1 ]; then
+  $MAKE -s -j1 $asan_targets >build/logs/asan-build-background.log 2>&1 &
+  asan_pid=$!
+fi
+asan_wait() { # the background build's log and exit status
+  local rc=0
+  wait "$asan_pid" || rc=$?
+  cat build/logs/asan-build-background.log
+  return $rc
+}
 step test_basis build/tests/test_basis
 # the same tests on this machine's SIMD paths (AVX-512 / AVX2 kernels) with FMA contraction
 step test_basis-march-native build/tests/native/test_basis
@@ -108,15 +126,15 @@ for b in $backends; do
   step "glsl-brdftab-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_brdftab_glsl
 done
 if [ "${SHLIGHT_TEST_QUICK:-0}" != 1 ]; then
-  # build every sanitizer binary at once on both cores, then run them
-  step asan-ubsan-build $MAKE -s -j2 build/tests/asan/test_basis build/tests/asan/test_glm \
-    build/tests/asan/fuzz_replay build/tests/asan/test_light build/tests/asan/test_grid build/tests/asan/test_edge build/tests/asan/test_brdf \
-    build/tests/asan/test_gl_smoke build/tests/asan/test_brdftab build/tests/asan/fuzz_replay_brdftab \
-    build/tests/asan/test_ssf build/tests/asan/fuzz_replay_scene
+  # wait for the background build; then build anything it left (none, normally) on both cores
+  step asan-ubsan-build asan_wait
+  step asan-ubsan-build-rest $MAKE -s -j2 $asan_targets
   step asan-ubsan $MAKE -s test-asan
   step asan-ubsan-light build/tests/asan/test_light
   step asan-ubsan-grid build/tests/asan/test_grid
   step asan-ubsan-edge env SHLIGHT_TEST_QUICK=1 build/tests/asan/test_edge
+  step asan-ubsan-microfacet build/tests/asan/test_microfacet
+  step asan-ubsan-ggx build/tests/asan/test_ggx
   step asan-ubsan-brdf build/tests/asan/test_brdf
   step asan-ubsan-ssf build/tests/asan/test_ssf
   step asan-ubsan-fuzz-replay-scene build/tests/asan/fuzz_replay_scene tests/corpus/scene

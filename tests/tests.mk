@@ -139,12 +139,18 @@ TESTS_MF_DEPS := tests/test_microfacet.c tests/ref/arearef.h tests/tl.h shlight.
 $(TESTS_BUILD)/test_microfacet: $(TESTS_MF_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion -o $@ tests/test_microfacet.c -lm
+$(TESTS_BUILD)/asan/test_microfacet: $(TESTS_MF_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion $(TESTS_ASAN) -o $@ tests/test_microfacet.c -lm
 
 # >>edge GGX polygon lights (shl_polygon_ggx) against long double cubature (tests/ref/arearef.h)
 TESTS_GGX_DEPS := tests/test_ggx.c tests/ref/arearef.h tests/ref/ggxcases.h tests/tl.h shlight.h
 $(TESTS_BUILD)/test_ggx: $(TESTS_GGX_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion -o $@ tests/test_ggx.c -lm
+$(TESTS_BUILD)/asan/test_ggx: $(TESTS_GGX_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion $(TESTS_ASAN) -o $@ tests/test_ggx.c -lm
 $(TESTS_BUILD)/selftest_arearef: tests/selftest_arearef.c tests/ref/arearef.h
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g -o $@ tests/selftest_arearef.c -lm
