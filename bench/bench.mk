@@ -125,3 +125,16 @@ build/bench/solid_angle_float: bench/solid_angle_float.c
 bench-solid-float: build/bench/solid_angle_float
 	build/bench/solid_angle_float $(SOLID_N)
 .PHONY: bench-solid-float
+
+build/bench/bench_beckmann: bench/bench_beckmann.c shlight.h tests/ref/arearef.h tests/ref/ggxcases.h
+	@mkdir -p build/bench
+	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_beckmann.c -lm
+
+bench-beckmann: build/bench/bench_beckmann
+	@mkdir -p bench/out
+	CC=$(BENCH_CC) sh bench/callgrind_beckmann.sh
+	build/bench/bench_beckmann
+	cat bench/out/beckmann.md
+
+bench: bench-beckmann
+.PHONY: bench-beckmann

@@ -1,8 +1,8 @@
-/* test_microfacet_glsl.c - the GLSL twins of shl_polygon_blinn_phong, shl_polygon_beckmann and
-   shl_polygon_beckmann_ndf (shlight_glsl/shl_edge.glsl) against the C kernels on llvmpipe
-   (compute path), on random quads around the mirror direction: front, grazing and
-   horizon-straddling views, Blinn-Phong exponents 1..3000, Beckmann alpha 0.03..1, k = 2 and
-   8 sub-edges. GLSL runs shli_real as float, C as double: differences are in units of the
+/* test_microfacet_glsl.c - the GLSL twins of shl_polygon_blinn_phong, shl_polygon_beckmann,
+   shl_polygon_beckmann_taylor and shl_polygon_beckmann_ndf (shlight_glsl/shl_edge.glsl) against the
+   C kernels on llvmpipe (compute path), on random quads around the mirror direction: front, grazing
+   and horizon-straddling views, Blinn-Phong exponents 1..3000, Beckmann alpha 0.03..1, k = 2 and 8
+   sub-edges. GLSL runs shli_real as float, C as double: differences are in units of the
    albedo-scale result (Blinn-Phong and Beckmann give at most ~1 for a hemisphere light) and
    of the normalised lobe (NDF). One call site per kernel: llvmpipe compiles each inlined copy
    of the half-vector sums in seconds. Run from the repository root (tests/run.sh runs it). */
@@ -15,7 +15,7 @@
 
 #define NI 96
 #define IN 20 /* 12 vertex floats, normal (3), view (3), exponent, alpha */
-#define OUTS 5
+#define OUTS 6
 #define TOL 7.5e-5 /* 3x the measured 2.4e-5 (Beckmann in float: exp, the A&S Lambda) */
 
 static unsigned int st = 4242u;
@@ -47,9 +47,10 @@ static void test_glsl_microfacet(void) {
       "  for (k = 0; k < 2; ++k)\n"
       "    out_float(2 + k, shl_polygon_beckmann(v, 4, n, vw, in_float(19), k == 0 ? -2 : 8));\n"
       "  out_float(4, shl_polygon_beckmann_ndf(v, 4, n, in_float(19)));\n"
+      "  out_float(5, shl_polygon_beckmann_taylor(v, 4, n, vw, in_float(19)));\n"
       "}\n";
   int i, k, bad = 0;
-  double worst[OUTS] = {0, 0, 0, 0, 0};
+  double worst[OUTS] = {0, 0, 0, 0, 0, 0};
   for (i = 0; i < NI; ++i) {
     float *p = in + i * IN, th, ph = 6.2831853f * rndf(), r[3], c[3], t1[3], t2[3], d, s, l;
     int cfg = i % 3;
@@ -88,6 +89,7 @@ static void test_glsl_microfacet(void) {
       o[2] = shl_polygon_beckmann(v, 4, p + 12, p + 15, p[19], -2);
       o[3] = shl_polygon_beckmann(v, 4, p + 12, p + 15, p[19], 8);
       o[4] = shl_polygon_beckmann_ndf(v, 4, p + 12, p[19]);
+      o[5] = shl_polygon_beckmann_taylor(v, 4, p + 12, p + 15, p[19]);
     }
   }
   TL_CHECK(glrun_compute(defines, files, 6, main_src, in, (size_t)NI * IN, out, (size_t)NI * OUTS,
@@ -105,8 +107,8 @@ static void test_glsl_microfacet(void) {
       }
     }
   printf("  %s: max |GLSL - C|: Blinn-Phong k=2 %.2e, k=8 %.2e; Beckmann k=-2 %.2e, k=8 %.2e;"
-         " Beckmann NDF %.2e\n",
-         glrun_renderer(), worst[0], worst[1], worst[2], worst[3], worst[4]);
+         " Beckmann NDF %.2e; Beckmann Taylor %.2e\n",
+         glrun_renderer(), worst[0], worst[1], worst[2], worst[3], worst[4], worst[5]);
   TL_CHECK(bad == 0, "%d outputs differ beyond %.1e", bad, TOL);
 }
 

@@ -135,7 +135,7 @@ $(TESTS_BUILD)/asan/test_edge: $(TESTS_EDGE_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion $(TESTS_ASAN) -o $@ tests/test_edge.c -lm
 # >>edge microfacet polygon lights (half-vector space) against long double cubature
-TESTS_MF_DEPS := tests/test_microfacet.c tests/ref/arearef.h tests/tl.h shlight.h
+TESTS_MF_DEPS := tests/test_microfacet.c tests/ref/arearef.h tests/ref/ggxcases.h tests/tl.h shlight.h
 $(TESTS_BUILD)/test_microfacet: $(TESTS_MF_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion -o $@ tests/test_microfacet.c -lm
