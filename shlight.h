@@ -28624,7 +28624,7 @@ SHLIGHT_INLINE float shl_polygon_beckmann_taylor(const float (*v)[3], int nv, co
 
 /* the Beckmann cap CDF 1 - exp(-w^2 / (alpha^2 c^2 cos^2 theta)) times du/ds at the graded node
    s (as shli_stokes_node; b = w^2 / alpha^2, q = c^2 cos^2 theta). sa > 0 (sa = alpha^2): the
-   function 1 - exp(-b / q) (1 + sa b / q) = 1 - E(t) / t^2 instead (shli_half_beckmann). */
+   function 1 - exp(-b / q) (1 + sa b / q) = 1 - E(t) / t^2 instead (shli_half_image, kind 1). */
 SHLIGHT_INLINE shli_real shli_beckmann_node(shli_real s, shli_real beta, shli_real c2, shli_real b,
                                             shli_real sa) {
   shli_real es = SHLIGHT_EXPR(s);
@@ -29143,138 +29143,24 @@ SHLIGHT_INLINE shli_real shli_half_arc(shli_real ax, shli_real ay, shli_real az,
   return sum;
 }
 
-/* K = the integral of D_B(h) (h.v) over the image polygon of shli_half_sum (signed by the
+/* The integrals over the image polygon of shli_half_sum, signed by the light's winding: one
+   walk over the sub-edge end points mapped by H, joined by arcs, for both kinds.
+   kind 0, Blinn-Phong over the image polygon of shli_half_sum without a held factor: with
+   n.l = 2 (h.v)(h.n) - n.v, the integrand D (n.l) (h.v) = (e+2)/(2 pi) [2 t^(e+1) (h.v)^2 -
+   (n.v) t^e (h.v)], t = h.n, is a polynomial in h times a power of t; its integrals follow
+   from two moments (exponents e + 1 and e - 1, QUADRATURE edge terms) and two line integrals
+   per arc (shli_half_arc) by the surface divergence theorem applied to t^a P(v) and
+   t^a (h.v) P(v), P(v) = v - (v.h) h the tangential part of v.
+   kind 1, K = the integral of D_B(h) (h.v) over the image polygon of shli_half_sum (signed by the
    light's winding), by the surface divergence identity for g(t) P(v) with (t^2 g)' = t D_B:
    g = E(t) / (2 pi t^2), E = exp(-(1 - t^2) / (t^2 alpha^2)), and
    K = (n.v) (integral of g') - sum over arcs (v.m) (line integral of g), m the outward
    conormal; the integral of the radial g' by the Stokes form with the closed-form 2 pi
    (g(1) - g(t)) = 1 - E / t^2 (shli_beckmann_edge with sa = alpha^2). par = alpha. */
-SHLIGHT_INLINE shli_real shli_half_beckmann(shli_real *io_px, shli_real *io_py, shli_real *io_pz,
-                                            int nc, shli_real nx, shli_real ny, shli_real nz,
-                                            shli_real vx, shli_real vy, shli_real vz, shli_real m,
-                                            int k, int bal, shli_real par) {
-  shli_real st[SHLIGHT_HALF_K];
-  shli_real rx;
-  shli_real ry;
-  shli_real rz;
-  shli_real dv = nx * vx + ny * vy + nz * vz;
-  shli_real ex;
-  shli_real ey;
-  shli_real ez;
-  shli_real sp;
-  shli_real cp;
-  shli_real phi;
-  shli_real ux;
-  shli_real uy;
-  shli_real uz;
-  shli_real hax;
-  shli_real hay;
-  shli_real haz;
-  shli_real hbx;
-  shli_real hby;
-  shli_real hbz;
-  shli_real tx;
-  shli_real ty;
-  shli_real tz;
-  shli_real cs;
-  shli_real sn;
-  shli_real l;
-  shli_real sum = 0.0;
-  shli_real pp = 0.0;
-  shli_real mx;
-  shli_real my;
-  shli_real mz;
-  int ns;
-  int i;
-  int j;
-  int jj;
-  rx = 2.0 * dv * nx - vx;
-  ry = 2.0 * dv * ny - vy;
-  rz = 2.0 * dv * nz - vz;
-  /* the edge sum over the image polygon: sub-edge end points mapped by H, joined by arcs */
-  for (i = 0; i < nc; ++i) {
-    j = i + 1;
-    if (j == nc) {
-      j = 0;
-    }
-    ex = io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
-    ey = io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
-    ez = io_px[i] * io_py[j] - io_py[i] * io_px[j];
-    sp = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
-    cp = io_px[i] * io_px[j] + io_py[i] * io_py[j] + io_pz[i] * io_pz[j];
-    ns = 0;
-    phi = 0.0;
-    ux = 0.0;
-    uy = 0.0;
-    uz = 0.0;
-    if (sp > 1.0e-12) {
-      ns = shli_half_splits(io_px[i], io_py[i], io_pz[i], io_px[j], io_py[j], io_pz[j], rx, ry, rz,
-                            vx, vy, vz, m, k, bal, st);
-      phi = shli_atan2r(sp, cp);
-      ux = (io_px[j] - cp * io_px[i]) / sp;
-      uy = (io_py[j] - cp * io_py[i]) / sp;
-      uz = (io_pz[j] - cp * io_pz[i]) / sp;
-    }
-    hax = io_px[i] + vx;
-    hay = io_py[i] + vy;
-    haz = io_pz[i] + vz;
-    l = SHLIGHT_SQRTR(hax * hax + hay * hay + haz * haz);
-    if (!(l > 1.0e-30)) {
-      return 0.0;
-    }
-    hax = hax / l;
-    hay = hay / l;
-    haz = haz / l;
-    for (jj = 0; jj <= ns; ++jj) {
-      tx = io_px[j];
-      ty = io_py[j];
-      tz = io_pz[j];
-      if (jj < ns) {
-        cs = SHLIGHT_COSR(st[jj] * phi);
-        sn = SHLIGHT_SINR(st[jj] * phi);
-        tx = cs * io_px[i] + sn * ux;
-        ty = cs * io_py[i] + sn * uy;
-        tz = cs * io_pz[i] + sn * uz;
-      }
-      hbx = tx + vx;
-      hby = ty + vy;
-      hbz = tz + vz;
-      l = SHLIGHT_SQRTR(hbx * hbx + hby * hby + hbz * hbz);
-      if (!(l > 1.0e-30)) {
-        return 0.0;
-      }
-      hbx = hbx / l;
-      hby = hby / l;
-      hbz = hbz / l;
-      sum = sum + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par, par * par);
-      mx = hay * hbz - haz * hby;
-      my = haz * hbx - hax * hbz;
-      mz = hax * hby - hay * hbx;
-      l = SHLIGHT_SQRTR(mx * mx + my * my + mz * mz);
-      if (l > 1.0e-30) {
-        pp = pp - (mx * vx + my * vy + mz * vz) / l *
-                      shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par, 2);
-      }
-      hax = hbx;
-      hay = hby;
-      haz = hbz;
-    }
-  }
-  /* (n.v) (integral of g') - sum (v.m) line(g), g = E / (2 pi t^2) */
-  return (dv * sum - pp) * 0.15915494309189534;
-}
-
-/* Blinn-Phong over the image polygon of shli_half_sum without a held factor: with
-   n.l = 2 (h.v)(h.n) - n.v, the integrand D (n.l) (h.v) = (e+2)/(2 pi) [2 t^(e+1) (h.v)^2 -
-   (n.v) t^e (h.v)], t = h.n, is a polynomial in h times a power of t; its integrals follow
-   from two moments (exponents e + 1 and e - 1, QUADRATURE edge terms) and two line integrals
-   per arc (shli_half_arc) by the surface divergence theorem applied to t^a P(v) and
-   t^a (h.v) P(v), P(v) = v - (v.h) h the tangential part of v. Returns the shading integral
-   signed by the light's winding. */
-SHLIGHT_INLINE shli_real shli_half_blinn(shli_real *io_px, shli_real *io_py, shli_real *io_pz,
+SHLIGHT_INLINE shli_real shli_half_image(shli_real *io_px, shli_real *io_py, shli_real *io_pz,
                                          int nc, shli_real nx, shli_real ny, shli_real nz,
                                          shli_real vx, shli_real vy, shli_real vz, shli_real m,
-                                         int k, int bal, shli_real par) {
+                                         int k, int bal, shli_real par, int kind) {
   shli_real st[SHLIGHT_HALF_K];
   shli_real rx;
   shli_real ry;
@@ -29372,11 +29258,15 @@ SHLIGHT_INLINE shli_real shli_half_blinn(shli_real *io_px, shli_real *io_py, shl
       hbx = hbx / l;
       hby = hby / l;
       hbz = hbz / l;
-      a1 = a1 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par + 1.0,
-                               SHLIGHT_EDGE_QUADRATURE);
-      if (par > 0.0) {
-        a0 = a0 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par - 1.0,
+      if (kind == 0) {
+        a1 = a1 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par + 1.0,
                                  SHLIGHT_EDGE_QUADRATURE);
+        if (par > 0.0) {
+          a0 = a0 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par - 1.0,
+                                   SHLIGHT_EDGE_QUADRATURE);
+        }
+      } else {
+        a1 = a1 + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par, par * par);
       }
       mx = hay * hbz - haz * hby;
       my = haz * hbx - hax * hbz;
@@ -29384,9 +29274,13 @@ SHLIGHT_INLINE shli_real shli_half_blinn(shli_real *io_px, shli_real *io_py, shl
       l = SHLIGHT_SQRTR(mx * mx + my * my + mz * mz);
       if (l > 1.0e-30) {
         l = -(mx * vx + my * vy + mz * vz) / l; /* outward conormal: -(a x b) */
-        pp = pp + l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par, 0);
-        qq = qq +
-             l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par + 1.0, 1);
+        if (kind == 0) {
+          pp = pp + l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par, 0);
+          qq = qq + l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz,
+                                      par + 1.0, 1);
+        } else {
+          pp = pp + l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par, 2);
+        }
       }
       hax = hbx;
       hay = hby;
@@ -29397,6 +29291,10 @@ SHLIGHT_INLINE shli_real shli_half_blinn(shli_real *io_px, shli_real *io_py, shl
      identities, README): (a+2) J1(a) = a (n.v) M^(a-1) - sum (v.m) line(t^a),
      (a+3) J2(a) = a (n.v) J1(a-1) + M^a - sum (v.m) line(t^a (h.v)), m the outward
      conormal */
+  if (kind != 0) {
+    /* (n.v) (integral of g') - sum (v.m) line(g), g = E / (2 pi t^2) */
+    return (dv * a1 - pp) * 0.15915494309189534;
+  }
   j1 = (dv * a0 - pp) / (par + 2.0);
   j2 = ((par + 1.0) * dv * j1 + a1 / (par + 2.0) - qq) / (par + 4.0);
   return (par + 2.0) * 0.15915494309189534 * (2.0 * j2 - dv * j1);
@@ -29406,8 +29304,8 @@ SHLIGHT_INLINE shli_real shli_half_blinn(shli_real *io_px, shli_real *io_py, shl
    1, par = alpha): clip to the horizon, the representative direction l* (the point of the
    clipped light nearest the mirror direction r: r itself when every edge sees r on the same
    side, else the nearest vertex or in-arc foot point; used for Beckmann's held G2), then the
-   sums over the sub-edge image polygon in half-vector space (shli_half_blinn,
-   shli_half_beckmann). par already clamped. */
+   sums over the sub-edge image polygon in half-vector space (shli_half_image). par already
+   clamped. */
 SHLIGHT_INLINE shli_real shli_half_light(const float (*v)[3], int nv, const float nrm[3],
                                          const float view[3], shli_real par, int subedges,
                                          int kind) {
@@ -29555,18 +29453,14 @@ SHLIGHT_INLINE shli_real shli_half_light(const float (*v)[3], int nv, const floa
     lsy = ry;
     lsz = rz;
   }
-  if (kind == 0) {
-    sum = shli_half_blinn(px, py, pz, nc, nx, ny, nz, vx, vy, vz, m, k, bal, par);
-    if (sg < 0) {
-      sum = -sum;
-    }
-    return SHLIGHT_MAXR(sum, 0.0);
-  }
-  sum = shli_half_beckmann(px, py, pz, nc, nx, ny, nz, vx, vy, vz, m, k, bal, par);
+  sum = shli_half_image(px, py, pz, nc, nx, ny, nz, vx, vy, vz, m, k, bal, par, kind);
   if (sg < 0) {
     sum = -sum;
   }
   sum = SHLIGHT_MAXR(sum, 0.0);
+  if (kind == 0) {
+    return sum;
+  }
   /* G2 held at l* */
   nl = SHLIGHT_MAXR(lsx * nx + lsy * ny + lsz * nz, 0.0);
   return sum / ((1.0 + shli_beckmann_lambda(dv, par) + shli_beckmann_lambda(nl, par)) * dv);
@@ -29580,7 +29474,7 @@ SHLIGHT_INLINE shli_real shli_half_light(const float (*v)[3], int nv, const floa
    (e+8)/(8 pi) (n.h)^e is this times (e+8)/(e+2). Computed in half-vector space (seed 001 sec.
    8) over the light's image H(P), H's curved edges replaced by great arcs between the images
    of k sub-edges per light edge (shli_half_splits); the integrand there, t^e (n.l)(h.v), is
-   integrated without a held factor (shli_half_blinn: two QUADRATURE moments and two line
+   integrated without a held factor (shli_half_image: two QUADRATURE moments and two line
    integrals per arc). subedges = k in [1, SHLIGHT_HALF_K] (clamped): 1 = the vertices only,
    2 = the paper's single split with its balancing heuristic, >= 3 = split at p plus graded
    splits; -k = the same without the balancing heuristic. Error (of the albedo, README
@@ -29605,7 +29499,7 @@ SHLIGHT_INLINE float shl_polygon_blinn_phong(const float (*v)[3], int nv, const 
    height-correlated Smith masking-shadowing 1 / (1 + Lambda(v) + Lambda(l)) with Beckmann's
    Lambda (shli_beckmann_lambda), Fresnel 1. In half-vector space: the integral of D_B (h.v)
    over the sub-edge image polygon without approximation beyond the split
-   (shli_half_beckmann), times G2 / (n.v) with G2 held at the light point nearest the mirror
+   (shli_half_image), times G2 / (n.v) with G2 held at the light point nearest the mirror
    direction. subedges as shl_polygon_blinn_phong (the balancing uses m = alpha). Error (of
    the albedo, README): worst case 0.41 / 0.35 / 0.36 at k = 2 / 4 / 8 (alpha = 0.4, lights
    straddling the horizon, grazing views, large lights: the held G2; without G2 k = 8 is within

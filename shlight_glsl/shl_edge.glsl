@@ -2370,127 +2370,11 @@ shli_real shli_half_arc(shli_real ax, shli_real ay, shli_real az, shli_real bx, 
   return sum;
 }
 
-shli_real shli_half_beckmann(inout shli_real io_px[SHLIGHT_CLIP_MAX],
-                             inout shli_real io_py[SHLIGHT_CLIP_MAX],
-                             inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nc, shli_real nx,
-                             shli_real ny, shli_real nz, shli_real vx, shli_real vy, shli_real vz,
-                             shli_real m, int k, int bal, shli_real par) {
-  shli_real st[SHLIGHT_HALF_K];
-  shli_real rx;
-  shli_real ry;
-  shli_real rz;
-  shli_real dv = nx * vx + ny * vy + nz * vz;
-  shli_real ex;
-  shli_real ey;
-  shli_real ez;
-  shli_real sp;
-  shli_real cp;
-  shli_real phi;
-  shli_real ux;
-  shli_real uy;
-  shli_real uz;
-  shli_real hax;
-  shli_real hay;
-  shli_real haz;
-  shli_real hbx;
-  shli_real hby;
-  shli_real hbz;
-  shli_real tx;
-  shli_real ty;
-  shli_real tz;
-  shli_real cs;
-  shli_real sn;
-  shli_real l;
-  shli_real sum = 0.0;
-  shli_real pp = 0.0;
-  shli_real mx;
-  shli_real my;
-  shli_real mz;
-  int ns;
-  int i;
-  int j;
-  int jj;
-  rx = 2.0 * dv * nx - vx;
-  ry = 2.0 * dv * ny - vy;
-  rz = 2.0 * dv * nz - vz;
-  /* the edge sum over the image polygon: sub-edge end points mapped by H, joined by arcs */
-  for (i = 0; i < nc; ++i) {
-    j = i + 1;
-    if (j == nc) {
-      j = 0;
-    }
-    ex = io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
-    ey = io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
-    ez = io_px[i] * io_py[j] - io_py[i] * io_px[j];
-    sp = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
-    cp = io_px[i] * io_px[j] + io_py[i] * io_py[j] + io_pz[i] * io_pz[j];
-    ns = 0;
-    phi = 0.0;
-    ux = 0.0;
-    uy = 0.0;
-    uz = 0.0;
-    if (sp > 1.0e-12) {
-      ns = shli_half_splits(io_px[i], io_py[i], io_pz[i], io_px[j], io_py[j], io_pz[j], rx, ry, rz,
-                            vx, vy, vz, m, k, bal, st);
-      phi = shli_atan2r(sp, cp);
-      ux = (io_px[j] - cp * io_px[i]) / sp;
-      uy = (io_py[j] - cp * io_py[i]) / sp;
-      uz = (io_pz[j] - cp * io_pz[i]) / sp;
-    }
-    hax = io_px[i] + vx;
-    hay = io_py[i] + vy;
-    haz = io_pz[i] + vz;
-    l = SHLIGHT_SQRTR(hax * hax + hay * hay + haz * haz);
-    if (!(l > 1.0e-30)) {
-      return 0.0;
-    }
-    hax = hax / l;
-    hay = hay / l;
-    haz = haz / l;
-    for (jj = 0; jj <= ns; ++jj) {
-      tx = io_px[j];
-      ty = io_py[j];
-      tz = io_pz[j];
-      if (jj < ns) {
-        cs = SHLIGHT_COSR(st[jj] * phi);
-        sn = SHLIGHT_SINR(st[jj] * phi);
-        tx = cs * io_px[i] + sn * ux;
-        ty = cs * io_py[i] + sn * uy;
-        tz = cs * io_pz[i] + sn * uz;
-      }
-      hbx = tx + vx;
-      hby = ty + vy;
-      hbz = tz + vz;
-      l = SHLIGHT_SQRTR(hbx * hbx + hby * hby + hbz * hbz);
-      if (!(l > 1.0e-30)) {
-        return 0.0;
-      }
-      hbx = hbx / l;
-      hby = hby / l;
-      hbz = hbz / l;
-      sum = sum + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par, par * par);
-      mx = hay * hbz - haz * hby;
-      my = haz * hbx - hax * hbz;
-      mz = hax * hby - hay * hbx;
-      l = SHLIGHT_SQRTR(mx * mx + my * my + mz * mz);
-      if (l > 1.0e-30) {
-        pp = pp - (mx * vx + my * vy + mz * vz) / l *
-                      shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par, 2);
-      }
-      hax = hbx;
-      hay = hby;
-      haz = hbz;
-    }
-  }
-  /* (n.v) (integral of g') - sum (v.m) line(g), g = E / (2 pi t^2) */
-  return (dv * sum - pp) * 0.15915494309189534;
-}
-
-shli_real shli_half_blinn(inout shli_real io_px[SHLIGHT_CLIP_MAX],
+shli_real shli_half_image(inout shli_real io_px[SHLIGHT_CLIP_MAX],
                           inout shli_real io_py[SHLIGHT_CLIP_MAX],
                           inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nc, shli_real nx,
                           shli_real ny, shli_real nz, shli_real vx, shli_real vy, shli_real vz,
-                          shli_real m, int k, int bal, shli_real par) {
+                          shli_real m, int k, int bal, shli_real par, int kind) {
   shli_real st[SHLIGHT_HALF_K];
   shli_real rx;
   shli_real ry;
@@ -2588,11 +2472,15 @@ shli_real shli_half_blinn(inout shli_real io_px[SHLIGHT_CLIP_MAX],
       hbx = hbx / l;
       hby = hby / l;
       hbz = hbz / l;
-      a1 = a1 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par + 1.0,
-                               SHLIGHT_EDGE_QUADRATURE);
-      if (par > 0.0) {
-        a0 = a0 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par - 1.0,
+      if (kind == 0) {
+        a1 = a1 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par + 1.0,
                                  SHLIGHT_EDGE_QUADRATURE);
+        if (par > 0.0) {
+          a0 = a0 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par - 1.0,
+                                   SHLIGHT_EDGE_QUADRATURE);
+        }
+      } else {
+        a1 = a1 + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par, par * par);
       }
       mx = hay * hbz - haz * hby;
       my = haz * hbx - hax * hbz;
@@ -2600,9 +2488,13 @@ shli_real shli_half_blinn(inout shli_real io_px[SHLIGHT_CLIP_MAX],
       l = SHLIGHT_SQRTR(mx * mx + my * my + mz * mz);
       if (l > 1.0e-30) {
         l = -(mx * vx + my * vy + mz * vz) / l; /* outward conormal: -(a x b) */
-        pp = pp + l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par, 0);
-        qq = qq +
-             l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par + 1.0, 1);
+        if (kind == 0) {
+          pp = pp + l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par, 0);
+          qq = qq + l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz,
+                                      par + 1.0, 1);
+        } else {
+          pp = pp + l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par, 2);
+        }
       }
       hax = hbx;
       hay = hby;
@@ -2613,6 +2505,10 @@ shli_real shli_half_blinn(inout shli_real io_px[SHLIGHT_CLIP_MAX],
      identities, README): (a+2) J1(a) = a (n.v) M^(a-1) - sum (v.m) line(t^a),
      (a+3) J2(a) = a (n.v) J1(a-1) + M^a - sum (v.m) line(t^a (h.v)), m the outward
      conormal */
+  if (kind != 0) {
+    /* (n.v) (integral of g') - sum (v.m) line(g), g = E / (2 pi t^2) */
+    return (dv * a1 - pp) * 0.15915494309189534;
+  }
   j1 = (dv * a0 - pp) / (par + 2.0);
   j2 = ((par + 1.0) * dv * j1 + a1 / (par + 2.0) - qq) / (par + 4.0);
   return (par + 2.0) * 0.15915494309189534 * (2.0 * j2 - dv * j1);
@@ -2764,18 +2660,14 @@ shli_real shli_half_light(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 vi
     lsy = ry;
     lsz = rz;
   }
-  if (kind == 0) {
-    sum = shli_half_blinn(px, py, pz, nc, nx, ny, nz, vx, vy, vz, m, k, bal, par);
-    if (sg < 0) {
-      sum = -sum;
-    }
-    return SHLIGHT_MAXR(sum, 0.0);
-  }
-  sum = shli_half_beckmann(px, py, pz, nc, nx, ny, nz, vx, vy, vz, m, k, bal, par);
+  sum = shli_half_image(px, py, pz, nc, nx, ny, nz, vx, vy, vz, m, k, bal, par, kind);
   if (sg < 0) {
     sum = -sum;
   }
   sum = SHLIGHT_MAXR(sum, 0.0);
+  if (kind == 0) {
+    return sum;
+  }
   /* G2 held at l* */
   nl = SHLIGHT_MAXR(lsx * nx + lsy * ny + lsz * nz, 0.0);
   return sum / ((1.0 + shli_beckmann_lambda(dv, par) + shli_beckmann_lambda(nl, par)) * dv);

@@ -267,7 +267,7 @@ static void test_blinn_phong(void) {
 static void test_beckmann(void) {
   test_shading(1);
 }
-/* Beckmann without G2: the integral of D_B (h.v) over the image (shli_half_beckmann, k = 8) /
+/* Beckmann without G2: the integral of D_B (h.v) over the image (shli_half_image kind 1, k = 8) /
    (n.v) against the cubature of D_B / (4 (n.v)) over the light (arearef kind 4) */
 static void test_beckmann_no_g2(void) {
   static const double als[4] = {1.0, 0.5, 0.2, 0.05};
@@ -288,8 +288,8 @@ static void test_beckmann_no_g2(void) {
           px[i] = c.v[i][0], py[i] = c.v[i][1], pz[i] = c.v[i][2];
         nc = shli_poly_clip_unit(px, py, pz, 4, 0, 0, 1);
         if (nc != 0)
-          kk = shli_half_beckmann(px, py, pz, nc < 0 ? -nc : nc, 0, 0, 1, c.dview[0], c.dview[1],
-                                  c.dview[2], als[ip], 8, 1, als[ip]) /
+          kk = shli_half_image(px, py, pz, nc < 0 ? -nc : nc, 0, 0, 1, c.dview[0], c.dview[1],
+                               c.dview[2], als[ip], 8, 1, als[ip], 1) /
                c.dview[2];
         if (nc < 0) kk = -kk;
         if (!(fabsl((long double)kk - ref) / alb <= worst))
