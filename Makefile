@@ -35,7 +35,7 @@ example: $(BUILD)/examples/hello_sh
 # GLSL twins against C on llvmpipe
 $(BUILD)/tests/test_glsl: tests/test_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Wconversion -Werror $(GL_CFLAGS) \
+	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Wconversion -Werror $(GL_CFLAGS) \
 	    -o $@ tests/test_glsl.c $(GL_SRCS) $(GL_LIBS)
 
 # compile matrix: C99/C11/C++98/11/17/20, gcc and clang, SHLIGHT_STATIC, two TUs linked
@@ -88,32 +88,32 @@ clean:
 
 $(BUILD)/tests/test_grid_glsl: tests/test_grid_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
+	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
 	    -o $@ tests/test_grid_glsl.c $(GL_SRCS) $(GL_LIBS)
 
 $(BUILD)/tests/test_edge_glsl: tests/test_edge_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
+	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
 	    -o $@ tests/test_edge_glsl.c $(GL_SRCS) $(GL_LIBS) -lm
 
 $(BUILD)/tests/test_microfacet_glsl: tests/test_microfacet_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
+	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
 	    -o $@ tests/test_microfacet_glsl.c $(GL_SRCS) $(GL_LIBS) -lm
 
 $(BUILD)/tests/test_ggx_glsl: tests/test_ggx_glsl.c tests/ref/ggxcases.h shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
+	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
 	    -o $@ tests/test_ggx_glsl.c $(GL_SRCS) $(GL_LIBS) -lm
 
 $(BUILD)/tests/test_brdf_glsl: tests/test_brdf_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
+	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
 	    -o $@ tests/test_brdf_glsl.c $(GL_SRCS) $(GL_LIBS)
 
 $(BUILD)/tests/test_brdftab_glsl: tests/test_brdftab_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
+	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
 	    -o $@ tests/test_brdftab_glsl.c $(GL_SRCS) $(GL_LIBS)
 
 # shlrender: the headless renderer (render/), on the tests' GL context (tests/gl/glctx.c)
@@ -121,7 +121,7 @@ $(BUILD)/tests/test_brdftab_glsl: tests/test_brdftab_glsl.c shlight.h tests/tl.h
 RENDER_SRCS := $(wildcard render/*.c)
 RENDER_OBJS := $(patsubst render/%.c,$(BUILD)/render/%.o,$(RENDER_SRCS))
 RENDER_WARN := $(filter-out -Wdouble-promotion,$(WARN))
-RENDER_CFLAGS := -std=c99 -O2 -g $(RENDER_WARN) $(GL_CFLAGS) -DRD_GLSL_DIR='"$(CURDIR)/shlight_glsl"'
+RENDER_CFLAGS := -std=c99 -O2 -g1 $(RENDER_WARN) $(GL_CFLAGS) -DRD_GLSL_DIR='"$(CURDIR)/shlight_glsl"'
 $(BUILD)/render/%.o: render/%.c render/rd.h shlight.h tests/gl/glctx.h
 	@mkdir -p $(@D)
 	$(CC) $(RENDER_CFLAGS) -c -o $@ $<
@@ -135,11 +135,11 @@ $(BUILD)/render/shlrender: $(RENDER_OBJS) $(BUILD)/render/glctx.o
 FUZZ_SCENE_DEPS := tests/fuzz_scene.c tests/fuzz_replay.c render/rd_scene.c render/rd.h
 $(BUILD)/tests/fuzz_replay_scene: $(FUZZ_SCENE_DEPS)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 -O2 -g $(RENDER_WARN) -Wno-missing-prototypes -o $@ tests/fuzz_replay.c \
+	$(CC) -std=c99 -O2 -g1 $(RENDER_WARN) -Wno-missing-prototypes -o $@ tests/fuzz_replay.c \
 	    tests/fuzz_scene.c render/rd_scene.c -lm
 $(BUILD)/tests/asan/fuzz_replay_scene: $(FUZZ_SCENE_DEPS)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefined \
+	$(CC) -std=c99 -O1 -g1 -fsanitize=address,undefined -fno-sanitize-recover=undefined \
 	    -o $@ tests/fuzz_replay.c tests/fuzz_scene.c render/rd_scene.c -lm
 $(BUILD)/tests/fuzz_scene: tests/fuzz_scene.c render/rd_scene.c render/rd.h
 	@mkdir -p $(@D)
@@ -152,7 +152,7 @@ fuzz-scene: $(BUILD)/tests/fuzz_scene
 
 $(BUILD)/tests/test_ssf_glsl: tests/test_ssf_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
+	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
 	    -o $@ tests/test_ssf_glsl.c $(GL_SRCS) $(GL_LIBS) -lm
 
 # the README's first set-up command: render the default scene (every pass, GL and CPU) to out/
@@ -168,5 +168,5 @@ render-results: $(BUILD)/render/shlrender
 	    --out $(BUILD)/render/results | tee $(BUILD)/render/results/$$s.md; done
 $(BUILD)/tests/test_rd_core: tests/test_rd_core.c render/rd_core.c render/rd.h tests/tl.h
 	@mkdir -p $(@D)
-	$(CC) -std=c99 -O2 -g $(RENDER_WARN) -Wno-missing-prototypes -D_POSIX_C_SOURCE=200809L \
+	$(CC) -std=c99 -O2 -g1 $(RENDER_WARN) -Wno-missing-prototypes -D_POSIX_C_SOURCE=200809L \
 	    -o $@ tests/test_rd_core.c render/rd_core.c -lm
