@@ -44,8 +44,8 @@ backends=""
 pkg-config --exists osmesa && backends="$backends osmesa"
 pkg-config --exists egl && backends="$backends egl"
 
-# The second lane: the sanitizer build and runs, the -march=native variants and the reference
-# self-test run one after another in the background, niced, so they take the core that the
+# The second lane: the sanitizer build and runs and the -march=native variants run one after
+# another in the background, niced, so they take the core that the
 # single-threaded steps leave idle (each was on the critical path: the run took 684 s). It
 # starts with the sanitizer build and waits for build-tests before it runs the native
 # binaries. Logs and exit statuses land in build/logs/lane/, reported as steps at the end.
@@ -68,7 +68,6 @@ lane() {
   while [ ! -e build/logs/lane/tests-built ]; do sleep 1; done
   lane_step test_basis-march-native build/tests/native/test_basis
   lane_step test_light-march-native build/tests/native/test_light
-  lane_step lightref-selftest build/tests/selftest_lightref
   lane_step test_grid-march-native build/tests/native/test_grid
   lane_step test_brdf-march-native build/tests/native/test_brdf
   [ "${SHLIGHT_TEST_QUICK:-0}" != 1 ] || return 0
@@ -127,6 +126,8 @@ step fuzz-corpus-replay-scene build/tests/fuzz_replay_scene tests/corpus/scene
 step test_glm build/tests/test_glm
 step fuzz-corpus-replay build/tests/fuzz_replay tests/corpus/basis
 step test_brdftab build/tests/test_brdftab
+# in the foreground: it balances the two lanes (both ~555 s)
+step lightref-selftest build/tests/selftest_lightref
 step fuzz-corpus-replay-brdftab build/tests/fuzz_replay_brdftab tests/corpus/brdftab
 # every GLSL check runs on the first backend (OSMesa); the second (EGL) runs the same llvmpipe
 # compiler, so it gets every harness with test_glsl's band-count subset (SHLIGHT_GLSL_SUBSET)
@@ -154,7 +155,7 @@ done
 # the second lane's steps, in its order (the -march=native variants run the same tests on this
 # machine's SIMD paths, AVX-512 / AVX2 kernels, with FMA contraction)
 wait "$lane_pid"
-for n in test_basis-march-native test_light-march-native lightref-selftest test_grid-march-native \
+for n in test_basis-march-native test_light-march-native test_grid-march-native \
   test_brdf-march-native; do
   step "$n" lane_show "$n"
 done
