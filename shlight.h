@@ -28907,121 +28907,6 @@ SHLIGHT_INLINE int shli_half_splits(shli_real ax, shli_real ay, shli_real az, sh
   return ns;
 }
 
-/* The image in half-vector space of the clipped light polygon (io_px, io_py, io_pz)[0..nc-1]
-   (unit vertices above the horizon of the unit normal n, view v unit with n.v > 0): each edge
-   cut into sub-edges at shli_half_splits' points, every sub-edge end point mapped by
-   H(l) = normalise(l + v), consecutive images joined by great arcs; returns the sum over those
-   arcs of the edge terms about n divided by 2 pi, signed by the light's winding: kind 0 (par =
-   e): (e+2)/(2 pi) M^(e+1) of the image (QUADRATURE terms at exponent e + 1), the integral of
-   D_Blinn (h.n); kind 1 (par = alpha): the integral of D_B (h.n) (shli_beckmann_edge). The
-   arrays are only read. */
-SHLIGHT_INLINE shli_real shli_half_sum(shli_real *io_px, shli_real *io_py, shli_real *io_pz, int nc,
-                                       shli_real nx, shli_real ny, shli_real nz, shli_real vx,
-                                       shli_real vy, shli_real vz, shli_real m, int k, int bal,
-                                       shli_real par, int kind) {
-  shli_real st[SHLIGHT_HALF_K];
-  shli_real rx;
-  shli_real ry;
-  shli_real rz;
-  shli_real dv = nx * vx + ny * vy + nz * vz;
-  shli_real ex;
-  shli_real ey;
-  shli_real ez;
-  shli_real sp;
-  shli_real cp;
-  shli_real phi;
-  shli_real ux;
-  shli_real uy;
-  shli_real uz;
-  shli_real hax;
-  shli_real hay;
-  shli_real haz;
-  shli_real hbx;
-  shli_real hby;
-  shli_real hbz;
-  shli_real tx;
-  shli_real ty;
-  shli_real tz;
-  shli_real cs;
-  shli_real sn;
-  shli_real l;
-  shli_real sum = 0.0;
-  int ns;
-  int i;
-  int j;
-  int jj;
-  rx = 2.0 * dv * nx - vx;
-  ry = 2.0 * dv * ny - vy;
-  rz = 2.0 * dv * nz - vz;
-  /* the edge sum over the image polygon: sub-edge end points mapped by H, joined by arcs */
-  for (i = 0; i < nc; ++i) {
-    j = i + 1;
-    if (j == nc) {
-      j = 0;
-    }
-    ex = io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
-    ey = io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
-    ez = io_px[i] * io_py[j] - io_py[i] * io_px[j];
-    sp = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
-    cp = io_px[i] * io_px[j] + io_py[i] * io_py[j] + io_pz[i] * io_pz[j];
-    ns = 0;
-    phi = 0.0;
-    ux = 0.0;
-    uy = 0.0;
-    uz = 0.0;
-    if (sp > 1.0e-12) {
-      ns = shli_half_splits(io_px[i], io_py[i], io_pz[i], io_px[j], io_py[j], io_pz[j], rx, ry, rz,
-                            vx, vy, vz, m, k, bal, st);
-      phi = shli_atan2r(sp, cp);
-      ux = (io_px[j] - cp * io_px[i]) / sp;
-      uy = (io_py[j] - cp * io_py[i]) / sp;
-      uz = (io_pz[j] - cp * io_pz[i]) / sp;
-    }
-    hax = io_px[i] + vx;
-    hay = io_py[i] + vy;
-    haz = io_pz[i] + vz;
-    l = SHLIGHT_SQRTR(hax * hax + hay * hay + haz * haz);
-    if (!(l > 1.0e-30)) {
-      return 0.0;
-    }
-    hax = hax / l;
-    hay = hay / l;
-    haz = haz / l;
-    for (jj = 0; jj <= ns; ++jj) {
-      tx = io_px[j];
-      ty = io_py[j];
-      tz = io_pz[j];
-      if (jj < ns) {
-        cs = SHLIGHT_COSR(st[jj] * phi);
-        sn = SHLIGHT_SINR(st[jj] * phi);
-        tx = cs * io_px[i] + sn * ux;
-        ty = cs * io_py[i] + sn * uy;
-        tz = cs * io_pz[i] + sn * uz;
-      }
-      hbx = tx + vx;
-      hby = ty + vy;
-      hbz = tz + vz;
-      l = SHLIGHT_SQRTR(hbx * hbx + hby * hby + hbz * hbz);
-      if (!(l > 1.0e-30)) {
-        return 0.0;
-      }
-      hbx = hbx / l;
-      hby = hby / l;
-      hbz = hbz / l;
-      if (kind == 0) {
-        sum = sum + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par + 1.0,
-                                   SHLIGHT_EDGE_QUADRATURE);
-      } else {
-        sum = sum + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par, 0.0);
-      }
-      hax = hbx;
-      hay = hby;
-      haz = hbz;
-    }
-  }
-  return sum * 0.15915494309189534;
-}
-
 /* integral along the great arc a -> b (unit, inside t = u.n >= 0, b != -a) of t^p (u.c)^j ds
    (j = 0 or 1, p >= 0), or for j = 2 of E(t) / t^2, E = exp(-(1 - t^2) / (t^2 p^2)) (Beckmann,
    p = alpha): t = R cos(s - s0) along the arc; the arc is cut at the peak s0 and each side
@@ -29143,19 +29028,24 @@ SHLIGHT_INLINE shli_real shli_half_arc(shli_real ax, shli_real ay, shli_real az,
   return sum;
 }
 
-/* The integrals over the image polygon of shli_half_sum, signed by the light's winding: one
-   walk over the sub-edge end points mapped by H, joined by arcs, for both kinds.
-   kind 0, Blinn-Phong over the image polygon of shli_half_sum without a held factor: with
+/* The integrals over the image in half-vector space of the clipped light polygon (io_px, io_py,
+   io_pz)[0..nc-1] (unit vertices above the horizon of the unit normal n, view v unit with
+   n.v > 0; the arrays are only read), signed by the light's winding: each edge cut into
+   sub-edges at shli_half_splits' points, every end point mapped by H(l) = normalise(l + v),
+   consecutive images joined by great arcs; one walk for every kind.
+   kind 0, Blinn-Phong over the image polygon without a held factor: with
    n.l = 2 (h.v)(h.n) - n.v, the integrand D (n.l) (h.v) = (e+2)/(2 pi) [2 t^(e+1) (h.v)^2 -
    (n.v) t^e (h.v)], t = h.n, is a polynomial in h times a power of t; its integrals follow
    from two moments (exponents e + 1 and e - 1, QUADRATURE edge terms) and two line integrals
    per arc (shli_half_arc) by the surface divergence theorem applied to t^a P(v) and
    t^a (h.v) P(v), P(v) = v - (v.h) h the tangential part of v.
-   kind 1, K = the integral of D_B(h) (h.v) over the image polygon of shli_half_sum (signed by the
-   light's winding), by the surface divergence identity for g(t) P(v) with (t^2 g)' = t D_B:
-   g = E(t) / (2 pi t^2), E = exp(-(1 - t^2) / (t^2 alpha^2)), and
-   K = (n.v) (integral of g') - sum over arcs (v.m) (line integral of g), m the outward
-   conormal; the integral of the radial g' by the Stokes form with the closed-form 2 pi
+   kinds 2 and 3, the image's NDF measures (the split's own error, tests/test_microfacet): kind 2
+   (par = e) (e+2)/(2 pi) M^(e+1), QUADRATURE terms at exponent e + 1, the integral of
+   D_Blinn (h.n); kind 3 (par = alpha) the integral of D_B (h.n) (shli_beckmann_edge).
+   kind 1, K = the integral of D_B(h) (h.v) over the image polygon, by the surface divergence
+   identity for g(t) P(v) with (t^2 g)' = t D_B: g = E(t) / (2 pi t^2), E = exp(-(1 - t^2) / (t^2
+   alpha^2)), and K = (n.v) (integral of g') - sum over arcs (v.m) (line integral of g), m the
+   outward conormal; the integral of the radial g' by the Stokes form with the closed-form 2 pi
    (g(1) - g(t)) = 1 - E / t^2 (shli_beckmann_edge with sa = alpha^2). par = alpha. */
 SHLIGHT_INLINE shli_real shli_half_image(shli_real *io_px, shli_real *io_py, shli_real *io_pz,
                                          int nc, shli_real nx, shli_real ny, shli_real nz,
@@ -29258,21 +29148,23 @@ SHLIGHT_INLINE shli_real shli_half_image(shli_real *io_px, shli_real *io_py, shl
       hbx = hbx / l;
       hby = hby / l;
       hbz = hbz / l;
-      if (kind == 0) {
+      if (kind == 0 || kind == 2) {
         a1 = a1 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par + 1.0,
                                  SHLIGHT_EDGE_QUADRATURE);
-        if (par > 0.0) {
+        if (kind == 0 && par > 0.0) {
           a0 = a0 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par - 1.0,
                                    SHLIGHT_EDGE_QUADRATURE);
         }
-      } else {
+      } else if (kind == 1) {
         a1 = a1 + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par, par * par);
+      } else {
+        a1 = a1 + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par, 0.0);
       }
       mx = hay * hbz - haz * hby;
       my = haz * hbx - hax * hbz;
       mz = hax * hby - hay * hbx;
       l = SHLIGHT_SQRTR(mx * mx + my * my + mz * mz);
-      if (l > 1.0e-30) {
+      if (kind < 2 && l > 1.0e-30) {
         l = -(mx * vx + my * vy + mz * vz) / l; /* outward conormal: -(a x b) */
         if (kind == 0) {
           pp = pp + l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par, 0);
@@ -29291,6 +29183,9 @@ SHLIGHT_INLINE shli_real shli_half_image(shli_real *io_px, shli_real *io_py, shl
      identities, README): (a+2) J1(a) = a (n.v) M^(a-1) - sum (v.m) line(t^a),
      (a+3) J2(a) = a (n.v) J1(a-1) + M^a - sum (v.m) line(t^a (h.v)), m the outward
      conormal */
+  if (kind >= 2) {
+    return a1 * 0.15915494309189534;
+  }
   if (kind != 0) {
     /* (n.v) (integral of g') - sum (v.m) line(g), g = E / (2 pi t^2) */
     return (dv * a1 - pp) * 0.15915494309189534;

@@ -2148,114 +2148,6 @@ int shli_half_splits(shli_real ax, shli_real ay, shli_real az, shli_real bx, shl
   return ns;
 }
 
-shli_real shli_half_sum(inout shli_real io_px[SHLIGHT_CLIP_MAX],
-                        inout shli_real io_py[SHLIGHT_CLIP_MAX],
-                        inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nc, shli_real nx, shli_real ny,
-                        shli_real nz, shli_real vx, shli_real vy, shli_real vz, shli_real m, int k,
-                        int bal, shli_real par, int kind) {
-  shli_real st[SHLIGHT_HALF_K];
-  shli_real rx;
-  shli_real ry;
-  shli_real rz;
-  shli_real dv = nx * vx + ny * vy + nz * vz;
-  shli_real ex;
-  shli_real ey;
-  shli_real ez;
-  shli_real sp;
-  shli_real cp;
-  shli_real phi;
-  shli_real ux;
-  shli_real uy;
-  shli_real uz;
-  shli_real hax;
-  shli_real hay;
-  shli_real haz;
-  shli_real hbx;
-  shli_real hby;
-  shli_real hbz;
-  shli_real tx;
-  shli_real ty;
-  shli_real tz;
-  shli_real cs;
-  shli_real sn;
-  shli_real l;
-  shli_real sum = 0.0;
-  int ns;
-  int i;
-  int j;
-  int jj;
-  rx = 2.0 * dv * nx - vx;
-  ry = 2.0 * dv * ny - vy;
-  rz = 2.0 * dv * nz - vz;
-  /* the edge sum over the image polygon: sub-edge end points mapped by H, joined by arcs */
-  for (i = 0; i < nc; ++i) {
-    j = i + 1;
-    if (j == nc) {
-      j = 0;
-    }
-    ex = io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
-    ey = io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
-    ez = io_px[i] * io_py[j] - io_py[i] * io_px[j];
-    sp = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
-    cp = io_px[i] * io_px[j] + io_py[i] * io_py[j] + io_pz[i] * io_pz[j];
-    ns = 0;
-    phi = 0.0;
-    ux = 0.0;
-    uy = 0.0;
-    uz = 0.0;
-    if (sp > 1.0e-12) {
-      ns = shli_half_splits(io_px[i], io_py[i], io_pz[i], io_px[j], io_py[j], io_pz[j], rx, ry, rz,
-                            vx, vy, vz, m, k, bal, st);
-      phi = shli_atan2r(sp, cp);
-      ux = (io_px[j] - cp * io_px[i]) / sp;
-      uy = (io_py[j] - cp * io_py[i]) / sp;
-      uz = (io_pz[j] - cp * io_pz[i]) / sp;
-    }
-    hax = io_px[i] + vx;
-    hay = io_py[i] + vy;
-    haz = io_pz[i] + vz;
-    l = SHLIGHT_SQRTR(hax * hax + hay * hay + haz * haz);
-    if (!(l > 1.0e-30)) {
-      return 0.0;
-    }
-    hax = hax / l;
-    hay = hay / l;
-    haz = haz / l;
-    for (jj = 0; jj <= ns; ++jj) {
-      tx = io_px[j];
-      ty = io_py[j];
-      tz = io_pz[j];
-      if (jj < ns) {
-        cs = SHLIGHT_COSR(st[jj] * phi);
-        sn = SHLIGHT_SINR(st[jj] * phi);
-        tx = cs * io_px[i] + sn * ux;
-        ty = cs * io_py[i] + sn * uy;
-        tz = cs * io_pz[i] + sn * uz;
-      }
-      hbx = tx + vx;
-      hby = ty + vy;
-      hbz = tz + vz;
-      l = SHLIGHT_SQRTR(hbx * hbx + hby * hby + hbz * hbz);
-      if (!(l > 1.0e-30)) {
-        return 0.0;
-      }
-      hbx = hbx / l;
-      hby = hby / l;
-      hbz = hbz / l;
-      if (kind == 0) {
-        sum = sum + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par + 1.0,
-                                   SHLIGHT_EDGE_QUADRATURE);
-      } else {
-        sum = sum + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par, 0.0);
-      }
-      hax = hbx;
-      hay = hby;
-      haz = hbz;
-    }
-  }
-  return sum * 0.15915494309189534;
-}
-
 shli_real shli_half_arc(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
                         shli_real bz, shli_real nx, shli_real ny, shli_real nz, shli_real cx,
                         shli_real cy, shli_real cz, shli_real p, int j) {
@@ -2472,21 +2364,23 @@ shli_real shli_half_image(inout shli_real io_px[SHLIGHT_CLIP_MAX],
       hbx = hbx / l;
       hby = hby / l;
       hbz = hbz / l;
-      if (kind == 0) {
+      if (kind == 0 || kind == 2) {
         a1 = a1 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par + 1.0,
                                  SHLIGHT_EDGE_QUADRATURE);
-        if (par > 0.0) {
+        if (kind == 0 && par > 0.0) {
           a0 = a0 + shli_edge_term(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par - 1.0,
                                    SHLIGHT_EDGE_QUADRATURE);
         }
-      } else {
+      } else if (kind == 1) {
         a1 = a1 + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par, par * par);
+      } else {
+        a1 = a1 + shli_beckmann_edge(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, par, 0.0);
       }
       mx = hay * hbz - haz * hby;
       my = haz * hbx - hax * hbz;
       mz = hax * hby - hay * hbx;
       l = SHLIGHT_SQRTR(mx * mx + my * my + mz * mz);
-      if (l > 1.0e-30) {
+      if (kind < 2 && l > 1.0e-30) {
         l = -(mx * vx + my * vy + mz * vz) / l; /* outward conormal: -(a x b) */
         if (kind == 0) {
           pp = pp + l * shli_half_arc(hax, hay, haz, hbx, hby, hbz, nx, ny, nz, vx, vy, vz, par, 0);
@@ -2505,6 +2399,9 @@ shli_real shli_half_image(inout shli_real io_px[SHLIGHT_CLIP_MAX],
      identities, README): (a+2) J1(a) = a (n.v) M^(a-1) - sum (v.m) line(t^a),
      (a+3) J2(a) = a (n.v) J1(a-1) + M^a - sum (v.m) line(t^a (h.v)), m the outward
      conormal */
+  if (kind >= 2) {
+    return a1 * 0.15915494309189534;
+  }
   if (kind != 0) {
     /* (n.v) (integral of g') - sum (v.m) line(g), g = E / (2 pi t^2) */
     return (dv * a1 - pp) * 0.15915494309189534;

@@ -174,8 +174,8 @@ static double half_measure(const mf_case *c, double par, int k, int kind) {
   nc = shli_poly_clip_unit(px, py, pz, 4, 0, 0, 1);
   if (nc == 0) return 0;
   m = kind == 0 ? sqrt(2 / (par + 2)) : par;
-  s = shli_half_sum(px, py, pz, nc < 0 ? -nc : nc, 0, 0, 1, c->dview[0], c->dview[1], c->dview[2],
-                    m, k < 0 ? -k : k, k > 0, par, kind);
+  s = shli_half_image(px, py, pz, nc < 0 ? -nc : nc, 0, 0, 1, c->dview[0], c->dview[1], c->dview[2],
+                      m, k < 0 ? -k : k, k > 0, par, kind + 2);
   return nc < 0 ? -s : s;
 }
 /* its reference: the light-space integral of D (h.n) / (4 (h.l)) (arearef kinds 2, 3) */
