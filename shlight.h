@@ -13034,8 +13034,205 @@ static const float SHLI_SH_LANES[12096] = {
     11.2694277f,   1.0f,          0.345834066f,  0.330915551f,  0.315585617f,  0.299775745f,
     0.283401139f,  0.266354703f,  0.248497861f,  0.229646006f,  0.20954418f,   0.187823794f,
     0.163918948f,  0.136885737f,  0.104945463f,  0.0640060481f, 0.0f,          0.0f};
+static const float SHLI_SH_LANES_S[720] = {
+    1.73205081f,    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.73205081f,    0.0f,
+    0.0f,           0.0f,           0.0f,           0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.0f,           0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    2.0f,           2.23606798f,    1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           3.0f,           2.23606798f,
+    0.0f,           0.0f,           0.0f,           0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.0f,           0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.645497224f,   1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.5f,           4.0f,           2.64575131f,    1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           2.5f,           5.0f,
+    2.64575131f,    0.0f,           0.0f,           0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.0f,           0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.509175077f,   0.418330013f,   1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.33333333f,    2.5f,           6.0f,           3.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           2.33333333f,    3.5f,
+    7.0f,           3.0f,           0.0f,           0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.0f,           0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.433012702f,   0.244948974f,   0.327326835f,   1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.25f,          2.0f,           3.5f,           8.0f,           3.31662479f,    1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           2.25f,          3.0f,
+    4.5f,           9.0f,           3.31662479f,    0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.0f,           0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.382970843f,   0.16583124f,    0.157934514f,   0.276385399f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.2f,           1.75f,          2.66666667f,    4.5f,           10.0f,          3.60555128f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           2.2f,           2.75f,
+    3.66666667f,    5.5f,           11.0f,          3.60555128f,    0.0f,           0.0f,
+    0.0f,           0.0f,           0.0f,           0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.346944333f,   0.12188988f,    0.0910539199f,  0.115648111f,
+    0.243086217f,   1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.16666667f,    1.6f,           2.25f,          3.33333333f,    5.5f,           12.0f,
+    3.87298335f,    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           2.16666667f,    2.6f,
+    3.25f,          4.33333333f,    6.5f,           13.0f,          3.87298335f,    0.0f,
+    0.0f,           0.0f,           0.0f,           0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.319438282f,   0.0944911183f,  0.0583211844f,  0.0589255651f,
+    0.0909090909f,  0.219264505f,   1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.14285714f,    1.5f,           2.0f,           2.75f,          4.0f,           6.5f,
+    14.0f,          4.12310563f,    1.0f,           1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           2.14285714f,    2.5f,
+    3.0f,           3.75f,          5.0f,           7.5f,           15.0f,          4.12310563f,
+    0.0f,           0.0f,           0.0f,           0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.297559518f,   0.0760415211f,  0.0400774005f,  0.0338346146f,
+    0.0419070203f,  0.0747557935f,  0.201186954f,   1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.125f,         1.42857143f,    1.83333333f,    2.4f,           3.25f,          4.66666667f,
+    7.5f,           16.0f,          4.35889894f,    1.0f,           1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           2.125f,         2.42857143f,
+    2.83333333f,    3.4f,           4.25f,          5.66666667f,    8.5f,           17.0f,
+    4.35889894f,    0.0f,           0.0f,           0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.279623498f,   0.062915287f,   0.0289706189f,  0.0210774142f,
+    0.0219807464f,  0.0316828643f,  0.0634126487f,  0.18688625f,    1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.11111111f,    1.375f,         1.71428571f,    2.16666667f,    2.8f,           3.75f,
+    5.33333333f,    8.5f,           18.0f,          4.58257569f,    1.0f,           1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           2.11111111f,    2.375f,
+    2.71428571f,    3.16666667f,    3.8f,           4.75f,          6.33333333f,    9.5f,
+    19.0f,          4.58257569f,    0.0f,           0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.264575131f,   0.0531816023f,  0.021759707f,   0.0139373668f,
+    0.0126068226f,  0.0153846154f,  0.025f,         0.0550243733f,  0.175219161f,   1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.1f,           1.33333333f,    1.625f,         2.0f,           2.5f,           3.2f,
+    4.25f,          6.0f,           9.5f,           20.0f,          4.79583152f,    1.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           2.1f,           2.33333333f,
+    2.625f,         3.0f,           3.5f,           4.2f,           5.25f,          7.0f,
+    10.5f,          21.0f,          4.79583152f,    0.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.251715875f,   0.0457264594f,  0.0168424152f,  0.00964770533f,
+    0.00772532065f, 0.00821628134f, 0.0113512793f,  0.0203593722f,  0.0485767477f,  0.165471908f,
+    1.0f,           1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.09090909f,    1.3f,           1.55555556f,    1.875f,         2.28571429f,    2.83333333f,
+    3.6f,           4.75f,          6.66666667f,    10.5f,          22.0f,          5.0f,
+    1.0f,           1.0f,           1.0f,           1.0f,           2.09090909f,    2.3f,
+    2.55555556f,    2.875f,         3.28571429f,    3.83333333f,    4.6f,           5.75f,
+    7.66666667f,    11.5f,          23.0f,          5.0f,           0.0f,           0.0f,
+    0.0f,           0.0f,           0.240562612f,   0.0398662736f,  0.0133563856f,  0.00692553326f,
+    0.0049832842f,  0.00471149959f, 0.00569388932f, 0.00871101291f, 0.0169867691f,  0.0434700442f,
+    0.157173653f,   1.0f,           1.0f,           1.0f,           1.0f,           1.0f,
+    1.08333333f,    1.27272727f,    1.5f,           1.77777778f,    2.125f,         2.57142857f,
+    3.16666667f,    4.0f,           5.25f,          7.33333333f,    11.5f,          24.0f,
+    5.19615242f,    1.0f,           1.0f,           1.0f,           2.08333333f,    2.27272727f,
+    2.5f,           2.77777778f,    3.125f,         3.57142857f,    4.16666667f,    5.0f,
+    6.25f,          8.33333333f,    12.5f,          25.0f,          5.19615242f,    0.0f,
+    0.0f,           0.0f,           0.230769231f,   0.0351605423f,  0.010805848f,   0.00512091556f,
+    0.00334943694f, 0.00285619484f, 0.00307855083f, 0.00413199623f, 0.00689109127f, 0.0144471399f,
+    0.0393275667f,  0.15f,          1.0f,           1.0f,           1.0f,           1.0f,
+    1.07692308f,    1.25f,          1.45454545f,    1.7f,           2.0f,           2.375f,
+    2.85714286f,    3.5f,           4.4f,           5.75f,          8.0f,           12.5f,
+    26.0f,          5.38516481f,    1.0f,           1.0f,           2.07692308f,    2.25f,
+    2.45454545f,    2.7f,           3.0f,           3.375f,         3.85714286f,    4.5f,
+    5.4f,           6.75f,          9.0f,           13.5f,          27.0f,          5.38516481f,
+    0.0f,           0.0f,           0.222080454f,   0.0313138612f,  0.00889033326f, 0.00388100256f,
+    0.00232860153f, 0.00181091005f, 0.0017656373f,  0.00211918864f, 0.00310805115f, 0.0055848314f,
+    0.012479576f,   0.0359010987f,  0.143719416f,   1.0f,           1.0f,           1.0f,
+    1.07142857f,    1.23076923f,    1.41666667f,    1.63636364f,    1.9f,           2.22222222f,
+    2.625f,         3.14285714f,    3.83333333f,    4.8f,           6.25f,          8.66666667f,
+    13.5f,          28.0f,          5.56776436f,    1.0f,           2.07142857f,    2.23076923f,
+    2.41666667f,    2.63636364f,    2.9f,           3.22222222f,    3.625f,         4.14285714f,
+    4.83333333f,    5.8f,           7.25f,          9.66666667f,    14.5f,          29.0f,
+    5.56776436f,    0.0f,           0.21430335f,    0.0281214567f,  0.00741967698f, 0.0030032507f,
+    0.00166534372f, 0.00119153345f, 0.00106228837f, 0.00115609406f, 0.00151952664f, 0.00240591718f,
+    0.00461622176f, 0.0109192843f,  0.0330205862f,  0.138161753f,   1.0f,           1.0f};
 #endif
 /* @generated end lanes */
+/* @generated begin plane */
+#if SHLIGHT_SIMD_EVAL
+static const float SHLI_SH_PLANES[144] = {
+    0.282094792f,  -0.488602512f, 0.488602512f, -0.488602512f, 0.546274215f,  -1.09254843f,
+    -0.315391565f, -1.09254843f,  0.546274215f, -0.59004359f,  1.44530572f,   0.457045799f,
+    -1.119529f,    0.457045799f,  1.44530572f,  -0.59004359f,  0.625835735f,  -1.77013077f,
+    -0.473087348f, 2.00713963f,   0.317356641f, 2.00713963f,   -0.473087348f, -1.77013077f,
+    0.625835735f,  -0.656382057f, 2.07566231f,  0.489238299f,  -2.39676839f,  -0.452946651f,
+    1.75425484f,   -0.452946651f, -2.39676839f, 0.489238299f,  2.07566231f,   -0.656382057f,
+    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
+    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
+    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
+    0.946174696f,  0.0f,          0.0f,         0.0f,          0.0f,          -2.285229f,
+    1.86588166f,   -2.285229f,    0.0f,         0.0f,          0.0f,          0.0f,
+    3.31161144f,   -4.6833258f,   -3.17356641f, -4.6833258f,   3.31161144f,   0.0f,
+    0.0f,          0.0f,          0.0f,         -4.40314469f,  7.19030518f,   6.34125312f,
+    -8.18652257f,  6.34125312f,   7.19030518f,  -4.40314469f,  0.0f,          0.0f,
+    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
+    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
+    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
+    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
+    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
+    0.0f,          0.0f,          3.70249414f,  0.0f,          0.0f,          0.0f,
+    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          -9.51187968f,
+    7.36787031f,   -9.51187968f,  0.0f,         0.0f,          0.0f,          0.0f,
+    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
+    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f};
+static const int SHLI_SH_PTAP[48] = {0,  17, 0,  1,  18, 17, 0, 1, 2, 19, 18, 17, 0,  1,  2, 3,
+                                     20, 19, 18, 17, 0,  1,  2, 3, 4, 21, 20, 19, 18, 17, 0, 1,
+                                     2,  3,  4,  5,  0,  0,  0, 0, 0, 0,  0,  0,  0,  0,  0, 0};
+static const int SHLI_SH_PODD[3] = {0x54A4, 0x54AA, 0x0005};
+#endif
+/* @generated end plane */
+#ifdef __AVX512VL__
+/* n <= 6 (C only, AVX-512): the Horner forms of shli_sh_poly_<n> evaluated across the outputs,
+   lane i = output i, so that the n^2 results leave in ceil(n^2 / 16) vector stores (a float
+   store per output bounds the scalar form at n^2 cycles on Zen 4): per vector two FMAs in z^2,
+   a multiply by z on the odd lanes and one by (x + iy)^|m| (a two-source permute of the powers,
+   lane m of c and s). Same coefficients and the same float input as shli_sh_poly_<n>. */
+SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_poly(int n, float x, float y, float z, float *out_y) {
+  __m512 vz = _mm512_set1_ps(z), z2 = _mm512_set1_ps(z * z), one = _mm512_set1_ps(1.0f);
+  __m512 c = _mm512_mask_blend_ps((__mmask16)0xAAAA, one, _mm512_set1_ps(x));
+  __m512 s = _mm512_maskz_mov_ps((__mmask16)0xAAAA, _mm512_set1_ps(y));
+  int v, nv = (n * n + 15) >> 4;
+  if (n > 2) {
+    /* lanes 2, 3 (and 6, 7, ...) times (x + iy)^2, lanes 4..7 times (x + iy)^4 */
+    float cr = x * x - y * y, ci = 2.0f * x * y;
+    __m512 vc = _mm512_set1_ps(cr), vi = _mm512_set1_ps(ci);
+    __m512 t0 = _mm512_mul_ps(s, vi), t1 = _mm512_mul_ps(c, vi);
+    c = _mm512_mask_fmsub_ps(c, (__mmask16)0xCCCC, vc, t0);
+    s = _mm512_mask_fmadd_ps(s, (__mmask16)0xCCCC, vc, t1);
+    if (n > 4) {
+      vc = _mm512_set1_ps(cr * cr - ci * ci);
+      vi = _mm512_set1_ps(2.0f * cr * ci);
+      t0 = _mm512_mul_ps(s, vi);
+      t1 = _mm512_mul_ps(c, vi);
+      c = _mm512_mask_fmsub_ps(c, (__mmask16)0xF0F0, vc, t0);
+      s = _mm512_mask_fmadd_ps(s, (__mmask16)0xF0F0, vc, t1);
+    }
+  }
+  for (v = 0; v < nv; ++v) {
+    __m512 h = _mm512_fmadd_ps(_mm512_loadu_ps(SHLI_SH_PLANES + 96 + 16 * v), z2,
+                               _mm512_loadu_ps(SHLI_SH_PLANES + 48 + 16 * v));
+    __m512 r;
+    h = _mm512_fmadd_ps(h, z2, _mm512_loadu_ps(SHLI_SH_PLANES + 16 * v));
+    h = _mm512_mask_mul_ps(h, (__mmask16)SHLI_SH_PODD[v], h, vz);
+    r = _mm512_mul_ps(
+        h, _mm512_permutex2var_ps(c, _mm512_loadu_si512((const void *)(SHLI_SH_PTAP + 16 * v)), s));
+    if (16 * v + 16 <= n * n) {
+      _mm512_storeu_ps(out_y + 16 * v, r);
+    } else {
+      _mm512_mask_storeu_ps(out_y + 16 * v, (__mmask16)((1u << (n * n - 16 * v)) - 1u), r);
+    }
+  }
+}
+#endif
 #ifdef __AVX512VL__
 /* n <= 8: the same in 256-bit registers (8 orders; three ports instead of two) */
 SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_8(int n, float x, float y, float z, float *out_y) {
@@ -13045,47 +13242,162 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_8(int n, float x, float y, float z, 
      order with e = |d|^2 - 1 formed without cancellation near the poles */
   float s2 = x * x + y * y;
   float e = (z - 1.0f) * (z + 1.0f) + s2;
-  float k = 1.0f + e * (-0.5f + 0.375f * e);
-  float cr = x * k, ci = y * k, sg, q;
-  __m256 c = _mm256_set1_ps(1.0f), s = _mm256_setzero_ps(), co, so, vs, xv, dd, vt;
+  /* (x + iy)^m from the raw x, y; the renormalisation |d|^-m = 1 + m dl (to O(e^2)) is one
+     lane vector applied after the powers, off their chain */
+  float dl = e * (-0.5f + 0.375f * e);
+  float cr = x * x - y * y, ci = 2.0f * x * y, q;
+  __m256 c, s, co, so, vs, xv, dd, vt, pk;
   __m256i iota = _mm256_set_epi32(7, 6, 5, 4, 3, 2, 1, 0);
   int b, l;
   vt = _mm256_set1_ps(s2 / (1.0f + fabsf(z)));
-  sg = copysignf(1.0f, z);
+  vs = _mm256_set1_ps(copysignf(1.0f, z));
   /* lane m gets (x + iy)^m as the product of (x + iy)^(2^b) over the set bits b of m */
-  for (b = 0; (1 << b) < n; ++b) {
-    __m256 vc = _mm256_set1_ps(cr), vi = _mm256_set1_ps(ci);
-    __m256 nc = _mm256_fmsub_ps(c, vc, _mm256_mul_ps(s, vi));
-    __m256 ns = _mm256_fmadd_ps(s, vc, _mm256_mul_ps(c, vi));
-    c = _mm256_mask_mov_ps(c, (__mmask8)bits[b], nc);
-    s = _mm256_mask_mov_ps(s, (__mmask8)bits[b], ns);
+  c = _mm256_mask_blend_ps((__mmask8)0xAA, _mm256_set1_ps(1.0f), _mm256_set1_ps(x));
+  s = _mm256_maskz_mov_ps((__mmask8)0xAA, _mm256_set1_ps(y));
+  for (b = 1; (1 << b) < n; ++b) {
+    __m256 vc = _mm256_set1_ps(cr), vi = _mm256_set1_ps(ci), t0 = _mm256_mul_ps(s, vi);
+    __m256 t1 = _mm256_mul_ps(c, vi);
+    c = _mm256_mask_fmsub_ps(c, (__mmask8)bits[b], vc, t0);
+    s = _mm256_mask_fmadd_ps(s, (__mmask8)bits[b], vc, t1);
     q = cr * cr - ci * ci;
     ci = 2.0f * cr * ci;
     cr = q;
   }
-  /* parity: X_l^m(z) = sg^(l-m) X_l^m(|z|), sg^m into the odd lanes, sg^l per band */
-  vs = _mm256_set1_ps(sg);
-  c = _mm256_mask_mul_ps(c, (__mmask8)0xAA, c, vs);
-  s = _mm256_mask_mul_ps(s, (__mmask8)0xAA, s, vs);
+  /* parity: X_l^m(z) = sg^(l-m) X_l^m(|z|), sg^m into the odd lanes, sg^l per band; with the
+     renormalisation 1 + m dl */
+  pk = _mm256_fmadd_ps(_mm256_cvtepi32_ps(iota), _mm256_set1_ps(dl), _mm256_set1_ps(1.0f));
+  pk = _mm256_mask_mul_ps(pk, (__mmask8)0xAA, pk, vs);
+  c = _mm256_mul_ps(c, pk);
+  s = _mm256_mul_ps(s, pk);
   co = _mm256_mul_ps(c, vs);
   so = _mm256_mul_ps(s, vs);
   xv = _mm256_loadu_ps(SHLI_SH_DIAG);
   dd = _mm256_setzero_ps();
   out_y[0] = SHLI_SH_DIAG[0];
   for (l = 1; l < n; ++l) {
-    const float *tb = SHLI_SH_LANES + (l - 1) * 48;
-    __m256 at = _mm256_mul_ps(_mm256_loadu_ps(tb), vt);
-    __m256 yc, ys;
-    dd = _mm256_fnmadd_ps(at, xv, _mm256_mul_ps(_mm256_loadu_ps(tb + 32), dd));
-    xv = _mm256_fmadd_ps(_mm256_loadu_ps(tb + 16), xv, dd);
-    yc = _mm256_mul_ps(xv, (l & 1) ? co : c);
-    ys = _mm256_mul_ps(xv, (l & 1) ? so : s);
+    const float *tb = SHLI_SH_LANES_S + (l - 1) * 48;
+    __m256 bt = _mm256_mul_ps(_mm256_loadu_ps(tb + 16), vt);
+    __m256 at = _mm256_sub_ps(_mm256_loadu_ps(tb), bt);
+    __m256 yc, ys, xo;
+    __m256 xn = _mm256_fmadd_ps(at, xv, dd);
+    dd = _mm256_fnmadd_ps(bt, xv, dd);
+    xv = xn;
+    xo = _mm256_mul_ps(xv, _mm256_loadu_ps(tb + 32));
+    yc = _mm256_mul_ps(xo, (l & 1) ? co : c);
+    ys = _mm256_mul_ps(xo, (l & 1) ? so : s);
     ys = _mm256_permutexvar_ps(_mm256_sub_epi32(_mm256_set1_epi32(l), iota), ys);
     _mm256_mask_storeu_ps(out_y + l * l, (__mmask8)((1u << l) - 1u), ys);
     _mm256_mask_storeu_ps(out_y + l * l + l, (__mmask8)((2u << l) - 1u), yc);
   }
 }
 #endif
+
+/* Full unrolling of the band loops of the across-m cores when n is a compile-time constant
+   (inlined with a literal n): the loop then has no branches and every mask is an immediate.
+   GCC does not peel a 16-trip loop of this size by itself. */
+#if defined(__clang__)
+#define SHLI_UNROLL_BANDS _Pragma("unroll")
+#elif defined(__GNUC__) && __GNUC__ >= 8
+#define SHLI_UNROLL_BANDS _Pragma("GCC unroll 16")
+#else
+#define SHLI_UNROLL_BANDS
+#endif
+
+/* 9 <= n <= 16: the same in two 256-bit registers per band, orders 0..7 and 8..15 (the
+   second from band 8 on): 256-bit operations issue on both FMA pipes of a Zen 4 core and a
+   256-bit store takes one cycle where a 512-bit one takes two */
+SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16y(int n, float x, float y, float z, float *out_y) {
+  static const unsigned short bits[3] = {0xAA, 0xCC, 0xF0};
+  float s2 = x * x + y * y;
+  float e = (z - 1.0f) * (z + 1.0f) + s2;
+  /* (x + iy)^m from the raw x, y; the renormalisation |d|^-m = 1 + m dl (to O(e^2)) is one
+     lane vector applied after the powers, off their chain */
+  float dl = e * (-0.5f + 0.375f * e);
+  float cr = x * x - y * y, ci = 2.0f * x * y, q;
+  __m256 c, s, c8, s8, co, so, co8, so8, vs, xv, dd, xv8, dd8, vt, pk, vc, vi;
+  __m256i iota = _mm256_set_epi32(7, 6, 5, 4, 3, 2, 1, 0);
+  int b, l;
+  vt = _mm256_set1_ps(s2 / (1.0f + fabsf(z)));
+  vs = _mm256_set1_ps(copysignf(1.0f, z));
+  /* lane m gets (x + iy)^m as the product of (x + iy)^(2^b) over the set bits b of m; orders
+     8..15 are orders 0..7 times (x + iy)^8 */
+  c = _mm256_mask_blend_ps((__mmask8)0xAA, _mm256_set1_ps(1.0f), _mm256_set1_ps(x));
+  s = _mm256_maskz_mov_ps((__mmask8)0xAA, _mm256_set1_ps(y));
+  for (b = 1; b < 3; ++b) {
+    __m256 t0, t1;
+    vc = _mm256_set1_ps(cr);
+    vi = _mm256_set1_ps(ci);
+    t0 = _mm256_mul_ps(s, vi);
+    t1 = _mm256_mul_ps(c, vi);
+    c = _mm256_mask_fmsub_ps(c, (__mmask8)bits[b], vc, t0);
+    s = _mm256_mask_fmadd_ps(s, (__mmask8)bits[b], vc, t1);
+    q = cr * cr - ci * ci;
+    ci = 2.0f * cr * ci;
+    cr = q;
+  }
+  vc = _mm256_set1_ps(cr);
+  vi = _mm256_set1_ps(ci);
+  c8 = _mm256_fmsub_ps(c, vc, _mm256_mul_ps(s, vi));
+  s8 = _mm256_fmadd_ps(s, vc, _mm256_mul_ps(c, vi));
+  /* parity: X_l^m(z) = sg^(l-m) X_l^m(|z|), sg^m into the odd lanes, sg^l per band; with the
+     renormalisation 1 + m dl */
+  pk = _mm256_fmadd_ps(_mm256_cvtepi32_ps(iota), _mm256_set1_ps(dl), _mm256_set1_ps(1.0f));
+  pk = _mm256_mask_mul_ps(pk, (__mmask8)0xAA, pk, vs);
+  c = _mm256_mul_ps(c, pk);
+  s = _mm256_mul_ps(s, pk);
+  co = _mm256_mul_ps(c, vs);
+  so = _mm256_mul_ps(s, vs);
+  pk = _mm256_fmadd_ps(_mm256_set1_ps(8.0f * dl), vs, pk); /* lanes 8..15: + 8 dl sg^m */
+  pk = _mm256_mask_blend_ps((__mmask8)0x55, pk,
+                            _mm256_fmadd_ps(_mm256_cvtepi32_ps(iota), _mm256_set1_ps(dl),
+                                            _mm256_set1_ps(1.0f + 8.0f * dl)));
+  c8 = _mm256_mul_ps(c8, pk);
+  s8 = _mm256_mul_ps(s8, pk);
+  co8 = _mm256_mul_ps(c8, vs);
+  so8 = _mm256_mul_ps(s8, vs);
+  xv = _mm256_loadu_ps(SHLI_SH_DIAG);
+  xv8 = _mm256_loadu_ps(SHLI_SH_DIAG + 8);
+  dd = _mm256_setzero_ps();
+  dd8 = _mm256_setzero_ps();
+  out_y[0] = SHLI_SH_DIAG[0];
+  SHLI_UNROLL_BANDS
+  for (l = 1; l < n; ++l) {
+    /* scaled Reinsch step (tools/gen_basis.py, gen_lane_table_scaled): X~ and D~ both from
+       the previous band only, one FMA of latency per band */
+    const float *tb = SHLI_SH_LANES_S + (l - 1) * 48;
+    __m256 bt = _mm256_mul_ps(_mm256_loadu_ps(tb + 16), vt);
+    __m256 at = _mm256_sub_ps(_mm256_loadu_ps(tb), bt);
+    __m256 yc, ys, xo;
+    __m256 xn = _mm256_fmadd_ps(at, xv, dd);
+    dd = _mm256_fnmadd_ps(bt, xv, dd);
+    xv = xn;
+    xo = _mm256_mul_ps(xv, _mm256_loadu_ps(tb + 32));
+    yc = _mm256_mul_ps(xo, (l & 1) ? co : c);
+    ys = _mm256_mul_ps(xo, (l & 1) ? so : s);
+    if (l < 8) {
+      ys = _mm256_permutexvar_ps(_mm256_sub_epi32(_mm256_set1_epi32(l), iota), ys);
+      _mm256_mask_storeu_ps(out_y + l * l, (__mmask8)((1u << l) - 1u), ys);
+      _mm256_mask_storeu_ps(out_y + l * l + l, (__mmask8)((2u << l) - 1u), yc);
+    } else {
+      __m256 bt8 = _mm256_mul_ps(_mm256_loadu_ps(tb + 24), vt);
+      __m256 at8 = _mm256_sub_ps(_mm256_loadu_ps(tb + 8), bt8);
+      __m256 yc8, ys8, xo8;
+      __m256 xn8 = _mm256_fmadd_ps(at8, xv8, dd8);
+      dd8 = _mm256_fnmadd_ps(bt8, xv8, dd8);
+      xv8 = xn8;
+      xo8 = _mm256_mul_ps(xv8, _mm256_loadu_ps(tb + 40));
+      yc8 = _mm256_mul_ps(xo8, (l & 1) ? co8 : c8);
+      ys8 = _mm256_mul_ps(xo8, (l & 1) ? so8 : s8);
+      /* sines: m = l..8 (lanes l-8..0 of ys8) at l^2 .., then m = 7..1 (lanes 7..1 of ys) */
+      ys8 = _mm256_permutexvar_ps(_mm256_sub_epi32(_mm256_set1_epi32(l - 8), iota), ys8);
+      ys = _mm256_permutexvar_ps(_mm256_sub_epi32(_mm256_set1_epi32(7), iota), ys);
+      _mm256_mask_storeu_ps(out_y + l * l, (__mmask8)((1u << (l - 7)) - 1u), ys8);
+      _mm256_mask_storeu_ps(out_y + l * l + l - 7, (__mmask8)0x7F, ys);
+      _mm256_storeu_ps(out_y + l * l + l, yc);
+      _mm256_mask_storeu_ps(out_y + l * l + l + 8, (__mmask8)((2u << (l - 8)) - 1u), yc8);
+    }
+  }
+}
 
 /* n <= 16: one register per band (the common case; no chunk bookkeeping) */
 SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16(int n, float x, float y, float z, float *out_y) {
@@ -13095,41 +13407,51 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16(int n, float x, float y, float z,
      order with e = |d|^2 - 1 formed without cancellation near the poles */
   float s2 = x * x + y * y;
   float e = (z - 1.0f) * (z + 1.0f) + s2;
-  float k = 1.0f + e * (-0.5f + 0.375f * e);
-  float cr = x * k, ci = y * k, sg, q;
-  __m512 c = _mm512_set1_ps(1.0f), s = _mm512_setzero_ps(), co, so, vs, xv, dd, vt;
+  /* (x + iy)^m from the raw x, y; the renormalisation |d|^-m = 1 + m dl (to O(e^2)) is one
+     lane vector applied after the powers, off their chain */
+  float dl = e * (-0.5f + 0.375f * e);
+  float cr = x * x - y * y, ci = 2.0f * x * y, q;
+  __m512 c, s, co, so, vs, xv, dd, vt, pk;
   __m512i iota = _mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0);
   int b, l;
   vt = _mm512_set1_ps(s2 / (1.0f + fabsf(z)));
-  sg = copysignf(1.0f, z);
+  vs = _mm512_set1_ps(copysignf(1.0f, z));
   /* lane m gets (x + iy)^m as the product of (x + iy)^(2^b) over the set bits b of m */
-  for (b = 0; (1 << b) < n; ++b) {
-    __m512 vc = _mm512_set1_ps(cr), vi = _mm512_set1_ps(ci);
-    __m512 nc = _mm512_fmsub_ps(c, vc, _mm512_mul_ps(s, vi));
-    __m512 ns = _mm512_fmadd_ps(s, vc, _mm512_mul_ps(c, vi));
-    c = _mm512_mask_mov_ps(c, (__mmask16)bits[b], nc);
-    s = _mm512_mask_mov_ps(s, (__mmask16)bits[b], ns);
+  c = _mm512_mask_blend_ps((__mmask16)0xAAAA, _mm512_set1_ps(1.0f), _mm512_set1_ps(x));
+  s = _mm512_maskz_mov_ps((__mmask16)0xAAAA, _mm512_set1_ps(y));
+  for (b = 1; (1 << b) < n; ++b) {
+    __m512 vc = _mm512_set1_ps(cr), vi = _mm512_set1_ps(ci), t0 = _mm512_mul_ps(s, vi);
+    __m512 t1 = _mm512_mul_ps(c, vi);
+    c = _mm512_mask_fmsub_ps(c, (__mmask16)bits[b], vc, t0);
+    s = _mm512_mask_fmadd_ps(s, (__mmask16)bits[b], vc, t1);
     q = cr * cr - ci * ci;
     ci = 2.0f * cr * ci;
     cr = q;
   }
-  /* parity: X_l^m(z) = sg^(l-m) X_l^m(|z|), sg^m into the odd lanes, sg^l per band */
-  vs = _mm512_set1_ps(sg);
-  c = _mm512_mask_mul_ps(c, (__mmask16)0xAAAA, c, vs);
-  s = _mm512_mask_mul_ps(s, (__mmask16)0xAAAA, s, vs);
+  /* parity: X_l^m(z) = sg^(l-m) X_l^m(|z|), sg^m into the odd lanes, sg^l per band; with the
+     renormalisation 1 + m dl */
+  pk = _mm512_fmadd_ps(_mm512_cvtepi32_ps(iota), _mm512_set1_ps(dl), _mm512_set1_ps(1.0f));
+  pk = _mm512_mask_mul_ps(pk, (__mmask16)0xAAAA, pk, vs);
+  c = _mm512_mul_ps(c, pk);
+  s = _mm512_mul_ps(s, pk);
   co = _mm512_mul_ps(c, vs);
   so = _mm512_mul_ps(s, vs);
   xv = _mm512_loadu_ps(SHLI_SH_DIAG);
   dd = _mm512_setzero_ps();
   out_y[0] = SHLI_SH_DIAG[0];
   for (l = 1; l < n; ++l) {
-    const float *tb = SHLI_SH_LANES + (l - 1) * 48;
-    __m512 at = _mm512_mul_ps(_mm512_loadu_ps(tb), vt);
-    __m512 yc, ys;
-    dd = _mm512_fnmadd_ps(at, xv, _mm512_mul_ps(_mm512_loadu_ps(tb + 32), dd));
-    xv = _mm512_fmadd_ps(_mm512_loadu_ps(tb + 16), xv, dd);
-    yc = _mm512_mul_ps(xv, (l & 1) ? co : c);
-    ys = _mm512_mul_ps(xv, (l & 1) ? so : s);
+    /* scaled Reinsch step (tools/gen_basis.py, gen_lane_table_scaled): X~ and D~ both from
+       the previous band only, one FMA of latency per band */
+    const float *tb = SHLI_SH_LANES_S + (l - 1) * 48;
+    __m512 bt = _mm512_mul_ps(_mm512_loadu_ps(tb + 16), vt);
+    __m512 at = _mm512_sub_ps(_mm512_loadu_ps(tb), bt);
+    __m512 yc, ys, xo;
+    __m512 xn = _mm512_fmadd_ps(at, xv, dd);
+    dd = _mm512_fnmadd_ps(bt, xv, dd);
+    xv = xn;
+    xo = _mm512_mul_ps(xv, _mm512_loadu_ps(tb + 32));
+    yc = _mm512_mul_ps(xo, (l & 1) ? co : c);
+    ys = _mm512_mul_ps(xo, (l & 1) ? so : s);
     ys = _mm512_permutexvar_ps(_mm512_sub_epi32(_mm512_set1_epi32(l), iota), ys);
     _mm512_mask_storeu_ps(out_y + l * l, (__mmask16)((1u << l) - 1u), ys);
     _mm512_mask_storeu_ps(out_y + l * l + l, (__mmask16)((2u << l) - 1u), yc);
@@ -17149,6 +17471,12 @@ SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float 
   if (n < 1) {
     return;
   }
+#if SHLIGHT_SIMD_EVAL && defined(__AVX512VL__)
+  if (n >= SHLI_PT && n <= 6) {
+    shli_sh_eval_avx512_poly(n, dx, dy, dz, out_y);
+    return;
+  }
+#endif
   switch (n) {
   /* up to 6 bands, float Horner forms straight from d are within the targets (README): no
      normalisation, no division, no double */
@@ -17191,7 +17519,11 @@ SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float 
   }
 #endif
   if (n <= SHLIGHT_UNROLLED_BANDS) {
+#ifdef __AVX512VL__
+    shli_sh_eval_avx512_16y(n, dx, dy, dz, out_y);
+#else
     shli_sh_eval_avx512_16(n, dx, dy, dz, out_y);
+#endif
   } else {
     shli_sh_eval_avx512(n, dx, dy, dz, out_y);
   }

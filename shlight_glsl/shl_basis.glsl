@@ -4810,7 +4810,11 @@ void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIG
   }
 #endif
   if (n <= SHLIGHT_UNROLLED_BANDS) {
+#ifdef __AVX512VL__
+    shli_sh_eval_avx512_16y(n, dx, dy, dz, out_y);
+#else
     shli_sh_eval_avx512_16(n, dx, dy, dz, out_y);
+#endif
   } else {
     shli_sh_eval_avx512(n, dx, dy, dz, out_y);
   }

@@ -539,6 +539,56 @@ def gen_lane_table():
     return vals
 
 
+def gen_lane_table_scaled():
+    """SHLI_SH_LANES_S[(l - 1) * 48 + {0, 16, 32} + m], l = 1..15, m = 0..15: alpha', beta', pi
+    of band l for the scaled Reinsch step of the n <= 16 cores. With D_l = pi_l D~_l and
+    X_l = pi_l X~_l, pi_l = prod_{k <= l} c'_k (c' = c, or 1 where c = 0: the first step of a
+    column, where D_{l-1} = 0), the step is X~_l = (alpha' - beta' t) X~_{l-1} + D~_{l-1},
+    D~_l = D~_{l-1} - beta' t X~_{l-1} (alpha' = g / c', beta' = a / c'): two FMAs that both
+    depend only on the previous band, so the band chain is one FMA latency long."""
+    vals = []
+    pi = [1.0] * 16
+    for l in range(1, 16):
+        a_s, b_s, p_s = [], [], []
+        for m in range(16):
+            if m < l:
+                a, g, c = reinsch(l, m)
+            else:
+                a, g, c = 0.0, 1.0, 0.0
+            cp = c if c != 0.0 else 1.0
+            pi[m] *= cp
+            a_s.append(g / cp)
+            b_s.append(a / cp)
+            p_s.append(pi[m])
+        vals += a_s + b_s + p_s
+    return vals
+
+
+def gen_poly_lanes():
+    """SHLI_SH_PLANES: the n <= POLY_BANDS Horner forms across the outputs, lane i = output
+    i = l (l + 1) + m (48 lanes, three 512-bit vectors): [k * 48 + i] for k = 0, 1, 2 the
+    coefficients of X_l^|m| in z^2 (even part, or odd part divided by z), then at 3 * 48 + i
+    the trigonometric tap: 0 for m = 0 (lane 0 of the powers is 1), m for cos(m phi) lanes,
+    16 + |m| for sin(|m| phi) lanes (the second source of a two-source permute). Also
+    SHLI_SH_PODD[v]: lanes of vector v whose l - |m| is odd (times z)."""
+    co = [[0.0] * 48 for _ in range(3)]
+    tap = [0] * 48
+    odd = [0, 0, 0]
+    for l in range(POLY_BANDS):
+        for m in range(-l, l + 1):
+            i = idx(l, m)
+            am = abs(m)
+            c = xpoly(l, am)
+            o = (l - am) % 2 == 1
+            ev = [c[k] for k in range(1 if o else 0, len(c), 2)]
+            for k, v in enumerate(ev):
+                co[k][i] = v
+            tap[i] = am if m >= 0 else 16 + am
+            if o:
+                odd[i // 16] |= 1 << (i % 16)
+    return co[0] + co[1] + co[2], tap, odd
+
+
 def gen_light_idx():
     """>>light, C only (AVX-512): SHLI_LIGHT_BAND[i] = l for coefficient i = l (l+1) + m < 256
     (the band of each lane when per-band light weights scale 16 coefficients at a time), and
@@ -587,7 +637,15 @@ def c_regions():
     R['gradv'] = gen_grad_simd.main()
     R['light_idx'] = gen_light_idx()
     lt = gen_lane_table()
-    R['lanes'] = ['#if SHLIGHT_SIMD_EVAL'] + fmt_table('float', 'SHLI_SH_LANES', '%d' % len(lt), lt, lit_f, False) + ['#endif']
+    ls = gen_lane_table_scaled()
+    pco, ptap, podd = gen_poly_lanes()
+    R['plane'] = (['#if SHLIGHT_SIMD_EVAL'] +
+                  fmt_table('float', 'SHLI_SH_PLANES', '%d' % len(pco), pco, lit_f, False) +
+                  fmt_table('int', 'SHLI_SH_PTAP', '%d' % len(ptap), ptap, str, False) +
+                  fmt_table('int', 'SHLI_SH_PODD', '3', podd, lambda v: '0x%04X' % v, False) +
+                  ['#endif'])
+    R['lanes'] = (['#if SHLIGHT_SIMD_EVAL'] + fmt_table('float', 'SHLI_SH_LANES', '%d' % len(lt), lt, lit_f, False) +
+                  fmt_table('float', 'SHLI_SH_LANES_S', '%d' % len(ls), ls, lit_f, False) + ['#endif'])
     return R
 
 
