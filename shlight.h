@@ -17312,10 +17312,12 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_grad_avx512(int n, float x, float y, float 
   static const unsigned short bits[4] = {0xAAAA, 0xCCCC, 0xF0F0, 0xFF00};
   float s2 = x * x + y * y;
   float e = (z - 1.0f) * (z + 1.0f) + s2;
-  float k = 1.0f + e * (-0.5f + 0.375f * e);
-  float cr = x * k, ci = y * k, sg, q;
+  /* (x + iy)^m from x, y; the renormalisation |d|^-m = 1 + m dl (to O(e^2)) is one lane vector
+     applied after the powers, off their chain (as shli_sh_eval_avx512_16y) */
+  float dl = e * (-0.5f + 0.375f * e);
+  float cr = x * x - y * y, ci = 2.0f * x * y, q;
   float *o = &out_grad[0][0];
-  __m512 c = _mm512_set1_ps(1.0f), s = _mm512_setzero_ps(), co, so, vs, xv, dd, vt;
+  __m512 c, s, co, so, vs, xv, dd, vt, pk;
   __m512 vx = _mm512_set1_ps(x), vy = _mm512_set1_ps(y), vz = _mm512_set1_ps(z);
   __m512 u0, u1, u2, w0, w1, w2, p0, p1, q0, q1, r;
   __m512i iota = _mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0);
@@ -17327,20 +17329,22 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_grad_avx512(int n, float x, float y, float 
   __m512i iy5 = _mm512_loadu_si512((const void *)(SHLI_GRADV_IY + 80));
   int b, l, nc;
   vt = _mm512_set1_ps(s2 / (1.0f + fabsf(z)));
-  sg = copysignf(1.0f, z);
-  for (b = 0; (1 << b) < n; ++b) {
-    __m512 vc = _mm512_set1_ps(cr), vi = _mm512_set1_ps(ci);
-    __m512 nc2 = _mm512_fmsub_ps(c, vc, _mm512_mul_ps(s, vi));
-    __m512 ns = _mm512_fmadd_ps(s, vc, _mm512_mul_ps(c, vi));
-    c = _mm512_mask_mov_ps(c, (__mmask16)bits[b], nc2);
-    s = _mm512_mask_mov_ps(s, (__mmask16)bits[b], ns);
+  vs = _mm512_set1_ps(copysignf(1.0f, z));
+  c = _mm512_mask_blend_ps((__mmask16)0xAAAA, _mm512_set1_ps(1.0f), vx);
+  s = _mm512_maskz_mov_ps((__mmask16)0xAAAA, vy);
+  for (b = 1; (1 << b) < n; ++b) {
+    __m512 vc = _mm512_set1_ps(cr), vi = _mm512_set1_ps(ci), t0 = _mm512_mul_ps(s, vi);
+    __m512 t1 = _mm512_mul_ps(c, vi);
+    c = _mm512_mask_fmsub_ps(c, (__mmask16)bits[b], vc, t0);
+    s = _mm512_mask_fmadd_ps(s, (__mmask16)bits[b], vc, t1);
     q = cr * cr - ci * ci;
     ci = 2.0f * cr * ci;
     cr = q;
   }
-  vs = _mm512_set1_ps(sg);
-  c = _mm512_mask_mul_ps(c, (__mmask16)0xAAAA, c, vs);
-  s = _mm512_mask_mul_ps(s, (__mmask16)0xAAAA, s, vs);
+  pk = _mm512_fmadd_ps(_mm512_cvtepi32_ps(iota), _mm512_set1_ps(dl), _mm512_set1_ps(1.0f));
+  pk = _mm512_mask_mul_ps(pk, (__mmask16)0xAAAA, pk, vs);
+  c = _mm512_mul_ps(c, pk);
+  s = _mm512_mul_ps(s, pk);
   co = _mm512_mul_ps(c, vs);
   so = _mm512_mul_ps(s, vs);
   xv = _mm512_loadu_ps(SHLI_SH_DIAG);
@@ -17359,20 +17363,25 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_grad_avx512(int n, float x, float y, float 
   }
   p0 = _mm512_maskz_mov_ps((__mmask16)1, _mm512_set1_ps(SHLI_SH_DIAG[0] * ir));
   p1 = _mm512_setzero_ps();
+  SHLI_UNROLL_BANDS
   for (l = 1; l < n; ++l) {
-    const float *tb = SHLI_SH_LANES + (l - 1) * 48;
+    const float *tb = SHLI_SH_LANES_S + (l - 1) * 48;
     const int *ix = SHLI_GRADV_IDX + 32 * SHLI_GRADV_CH0[l];
     const float *cf = SHLI_GRADV_COEF + 32 * SHLI_GRADV_CH0[l];
     float *ol = o + 3 * l * l;
-    __m512 at = _mm512_mul_ps(_mm512_loadu_ps(tb), vt), yc, ys, lv;
+    __m512 bt = _mm512_mul_ps(_mm512_loadu_ps(tb + 16), vt);
+    __m512 at = _mm512_sub_ps(_mm512_loadu_ps(tb), bt), yc, ys, lv, xo, xn;
     __m512i rev = _mm512_sub_epi32(_mm512_set1_epi32(l), iota);
     /* band order k: k < l sine m = l - k (lane l - k of ys), k >= l cosine m = k - l (lane
        k - l of yc, 16 + k - l as the second permute source) */
     __m512i bo = _mm512_mask_sub_epi32(rev, (__mmask16)(0xFFFFu << l), _mm512_set1_epi32(16), rev);
-    dd = _mm512_fnmadd_ps(at, xv, _mm512_mul_ps(_mm512_loadu_ps(tb + 32), dd));
-    xv = _mm512_fmadd_ps(_mm512_loadu_ps(tb + 16), xv, dd);
-    yc = _mm512_mul_ps(xv, (l & 1) ? co : c);
-    ys = _mm512_mul_ps(xv, (l & 1) ? so : s);
+    /* scaled Reinsch step (see shli_sh_eval_avx512_16y) */
+    xn = _mm512_fmadd_ps(at, xv, dd);
+    dd = _mm512_fnmadd_ps(bt, xv, dd);
+    xv = xn;
+    xo = _mm512_mul_ps(xv, _mm512_loadu_ps(tb + 32));
+    yc = _mm512_mul_ps(xo, (l & 1) ? co : c);
+    ys = _mm512_mul_ps(xo, (l & 1) ? so : s);
     _mm512_mask_storeu_ps(out_y + l * l, (__mmask16)((1u << l) - 1u),
                           _mm512_permutexvar_ps(rev, ys));
     _mm512_mask_storeu_ps(out_y + l * l + l, (__mmask16)((2u << l) - 1u), yc);
@@ -17471,11 +17480,14 @@ SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float 
   if (n < 1) {
     return;
   }
-#if SHLIGHT_SIMD_EVAL && defined(__AVX512VL__)
-  if (n >= SHLI_PT && n <= 6) {
+#if SHLIGHT_SIMD_EVAL
+#ifdef __AVX512VL__
+  if (n == 6) {
+    /* 36 scalar stores bound the Horner form; n <= 5 stays scalar, which measures faster */
     shli_sh_eval_avx512_poly(n, dx, dy, dz, out_y);
     return;
   }
+#endif
 #endif
   switch (n) {
   /* up to 6 bands, float Horner forms straight from d are within the targets (README): no

@@ -4768,6 +4768,15 @@ void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIG
   if (n < 1) {
     return;
   }
+#if SHLIGHT_SIMD_EVAL
+#ifdef __AVX512VL__
+  if (n == 6) {
+    /* 36 scalar stores bound the Horner form; n <= 5 stays scalar, which measures faster */
+    shli_sh_eval_avx512_poly(n, dx, dy, dz, out_y);
+    return;
+  }
+#endif
+#endif
   switch (n) {
   /* up to 6 bands, float Horner forms straight from d are within the targets (README): no
      normalisation, no division, no double */
