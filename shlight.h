@@ -13159,7 +13159,7 @@ static const float SHLI_SH_LANES_S[720] = {
 /* @generated end lanes */
 /* @generated begin plane */
 #if SHLIGHT_SIMD_EVAL
-static const float SHLI_SH_PLANES[144] = {
+static const float SHLI_SH_PLANES[120] = {
     0.282094792f,  -0.488602512f, 0.488602512f, -0.488602512f, 0.546274215f,  -1.09254843f,
     -0.315391565f, -1.09254843f,  0.546274215f, -0.59004359f,  1.44530572f,   0.457045799f,
     -1.119529f,    0.457045799f,  1.44530572f,  -0.59004359f,  0.625835735f,  -1.77013077f,
@@ -13167,68 +13167,67 @@ static const float SHLI_SH_PLANES[144] = {
     0.625835735f,  -0.656382057f, 2.07566231f,  0.489238299f,  -2.39676839f,  -0.452946651f,
     1.75425484f,   -0.452946651f, -2.39676839f, 0.489238299f,  2.07566231f,   -0.656382057f,
     0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
-    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
-    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
-    0.946174696f,  0.0f,          0.0f,         0.0f,          0.0f,          -2.285229f,
-    1.86588166f,   -2.285229f,    0.0f,         0.0f,          0.0f,          0.0f,
-    3.31161144f,   -4.6833258f,   -3.17356641f, -4.6833258f,   3.31161144f,   0.0f,
-    0.0f,          0.0f,          0.0f,         -4.40314469f,  7.19030518f,   6.34125312f,
-    -8.18652257f,  6.34125312f,   7.19030518f,  -4.40314469f,  0.0f,          0.0f,
-    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
-    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
+    0.0f,          0.0f,          0.0f,         0.0f,          0.946174696f,  0.0f,
+    0.0f,          0.0f,          0.0f,         -2.285229f,    1.86588166f,   -2.285229f,
+    0.0f,          0.0f,          0.0f,         0.0f,          3.31161144f,   -4.6833258f,
+    -3.17356641f,  -4.6833258f,   3.31161144f,  0.0f,          0.0f,          0.0f,
+    0.0f,          -4.40314469f,  7.19030518f,  6.34125312f,   -8.18652257f,  6.34125312f,
+    7.19030518f,   -4.40314469f,  0.0f,         0.0f,          0.0f,          0.0f,
     0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
     0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
     0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
-    0.0f,          0.0f,          3.70249414f,  0.0f,          0.0f,          0.0f,
-    0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          -9.51187968f,
-    7.36787031f,   -9.51187968f,  0.0f,         0.0f,          0.0f,          0.0f,
+    0.0f,          0.0f,          0.0f,         0.0f,          3.70249414f,   0.0f,
     0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f,
+    0.0f,          -9.51187968f,  7.36787031f,  -9.51187968f,  0.0f,          0.0f,
     0.0f,          0.0f,          0.0f,         0.0f,          0.0f,          0.0f};
-static const int SHLI_SH_PTAP[48] = {0,  17, 0,  1,  18, 17, 0, 1, 2, 19, 18, 17, 0,  1,  2, 3,
-                                     20, 19, 18, 17, 0,  1,  2, 3, 4, 21, 20, 19, 18, 17, 0, 1,
-                                     2,  3,  4,  5,  0,  0,  0, 0, 0, 0,  0,  0,  0,  0,  0, 0};
-static const int SHLI_SH_PODD[3] = {0x54A4, 0x54AA, 0x0005};
+static const int SHLI_SH_PTAP[40] = {0,  9, 0,  1,  10, 9, 0, 1, 2, 11, 10, 9,  0,  1,
+                                     2,  3, 12, 11, 10, 9, 0, 1, 2, 3,  4,  13, 12, 11,
+                                     10, 9, 0,  1,  2,  3, 4, 5, 0, 0,  0,  0};
+static const int SHLI_SH_PODD[5] = {0xA4, 0x54, 0xAA, 0x54, 0x05};
 #endif
 /* @generated end plane */
 #ifdef __AVX512VL__
-/* n <= 6 (C only, AVX-512): the Horner forms of shli_sh_poly_<n> evaluated across the outputs,
-   lane i = output i, so that the n^2 results leave in ceil(n^2 / 16) vector stores (a float
-   store per output bounds the scalar form at n^2 cycles on Zen 4): per vector two FMAs in z^2,
-   a multiply by z on the odd lanes and one by (x + iy)^|m| (a two-source permute of the powers,
-   lane m of c and s). Same coefficients and the same float input as shli_sh_poly_<n>. */
+/* n = 4..6 (C only, AVX-512VL): the Horner forms of shli_sh_poly_<n> evaluated across the
+   outputs, lane i = output i, so that the n^2 results leave in ceil(n^2 / 8) 256-bit stores (a
+   float store per output bounds the scalar form at n^2 cycles on Zen 4): per vector two FMAs in
+   z^2, a multiply by z on the odd lanes and one by (x + iy)^|m| (a two-source permute of the
+   powers, lane m of c and s). Same coefficients and the same float input as shli_sh_poly_<n>.
+   256-bit vectors: on Zen 4 they issue on both FMA pipes and store in one cycle (bench: n = 6 at
+   0.37 of the loop, 0.47-0.48 with 512-bit vectors, 0.47-0.55 scalar). */
 SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_poly(int n, float x, float y, float z, float *out_y) {
-  __m512 vz = _mm512_set1_ps(z), z2 = _mm512_set1_ps(z * z), one = _mm512_set1_ps(1.0f);
-  __m512 c = _mm512_mask_blend_ps((__mmask16)0xAAAA, one, _mm512_set1_ps(x));
-  __m512 s = _mm512_maskz_mov_ps((__mmask16)0xAAAA, _mm512_set1_ps(y));
-  int v, nv = (n * n + 15) >> 4;
+  __m256 vz = _mm256_set1_ps(z), z2 = _mm256_set1_ps(z * z), one = _mm256_set1_ps(1.0f);
+  __m256 c = _mm256_mask_blend_ps((__mmask8)0xAA, one, _mm256_set1_ps(x));
+  __m256 s = _mm256_maskz_mov_ps((__mmask8)0xAA, _mm256_set1_ps(y));
+  int v, nv = (n * n + 7) >> 3;
   if (n > 2) {
-    /* lanes 2, 3 (and 6, 7, ...) times (x + iy)^2, lanes 4..7 times (x + iy)^4 */
+    /* lanes 2, 3 (and 6, 7) times (x + iy)^2, lanes 4..7 times (x + iy)^4 */
     float cr = x * x - y * y, ci = 2.0f * x * y;
-    __m512 vc = _mm512_set1_ps(cr), vi = _mm512_set1_ps(ci);
-    __m512 t0 = _mm512_mul_ps(s, vi), t1 = _mm512_mul_ps(c, vi);
-    c = _mm512_mask_fmsub_ps(c, (__mmask16)0xCCCC, vc, t0);
-    s = _mm512_mask_fmadd_ps(s, (__mmask16)0xCCCC, vc, t1);
+    __m256 vc = _mm256_set1_ps(cr), vi = _mm256_set1_ps(ci);
+    __m256 t0 = _mm256_mul_ps(s, vi), t1 = _mm256_mul_ps(c, vi);
+    c = _mm256_mask_fmsub_ps(c, (__mmask8)0xCC, vc, t0);
+    s = _mm256_mask_fmadd_ps(s, (__mmask8)0xCC, vc, t1);
     if (n > 4) {
-      vc = _mm512_set1_ps(cr * cr - ci * ci);
-      vi = _mm512_set1_ps(2.0f * cr * ci);
-      t0 = _mm512_mul_ps(s, vi);
-      t1 = _mm512_mul_ps(c, vi);
-      c = _mm512_mask_fmsub_ps(c, (__mmask16)0xF0F0, vc, t0);
-      s = _mm512_mask_fmadd_ps(s, (__mmask16)0xF0F0, vc, t1);
+      vc = _mm256_set1_ps(cr * cr - ci * ci);
+      vi = _mm256_set1_ps(2.0f * cr * ci);
+      t0 = _mm256_mul_ps(s, vi);
+      t1 = _mm256_mul_ps(c, vi);
+      c = _mm256_mask_fmsub_ps(c, (__mmask8)0xF0, vc, t0);
+      s = _mm256_mask_fmadd_ps(s, (__mmask8)0xF0, vc, t1);
     }
   }
   for (v = 0; v < nv; ++v) {
-    __m512 h = _mm512_fmadd_ps(_mm512_loadu_ps(SHLI_SH_PLANES + 96 + 16 * v), z2,
-                               _mm512_loadu_ps(SHLI_SH_PLANES + 48 + 16 * v));
-    __m512 r;
-    h = _mm512_fmadd_ps(h, z2, _mm512_loadu_ps(SHLI_SH_PLANES + 16 * v));
-    h = _mm512_mask_mul_ps(h, (__mmask16)SHLI_SH_PODD[v], h, vz);
-    r = _mm512_mul_ps(
-        h, _mm512_permutex2var_ps(c, _mm512_loadu_si512((const void *)(SHLI_SH_PTAP + 16 * v)), s));
-    if (16 * v + 16 <= n * n) {
-      _mm512_storeu_ps(out_y + 16 * v, r);
+    __m256 h = _mm256_fmadd_ps(_mm256_loadu_ps(SHLI_SH_PLANES + 80 + 8 * v), z2,
+                               _mm256_loadu_ps(SHLI_SH_PLANES + 40 + 8 * v));
+    __m256 r;
+    h = _mm256_fmadd_ps(h, z2, _mm256_loadu_ps(SHLI_SH_PLANES + 8 * v));
+    h = _mm256_mask_mul_ps(h, (__mmask8)SHLI_SH_PODD[v], h, vz);
+    r = _mm256_mul_ps(
+        h, _mm256_permutex2var_ps(
+               c, _mm256_loadu_si256((const __m256i *)(const void *)(SHLI_SH_PTAP + 8 * v)), s));
+    if (8 * v + 8 <= n * n) {
+      _mm256_storeu_ps(out_y + 8 * v, r);
     } else {
-      _mm512_mask_storeu_ps(out_y + 16 * v, (__mmask16)((1u << (n * n - 16 * v)) - 1u), r);
+      _mm256_mask_storeu_ps(out_y + 8 * v, (__mmask8)((1u << (n * n - 8 * v)) - 1u), r);
     }
   }
 }
@@ -17482,8 +17481,9 @@ SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float 
   }
 #if SHLIGHT_SIMD_EVAL
 #ifdef __AVX512VL__
-  if (n == 6) {
-    /* 36 scalar stores bound the Horner form; n <= 5 stays scalar, which measures faster */
+  if (n >= 4 && n <= 6) {
+    /* n^2 scalar stores bound the Horner form (bench, ratio to the loop, scalar / lanes:
+       n = 3 0.37-0.49 / 0.55, 4 0.44 / 0.35, 5 0.49 / 0.45, 6 0.49 / 0.37) */
     shli_sh_eval_avx512_poly(n, dx, dy, dz, out_y);
     return;
   }

@@ -566,14 +566,15 @@ def gen_lane_table_scaled():
 
 def gen_poly_lanes():
     """SHLI_SH_PLANES: the n <= POLY_BANDS Horner forms across the outputs, lane i = output
-    i = l (l + 1) + m (48 lanes, three 512-bit vectors): [k * 48 + i] for k = 0, 1, 2 the
-    coefficients of X_l^|m| in z^2 (even part, or odd part divided by z), then at 3 * 48 + i
-    the trigonometric tap: 0 for m = 0 (lane 0 of the powers is 1), m for cos(m phi) lanes,
-    16 + |m| for sin(|m| phi) lanes (the second source of a two-source permute). Also
-    SHLI_SH_PODD[v]: lanes of vector v whose l - |m| is odd (times z)."""
-    co = [[0.0] * 48 for _ in range(3)]
-    tap = [0] * 48
-    odd = [0, 0, 0]
+    i = l (l + 1) + m (40 lanes, five 256-bit vectors): [k * 40 + i] for k = 0, 1, 2 the
+    coefficients of X_l^|m| in z^2 (even part, or odd part divided by z). SHLI_SH_PTAP[i]: the
+    trigonometric tap, 0 for m = 0 (lane 0 of the powers is 1), m for cos(m phi) lanes,
+    8 + |m| for sin(|m| phi) lanes (the second source of a two-source permute). SHLI_SH_PODD[v]:
+    lanes of vector v whose l - |m| is odd (times z)."""
+    nl = 40
+    co = [[0.0] * nl for _ in range(3)]
+    tap = [0] * nl
+    odd = [0] * (nl // 8)
     for l in range(POLY_BANDS):
         for m in range(-l, l + 1):
             i = idx(l, m)
@@ -583,9 +584,9 @@ def gen_poly_lanes():
             ev = [c[k] for k in range(1 if o else 0, len(c), 2)]
             for k, v in enumerate(ev):
                 co[k][i] = v
-            tap[i] = am if m >= 0 else 16 + am
+            tap[i] = am if m >= 0 else 8 + am
             if o:
-                odd[i // 16] |= 1 << (i % 16)
+                odd[i // 8] |= 1 << (i % 8)
     return co[0] + co[1] + co[2], tap, odd
 
 
@@ -642,7 +643,7 @@ def c_regions():
     R['plane'] = (['#if SHLIGHT_SIMD_EVAL'] +
                   fmt_table('float', 'SHLI_SH_PLANES', '%d' % len(pco), pco, lit_f, False) +
                   fmt_table('int', 'SHLI_SH_PTAP', '%d' % len(ptap), ptap, str, False) +
-                  fmt_table('int', 'SHLI_SH_PODD', '3', podd, lambda v: '0x%04X' % v, False) +
+                  fmt_table('int', 'SHLI_SH_PODD', '5', podd, lambda v: '0x%02X' % v, False) +
                   ['#endif'])
     R['lanes'] = (['#if SHLIGHT_SIMD_EVAL'] + fmt_table('float', 'SHLI_SH_LANES', '%d' % len(lt), lt, lit_f, False) +
                   fmt_table('float', 'SHLI_SH_LANES_S', '%d' % len(ls), ls, lit_f, False) + ['#endif'])
