@@ -28217,8 +28217,11 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
               the divergence identity div(F(u.n) a_t) = -(a.u) (t F' + 2 F) for a tangential g_t).
    Each edge integrand peaks (width ~ alpha) where l passes the mirror direction; it is taken with
    the graded rule t = t0 + wd sinh(s), t0 the peak of |Q_xy|^2 + alpha^2 Q_z^2 (one Newton step
-   from the mirror direction's projection on the edge's great circle), wd = its half width,
-   5-node Gauss-Legendre on each side of t0. */
+   from the mirror direction's projection on the edge's great circle, taken only when it is
+   shorter than pi: the denominator has period 2 pi, so a longer step means its quadratic model
+   fails there, e.g. f2 ~ 1e-5 d0 on small lights far from the lobe gave steps of ~1e4 rad,
+   where t0 + wd sinh(s) keeps only a few bits of the arc in float: the GLSL twin was then off
+   by up to 8 %), wd = its half width, 5-node Gauss-Legendre on each side of t0. */
 
 /* Beckmann's Smith Lambda at the direction cosine c (0 < c <= 1), roughness alpha:
    (erf(a) - 1) / 2 + exp(-a^2) / (2 a sqrt(pi)), a = c / (alpha sqrt(1 - c^2)), with erfc by
@@ -28802,7 +28805,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
         f1 = qx * dx + qy * dy + qz * dz - c * d * q;
         f2 = dx * dx + dy * dy + dz * dz - c * q * q - d0 +
              (vx * qx + vy * qy + vz * qz - c * (vx * nx + vy * ny + vz * nz) * d);
-        if (k == 0 && f2 > 0.0) {
+        if (k == 0 && SHLIGHT_ABSR(f1) < 3.1415926535897932 * f2) { /* |step| < pi, above */
           t0 = t0 - f1 / f2;
         }
       }

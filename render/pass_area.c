@@ -54,13 +54,10 @@ static const int ar_methods[3] = {SHLIGHT_EDGE_EXACT, SHLIGHT_EDGE_QUADRATURE,
 static const double ar_tol[3] = {1e-5, 1e-4, 3e-4};
 /* the same on the pixels of GGX materials (shl_polygon_ggx, the same for every method), checked
    apart (rd_emit_sel) so the methods keep theirs on the rest: about 3x the largest measured on
-   glossy (64x48 7.7e-5, 160x120 3.1e-5, 256x192 1.5e-4, 256x256 1.9e-4, 512x384 6.4e-4; the
-   max grows with the pixel count). Not float rounding: the GLSL kernel runs shli_real as float,
-   and on some octagon edges of the disc and sphere lights far from the lobe the Newton step of
-   the edge rule's peak t0 (shli_mf_taylor) lands ~1e4 rad away, where the sinh-graded nodes
-   t0 + wd sinh(s) keep only a few bits of the arc in float: that light's value is then off by
-   up to ~8 % (C, in double, is stable; see the report of branch ggxr). */
-#define AR_TOL_GGX 2e-3
+   glossy (64x48 7.4e-7, 160x120 and 256x192 <= 1.5e-6, 256x256 1.0e-6, 512x384 2.0e-6). Before
+   the Newton-step guard in shli_mf_taylor (README "GGX polygon lights") the float edge rule
+   lost the arc on some octagon edges far from the lobe: 7.7e-5 at 64x48, 6.4e-4 at 512x384. */
+#define AR_TOL_GGX 6e-6
 
 /* Light buffer: [0] type, [1] nv, [2] r, [4..6] radiance, [8..10] centre, [12..14] a1,
    [16..18] a2 (disc semi-axes), [20..22] and [23] the bounding sphere of the kernel's polygons

@@ -1776,7 +1776,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
         f1 = qx * dx + qy * dy + qz * dz - c * d * q;
         f2 = dx * dx + dy * dy + dz * dz - c * q * q - d0 +
              (vx * qx + vy * qy + vz * qz - c * (vx * nx + vy * ny + vz * nz) * d);
-        if (k == 0 && f2 > 0.0) {
+        if (k == 0 && SHLIGHT_ABSR(f1) < 3.1415926535897932 * f2) { /* |step| < pi, above */
           t0 = t0 - f1 / f2;
         }
       }
