@@ -28080,6 +28080,51 @@ SHLIGHT_INLINE float shl_sphere_phong(const float c[3], float r, const float nrm
       rho * (sg + uy * uy * a), -rho * uy, nx, ny, nz, rx, ry, rz, SHLIGHT_REAL(exponent), method));
 }
 
+/* The shared start of the half-vector NDF integrals (shl_polygon_ggx_ndf,
+   shl_polygon_beckmann_ndf): checks nv in [3, SHLIGHT_POLYGON_MAX], the axis (non-zero,
+   finite) and alpha (not NaN); loads the vertices into io_px, io_py, io_pz (a NaN or infinite
+   one: 0) and clips them to u.axis >= 0 and normalises them (shli_poly_clip_unit). Writes
+   out_par: [0..2] the unit axis, [3] the polygon's orientation (+1 or -1: the sign of the
+   edge sum), [4] alpha clamped to [1e-4, 1]. Returns the clipped vertex count, or 0 (the
+   caller returns 0; out_par is then not all written). */
+SHLIGHT_INLINE int shli_poly_load_clip(const float (*v)[3], int nv, const float axis[3],
+                                       float alpha, shli_real *io_px, shli_real *io_py,
+                                       shli_real *io_pz, shli_real *out_par) {
+  shli_real rx = SHLIGHT_REAL(axis[0]);
+  shli_real ry = SHLIGHT_REAL(axis[1]);
+  shli_real rz = SHLIGHT_REAL(axis[2]);
+  shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
+  shli_real al = SHLIGHT_REAL(alpha);
+  int i;
+  int nc;
+  out_par[3] = 1.0;
+  if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) || !(al == al)) {
+    return 0;
+  }
+  rx = rx / l;
+  ry = ry / l;
+  rz = rz / l;
+  out_par[0] = rx;
+  out_par[1] = ry;
+  out_par[2] = rz;
+  out_par[4] = SHLIGHT_MINR(SHLIGHT_MAXR(al, 1.0e-4), 1.0);
+  for (i = 0; i < nv; ++i) {
+    io_px[i] = SHLIGHT_REAL(v[i][0]);
+    io_py[i] = SHLIGHT_REAL(v[i][1]);
+    io_pz[i] = SHLIGHT_REAL(v[i][2]);
+    if (!(SHLIGHT_ABSR(io_px[i]) + SHLIGHT_ABSR(io_py[i]) + SHLIGHT_ABSR(io_pz[i]) <
+          SHLIGHT_REAL_MAX)) {
+      return 0;
+    }
+  }
+  nc = shli_poly_clip_unit(io_px, io_py, io_pz, nv, rx, ry, rz);
+  if (nc < 0) {
+    nc = -nc;
+    out_par[3] = -1.0;
+  }
+  return nc;
+}
+
 /* shl_polygon_ggx_ndf: the integral over the polygon v[0..nv-1] (as shl_polygon_moment: any
    winding, two-sided, clipped to u.axis > 0) of D(u) (u.axis), D the isotropic GGX normal
    distribution about `axis` with roughness alpha (D(t) = alpha^2 / (pi (t^2 (alpha^2 - 1) +
@@ -28096,11 +28141,11 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
   shli_real px[SHLIGHT_CLIP_MAX];
   shli_real py[SHLIGHT_CLIP_MAX];
   shli_real pz[SHLIGHT_CLIP_MAX];
-  shli_real rx = SHLIGHT_REAL(axis[0]);
-  shli_real ry = SHLIGHT_REAL(axis[1]);
-  shli_real rz = SHLIGHT_REAL(axis[2]);
-  shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
-  shli_real a2 = SHLIGHT_REAL(alpha);
+  shli_real par[5];
+  shli_real rx;
+  shli_real ry;
+  shli_real rz;
+  shli_real a2;
   shli_real sum = 0.0;
   shli_real nx;
   shli_real ny;
@@ -28112,32 +28157,14 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
   shli_real t;
   int i;
   int j;
-  int nc;
-  int sg = 1;
-  if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) || !(a2 == a2)) {
-    return 0.0f;
-  }
-  a2 = SHLIGHT_MINR(SHLIGHT_MAXR(a2, 1.0e-4), 1.0);
-  a2 = a2 * a2;
-  rx = rx / l;
-  ry = ry / l;
-  rz = rz / l;
-  for (i = 0; i < nv; ++i) {
-    px[i] = SHLIGHT_REAL(v[i][0]);
-    py[i] = SHLIGHT_REAL(v[i][1]);
-    pz[i] = SHLIGHT_REAL(v[i][2]);
-    if (!(SHLIGHT_ABSR(px[i]) + SHLIGHT_ABSR(py[i]) + SHLIGHT_ABSR(pz[i]) < SHLIGHT_REAL_MAX)) {
-      return 0.0f;
-    }
-  }
-  nc = shli_poly_clip_unit(px, py, pz, nv, rx, ry, rz);
+  int nc = shli_poly_load_clip(v, nv, axis, alpha, px, py, pz, par);
   if (nc == 0) {
     return 0.0f;
   }
-  if (nc < 0) {
-    nc = -nc;
-    sg = -1;
-  }
+  rx = par[0];
+  ry = par[1];
+  rz = par[2];
+  a2 = par[4] * par[4];
   for (i = 0; i < nc; ++i) {
     j = i + 1;
     if (j == nc) {
@@ -28161,10 +28188,7 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
       sum = sum + t;
     }
   }
-  if (sg < 0) {
-    sum = -sum;
-  }
-  return SHLIGHT_FLOAT(SHLIGHT_MAXR(sum, 0.0) * 0.15915494309189534);
+  return SHLIGHT_FLOAT(SHLIGHT_MAXR(par[3] * sum, 0.0) * 0.15915494309189534);
 }
 
 /* GGX polygon lights (shl_polygon_ggx). The light's integral
@@ -28193,8 +28217,11 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
               the divergence identity div(F(u.n) a_t) = -(a.u) (t F' + 2 F) for a tangential g_t).
    Each edge integrand peaks (width ~ alpha) where l passes the mirror direction; it is taken with
    the graded rule t = t0 + wd sinh(s), t0 the peak of |Q_xy|^2 + alpha^2 Q_z^2 (one Newton step
-   from the mirror direction's projection on the edge's great circle), wd = its half width,
-   5-node Gauss-Legendre on each side of t0. */
+   from the mirror direction's projection on the edge's great circle, taken only when it is
+   shorter than pi: the denominator has period 2 pi, so a longer step means its quadratic model
+   fails there, e.g. f2 ~ 1e-5 d0 on small lights far from the lobe gave steps of ~1e4 rad,
+   where t0 + wd sinh(s) keeps only a few bits of the arc in float: the GLSL twin was then off
+   by up to 8 %), wd = its half width, 5-node Gauss-Legendre on each side of t0. */
 
 /* Beckmann's Smith Lambda at the direction cosine c (0 < c <= 1), roughness alpha:
    (erf(a) - 1) / 2 + exp(-a^2) / (2 a sqrt(pi)), a = c / (alpha sqrt(1 - c^2)), with erfc by
@@ -28778,7 +28805,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
         f1 = qx * dx + qy * dy + qz * dz - c * d * q;
         f2 = dx * dx + dy * dy + dz * dz - c * q * q - d0 +
              (vx * qx + vy * qy + vz * qz - c * (vx * nx + vy * ny + vz * nz) * d);
-        if (k == 0 && f2 > 0.0) {
+        if (k == 0 && SHLIGHT_ABSR(f1) < 3.1415926535897932 * f2) { /* |step| < pi, above */
           t0 = t0 - f1 / f2;
         }
       }
@@ -29098,50 +29125,23 @@ SHLIGHT_INLINE float shl_polygon_beckmann_ndf(const float (*v)[3], int nv, const
   shli_real px[SHLIGHT_CLIP_MAX];
   shli_real py[SHLIGHT_CLIP_MAX];
   shli_real pz[SHLIGHT_CLIP_MAX];
-  shli_real rx = SHLIGHT_REAL(axis[0]);
-  shli_real ry = SHLIGHT_REAL(axis[1]);
-  shli_real rz = SHLIGHT_REAL(axis[2]);
-  shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
-  shli_real al = SHLIGHT_REAL(alpha);
+  shli_real par[5];
   shli_real sum = 0.0;
   int i;
   int j;
-  int nc;
-  int sg = 1;
-  if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) || !(al == al)) {
-    return 0.0f;
-  }
-  al = SHLIGHT_MINR(SHLIGHT_MAXR(al, 1.0e-4), 1.0);
-  rx = rx / l;
-  ry = ry / l;
-  rz = rz / l;
-  for (i = 0; i < nv; ++i) {
-    px[i] = SHLIGHT_REAL(v[i][0]);
-    py[i] = SHLIGHT_REAL(v[i][1]);
-    pz[i] = SHLIGHT_REAL(v[i][2]);
-    if (!(SHLIGHT_ABSR(px[i]) + SHLIGHT_ABSR(py[i]) + SHLIGHT_ABSR(pz[i]) < SHLIGHT_REAL_MAX)) {
-      return 0.0f;
-    }
-  }
-  nc = shli_poly_clip_unit(px, py, pz, nv, rx, ry, rz);
+  int nc = shli_poly_load_clip(v, nv, axis, alpha, px, py, pz, par);
   if (nc == 0) {
     return 0.0f;
-  }
-  if (nc < 0) {
-    nc = -nc;
-    sg = -1;
   }
   for (i = 0; i < nc; ++i) {
     j = i + 1;
     if (j == nc) {
       j = 0;
     }
-    sum = sum + shli_beckmann_edge(px[i], py[i], pz[i], px[j], py[j], pz[j], rx, ry, rz, al, 0.0);
+    sum = sum + shli_beckmann_edge(px[i], py[i], pz[i], px[j], py[j], pz[j], par[0], par[1], par[2],
+                                   par[4], 0.0);
   }
-  if (sg < 0) {
-    sum = -sum;
-  }
-  return SHLIGHT_FLOAT(SHLIGHT_MAXR(sum, 0.0) * 0.15915494309189534);
+  return SHLIGHT_FLOAT(SHLIGHT_MAXR(par[3] * sum, 0.0) * 0.15915494309189534);
 }
 
 /* The split points of the light edge a -> b (unit vectors, arc angle phi in (0, pi)) for k

@@ -8,17 +8,17 @@
  *   Phong     RD_BRDF_PHONG: ks * (e+1)/(2 pi) * the integral of max(0, u.r)^e over the light
  *             clipped to the horizon, r the mirror direction of the view: shl_polygon_phong
  *             (polygons, triangles), shl_ellipse_phong (discs), shl_sphere_phong (spheres);
- *   GGX       RD_BRDF_GGX: shlight has no GGX area-light kernel, only shl_polygon_ggx_ndf, the
- *             integral of D(h)(n.h) over a polygon of half vectors. Used here as README's
- *             "NDF road": the light's polygon (discs and spheres: the two octagons that
- *             shl_ellipse_phong / shl_sphere_phong build) is mapped vertex by vertex to half
- *             vectors h = (l + v) / |l + v| (edge midpoints added for polygons of <= 4
- *             vertices, light directions below the horizon first moved onto it), and
- *               ks * G2(l*, v) (v.h*) / ((n.h*)(n.v)) * shl_polygon_ggx_ndf(h polygon, n, alpha),
- *             the bracket (the Jacobian 4 (v.h) and the rest of the microfacet BRDF) held at the
- *             light centre's direction l*. An approximation of ours (no Fresnel: ks is the
- *             specular albedo); it does not depend on the edge method. The ground truth is the
- *             real microfacet BRDF, so the table shows its error.
+ *   GGX       RD_BRDF_GGX: ks * shl_polygon_ggx(light polygon, n, v, alpha), the integral of
+ *             D G2 / (4 (n.l)(n.v)) (n.l) over the light clipped to the horizon (GGX D,
+ *             height-correlated Smith G2, Fresnel 1: ks is the specular albedo). Polygons and
+ *             triangles directly; discs and spheres as the mean over the two octagons that
+ *             shl_ellipse_phong / shl_sphere_phong build (the sphere: the disc of its cone of
+ *             directions), so their GGX value carries that model's error (glossy, 128x128,
+ *             --gt 2, each light alone on the GGX floor: polygon 2.5e-6, disc 1.7e-4, sphere
+ *             1.8e-4 relative RMSE). It does not depend on the edge method. (Before
+ *             shl_polygon_ggx the pass used README's "NDF road", shl_polygon_ggx_ndf over the
+ *             half-vector image with masking and Jacobian held at the light centre: 1.5e-2 on
+ *             the glossy floor, now 1.7e-4.)
  * Methods (each on "cpu" and "gl"): "exact" (SHLIGHT_EDGE_EXACT: the O(e) recurrence;
  * non-integer exponents fall back to the quadrature inside the kernel), "quadrature"
  * (SHLIGHT_EDGE_QUADRATURE, the Stokes form, constant cost), "lorentz_pearson" (the paper's fit,
@@ -29,7 +29,8 @@
  * vertex directions and at the horizon), spheres over their cap (split where the horizon cuts
  * it). Tolerance 1e-5 (gt 1) or 1e-7 (gt 2) per light of the unit-radiance integrals; the same
  * at a 10x looser tolerance is emitted as method "gt_coarse" (path cpu): its error against "gt"
- * bounds the reference's own. The diffuse part of polygons and spheres has closed forms
+ * bounds the reference's own. It calls no shlight kernel (the BRDFs are evaluated point by point
+ * in double). The diffuse part of polygons and spheres has closed forms
  * (Lambert's polygon formula after the horizon clip; Snyder's clipped cap), used instead. */
 #include "../shlight.h"
 #include "rd.h"
@@ -51,6 +52,12 @@ static const int ar_methods[3] = {SHLIGHT_EDGE_EXACT, SHLIGHT_EDGE_QUADRATURE,
    quadrature 3.0e-5 (the Stokes nodes in float), Lorentz-Pearson 1.0e-4 (the fit's branches:
    float and double switch at different pixels, see the report) */
 static const double ar_tol[3] = {1e-5, 1e-4, 3e-4};
+/* the same on the pixels of GGX materials (shl_polygon_ggx, the same for every method), checked
+   apart (rd_emit_sel) so the methods keep theirs on the rest: about 3x the largest measured on
+   glossy (64x48 7.4e-7, 160x120 and 256x192 <= 1.5e-6, 256x256 1.0e-6, 512x384 2.0e-6). Before
+   the Newton-step guard in shli_mf_taylor (README "GGX polygon lights") the float edge rule
+   lost the arc on some octagon edges far from the lobe: 7.7e-5 at 64x48, 6.4e-4 at 512x384. */
+#define AR_TOL_GGX 6e-6
 
 /* Light buffer: [0] type, [1] nv, [2] r, [4..6] radiance, [8..10] centre, [12..14] a1,
    [16..18] a2 (disc semi-axes), [20..22] and [23] the bounding sphere of the kernel's polygons
@@ -137,68 +144,8 @@ static int ar_collect(const rd_scene *s, float **out) {
 }
 
 /* ---- shading (C twin of the GLSL below) ------------------------------------------------- */
-/* GGX (see the top of the file): the half vector of the light point p (relative to x), whose
-   direction is first moved onto the horizon when below it (the GGX integrand vanishes there) */
-static void ar_half(const float p[3], const float n[3], const float v[3], float h[3]) {
-  float l = sqrtf(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), u[3], d;
-  u[0] = p[0] / l;
-  u[1] = p[1] / l;
-  u[2] = p[2] / l;
-  d = n[0] * u[0] + n[1] * u[1] + n[2] * u[2];
-  if (d < 0.0f) {
-    u[0] = u[0] - d * n[0];
-    u[1] = u[1] - d * n[1];
-    u[2] = u[2] - d * n[2];
-  }
-  h[0] = u[0] + v[0];
-  h[1] = u[1] + v[1];
-  h[2] = u[2] + v[2];
-  l = sqrtf(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
-  h[0] = h[0] / l;
-  h[1] = h[1] / l;
-  h[2] = h[2] / l;
-}
-
-/* G2(l*, v) (v.h*) / ((n.h*)(n.v)) at the light's centre direction c (relative to x) */
-static float ar_ggx_bracket(const float c[3], const float n[3], const float v[3], float al) {
-  float l = sqrtf(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), u[3], h[3], nl, nh, vh, nv, a2, t1, t2;
-  u[0] = c[0] / l;
-  u[1] = c[1] / l;
-  u[2] = c[2] / l;
-  ar_half(c, n, v, h);
-  nl = n[0] * u[0] + n[1] * u[1] + n[2] * u[2];
-  nh = n[0] * h[0] + n[1] * h[1] + n[2] * h[2];
-  vh = v[0] * h[0] + v[1] * h[1] + v[2] * h[2];
-  nv = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
-  if (!(nl > 0.0f) || !(nh > 0.0f) || !(nv > 0.0f)) return 0.0f;
-  a2 = al * al;
-  t1 = 0.5f * (sqrtf(1.0f + a2 * (1.0f - nl * nl) / (nl * nl)) - 1.0f);
-  t2 = 0.5f * (sqrtf(1.0f + a2 * (1.0f - nv * nv) / (nv * nv)) - 1.0f);
-  return vh / ((1.0f + t1 + t2) * nh * nv);
-}
-
-/* the NDF integral over the half-vector image of the polygon p[0..nv-1] (edge midpoints added
-   when nv <= 4: the image of an edge is not a great arc) */
-static float ar_ggx_ndf(const float (*p)[3], int nv, const float n[3], const float v[3], float al) {
-  float hv[RD_MAX_POLY][3], q[3];
-  int i, m = 0, sub = nv <= 4;
-  for (i = 0; i < nv; i++) {
-    int j = i + 1 < nv ? i + 1 : 0;
-    ar_half(p[i], n, v, hv[m]);
-    m++;
-    if (sub) {
-      q[0] = p[i][0] + p[j][0];
-      q[1] = p[i][1] + p[j][1];
-      q[2] = p[i][2] + p[j][2];
-      ar_half(q, n, v, hv[m]);
-      m++;
-    }
-  }
-  return shl_polygon_ggx_ndf((const float(*)[3])hv, m, n, al);
-}
-
 /* octagon h of shl_ellipse_phong's construction (shlight.h shli_ellipse_phong_r, in float as
-   the GLSL twin): the GGX road needs the polygons themselves */
+   the GLSL twin): GGX discs and spheres go through shl_polygon_ggx on these polygons */
 static void ar_octagon(const float c[3], const float ua[3], const float va[3], int h,
                        float (*v)[3]) {
   int j, k;
@@ -305,28 +252,18 @@ static void ar_shade(const float *lb, int nl, const float x[3], const float nrm[
       else
         val[ps] = shl_sphere_phong(c, l[2], nrm, vw, e, method);
     }
-    if (brdf == RD_BRDF_GGX && !below) {
+    if (brdf == RD_BRDF_GGX && !below) { /* method independent */
       float t = 0.0f, cc[3];
       int np = type == AR_POLY ? 1 : 2;
       cc[0] = c[0];
       cc[1] = c[1];
       cc[2] = c[2];
-      if (type == AR_POLY) { /* the centre: the vertices' mean */
-        cc[0] = cc[1] = cc[2] = 0.0f;
-        for (k = 0; k < nv; k++) {
-          cc[0] = cc[0] + v[k][0];
-          cc[1] = cc[1] + v[k][1];
-          cc[2] = cc[2] + v[k][2];
-        }
-      } else if (type == AR_SPHERE && !ar_sphere_disc(cc, l[2], nrm, view, a1, a2)) {
-        np = 0;
-      }
+      if (type == AR_SPHERE && !ar_sphere_disc(cc, l[2], nrm, view, a1, a2)) np = 0;
       for (h = 0; h < np; h++) {
         if (type != AR_POLY) ar_octagon(cc, a1, a2, h, v);
-        t = t + ar_ggx_ndf((const float(*)[3])v, type == AR_POLY ? nv : 8, nrm, view, mat[8]);
+        t = t + shl_polygon_ggx((const float(*)[3])v, type == AR_POLY ? nv : 8, nrm, view, mat[8]);
       }
-      if (type != AR_POLY) t = 0.5f * t;
-      val[1] = np > 0 ? t * ar_ggx_bracket(cc, nrm, view, mat[8]) : 0.0f;
+      val[1] = type == AR_POLY ? t : 0.5f * t;
     }
     for (k = 0; k < 3; k++)
       out[k] = out[k] + l[4 + k] * (mat[k] * val[0] + mat[3 + k] * val[1]);
@@ -334,17 +271,17 @@ static void ar_shade(const float *lb, int nl, const float x[3], const float nrm[
 }
 
 /* The GLSL pass (C twin: ar_shade). All lights go through ONE call site of shl_polygon_phong
-   (and one of shl_polygon_ggx_ndf): llvmpipe spends ~2-4 s of LLVM time per inlined copy of the
+   (and one of shl_polygon_ggx): llvmpipe spends ~2-4 s of LLVM time per inlined copy of the
    edge kernels (shl_polygon_phong, shl_ellipse_phong and shl_sphere_phong each inline the clip
-   and moment code once or twice: ~20 s per shader when all three are called), so discs and
-   spheres are drawn here as the two octagons that shl_ellipse_phong / shl_sphere_phong build
-   (the same float expressions as shl_edge.glsl: the same values as calling them), the loops
-   have run-time bounds (no unrolled copies), and the methods RD_METHODS[0 .. RD_NM-1] run in
-   one shader, one output each (Lorentz-Pearson's diffuse value at exponent 1 is the exact
-   method's: the kernel takes the exact path for orders <= 2, so it is copied, not recomputed).
-   Lights whose bounding sphere lies below the horizon (or, for Phong, below the mirror
-   direction's plane) are skipped: the kernels return exactly 0 for them. RD_GGX compiles the
-   GGX road only for scenes with GGX materials. */
+   and moment code once or twice: ~20 s per shader when all three are called; shl_polygon_ggx
+   ~4.5 s), so discs and spheres are drawn here as the two octagons that shl_ellipse_phong /
+   shl_sphere_phong build (the same float expressions as shl_edge.glsl: the same values as
+   calling them), the loops have run-time bounds (no unrolled copies), and the methods
+   RD_METHODS[0 .. RD_NM-1] run in one shader, one output each (Lorentz-Pearson's diffuse value
+   at exponent 1 is the exact method's: the kernel takes the exact path for orders <= 2, so it
+   is copied, not recomputed). Lights whose bounding sphere lies below the horizon (or, for
+   Phong, below the mirror direction's plane) are skipped: the kernels return exactly 0 for
+   them. RD_GGX compiles the GGX block only for scenes with GGX materials. */
 static const char *const ar_glsl[3] = {
     "void rd_octagon(vec3 c, vec3 ua, vec3 va, int h, inout vec3 v[SHLIGHT_POLYGON_MAX]) {\n"
     "  for (int j = 0; j < 8; ++j) {\n"
@@ -396,31 +333,6 @@ static const char *const ar_glsl[3] = {
     "  va = vec3(rho * b, rho * (sg + uy * uy * a), -rho * uy);\n"
     "  return true;\n"
     "}\n"
-    "#if RD_GGX\n"
-    "vec3 rd_half(vec3 p, vec3 n, vec3 v) {\n"
-    "  float l = sqrt(p.x * p.x + p.y * p.y + p.z * p.z);\n"
-    "  vec3 u = vec3(p.x / l, p.y / l, p.z / l);\n"
-    "  float d = n.x * u.x + n.y * u.y + n.z * u.z;\n"
-    "  if (d < 0.0) u = vec3(u.x - d * n.x, u.y - d * n.y, u.z - d * n.z);\n"
-    "  vec3 h = vec3(u.x + v.x, u.y + v.y, u.z + v.z);\n"
-    "  l = sqrt(h.x * h.x + h.y * h.y + h.z * h.z);\n"
-    "  return vec3(h.x / l, h.y / l, h.z / l);\n"
-    "}\n"
-    "float rd_ggx_bracket(vec3 c, vec3 n, vec3 v, float al) {\n"
-    "  float l = sqrt(c.x * c.x + c.y * c.y + c.z * c.z);\n"
-    "  vec3 u = vec3(c.x / l, c.y / l, c.z / l);\n"
-    "  vec3 h = rd_half(c, n, v);\n"
-    "  float nl = n.x * u.x + n.y * u.y + n.z * u.z;\n"
-    "  float nh = n.x * h.x + n.y * h.y + n.z * h.z;\n"
-    "  float vh = v.x * h.x + v.y * h.y + v.z * h.z;\n"
-    "  float nv = n.x * v.x + n.y * v.y + n.z * v.z;\n"
-    "  if (!(nl > 0.0) || !(nh > 0.0) || !(nv > 0.0)) return 0.0;\n"
-    "  float a2 = al * al;\n"
-    "  float t1 = 0.5 * (sqrt(1.0 + a2 * (1.0 - nl * nl) / (nl * nl)) - 1.0);\n"
-    "  float t2 = 0.5 * (sqrt(1.0 + a2 * (1.0 - nv * nv) / (nv * nv)) - 1.0);\n"
-    "  return vh / ((1.0 + t1 + t2) * nh * nv);\n"
-    "}\n"
-    "#endif\n"
     "/* an exact early-out: the light's bounding sphere (centre b relative to x, radius br) is\n"
     "   below the plane through x with unit normal a, so the clip leaves nothing (the kernel's 0) "
     "*/\n"
@@ -450,7 +362,6 @@ static const char *const ar_glsl[3] = {
     "- view.z);\n"
     "    int nm = RD_NM + min(rd_size.x, 0); /* run-time bounds: one copy of the kernels */\n"
     "    vec3 v[SHLIGHT_POLYGON_MAX];\n"
-    "    vec3 hv[SHLIGHT_POLYGON_MAX];\n"
     "    for (int j = 0; j < RD_NL; ++j) {\n"
     "      int o = RD_LF * j;\n"
     "      int type = int(rd_buf1[o]);\n"
@@ -467,39 +378,19 @@ static const char *const ar_glsl[3] = {
     "      }\n"
     "      bool below = br >= 0.0 && rd_below(bc, br, nrm);\n"
     "      float sggx = 0.0;\n"
-    "#if RD_GGX /* compiled only for scenes with GGX materials (~2 s of llvmpipe time) */\n"
-    "      if (brdf == 2 && !below) { /* GGX: NDF over the half-vector image (method independent) "
-    "*/\n"
+    "#if RD_GGX /* only for scenes with GGX materials (~4.5 s of llvmpipe compile time) */\n"
+    "      if (brdf == 2 && !below) { /* GGX: shl_polygon_ggx (method independent) */\n"
     "        vec3 cc = c;\n"
     "        vec3 ua = a1;\n"
     "        vec3 va = a2;\n"
     "        int npoly = type == 0 ? 1 : 2;\n"
     "        if (type == 2 && !rd_sphere_disc(c, rr, nrm, view, cc, ua, va)) npoly = 0;\n"
     "        float t = 0.0;\n"
-    "        for (int h = 0; h < npoly; ++h) {\n"
+    "        for (int h = 0; h < npoly; ++h) { /* the one call site */\n"
     "          rd_polygon(o, x, type, cc, ua, va, h, v);\n"
-    "          int m = 8;\n"
-    "          if (nv <= 4) { /* constant indices (unrolled): llvmpipe is slow on indexed stores "
-    "*/\n"
-    "            for (int i = 0; i < 4; ++i) {\n"
-    "              vec3 b = i + 1 < nv ? v[i + 1] : v[0];\n"
-    "              hv[2 * i] = rd_half(v[i], nrm, view);\n"
-    "              hv[2 * i + 1] = rd_half(vec3(v[i].x + b.x, v[i].y + b.y, v[i].z + b.z), nrm, "
-    "view);\n"
-    "            }\n"
-    "            m = 2 * nv;\n"
-    "          } else {\n"
-    "            for (int i = 0; i < 8; ++i) hv[i] = rd_half(v[i], nrm, view);\n"
-    "          }\n"
-    "          t = t + shl_polygon_ggx_ndf(hv, m, nrm, al);\n"
+    "          t = t + shl_polygon_ggx(v, nv, nrm, view, al);\n"
     "        }\n"
-    "        if (type != 0) t = 0.5 * t;\n"
-    "        if (type == 0) {\n"
-    "          cc = vec3(0.0);\n"
-    "          for (int k = 0; k < nv; ++k) cc = vec3(cc.x + v[k].x, cc.y + v[k].y, cc.z + "
-    "v[k].z);\n"
-    "        }\n"
-    "        sggx = npoly > 0 ? t * rd_ggx_bracket(cc, nrm, view, al) : 0.0;\n"
+    "        sggx = type == 0 ? t : 0.5 * t;\n"
     "      }\n"
     "#endif\n"
     "      float dex = 0.0; /* the diffuse value of the exact method */\n"
@@ -1146,7 +1037,7 @@ int rd_pass_area(rd_run *run) {
   const rd_scene *s = run->scene;
   const rd_gbuf *gb = run->gb;
   float *lb = NULL, *mats = NULL;
-  int nl, k, m, rc = 0, nout = 0;
+  int nl, k, m, rc = 0, nout = 0, ggx = 0, *sel = NULL;
   size_t mem;
   ar_out outs[2 * 3 + 2];
   nl = ar_collect(s, &lb);
@@ -1228,7 +1119,7 @@ int rd_pass_area(rd_run *run) {
     for (k = 0; k < s->nmats && k < 6; k++)
       printf("%s%s%s", k ? ", " : "", s->mats[k].name,
              s->mats[k].brdf == RD_BRDF_PHONG ? " [phong]"
-             : s->mats[k].brdf == RD_BRDF_GGX ? " [ggx, NDF road]"
+             : s->mats[k].brdf == RD_BRDF_GGX ? " [ggx]"
                                               : "");
     printf("):\n");
     for (m = 0; m < nout; m++) {
@@ -1240,9 +1131,24 @@ int rd_pass_area(rd_run *run) {
       printf("\n");
     }
   }
+  for (k = 0; k < s->nmats; k++)
+    ggx = ggx || s->mats[k].brdf == RD_BRDF_GGX;
+  if (ggx) {
+    sel = (int *)calloc((size_t)s->nmats, sizeof(int));
+    if (!sel) {
+      rc = -1;
+      goto done;
+    }
+    for (k = 0; k < s->nmats; k++)
+      sel[k] = s->mats[k].brdf == RD_BRDF_GGX;
+  }
   for (k = 0; k < nout; k++) {
-    rd_emit(run, "area", outs[k].method, outs[k].path, outs[k].img, outs[k].ms, outs[k].mem,
-            outs[k].tol);
+    if (sel && !strcmp(outs[k].path, "gl"))
+      rd_emit_sel(run, "area", outs[k].method, outs[k].path, outs[k].img, outs[k].ms, outs[k].mem,
+                  outs[k].tol, sel, s->nmats, AR_TOL_GGX, "ggx");
+    else
+      rd_emit(run, "area", outs[k].method, outs[k].path, outs[k].img, outs[k].ms, outs[k].mem,
+              outs[k].tol);
     outs[k].img.rgb = NULL;
   }
   nout = 0;
@@ -1251,5 +1157,6 @@ done:
     rd_image_free(&outs[k].img);
   free(lb);
   free(mats);
+  free(sel);
   return rc;
 }

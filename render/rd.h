@@ -174,6 +174,13 @@ typedef struct {
  * method of that pass (an image with method "gt:<name>" is the reference only of <name>). */
 void rd_emit(rd_run *run, const char *pass, const char *method, const char *path, rd_image img,
              double ms, size_t mem, double tol);
+/* rd_emit for a "gl" image whose pixels of the materials m with sel[m] != 0 (nsel flags, copied)
+ * are checked against tol_sel instead of tol (a kernel whose GL twin is less close to C, e.g.
+ * area's GGX floor): the check then holds both, max |gl - cpu| over each set of pixels divided
+ * by the peak of the whole CPU image; sel_name names the selected pixels in the report. */
+void rd_emit_sel(rd_run *run, const char *pass, const char *method, const char *path, rd_image img,
+                 double ms, size_t mem, double tol, const int *sel, int nsel, double tol_sel,
+                 const char *sel_name);
 /* Prints the table (markdown) and returns the number of failed gl-vs-cpu checks. */
 int rd_report(rd_run *run, int markdown);
 /* The number of gl-vs-cpu checks (methods with both a "gl" and a "cpu" image). */

@@ -1131,15 +1131,54 @@ float shl_sphere_phong(vec3 c, float r, vec3 nrm, vec3 view, float exponent, int
       rho * (sg + uy * uy * a), -rho * uy, nx, ny, nz, rx, ry, rz, SHLIGHT_REAL(exponent), method));
 }
 
-float shl_polygon_ggx_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float alpha) {
-  shli_real px[SHLIGHT_CLIP_MAX];
-  shli_real py[SHLIGHT_CLIP_MAX];
-  shli_real pz[SHLIGHT_CLIP_MAX];
+int shli_poly_load_clip(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float alpha,
+                        inout shli_real io_px[SHLIGHT_CLIP_MAX],
+                        inout shli_real io_py[SHLIGHT_CLIP_MAX],
+                        inout shli_real io_pz[SHLIGHT_CLIP_MAX], out shli_real out_par[5]) {
   shli_real rx = SHLIGHT_REAL(axis[0]);
   shli_real ry = SHLIGHT_REAL(axis[1]);
   shli_real rz = SHLIGHT_REAL(axis[2]);
   shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
-  shli_real a2 = SHLIGHT_REAL(alpha);
+  shli_real al = SHLIGHT_REAL(alpha);
+  int i;
+  int nc;
+  out_par[3] = 1.0;
+  if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) || !(al == al)) {
+    return 0;
+  }
+  rx = rx / l;
+  ry = ry / l;
+  rz = rz / l;
+  out_par[0] = rx;
+  out_par[1] = ry;
+  out_par[2] = rz;
+  out_par[4] = SHLIGHT_MINR(SHLIGHT_MAXR(al, 1.0e-4), 1.0);
+  for (i = 0; i < nv; ++i) {
+    io_px[i] = SHLIGHT_REAL(v[i][0]);
+    io_py[i] = SHLIGHT_REAL(v[i][1]);
+    io_pz[i] = SHLIGHT_REAL(v[i][2]);
+    if (!(SHLIGHT_ABSR(io_px[i]) + SHLIGHT_ABSR(io_py[i]) + SHLIGHT_ABSR(io_pz[i]) <
+          SHLIGHT_REAL_MAX)) {
+      return 0;
+    }
+  }
+  nc = shli_poly_clip_unit(io_px, io_py, io_pz, nv, rx, ry, rz);
+  if (nc < 0) {
+    nc = -nc;
+    out_par[3] = -1.0;
+  }
+  return nc;
+}
+
+float shl_polygon_ggx_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float alpha) {
+  shli_real px[SHLIGHT_CLIP_MAX];
+  shli_real py[SHLIGHT_CLIP_MAX];
+  shli_real pz[SHLIGHT_CLIP_MAX];
+  shli_real par[5];
+  shli_real rx;
+  shli_real ry;
+  shli_real rz;
+  shli_real a2;
   shli_real sum = 0.0;
   shli_real nx;
   shli_real ny;
@@ -1151,32 +1190,14 @@ float shl_polygon_ggx_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float 
   shli_real t;
   int i;
   int j;
-  int nc;
-  int sg = 1;
-  if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) || !(a2 == a2)) {
-    return 0.0f;
-  }
-  a2 = SHLIGHT_MINR(SHLIGHT_MAXR(a2, 1.0e-4), 1.0);
-  a2 = a2 * a2;
-  rx = rx / l;
-  ry = ry / l;
-  rz = rz / l;
-  for (i = 0; i < nv; ++i) {
-    px[i] = SHLIGHT_REAL(v[i][0]);
-    py[i] = SHLIGHT_REAL(v[i][1]);
-    pz[i] = SHLIGHT_REAL(v[i][2]);
-    if (!(SHLIGHT_ABSR(px[i]) + SHLIGHT_ABSR(py[i]) + SHLIGHT_ABSR(pz[i]) < SHLIGHT_REAL_MAX)) {
-      return 0.0f;
-    }
-  }
-  nc = shli_poly_clip_unit(px, py, pz, nv, rx, ry, rz);
+  int nc = shli_poly_load_clip(v, nv, axis, alpha, px, py, pz, par);
   if (nc == 0) {
     return 0.0f;
   }
-  if (nc < 0) {
-    nc = -nc;
-    sg = -1;
-  }
+  rx = par[0];
+  ry = par[1];
+  rz = par[2];
+  a2 = par[4] * par[4];
   for (i = 0; i < nc; ++i) {
     j = i + 1;
     if (j == nc) {
@@ -1200,10 +1221,7 @@ float shl_polygon_ggx_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float 
       sum = sum + t;
     }
   }
-  if (sg < 0) {
-    sum = -sum;
-  }
-  return SHLIGHT_FLOAT(SHLIGHT_MAXR(sum, 0.0) * 0.15915494309189534);
+  return SHLIGHT_FLOAT(SHLIGHT_MAXR(par[3] * sum, 0.0) * 0.15915494309189534);
 }
 
 shli_real shli_beckmann_lambda(shli_real c, shli_real alpha) {
@@ -1758,7 +1776,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
         f1 = qx * dx + qy * dy + qz * dz - c * d * q;
         f2 = dx * dx + dy * dy + dz * dz - c * q * q - d0 +
              (vx * qx + vy * qy + vz * qz - c * (vx * nx + vy * ny + vz * nz) * d);
-        if (k == 0 && f2 > 0.0) {
+        if (k == 0 && SHLIGHT_ABSR(f1) < 3.1415926535897932 * f2) { /* |step| < pi, above */
           t0 = t0 - f1 / f2;
         }
       }
@@ -2006,50 +2024,23 @@ float shl_polygon_beckmann_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, f
   shli_real px[SHLIGHT_CLIP_MAX];
   shli_real py[SHLIGHT_CLIP_MAX];
   shli_real pz[SHLIGHT_CLIP_MAX];
-  shli_real rx = SHLIGHT_REAL(axis[0]);
-  shli_real ry = SHLIGHT_REAL(axis[1]);
-  shli_real rz = SHLIGHT_REAL(axis[2]);
-  shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
-  shli_real al = SHLIGHT_REAL(alpha);
+  shli_real par[5];
   shli_real sum = 0.0;
   int i;
   int j;
-  int nc;
-  int sg = 1;
-  if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) || !(al == al)) {
-    return 0.0f;
-  }
-  al = SHLIGHT_MINR(SHLIGHT_MAXR(al, 1.0e-4), 1.0);
-  rx = rx / l;
-  ry = ry / l;
-  rz = rz / l;
-  for (i = 0; i < nv; ++i) {
-    px[i] = SHLIGHT_REAL(v[i][0]);
-    py[i] = SHLIGHT_REAL(v[i][1]);
-    pz[i] = SHLIGHT_REAL(v[i][2]);
-    if (!(SHLIGHT_ABSR(px[i]) + SHLIGHT_ABSR(py[i]) + SHLIGHT_ABSR(pz[i]) < SHLIGHT_REAL_MAX)) {
-      return 0.0f;
-    }
-  }
-  nc = shli_poly_clip_unit(px, py, pz, nv, rx, ry, rz);
+  int nc = shli_poly_load_clip(v, nv, axis, alpha, px, py, pz, par);
   if (nc == 0) {
     return 0.0f;
-  }
-  if (nc < 0) {
-    nc = -nc;
-    sg = -1;
   }
   for (i = 0; i < nc; ++i) {
     j = i + 1;
     if (j == nc) {
       j = 0;
     }
-    sum = sum + shli_beckmann_edge(px[i], py[i], pz[i], px[j], py[j], pz[j], rx, ry, rz, al, 0.0);
+    sum = sum + shli_beckmann_edge(px[i], py[i], pz[i], px[j], py[j], pz[j], par[0], par[1], par[2],
+                                   par[4], 0.0);
   }
-  if (sg < 0) {
-    sum = -sum;
-  }
-  return SHLIGHT_FLOAT(SHLIGHT_MAXR(sum, 0.0) * 0.15915494309189534);
+  return SHLIGHT_FLOAT(SHLIGHT_MAXR(par[3] * sum, 0.0) * 0.15915494309189534);
 }
 
 int shli_half_splits(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
