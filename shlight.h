@@ -11011,7 +11011,9 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
    band l, so a band costs one Reinsch step (4 vector ops) and its outputs two multiplies, one
    lane reversal and two masked stores. Float lanes: the Reinsch form keeps the float error
    within the stated targets (README, tests/test_basis); the scalar kernel (double) stays the
-   reference and SHLIGHT_NO_SIMD selects it. Used by shl_sh_eval for 5 <= n <= 64. */
+   reference and SHLIGHT_NO_SIMD selects it. Used by shl_sh_eval for 7 <= n <= 64 (n <= 16:
+   the rescaled step of SHLI_SH_LANES_S, 256-bit lanes with AVX-512VL), and the Horner forms
+   across the outputs for n = 4..6 (AVX-512VL). */
 #if !defined(SHLIGHT_NO_SIMD) && defined(__AVX512F__)
 #define SHLIGHT_SIMD_EVAL 1
 #include <immintrin.h>
@@ -17465,8 +17467,8 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_grad_avx512(int n, float x, float y, float 
 #endif
 
 /* Y_i at the unit direction (dx, dy, dz): the one evaluation path of shl_sh_eval and
-   shl_sh_eval_grad (n <= 6: float Horner forms; 7..64 with AVX-512: the across-m SIMD core;
-   otherwise the double Reinsch-form core). */
+   shl_sh_eval_grad (n <= 6: float Horner forms, n = 4..6 across the outputs with AVX-512VL;
+   7..64 with AVX-512: the across-m SIMD core; otherwise the double Reinsch-form core). */
 SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float *out_y) {
   shli_real x = SHLIGHT_REAL(dx);
   shli_real y = SHLIGHT_REAL(dy);
@@ -26176,7 +26178,7 @@ shli_cap_light_grad_avx512(int n, const shli_real *g, shli_real wgt, shli_real g
    infinite positions: zeros; x on or inside the sphere: the hemisphere about c - x (its
    value at the surface); x == c: the hemisphere about +z. out_sh: n * n floats. Cost: one
    shl_sh_eval, n * n mul (AVX-512, 3 <= n <= 16: one permute and one multiply per 16
-   coefficients), the O(n) double recurrence, 2 sqrt and 2 divisions; 12 / 40 / 93 ns at
+   coefficients), the O(n) double recurrence, 2 sqrt and 2 divisions; 11 / 36 / 77 ns at
    n = 2 / 8 / 16 (bench/out/light.md, Zen 4). */
 SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], float r,
                                      float *out_sh) {
@@ -26208,9 +26210,9 @@ SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], 
    out_grad: n * n float[3]. Cost: the basis values and gradient at the unit axis (the
    passes of shl_sh_eval_grad without its input normalisation), the O(n) recurrence with 4
    weights per band and 7 flops per coefficient (AVX-512, n <= 16: 16 floats at a time):
-   2.5 / 2.7 / 3.1 times shl_sphere_light at n = 2 / 8 / 16, 8.4 / 11 at n = 32 / 64 (the
+   2.5 / 2.7 / 3.3 times shl_sphere_light at n = 2 / 8 / 16, 8.3 / 10.3 at n = 32 / 64 (the
    basis gradient alone costs 1.6 - 2.0 times the whole value-only light from n = 4 up and
-   6 - 9 times at n = 32, 64; bench/out/light.md). */
+   6 - 8 times at n = 32, 64; bench/out/light.md). */
 SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c[3], float r,
                                           float *out_sh, float (*out_grad)[3]) {
   shli_real g[8];
