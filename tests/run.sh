@@ -101,6 +101,7 @@ step example $MAKE -s example
 step compile-matrix $MAKE -s -j2 compile-matrix
 step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/tests/test_glsl \
   build/tests/test_gl_smoke build/tests/fuzz_replay build/tests/native/test_basis \
+  build/tests/native-novl/test_simd_novl \
   build/tests/test_light build/tests/native/test_light build/tests/selftest_lightref \
   build/tests/test_grid build/tests/native/test_grid build/tests/test_grid_glsl \
   build/tests/test_edge build/tests/selftest_arearef build/tests/test_edge_glsl \
@@ -112,6 +113,7 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/render/shlrender build/tests/fuzz_replay_scene build/tests/test_rd_core
 touch build/logs/lane/tests-built
 step test_basis build/tests/test_basis
+step test_simd_novl build/tests/native-novl/test_simd_novl
 step test_light build/tests/test_light
 step test_grid build/tests/test_grid
 step test_edge build/tests/test_edge

@@ -97,6 +97,12 @@ $(TESTS_BUILD)/native/test_basis: $(TESTS_BASIS_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) -march=native -ffp-contract=fast -o $@ tests/test_basis.c $(TESTS_QUADLIBS)
 
+# The AVX-512F kernels a machine without AVX-512VL runs (512-bit across-m core, fused gradient),
+# on this machine's SIMD with VL turned off; elsewhere the portable paths.
+$(TESTS_BUILD)/native-novl/test_simd_novl: tests/test_simd_novl.c tests/ref/shref.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -march=native -mno-avx512vl -ffp-contract=fast -o $@ tests/test_simd_novl.c $(TESTS_QUADLIBS)
+
 # >>zonal / >>light: kernels against binary128 references (tests/ref/lightref.h), and the
 # references' own self-checks
 $(TESTS_BUILD)/test_light: tests/test_light.c tests/ref/lightref.h tests/ref/shref.h tests/tl.h shlight.h
