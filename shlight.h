@@ -13234,64 +13234,6 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_poly(int n, float x, float y, float 
   }
 }
 #endif
-#ifdef __AVX512VL__
-/* n <= 8: the same in 256-bit registers (8 orders; three ports instead of two) */
-SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_8(int n, float x, float y, float z, float *out_y) {
-  static const unsigned short bits[4] = {0xAA, 0xCC, 0xF0, 0x00};
-  /* float prologue, short latency: t = 1 - |z| / |d| = s2 / (|d| (|d| + |z|)) is s2 / (1 + |z|)
-     to a relative O(|d| - 1), no normalisation needed; (x + iy) is renormalised to second
-     order with e = |d|^2 - 1 formed without cancellation near the poles */
-  float s2 = x * x + y * y;
-  float e = (z - 1.0f) * (z + 1.0f) + s2;
-  /* (x + iy)^m from the raw x, y; the renormalisation |d|^-m = 1 + m dl (to O(e^2)) is one
-     lane vector applied after the powers, off their chain */
-  float dl = e * (-0.5f + 0.375f * e);
-  float cr = x * x - y * y, ci = 2.0f * x * y, q;
-  __m256 c, s, co, so, vs, xv, dd, vt, pk;
-  __m256i iota = _mm256_set_epi32(7, 6, 5, 4, 3, 2, 1, 0);
-  int b, l;
-  vt = _mm256_set1_ps(s2 / (1.0f + fabsf(z)));
-  vs = _mm256_set1_ps(copysignf(1.0f, z));
-  /* lane m gets (x + iy)^m as the product of (x + iy)^(2^b) over the set bits b of m */
-  c = _mm256_mask_blend_ps((__mmask8)0xAA, _mm256_set1_ps(1.0f), _mm256_set1_ps(x));
-  s = _mm256_maskz_mov_ps((__mmask8)0xAA, _mm256_set1_ps(y));
-  for (b = 1; (1 << b) < n; ++b) {
-    __m256 vc = _mm256_set1_ps(cr), vi = _mm256_set1_ps(ci), t0 = _mm256_mul_ps(s, vi);
-    __m256 t1 = _mm256_mul_ps(c, vi);
-    c = _mm256_mask_fmsub_ps(c, (__mmask8)bits[b], vc, t0);
-    s = _mm256_mask_fmadd_ps(s, (__mmask8)bits[b], vc, t1);
-    q = cr * cr - ci * ci;
-    ci = 2.0f * cr * ci;
-    cr = q;
-  }
-  /* parity: X_l^m(z) = sg^(l-m) X_l^m(|z|), sg^m into the odd lanes, sg^l per band; with the
-     renormalisation 1 + m dl */
-  pk = _mm256_fmadd_ps(_mm256_cvtepi32_ps(iota), _mm256_set1_ps(dl), _mm256_set1_ps(1.0f));
-  pk = _mm256_mask_mul_ps(pk, (__mmask8)0xAA, pk, vs);
-  c = _mm256_mul_ps(c, pk);
-  s = _mm256_mul_ps(s, pk);
-  co = _mm256_mul_ps(c, vs);
-  so = _mm256_mul_ps(s, vs);
-  xv = _mm256_loadu_ps(SHLI_SH_DIAG);
-  dd = _mm256_setzero_ps();
-  out_y[0] = SHLI_SH_DIAG[0];
-  for (l = 1; l < n; ++l) {
-    const float *tb = SHLI_SH_LANES_S + (l - 1) * 48;
-    __m256 bt = _mm256_mul_ps(_mm256_loadu_ps(tb + 16), vt);
-    __m256 at = _mm256_sub_ps(_mm256_loadu_ps(tb), bt);
-    __m256 yc, ys, xo;
-    __m256 xn = _mm256_fmadd_ps(at, xv, dd);
-    dd = _mm256_fnmadd_ps(bt, xv, dd);
-    xv = xn;
-    xo = _mm256_mul_ps(xv, _mm256_loadu_ps(tb + 32));
-    yc = _mm256_mul_ps(xo, (l & 1) ? co : c);
-    ys = _mm256_mul_ps(xo, (l & 1) ? so : s);
-    ys = _mm256_permutexvar_ps(_mm256_sub_epi32(_mm256_set1_epi32(l), iota), ys);
-    _mm256_mask_storeu_ps(out_y + l * l, (__mmask8)((1u << l) - 1u), ys);
-    _mm256_mask_storeu_ps(out_y + l * l + l, (__mmask8)((2u << l) - 1u), yc);
-  }
-}
-#endif
 
 /* Full unrolling of the band loops of the across-m cores when n is a compile-time constant
    (inlined with a literal n): the loop then has no branches and every mask is an immediate.
@@ -13304,9 +13246,9 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_8(int n, float x, float y, float z, 
 #define SHLI_UNROLL_BANDS
 #endif
 
-/* 9 <= n <= 16: the same in two 256-bit registers per band, orders 0..7 and 8..15 (the
-   second from band 8 on): 256-bit operations issue on both FMA pipes of a Zen 4 core and a
-   256-bit store takes one cycle where a 512-bit one takes two */
+/* n <= 16 with AVX-512VL: the same in 256-bit registers, orders 0..7 and, from band 8 on,
+   8..15: 256-bit operations issue on both FMA pipes of a Zen 4 core and a 256-bit store takes
+   one cycle where a 512-bit one takes two */
 SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16y(int n, float x, float y, float z, float *out_y) {
   static const unsigned short bits[3] = {0xAA, 0xCC, 0xF0};
   float s2 = x * x + y * y;
@@ -13336,10 +13278,14 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16y(int n, float x, float y, float z
     ci = 2.0f * cr * ci;
     cr = q;
   }
-  vc = _mm256_set1_ps(cr);
-  vi = _mm256_set1_ps(ci);
-  c8 = _mm256_fmsub_ps(c, vc, _mm256_mul_ps(s, vi));
-  s8 = _mm256_fmadd_ps(s, vc, _mm256_mul_ps(c, vi));
+  c8 = _mm256_setzero_ps();
+  s8 = _mm256_setzero_ps();
+  if (n > 8) {
+    vc = _mm256_set1_ps(cr);
+    vi = _mm256_set1_ps(ci);
+    c8 = _mm256_fmsub_ps(c, vc, _mm256_mul_ps(s, vi));
+    s8 = _mm256_fmadd_ps(s, vc, _mm256_mul_ps(c, vi));
+  }
   /* parity: X_l^m(z) = sg^(l-m) X_l^m(|z|), sg^m into the odd lanes, sg^l per band; with the
      renormalisation 1 + m dl */
   pk = _mm256_fmadd_ps(_mm256_cvtepi32_ps(iota), _mm256_set1_ps(dl), _mm256_set1_ps(1.0f));
@@ -13348,14 +13294,18 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16y(int n, float x, float y, float z
   s = _mm256_mul_ps(s, pk);
   co = _mm256_mul_ps(c, vs);
   so = _mm256_mul_ps(s, vs);
-  pk = _mm256_fmadd_ps(_mm256_set1_ps(8.0f * dl), vs, pk); /* lanes 8..15: + 8 dl sg^m */
-  pk = _mm256_mask_blend_ps((__mmask8)0x55, pk,
-                            _mm256_fmadd_ps(_mm256_cvtepi32_ps(iota), _mm256_set1_ps(dl),
-                                            _mm256_set1_ps(1.0f + 8.0f * dl)));
-  c8 = _mm256_mul_ps(c8, pk);
-  s8 = _mm256_mul_ps(s8, pk);
-  co8 = _mm256_mul_ps(c8, vs);
-  so8 = _mm256_mul_ps(s8, vs);
+  co8 = c8;
+  so8 = s8;
+  if (n > 8) {
+    pk = _mm256_fmadd_ps(_mm256_set1_ps(8.0f * dl), vs, pk); /* lanes 8..15: + 8 dl sg^m */
+    pk = _mm256_mask_blend_ps((__mmask8)0x55, pk,
+                              _mm256_fmadd_ps(_mm256_cvtepi32_ps(iota), _mm256_set1_ps(dl),
+                                              _mm256_set1_ps(1.0f + 8.0f * dl)));
+    c8 = _mm256_mul_ps(c8, pk);
+    s8 = _mm256_mul_ps(s8, pk);
+    co8 = _mm256_mul_ps(c8, vs);
+    so8 = _mm256_mul_ps(s8, vs);
+  }
   xv = _mm256_loadu_ps(SHLI_SH_DIAG);
   xv8 = _mm256_loadu_ps(SHLI_SH_DIAG + 8);
   dd = _mm256_setzero_ps();
@@ -13400,24 +13350,24 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16y(int n, float x, float y, float z
   }
 }
 
-/* n <= 16: one register per band (the common case; no chunk bookkeeping) */
-SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16(int n, float x, float y, float z, float *out_y) {
+/* The order lanes of the 512-bit across-m cores for n <= 16 bands at (x, y, z), |d| ~ 1:
+   lv[0] + i lv[1] has (x + iy)^m in lane m (from the raw x, y, as the product of
+   (x + iy)^(2^b) over the set bits b of m), renormalised by |d|^-m = 1 + m dl (to O(e^2),
+   e = |d|^2 - 1 formed without cancellation near the poles; one lane vector off the chain of
+   powers) and times sg^m (parity: X_l^m(z) = sg^(l-m) X_l^m(|z|)); lv[2] + i lv[3] the same
+   times sg (odd bands); lv[4] = t = s2 / (1 + |z|), which is 1 - |z| / |d| to a relative
+   O(|d| - 1): no normalisation, no cancellation at the poles. */
+SHLIGHT_CPU_INLINE void shli_sh_lanes512(int n, float x, float y, float z, __m512 *lv) {
   static const unsigned short bits[4] = {0xAAAA, 0xCCCC, 0xF0F0, 0xFF00};
-  /* float prologue, short latency: t = 1 - |z| / |d| = s2 / (|d| (|d| + |z|)) is s2 / (1 + |z|)
-     to a relative O(|d| - 1), no normalisation needed; (x + iy) is renormalised to second
-     order with e = |d|^2 - 1 formed without cancellation near the poles */
   float s2 = x * x + y * y;
   float e = (z - 1.0f) * (z + 1.0f) + s2;
-  /* (x + iy)^m from the raw x, y; the renormalisation |d|^-m = 1 + m dl (to O(e^2)) is one
-     lane vector applied after the powers, off their chain */
   float dl = e * (-0.5f + 0.375f * e);
   float cr = x * x - y * y, ci = 2.0f * x * y, q;
-  __m512 c, s, co, so, vs, xv, dd, vt, pk;
+  __m512 c, s, vs, pk;
   __m512i iota = _mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0);
-  int b, l;
-  vt = _mm512_set1_ps(s2 / (1.0f + fabsf(z)));
+  int b;
+  lv[4] = _mm512_set1_ps(s2 / (1.0f + fabsf(z)));
   vs = _mm512_set1_ps(copysignf(1.0f, z));
-  /* lane m gets (x + iy)^m as the product of (x + iy)^(2^b) over the set bits b of m */
   c = _mm512_mask_blend_ps((__mmask16)0xAAAA, _mm512_set1_ps(1.0f), _mm512_set1_ps(x));
   s = _mm512_maskz_mov_ps((__mmask16)0xAAAA, _mm512_set1_ps(y));
   for (b = 1; (1 << b) < n; ++b) {
@@ -13429,14 +13379,25 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16(int n, float x, float y, float z,
     ci = 2.0f * cr * ci;
     cr = q;
   }
-  /* parity: X_l^m(z) = sg^(l-m) X_l^m(|z|), sg^m into the odd lanes, sg^l per band; with the
-     renormalisation 1 + m dl */
   pk = _mm512_fmadd_ps(_mm512_cvtepi32_ps(iota), _mm512_set1_ps(dl), _mm512_set1_ps(1.0f));
   pk = _mm512_mask_mul_ps(pk, (__mmask16)0xAAAA, pk, vs);
-  c = _mm512_mul_ps(c, pk);
-  s = _mm512_mul_ps(s, pk);
-  co = _mm512_mul_ps(c, vs);
-  so = _mm512_mul_ps(s, vs);
+  lv[0] = _mm512_mul_ps(c, pk);
+  lv[1] = _mm512_mul_ps(s, pk);
+  lv[2] = _mm512_mul_ps(lv[0], vs);
+  lv[3] = _mm512_mul_ps(lv[1], vs);
+}
+
+/* n <= 16: one register per band (the common case; no chunk bookkeeping) */
+SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16(int n, float x, float y, float z, float *out_y) {
+  __m512 lv[5], c, s, co, so, xv, dd, vt;
+  __m512i iota = _mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0);
+  int l;
+  shli_sh_lanes512(n, x, y, z, lv);
+  c = lv[0];
+  s = lv[1];
+  co = lv[2];
+  so = lv[3];
+  vt = lv[4];
   xv = _mm512_loadu_ps(SHLI_SH_DIAG);
   dd = _mm512_setzero_ps();
   out_y[0] = SHLI_SH_DIAG[0];
@@ -17310,15 +17271,8 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_avx512(int n, const float *y, float nx, flo
 SHLIGHT_CPU_INLINE void shli_sh_eval_grad_avx512(int n, float x, float y, float z, float ir,
                                                  const float *bw, float *out_y,
                                                  float (*out_grad)[3]) {
-  static const unsigned short bits[4] = {0xAAAA, 0xCCCC, 0xF0F0, 0xFF00};
-  float s2 = x * x + y * y;
-  float e = (z - 1.0f) * (z + 1.0f) + s2;
-  /* (x + iy)^m from x, y; the renormalisation |d|^-m = 1 + m dl (to O(e^2)) is one lane vector
-     applied after the powers, off their chain (as shli_sh_eval_avx512_16y) */
-  float dl = e * (-0.5f + 0.375f * e);
-  float cr = x * x - y * y, ci = 2.0f * x * y, q;
   float *o = &out_grad[0][0];
-  __m512 c, s, co, so, vs, xv, dd, vt, pk;
+  __m512 ln[5], c, s, co, so, xv, dd, vt;
   __m512 vx = _mm512_set1_ps(x), vy = _mm512_set1_ps(y), vz = _mm512_set1_ps(z);
   __m512 u0, u1, u2, w0, w1, w2, p0, p1, q0, q1, r;
   __m512i iota = _mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0);
@@ -17328,26 +17282,13 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_grad_avx512(int n, float x, float y, float 
   __m512i iy3 = _mm512_loadu_si512((const void *)(SHLI_GRADV_IY + 48));
   __m512i iy4 = _mm512_loadu_si512((const void *)(SHLI_GRADV_IY + 64));
   __m512i iy5 = _mm512_loadu_si512((const void *)(SHLI_GRADV_IY + 80));
-  int b, l, nc;
-  vt = _mm512_set1_ps(s2 / (1.0f + fabsf(z)));
-  vs = _mm512_set1_ps(copysignf(1.0f, z));
-  c = _mm512_mask_blend_ps((__mmask16)0xAAAA, _mm512_set1_ps(1.0f), vx);
-  s = _mm512_maskz_mov_ps((__mmask16)0xAAAA, vy);
-  for (b = 1; (1 << b) < n; ++b) {
-    __m512 vc = _mm512_set1_ps(cr), vi = _mm512_set1_ps(ci), t0 = _mm512_mul_ps(s, vi);
-    __m512 t1 = _mm512_mul_ps(c, vi);
-    c = _mm512_mask_fmsub_ps(c, (__mmask16)bits[b], vc, t0);
-    s = _mm512_mask_fmadd_ps(s, (__mmask16)bits[b], vc, t1);
-    q = cr * cr - ci * ci;
-    ci = 2.0f * cr * ci;
-    cr = q;
-  }
-  pk = _mm512_fmadd_ps(_mm512_cvtepi32_ps(iota), _mm512_set1_ps(dl), _mm512_set1_ps(1.0f));
-  pk = _mm512_mask_mul_ps(pk, (__mmask16)0xAAAA, pk, vs);
-  c = _mm512_mul_ps(c, pk);
-  s = _mm512_mul_ps(s, pk);
-  co = _mm512_mul_ps(c, vs);
-  so = _mm512_mul_ps(s, vs);
+  int l, nc;
+  shli_sh_lanes512(n, x, y, z, ln);
+  c = ln[0];
+  s = ln[1];
+  co = ln[2];
+  so = ln[3];
+  vt = ln[4];
   xv = _mm512_loadu_ps(SHLI_SH_DIAG);
   dd = _mm512_setzero_ps();
   /* uK lane j = u[(K + j) % 3] for the AoS chunks */
@@ -17526,12 +17467,6 @@ SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float 
     break;
   }
 #if SHLIGHT_SIMD_EVAL
-#ifdef __AVX512VL__
-  if (n <= 8) {
-    shli_sh_eval_avx512_8(n, dx, dy, dz, out_y);
-    return;
-  }
-#endif
   if (n <= SHLIGHT_UNROLLED_BANDS) {
 #ifdef __AVX512VL__
     shli_sh_eval_avx512_16y(n, dx, dy, dz, out_y);

@@ -4813,12 +4813,6 @@ void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIG
     break;
   }
 #if SHLIGHT_SIMD_EVAL
-#ifdef __AVX512VL__
-  if (n <= 8) {
-    shli_sh_eval_avx512_8(n, dx, dy, dz, out_y);
-    return;
-  }
-#endif
   if (n <= SHLIGHT_UNROLLED_BANDS) {
 #ifdef __AVX512VL__
     shli_sh_eval_avx512_16y(n, dx, dy, dz, out_y);

@@ -12,20 +12,11 @@
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
 #include "ref/shref.h"
+#include "tl.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
-
-static int n_pass, n_fail;
-static void check(int ok, const char *what, int n, double err, double tol) {
-  if (ok) {
-    ++n_pass;
-  } else {
-    ++n_fail;
-    printf("FAIL %s n = %d: %.3g > %.3g\n", what, n, err, tol);
-  }
-}
 
 static uint64_t st = 0x4e6f564cu;
 static double u01(void) {
@@ -61,7 +52,7 @@ static void direction(int k, float d[3]) {
   d[2] = (float)(z / r);
 }
 
-int main(void) {
+static void test_novl_paths(void) {
   static float yv[256], yg[256], g[256][3];
   static double ry[256], rg[256][3];
   int n, k, i, c;
@@ -92,11 +83,11 @@ int main(void) {
     }
     /* measured (Zen 4, -march=native -mno-avx512vl): shl_sh_eval n = 4 1.9e-7, 10 5.8e-7,
        16 1.3e-6; gradient / max|grad| 3.3e-7, 4.9e-7, 8.4e-7 */
-    check(ev <= tol, "shl_sh_eval vs binary128", n, ev, tol);
-    check(ey <= tol, "shl_sh_eval_grad values vs binary128", n, ey, tol);
+    TL_CHECK(ev <= tol, "shl_sh_eval vs binary128, n = %d: %.3g > %.3g", n, ev, tol);
+    TL_CHECK(ey <= tol, "shl_sh_eval_grad values vs binary128, n = %d: %.3g > %.3g", n, ey, tol);
     /* n = 1: the gradient is 0 (the reference's finite differences give ~1e-26) */
-    check(eg <= 1e-5 * gmax || eg <= 1e-20, "shl_sh_eval_grad gradient / max|grad|", n,
-          gmax > 0.0 ? eg / gmax : eg, 1e-5);
+    TL_CHECK(eg <= 1e-5 * gmax || eg <= 1e-20, "shl_sh_eval_grad gradient, n = %d: %.3g of max", n,
+             gmax > 0.0 ? eg / gmax : eg);
     if (n == 4 || n == 10 || n == 16) {
       printf("n = %2d: values %.2e, grad values %.2e, gradient %.2e of max|grad|\n", n, ev, ey,
              gmax > 0.0 ? eg / gmax : eg);
@@ -107,6 +98,9 @@ int main(void) {
 #else
   printf("no AVX-512F-only build here: the portable or 256-bit paths ran\n");
 #endif
-  printf("%d passed, %d failed\n", n_pass, n_fail);
-  return n_fail != 0;
+}
+
+int main(void) {
+  TL_RUN(test_novl_paths);
+  return tl_summary();
 }
