@@ -17,7 +17,7 @@ CFLAGS ?= -std=c99 -O2 -g
 LDLIBS := -lm
 
 .DEFAULT_GOAL := all
-.PHONY: all example test bench fuzz gen format format-check compile-matrix clean
+.PHONY: all example test test-glsl-full bench fuzz gen format format-check compile-matrix clean
 
 all: $(BUILD)/examples/hello_sh
 
@@ -82,6 +82,11 @@ format-check:
 
 test:
 	bash tests/run.sh
+
+# the GLSL-vs-C test with the shaders the default run leaves out (the 16-band gradient: ~85 s
+# of llvmpipe compile)
+test-glsl-full: $(BUILD)/tests/test_glsl
+	SHLIGHT_GLSL_FULL=1 $(BUILD)/tests/test_glsl
 
 clean:
 	rm -rf $(BUILD)
