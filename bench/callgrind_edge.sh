@@ -5,9 +5,8 @@
 # bench/out/edge_instr.md. Run from the repository root: sh bench/callgrind_edge.sh
 set -eu
 CC=${CC:-gcc}
-BIN=build/bench/bench_edge_cg
-mkdir -p build/bench bench/out
-$CC -std=c99 -O3 -march=x86-64-v3 -ffp-contract=fast -DNDEBUG -Wl,-z,now -o "$BIN" bench/bench_edge.c -lm
+. bench/callgrind_lib.sh
+cg_build bench_edge -lm
 ES="1 10 100 1000 10000"
 {
   echo "### x86 instructions per quad light (callgrind, \`$CC -O3 -march=x86-64-v3\`, 256 random quads, doubly clipped Phong)"
@@ -20,9 +19,8 @@ ES="1 10 100 1000 10000"
     printf '| %s |' "$n"
     for e in $ES; do
       K=256
-      valgrind --tool=callgrind --toggle-collect='bw_*' --callgrind-out-file=build/bench/cg.out \
-        "$BIN" --count-only $m $e $K >/dev/null 2>&1
-      tot=$(sed -n 's/^totals: *//p;s/^summary: *//p' build/bench/cg.out | head -n 1)
+      cg_run build/bench/cg.out --count-only $m $e $K
+      tot=$(cg_total build/bench/cg.out)
       printf ' %s |' "$(awk -v t="$tot" -v k=$K 'BEGIN { printf "%.0f", t / k }')"
     done
     echo

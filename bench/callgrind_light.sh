@@ -9,19 +9,19 @@ set -eu
 CC=${CC:-gcc}
 NS=${1:-"2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 32 64"}
 BIN=build/bench/bench_light_cg
-CGFLAGS="-std=c99 -O3 -march=x86-64-v3 -ffp-contract=fast -DNDEBUG"
+. bench/callgrind_lib.sh
 command -v valgrind >/dev/null || { echo "callgrind_light.sh: valgrind not found" >&2; exit 1; }
 mkdir -p build/bench bench/out
-if [ ! -x "$BIN" ] || [ bench/bench_light.c -nt "$BIN" ] || [ shlight.h -nt "$BIN" ]; then
-  $CC $CGFLAGS -Wl,-z,now -o "$BIN" bench/bench_light.c -lquadmath -lm
+if [ ! -x "$BIN" ] || [ bench/bench_light.c -nt "$BIN" ] || [ bench/bench_util.h -nt "$BIN" ] ||
+  [ shlight.h -nt "$BIN" ]; then
+  cg_build bench_light -lquadmath -lm
 fi
 REV=$(git rev-parse --short HEAD 2>/dev/null || echo "?")
 git diff --quiet HEAD -- shlight.h 2>/dev/null || REV="$REV+dirty, blob $(git hash-object shlight.h | cut -c1-10)"
 count() { # variant n -> instructions per call
   K=256
-  valgrind --tool=callgrind --toggle-collect='bw_*' --callgrind-out-file=build/bench/cgl.out \
-    "$BIN" --count-only "$1" "$2" $K >/dev/null 2>&1
-  tot=$(sed -n 's/^totals: *//p;s/^summary: *//p' build/bench/cgl.out | head -n 1)
+  cg_run build/bench/cgl.out --count-only "$1" "$2" $K
+  tot=$(cg_total build/bench/cgl.out)
   awk -v t="$tot" -v k=$K 'BEGIN { printf "%.0f", t / k }'
 }
 {

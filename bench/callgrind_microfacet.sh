@@ -6,13 +6,11 @@
 # bench/out/microfacet_instr.md. Run from the repository root: sh bench/callgrind_microfacet.sh
 set -eu
 CC=${CC:-gcc}
-BIN=build/bench/bench_microfacet_cg
-mkdir -p build/bench bench/out
-$CC -std=c99 -O3 -march=x86-64-v3 -ffp-contract=fast -DNDEBUG -Wl,-z,now -o "$BIN" bench/bench_microfacet.c -lm
+. bench/callgrind_lib.sh
+cg_build bench_microfacet -lm
 count() {
-  valgrind --tool=callgrind --toggle-collect='bw_*' --callgrind-out-file=build/bench/cgm.out \
-    "$BIN" --count-only "$1" "$2" "$3" 96 >/dev/null 2>&1
-  tot=$(sed -n 's/^totals: *//p;s/^summary: *//p' build/bench/cgm.out | head -n 1)
+  cg_run build/bench/cgm.out --count-only "$1" "$2" "$3" 96
+  tot=$(cg_total build/bench/cgm.out)
   awk -v t="$tot" 'BEGIN { printf "%.0f", t / 96 }'
 }
 {
