@@ -74,7 +74,7 @@ compile-matrix:
 gen:
 	$(PYTHON) tools/gen_basis.py
 
-FORMAT_FILES := shlight.h render/*.c render/*.h examples/*.c tests/*.c tests/*.h tests/*.cpp tests/gl/*.c tests/gl/*.h bench/*.c
+FORMAT_FILES := shlight.h render/*.c render/*.h examples/*.c tests/*.c tests/*.h tests/*.cpp tests/gl/*.c tests/gl/*.h bench/*.c bench/*.h
 format:
 	clang-format -i $(wildcard $(FORMAT_FILES))
 format-check:

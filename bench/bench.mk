@@ -30,7 +30,26 @@ bench: bench-basis
 
 .PHONY: bench bench-basis
 
-build/bench/bench_light: bench/bench_light.c shlight.h tests/ref/lightref.h tests/ref/shref.h
+# the bench programs that need only -lm (their extra headers are listed with each)
+build/bench/bench_%: bench/bench_%.c shlight.h bench/bench_util.h
+	@mkdir -p build/bench
+	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ $< -lm
+
+# bench_area NAME: bench-NAME runs bench/callgrind_NAME.sh, then the timed build/bench/bench_NAME,
+# and shows bench/out/NAME.md
+define bench_area
+bench-$(1): build/bench/bench_$(1)
+	@mkdir -p bench/out
+	CC=$$(BENCH_CC) sh bench/callgrind_$(1).sh
+	build/bench/bench_$(1)
+	cat bench/out/$(1).md
+
+bench: bench-$(1)
+.PHONY: bench-$(1)
+endef
+
+build/bench/bench_light: bench/bench_light.c shlight.h bench/bench_util.h tests/ref/lightref.h \
+  tests/ref/shref.h
 	@mkdir -p build/bench
 	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -DBENCH_FLAGS='"$(BENCH_CC) $(BENCH_CFLAGS)"' \
 	  -DBENCH_REV='"$(BENCH_REV)"' -o $@ bench/bench_light.c $(BENCH_LDLIBS)
@@ -54,48 +73,15 @@ bench-grid: build/bench/bench_grid
 bench: bench-grid
 .PHONY: bench-grid
 
-build/bench/bench_edge: bench/bench_edge.c shlight.h tests/ref/arearef.h
-	@mkdir -p build/bench
-	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_edge.c -lm
+build/bench/bench_edge: tests/ref/arearef.h
+$(eval $(call bench_area,edge))
 
-bench-edge: build/bench/bench_edge
-	@mkdir -p bench/out
-	CC=$(BENCH_CC) sh bench/callgrind_edge.sh
-	build/bench/bench_edge
-	cat bench/out/edge.md
+build/bench/bench_microfacet: tests/ref/arearef.h
+$(eval $(call bench_area,microfacet))
 
-bench: bench-edge
-.PHONY: bench-edge
+build/bench/bench_ggx: tests/ref/arearef.h tests/ref/ggxcases.h
+$(eval $(call bench_area,ggx))
 
-build/bench/bench_microfacet: bench/bench_microfacet.c shlight.h tests/ref/arearef.h
-	@mkdir -p build/bench
-	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_microfacet.c -lm
-
-bench-microfacet: build/bench/bench_microfacet
-	@mkdir -p bench/out
-	CC=$(BENCH_CC) sh bench/callgrind_microfacet.sh
-	build/bench/bench_microfacet
-	cat bench/out/microfacet.md
-
-bench: bench-microfacet
-.PHONY: bench-microfacet
-
-build/bench/bench_ggx: bench/bench_ggx.c shlight.h tests/ref/arearef.h tests/ref/ggxcases.h
-	@mkdir -p build/bench
-	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_ggx.c -lm
-
-bench-ggx: build/bench/bench_ggx
-	@mkdir -p bench/out
-	CC=$(BENCH_CC) sh bench/callgrind_ggx.sh
-	build/bench/bench_ggx
-	cat bench/out/ggx.md
-
-bench: bench-ggx
-.PHONY: bench-ggx
-
-build/bench/bench_brdf: bench/bench_brdf.c shlight.h
-	@mkdir -p build/bench
-	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_brdf.c -lm
 
 bench-brdf: build/bench/bench_brdf
 	@mkdir -p bench/out
@@ -126,15 +112,5 @@ bench-solid-float: build/bench/solid_angle_float
 	build/bench/solid_angle_float $(SOLID_N)
 .PHONY: bench-solid-float
 
-build/bench/bench_beckmann: bench/bench_beckmann.c shlight.h tests/ref/arearef.h tests/ref/ggxcases.h
-	@mkdir -p build/bench
-	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_beckmann.c -lm
-
-bench-beckmann: build/bench/bench_beckmann
-	@mkdir -p bench/out
-	CC=$(BENCH_CC) sh bench/callgrind_beckmann.sh
-	build/bench/bench_beckmann
-	cat bench/out/beckmann.md
-
-bench: bench-beckmann
-.PHONY: bench-beckmann
+build/bench/bench_beckmann: tests/ref/arearef.h tests/ref/ggxcases.h
+$(eval $(call bench_area,beckmann))

@@ -17,6 +17,8 @@
 #define _POSIX_C_SOURCE 200809L
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
+#define BENCH_SEED 0x5eed5u
+#include "bench_util.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -31,18 +33,6 @@ static float W[NCFG][3], RD[NCFG][3], CAPZH[NCFG][16], LOBE[16], LSH[NCFG][256],
 static float ta[256], tb[256];
 static volatile float sink;
 
-static uint64_t rs = 0x5eed5u;
-static double rnd(void) {
-  uint64_t z = (rs += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return (double)((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
-}
-static double now(void) {
-  struct timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 typedef void (*wfn)(int i);
 static double time_ns(wfn f) {
   double s[15], t0, t;

@@ -12,6 +12,7 @@
 #include "../shlight.h"
 #include "../tests/ref/arearef.h"
 #include "../tests/ref/ggxcases.h"
+#include "bench_util.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -38,21 +39,6 @@ typedef struct {
 static cfg C[NCFG];
 static volatile float sink;
 static const float NZ[3] = {0, 0, 1};
-
-static double now(void) {
-  struct timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-static int cmpd(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return x < y ? -1 : x > y;
-}
-static double pct(double *a, int n, double p) {
-  if (n == 0) return 0;
-  qsort(a, (size_t)n, sizeof *a, cmpd);
-  return a[(int)floor(p * (n - 1) + 0.5)];
-}
 
 /* the yardstick timed in the same run: FAST Phong of the same quad (1.3k instructions, README) */
 __attribute__((noinline)) float yard_phong(const cfg *c) {

@@ -9,6 +9,8 @@
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
 #include "../tests/ref/lightref.h"
+#define BENCH_SEED 0x1234567u
+#include "bench_util.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -31,18 +33,6 @@ static float X[NCFG][3], C[NCFG][3], R[NCFG], P1[NCFG][3], P2[NCFG][3], U[NCFG][
 static float sh[SHLIGHT_MAX_COEFFS], gr[SHLIGHT_MAX_COEFFS][3];
 static volatile float sink;
 
-static uint64_t rs = 0x1234567u;
-static double rnd(void) {
-  uint64_t z = (rs += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return (double)((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
-}
-static double now(void) {
-  struct timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 typedef void (*wfn)(int i);
 /* one sample: reps passes over the NCFG configurations, ns per call */
 static double sample_ns(wfn f, int reps) {

@@ -14,6 +14,8 @@
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
 #include "../tests/ref/arearef.h"
+#define BENCH_QUADS /* bench_edge.c's quad sampler */
+#include "bench_util.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -23,75 +25,10 @@
 #include <time.h>
 
 #define NCFG 96
-typedef struct {
-  float v[4][3], n[3], view[3];
-  int cls; /* bit 0 straddles the horizon, 1 grazing view (> 70 deg), 2 large, 3 sliver */
-} cfg;
 static cfg C[NCFG];
 static volatile float sink;
 static int g_kind, g_k;
 static float g_par;
-
-static uint64_t rs = 0x2545F4914F6CDD1Dull;
-static double rnd(void) {
-  uint64_t z = (rs += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return (double)((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
-}
-static double now(void) {
-  struct timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-static void unit(double a[3]) {
-  double l = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-  a[0] /= l, a[1] /= l, a[2] /= l;
-}
-static void cross(const double a[3], const double b[3], double o[3]) {
-  o[0] = a[1] * b[2] - a[2] * b[1], o[1] = a[2] * b[0] - a[0] * b[2],
-  o[2] = a[0] * b[1] - a[1] * b[0];
-}
-/* the configurations of bench_edge.c: surface normal +z, view at angle tv, the quad centred
-   near the mirror direction (60 %) or anywhere above z > -0.25 (40 %), distance 1..10,
-   half-extent / distance 0.02..1.2, tilted; 15 % slivers */
-static void make(cfg *c) {
-  double tv = acos(1 - rnd() * 0.97), pv = 6.2831853 * rnd(), r[3], d[3], t1[3], t2[3], nl[3];
-  double dist = 1 + 9 * rnd(), ext, sx, sy, mn = 1e9, mx = -1e9;
-  int i, k, sliver = rnd() < 0.15;
-  c->view[0] = (float)(sin(tv) * cos(pv)), c->view[1] = (float)(sin(tv) * sin(pv));
-  c->view[2] = (float)cos(tv);
-  c->n[0] = 0, c->n[1] = 0, c->n[2] = 1;
-  r[0] = -c->view[0], r[1] = -c->view[1], r[2] = c->view[2];
-  if (rnd() < 0.6) {
-    for (k = 0; k < 3; ++k)
-      d[k] = r[k] + 0.4 * (rnd() - 0.5);
-  } else {
-    double z = -0.25 + 1.25 * rnd(), p = 6.2831853 * rnd();
-    d[0] = sqrt(1 - z * z) * cos(p), d[1] = sqrt(1 - z * z) * sin(p), d[2] = z;
-  }
-  unit(d);
-  for (k = 0; k < 3; ++k)
-    nl[k] = -d[k] + 0.8 * (rnd() - 0.5);
-  unit(nl);
-  t1[0] = 0.3, t1[1] = -0.7, t1[2] = 0.5;
-  cross(nl, t1, t2);
-  unit(t2);
-  cross(t2, nl, t1);
-  ext = dist * (rnd() < 1.0 / 3 ? 0.02 + 0.08 * rnd()
-                : rnd() < 0.5   ? 0.1 + 0.3 * rnd()
-                                : 0.4 + 0.8 * rnd());
-  for (i = 0; i < 4; ++i) {
-    sx = (i == 0 || i == 3) ? -ext : ext;
-    sy = (i < 2) ? -ext : ext;
-    if (sliver) sy *= 0.02;
-    for (k = 0; k < 3; ++k)
-      c->v[i][k] = (float)(dist * d[k] + sx * t1[k] + sy * t2[k]);
-    mn = fmin(mn, c->v[i][2]), mx = fmax(mx, c->v[i][2]);
-  }
-  c->cls =
-      (mn < 0 && mx > 0) | (tv > 1.2217 ? 2 : 0) | (ext / dist > 0.4 ? 4 : 0) | (sliver ? 8 : 0);
-}
 
 static float eval(int i) {
   const float(*v)[3] = (const float(*)[3])C[i].v;
@@ -102,32 +39,7 @@ static float eval(int i) {
 __attribute__((noinline)) void bw_mf(int i) {
   sink = eval(i);
 }
-static double time_ns(void) {
-  double s[15], t0, t;
-  int k, j, it;
-  for (k = 0; k < 15; ++k) {
-    it = 0;
-    t0 = now();
-    do {
-      for (j = 0; j < NCFG; ++j)
-        bw_mf(j);
-      it += NCFG;
-    } while ((t = now()) - t0 < 2e-3);
-    s[k] = (t - t0) / it * 1e9;
-  }
-  for (k = 0; k < 15; ++k)
-    for (j = k + 1; j < 15; ++j)
-      if (s[j] < s[k]) t = s[k], s[k] = s[j], s[j] = t;
-  return s[7];
-}
-static int cmpd(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return x < y ? -1 : x > y;
-}
-static void stats(double *x, int n, double *med, double *p95, double *mx) {
-  qsort(x, (size_t)n, sizeof *x, cmpd);
-  *med = n ? x[n / 2] : 0, *p95 = n ? x[n * 95 / 100] : 0, *mx = n ? x[n - 1] : 0;
-}
+BENCH_DEFINE_TIME_NS(bw_mf)
 
 #define NK 5
 static const int KS[NK] = {1, -2, 2, 4, 8};
