@@ -12,6 +12,7 @@
 #include "../shlight.h"
 #include "../tests/ref/arearef.h"
 #include "../tests/ref/ggxcases.h"
+#define BENCH_GGXCASES
 #include "bench_util.h"
 
 #include <math.h>
@@ -19,10 +20,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define NR 7
-#define NPER 250
-#define NCFG (NR * NPER)
-static const double ROUGH[NR] = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0};
 typedef struct {
   float q[4][3], view[3], alpha;
   double gt, alb;
@@ -42,17 +39,8 @@ int main(int argc, char **argv) {
   FILE *o;
   if (argc == 3 && strcmp(argv[1], "--count-only") == 0) K = atoi(argv[2]);
   rg.s = 2017u;
-  for (i = 0; i < NCFG; ++i) {
-    ggxc_case cs;
-    cfg *c = &C[i];
-    int j;
-    ggxc_make(&rg, &cs, -1);
-    for (j = 0; j < 12; ++j)
-      c->q[j / 3][j % 3] = (float)cs.q[j / 3][j % 3];
-    for (j = 0; j < 3; ++j)
-      c->view[j] = (float)cs.view[j];
-    c->alpha = (float)(ROUGH[i / NPER] * ROUGH[i / NPER]);
-  }
+  for (i = 0; i < NCFG; ++i)
+    ggx_case(&rg, i, C[i].q, C[i].view, &C[i].alpha);
   if (K > 0) {
     float s = 0;
     for (k = 0; k < K; ++k)

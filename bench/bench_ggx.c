@@ -12,6 +12,7 @@
 #include "../shlight.h"
 #include "../tests/ref/arearef.h"
 #include "../tests/ref/ggxcases.h"
+#define BENCH_GGXCASES
 #include "bench_util.h"
 
 #include <math.h>
@@ -20,10 +21,6 @@
 #include <string.h>
 #include <time.h>
 
-#define NR 7
-#define NPER 250
-#define NCFG (NR * NPER)
-static const double ROUGH[NR] = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0};
 /* peers-arealight.md sec. 2.2, LTC reference (clipped quad, 64x64 tables): rel. error on visible
    configurations median / p95 / max, err / albedo median / p95 / max */
 static const double LTC[NR][6] = {
@@ -57,15 +54,9 @@ int main(int argc, char **argv) {
   if (argc == 3 && strcmp(argv[1], "--count-only") == 0) K = atoi(argv[2]);
   rg.s = 2017u;
   for (i = 0; i < NCFG; ++i) {
-    ggxc_case cs;
     cfg *c = &C[i];
     int j, below = 0, above = 0;
-    ggxc_make(&rg, &cs, -1);
-    for (j = 0; j < 12; ++j)
-      c->q[j / 3][j % 3] = (float)cs.q[j / 3][j % 3];
-    for (j = 0; j < 3; ++j)
-      c->view[j] = (float)cs.view[j];
-    c->alpha = (float)(ROUGH[i / NPER] * ROUGH[i / NPER]);
+    ggx_case(&rg, i, c->q, c->view, &c->alpha);
     for (j = 0; j < 4; ++j)
       below += c->q[j][2]<0, above += c->q[j][2]> 0;
     c->straddle = below > 0 && above > 0;

@@ -10,7 +10,9 @@
  *   BENCH_DEFINE_TIME_NS(fn) defines time_ns(): ns per call of fn(j), j over 0..NCFG-1, median
  *            of 15 samples of >= 2 ms (a direct call: fn is the program's noinline wrapper)
  *   with BENCH_QUADS defined: the quad-light configuration cfg and its sampler make() of
- *            bench_edge.c and bench_microfacet.c */
+ *            bench_edge.c and bench_microfacet.c
+ *   with BENCH_GGXCASES defined: NR, NPER, NCFG, ROUGH and ggx_case() of bench_ggx.c and
+ *            bench_beckmann.c */
 #ifndef BENCH_UTIL_H
 #define BENCH_UTIL_H
 
@@ -122,6 +124,26 @@ static void make(cfg *c) {
   }
   c->cls =
       (mn < 0 && mx > 0) | (tv > 1.2217 ? 2 : 0) | (ext / dist > 0.4 ? 4 : 0) | (sliver ? 8 : 0);
+}
+#endif
+
+#ifdef BENCH_GGXCASES
+/* bench_ggx.c's sampler, the LTC comparison's (tests/ref/ggxcases.h, included before this
+   header): NR roughness values x NPER quads, alpha = r^2 */
+#define NR 7
+#define NPER 250
+#define NCFG (NR * NPER)
+static const double ROUGH[NR] = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0};
+/* the next case of rg, float-rounded: quad q, view; alpha of case number i */
+static void ggx_case(ggxc_rng *rg, int i, float q[4][3], float view[3], float *alpha) {
+  ggxc_case cs;
+  int j;
+  ggxc_make(rg, &cs, -1);
+  for (j = 0; j < 12; ++j)
+    q[j / 3][j % 3] = (float)cs.q[j / 3][j % 3];
+  for (j = 0; j < 3; ++j)
+    view[j] = (float)cs.view[j];
+  *alpha = (float)(ROUGH[i / NPER] * ROUGH[i / NPER]);
 }
 #endif
 
