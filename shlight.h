@@ -27307,24 +27307,35 @@ SHLIGHT_INLINE float shli_fast_moment(float *io_px, float *io_py, float *io_pz, 
 #pragma GCC pop_options
 #endif
 
-/* (1 - h) du/ds at the graded node s of the Stokes edge integrand (see >>edge). */
-SHLIGHT_INLINE shli_real shli_stokes_node(shli_real s, shli_real beta, shli_real c2, shli_real w2,
-                                          shli_real hm) {
+/* The integrand at the graded node s of a Stokes edge integral (see >>edge), times du/ds;
+   t = c2 sin^2 u. kind 0: the moment's 1 - h, 1 - (t / (p + t))^q with p = w^2,
+   q = (e + 1) / 2. kind 1: the Beckmann cap CDF 1 - exp(-p / t) with p = w^2 / alpha^2; for
+   q > 0 (q = alpha^2) the function 1 - exp(-p / t) (1 + q p / t) instead (shli_half_image,
+   kind 1). */
+SHLIGHT_INLINE shli_real shli_stokes_node(shli_real s, shli_real beta, shli_real c2, shli_real p,
+                                          shli_real q, int kind) {
   shli_real es = SHLIGHT_EXPR(s);
   shli_real u = 0.5 * beta * (es - 1.0 / es);
   shli_real su = SHLIGHT_SINR(u);
-  shli_real q = c2 * su * su;
+  shli_real t = c2 * su * su;
   shli_real g = 1.0;
-  if (q > 0.0) {
-    g = -shli_expm1r(hm * SHLIGHT_LOGR(q / (w2 + q)));
+  if (t > 0.0) {
+    if (kind == 0) {
+      g = -shli_expm1r(q * SHLIGHT_LOGR(t / (p + t)));
+    } else {
+      g = -shli_expm1r(-SHLIGHT_MINR(p / t, 700.0));
+      if (q > 0.0) {
+        g = 1.0 - SHLIGHT_EXPR(-SHLIGHT_MINR(p / t, 700.0)) * (1.0 + q * p / t);
+      }
+    }
   }
   return g * 0.5 * beta * (es + 1.0 / es);
 }
 
-/* integral of (1 - h) over |theta| in [lo, hi] inside [0, pi/2]: 5-node Gauss-Legendre in s,
-   pi/2 - |theta| = beta sinh(s). */
+/* integral of the kind's integrand over |theta| in [lo, hi] inside [0, pi/2]: 5-node
+   Gauss-Legendre in s, pi/2 - |theta| = beta sinh(s). */
 SHLIGHT_INLINE shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2,
-                                          shli_real w2, shli_real hm) {
+                                          shli_real p, shli_real q, int kind) {
   shli_real z0 = (1.5707963267948966 - hi) / beta;
   shli_real z1 = (1.5707963267948966 - lo) / beta;
   shli_real s0 = SHLIGHT_LOGR(z0 + SHLIGHT_SQRTR(z0 * z0 + 1.0));
@@ -27335,14 +27346,28 @@ SHLIGHT_INLINE shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real 
   if (!(r > 0.0)) {
     return 0.0;
   }
-  sum = 0.56888888888888889 * shli_stokes_node(m, beta, c2, w2, hm);
-  sum =
-      sum + 0.47862867049936647 * (shli_stokes_node(m - 0.53846931010568309 * r, beta, c2, w2, hm) +
-                                   shli_stokes_node(m + 0.53846931010568309 * r, beta, c2, w2, hm));
-  sum =
-      sum + 0.23692688505618909 * (shli_stokes_node(m - 0.90617984593866399 * r, beta, c2, w2, hm) +
-                                   shli_stokes_node(m + 0.90617984593866399 * r, beta, c2, w2, hm));
+  sum = 0.56888888888888889 * shli_stokes_node(m, beta, c2, p, q, kind);
+  sum = sum +
+        0.47862867049936647 * (shli_stokes_node(m - 0.53846931010568309 * r, beta, c2, p, q, kind) +
+                               shli_stokes_node(m + 0.53846931010568309 * r, beta, c2, p, q, kind));
+  sum = sum +
+        0.23692688505618909 * (shli_stokes_node(m - 0.90617984593866399 * r, beta, c2, p, q, kind) +
+                               shli_stokes_node(m + 0.90617984593866399 * r, beta, c2, p, q, kind));
   return r * sum;
+}
+
+/* The arc theta in [ta, tb] of an edge: the halves on either side of theta = 0, each by
+   shli_stokes_half (the integrand is even in theta). */
+SHLIGHT_INLINE shli_real shli_stokes_arc(shli_real ta, shli_real tb, shli_real beta, shli_real c2,
+                                         shli_real p, shli_real q, int kind) {
+  if (ta < 0.0 && tb > 0.0) {
+    return shli_stokes_half(0.0, -ta, beta, c2, p, q, kind) +
+           shli_stokes_half(0.0, tb, beta, c2, p, q, kind);
+  }
+  if (tb <= 0.0) {
+    return shli_stokes_half(-tb, -ta, beta, c2, p, q, kind);
+  }
+  return shli_stokes_half(ta, tb, beta, c2, p, q, kind);
 }
 
 /* One edge a -> b (unit vectors, the arc inside u.r >= 0) of the polygon moment about the unit
@@ -27417,14 +27442,7 @@ SHLIGHT_INLINE shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az
     tb = SHLIGHT_MINR(ta + shli_atan2r(aw * sp, cp - xa * xb), 1.5707963267948966);
     hm = 0.5 * (e + 1.0);
     beta = 0.5 * shli_atan2r(aw * SHLIGHT_SQRTR(e + 1.0), 1.0);
-    if (ta < 0.0 && tb > 0.0) {
-      g = shli_stokes_half(0.0, -ta, beta, c2, w * w, hm) +
-          shli_stokes_half(0.0, tb, beta, c2, w * w, hm);
-    } else if (tb <= 0.0) {
-      g = shli_stokes_half(-tb, -ta, beta, c2, w * w, hm);
-    } else {
-      g = shli_stokes_half(ta, tb, beta, c2, w * w, hm);
-    }
+    g = shli_stokes_arc(ta, tb, beta, c2, w * w, hm, 0);
     if (w < 0.0) {
       g = -g;
     }
@@ -28930,54 +28948,12 @@ SHLIGHT_INLINE float shl_polygon_beckmann_taylor(const float (*v)[3], int nv, co
    through the circle {l + v}), not great arcs: each light edge is cut into k sub-edges whose
    mapped end points are joined by great arcs (the split of seed 001 sec. 8.1). */
 
-/* the Beckmann cap CDF 1 - exp(-w^2 / (alpha^2 c^2 cos^2 theta)) times du/ds at the graded node
-   s (as shli_stokes_node; b = w^2 / alpha^2, q = c^2 cos^2 theta). sa > 0 (sa = alpha^2): the
-   function 1 - exp(-b / q) (1 + sa b / q) = 1 - E(t) / t^2 instead (shli_half_image, kind 1). */
-SHLIGHT_INLINE shli_real shli_beckmann_node(shli_real s, shli_real beta, shli_real c2, shli_real b,
-                                            shli_real sa) {
-  shli_real es = SHLIGHT_EXPR(s);
-  shli_real u = 0.5 * beta * (es - 1.0 / es);
-  shli_real su = SHLIGHT_SINR(u);
-  shli_real q = c2 * su * su;
-  shli_real g = 1.0;
-  if (q > 0.0) {
-    g = -shli_expm1r(-SHLIGHT_MINR(b / q, 700.0));
-    if (sa > 0.0) {
-      g = 1.0 - SHLIGHT_EXPR(-SHLIGHT_MINR(b / q, 700.0)) * (1.0 + sa * b / q);
-    }
-  }
-  return g * 0.5 * beta * (es + 1.0 / es);
-}
-
-/* shli_stokes_half with the Beckmann node */
-SHLIGHT_INLINE shli_real shli_beckmann_half(shli_real lo, shli_real hi, shli_real beta,
-                                            shli_real c2, shli_real b, shli_real sa) {
-  shli_real z0 = (1.5707963267948966 - hi) / beta;
-  shli_real z1 = (1.5707963267948966 - lo) / beta;
-  shli_real s0 = SHLIGHT_LOGR(z0 + SHLIGHT_SQRTR(z0 * z0 + 1.0));
-  shli_real s1 = SHLIGHT_LOGR(z1 + SHLIGHT_SQRTR(z1 * z1 + 1.0));
-  shli_real m = 0.5 * (s0 + s1);
-  shli_real r = 0.5 * (s1 - s0);
-  shli_real sum;
-  if (!(r > 0.0)) {
-    return 0.0;
-  }
-  sum = 0.56888888888888889 * shli_beckmann_node(m, beta, c2, b, sa);
-  sum = sum +
-        0.47862867049936647 * (shli_beckmann_node(m - 0.53846931010568309 * r, beta, c2, b, sa) +
-                               shli_beckmann_node(m + 0.53846931010568309 * r, beta, c2, b, sa));
-  sum = sum +
-        0.23692688505618909 * (shli_beckmann_node(m - 0.90617984593866399 * r, beta, c2, b, sa) +
-                               shli_beckmann_node(m + 0.90617984593866399 * r, beta, c2, b, sa));
-  return r * sum;
-}
-
 /* One edge a -> b (unit, the arc inside u.r >= 0) of the Stokes form of the Beckmann NDF about
    the unit axis r, roughness alpha: sgn(w) times the integral over the arc's theta of the cap
    CDF (the polygon's integral of D_B (u.r) is the edge sum / (2 pi)); the edge set-up of
    shli_edge_term's QUADRATURE branch, grading beta = atan(|w| sqrt(2) / alpha) / 2 (the
    Blinn-Phong grading at e + 1 = 2 / alpha^2, the exponent of equal width). sa: as
-   shli_beckmann_node (0: the CDF). */
+   shli_stokes_node's q, kind 1 (0: the CDF). */
 SHLIGHT_INLINE shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_real az, shli_real bx,
                                             shli_real by, shli_real bz, shli_real rx, shli_real ry,
                                             shli_real rz, shli_real alpha, shli_real sa) {
@@ -29030,14 +29006,7 @@ SHLIGHT_INLINE shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_rea
     tb = SHLIGHT_MINR(ta + shli_atan2r(aw * sp, cp - xa * xb), 1.5707963267948966);
     b = w * w / (alpha * alpha);
     beta = 0.5 * shli_atan2r(aw * 1.4142135623730951, alpha);
-    if (ta < 0.0 && tb > 0.0) {
-      g = shli_beckmann_half(0.0, -ta, beta, c2, b, sa) +
-          shli_beckmann_half(0.0, tb, beta, c2, b, sa);
-    } else if (tb <= 0.0) {
-      g = shli_beckmann_half(-tb, -ta, beta, c2, b, sa);
-    } else {
-      g = shli_beckmann_half(ta, tb, beta, c2, b, sa);
-    }
+    g = shli_stokes_arc(ta, tb, beta, c2, b, sa, 1);
   }
   if (w < 0.0) {
     g = -g;

@@ -503,20 +503,28 @@ float shli_fast_moment(inout float io_px[SHLIGHT_CLIP_MAX], inout float io_py[SH
 }
 #endif
 
-shli_real shli_stokes_node(shli_real s, shli_real beta, shli_real c2, shli_real w2, shli_real hm) {
+shli_real shli_stokes_node(shli_real s, shli_real beta, shli_real c2, shli_real p, shli_real q,
+                           int kind) {
   shli_real es = SHLIGHT_EXPR(s);
   shli_real u = 0.5 * beta * (es - 1.0 / es);
   shli_real su = SHLIGHT_SINR(u);
-  shli_real q = c2 * su * su;
+  shli_real t = c2 * su * su;
   shli_real g = 1.0;
-  if (q > 0.0) {
-    g = -shli_expm1r(hm * SHLIGHT_LOGR(q / (w2 + q)));
+  if (t > 0.0) {
+    if (kind == 0) {
+      g = -shli_expm1r(q * SHLIGHT_LOGR(t / (p + t)));
+    } else {
+      g = -shli_expm1r(-SHLIGHT_MINR(p / t, 700.0));
+      if (q > 0.0) {
+        g = 1.0 - SHLIGHT_EXPR(-SHLIGHT_MINR(p / t, 700.0)) * (1.0 + q * p / t);
+      }
+    }
   }
   return g * 0.5 * beta * (es + 1.0 / es);
 }
 
-shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2, shli_real w2,
-                           shli_real hm) {
+shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2, shli_real p,
+                           shli_real q, int kind) {
   shli_real z0 = (1.5707963267948966 - hi) / beta;
   shli_real z1 = (1.5707963267948966 - lo) / beta;
   shli_real s0 = SHLIGHT_LOGR(z0 + SHLIGHT_SQRTR(z0 * z0 + 1.0));
@@ -527,14 +535,26 @@ shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real
   if (!(r > 0.0)) {
     return 0.0;
   }
-  sum = 0.56888888888888889 * shli_stokes_node(m, beta, c2, w2, hm);
-  sum =
-      sum + 0.47862867049936647 * (shli_stokes_node(m - 0.53846931010568309 * r, beta, c2, w2, hm) +
-                                   shli_stokes_node(m + 0.53846931010568309 * r, beta, c2, w2, hm));
-  sum =
-      sum + 0.23692688505618909 * (shli_stokes_node(m - 0.90617984593866399 * r, beta, c2, w2, hm) +
-                                   shli_stokes_node(m + 0.90617984593866399 * r, beta, c2, w2, hm));
+  sum = 0.56888888888888889 * shli_stokes_node(m, beta, c2, p, q, kind);
+  sum = sum +
+        0.47862867049936647 * (shli_stokes_node(m - 0.53846931010568309 * r, beta, c2, p, q, kind) +
+                               shli_stokes_node(m + 0.53846931010568309 * r, beta, c2, p, q, kind));
+  sum = sum +
+        0.23692688505618909 * (shli_stokes_node(m - 0.90617984593866399 * r, beta, c2, p, q, kind) +
+                               shli_stokes_node(m + 0.90617984593866399 * r, beta, c2, p, q, kind));
   return r * sum;
+}
+
+shli_real shli_stokes_arc(shli_real ta, shli_real tb, shli_real beta, shli_real c2, shli_real p,
+                          shli_real q, int kind) {
+  if (ta < 0.0 && tb > 0.0) {
+    return shli_stokes_half(0.0, -ta, beta, c2, p, q, kind) +
+           shli_stokes_half(0.0, tb, beta, c2, p, q, kind);
+  }
+  if (tb <= 0.0) {
+    return shli_stokes_half(-tb, -ta, beta, c2, p, q, kind);
+  }
+  return shli_stokes_half(ta, tb, beta, c2, p, q, kind);
 }
 
 shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
@@ -606,14 +626,7 @@ shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx,
     tb = SHLIGHT_MINR(ta + shli_atan2r(aw * sp, cp - xa * xb), 1.5707963267948966);
     hm = 0.5 * (e + 1.0);
     beta = 0.5 * shli_atan2r(aw * SHLIGHT_SQRTR(e + 1.0), 1.0);
-    if (ta < 0.0 && tb > 0.0) {
-      g = shli_stokes_half(0.0, -ta, beta, c2, w * w, hm) +
-          shli_stokes_half(0.0, tb, beta, c2, w * w, hm);
-    } else if (tb <= 0.0) {
-      g = shli_stokes_half(-tb, -ta, beta, c2, w * w, hm);
-    } else {
-      g = shli_stokes_half(ta, tb, beta, c2, w * w, hm);
-    }
+    g = shli_stokes_arc(ta, tb, beta, c2, w * w, hm, 0);
     if (w < 0.0) {
       g = -g;
     }
@@ -1916,43 +1929,6 @@ float shl_polygon_beckmann_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm,
   return shli_mf_taylor(v, nv, nrm, view, alpha, 1);
 }
 
-shli_real shli_beckmann_node(shli_real s, shli_real beta, shli_real c2, shli_real b, shli_real sa) {
-  shli_real es = SHLIGHT_EXPR(s);
-  shli_real u = 0.5 * beta * (es - 1.0 / es);
-  shli_real su = SHLIGHT_SINR(u);
-  shli_real q = c2 * su * su;
-  shli_real g = 1.0;
-  if (q > 0.0) {
-    g = -shli_expm1r(-SHLIGHT_MINR(b / q, 700.0));
-    if (sa > 0.0) {
-      g = 1.0 - SHLIGHT_EXPR(-SHLIGHT_MINR(b / q, 700.0)) * (1.0 + sa * b / q);
-    }
-  }
-  return g * 0.5 * beta * (es + 1.0 / es);
-}
-
-shli_real shli_beckmann_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2, shli_real b,
-                             shli_real sa) {
-  shli_real z0 = (1.5707963267948966 - hi) / beta;
-  shli_real z1 = (1.5707963267948966 - lo) / beta;
-  shli_real s0 = SHLIGHT_LOGR(z0 + SHLIGHT_SQRTR(z0 * z0 + 1.0));
-  shli_real s1 = SHLIGHT_LOGR(z1 + SHLIGHT_SQRTR(z1 * z1 + 1.0));
-  shli_real m = 0.5 * (s0 + s1);
-  shli_real r = 0.5 * (s1 - s0);
-  shli_real sum;
-  if (!(r > 0.0)) {
-    return 0.0;
-  }
-  sum = 0.56888888888888889 * shli_beckmann_node(m, beta, c2, b, sa);
-  sum = sum +
-        0.47862867049936647 * (shli_beckmann_node(m - 0.53846931010568309 * r, beta, c2, b, sa) +
-                               shli_beckmann_node(m + 0.53846931010568309 * r, beta, c2, b, sa));
-  sum = sum +
-        0.23692688505618909 * (shli_beckmann_node(m - 0.90617984593866399 * r, beta, c2, b, sa) +
-                               shli_beckmann_node(m + 0.90617984593866399 * r, beta, c2, b, sa));
-  return r * sum;
-}
-
 shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
                              shli_real bz, shli_real rx, shli_real ry, shli_real rz,
                              shli_real alpha, shli_real sa) {
@@ -2005,14 +1981,7 @@ shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_real az, shli_real
     tb = SHLIGHT_MINR(ta + shli_atan2r(aw * sp, cp - xa * xb), 1.5707963267948966);
     b = w * w / (alpha * alpha);
     beta = 0.5 * shli_atan2r(aw * 1.4142135623730951, alpha);
-    if (ta < 0.0 && tb > 0.0) {
-      g = shli_beckmann_half(0.0, -ta, beta, c2, b, sa) +
-          shli_beckmann_half(0.0, tb, beta, c2, b, sa);
-    } else if (tb <= 0.0) {
-      g = shli_beckmann_half(-tb, -ta, beta, c2, b, sa);
-    } else {
-      g = shli_beckmann_half(ta, tb, beta, c2, b, sa);
-    }
+    g = shli_stokes_arc(ta, tb, beta, c2, b, sa, 1);
   }
   if (w < 0.0) {
     g = -g;
