@@ -106,6 +106,26 @@ ARREF_FN void arref__frame(const long double w[3], long double t1[3], long doubl
   arref__normalize(t1);
   arref__cross(w, t1, t2);
 }
+/* the hemisphere about the unit n as four spherical triangles (two horizon points, the pole) */
+ARREF_FN void arref__hemi_tris(const long double n[3], long double tri[4][3][3]) {
+  long double t1[3], t2[3];
+  int q, k;
+  arref__frame(n, t1, t2);
+  for (q = 0; q < 4; q++)
+    for (k = 0; k < 3; k++) {
+      long double x = q == 0   ? t1[k]
+                      : q == 1 ? t2[k]
+                      : q == 2 ? -t1[k]
+                               : -t2[k],
+                  y = q == 0   ? t2[k]
+                      : q == 1 ? -t1[k]
+                      : q == 2 ? -t2[k]
+                               : t1[k];
+      tri[q][0][k] = x;
+      tri[q][1][k] = y;
+      tri[q][2][k] = n[k];
+    }
+}
 /* angle between unit vectors, accurate at all angles */
 ARREF_FN long double arref__angle(const long double a[3], const long double b[3]) {
   long double c[3];
@@ -848,25 +868,10 @@ ARREF_FN arref_result arref__ggx_albedo_r(const double nrm[3], const double view
   arref__ggx G;
   arref_hint h;
   arref__st s;
-  long double t1[3], t2[3], tri[4][3][3];
+  long double tri[4][3][3];
   arref_result res;
-  int q, k;
   arref__ggx_setup(&G, &h, nrm, view, alpha);
-  arref__frame(G.n, t1, t2);
-  for (q = 0; q < 4; q++)
-    for (k = 0; k < 3; k++) {
-      long double x = q == 0   ? t1[k]
-                      : q == 1 ? t2[k]
-                      : q == 2 ? -t1[k]
-                               : -t2[k],
-                  y = q == 0   ? t2[k]
-                      : q == 1 ? -t1[k]
-                      : q == 2 ? -t2[k]
-                               : t1[k];
-      tri[q][0][k] = x;
-      tri[q][1][k] = y;
-      tri[q][2][k] = G.n[k];
-    }
+  arref__hemi_tris(G.n, tri);
   arref__st_init(&s, arref__ggx_f, &G, &h, abs_tol, 12);
   res.value = arref__tris(&s, tri, 4);
   res.err_est = s.err;
@@ -996,24 +1001,9 @@ ARREF_FN long double arref_mf_albedo(const double nrm[3], const double view[3], 
   arref__mf M;
   arref_hint h;
   arref__st s;
-  long double t1[3], t2[3], tri[4][3][3];
-  int q, k;
+  long double tri[4][3][3];
   arref__mf_setup(&M, &h, nrm, view, par, kind);
-  arref__frame(M.n, t1, t2);
-  for (q = 0; q < 4; q++)
-    for (k = 0; k < 3; k++) {
-      long double x = q == 0   ? t1[k]
-                      : q == 1 ? t2[k]
-                      : q == 2 ? -t1[k]
-                               : -t2[k],
-                  y = q == 0   ? t2[k]
-                      : q == 1 ? -t1[k]
-                      : q == 2 ? -t2[k]
-                               : t1[k];
-      tri[q][0][k] = x;
-      tri[q][1][k] = y;
-      tri[q][2][k] = M.n[k];
-    }
+  arref__hemi_tris(M.n, tri);
   arref__st_init(&s, arref__mf_f, &M, &h, tol, 12);
   return arref__tris(&s, tri, 4);
 }
