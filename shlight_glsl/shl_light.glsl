@@ -67,7 +67,7 @@ void shli_sh_eval_grad_unit(int n, float nx, float ny, float nz, float ir,
   shli_sh_eval_xyz(n, nx, ny, nz, out_y);
 #if SHLIGHT_SIMD_EVAL
   if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS) {
-    shli_sh_grad_avx512(n, out_y, nx, ny, nz, ir, out_grad);
+    shli_sh_grad_avx512(n, out_y, nx, ny, nz, ir, 0, 0, 0, out_grad);
     return;
   }
 #endif

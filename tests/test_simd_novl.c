@@ -3,7 +3,8 @@
  * Built with -march=native -mno-avx512vl (tests/tests.mk): on an AVX-512 machine shl_sh_eval
  * then takes the 512-bit across-m core (shli_sh_eval_avx512_16, n = 7..16) and the scalar
  * Horner forms for n <= 6 instead of the 256-bit kernels a -march=native build selects, and
- * shl_sh_eval_grad its fused kernel; CI's machine has VL, so without this build those paths
+ * shl_sh_eval_grad those values (from its rsqrt14 prologue) before the 512-bit gradient pass;
+ * CI's machine has VL, so without this build those paths
  * would compile but never run. Without AVX-512 the build selects the portable paths and the
  * test checks those. Reference: binary128 (tests/ref/shref.h, theta/phi formulation, shares
  * nothing with the kernels). Bounds: issue 2's float targets (n <= 4: 3e-7, n = 16: 2e-6)
@@ -94,7 +95,7 @@ static void test_novl_paths(void) {
     }
   }
 #if defined(__AVX512F__) && !defined(__AVX512VL__)
-  printf("AVX-512F without VL: the 512-bit across-m core and the fused gradient kernel ran\n");
+  printf("AVX-512F without VL: the 512-bit across-m core and the gradient pass ran\n");
 #else
   printf("no AVX-512F-only build here: the portable or 256-bit paths ran\n");
 #endif

@@ -97,7 +97,7 @@ $(TESTS_BUILD)/native/test_basis: $(TESTS_BASIS_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) -march=native -ffp-contract=fast -o $@ tests/test_basis.c $(TESTS_QUADLIBS)
 
-# The AVX-512F kernels a machine without AVX-512VL runs (512-bit across-m core, fused gradient),
+# The AVX-512F kernels a machine without AVX-512VL runs (512-bit across-m core, Horner forms),
 # on this machine's SIMD with VL turned off; elsewhere the portable paths.
 $(TESTS_BUILD)/native-novl/test_simd_novl: tests/test_simd_novl.c tests/ref/shref.h tests/tl.h shlight.h
 	@mkdir -p $(@D)

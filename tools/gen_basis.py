@@ -592,15 +592,11 @@ def gen_poly_lanes():
 
 def gen_light_idx():
     """>>light, C only (AVX-512): SHLI_LIGHT_BAND[i] = l for coefficient i = l (l+1) + m < 256
-    (the band of each lane when per-band light weights scale 16 coefficients at a time), and
-    SHLI_LIGHT_AOS[j] = j / 3 for the 48 floats of 16 gradients in float[3] layout (the
-    coefficient of each lane)"""
+    (the band of each lane when per-band light weights scale 16 coefficients at a time)"""
     band = [int(math.isqrt(i)) for i in range(UNROLLED * UNROLLED)]
-    aos = [j // 3 for j in range(48)]
     lit = lambda v: '%d' % v
     return (['#if SHLIGHT_SIMD_EVAL'] +
             fmt_table('int', 'SHLI_LIGHT_BAND', '%d' % len(band), band, lit, False) +
-            fmt_table('int', 'SHLI_LIGHT_AOS', '%d' % len(aos), aos, lit, False) +
             ['#endif'])
 
 

@@ -5,20 +5,25 @@ tools/gen_basis.py, which writes them into the @generated gradv region.
 Band l (1..15) writes its 2l+1 gradients, 3(2l+1) floats at out_grad + l*l, in chunks of 16
 floats; local float f = 16 c + j is coefficient k = f // 3 (band order: k < l sine m = l - k,
 k >= l cosine m = k - l) and component f % 3.  Each lane is
-    out = c1 * P[i1] + c2 * P[i2] - Q[iy] * u[f % 3]
-where Q is band l (y + l*l, 2l+1 lanes, band order) times l * ir, zero beyond, and P the
-previous band's Q (band l-1 times (l-1) ir; for l = 1: y[0] times ir), so the coefficients of
-band l >= 2 carry a factor 1 / (l-1).  P and Q are 32 lanes (two zmm) for l >= 8.  In band order YC_{l-1}[m] sits at
+    out = c1 * P[i1] + c2 * P[i2] + Y[k] * w[f % 3]
+where P is band l-1 of Y times the band's weight a_l (the kernel's), Y band l, both band order
+and zero beyond their 2l-1 and 2l+1 lanes, w a per-band 3-vector; the c are the Cartesian
+derivatives of the solid harmonic H_l^m in terms of band l-1 (gen_basis.grad_abc).  P and Y
+are 32 lanes (two zmm) for l >= 8.  In band order YC_{l-1}[m] sits at
 l-1+m and YS_{l-1}[m] at l-1-m, so with k the output position:
   cosine m = k-l: gx = Ap P[k-2] + Bp P[k]; gy = -A[m>=2] P[2l-k] + Bp P[2l-k-2]; gz = C P[k-1]
   sine   m = l-k: gx = A[m>=2] P[k] + B P[k-2]; gy = Ap P[2l-k-2] - B P[2l-k]; gz = C P[k-1]
-Unused taps point at lane 31 (always zero: 2l-1 <= 29) with coefficient 0.
+The taps are put in one order for every band, so their lane indices do not depend on the
+band except through 2l:
+  tap 1: x k-2, y 2l-k-2, z k-1;  tap 2: x k, y 2l-k, z k-1 (coefficient 0)
+i.e. SHLI_GRADV_TAP (per chunk c = 0..5, constant) plus 2l on the y lanes.  A tap outside band
+l-1 (index < 0 or > 2l-2) has coefficient 0; the permute then reads some finite lane of P
+(P is zero beyond its 2l-1 lanes, and the index is taken mod 16 or mod 32), so the product is 0.
 """
 import math
 import sys
 
 NB = 16  # bands
-ZERO = 31
 S2 = math.sqrt(2.0)
 
 
@@ -26,36 +31,33 @@ from gen_basis import grad_abc  # the one definition of the coefficients
 
 
 def lane_terms(l, k, comp):
-    """[(tap, coef), (tap, coef)] for output position k (band order) and component comp"""
+    """[(tap, coef), (tap, coef)] for output position k (band order) and component comp, in
+    the uniform tap order (module doc); taps outside band l-1 carry coefficient 0"""
     if k >= l:
         m = k - l
         a, b, c = grad_abc(l, m)
         ap = a * S2 if m == 1 else a
         bp = b * S2 if m == 0 else b
-        if comp == 0:
-            t = [(k - 2, ap), (k, bp)]
-        elif comp == 1:
-            t = [(2 * l - k, -a if m >= 2 else 0.0), (2 * l - k - 2, bp)]
-        else:
-            t = [(k - 1, c), (ZERO, 0.0)]
+        cf = [(ap, bp), (bp, -a if m >= 2 else 0.0), (c, 0.0)][comp]
     else:
         m = l - k
         a, b, c = grad_abc(l, m)
         ap = a * S2 if m == 1 else a
-        if comp == 0:
-            t = [(k, a if m >= 2 else 0.0), (k - 2, b)]
-        elif comp == 1:
-            t = [(2 * l - k - 2, ap), (2 * l - k, -b)]
-        else:
-            t = [(k - 1, c), (ZERO, 0.0)]
+        cf = [(b, a if m >= 2 else 0.0), (ap, -b), (c, 0.0)][comp]
+    taps = tap_base(k, comp)
+    if comp == 1:
+        taps = (taps[0] + 2 * l, taps[1] + 2 * l)
     out = []
-    for tap, cf in t:
-        if cf == 0.0:
-            out.append((ZERO, 0.0))
-        else:
+    for tap, v in zip(taps, cf):
+        if v != 0.0:
             assert 0 <= tap <= 2 * l - 2, (l, k, comp, tap)
-            out.append((tap, cf))
+        out.append((tap, v))
     return out
+
+
+def tap_base(k, comp):
+    """the two P taps of position k, component comp, without the 2l of the y lanes"""
+    return [(k - 2, k), (-k - 2, -k), (k - 1, k - 1)][comp]
 
 
 def lit(v):
@@ -77,7 +79,6 @@ def fmt_rows(vals, per=8, ind='    '):
 def main():
     nchunk = [0] * (NB + 1)
     ch0 = [0] * (NB + 1)
-    idx = []
     coef = []
     tot = 0
     for l in range(1, NB):
@@ -85,24 +86,16 @@ def main():
         nf = 3 * (2 * l + 1)
         nc = (nf + 15) // 16
         for c in range(nc):
-            i1 = []
-            i2 = []
             c1 = []
             c2 = []
             for j in range(16):
                 f = 16 * c + j
                 if f >= nf:
-                    (t1, a1), (t2, a2) = (ZERO, 0.0), (ZERO, 0.0)
+                    (t1, a1), (t2, a2) = (0, 0.0), (0, 0.0)
                 else:
                     (t1, a1), (t2, a2) = lane_terms(l, f // 3, f % 3)
-                if l >= 2:
-                    a1 /= (l - 1)
-                    a2 /= (l - 1)
-                i1.append(t1)
-                i2.append(t2)
                 c1.append(a1)
                 c2.append(a2)
-            idx.append((l, c, i1, i2))
             coef.append((l, c, c1, c2))
         tot += nc
     ch0[NB] = tot
@@ -134,12 +127,14 @@ def main():
         iy += [str(min((16 * c + j) // 3, 31)) for j in range(16)]
     L += fmt_rows(iy, 16)
     w('};')
-    w('/* per chunk: P taps of the two terms, 2 x 16 lane indices into band l-1 (band order) */')
-    w('SHLI_GRADV_ALIGN static const int SHLI_GRADV_IDX[SHLI_GRADV_CHUNKS * 32] = {')
-    for l, c, i1, i2 in idx:
-        w('    /* l = %d, chunk %d */' % (l, c))
-        L += fmt_rows([str(v) for v in i1], 16)
-        L += fmt_rows([str(v) for v in i2], 16)
+    w('/* P taps of chunk c = 0..5 (tap 1, tap 2; 16 lanes each), plus 2l on the y lanes')
+    w('   (lane j of chunk c is component (16 c + j) % 3) */')
+    w('SHLI_GRADV_ALIGN static const int SHLI_GRADV_TAP[6 * 32] = {')
+    for c in range(6):
+        t1 = [tap_base((16 * c + j) // 3, (16 * c + j) % 3)[0] for j in range(16)]
+        t2 = [tap_base((16 * c + j) // 3, (16 * c + j) % 3)[1] for j in range(16)]
+        L += fmt_rows([str(v) for v in t1], 16)
+        L += fmt_rows([str(v) for v in t2], 16)
     w('};')
     w('/* per chunk: coefficients of the two terms, 2 x 16 */')
     w('SHLI_GRADV_ALIGN static const float SHLI_GRADV_COEF[SHLI_GRADV_CHUNKS * 32] = {')
