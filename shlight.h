@@ -23002,6 +23002,39 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_loop(int n, const float *y, float nx, float
   }
 }
 
+#if SHLIGHT_SIMD_EVAL
+/* shl_sh_eval_grad for 5..16 bands with AVX-512 (C only): 1 if |d|^2 is in [1e-30, 1e30] and
+   the result is written, 0 (nothing written) otherwise: zero, NaN, Inf, tiny or huge d take
+   the exact path. */
+SHLIGHT_CPU_INLINE int shli_sh_eval_grad_avx512(int n, const float d[3], float *out_y,
+                                                float (*out_grad)[3]) {
+  /* |d|^2 in [1e-30, 1e30] (not NaN): the double square root and division, which the whole
+     kernel waits on, replaced by rsqrt14 and one Newton step on the FMA residual, in double
+     (|d|^2 of floats to 2^-53, 1 / |d| to 6e-9, a tenth of a float ulp, so each component
+     of d / |d| is within about one float rounding, as on the exact path; a float prologue
+     was as fast but 2 ulp off, which the Horner forms of n = 5, 6 turn into 1e-6) */
+  __m128d xd = _mm_set_sd((double)d[0]);
+  __m128d yd = _mm_set_sd((double)d[1]);
+  __m128d zd = _mm_set_sd((double)d[2]);
+  __m128d td = _mm_fmadd_sd(xd, xd, _mm_fmadd_sd(yd, yd, _mm_mul_sd(zd, zd)));
+  double t = _mm_cvtsd_f64(td);
+  if (t >= 1.0e-30 && t <= 1.0e30) {
+    __m128d r0 = _mm_rsqrt14_sd(td, td);
+    __m128d e = _mm_fmsub_sd(_mm_mul_sd(td, r0), r0, _mm_set_sd(1.0));
+    __m128d rd = _mm_fnmadd_sd(_mm_mul_sd(r0, _mm_set_sd(0.5)), e, r0);
+    float fx = (float)_mm_cvtsd_f64(_mm_mul_sd(xd, rd));
+    float fy = (float)_mm_cvtsd_f64(_mm_mul_sd(yd, rd));
+    float fz = (float)_mm_cvtsd_f64(_mm_mul_sd(zd, rd));
+    float rf = (float)_mm_cvtsd_f64(rd);
+    shli_sh_eval_xyz(n, fx, fy, fz, out_y);
+    shli_sh_grad_avx512(n, out_y, fx, fy, fz, rf, 0, 0, 0, out_grad);
+    return 1;
+  }
+  return 0;
+}
+
+#endif
+
 /* Gradient of n bands from the values y at the unit direction (nx, ny, nz), ir = 1 / |d|. */
 SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir,
                                  float (*out_grad)[3]) {
@@ -23113,29 +23146,8 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
     return;
   }
 #if SHLIGHT_SIMD_EVAL
-  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS) {
-    /* |d|^2 in [1e-30, 1e30] (not NaN): the double square root and division, which the whole
-       kernel waits on, replaced by rsqrt14 and one Newton step on the FMA residual, in double
-       (|d|^2 of floats to 2^-53, 1 / |d| to 6e-9, a tenth of a float ulp, so each component
-       of d / |d| is within about one float rounding, as on the exact path; a float prologue
-       was as fast but 2 ulp off, which the Horner forms of n = 5, 6 turn into 1e-6) */
-    __m128d xd = _mm_set_sd((double)d[0]);
-    __m128d yd = _mm_set_sd((double)d[1]);
-    __m128d zd = _mm_set_sd((double)d[2]);
-    __m128d td = _mm_fmadd_sd(xd, xd, _mm_fmadd_sd(yd, yd, _mm_mul_sd(zd, zd)));
-    double t = _mm_cvtsd_f64(td);
-    if (t >= 1.0e-30 && t <= 1.0e30) {
-      __m128d r0 = _mm_rsqrt14_sd(td, td);
-      __m128d e = _mm_fmsub_sd(_mm_mul_sd(td, r0), r0, _mm_set_sd(1.0));
-      __m128d rd = _mm_fnmadd_sd(_mm_mul_sd(r0, _mm_set_sd(0.5)), e, r0);
-      float fx = (float)_mm_cvtsd_f64(_mm_mul_sd(xd, rd));
-      float fy = (float)_mm_cvtsd_f64(_mm_mul_sd(yd, rd));
-      float fz = (float)_mm_cvtsd_f64(_mm_mul_sd(zd, rd));
-      float rf = (float)_mm_cvtsd_f64(rd);
-      shli_sh_eval_xyz(n, fx, fy, fz, out_y);
-      shli_sh_grad_avx512(n, out_y, fx, fy, fz, rf, 0, 0, 0, out_grad);
-      return;
-    }
+  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && shli_sh_eval_grad_avx512(n, d, out_y, out_grad)) {
+    return;
   }
 #endif
 #if SHLIGHT_REAL_WIDE

@@ -6405,29 +6405,8 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
     return;
   }
 #if SHLIGHT_SIMD_EVAL
-  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS) {
-    /* |d|^2 in [1e-30, 1e30] (not NaN): the double square root and division, which the whole
-       kernel waits on, replaced by rsqrt14 and one Newton step on the FMA residual, in double
-       (|d|^2 of floats to 2^-53, 1 / |d| to 6e-9, a tenth of a float ulp, so each component
-       of d / |d| is within about one float rounding, as on the exact path; a float prologue
-       was as fast but 2 ulp off, which the Horner forms of n = 5, 6 turn into 1e-6) */
-    __m128d xd = _mm_set_sd((double)d[0]);
-    __m128d yd = _mm_set_sd((double)d[1]);
-    __m128d zd = _mm_set_sd((double)d[2]);
-    __m128d td = _mm_fmadd_sd(xd, xd, _mm_fmadd_sd(yd, yd, _mm_mul_sd(zd, zd)));
-    double t = _mm_cvtsd_f64(td);
-    if (t >= 1.0e-30 && t <= 1.0e30) {
-      __m128d r0 = _mm_rsqrt14_sd(td, td);
-      __m128d e = _mm_fmsub_sd(_mm_mul_sd(td, r0), r0, _mm_set_sd(1.0));
-      __m128d rd = _mm_fnmadd_sd(_mm_mul_sd(r0, _mm_set_sd(0.5)), e, r0);
-      float fx = (float)_mm_cvtsd_f64(_mm_mul_sd(xd, rd));
-      float fy = (float)_mm_cvtsd_f64(_mm_mul_sd(yd, rd));
-      float fz = (float)_mm_cvtsd_f64(_mm_mul_sd(zd, rd));
-      float rf = (float)_mm_cvtsd_f64(rd);
-      shli_sh_eval_xyz(n, fx, fy, fz, out_y);
-      shli_sh_grad_avx512(n, out_y, fx, fy, fz, rf, 0, 0, 0, out_grad);
-      return;
-    }
+  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && shli_sh_eval_grad_avx512(n, d, out_y, out_grad)) {
+    return;
   }
 #endif
 #if SHLIGHT_REAL_WIDE
