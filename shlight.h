@@ -24160,6 +24160,8 @@ shli_cap_light_grad_avx512(int n, const shli_real *g, shli_real wgt, shli_real g
   shli_real dl = 0.0;
   shli_real dn;
   shli_real q = 1.0 / (1.0 + al);
+  shli_real nk;
+  shli_real ln;
   float bw[4 * SHLIGHT_UNROLLED_BANDS];
   float ys[SHLIGHT_UNROLLED_BANDS * SHLIGHT_UNROLLED_BANDS];
   float wg[6];
@@ -24173,15 +24175,18 @@ shli_cap_light_grad_avx512(int n, const shli_real *g, shli_real wgt, shli_real g
   if (al > 0.0) {
     h = fw * ir / al;
   }
+  nk = -fw * ir;
+  ln = 0.0;
   for (l = 0; l < n; ++l) {
     if (l > 0) {
       q = dl * SHLI_ZH_TAB[5 * l + 2];
     }
     /* kv, then a = kg, b = ka - l kg, e = kb of shli_sh_grad_avx512 */
     bw[4 * l] = (float)(fw * q);
-    bw[4 * l + 1] = (float)(-fw * q * ir);
-    bw[4 * l + 2] = (float)(h * pl + fl * fw * q * ir);
+    bw[4 * l + 1] = (float)(nk * q);
+    bw[4 * l + 2] = (float)(h * pl - ln * q);
     bw[4 * l + 3] = (float)(f * q);
+    ln = ln + nk;
     dn = dm + (2.0 * fl + 1.0) * pl;
     pn = SHLI_ZH_TAB[5 * l] * al * pl - SHLI_ZH_TAB[5 * l + 1] * pm;
     dm = dl;
