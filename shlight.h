@@ -15415,6 +15415,7 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_avx512(int n, const float *y, float nx, flo
   float *o = &out_grad[0][0];
   __m512 vx = _mm512_set1_ps(nx), vy = _mm512_set1_ps(ny), vz = _mm512_set1_ps(nz);
   __m512 u0, u1, u2, s0, s1, s2, w0, w1, w2, p0, p1, q0, q1, r, yp0, yp1, av;
+  __m512 yb[8];
   __m512i ly0, ly1, ly2;
   __m512i iy0 = _mm512_loadu_si512((const void *)(SHLI_GRADV_IY));
   __m512i iy1 = _mm512_loadu_si512((const void *)(SHLI_GRADV_IY + 16));
@@ -15422,6 +15423,16 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_avx512(int n, const float *y, float nx, flo
   __m512i iy3, iy4, iy5;
   float y0 = y[0];
   int l, nc, l1 = n < 8 ? n : 8;
+  /* bands 1..7 of Y before the first store: a load whose address matches an earlier store's
+     modulo 4096 waits for it (out_grad 32 KiB after y, one build of the bench: n = 10 80 -> 102
+     ns; with these loads first 80.6); bands 8..15 (two zmm each) would spill */
+  SHLI_UNROLL_BANDS
+  for (l = 0; l < 8; ++l) {
+    yb[l] = _mm512_setzero_ps();
+    if (l > 0 && l < n) {
+      yb[l] = _mm512_maskz_loadu_ps(SHLI_GRADV_MASK(SHLI_GRADV_YM + 2 * l), y + l * l);
+    }
+  }
   u0 = SHLI_GRADV_AOS(vx, vy, vz);
   u1 = SHLI_GRADV_AOS(vy, vz, vx);
   u2 = SHLI_GRADV_AOS(vz, vx, vy);
@@ -15450,7 +15461,7 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_avx512(int n, const float *y, float nx, flo
   for (l = 1; l < l1; ++l) {
     const float *cf = SHLI_GRADV_COEF + 32 * SHLI_GRADV_CH0[l];
     float *ol = o + 3 * l * l;
-    q0 = _mm512_maskz_loadu_ps(SHLI_GRADV_MASK(SHLI_GRADV_YM + 2 * l), y + l * l);
+    q0 = yb[l];
     if (bw) {
       av = _mm512_set1_ps(bw[4 * l + 1]);
       SHLI_GRADV_BAND(l, bw[4 * l + 2], bw[4 * l + 3]);
