@@ -24252,12 +24252,11 @@ SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], 
    d -> r+ (1 / alpha: exact, large, finite); on or inside the sphere the radial term is 0
    (the hemisphere extension is constant along rays from c); x == c, r <= 0 / NaN, NaN or
    infinite positions: zero gradient (values as shl_sphere_light). out_sh: n * n floats,
-   out_grad: n * n float[3]. Cost: the basis values and gradient at the unit axis (the
-   passes of shl_sh_eval_grad without its input normalisation), the O(n) recurrence with 4
-   weights per band and 7 flops per coefficient (AVX-512, n <= 16: 16 floats at a time):
-   2.5 / 2.7 / 3.3 times shl_sphere_light at n = 2 / 8 / 16, 8.3 / 10.3 at n = 32 / 64 (the
-   basis gradient alone costs 1.6 - 2.0 times the whole value-only light from n = 4 up and
-   6 - 8 times at n = 32, 64; bench/out/light.md). */
+   out_grad: n * n float[3]. Cost: the basis values at the unit axis, the O(n) recurrence with
+   4 weights per band, and the basis gradient pass with those weights folded in (AVX-512,
+   n <= 16; otherwise the scalar gradient and 7 flops per coefficient): 2.4 / 2.5 / 2.7 times
+   shl_sphere_light at n = 2 / 8 / 16 (1.95 at n = 3), 8.3 / 9.9 at n = 32 / 64 (the scalar
+   gradient loop; bench/out/light.md, Zen 4). */
 SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c[3], float r,
                                           float *out_sh, float (*out_grad)[3]) {
   shli_real g[8];
