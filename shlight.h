@@ -15400,15 +15400,17 @@ SHLI_GRADV_ALIGN static const float SHLI_GRADV_COEF[SHLI_GRADV_CHUNKS * 32] = {
 #define SHLI_GRADV_AOS(a, b, c)                                                                    \
   _mm512_mask_blend_ps((__mmask16)0x4924, _mm512_mask_blend_ps((__mmask16)0x2492, (a), (b)), (c))
 
-/* AVX-512 gradient pass for 2..16 bands (C only), with optional per-band weights: from Y (y,
+/* AVX-512 gradient pass for 1..16 bands (C only), with optional per-band weights: from Y (y,
    n * n floats) at the unit direction u = (nx, ny, nz), for coefficient i of band l
      out_grad[i] = a_l grad H_l^m(u) + (b_l u + e_l v) Y_i
    (H_l the solid harmonic |d|^l Y_l; its Cartesian derivatives are at most two terms of band
    l-1, tables by tools/gen_grad_simd.py). bw == NULL: a_l = ir, b_l = -l ir, e_l = 0, the
    gradient of Y(d / |d|) with ir = 1 / |d|, and out_y is not written. Otherwise bw[4 l ..] =
-   (kv_l, a_l, b_l, e_l), v = v3 (3 floats; NULL: e_l = 0) and out_y[i] = kv_l Y_i (out_y may
-   be y): the light kernels' weights, at no cost per output. Lanes follow the output array, so
-   each 16-float chunk of the AoS gradient is three permutes, two FMAs and a product. */
+   (kv_l, a_l, b_l, e_l), v = v3 (3 floats; NULL: e_l = 0) and out_y[i] = kv_l Y_i: the light
+   kernels' weights, at no cost per output (out_y may be y, but from band 8 each band's load
+   then waits on the previous band's store: the lights pass a copy). Lanes follow the output
+   array, so each 16-float chunk of the AoS gradient is three permutes, two FMAs and a
+   product. */
 SHLIGHT_CPU_INLINE void shli_sh_grad_avx512(int n, const float *y, float nx, float ny, float nz,
                                             float ir, const float *bw, const float *v3,
                                             float *out_y, float (*out_grad)[3]) {
@@ -24061,16 +24063,11 @@ SHLIGHT_INLINE void shli_cap_light_apply(int n, const shli_real *g, shli_real wg
 }
 
 /* Y and the unit-radius gradient scaled by ir at the unit direction (nx, ny, nz): the
-   evaluation and gradient passes of shl_sh_eval_grad without its input normalisation. */
+   evaluation and gradient passes of shl_sh_eval_grad without its input normalisation (the
+   portable path of the lights; with AVX-512 they take shli_sh_grad_avx512 up to 16 bands). */
 SHLIGHT_INLINE void shli_sh_eval_grad_unit(int n, float nx, float ny, float nz, float ir,
                                            float *out_y, float (*out_grad)[3]) {
   shli_sh_eval_xyz(n, nx, ny, nz, out_y);
-#if SHLIGHT_SIMD_EVAL
-  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS) {
-    shli_sh_grad_avx512(n, out_y, nx, ny, nz, ir, 0, 0, 0, out_grad);
-    return;
-  }
-#endif
   shli_sh_grad(n, out_y, nx, ny, nz, ir, out_grad);
 }
 

@@ -65,12 +65,6 @@ void shli_sh_eval_grad_unit(int n, float nx, float ny, float nz, float ir,
                             out float out_y[SHLIGHT_MAX_COEFFS],
                             out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   shli_sh_eval_xyz(n, nx, ny, nz, out_y);
-#if SHLIGHT_SIMD_EVAL
-  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS) {
-    shli_sh_grad_avx512(n, out_y, nx, ny, nz, ir, 0, 0, 0, out_grad);
-    return;
-  }
-#endif
   shli_sh_grad(n, out_y, nx, ny, nz, ir, out_grad);
 }
 
