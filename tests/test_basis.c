@@ -1356,10 +1356,19 @@ static void test_hard_theta_1e7(void) {
 }
 
 /* Huge and tiny |d| for the paths that normalise (gradient and accurate): 1e30, 1e-30 (and
- * 1e20, 1e-20, the fuzzer's range); finite and correct after scaling by |d|.  Near the float
+ * 1e20, 1e-20, the fuzzer's range); finite and correct after scaling by |d|.  |d| just inside
+ * and just outside [1e-15, 1e15], where shl_sh_eval_grad switches from its rsqrt14 prologue
+ * (AVX-512 builds) to the exact scaled one: both sides held to the same bounds.  Near the float
  * limits (|d| ~ 1.7e38 and 4.7e-38): values correct, everything finite. */
 static void test_hard_huge_tiny(void) {
-  static const double scales[] = {1e30, 1e-30, 1e20, 1e-20};
+  static const double scales[] = {1e30,
+                                  1e-30,
+                                  1e20,
+                                  1e-20,
+                                  1e15 * (1 - 1e-6),
+                                  1e15 * (1 + 1e-6),
+                                  1e-15 * (1 - 1e-6),
+                                  1e-15 * (1 + 1e-6)};
   int t, j, s;
   make_sets();
   for (t = 0; t < NG; t++) {
@@ -1367,7 +1376,7 @@ static void test_hard_huge_tiny(void) {
     one_stats o;
     if (n > MAXB) continue;
     memset(&o, 0, sizeof o);
-    for (s = 0; s < 4; s++)
+    for (s = 0; s < 8; s++)
       for (j = 0; j < 6; j++) {
         double v[3];
         float d[3];
