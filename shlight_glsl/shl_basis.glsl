@@ -5,7 +5,6 @@
 #define SHL_BASIS_GLSL
 
 int shli_bands(int n) {
-  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
   if (n > SHLIGHT_MAX_BANDS) {
     return SHLIGHT_MAX_BANDS;
   }
@@ -4756,7 +4755,7 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
   }
 }
 
-void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_eval_big(int n, float dx, float dy, float dz, out float out_y[SHLIGHT_MAX_COEFFS]) {
   shli_real x = SHLIGHT_REAL(dx);
   shli_real y = SHLIGHT_REAL(dy);
   shli_real z = SHLIGHT_REAL(dz);
@@ -4764,9 +4763,59 @@ void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIG
   shli_real k;
   shli_real az;
   float sg;
+#if SHLIGHT_SIMD_EVAL
+  if (n <= SHLIGHT_UNROLLED_BANDS) {
+#ifdef __AVX512VL__
+    shli_sh_eval_avx512_16y(n, dx, dy, dz, out_y);
+#else
+    shli_sh_eval_avx512_16(n, dx, dy, dz, out_y);
+#endif
+  } else {
+    shli_sh_eval_avx512(n, dx, dy, dz, out_y);
+  }
+  return;
+#endif
+  e = x * x + y * y + z * z - 1.0;
+  k = 1.0 + e * (-0.5 + 0.375 * e);
+  x = x * k;
+  y = y * k;
+  z = z * k;
+  az = SHLIGHT_ABSR(z);
+  sg = SHLIGHT_SIGN1(z);
+  shli_sh_core(n, x, y, z, (x * x + y * y) / (1.0 + az), sg, out_y);
+}
+
+void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIGHT_MAX_COEFFS]) {
+  float q = dx * dx + dy * dy + dz * dz;
+  shli_real x;
+  shli_real y;
+  shli_real z;
+  shli_real r;
   n = shli_bands(n);
   if (n < 1) {
     return;
+  }
+  if (!(SHLIGHT_ABSF(q - 1.0f) <= 1.0e-6f)) {
+    /* not unit to float precision (|d|^2 of a float-normalised d is within 4e-7 of 1): zero,
+       NaN or infinite d becomes (0, 0, 1), any other d is normalised (scaled by its largest
+       component first, so denormal and huge d work) */
+    x = SHLIGHT_ABSR(SHLIGHT_REAL(dx));
+    y = SHLIGHT_ABSR(SHLIGHT_REAL(dy));
+    z = SHLIGHT_ABSR(SHLIGHT_REAL(dz));
+    r = SHLIGHT_MAXR(x, SHLIGHT_MAXR(y, z));
+    if (!(x + y + z > 0.0 && r <= SHLIGHT_REAL_MAX)) {
+      dx = 0.0f;
+      dy = 0.0f;
+      dz = 1.0f;
+    } else {
+      x = SHLIGHT_REAL(dx) / r;
+      y = SHLIGHT_REAL(dy) / r;
+      z = SHLIGHT_REAL(dz) / r;
+      r = SHLIGHT_SQRTR(x * x + y * y + z * z);
+      dx = SHLIGHT_FLOAT(x / r);
+      dy = SHLIGHT_FLOAT(y / r);
+      dz = SHLIGHT_FLOAT(z / r);
+    }
   }
 #if SHLIGHT_SIMD_EVAL
 #ifdef __AVX512VL__
@@ -4812,26 +4861,11 @@ void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIG
   default:
     break;
   }
-#if SHLIGHT_SIMD_EVAL
-  if (n <= SHLIGHT_UNROLLED_BANDS) {
-#ifdef __AVX512VL__
-    shli_sh_eval_avx512_16y(n, dx, dy, dz, out_y);
+#if SHLIGHT_OUTLINE_EVAL
+  shli_sh_eval_outline(n, dx, dy, dz, out_y);
 #else
-    shli_sh_eval_avx512_16(n, dx, dy, dz, out_y);
+  shli_sh_eval_big(n, dx, dy, dz, out_y);
 #endif
-  } else {
-    shli_sh_eval_avx512(n, dx, dy, dz, out_y);
-  }
-  return;
-#endif
-  e = x * x + y * y + z * z - 1.0;
-  k = 1.0 + e * (-0.5 + 0.375 * e);
-  x = x * k;
-  y = y * k;
-  z = z * k;
-  az = SHLIGHT_ABSR(z);
-  sg = SHLIGHT_SIGN1(z);
-  shli_sh_core(n, x, y, z, (x * x + y * y) / (1.0 + az), sg, out_y);
 }
 
 void shl_sh_eval(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {

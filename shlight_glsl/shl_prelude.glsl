@@ -25,6 +25,7 @@
 #endif
 #define SHLIGHT_SIGN1(x) ((x) < 0.0 ? -1.0 : 1.0)
 #define SHLIGHT_SIMD_EVAL 0
+#define SHLIGHT_OUTLINE_EVAL 0 /* C: the large band counts run out of line, in the implementation */
 #define SHLIGHT_FTOI(x) int(x)
 #define SHLIGHT_ITOR(i) float(i)
 #define SHLIGHT_MAXR(a, b) max((a), (b))
@@ -56,5 +57,4 @@
 #define SHLIGHT_LANES 1
 #define SHLIGHT_FAST_PAD (SHLIGHT_CLIP_MAX + SHLIGHT_LANES)
 #define SHLIGHT_HALF_K 8
-#define SHLIGHT_ASSERT(x)
 #endif

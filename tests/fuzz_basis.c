@@ -27,7 +27,6 @@
  *     tests/fuzz_replay.c tests/fuzz_basis.c -lm && build/tests/fuzz_replay_asan tests/corpus/basis
  */
 /* Release-mode contract (n out of range is clamped, not asserted): */
-#define SHLIGHT_ASSERT(x) ((void)0)
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
 

@@ -23,7 +23,6 @@
  *   build/tests/fuzz_replay_brdftab tests/corpus/brdftab
  * tests/corpus/brdftab/ is written by tests/gen_brdftab_corpus.py (valid and broken files).
  */
-#define SHLIGHT_ASSERT(x) ((void)0)
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
 

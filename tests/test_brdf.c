@@ -16,8 +16,6 @@
  *    ring above the horizon, acos(-cot(beta) cot(psi)) / pi), panels graded toward the kink.
  * Error model: float outputs carry 0.5 ulp; inputs are floats converted exactly. */
 /* n out of range: counted instead of aborting (the release behaviour is what is tested) */
-static int g_assert_hits;
-#define SHLIGHT_ASSERT(x) ((void)((x) || (g_assert_hits++, 0)))
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
 #include "tl.h"

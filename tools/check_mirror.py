@@ -924,6 +924,14 @@ def run(root, quiet, require_f=False):
     kernels = {m: [] for m in modules}
     tables = {m: [] for m in modules}
     all_kernels = []
+    for d, _ in cdecls:
+        # a function declared SHLIGHT_API in the declaration part is C only (defined with
+        # SHLIGHT_IMPLEMENTATION): kernels may call it under a C-only #if branch
+        if d and d[0].text == "SHLIGHT_API":
+            for k in range(len(d) - 1):
+                if d[k].kind == "id" and re.match(r"shli?_", d[k].text) and is_op(d[k + 1], "("):
+                    CPU_ONLY.add(d[k].text)
+                    break
     for f in cfuncs:
         if "SHLIGHT_CPU_INLINE" in [t.text for t in f.prefix]:
             CPU_ONLY.add(f.name)  # C-only helper (run-time loops): no GLSL twin
