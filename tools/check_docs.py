@@ -150,7 +150,7 @@ def main(argv):
         if log and (not ok or verbose):
             print('\n'.join('     ' + l for l in log.rstrip().split('\n')[:30]))
 
-    internal = re.compile(r'[Ss]eed 00[0-9]|\b[Ii]ssues? #?[0-9]+|\bMATH\.md')
+    internal = re.compile(r'[Ss]eed 00[0-9]|\b[Ii]ssue #?[0-9]+|\bMATH\.md')
     for path in files:
         path = os.path.abspath(path)
         bl = blocks(path)
