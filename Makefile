@@ -160,11 +160,11 @@ $(BUILD)/tests/test_ssf_glsl: tests/test_ssf_glsl.c shlight.h tests/tl.h $(GL_SR
 	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
 	    -o $@ tests/test_ssf_glsl.c $(GL_SRCS) $(GL_LIBS) -lm
 
-# the README's first set-up command: render the default scene (every pass, GL and CPU) to out/
+# docs/renderer.md's first command: render the default scene (every pass, GL and CPU) to out/
 .PHONY: render-example render-results
 render-example: $(BUILD)/render/shlrender
 	$(BUILD)/render/shlrender --scene cornell --size 256x192 --gt 1 --out out
-# the README's results table and docs/ images: every scene at 160x120 with the full ground
+# docs/renderer.md's results table and images: every scene at 160x120 with the full ground
 # truth (opt-in: minutes on 2 cores); writes build/render/results/*.md and PNGs
 render-results: $(BUILD)/render/shlrender
 	@mkdir -p $(BUILD)/render/results

@@ -11,7 +11,7 @@
 static void usage(FILE *f) {
   fprintf(f, "usage: shlrender [options]\n"
              "  --scene NAME|FILE   built-in cornell (default), spheres, manylights, glossy; or a\n"
-             "                      scene file (text format: see README, render/rd_scene.c)\n"
+             "                      scene file (text format: docs/renderer.md, render/rd_scene.c)\n"
              "  --pass LIST         comma-separated: grid, area, hvl, ssf, all (default all);\n"
              "                      preview (head-light G-buffer view)\n"
              "  --size WxH          image size (default 256x192)\n"

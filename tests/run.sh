@@ -98,6 +98,9 @@ step mirror-checker-selftest bash tools/tests_mirror/run.sh
 step glslang-450-330-300es bash tools/glsl_validate.sh
 step format-check $MAKE -s format-check
 step example $MAKE -s example
+# every code block of README.md and docs/*.md: C programs built with ASan/UBSan and run, GLSL
+# through glslang; the API index names every public function
+step docs-examples $PY tools/check_docs.py
 step compile-matrix $MAKE -s -j2 compile-matrix
 step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/tests/test_glsl \
   build/tests/test_gl_smoke build/tests/fuzz_replay build/tests/native/test_basis \
