@@ -15568,41 +15568,9 @@ SHLIGHT_INLINE void shli_sh_eval_big(int n, float dx, float dy, float dz, float 
   shli_sh_core(n, x, y, z, (x * x + y * y) / (1.0 + az), sg, out_y);
 }
 
-/* Y_i at the direction (dx, dy, dz): the one evaluation path of shl_sh_eval and
-   shl_sh_eval_grad (n <= 6: float Horner forms, n = 4..6 across the outputs with AVX-512VL;
-   above: shli_sh_eval_big). Input contract as shl_sh_eval. */
-SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float *out_y) {
-  float q = dx * dx + dy * dy + dz * dz;
-  shli_real x;
-  shli_real y;
-  shli_real z;
-  shli_real r;
-  n = shli_bands(n);
-  if (n < 1) {
-    return;
-  }
-  if (!(SHLIGHT_ABSF(q - 1.0f) <= 1.0e-6f)) {
-    /* not unit to float precision (|d|^2 of a float-normalised d is within 4e-7 of 1): zero,
-       NaN or infinite d becomes (0, 0, 1), any other d is normalised (scaled by its largest
-       component first, so denormal and huge d work) */
-    x = SHLIGHT_ABSR(SHLIGHT_REAL(dx));
-    y = SHLIGHT_ABSR(SHLIGHT_REAL(dy));
-    z = SHLIGHT_ABSR(SHLIGHT_REAL(dz));
-    r = SHLIGHT_MAXR(x, SHLIGHT_MAXR(y, z));
-    if (!(x + y + z > 0.0 && r <= SHLIGHT_REAL_MAX)) {
-      dx = 0.0f;
-      dy = 0.0f;
-      dz = 1.0f;
-    } else {
-      x = SHLIGHT_REAL(dx) / r;
-      y = SHLIGHT_REAL(dy) / r;
-      z = SHLIGHT_REAL(dz) / r;
-      r = SHLIGHT_SQRTR(x * x + y * y + z * z);
-      dx = SHLIGHT_FLOAT(x / r);
-      dy = SHLIGHT_FLOAT(y / r);
-      dz = SHLIGHT_FLOAT(z / r);
-    }
-  }
+/* Y_i at a unit direction (dx, dy, dz) for n = 1..6: float Horner forms, n = 4..6 across the
+   outputs with AVX-512VL. */
+SHLIGHT_INLINE void shli_sh_eval_small(int n, float dx, float dy, float dz, float *out_y) {
 #if SHLIGHT_SIMD_EVAL
 #ifdef __AVX512VL__
   if (n >= 4 && n <= 6) {
@@ -15647,10 +15615,60 @@ SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float 
   default:
     break;
   }
+}
+
+/* Y_i at the direction (dx, dy, dz), any d (the contract of shl_sh_eval), n in 1..max. */
+SHLIGHT_INLINE void shli_sh_eval_any(int n, float dx, float dy, float dz, float *out_y) {
+  float q = dx * dx + dy * dy + dz * dz;
+  shli_real x;
+  shli_real y;
+  shli_real z;
+  shli_real r;
+  if (!(SHLIGHT_ABSF(q - 1.0f) <= 1.0e-6f)) {
+    /* not unit to float precision (|d|^2 of a float-normalised d is within 4e-7 of 1): zero,
+       NaN or infinite d becomes (0, 0, 1), any other d is normalised (scaled by its largest
+       component first, so denormal and huge d work) */
+    x = SHLIGHT_ABSR(SHLIGHT_REAL(dx));
+    y = SHLIGHT_ABSR(SHLIGHT_REAL(dy));
+    z = SHLIGHT_ABSR(SHLIGHT_REAL(dz));
+    r = SHLIGHT_MAXR(x, SHLIGHT_MAXR(y, z));
+    if (!(x + y + z > 0.0 && r <= SHLIGHT_REAL_MAX)) {
+      dx = 0.0f;
+      dy = 0.0f;
+      dz = 1.0f;
+    } else {
+      x = SHLIGHT_REAL(dx) / r;
+      y = SHLIGHT_REAL(dy) / r;
+      z = SHLIGHT_REAL(dz) / r;
+      r = SHLIGHT_SQRTR(x * x + y * y + z * z);
+      dx = SHLIGHT_FLOAT(x / r);
+      dy = SHLIGHT_FLOAT(y / r);
+      dz = SHLIGHT_FLOAT(z / r);
+    }
+  }
+  if (n <= 6) {
+    shli_sh_eval_small(n, dx, dy, dz, out_y);
+  } else {
+    shli_sh_eval_big(n, dx, dy, dz, out_y);
+  }
+}
+
+/* Y_i at the direction (dx, dy, dz): the one evaluation path of shl_sh_eval and
+   shl_sh_eval_grad. In C, a unit d with n <= 6 runs inline and everything else out of line
+   (shli_sh_eval_outline, the implementation's shli_sh_eval_any). */
+SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float *out_y) {
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
 #if SHLIGHT_OUTLINE_EVAL
+  if (n <= 6 && SHLIGHT_ABSF(dx * dx + dy * dy + dz * dz - 1.0f) <= 1.0e-6f) {
+    shli_sh_eval_small(n, dx, dy, dz, out_y);
+    return;
+  }
   shli_sh_eval_outline(n, dx, dy, dz, out_y);
 #else
-  shli_sh_eval_big(n, dx, dy, dz, out_y);
+  shli_sh_eval_any(n, dx, dy, dz, out_y);
 #endif
 }
 
@@ -29330,7 +29348,7 @@ SHLIGHT_API shl_result shl_brdf_table_build_merl(shl_brdf_table *t, const shl_me
 #define SHLIGHT_IMPLEMENTATION_DONE
 
 SHLIGHT_API void shli_sh_eval_outline(int n, float dx, float dy, float dz, float *out_y) {
-  shli_sh_eval_big(n, dx, dy, dz, out_y);
+  shli_sh_eval_any(n, dx, dy, dz, out_y);
 }
 
 /* SIMD layer of the batch kernels: SHLI_V is one vector of SHLI_W floats. */
