@@ -343,16 +343,17 @@ def gen_grad(n):
 def gen_grad_any(nmax):
     """shli_sh_grad(n, y, nx, ny, nz, ir, out_grad): any 1 <= n <= nmax in one body, band l
     under `if (n > l)` and `#if SHLIGHT_MAX_BANDS > l`; each output one SHLIGHT_SET3 (a vec3
-    store in GLSL, not three component writes), the products c (y_j ir) rounded as before."""
+    store in GLSL, not three component writes), the products c (y_j ir) rounded as before, each
+    output times ib (1: exact; shl_sh_eval_grad's second factor of 1 / |d| for tiny |d|)."""
     L = []
     w = L.append
     w('SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir,')
-    w('                                 float (*out_grad)[3]) {')
+    w('                                 float ib, float (*out_grad)[3]) {')
     w('  float lr;')
     w('  float q;')
     w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
     w('  if (n > SHLIGHT_UNROLLED_BANDS) {')
-    w('    shli_sh_grad_loop(n, y, nx, ny, nz, ir, out_grad);')
+    w('    shli_sh_grad_loop(n, y, nx, ny, nz, ir, ib, out_grad);')
     w('    return;')
     w('  }')
     w('#endif')
@@ -369,7 +370,7 @@ def gen_grad_any(nmax):
             ex = []
             for g, nk in zip(grad_terms(l, m), ('nx', 'ny', 'nz')):
                 expr = ' + '.join('%s * (y[%d] * ir)' % (lit_f(cf), j) for cf, j in g)
-                ex.append(('%s - q * %s' % (expr, nk)) if expr else ('-q * %s' % nk))
+                ex.append(('(%s - q * %s) * ib' % (expr, nk)) if expr else ('-q * %s * ib' % nk))
             w('    SHLIGHT_SET3(out_grad[%d], %s, %s, %s);' % (i, ex[0], ex[1], ex[2]))
         w('  }')
         w('#endif')
@@ -715,6 +716,74 @@ def gen_light_idx():
             ['#endif'])
 
 
+def gen_band_weights(nmax):
+    """>>light, mirrored: the per-band weights of a cap light applied to Y and its gradient,
+    io_sh[i] = kv_l y, io_grad[i] = kg_l io_grad[i] + (ka_l wg[0..2] + kb_l wg[3..5]) y (y the
+    old io_sh[i]), as one constant-trip loop per band (unrolled by shader compilers into
+    constant indices: a run-time loop over n * n outputs would send the arrays to memory);
+    and shli_sh_zero_grad, zeros the same way."""
+    L = []
+    w = L.append
+    w('SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg, const float *ka,')
+    w('                                         const float *kb, const float *wg, float *io_sh,')
+    w('                                         float (*io_grad)[3]) {')
+    w('  float y;')
+    w('  int i;')
+    w('  int l;')
+    w('  l = 0;')
+    w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
+    w('  for (l = SHLIGHT_UNROLLED_BANDS; l < n; ++l) {')
+    w('    for (i = l * l; i < (l + 1) * (l + 1); ++i) {')
+    body = ['y = io_sh[i];', 'io_sh[i] = kv[l] * y;',
+            'SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,',
+            '             kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,',
+            '             kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);']
+    for b in body:
+        w('      ' + b)
+    w('    }')
+    w('  }')
+    w('#endif')
+    for l in range(nmax):
+        ind = '  '
+        if l > 0:
+            w('#if SHLIGHT_MAX_BANDS > %d' % l)
+            w('  if (n > %d) {' % l)
+            ind = '    '
+        w(ind + 'l = %d;' % l)
+        w(ind + 'for (i = %d; i < %d; ++i) {' % (l * l, (l + 1) * (l + 1)))
+        for b in body:
+            w(ind + '  ' + b)
+        w(ind + '}')
+        if l > 0:
+            w('  }')
+            w('#endif')
+    w('}')
+    w('')
+    w('SHLIGHT_INLINE void shli_sh_zero_grad(int n, float *out_sh, float (*out_grad)[3]) {')
+    w('  int i;')
+    w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
+    w('  for (i = SHLIGHT_UNROLLED_BANDS * SHLIGHT_UNROLLED_BANDS; i < n * n; ++i) {')
+    w('    out_sh[i] = 0.0f;')
+    w('    SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);')
+    w('  }')
+    w('#endif')
+    for l in range(nmax):
+        ind = '  '
+        if l > 0:
+            w('#if SHLIGHT_MAX_BANDS > %d' % l)
+            w('  if (n > %d) {' % l)
+            ind = '    '
+        w(ind + 'for (i = %d; i < %d; ++i) {' % (l * l, (l + 1) * (l + 1)))
+        w(ind + '  out_sh[i] = 0.0f;')
+        w(ind + '  SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);')
+        w(ind + '}')
+        if l > 0:
+            w('  }')
+            w('#endif')
+    w('}')
+    return L
+
+
 def c_regions():
     tab, diagv = gen_tables()
     R = {}
@@ -743,7 +812,7 @@ def c_regions():
                                    zh_table(MAX_BANDS), lit_d, 5)
     import gen_grad_simd
     R['gradv'] = gen_grad_simd.main()
-    R['light_idx'] = gen_light_idx()
+    R['light_idx'] = gen_light_idx() + [''] + gen_band_weights(UNROLLED)
     lt = gen_lane_table()
     ls = gen_lane_table_scaled()
     pco, ptap, podd = gen_poly_lanes()
@@ -768,7 +837,9 @@ ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
                'v': 'SHLIGHT_POLYGON_MAX', 'io_px': 'SHLIGHT_CLIP_MAX', 'io_py': 'SHLIGHT_CLIP_MAX',
                'io_pz': 'SHLIGHT_CLIP_MAX', 'out_rp': '3', 'out_np': '1',
                'out_idx': '4', 'out_w': '4', 'tab': 'SHLIGHT_BRDF_TABLE_FLOATS',
-               'out_range': '2', 'io_split': 'SHLIGHT_HALF_K', 'io_am': '2', 'out_par': '5'}
+               'out_range': '2', 'io_split': 'SHLIGHT_HALF_K', 'io_am': '2', 'out_par': '5',
+               'kv': 'SHLIGHT_MAX_BANDS', 'kg': 'SHLIGHT_MAX_BANDS', 'ka': 'SHLIGHT_MAX_BANDS',
+               'kb': 'SHLIGHT_MAX_BANDS', 'wg': '6'}
 
 
 def glsl_param(prm, fname):
