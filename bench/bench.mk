@@ -114,3 +114,8 @@ bench-solid-float: build/bench/solid_angle_float
 
 build/bench/bench_beckmann: tests/ref/arearef.h tests/ref/ggxcases.h
 $(eval $(call bench_area,beckmann))
+
+# GLSL compile and run budgets on the headless GL context (bench/glsl_budget.sh)
+build/bench/glsl_budget: bench/glsl_budget.c $(GL_SRCS) $(GL_HDRS)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(GL_CFLAGS) -o $@ bench/glsl_budget.c $(GL_SRCS) $(LDFLAGS) $(GL_LIBS)

@@ -4,6389 +4,1232 @@
 #ifndef SHL_GRADIENT_GLSL
 #define SHL_GRADIENT_GLSL
 
-#if SHLIGHT_MAX_BANDS >= 1
-void shli_sh_grad_1(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  SHLIGHT_UNUSED(y);
-  SHLIGHT_UNUSED(nx);
-  SHLIGHT_UNUSED(ny);
-  SHLIGHT_UNUSED(nz);
-  SHLIGHT_UNUSED(ir);
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 2
-void shli_sh_grad_2(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[1];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 1; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 3
-void shli_sh_grad_3(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[4];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 4; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-  lr = 2.0f * ir;
-  q = lr * y[4];
-  out_grad[4][0] = -2.23606798f * r[1] - q * nx;
-  out_grad[4][1] = -2.23606798f * r[3] - q * ny;
-  out_grad[4][2] = -q * nz;
-  q = lr * y[5];
-  out_grad[5][0] = -q * nx;
-  out_grad[5][1] = -2.23606798f * r[2] - q * ny;
-  out_grad[5][2] = 2.23606798f * r[1] - q * nz;
-  q = lr * y[6];
-  out_grad[6][0] = 1.29099445f * r[3] - q * nx;
-  out_grad[6][1] = 1.29099445f * r[1] - q * ny;
-  out_grad[6][2] = 2.5819889f * r[2] - q * nz;
-  q = lr * y[7];
-  out_grad[7][0] = -2.23606798f * r[2] - q * nx;
-  out_grad[7][1] = -q * ny;
-  out_grad[7][2] = 2.23606798f * r[3] - q * nz;
-  q = lr * y[8];
-  out_grad[8][0] = -2.23606798f * r[3] - q * nx;
-  out_grad[8][1] = 2.23606798f * r[1] - q * ny;
-  out_grad[8][2] = -q * nz;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 4
-void shli_sh_grad_4(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[9];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 9; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-  lr = 2.0f * ir;
-  q = lr * y[4];
-  out_grad[4][0] = -2.23606798f * r[1] - q * nx;
-  out_grad[4][1] = -2.23606798f * r[3] - q * ny;
-  out_grad[4][2] = -q * nz;
-  q = lr * y[5];
-  out_grad[5][0] = -q * nx;
-  out_grad[5][1] = -2.23606798f * r[2] - q * ny;
-  out_grad[5][2] = 2.23606798f * r[1] - q * nz;
-  q = lr * y[6];
-  out_grad[6][0] = 1.29099445f * r[3] - q * nx;
-  out_grad[6][1] = 1.29099445f * r[1] - q * ny;
-  out_grad[6][2] = 2.5819889f * r[2] - q * nz;
-  q = lr * y[7];
-  out_grad[7][0] = -2.23606798f * r[2] - q * nx;
-  out_grad[7][1] = -q * ny;
-  out_grad[7][2] = 2.23606798f * r[3] - q * nz;
-  q = lr * y[8];
-  out_grad[8][0] = -2.23606798f * r[3] - q * nx;
-  out_grad[8][1] = 2.23606798f * r[1] - q * ny;
-  out_grad[8][2] = -q * nz;
-  lr = 3.0f * ir;
-  q = lr * y[9];
-  out_grad[9][0] = -3.24037035f * r[4] - q * nx;
-  out_grad[9][1] = -3.24037035f * r[8] - q * ny;
-  out_grad[9][2] = -q * nz;
-  q = lr * y[10];
-  out_grad[10][0] = -2.64575131f * r[5] - q * nx;
-  out_grad[10][1] = -2.64575131f * r[7] - q * ny;
-  out_grad[10][2] = 2.64575131f * r[4] - q * nz;
-  q = lr * y[11];
-  out_grad[11][0] = 0.836660027f * r[4] - q * nx;
-  out_grad[11][1] = -2.89827535f * r[6] + -0.836660027f * r[8] - q * ny;
-  out_grad[11][2] = 3.34664011f * r[5] - q * nz;
-  q = lr * y[12];
-  out_grad[12][0] = 2.04939015f * r[7] - q * nx;
-  out_grad[12][1] = 2.04939015f * r[5] - q * ny;
-  out_grad[12][2] = 3.54964787f * r[6] - q * nz;
-  q = lr * y[13];
-  out_grad[13][0] = -2.89827535f * r[6] + 0.836660027f * r[8] - q * nx;
-  out_grad[13][1] = 0.836660027f * r[4] - q * ny;
-  out_grad[13][2] = 3.34664011f * r[7] - q * nz;
-  q = lr * y[14];
-  out_grad[14][0] = -2.64575131f * r[7] - q * nx;
-  out_grad[14][1] = 2.64575131f * r[5] - q * ny;
-  out_grad[14][2] = 2.64575131f * r[8] - q * nz;
-  q = lr * y[15];
-  out_grad[15][0] = -3.24037035f * r[8] - q * nx;
-  out_grad[15][1] = 3.24037035f * r[4] - q * ny;
-  out_grad[15][2] = -q * nz;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 5
-void shli_sh_grad_5(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[16];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 16; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-  lr = 2.0f * ir;
-  q = lr * y[4];
-  out_grad[4][0] = -2.23606798f * r[1] - q * nx;
-  out_grad[4][1] = -2.23606798f * r[3] - q * ny;
-  out_grad[4][2] = -q * nz;
-  q = lr * y[5];
-  out_grad[5][0] = -q * nx;
-  out_grad[5][1] = -2.23606798f * r[2] - q * ny;
-  out_grad[5][2] = 2.23606798f * r[1] - q * nz;
-  q = lr * y[6];
-  out_grad[6][0] = 1.29099445f * r[3] - q * nx;
-  out_grad[6][1] = 1.29099445f * r[1] - q * ny;
-  out_grad[6][2] = 2.5819889f * r[2] - q * nz;
-  q = lr * y[7];
-  out_grad[7][0] = -2.23606798f * r[2] - q * nx;
-  out_grad[7][1] = -q * ny;
-  out_grad[7][2] = 2.23606798f * r[3] - q * nz;
-  q = lr * y[8];
-  out_grad[8][0] = -2.23606798f * r[3] - q * nx;
-  out_grad[8][1] = 2.23606798f * r[1] - q * ny;
-  out_grad[8][2] = -q * nz;
-  lr = 3.0f * ir;
-  q = lr * y[9];
-  out_grad[9][0] = -3.24037035f * r[4] - q * nx;
-  out_grad[9][1] = -3.24037035f * r[8] - q * ny;
-  out_grad[9][2] = -q * nz;
-  q = lr * y[10];
-  out_grad[10][0] = -2.64575131f * r[5] - q * nx;
-  out_grad[10][1] = -2.64575131f * r[7] - q * ny;
-  out_grad[10][2] = 2.64575131f * r[4] - q * nz;
-  q = lr * y[11];
-  out_grad[11][0] = 0.836660027f * r[4] - q * nx;
-  out_grad[11][1] = -2.89827535f * r[6] + -0.836660027f * r[8] - q * ny;
-  out_grad[11][2] = 3.34664011f * r[5] - q * nz;
-  q = lr * y[12];
-  out_grad[12][0] = 2.04939015f * r[7] - q * nx;
-  out_grad[12][1] = 2.04939015f * r[5] - q * ny;
-  out_grad[12][2] = 3.54964787f * r[6] - q * nz;
-  q = lr * y[13];
-  out_grad[13][0] = -2.89827535f * r[6] + 0.836660027f * r[8] - q * nx;
-  out_grad[13][1] = 0.836660027f * r[4] - q * ny;
-  out_grad[13][2] = 3.34664011f * r[7] - q * nz;
-  q = lr * y[14];
-  out_grad[14][0] = -2.64575131f * r[7] - q * nx;
-  out_grad[14][1] = 2.64575131f * r[5] - q * ny;
-  out_grad[14][2] = 2.64575131f * r[8] - q * nz;
-  q = lr * y[15];
-  out_grad[15][0] = -3.24037035f * r[8] - q * nx;
-  out_grad[15][1] = 3.24037035f * r[4] - q * ny;
-  out_grad[15][2] = -q * nz;
-  lr = 4.0f * ir;
-  q = lr * y[16];
-  out_grad[16][0] = -4.24264069f * r[9] - q * nx;
-  out_grad[16][1] = -4.24264069f * r[15] - q * ny;
-  out_grad[16][2] = -q * nz;
-  q = lr * y[17];
-  out_grad[17][0] = -3.67423461f * r[10] - q * nx;
-  out_grad[17][1] = -3.67423461f * r[14] - q * ny;
-  out_grad[17][2] = 3.0f * r[9] - q * nz;
-  q = lr * y[18];
-  out_grad[18][0] = -3.10529502f * r[11] + 0.801783726f * r[9] - q * nx;
-  out_grad[18][1] = -3.10529502f * r[13] + -0.801783726f * r[15] - q * ny;
-  out_grad[18][2] = 3.92792202f * r[10] - q * nz;
-  q = lr * y[19];
-  out_grad[19][0] = 1.38873015f * r[10] - q * nx;
-  out_grad[19][1] = -3.58568583f * r[12] + -1.38873015f * r[14] - q * ny;
-  out_grad[19][2] = 4.39155033f * r[11] - q * nz;
-  q = lr * y[20];
-  out_grad[20][0] = 2.7774603f * r[13] - q * nx;
-  out_grad[20][1] = 2.7774603f * r[11] - q * ny;
-  out_grad[20][2] = 4.53557368f * r[12] - q * nz;
-  q = lr * y[21];
-  out_grad[21][0] = -3.58568583f * r[12] + 1.38873015f * r[14] - q * nx;
-  out_grad[21][1] = 1.38873015f * r[10] - q * ny;
-  out_grad[21][2] = 4.39155033f * r[13] - q * nz;
-  q = lr * y[22];
-  out_grad[22][0] = -3.10529502f * r[13] + 0.801783726f * r[15] - q * nx;
-  out_grad[22][1] = 3.10529502f * r[11] + 0.801783726f * r[9] - q * ny;
-  out_grad[22][2] = 3.92792202f * r[14] - q * nz;
-  q = lr * y[23];
-  out_grad[23][0] = -3.67423461f * r[14] - q * nx;
-  out_grad[23][1] = 3.67423461f * r[10] - q * ny;
-  out_grad[23][2] = 3.0f * r[15] - q * nz;
-  q = lr * y[24];
-  out_grad[24][0] = -4.24264069f * r[15] - q * nx;
-  out_grad[24][1] = 4.24264069f * r[9] - q * ny;
-  out_grad[24][2] = -q * nz;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 6
-void shli_sh_grad_6(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[25];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 25; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-  lr = 2.0f * ir;
-  q = lr * y[4];
-  out_grad[4][0] = -2.23606798f * r[1] - q * nx;
-  out_grad[4][1] = -2.23606798f * r[3] - q * ny;
-  out_grad[4][2] = -q * nz;
-  q = lr * y[5];
-  out_grad[5][0] = -q * nx;
-  out_grad[5][1] = -2.23606798f * r[2] - q * ny;
-  out_grad[5][2] = 2.23606798f * r[1] - q * nz;
-  q = lr * y[6];
-  out_grad[6][0] = 1.29099445f * r[3] - q * nx;
-  out_grad[6][1] = 1.29099445f * r[1] - q * ny;
-  out_grad[6][2] = 2.5819889f * r[2] - q * nz;
-  q = lr * y[7];
-  out_grad[7][0] = -2.23606798f * r[2] - q * nx;
-  out_grad[7][1] = -q * ny;
-  out_grad[7][2] = 2.23606798f * r[3] - q * nz;
-  q = lr * y[8];
-  out_grad[8][0] = -2.23606798f * r[3] - q * nx;
-  out_grad[8][1] = 2.23606798f * r[1] - q * ny;
-  out_grad[8][2] = -q * nz;
-  lr = 3.0f * ir;
-  q = lr * y[9];
-  out_grad[9][0] = -3.24037035f * r[4] - q * nx;
-  out_grad[9][1] = -3.24037035f * r[8] - q * ny;
-  out_grad[9][2] = -q * nz;
-  q = lr * y[10];
-  out_grad[10][0] = -2.64575131f * r[5] - q * nx;
-  out_grad[10][1] = -2.64575131f * r[7] - q * ny;
-  out_grad[10][2] = 2.64575131f * r[4] - q * nz;
-  q = lr * y[11];
-  out_grad[11][0] = 0.836660027f * r[4] - q * nx;
-  out_grad[11][1] = -2.89827535f * r[6] + -0.836660027f * r[8] - q * ny;
-  out_grad[11][2] = 3.34664011f * r[5] - q * nz;
-  q = lr * y[12];
-  out_grad[12][0] = 2.04939015f * r[7] - q * nx;
-  out_grad[12][1] = 2.04939015f * r[5] - q * ny;
-  out_grad[12][2] = 3.54964787f * r[6] - q * nz;
-  q = lr * y[13];
-  out_grad[13][0] = -2.89827535f * r[6] + 0.836660027f * r[8] - q * nx;
-  out_grad[13][1] = 0.836660027f * r[4] - q * ny;
-  out_grad[13][2] = 3.34664011f * r[7] - q * nz;
-  q = lr * y[14];
-  out_grad[14][0] = -2.64575131f * r[7] - q * nx;
-  out_grad[14][1] = 2.64575131f * r[5] - q * ny;
-  out_grad[14][2] = 2.64575131f * r[8] - q * nz;
-  q = lr * y[15];
-  out_grad[15][0] = -3.24037035f * r[8] - q * nx;
-  out_grad[15][1] = 3.24037035f * r[4] - q * ny;
-  out_grad[15][2] = -q * nz;
-  lr = 4.0f * ir;
-  q = lr * y[16];
-  out_grad[16][0] = -4.24264069f * r[9] - q * nx;
-  out_grad[16][1] = -4.24264069f * r[15] - q * ny;
-  out_grad[16][2] = -q * nz;
-  q = lr * y[17];
-  out_grad[17][0] = -3.67423461f * r[10] - q * nx;
-  out_grad[17][1] = -3.67423461f * r[14] - q * ny;
-  out_grad[17][2] = 3.0f * r[9] - q * nz;
-  q = lr * y[18];
-  out_grad[18][0] = -3.10529502f * r[11] + 0.801783726f * r[9] - q * nx;
-  out_grad[18][1] = -3.10529502f * r[13] + -0.801783726f * r[15] - q * ny;
-  out_grad[18][2] = 3.92792202f * r[10] - q * nz;
-  q = lr * y[19];
-  out_grad[19][0] = 1.38873015f * r[10] - q * nx;
-  out_grad[19][1] = -3.58568583f * r[12] + -1.38873015f * r[14] - q * ny;
-  out_grad[19][2] = 4.39155033f * r[11] - q * nz;
-  q = lr * y[20];
-  out_grad[20][0] = 2.7774603f * r[13] - q * nx;
-  out_grad[20][1] = 2.7774603f * r[11] - q * ny;
-  out_grad[20][2] = 4.53557368f * r[12] - q * nz;
-  q = lr * y[21];
-  out_grad[21][0] = -3.58568583f * r[12] + 1.38873015f * r[14] - q * nx;
-  out_grad[21][1] = 1.38873015f * r[10] - q * ny;
-  out_grad[21][2] = 4.39155033f * r[13] - q * nz;
-  q = lr * y[22];
-  out_grad[22][0] = -3.10529502f * r[13] + 0.801783726f * r[15] - q * nx;
-  out_grad[22][1] = 3.10529502f * r[11] + 0.801783726f * r[9] - q * ny;
-  out_grad[22][2] = 3.92792202f * r[14] - q * nz;
-  q = lr * y[23];
-  out_grad[23][0] = -3.67423461f * r[14] - q * nx;
-  out_grad[23][1] = 3.67423461f * r[10] - q * ny;
-  out_grad[23][2] = 3.0f * r[15] - q * nz;
-  q = lr * y[24];
-  out_grad[24][0] = -4.24264069f * r[15] - q * nx;
-  out_grad[24][1] = 4.24264069f * r[9] - q * ny;
-  out_grad[24][2] = -q * nz;
-  lr = 5.0f * ir;
-  q = lr * y[25];
-  out_grad[25][0] = -5.24404424f * r[16] - q * nx;
-  out_grad[25][1] = -5.24404424f * r[24] - q * ny;
-  out_grad[25][2] = -q * nz;
-  q = lr * y[26];
-  out_grad[26][0] = -4.69041576f * r[17] - q * nx;
-  out_grad[26][1] = -4.69041576f * r[23] - q * ny;
-  out_grad[26][2] = 3.31662479f * r[16] - q * nz;
-  q = lr * y[27];
-  out_grad[27][0] = -4.13655788f * r[18] + 0.78173596f * r[16] - q * nx;
-  out_grad[27][1] = -4.13655788f * r[22] + -0.78173596f * r[24] - q * ny;
-  out_grad[27][2] = 4.42216639f * r[17] - q * nz;
-  q = lr * y[28];
-  out_grad[28][0] = -3.58236421f * r[19] + 1.3540064f * r[17] - q * nx;
-  out_grad[28][1] = -3.58236421f * r[21] + -1.3540064f * r[23] - q * ny;
-  out_grad[28][2] = 5.06622805f * r[18] - q * nz;
-  q = lr * y[29];
-  out_grad[29][0] = 1.91485422f * r[18] - q * nx;
-  out_grad[29][1] = -4.28174419f * r[20] + -1.91485422f * r[22] - q * ny;
-  out_grad[29][2] = 5.4160256f * r[19] - q * nz;
-  q = lr * y[30];
-  out_grad[30][0] = 3.49602949f * r[21] - q * nx;
-  out_grad[30][1] = 3.49602949f * r[19] - q * ny;
-  out_grad[30][2] = 5.52770798f * r[20] - q * nz;
-  q = lr * y[31];
-  out_grad[31][0] = -4.28174419f * r[20] + 1.91485422f * r[22] - q * nx;
-  out_grad[31][1] = 1.91485422f * r[18] - q * ny;
-  out_grad[31][2] = 5.4160256f * r[21] - q * nz;
-  q = lr * y[32];
-  out_grad[32][0] = -3.58236421f * r[21] + 1.3540064f * r[23] - q * nx;
-  out_grad[32][1] = 3.58236421f * r[19] + 1.3540064f * r[17] - q * ny;
-  out_grad[32][2] = 5.06622805f * r[22] - q * nz;
-  q = lr * y[33];
-  out_grad[33][0] = -4.13655788f * r[22] + 0.78173596f * r[24] - q * nx;
-  out_grad[33][1] = 4.13655788f * r[18] + 0.78173596f * r[16] - q * ny;
-  out_grad[33][2] = 4.42216639f * r[23] - q * nz;
-  q = lr * y[34];
-  out_grad[34][0] = -4.69041576f * r[23] - q * nx;
-  out_grad[34][1] = 4.69041576f * r[17] - q * ny;
-  out_grad[34][2] = 3.31662479f * r[24] - q * nz;
-  q = lr * y[35];
-  out_grad[35][0] = -5.24404424f * r[24] - q * nx;
-  out_grad[35][1] = 5.24404424f * r[16] - q * ny;
-  out_grad[35][2] = -q * nz;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 7
-void shli_sh_grad_7(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[36];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 36; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-  lr = 2.0f * ir;
-  q = lr * y[4];
-  out_grad[4][0] = -2.23606798f * r[1] - q * nx;
-  out_grad[4][1] = -2.23606798f * r[3] - q * ny;
-  out_grad[4][2] = -q * nz;
-  q = lr * y[5];
-  out_grad[5][0] = -q * nx;
-  out_grad[5][1] = -2.23606798f * r[2] - q * ny;
-  out_grad[5][2] = 2.23606798f * r[1] - q * nz;
-  q = lr * y[6];
-  out_grad[6][0] = 1.29099445f * r[3] - q * nx;
-  out_grad[6][1] = 1.29099445f * r[1] - q * ny;
-  out_grad[6][2] = 2.5819889f * r[2] - q * nz;
-  q = lr * y[7];
-  out_grad[7][0] = -2.23606798f * r[2] - q * nx;
-  out_grad[7][1] = -q * ny;
-  out_grad[7][2] = 2.23606798f * r[3] - q * nz;
-  q = lr * y[8];
-  out_grad[8][0] = -2.23606798f * r[3] - q * nx;
-  out_grad[8][1] = 2.23606798f * r[1] - q * ny;
-  out_grad[8][2] = -q * nz;
-  lr = 3.0f * ir;
-  q = lr * y[9];
-  out_grad[9][0] = -3.24037035f * r[4] - q * nx;
-  out_grad[9][1] = -3.24037035f * r[8] - q * ny;
-  out_grad[9][2] = -q * nz;
-  q = lr * y[10];
-  out_grad[10][0] = -2.64575131f * r[5] - q * nx;
-  out_grad[10][1] = -2.64575131f * r[7] - q * ny;
-  out_grad[10][2] = 2.64575131f * r[4] - q * nz;
-  q = lr * y[11];
-  out_grad[11][0] = 0.836660027f * r[4] - q * nx;
-  out_grad[11][1] = -2.89827535f * r[6] + -0.836660027f * r[8] - q * ny;
-  out_grad[11][2] = 3.34664011f * r[5] - q * nz;
-  q = lr * y[12];
-  out_grad[12][0] = 2.04939015f * r[7] - q * nx;
-  out_grad[12][1] = 2.04939015f * r[5] - q * ny;
-  out_grad[12][2] = 3.54964787f * r[6] - q * nz;
-  q = lr * y[13];
-  out_grad[13][0] = -2.89827535f * r[6] + 0.836660027f * r[8] - q * nx;
-  out_grad[13][1] = 0.836660027f * r[4] - q * ny;
-  out_grad[13][2] = 3.34664011f * r[7] - q * nz;
-  q = lr * y[14];
-  out_grad[14][0] = -2.64575131f * r[7] - q * nx;
-  out_grad[14][1] = 2.64575131f * r[5] - q * ny;
-  out_grad[14][2] = 2.64575131f * r[8] - q * nz;
-  q = lr * y[15];
-  out_grad[15][0] = -3.24037035f * r[8] - q * nx;
-  out_grad[15][1] = 3.24037035f * r[4] - q * ny;
-  out_grad[15][2] = -q * nz;
-  lr = 4.0f * ir;
-  q = lr * y[16];
-  out_grad[16][0] = -4.24264069f * r[9] - q * nx;
-  out_grad[16][1] = -4.24264069f * r[15] - q * ny;
-  out_grad[16][2] = -q * nz;
-  q = lr * y[17];
-  out_grad[17][0] = -3.67423461f * r[10] - q * nx;
-  out_grad[17][1] = -3.67423461f * r[14] - q * ny;
-  out_grad[17][2] = 3.0f * r[9] - q * nz;
-  q = lr * y[18];
-  out_grad[18][0] = -3.10529502f * r[11] + 0.801783726f * r[9] - q * nx;
-  out_grad[18][1] = -3.10529502f * r[13] + -0.801783726f * r[15] - q * ny;
-  out_grad[18][2] = 3.92792202f * r[10] - q * nz;
-  q = lr * y[19];
-  out_grad[19][0] = 1.38873015f * r[10] - q * nx;
-  out_grad[19][1] = -3.58568583f * r[12] + -1.38873015f * r[14] - q * ny;
-  out_grad[19][2] = 4.39155033f * r[11] - q * nz;
-  q = lr * y[20];
-  out_grad[20][0] = 2.7774603f * r[13] - q * nx;
-  out_grad[20][1] = 2.7774603f * r[11] - q * ny;
-  out_grad[20][2] = 4.53557368f * r[12] - q * nz;
-  q = lr * y[21];
-  out_grad[21][0] = -3.58568583f * r[12] + 1.38873015f * r[14] - q * nx;
-  out_grad[21][1] = 1.38873015f * r[10] - q * ny;
-  out_grad[21][2] = 4.39155033f * r[13] - q * nz;
-  q = lr * y[22];
-  out_grad[22][0] = -3.10529502f * r[13] + 0.801783726f * r[15] - q * nx;
-  out_grad[22][1] = 3.10529502f * r[11] + 0.801783726f * r[9] - q * ny;
-  out_grad[22][2] = 3.92792202f * r[14] - q * nz;
-  q = lr * y[23];
-  out_grad[23][0] = -3.67423461f * r[14] - q * nx;
-  out_grad[23][1] = 3.67423461f * r[10] - q * ny;
-  out_grad[23][2] = 3.0f * r[15] - q * nz;
-  q = lr * y[24];
-  out_grad[24][0] = -4.24264069f * r[15] - q * nx;
-  out_grad[24][1] = 4.24264069f * r[9] - q * ny;
-  out_grad[24][2] = -q * nz;
-  lr = 5.0f * ir;
-  q = lr * y[25];
-  out_grad[25][0] = -5.24404424f * r[16] - q * nx;
-  out_grad[25][1] = -5.24404424f * r[24] - q * ny;
-  out_grad[25][2] = -q * nz;
-  q = lr * y[26];
-  out_grad[26][0] = -4.69041576f * r[17] - q * nx;
-  out_grad[26][1] = -4.69041576f * r[23] - q * ny;
-  out_grad[26][2] = 3.31662479f * r[16] - q * nz;
-  q = lr * y[27];
-  out_grad[27][0] = -4.13655788f * r[18] + 0.78173596f * r[16] - q * nx;
-  out_grad[27][1] = -4.13655788f * r[22] + -0.78173596f * r[24] - q * ny;
-  out_grad[27][2] = 4.42216639f * r[17] - q * nz;
-  q = lr * y[28];
-  out_grad[28][0] = -3.58236421f * r[19] + 1.3540064f * r[17] - q * nx;
-  out_grad[28][1] = -3.58236421f * r[21] + -1.3540064f * r[23] - q * ny;
-  out_grad[28][2] = 5.06622805f * r[18] - q * nz;
-  q = lr * y[29];
-  out_grad[29][0] = 1.91485422f * r[18] - q * nx;
-  out_grad[29][1] = -4.28174419f * r[20] + -1.91485422f * r[22] - q * ny;
-  out_grad[29][2] = 5.4160256f * r[19] - q * nz;
-  q = lr * y[30];
-  out_grad[30][0] = 3.49602949f * r[21] - q * nx;
-  out_grad[30][1] = 3.49602949f * r[19] - q * ny;
-  out_grad[30][2] = 5.52770798f * r[20] - q * nz;
-  q = lr * y[31];
-  out_grad[31][0] = -4.28174419f * r[20] + 1.91485422f * r[22] - q * nx;
-  out_grad[31][1] = 1.91485422f * r[18] - q * ny;
-  out_grad[31][2] = 5.4160256f * r[21] - q * nz;
-  q = lr * y[32];
-  out_grad[32][0] = -3.58236421f * r[21] + 1.3540064f * r[23] - q * nx;
-  out_grad[32][1] = 3.58236421f * r[19] + 1.3540064f * r[17] - q * ny;
-  out_grad[32][2] = 5.06622805f * r[22] - q * nz;
-  q = lr * y[33];
-  out_grad[33][0] = -4.13655788f * r[22] + 0.78173596f * r[24] - q * nx;
-  out_grad[33][1] = 4.13655788f * r[18] + 0.78173596f * r[16] - q * ny;
-  out_grad[33][2] = 4.42216639f * r[23] - q * nz;
-  q = lr * y[34];
-  out_grad[34][0] = -4.69041576f * r[23] - q * nx;
-  out_grad[34][1] = 4.69041576f * r[17] - q * ny;
-  out_grad[34][2] = 3.31662479f * r[24] - q * nz;
-  q = lr * y[35];
-  out_grad[35][0] = -5.24404424f * r[24] - q * nx;
-  out_grad[35][1] = 5.24404424f * r[16] - q * ny;
-  out_grad[35][2] = -q * nz;
-  lr = 6.0f * ir;
-  q = lr * y[36];
-  out_grad[36][0] = -6.244998f * r[25] - q * nx;
-  out_grad[36][1] = -6.244998f * r[35] - q * ny;
-  out_grad[36][2] = -q * nz;
-  q = lr * y[37];
-  out_grad[37][0] = -5.70087713f * r[26] - q * nx;
-  out_grad[37][1] = -5.70087713f * r[34] - q * ny;
-  out_grad[37][2] = 3.60555128f * r[25] - q * nz;
-  q = lr * y[38];
-  out_grad[38][0] = -5.15663738f * r[27] + 0.768706115f * r[25] - q * nx;
-  out_grad[38][1] = -5.15663738f * r[33] + -0.768706115f * r[35] - q * ny;
-  out_grad[38][2] = 4.86172435f * r[26] - q * nz;
-  q = lr * y[39];
-  out_grad[39][0] = -4.61223669f * r[28] + 1.33143805f * r[26] - q * nx;
-  out_grad[39][1] = -4.61223669f * r[32] + -1.33143805f * r[34] - q * ny;
-  out_grad[39][2] = 5.64881323f * r[27] - q * nz;
-  q = lr * y[40];
-  out_grad[40][0] = -4.06761042f * r[29] + 1.88293774f * r[27] - q * nx;
-  out_grad[40][1] = -4.06761042f * r[31] + -1.88293774f * r[33] - q * ny;
-  out_grad[40][2] = 6.14964892f * r[28] - q * nz;
-  q = lr * y[41];
-  out_grad[41][0] = 2.43086217f * r[28] - q * nx;
-  out_grad[41][1] = -4.981785f * r[30] + -2.43086217f * r[32] - q * ny;
-  out_grad[41][2] = 6.43145678f * r[29] - q * nz;
-  q = lr * y[42];
-  out_grad[42][0] = 4.21037679f * r[31] - q * nx;
-  out_grad[42][1] = 4.21037679f * r[29] - q * ny;
-  out_grad[42][2] = 6.52268768f * r[30] - q * nz;
-  q = lr * y[43];
-  out_grad[43][0] = -4.981785f * r[30] + 2.43086217f * r[32] - q * nx;
-  out_grad[43][1] = 2.43086217f * r[28] - q * ny;
-  out_grad[43][2] = 6.43145678f * r[31] - q * nz;
-  q = lr * y[44];
-  out_grad[44][0] = -4.06761042f * r[31] + 1.88293774f * r[33] - q * nx;
-  out_grad[44][1] = 4.06761042f * r[29] + 1.88293774f * r[27] - q * ny;
-  out_grad[44][2] = 6.14964892f * r[32] - q * nz;
-  q = lr * y[45];
-  out_grad[45][0] = -4.61223669f * r[32] + 1.33143805f * r[34] - q * nx;
-  out_grad[45][1] = 4.61223669f * r[28] + 1.33143805f * r[26] - q * ny;
-  out_grad[45][2] = 5.64881323f * r[33] - q * nz;
-  q = lr * y[46];
-  out_grad[46][0] = -5.15663738f * r[33] + 0.768706115f * r[35] - q * nx;
-  out_grad[46][1] = 5.15663738f * r[27] + 0.768706115f * r[25] - q * ny;
-  out_grad[46][2] = 4.86172435f * r[34] - q * nz;
-  q = lr * y[47];
-  out_grad[47][0] = -5.70087713f * r[34] - q * nx;
-  out_grad[47][1] = 5.70087713f * r[26] - q * ny;
-  out_grad[47][2] = 3.60555128f * r[35] - q * nz;
-  q = lr * y[48];
-  out_grad[48][0] = -6.244998f * r[35] - q * nx;
-  out_grad[48][1] = 6.244998f * r[25] - q * ny;
-  out_grad[48][2] = -q * nz;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 8
-void shli_sh_grad_8(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[49];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 49; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-  lr = 2.0f * ir;
-  q = lr * y[4];
-  out_grad[4][0] = -2.23606798f * r[1] - q * nx;
-  out_grad[4][1] = -2.23606798f * r[3] - q * ny;
-  out_grad[4][2] = -q * nz;
-  q = lr * y[5];
-  out_grad[5][0] = -q * nx;
-  out_grad[5][1] = -2.23606798f * r[2] - q * ny;
-  out_grad[5][2] = 2.23606798f * r[1] - q * nz;
-  q = lr * y[6];
-  out_grad[6][0] = 1.29099445f * r[3] - q * nx;
-  out_grad[6][1] = 1.29099445f * r[1] - q * ny;
-  out_grad[6][2] = 2.5819889f * r[2] - q * nz;
-  q = lr * y[7];
-  out_grad[7][0] = -2.23606798f * r[2] - q * nx;
-  out_grad[7][1] = -q * ny;
-  out_grad[7][2] = 2.23606798f * r[3] - q * nz;
-  q = lr * y[8];
-  out_grad[8][0] = -2.23606798f * r[3] - q * nx;
-  out_grad[8][1] = 2.23606798f * r[1] - q * ny;
-  out_grad[8][2] = -q * nz;
-  lr = 3.0f * ir;
-  q = lr * y[9];
-  out_grad[9][0] = -3.24037035f * r[4] - q * nx;
-  out_grad[9][1] = -3.24037035f * r[8] - q * ny;
-  out_grad[9][2] = -q * nz;
-  q = lr * y[10];
-  out_grad[10][0] = -2.64575131f * r[5] - q * nx;
-  out_grad[10][1] = -2.64575131f * r[7] - q * ny;
-  out_grad[10][2] = 2.64575131f * r[4] - q * nz;
-  q = lr * y[11];
-  out_grad[11][0] = 0.836660027f * r[4] - q * nx;
-  out_grad[11][1] = -2.89827535f * r[6] + -0.836660027f * r[8] - q * ny;
-  out_grad[11][2] = 3.34664011f * r[5] - q * nz;
-  q = lr * y[12];
-  out_grad[12][0] = 2.04939015f * r[7] - q * nx;
-  out_grad[12][1] = 2.04939015f * r[5] - q * ny;
-  out_grad[12][2] = 3.54964787f * r[6] - q * nz;
-  q = lr * y[13];
-  out_grad[13][0] = -2.89827535f * r[6] + 0.836660027f * r[8] - q * nx;
-  out_grad[13][1] = 0.836660027f * r[4] - q * ny;
-  out_grad[13][2] = 3.34664011f * r[7] - q * nz;
-  q = lr * y[14];
-  out_grad[14][0] = -2.64575131f * r[7] - q * nx;
-  out_grad[14][1] = 2.64575131f * r[5] - q * ny;
-  out_grad[14][2] = 2.64575131f * r[8] - q * nz;
-  q = lr * y[15];
-  out_grad[15][0] = -3.24037035f * r[8] - q * nx;
-  out_grad[15][1] = 3.24037035f * r[4] - q * ny;
-  out_grad[15][2] = -q * nz;
-  lr = 4.0f * ir;
-  q = lr * y[16];
-  out_grad[16][0] = -4.24264069f * r[9] - q * nx;
-  out_grad[16][1] = -4.24264069f * r[15] - q * ny;
-  out_grad[16][2] = -q * nz;
-  q = lr * y[17];
-  out_grad[17][0] = -3.67423461f * r[10] - q * nx;
-  out_grad[17][1] = -3.67423461f * r[14] - q * ny;
-  out_grad[17][2] = 3.0f * r[9] - q * nz;
-  q = lr * y[18];
-  out_grad[18][0] = -3.10529502f * r[11] + 0.801783726f * r[9] - q * nx;
-  out_grad[18][1] = -3.10529502f * r[13] + -0.801783726f * r[15] - q * ny;
-  out_grad[18][2] = 3.92792202f * r[10] - q * nz;
-  q = lr * y[19];
-  out_grad[19][0] = 1.38873015f * r[10] - q * nx;
-  out_grad[19][1] = -3.58568583f * r[12] + -1.38873015f * r[14] - q * ny;
-  out_grad[19][2] = 4.39155033f * r[11] - q * nz;
-  q = lr * y[20];
-  out_grad[20][0] = 2.7774603f * r[13] - q * nx;
-  out_grad[20][1] = 2.7774603f * r[11] - q * ny;
-  out_grad[20][2] = 4.53557368f * r[12] - q * nz;
-  q = lr * y[21];
-  out_grad[21][0] = -3.58568583f * r[12] + 1.38873015f * r[14] - q * nx;
-  out_grad[21][1] = 1.38873015f * r[10] - q * ny;
-  out_grad[21][2] = 4.39155033f * r[13] - q * nz;
-  q = lr * y[22];
-  out_grad[22][0] = -3.10529502f * r[13] + 0.801783726f * r[15] - q * nx;
-  out_grad[22][1] = 3.10529502f * r[11] + 0.801783726f * r[9] - q * ny;
-  out_grad[22][2] = 3.92792202f * r[14] - q * nz;
-  q = lr * y[23];
-  out_grad[23][0] = -3.67423461f * r[14] - q * nx;
-  out_grad[23][1] = 3.67423461f * r[10] - q * ny;
-  out_grad[23][2] = 3.0f * r[15] - q * nz;
-  q = lr * y[24];
-  out_grad[24][0] = -4.24264069f * r[15] - q * nx;
-  out_grad[24][1] = 4.24264069f * r[9] - q * ny;
-  out_grad[24][2] = -q * nz;
-  lr = 5.0f * ir;
-  q = lr * y[25];
-  out_grad[25][0] = -5.24404424f * r[16] - q * nx;
-  out_grad[25][1] = -5.24404424f * r[24] - q * ny;
-  out_grad[25][2] = -q * nz;
-  q = lr * y[26];
-  out_grad[26][0] = -4.69041576f * r[17] - q * nx;
-  out_grad[26][1] = -4.69041576f * r[23] - q * ny;
-  out_grad[26][2] = 3.31662479f * r[16] - q * nz;
-  q = lr * y[27];
-  out_grad[27][0] = -4.13655788f * r[18] + 0.78173596f * r[16] - q * nx;
-  out_grad[27][1] = -4.13655788f * r[22] + -0.78173596f * r[24] - q * ny;
-  out_grad[27][2] = 4.42216639f * r[17] - q * nz;
-  q = lr * y[28];
-  out_grad[28][0] = -3.58236421f * r[19] + 1.3540064f * r[17] - q * nx;
-  out_grad[28][1] = -3.58236421f * r[21] + -1.3540064f * r[23] - q * ny;
-  out_grad[28][2] = 5.06622805f * r[18] - q * nz;
-  q = lr * y[29];
-  out_grad[29][0] = 1.91485422f * r[18] - q * nx;
-  out_grad[29][1] = -4.28174419f * r[20] + -1.91485422f * r[22] - q * ny;
-  out_grad[29][2] = 5.4160256f * r[19] - q * nz;
-  q = lr * y[30];
-  out_grad[30][0] = 3.49602949f * r[21] - q * nx;
-  out_grad[30][1] = 3.49602949f * r[19] - q * ny;
-  out_grad[30][2] = 5.52770798f * r[20] - q * nz;
-  q = lr * y[31];
-  out_grad[31][0] = -4.28174419f * r[20] + 1.91485422f * r[22] - q * nx;
-  out_grad[31][1] = 1.91485422f * r[18] - q * ny;
-  out_grad[31][2] = 5.4160256f * r[21] - q * nz;
-  q = lr * y[32];
-  out_grad[32][0] = -3.58236421f * r[21] + 1.3540064f * r[23] - q * nx;
-  out_grad[32][1] = 3.58236421f * r[19] + 1.3540064f * r[17] - q * ny;
-  out_grad[32][2] = 5.06622805f * r[22] - q * nz;
-  q = lr * y[33];
-  out_grad[33][0] = -4.13655788f * r[22] + 0.78173596f * r[24] - q * nx;
-  out_grad[33][1] = 4.13655788f * r[18] + 0.78173596f * r[16] - q * ny;
-  out_grad[33][2] = 4.42216639f * r[23] - q * nz;
-  q = lr * y[34];
-  out_grad[34][0] = -4.69041576f * r[23] - q * nx;
-  out_grad[34][1] = 4.69041576f * r[17] - q * ny;
-  out_grad[34][2] = 3.31662479f * r[24] - q * nz;
-  q = lr * y[35];
-  out_grad[35][0] = -5.24404424f * r[24] - q * nx;
-  out_grad[35][1] = 5.24404424f * r[16] - q * ny;
-  out_grad[35][2] = -q * nz;
-  lr = 6.0f * ir;
-  q = lr * y[36];
-  out_grad[36][0] = -6.244998f * r[25] - q * nx;
-  out_grad[36][1] = -6.244998f * r[35] - q * ny;
-  out_grad[36][2] = -q * nz;
-  q = lr * y[37];
-  out_grad[37][0] = -5.70087713f * r[26] - q * nx;
-  out_grad[37][1] = -5.70087713f * r[34] - q * ny;
-  out_grad[37][2] = 3.60555128f * r[25] - q * nz;
-  q = lr * y[38];
-  out_grad[38][0] = -5.15663738f * r[27] + 0.768706115f * r[25] - q * nx;
-  out_grad[38][1] = -5.15663738f * r[33] + -0.768706115f * r[35] - q * ny;
-  out_grad[38][2] = 4.86172435f * r[26] - q * nz;
-  q = lr * y[39];
-  out_grad[39][0] = -4.61223669f * r[28] + 1.33143805f * r[26] - q * nx;
-  out_grad[39][1] = -4.61223669f * r[32] + -1.33143805f * r[34] - q * ny;
-  out_grad[39][2] = 5.64881323f * r[27] - q * nz;
-  q = lr * y[40];
-  out_grad[40][0] = -4.06761042f * r[29] + 1.88293774f * r[27] - q * nx;
-  out_grad[40][1] = -4.06761042f * r[31] + -1.88293774f * r[33] - q * ny;
-  out_grad[40][2] = 6.14964892f * r[28] - q * nz;
-  q = lr * y[41];
-  out_grad[41][0] = 2.43086217f * r[28] - q * nx;
-  out_grad[41][1] = -4.981785f * r[30] + -2.43086217f * r[32] - q * ny;
-  out_grad[41][2] = 6.43145678f * r[29] - q * nz;
-  q = lr * y[42];
-  out_grad[42][0] = 4.21037679f * r[31] - q * nx;
-  out_grad[42][1] = 4.21037679f * r[29] - q * ny;
-  out_grad[42][2] = 6.52268768f * r[30] - q * nz;
-  q = lr * y[43];
-  out_grad[43][0] = -4.981785f * r[30] + 2.43086217f * r[32] - q * nx;
-  out_grad[43][1] = 2.43086217f * r[28] - q * ny;
-  out_grad[43][2] = 6.43145678f * r[31] - q * nz;
-  q = lr * y[44];
-  out_grad[44][0] = -4.06761042f * r[31] + 1.88293774f * r[33] - q * nx;
-  out_grad[44][1] = 4.06761042f * r[29] + 1.88293774f * r[27] - q * ny;
-  out_grad[44][2] = 6.14964892f * r[32] - q * nz;
-  q = lr * y[45];
-  out_grad[45][0] = -4.61223669f * r[32] + 1.33143805f * r[34] - q * nx;
-  out_grad[45][1] = 4.61223669f * r[28] + 1.33143805f * r[26] - q * ny;
-  out_grad[45][2] = 5.64881323f * r[33] - q * nz;
-  q = lr * y[46];
-  out_grad[46][0] = -5.15663738f * r[33] + 0.768706115f * r[35] - q * nx;
-  out_grad[46][1] = 5.15663738f * r[27] + 0.768706115f * r[25] - q * ny;
-  out_grad[46][2] = 4.86172435f * r[34] - q * nz;
-  q = lr * y[47];
-  out_grad[47][0] = -5.70087713f * r[34] - q * nx;
-  out_grad[47][1] = 5.70087713f * r[26] - q * ny;
-  out_grad[47][2] = 3.60555128f * r[35] - q * nz;
-  q = lr * y[48];
-  out_grad[48][0] = -6.244998f * r[35] - q * nx;
-  out_grad[48][1] = 6.244998f * r[25] - q * ny;
-  out_grad[48][2] = -q * nz;
-  lr = 7.0f * ir;
-  q = lr * y[49];
-  out_grad[49][0] = -7.24568837f * r[36] - q * nx;
-  out_grad[49][1] = -7.24568837f * r[48] - q * ny;
-  out_grad[49][2] = -q * nz;
-  q = lr * y[50];
-  out_grad[50][0] = -6.70820393f * r[37] - q * nx;
-  out_grad[50][1] = -6.70820393f * r[47] - q * ny;
-  out_grad[50][2] = 3.87298335f * r[36] - q * nz;
-  q = lr * y[51];
-  out_grad[51][0] = -6.17065013f * r[38] + 0.759554525f * r[36] - q * nx;
-  out_grad[51][1] = -6.17065013f * r[46] + -0.759554525f * r[48] - q * ny;
-  out_grad[51][2] = 5.26234812f * r[37] - q * nz;
-  q = lr * y[52];
-  out_grad[52][0] = -5.63300712f * r[39] + 1.31558703f * r[37] - q * nx;
-  out_grad[52][1] = -5.63300712f * r[45] + -1.31558703f * r[47] - q * ny;
-  out_grad[52][2] = 6.17065013f * r[38] - q * nz;
-  q = lr * y[53];
-  out_grad[53][0] = -5.09524665f * r[40] + 1.86052102f * r[38] - q * nx;
-  out_grad[53][1] = -5.09524665f * r[44] + -1.86052102f * r[46] - q * ny;
-  out_grad[53][2] = 6.7936622f * r[39] - q * nz;
-  q = lr * y[54];
-  out_grad[54][0] = -4.55732715f * r[41] + 2.40192231f * r[39] - q * nx;
-  out_grad[54][1] = -4.55732715f * r[43] + -2.40192231f * r[45] - q * ny;
-  out_grad[54][2] = 7.20576692f * r[40] - q * nz;
-  q = lr * y[55];
-  out_grad[55][0] = 2.94174203f * r[40] - q * nx;
-  out_grad[55][1] = -5.6839856f * r[42] + -2.94174203f * r[44] - q * ny;
-  out_grad[55][2] = 7.44208408f * r[41] - q * nz;
-  q = lr * y[56];
-  out_grad[56][0] = 4.92247592f * r[43] - q * nx;
-  out_grad[56][1] = 4.92247592f * r[41] - q * ny;
-  out_grad[56][2] = 7.51920618f * r[42] - q * nz;
-  q = lr * y[57];
-  out_grad[57][0] = -5.6839856f * r[42] + 2.94174203f * r[44] - q * nx;
-  out_grad[57][1] = 2.94174203f * r[40] - q * ny;
-  out_grad[57][2] = 7.44208408f * r[43] - q * nz;
-  q = lr * y[58];
-  out_grad[58][0] = -4.55732715f * r[43] + 2.40192231f * r[45] - q * nx;
-  out_grad[58][1] = 4.55732715f * r[41] + 2.40192231f * r[39] - q * ny;
-  out_grad[58][2] = 7.20576692f * r[44] - q * nz;
-  q = lr * y[59];
-  out_grad[59][0] = -5.09524665f * r[44] + 1.86052102f * r[46] - q * nx;
-  out_grad[59][1] = 5.09524665f * r[40] + 1.86052102f * r[38] - q * ny;
-  out_grad[59][2] = 6.7936622f * r[45] - q * nz;
-  q = lr * y[60];
-  out_grad[60][0] = -5.63300712f * r[45] + 1.31558703f * r[47] - q * nx;
-  out_grad[60][1] = 5.63300712f * r[39] + 1.31558703f * r[37] - q * ny;
-  out_grad[60][2] = 6.17065013f * r[46] - q * nz;
-  q = lr * y[61];
-  out_grad[61][0] = -6.17065013f * r[46] + 0.759554525f * r[48] - q * nx;
-  out_grad[61][1] = 6.17065013f * r[38] + 0.759554525f * r[36] - q * ny;
-  out_grad[61][2] = 5.26234812f * r[47] - q * nz;
-  q = lr * y[62];
-  out_grad[62][0] = -6.70820393f * r[47] - q * nx;
-  out_grad[62][1] = 6.70820393f * r[37] - q * ny;
-  out_grad[62][2] = 3.87298335f * r[48] - q * nz;
-  q = lr * y[63];
-  out_grad[63][0] = -7.24568837f * r[48] - q * nx;
-  out_grad[63][1] = 7.24568837f * r[36] - q * ny;
-  out_grad[63][2] = -q * nz;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 9
-void shli_sh_grad_9(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                    out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[64];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 64; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-  lr = 2.0f * ir;
-  q = lr * y[4];
-  out_grad[4][0] = -2.23606798f * r[1] - q * nx;
-  out_grad[4][1] = -2.23606798f * r[3] - q * ny;
-  out_grad[4][2] = -q * nz;
-  q = lr * y[5];
-  out_grad[5][0] = -q * nx;
-  out_grad[5][1] = -2.23606798f * r[2] - q * ny;
-  out_grad[5][2] = 2.23606798f * r[1] - q * nz;
-  q = lr * y[6];
-  out_grad[6][0] = 1.29099445f * r[3] - q * nx;
-  out_grad[6][1] = 1.29099445f * r[1] - q * ny;
-  out_grad[6][2] = 2.5819889f * r[2] - q * nz;
-  q = lr * y[7];
-  out_grad[7][0] = -2.23606798f * r[2] - q * nx;
-  out_grad[7][1] = -q * ny;
-  out_grad[7][2] = 2.23606798f * r[3] - q * nz;
-  q = lr * y[8];
-  out_grad[8][0] = -2.23606798f * r[3] - q * nx;
-  out_grad[8][1] = 2.23606798f * r[1] - q * ny;
-  out_grad[8][2] = -q * nz;
-  lr = 3.0f * ir;
-  q = lr * y[9];
-  out_grad[9][0] = -3.24037035f * r[4] - q * nx;
-  out_grad[9][1] = -3.24037035f * r[8] - q * ny;
-  out_grad[9][2] = -q * nz;
-  q = lr * y[10];
-  out_grad[10][0] = -2.64575131f * r[5] - q * nx;
-  out_grad[10][1] = -2.64575131f * r[7] - q * ny;
-  out_grad[10][2] = 2.64575131f * r[4] - q * nz;
-  q = lr * y[11];
-  out_grad[11][0] = 0.836660027f * r[4] - q * nx;
-  out_grad[11][1] = -2.89827535f * r[6] + -0.836660027f * r[8] - q * ny;
-  out_grad[11][2] = 3.34664011f * r[5] - q * nz;
-  q = lr * y[12];
-  out_grad[12][0] = 2.04939015f * r[7] - q * nx;
-  out_grad[12][1] = 2.04939015f * r[5] - q * ny;
-  out_grad[12][2] = 3.54964787f * r[6] - q * nz;
-  q = lr * y[13];
-  out_grad[13][0] = -2.89827535f * r[6] + 0.836660027f * r[8] - q * nx;
-  out_grad[13][1] = 0.836660027f * r[4] - q * ny;
-  out_grad[13][2] = 3.34664011f * r[7] - q * nz;
-  q = lr * y[14];
-  out_grad[14][0] = -2.64575131f * r[7] - q * nx;
-  out_grad[14][1] = 2.64575131f * r[5] - q * ny;
-  out_grad[14][2] = 2.64575131f * r[8] - q * nz;
-  q = lr * y[15];
-  out_grad[15][0] = -3.24037035f * r[8] - q * nx;
-  out_grad[15][1] = 3.24037035f * r[4] - q * ny;
-  out_grad[15][2] = -q * nz;
-  lr = 4.0f * ir;
-  q = lr * y[16];
-  out_grad[16][0] = -4.24264069f * r[9] - q * nx;
-  out_grad[16][1] = -4.24264069f * r[15] - q * ny;
-  out_grad[16][2] = -q * nz;
-  q = lr * y[17];
-  out_grad[17][0] = -3.67423461f * r[10] - q * nx;
-  out_grad[17][1] = -3.67423461f * r[14] - q * ny;
-  out_grad[17][2] = 3.0f * r[9] - q * nz;
-  q = lr * y[18];
-  out_grad[18][0] = -3.10529502f * r[11] + 0.801783726f * r[9] - q * nx;
-  out_grad[18][1] = -3.10529502f * r[13] + -0.801783726f * r[15] - q * ny;
-  out_grad[18][2] = 3.92792202f * r[10] - q * nz;
-  q = lr * y[19];
-  out_grad[19][0] = 1.38873015f * r[10] - q * nx;
-  out_grad[19][1] = -3.58568583f * r[12] + -1.38873015f * r[14] - q * ny;
-  out_grad[19][2] = 4.39155033f * r[11] - q * nz;
-  q = lr * y[20];
-  out_grad[20][0] = 2.7774603f * r[13] - q * nx;
-  out_grad[20][1] = 2.7774603f * r[11] - q * ny;
-  out_grad[20][2] = 4.53557368f * r[12] - q * nz;
-  q = lr * y[21];
-  out_grad[21][0] = -3.58568583f * r[12] + 1.38873015f * r[14] - q * nx;
-  out_grad[21][1] = 1.38873015f * r[10] - q * ny;
-  out_grad[21][2] = 4.39155033f * r[13] - q * nz;
-  q = lr * y[22];
-  out_grad[22][0] = -3.10529502f * r[13] + 0.801783726f * r[15] - q * nx;
-  out_grad[22][1] = 3.10529502f * r[11] + 0.801783726f * r[9] - q * ny;
-  out_grad[22][2] = 3.92792202f * r[14] - q * nz;
-  q = lr * y[23];
-  out_grad[23][0] = -3.67423461f * r[14] - q * nx;
-  out_grad[23][1] = 3.67423461f * r[10] - q * ny;
-  out_grad[23][2] = 3.0f * r[15] - q * nz;
-  q = lr * y[24];
-  out_grad[24][0] = -4.24264069f * r[15] - q * nx;
-  out_grad[24][1] = 4.24264069f * r[9] - q * ny;
-  out_grad[24][2] = -q * nz;
-  lr = 5.0f * ir;
-  q = lr * y[25];
-  out_grad[25][0] = -5.24404424f * r[16] - q * nx;
-  out_grad[25][1] = -5.24404424f * r[24] - q * ny;
-  out_grad[25][2] = -q * nz;
-  q = lr * y[26];
-  out_grad[26][0] = -4.69041576f * r[17] - q * nx;
-  out_grad[26][1] = -4.69041576f * r[23] - q * ny;
-  out_grad[26][2] = 3.31662479f * r[16] - q * nz;
-  q = lr * y[27];
-  out_grad[27][0] = -4.13655788f * r[18] + 0.78173596f * r[16] - q * nx;
-  out_grad[27][1] = -4.13655788f * r[22] + -0.78173596f * r[24] - q * ny;
-  out_grad[27][2] = 4.42216639f * r[17] - q * nz;
-  q = lr * y[28];
-  out_grad[28][0] = -3.58236421f * r[19] + 1.3540064f * r[17] - q * nx;
-  out_grad[28][1] = -3.58236421f * r[21] + -1.3540064f * r[23] - q * ny;
-  out_grad[28][2] = 5.06622805f * r[18] - q * nz;
-  q = lr * y[29];
-  out_grad[29][0] = 1.91485422f * r[18] - q * nx;
-  out_grad[29][1] = -4.28174419f * r[20] + -1.91485422f * r[22] - q * ny;
-  out_grad[29][2] = 5.4160256f * r[19] - q * nz;
-  q = lr * y[30];
-  out_grad[30][0] = 3.49602949f * r[21] - q * nx;
-  out_grad[30][1] = 3.49602949f * r[19] - q * ny;
-  out_grad[30][2] = 5.52770798f * r[20] - q * nz;
-  q = lr * y[31];
-  out_grad[31][0] = -4.28174419f * r[20] + 1.91485422f * r[22] - q * nx;
-  out_grad[31][1] = 1.91485422f * r[18] - q * ny;
-  out_grad[31][2] = 5.4160256f * r[21] - q * nz;
-  q = lr * y[32];
-  out_grad[32][0] = -3.58236421f * r[21] + 1.3540064f * r[23] - q * nx;
-  out_grad[32][1] = 3.58236421f * r[19] + 1.3540064f * r[17] - q * ny;
-  out_grad[32][2] = 5.06622805f * r[22] - q * nz;
-  q = lr * y[33];
-  out_grad[33][0] = -4.13655788f * r[22] + 0.78173596f * r[24] - q * nx;
-  out_grad[33][1] = 4.13655788f * r[18] + 0.78173596f * r[16] - q * ny;
-  out_grad[33][2] = 4.42216639f * r[23] - q * nz;
-  q = lr * y[34];
-  out_grad[34][0] = -4.69041576f * r[23] - q * nx;
-  out_grad[34][1] = 4.69041576f * r[17] - q * ny;
-  out_grad[34][2] = 3.31662479f * r[24] - q * nz;
-  q = lr * y[35];
-  out_grad[35][0] = -5.24404424f * r[24] - q * nx;
-  out_grad[35][1] = 5.24404424f * r[16] - q * ny;
-  out_grad[35][2] = -q * nz;
-  lr = 6.0f * ir;
-  q = lr * y[36];
-  out_grad[36][0] = -6.244998f * r[25] - q * nx;
-  out_grad[36][1] = -6.244998f * r[35] - q * ny;
-  out_grad[36][2] = -q * nz;
-  q = lr * y[37];
-  out_grad[37][0] = -5.70087713f * r[26] - q * nx;
-  out_grad[37][1] = -5.70087713f * r[34] - q * ny;
-  out_grad[37][2] = 3.60555128f * r[25] - q * nz;
-  q = lr * y[38];
-  out_grad[38][0] = -5.15663738f * r[27] + 0.768706115f * r[25] - q * nx;
-  out_grad[38][1] = -5.15663738f * r[33] + -0.768706115f * r[35] - q * ny;
-  out_grad[38][2] = 4.86172435f * r[26] - q * nz;
-  q = lr * y[39];
-  out_grad[39][0] = -4.61223669f * r[28] + 1.33143805f * r[26] - q * nx;
-  out_grad[39][1] = -4.61223669f * r[32] + -1.33143805f * r[34] - q * ny;
-  out_grad[39][2] = 5.64881323f * r[27] - q * nz;
-  q = lr * y[40];
-  out_grad[40][0] = -4.06761042f * r[29] + 1.88293774f * r[27] - q * nx;
-  out_grad[40][1] = -4.06761042f * r[31] + -1.88293774f * r[33] - q * ny;
-  out_grad[40][2] = 6.14964892f * r[28] - q * nz;
-  q = lr * y[41];
-  out_grad[41][0] = 2.43086217f * r[28] - q * nx;
-  out_grad[41][1] = -4.981785f * r[30] + -2.43086217f * r[32] - q * ny;
-  out_grad[41][2] = 6.43145678f * r[29] - q * nz;
-  q = lr * y[42];
-  out_grad[42][0] = 4.21037679f * r[31] - q * nx;
-  out_grad[42][1] = 4.21037679f * r[29] - q * ny;
-  out_grad[42][2] = 6.52268768f * r[30] - q * nz;
-  q = lr * y[43];
-  out_grad[43][0] = -4.981785f * r[30] + 2.43086217f * r[32] - q * nx;
-  out_grad[43][1] = 2.43086217f * r[28] - q * ny;
-  out_grad[43][2] = 6.43145678f * r[31] - q * nz;
-  q = lr * y[44];
-  out_grad[44][0] = -4.06761042f * r[31] + 1.88293774f * r[33] - q * nx;
-  out_grad[44][1] = 4.06761042f * r[29] + 1.88293774f * r[27] - q * ny;
-  out_grad[44][2] = 6.14964892f * r[32] - q * nz;
-  q = lr * y[45];
-  out_grad[45][0] = -4.61223669f * r[32] + 1.33143805f * r[34] - q * nx;
-  out_grad[45][1] = 4.61223669f * r[28] + 1.33143805f * r[26] - q * ny;
-  out_grad[45][2] = 5.64881323f * r[33] - q * nz;
-  q = lr * y[46];
-  out_grad[46][0] = -5.15663738f * r[33] + 0.768706115f * r[35] - q * nx;
-  out_grad[46][1] = 5.15663738f * r[27] + 0.768706115f * r[25] - q * ny;
-  out_grad[46][2] = 4.86172435f * r[34] - q * nz;
-  q = lr * y[47];
-  out_grad[47][0] = -5.70087713f * r[34] - q * nx;
-  out_grad[47][1] = 5.70087713f * r[26] - q * ny;
-  out_grad[47][2] = 3.60555128f * r[35] - q * nz;
-  q = lr * y[48];
-  out_grad[48][0] = -6.244998f * r[35] - q * nx;
-  out_grad[48][1] = 6.244998f * r[25] - q * ny;
-  out_grad[48][2] = -q * nz;
-  lr = 7.0f * ir;
-  q = lr * y[49];
-  out_grad[49][0] = -7.24568837f * r[36] - q * nx;
-  out_grad[49][1] = -7.24568837f * r[48] - q * ny;
-  out_grad[49][2] = -q * nz;
-  q = lr * y[50];
-  out_grad[50][0] = -6.70820393f * r[37] - q * nx;
-  out_grad[50][1] = -6.70820393f * r[47] - q * ny;
-  out_grad[50][2] = 3.87298335f * r[36] - q * nz;
-  q = lr * y[51];
-  out_grad[51][0] = -6.17065013f * r[38] + 0.759554525f * r[36] - q * nx;
-  out_grad[51][1] = -6.17065013f * r[46] + -0.759554525f * r[48] - q * ny;
-  out_grad[51][2] = 5.26234812f * r[37] - q * nz;
-  q = lr * y[52];
-  out_grad[52][0] = -5.63300712f * r[39] + 1.31558703f * r[37] - q * nx;
-  out_grad[52][1] = -5.63300712f * r[45] + -1.31558703f * r[47] - q * ny;
-  out_grad[52][2] = 6.17065013f * r[38] - q * nz;
-  q = lr * y[53];
-  out_grad[53][0] = -5.09524665f * r[40] + 1.86052102f * r[38] - q * nx;
-  out_grad[53][1] = -5.09524665f * r[44] + -1.86052102f * r[46] - q * ny;
-  out_grad[53][2] = 6.7936622f * r[39] - q * nz;
-  q = lr * y[54];
-  out_grad[54][0] = -4.55732715f * r[41] + 2.40192231f * r[39] - q * nx;
-  out_grad[54][1] = -4.55732715f * r[43] + -2.40192231f * r[45] - q * ny;
-  out_grad[54][2] = 7.20576692f * r[40] - q * nz;
-  q = lr * y[55];
-  out_grad[55][0] = 2.94174203f * r[40] - q * nx;
-  out_grad[55][1] = -5.6839856f * r[42] + -2.94174203f * r[44] - q * ny;
-  out_grad[55][2] = 7.44208408f * r[41] - q * nz;
-  q = lr * y[56];
-  out_grad[56][0] = 4.92247592f * r[43] - q * nx;
-  out_grad[56][1] = 4.92247592f * r[41] - q * ny;
-  out_grad[56][2] = 7.51920618f * r[42] - q * nz;
-  q = lr * y[57];
-  out_grad[57][0] = -5.6839856f * r[42] + 2.94174203f * r[44] - q * nx;
-  out_grad[57][1] = 2.94174203f * r[40] - q * ny;
-  out_grad[57][2] = 7.44208408f * r[43] - q * nz;
-  q = lr * y[58];
-  out_grad[58][0] = -4.55732715f * r[43] + 2.40192231f * r[45] - q * nx;
-  out_grad[58][1] = 4.55732715f * r[41] + 2.40192231f * r[39] - q * ny;
-  out_grad[58][2] = 7.20576692f * r[44] - q * nz;
-  q = lr * y[59];
-  out_grad[59][0] = -5.09524665f * r[44] + 1.86052102f * r[46] - q * nx;
-  out_grad[59][1] = 5.09524665f * r[40] + 1.86052102f * r[38] - q * ny;
-  out_grad[59][2] = 6.7936622f * r[45] - q * nz;
-  q = lr * y[60];
-  out_grad[60][0] = -5.63300712f * r[45] + 1.31558703f * r[47] - q * nx;
-  out_grad[60][1] = 5.63300712f * r[39] + 1.31558703f * r[37] - q * ny;
-  out_grad[60][2] = 6.17065013f * r[46] - q * nz;
-  q = lr * y[61];
-  out_grad[61][0] = -6.17065013f * r[46] + 0.759554525f * r[48] - q * nx;
-  out_grad[61][1] = 6.17065013f * r[38] + 0.759554525f * r[36] - q * ny;
-  out_grad[61][2] = 5.26234812f * r[47] - q * nz;
-  q = lr * y[62];
-  out_grad[62][0] = -6.70820393f * r[47] - q * nx;
-  out_grad[62][1] = 6.70820393f * r[37] - q * ny;
-  out_grad[62][2] = 3.87298335f * r[48] - q * nz;
-  q = lr * y[63];
-  out_grad[63][0] = -7.24568837f * r[48] - q * nx;
-  out_grad[63][1] = 7.24568837f * r[36] - q * ny;
-  out_grad[63][2] = -q * nz;
-  lr = 8.0f * ir;
-  q = lr * y[64];
-  out_grad[64][0] = -8.24621125f * r[49] - q * nx;
-  out_grad[64][1] = -8.24621125f * r[63] - q * ny;
-  out_grad[64][2] = -q * nz;
-  q = lr * y[65];
-  out_grad[65][0] = -7.71362431f * r[50] - q * nx;
-  out_grad[65][1] = -7.71362431f * r[62] - q * ny;
-  out_grad[65][2] = 4.12310563f * r[49] - q * nz;
-  q = lr * y[66];
-  out_grad[66][0] = -7.18099343f * r[51] + 0.752772653f * r[49] - q * nx;
-  out_grad[66][1] = -7.18099343f * r[61] + -0.752772653f * r[63] - q * ny;
-  out_grad[66][2] = 5.63323471f * r[50] - q * nz;
-  q = lr * y[67];
-  out_grad[67][0] = -6.64830806f * r[52] + 1.30384048f * r[50] - q * nx;
-  out_grad[67][1] = -6.64830806f * r[60] + -1.30384048f * r[62] - q * ny;
-  out_grad[67][2] = 6.64830806f * r[51] - q * nz;
-  q = lr * y[68];
-  out_grad[68][0] = -6.11555394f * r[53] + 1.84390889f * r[51] - q * nx;
-  out_grad[68][1] = -6.11555394f * r[59] + -1.84390889f * r[61] - q * ny;
-  out_grad[68][2] = 7.37563557f * r[52] - q * nz;
-  q = lr * y[69];
-  out_grad[69][0] = -5.58271141f * r[54] + 2.38047614f * r[52] - q * nx;
-  out_grad[69][1] = -5.58271141f * r[58] + -2.38047614f * r[60] - q * ny;
-  out_grad[69][2] = 7.89514619f * r[53] - q * nz;
-  q = lr * y[70];
-  out_grad[70][0] = -5.04975247f * r[55] + 2.91547595f * r[53] - q * nx;
-  out_grad[70][1] = -5.04975247f * r[57] + -2.91547595f * r[59] - q * ny;
-  out_grad[70][2] = 8.24621125f * r[54] - q * nz;
-  q = lr * y[71];
-  out_grad[71][0] = 3.44963766f * r[54] - q * nx;
-  out_grad[71][1] = -6.38748777f * r[56] + -3.44963766f * r[58] - q * ny;
-  out_grad[71][2] = 8.44985207f * r[55] - q * nz;
-  q = lr * y[72];
-  out_grad[72][0] = 5.63323471f * r[57] - q * nx;
-  out_grad[72][1] = 5.63323471f * r[55] - q * ny;
-  out_grad[72][2] = 8.51665036f * r[56] - q * nz;
-  q = lr * y[73];
-  out_grad[73][0] = -6.38748777f * r[56] + 3.44963766f * r[58] - q * nx;
-  out_grad[73][1] = 3.44963766f * r[54] - q * ny;
-  out_grad[73][2] = 8.44985207f * r[57] - q * nz;
-  q = lr * y[74];
-  out_grad[74][0] = -5.04975247f * r[57] + 2.91547595f * r[59] - q * nx;
-  out_grad[74][1] = 5.04975247f * r[55] + 2.91547595f * r[53] - q * ny;
-  out_grad[74][2] = 8.24621125f * r[58] - q * nz;
-  q = lr * y[75];
-  out_grad[75][0] = -5.58271141f * r[58] + 2.38047614f * r[60] - q * nx;
-  out_grad[75][1] = 5.58271141f * r[54] + 2.38047614f * r[52] - q * ny;
-  out_grad[75][2] = 7.89514619f * r[59] - q * nz;
-  q = lr * y[76];
-  out_grad[76][0] = -6.11555394f * r[59] + 1.84390889f * r[61] - q * nx;
-  out_grad[76][1] = 6.11555394f * r[53] + 1.84390889f * r[51] - q * ny;
-  out_grad[76][2] = 7.37563557f * r[60] - q * nz;
-  q = lr * y[77];
-  out_grad[77][0] = -6.64830806f * r[60] + 1.30384048f * r[62] - q * nx;
-  out_grad[77][1] = 6.64830806f * r[52] + 1.30384048f * r[50] - q * ny;
-  out_grad[77][2] = 6.64830806f * r[61] - q * nz;
-  q = lr * y[78];
-  out_grad[78][0] = -7.18099343f * r[61] + 0.752772653f * r[63] - q * nx;
-  out_grad[78][1] = 7.18099343f * r[51] + 0.752772653f * r[49] - q * ny;
-  out_grad[78][2] = 5.63323471f * r[62] - q * nz;
-  q = lr * y[79];
-  out_grad[79][0] = -7.71362431f * r[62] - q * nx;
-  out_grad[79][1] = 7.71362431f * r[50] - q * ny;
-  out_grad[79][2] = 4.12310563f * r[63] - q * nz;
-  q = lr * y[80];
-  out_grad[80][0] = -8.24621125f * r[63] - q * nx;
-  out_grad[80][1] = 8.24621125f * r[49] - q * ny;
-  out_grad[80][2] = -q * nz;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 10
-void shli_sh_grad_10(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                     out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[81];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 81; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-  lr = 2.0f * ir;
-  q = lr * y[4];
-  out_grad[4][0] = -2.23606798f * r[1] - q * nx;
-  out_grad[4][1] = -2.23606798f * r[3] - q * ny;
-  out_grad[4][2] = -q * nz;
-  q = lr * y[5];
-  out_grad[5][0] = -q * nx;
-  out_grad[5][1] = -2.23606798f * r[2] - q * ny;
-  out_grad[5][2] = 2.23606798f * r[1] - q * nz;
-  q = lr * y[6];
-  out_grad[6][0] = 1.29099445f * r[3] - q * nx;
-  out_grad[6][1] = 1.29099445f * r[1] - q * ny;
-  out_grad[6][2] = 2.5819889f * r[2] - q * nz;
-  q = lr * y[7];
-  out_grad[7][0] = -2.23606798f * r[2] - q * nx;
-  out_grad[7][1] = -q * ny;
-  out_grad[7][2] = 2.23606798f * r[3] - q * nz;
-  q = lr * y[8];
-  out_grad[8][0] = -2.23606798f * r[3] - q * nx;
-  out_grad[8][1] = 2.23606798f * r[1] - q * ny;
-  out_grad[8][2] = -q * nz;
-  lr = 3.0f * ir;
-  q = lr * y[9];
-  out_grad[9][0] = -3.24037035f * r[4] - q * nx;
-  out_grad[9][1] = -3.24037035f * r[8] - q * ny;
-  out_grad[9][2] = -q * nz;
-  q = lr * y[10];
-  out_grad[10][0] = -2.64575131f * r[5] - q * nx;
-  out_grad[10][1] = -2.64575131f * r[7] - q * ny;
-  out_grad[10][2] = 2.64575131f * r[4] - q * nz;
-  q = lr * y[11];
-  out_grad[11][0] = 0.836660027f * r[4] - q * nx;
-  out_grad[11][1] = -2.89827535f * r[6] + -0.836660027f * r[8] - q * ny;
-  out_grad[11][2] = 3.34664011f * r[5] - q * nz;
-  q = lr * y[12];
-  out_grad[12][0] = 2.04939015f * r[7] - q * nx;
-  out_grad[12][1] = 2.04939015f * r[5] - q * ny;
-  out_grad[12][2] = 3.54964787f * r[6] - q * nz;
-  q = lr * y[13];
-  out_grad[13][0] = -2.89827535f * r[6] + 0.836660027f * r[8] - q * nx;
-  out_grad[13][1] = 0.836660027f * r[4] - q * ny;
-  out_grad[13][2] = 3.34664011f * r[7] - q * nz;
-  q = lr * y[14];
-  out_grad[14][0] = -2.64575131f * r[7] - q * nx;
-  out_grad[14][1] = 2.64575131f * r[5] - q * ny;
-  out_grad[14][2] = 2.64575131f * r[8] - q * nz;
-  q = lr * y[15];
-  out_grad[15][0] = -3.24037035f * r[8] - q * nx;
-  out_grad[15][1] = 3.24037035f * r[4] - q * ny;
-  out_grad[15][2] = -q * nz;
-  lr = 4.0f * ir;
-  q = lr * y[16];
-  out_grad[16][0] = -4.24264069f * r[9] - q * nx;
-  out_grad[16][1] = -4.24264069f * r[15] - q * ny;
-  out_grad[16][2] = -q * nz;
-  q = lr * y[17];
-  out_grad[17][0] = -3.67423461f * r[10] - q * nx;
-  out_grad[17][1] = -3.67423461f * r[14] - q * ny;
-  out_grad[17][2] = 3.0f * r[9] - q * nz;
-  q = lr * y[18];
-  out_grad[18][0] = -3.10529502f * r[11] + 0.801783726f * r[9] - q * nx;
-  out_grad[18][1] = -3.10529502f * r[13] + -0.801783726f * r[15] - q * ny;
-  out_grad[18][2] = 3.92792202f * r[10] - q * nz;
-  q = lr * y[19];
-  out_grad[19][0] = 1.38873015f * r[10] - q * nx;
-  out_grad[19][1] = -3.58568583f * r[12] + -1.38873015f * r[14] - q * ny;
-  out_grad[19][2] = 4.39155033f * r[11] - q * nz;
-  q = lr * y[20];
-  out_grad[20][0] = 2.7774603f * r[13] - q * nx;
-  out_grad[20][1] = 2.7774603f * r[11] - q * ny;
-  out_grad[20][2] = 4.53557368f * r[12] - q * nz;
-  q = lr * y[21];
-  out_grad[21][0] = -3.58568583f * r[12] + 1.38873015f * r[14] - q * nx;
-  out_grad[21][1] = 1.38873015f * r[10] - q * ny;
-  out_grad[21][2] = 4.39155033f * r[13] - q * nz;
-  q = lr * y[22];
-  out_grad[22][0] = -3.10529502f * r[13] + 0.801783726f * r[15] - q * nx;
-  out_grad[22][1] = 3.10529502f * r[11] + 0.801783726f * r[9] - q * ny;
-  out_grad[22][2] = 3.92792202f * r[14] - q * nz;
-  q = lr * y[23];
-  out_grad[23][0] = -3.67423461f * r[14] - q * nx;
-  out_grad[23][1] = 3.67423461f * r[10] - q * ny;
-  out_grad[23][2] = 3.0f * r[15] - q * nz;
-  q = lr * y[24];
-  out_grad[24][0] = -4.24264069f * r[15] - q * nx;
-  out_grad[24][1] = 4.24264069f * r[9] - q * ny;
-  out_grad[24][2] = -q * nz;
-  lr = 5.0f * ir;
-  q = lr * y[25];
-  out_grad[25][0] = -5.24404424f * r[16] - q * nx;
-  out_grad[25][1] = -5.24404424f * r[24] - q * ny;
-  out_grad[25][2] = -q * nz;
-  q = lr * y[26];
-  out_grad[26][0] = -4.69041576f * r[17] - q * nx;
-  out_grad[26][1] = -4.69041576f * r[23] - q * ny;
-  out_grad[26][2] = 3.31662479f * r[16] - q * nz;
-  q = lr * y[27];
-  out_grad[27][0] = -4.13655788f * r[18] + 0.78173596f * r[16] - q * nx;
-  out_grad[27][1] = -4.13655788f * r[22] + -0.78173596f * r[24] - q * ny;
-  out_grad[27][2] = 4.42216639f * r[17] - q * nz;
-  q = lr * y[28];
-  out_grad[28][0] = -3.58236421f * r[19] + 1.3540064f * r[17] - q * nx;
-  out_grad[28][1] = -3.58236421f * r[21] + -1.3540064f * r[23] - q * ny;
-  out_grad[28][2] = 5.06622805f * r[18] - q * nz;
-  q = lr * y[29];
-  out_grad[29][0] = 1.91485422f * r[18] - q * nx;
-  out_grad[29][1] = -4.28174419f * r[20] + -1.91485422f * r[22] - q * ny;
-  out_grad[29][2] = 5.4160256f * r[19] - q * nz;
-  q = lr * y[30];
-  out_grad[30][0] = 3.49602949f * r[21] - q * nx;
-  out_grad[30][1] = 3.49602949f * r[19] - q * ny;
-  out_grad[30][2] = 5.52770798f * r[20] - q * nz;
-  q = lr * y[31];
-  out_grad[31][0] = -4.28174419f * r[20] + 1.91485422f * r[22] - q * nx;
-  out_grad[31][1] = 1.91485422f * r[18] - q * ny;
-  out_grad[31][2] = 5.4160256f * r[21] - q * nz;
-  q = lr * y[32];
-  out_grad[32][0] = -3.58236421f * r[21] + 1.3540064f * r[23] - q * nx;
-  out_grad[32][1] = 3.58236421f * r[19] + 1.3540064f * r[17] - q * ny;
-  out_grad[32][2] = 5.06622805f * r[22] - q * nz;
-  q = lr * y[33];
-  out_grad[33][0] = -4.13655788f * r[22] + 0.78173596f * r[24] - q * nx;
-  out_grad[33][1] = 4.13655788f * r[18] + 0.78173596f * r[16] - q * ny;
-  out_grad[33][2] = 4.42216639f * r[23] - q * nz;
-  q = lr * y[34];
-  out_grad[34][0] = -4.69041576f * r[23] - q * nx;
-  out_grad[34][1] = 4.69041576f * r[17] - q * ny;
-  out_grad[34][2] = 3.31662479f * r[24] - q * nz;
-  q = lr * y[35];
-  out_grad[35][0] = -5.24404424f * r[24] - q * nx;
-  out_grad[35][1] = 5.24404424f * r[16] - q * ny;
-  out_grad[35][2] = -q * nz;
-  lr = 6.0f * ir;
-  q = lr * y[36];
-  out_grad[36][0] = -6.244998f * r[25] - q * nx;
-  out_grad[36][1] = -6.244998f * r[35] - q * ny;
-  out_grad[36][2] = -q * nz;
-  q = lr * y[37];
-  out_grad[37][0] = -5.70087713f * r[26] - q * nx;
-  out_grad[37][1] = -5.70087713f * r[34] - q * ny;
-  out_grad[37][2] = 3.60555128f * r[25] - q * nz;
-  q = lr * y[38];
-  out_grad[38][0] = -5.15663738f * r[27] + 0.768706115f * r[25] - q * nx;
-  out_grad[38][1] = -5.15663738f * r[33] + -0.768706115f * r[35] - q * ny;
-  out_grad[38][2] = 4.86172435f * r[26] - q * nz;
-  q = lr * y[39];
-  out_grad[39][0] = -4.61223669f * r[28] + 1.33143805f * r[26] - q * nx;
-  out_grad[39][1] = -4.61223669f * r[32] + -1.33143805f * r[34] - q * ny;
-  out_grad[39][2] = 5.64881323f * r[27] - q * nz;
-  q = lr * y[40];
-  out_grad[40][0] = -4.06761042f * r[29] + 1.88293774f * r[27] - q * nx;
-  out_grad[40][1] = -4.06761042f * r[31] + -1.88293774f * r[33] - q * ny;
-  out_grad[40][2] = 6.14964892f * r[28] - q * nz;
-  q = lr * y[41];
-  out_grad[41][0] = 2.43086217f * r[28] - q * nx;
-  out_grad[41][1] = -4.981785f * r[30] + -2.43086217f * r[32] - q * ny;
-  out_grad[41][2] = 6.43145678f * r[29] - q * nz;
-  q = lr * y[42];
-  out_grad[42][0] = 4.21037679f * r[31] - q * nx;
-  out_grad[42][1] = 4.21037679f * r[29] - q * ny;
-  out_grad[42][2] = 6.52268768f * r[30] - q * nz;
-  q = lr * y[43];
-  out_grad[43][0] = -4.981785f * r[30] + 2.43086217f * r[32] - q * nx;
-  out_grad[43][1] = 2.43086217f * r[28] - q * ny;
-  out_grad[43][2] = 6.43145678f * r[31] - q * nz;
-  q = lr * y[44];
-  out_grad[44][0] = -4.06761042f * r[31] + 1.88293774f * r[33] - q * nx;
-  out_grad[44][1] = 4.06761042f * r[29] + 1.88293774f * r[27] - q * ny;
-  out_grad[44][2] = 6.14964892f * r[32] - q * nz;
-  q = lr * y[45];
-  out_grad[45][0] = -4.61223669f * r[32] + 1.33143805f * r[34] - q * nx;
-  out_grad[45][1] = 4.61223669f * r[28] + 1.33143805f * r[26] - q * ny;
-  out_grad[45][2] = 5.64881323f * r[33] - q * nz;
-  q = lr * y[46];
-  out_grad[46][0] = -5.15663738f * r[33] + 0.768706115f * r[35] - q * nx;
-  out_grad[46][1] = 5.15663738f * r[27] + 0.768706115f * r[25] - q * ny;
-  out_grad[46][2] = 4.86172435f * r[34] - q * nz;
-  q = lr * y[47];
-  out_grad[47][0] = -5.70087713f * r[34] - q * nx;
-  out_grad[47][1] = 5.70087713f * r[26] - q * ny;
-  out_grad[47][2] = 3.60555128f * r[35] - q * nz;
-  q = lr * y[48];
-  out_grad[48][0] = -6.244998f * r[35] - q * nx;
-  out_grad[48][1] = 6.244998f * r[25] - q * ny;
-  out_grad[48][2] = -q * nz;
-  lr = 7.0f * ir;
-  q = lr * y[49];
-  out_grad[49][0] = -7.24568837f * r[36] - q * nx;
-  out_grad[49][1] = -7.24568837f * r[48] - q * ny;
-  out_grad[49][2] = -q * nz;
-  q = lr * y[50];
-  out_grad[50][0] = -6.70820393f * r[37] - q * nx;
-  out_grad[50][1] = -6.70820393f * r[47] - q * ny;
-  out_grad[50][2] = 3.87298335f * r[36] - q * nz;
-  q = lr * y[51];
-  out_grad[51][0] = -6.17065013f * r[38] + 0.759554525f * r[36] - q * nx;
-  out_grad[51][1] = -6.17065013f * r[46] + -0.759554525f * r[48] - q * ny;
-  out_grad[51][2] = 5.26234812f * r[37] - q * nz;
-  q = lr * y[52];
-  out_grad[52][0] = -5.63300712f * r[39] + 1.31558703f * r[37] - q * nx;
-  out_grad[52][1] = -5.63300712f * r[45] + -1.31558703f * r[47] - q * ny;
-  out_grad[52][2] = 6.17065013f * r[38] - q * nz;
-  q = lr * y[53];
-  out_grad[53][0] = -5.09524665f * r[40] + 1.86052102f * r[38] - q * nx;
-  out_grad[53][1] = -5.09524665f * r[44] + -1.86052102f * r[46] - q * ny;
-  out_grad[53][2] = 6.7936622f * r[39] - q * nz;
-  q = lr * y[54];
-  out_grad[54][0] = -4.55732715f * r[41] + 2.40192231f * r[39] - q * nx;
-  out_grad[54][1] = -4.55732715f * r[43] + -2.40192231f * r[45] - q * ny;
-  out_grad[54][2] = 7.20576692f * r[40] - q * nz;
-  q = lr * y[55];
-  out_grad[55][0] = 2.94174203f * r[40] - q * nx;
-  out_grad[55][1] = -5.6839856f * r[42] + -2.94174203f * r[44] - q * ny;
-  out_grad[55][2] = 7.44208408f * r[41] - q * nz;
-  q = lr * y[56];
-  out_grad[56][0] = 4.92247592f * r[43] - q * nx;
-  out_grad[56][1] = 4.92247592f * r[41] - q * ny;
-  out_grad[56][2] = 7.51920618f * r[42] - q * nz;
-  q = lr * y[57];
-  out_grad[57][0] = -5.6839856f * r[42] + 2.94174203f * r[44] - q * nx;
-  out_grad[57][1] = 2.94174203f * r[40] - q * ny;
-  out_grad[57][2] = 7.44208408f * r[43] - q * nz;
-  q = lr * y[58];
-  out_grad[58][0] = -4.55732715f * r[43] + 2.40192231f * r[45] - q * nx;
-  out_grad[58][1] = 4.55732715f * r[41] + 2.40192231f * r[39] - q * ny;
-  out_grad[58][2] = 7.20576692f * r[44] - q * nz;
-  q = lr * y[59];
-  out_grad[59][0] = -5.09524665f * r[44] + 1.86052102f * r[46] - q * nx;
-  out_grad[59][1] = 5.09524665f * r[40] + 1.86052102f * r[38] - q * ny;
-  out_grad[59][2] = 6.7936622f * r[45] - q * nz;
-  q = lr * y[60];
-  out_grad[60][0] = -5.63300712f * r[45] + 1.31558703f * r[47] - q * nx;
-  out_grad[60][1] = 5.63300712f * r[39] + 1.31558703f * r[37] - q * ny;
-  out_grad[60][2] = 6.17065013f * r[46] - q * nz;
-  q = lr * y[61];
-  out_grad[61][0] = -6.17065013f * r[46] + 0.759554525f * r[48] - q * nx;
-  out_grad[61][1] = 6.17065013f * r[38] + 0.759554525f * r[36] - q * ny;
-  out_grad[61][2] = 5.26234812f * r[47] - q * nz;
-  q = lr * y[62];
-  out_grad[62][0] = -6.70820393f * r[47] - q * nx;
-  out_grad[62][1] = 6.70820393f * r[37] - q * ny;
-  out_grad[62][2] = 3.87298335f * r[48] - q * nz;
-  q = lr * y[63];
-  out_grad[63][0] = -7.24568837f * r[48] - q * nx;
-  out_grad[63][1] = 7.24568837f * r[36] - q * ny;
-  out_grad[63][2] = -q * nz;
-  lr = 8.0f * ir;
-  q = lr * y[64];
-  out_grad[64][0] = -8.24621125f * r[49] - q * nx;
-  out_grad[64][1] = -8.24621125f * r[63] - q * ny;
-  out_grad[64][2] = -q * nz;
-  q = lr * y[65];
-  out_grad[65][0] = -7.71362431f * r[50] - q * nx;
-  out_grad[65][1] = -7.71362431f * r[62] - q * ny;
-  out_grad[65][2] = 4.12310563f * r[49] - q * nz;
-  q = lr * y[66];
-  out_grad[66][0] = -7.18099343f * r[51] + 0.752772653f * r[49] - q * nx;
-  out_grad[66][1] = -7.18099343f * r[61] + -0.752772653f * r[63] - q * ny;
-  out_grad[66][2] = 5.63323471f * r[50] - q * nz;
-  q = lr * y[67];
-  out_grad[67][0] = -6.64830806f * r[52] + 1.30384048f * r[50] - q * nx;
-  out_grad[67][1] = -6.64830806f * r[60] + -1.30384048f * r[62] - q * ny;
-  out_grad[67][2] = 6.64830806f * r[51] - q * nz;
-  q = lr * y[68];
-  out_grad[68][0] = -6.11555394f * r[53] + 1.84390889f * r[51] - q * nx;
-  out_grad[68][1] = -6.11555394f * r[59] + -1.84390889f * r[61] - q * ny;
-  out_grad[68][2] = 7.37563557f * r[52] - q * nz;
-  q = lr * y[69];
-  out_grad[69][0] = -5.58271141f * r[54] + 2.38047614f * r[52] - q * nx;
-  out_grad[69][1] = -5.58271141f * r[58] + -2.38047614f * r[60] - q * ny;
-  out_grad[69][2] = 7.89514619f * r[53] - q * nz;
-  q = lr * y[70];
-  out_grad[70][0] = -5.04975247f * r[55] + 2.91547595f * r[53] - q * nx;
-  out_grad[70][1] = -5.04975247f * r[57] + -2.91547595f * r[59] - q * ny;
-  out_grad[70][2] = 8.24621125f * r[54] - q * nz;
-  q = lr * y[71];
-  out_grad[71][0] = 3.44963766f * r[54] - q * nx;
-  out_grad[71][1] = -6.38748777f * r[56] + -3.44963766f * r[58] - q * ny;
-  out_grad[71][2] = 8.44985207f * r[55] - q * nz;
-  q = lr * y[72];
-  out_grad[72][0] = 5.63323471f * r[57] - q * nx;
-  out_grad[72][1] = 5.63323471f * r[55] - q * ny;
-  out_grad[72][2] = 8.51665036f * r[56] - q * nz;
-  q = lr * y[73];
-  out_grad[73][0] = -6.38748777f * r[56] + 3.44963766f * r[58] - q * nx;
-  out_grad[73][1] = 3.44963766f * r[54] - q * ny;
-  out_grad[73][2] = 8.44985207f * r[57] - q * nz;
-  q = lr * y[74];
-  out_grad[74][0] = -5.04975247f * r[57] + 2.91547595f * r[59] - q * nx;
-  out_grad[74][1] = 5.04975247f * r[55] + 2.91547595f * r[53] - q * ny;
-  out_grad[74][2] = 8.24621125f * r[58] - q * nz;
-  q = lr * y[75];
-  out_grad[75][0] = -5.58271141f * r[58] + 2.38047614f * r[60] - q * nx;
-  out_grad[75][1] = 5.58271141f * r[54] + 2.38047614f * r[52] - q * ny;
-  out_grad[75][2] = 7.89514619f * r[59] - q * nz;
-  q = lr * y[76];
-  out_grad[76][0] = -6.11555394f * r[59] + 1.84390889f * r[61] - q * nx;
-  out_grad[76][1] = 6.11555394f * r[53] + 1.84390889f * r[51] - q * ny;
-  out_grad[76][2] = 7.37563557f * r[60] - q * nz;
-  q = lr * y[77];
-  out_grad[77][0] = -6.64830806f * r[60] + 1.30384048f * r[62] - q * nx;
-  out_grad[77][1] = 6.64830806f * r[52] + 1.30384048f * r[50] - q * ny;
-  out_grad[77][2] = 6.64830806f * r[61] - q * nz;
-  q = lr * y[78];
-  out_grad[78][0] = -7.18099343f * r[61] + 0.752772653f * r[63] - q * nx;
-  out_grad[78][1] = 7.18099343f * r[51] + 0.752772653f * r[49] - q * ny;
-  out_grad[78][2] = 5.63323471f * r[62] - q * nz;
-  q = lr * y[79];
-  out_grad[79][0] = -7.71362431f * r[62] - q * nx;
-  out_grad[79][1] = 7.71362431f * r[50] - q * ny;
-  out_grad[79][2] = 4.12310563f * r[63] - q * nz;
-  q = lr * y[80];
-  out_grad[80][0] = -8.24621125f * r[63] - q * nx;
-  out_grad[80][1] = 8.24621125f * r[49] - q * ny;
-  out_grad[80][2] = -q * nz;
-  lr = 9.0f * ir;
-  q = lr * y[81];
-  out_grad[81][0] = -9.246621f * r[64] - q * nx;
-  out_grad[81][1] = -9.246621f * r[80] - q * ny;
-  out_grad[81][2] = -q * nz;
-  q = lr * y[82];
-  out_grad[82][0] = -8.71779789f * r[65] - q * nx;
-  out_grad[82][1] = -8.71779789f * r[79] - q * ny;
-  out_grad[82][2] = 4.35889894f * r[64] - q * nz;
-  q = lr * y[83];
-  out_grad[83][0] = -8.1889452f * r[66] + 0.747545002f * r[64] - q * nx;
-  out_grad[83][1] = -8.1889452f * r[78] + -0.747545002f * r[80] - q * ny;
-  out_grad[83][2] = 5.98036001f * r[65] - q * nz;
-  q = lr * y[84];
-  out_grad[84][0] = -7.66005683f * r[67] + 1.29478592f * r[65] - q * nx;
-  out_grad[84][1] = -7.66005683f * r[77] + -1.29478592f * r[79] - q * ny;
-  out_grad[84][2] = 7.09183458f * r[66] - q * nz;
-  q = lr * y[85];
-  out_grad[85][0] = -7.13112482f * r[68] + 1.83110381f * r[66] - q * nx;
-  out_grad[85][1] = -7.13112482f * r[76] + -1.83110381f * r[78] - q * ny;
-  out_grad[85][2] = 7.91127267f * r[67] - q * nz;
-  q = lr * y[86];
-  out_grad[86][0] = -6.60213869f * r[69] + 2.36394486f * r[67] - q * nx;
-  out_grad[86][1] = -6.60213869f * r[75] + -2.36394486f * r[77] - q * ny;
-  out_grad[86][2] = 8.5233244f * r[68] - q * nz;
-  q = lr * y[87];
-  out_grad[87][0] = -6.0730843f * r[70] + 2.89522934f * r[68] - q * nx;
-  out_grad[87][1] = -6.0730843f * r[74] + -2.89522934f * r[76] - q * ny;
-  out_grad[87][2] = 8.97054002f * r[69] - q * nz;
-  q = lr * y[88];
-  out_grad[88][0] = -5.54394211f * r[71] + 3.42568156f * r[69] - q * nx;
-  out_grad[88][1] = -5.54394211f * r[73] + -3.42568156f * r[75] - q * ny;
-  out_grad[88][2] = 9.27678951f * r[70] - q * nz;
-  q = lr * y[89];
-  out_grad[89][0] = 3.95563634f * r[70] - q * nx;
-  out_grad[89][1] = -7.09183458f * r[72] + -3.95563634f * r[74] - q * ny;
-  out_grad[89][2] = 9.45577943f * r[71] - q * nz;
-  q = lr * y[90];
-  out_grad[90][0] = 6.34312968f * r[73] - q * nx;
-  out_grad[90][1] = 6.34312968f * r[71] - q * ny;
-  out_grad[90][2] = 9.51469452f * r[72] - q * nz;
-  q = lr * y[91];
-  out_grad[91][0] = -7.09183458f * r[72] + 3.95563634f * r[74] - q * nx;
-  out_grad[91][1] = 3.95563634f * r[70] - q * ny;
-  out_grad[91][2] = 9.45577943f * r[73] - q * nz;
-  q = lr * y[92];
-  out_grad[92][0] = -5.54394211f * r[73] + 3.42568156f * r[75] - q * nx;
-  out_grad[92][1] = 5.54394211f * r[71] + 3.42568156f * r[69] - q * ny;
-  out_grad[92][2] = 9.27678951f * r[74] - q * nz;
-  q = lr * y[93];
-  out_grad[93][0] = -6.0730843f * r[74] + 2.89522934f * r[76] - q * nx;
-  out_grad[93][1] = 6.0730843f * r[70] + 2.89522934f * r[68] - q * ny;
-  out_grad[93][2] = 8.97054002f * r[75] - q * nz;
-  q = lr * y[94];
-  out_grad[94][0] = -6.60213869f * r[75] + 2.36394486f * r[77] - q * nx;
-  out_grad[94][1] = 6.60213869f * r[69] + 2.36394486f * r[67] - q * ny;
-  out_grad[94][2] = 8.5233244f * r[76] - q * nz;
-  q = lr * y[95];
-  out_grad[95][0] = -7.13112482f * r[76] + 1.83110381f * r[78] - q * nx;
-  out_grad[95][1] = 7.13112482f * r[68] + 1.83110381f * r[66] - q * ny;
-  out_grad[95][2] = 7.91127267f * r[77] - q * nz;
-  q = lr * y[96];
-  out_grad[96][0] = -7.66005683f * r[77] + 1.29478592f * r[79] - q * nx;
-  out_grad[96][1] = 7.66005683f * r[67] + 1.29478592f * r[65] - q * ny;
-  out_grad[96][2] = 7.09183458f * r[78] - q * nz;
-  q = lr * y[97];
-  out_grad[97][0] = -8.1889452f * r[78] + 0.747545002f * r[80] - q * nx;
-  out_grad[97][1] = 8.1889452f * r[66] + 0.747545002f * r[64] - q * ny;
-  out_grad[97][2] = 5.98036001f * r[79] - q * nz;
-  q = lr * y[98];
-  out_grad[98][0] = -8.71779789f * r[79] - q * nx;
-  out_grad[98][1] = 8.71779789f * r[65] - q * ny;
-  out_grad[98][2] = 4.35889894f * r[80] - q * nz;
-  q = lr * y[99];
-  out_grad[99][0] = -9.246621f * r[80] - q * nx;
-  out_grad[99][1] = 9.246621f * r[64] - q * ny;
-  out_grad[99][2] = -q * nz;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 11
-void shli_sh_grad_11(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                     out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[100];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 100; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-  lr = 2.0f * ir;
-  q = lr * y[4];
-  out_grad[4][0] = -2.23606798f * r[1] - q * nx;
-  out_grad[4][1] = -2.23606798f * r[3] - q * ny;
-  out_grad[4][2] = -q * nz;
-  q = lr * y[5];
-  out_grad[5][0] = -q * nx;
-  out_grad[5][1] = -2.23606798f * r[2] - q * ny;
-  out_grad[5][2] = 2.23606798f * r[1] - q * nz;
-  q = lr * y[6];
-  out_grad[6][0] = 1.29099445f * r[3] - q * nx;
-  out_grad[6][1] = 1.29099445f * r[1] - q * ny;
-  out_grad[6][2] = 2.5819889f * r[2] - q * nz;
-  q = lr * y[7];
-  out_grad[7][0] = -2.23606798f * r[2] - q * nx;
-  out_grad[7][1] = -q * ny;
-  out_grad[7][2] = 2.23606798f * r[3] - q * nz;
-  q = lr * y[8];
-  out_grad[8][0] = -2.23606798f * r[3] - q * nx;
-  out_grad[8][1] = 2.23606798f * r[1] - q * ny;
-  out_grad[8][2] = -q * nz;
-  lr = 3.0f * ir;
-  q = lr * y[9];
-  out_grad[9][0] = -3.24037035f * r[4] - q * nx;
-  out_grad[9][1] = -3.24037035f * r[8] - q * ny;
-  out_grad[9][2] = -q * nz;
-  q = lr * y[10];
-  out_grad[10][0] = -2.64575131f * r[5] - q * nx;
-  out_grad[10][1] = -2.64575131f * r[7] - q * ny;
-  out_grad[10][2] = 2.64575131f * r[4] - q * nz;
-  q = lr * y[11];
-  out_grad[11][0] = 0.836660027f * r[4] - q * nx;
-  out_grad[11][1] = -2.89827535f * r[6] + -0.836660027f * r[8] - q * ny;
-  out_grad[11][2] = 3.34664011f * r[5] - q * nz;
-  q = lr * y[12];
-  out_grad[12][0] = 2.04939015f * r[7] - q * nx;
-  out_grad[12][1] = 2.04939015f * r[5] - q * ny;
-  out_grad[12][2] = 3.54964787f * r[6] - q * nz;
-  q = lr * y[13];
-  out_grad[13][0] = -2.89827535f * r[6] + 0.836660027f * r[8] - q * nx;
-  out_grad[13][1] = 0.836660027f * r[4] - q * ny;
-  out_grad[13][2] = 3.34664011f * r[7] - q * nz;
-  q = lr * y[14];
-  out_grad[14][0] = -2.64575131f * r[7] - q * nx;
-  out_grad[14][1] = 2.64575131f * r[5] - q * ny;
-  out_grad[14][2] = 2.64575131f * r[8] - q * nz;
-  q = lr * y[15];
-  out_grad[15][0] = -3.24037035f * r[8] - q * nx;
-  out_grad[15][1] = 3.24037035f * r[4] - q * ny;
-  out_grad[15][2] = -q * nz;
-  lr = 4.0f * ir;
-  q = lr * y[16];
-  out_grad[16][0] = -4.24264069f * r[9] - q * nx;
-  out_grad[16][1] = -4.24264069f * r[15] - q * ny;
-  out_grad[16][2] = -q * nz;
-  q = lr * y[17];
-  out_grad[17][0] = -3.67423461f * r[10] - q * nx;
-  out_grad[17][1] = -3.67423461f * r[14] - q * ny;
-  out_grad[17][2] = 3.0f * r[9] - q * nz;
-  q = lr * y[18];
-  out_grad[18][0] = -3.10529502f * r[11] + 0.801783726f * r[9] - q * nx;
-  out_grad[18][1] = -3.10529502f * r[13] + -0.801783726f * r[15] - q * ny;
-  out_grad[18][2] = 3.92792202f * r[10] - q * nz;
-  q = lr * y[19];
-  out_grad[19][0] = 1.38873015f * r[10] - q * nx;
-  out_grad[19][1] = -3.58568583f * r[12] + -1.38873015f * r[14] - q * ny;
-  out_grad[19][2] = 4.39155033f * r[11] - q * nz;
-  q = lr * y[20];
-  out_grad[20][0] = 2.7774603f * r[13] - q * nx;
-  out_grad[20][1] = 2.7774603f * r[11] - q * ny;
-  out_grad[20][2] = 4.53557368f * r[12] - q * nz;
-  q = lr * y[21];
-  out_grad[21][0] = -3.58568583f * r[12] + 1.38873015f * r[14] - q * nx;
-  out_grad[21][1] = 1.38873015f * r[10] - q * ny;
-  out_grad[21][2] = 4.39155033f * r[13] - q * nz;
-  q = lr * y[22];
-  out_grad[22][0] = -3.10529502f * r[13] + 0.801783726f * r[15] - q * nx;
-  out_grad[22][1] = 3.10529502f * r[11] + 0.801783726f * r[9] - q * ny;
-  out_grad[22][2] = 3.92792202f * r[14] - q * nz;
-  q = lr * y[23];
-  out_grad[23][0] = -3.67423461f * r[14] - q * nx;
-  out_grad[23][1] = 3.67423461f * r[10] - q * ny;
-  out_grad[23][2] = 3.0f * r[15] - q * nz;
-  q = lr * y[24];
-  out_grad[24][0] = -4.24264069f * r[15] - q * nx;
-  out_grad[24][1] = 4.24264069f * r[9] - q * ny;
-  out_grad[24][2] = -q * nz;
-  lr = 5.0f * ir;
-  q = lr * y[25];
-  out_grad[25][0] = -5.24404424f * r[16] - q * nx;
-  out_grad[25][1] = -5.24404424f * r[24] - q * ny;
-  out_grad[25][2] = -q * nz;
-  q = lr * y[26];
-  out_grad[26][0] = -4.69041576f * r[17] - q * nx;
-  out_grad[26][1] = -4.69041576f * r[23] - q * ny;
-  out_grad[26][2] = 3.31662479f * r[16] - q * nz;
-  q = lr * y[27];
-  out_grad[27][0] = -4.13655788f * r[18] + 0.78173596f * r[16] - q * nx;
-  out_grad[27][1] = -4.13655788f * r[22] + -0.78173596f * r[24] - q * ny;
-  out_grad[27][2] = 4.42216639f * r[17] - q * nz;
-  q = lr * y[28];
-  out_grad[28][0] = -3.58236421f * r[19] + 1.3540064f * r[17] - q * nx;
-  out_grad[28][1] = -3.58236421f * r[21] + -1.3540064f * r[23] - q * ny;
-  out_grad[28][2] = 5.06622805f * r[18] - q * nz;
-  q = lr * y[29];
-  out_grad[29][0] = 1.91485422f * r[18] - q * nx;
-  out_grad[29][1] = -4.28174419f * r[20] + -1.91485422f * r[22] - q * ny;
-  out_grad[29][2] = 5.4160256f * r[19] - q * nz;
-  q = lr * y[30];
-  out_grad[30][0] = 3.49602949f * r[21] - q * nx;
-  out_grad[30][1] = 3.49602949f * r[19] - q * ny;
-  out_grad[30][2] = 5.52770798f * r[20] - q * nz;
-  q = lr * y[31];
-  out_grad[31][0] = -4.28174419f * r[20] + 1.91485422f * r[22] - q * nx;
-  out_grad[31][1] = 1.91485422f * r[18] - q * ny;
-  out_grad[31][2] = 5.4160256f * r[21] - q * nz;
-  q = lr * y[32];
-  out_grad[32][0] = -3.58236421f * r[21] + 1.3540064f * r[23] - q * nx;
-  out_grad[32][1] = 3.58236421f * r[19] + 1.3540064f * r[17] - q * ny;
-  out_grad[32][2] = 5.06622805f * r[22] - q * nz;
-  q = lr * y[33];
-  out_grad[33][0] = -4.13655788f * r[22] + 0.78173596f * r[24] - q * nx;
-  out_grad[33][1] = 4.13655788f * r[18] + 0.78173596f * r[16] - q * ny;
-  out_grad[33][2] = 4.42216639f * r[23] - q * nz;
-  q = lr * y[34];
-  out_grad[34][0] = -4.69041576f * r[23] - q * nx;
-  out_grad[34][1] = 4.69041576f * r[17] - q * ny;
-  out_grad[34][2] = 3.31662479f * r[24] - q * nz;
-  q = lr * y[35];
-  out_grad[35][0] = -5.24404424f * r[24] - q * nx;
-  out_grad[35][1] = 5.24404424f * r[16] - q * ny;
-  out_grad[35][2] = -q * nz;
-  lr = 6.0f * ir;
-  q = lr * y[36];
-  out_grad[36][0] = -6.244998f * r[25] - q * nx;
-  out_grad[36][1] = -6.244998f * r[35] - q * ny;
-  out_grad[36][2] = -q * nz;
-  q = lr * y[37];
-  out_grad[37][0] = -5.70087713f * r[26] - q * nx;
-  out_grad[37][1] = -5.70087713f * r[34] - q * ny;
-  out_grad[37][2] = 3.60555128f * r[25] - q * nz;
-  q = lr * y[38];
-  out_grad[38][0] = -5.15663738f * r[27] + 0.768706115f * r[25] - q * nx;
-  out_grad[38][1] = -5.15663738f * r[33] + -0.768706115f * r[35] - q * ny;
-  out_grad[38][2] = 4.86172435f * r[26] - q * nz;
-  q = lr * y[39];
-  out_grad[39][0] = -4.61223669f * r[28] + 1.33143805f * r[26] - q * nx;
-  out_grad[39][1] = -4.61223669f * r[32] + -1.33143805f * r[34] - q * ny;
-  out_grad[39][2] = 5.64881323f * r[27] - q * nz;
-  q = lr * y[40];
-  out_grad[40][0] = -4.06761042f * r[29] + 1.88293774f * r[27] - q * nx;
-  out_grad[40][1] = -4.06761042f * r[31] + -1.88293774f * r[33] - q * ny;
-  out_grad[40][2] = 6.14964892f * r[28] - q * nz;
-  q = lr * y[41];
-  out_grad[41][0] = 2.43086217f * r[28] - q * nx;
-  out_grad[41][1] = -4.981785f * r[30] + -2.43086217f * r[32] - q * ny;
-  out_grad[41][2] = 6.43145678f * r[29] - q * nz;
-  q = lr * y[42];
-  out_grad[42][0] = 4.21037679f * r[31] - q * nx;
-  out_grad[42][1] = 4.21037679f * r[29] - q * ny;
-  out_grad[42][2] = 6.52268768f * r[30] - q * nz;
-  q = lr * y[43];
-  out_grad[43][0] = -4.981785f * r[30] + 2.43086217f * r[32] - q * nx;
-  out_grad[43][1] = 2.43086217f * r[28] - q * ny;
-  out_grad[43][2] = 6.43145678f * r[31] - q * nz;
-  q = lr * y[44];
-  out_grad[44][0] = -4.06761042f * r[31] + 1.88293774f * r[33] - q * nx;
-  out_grad[44][1] = 4.06761042f * r[29] + 1.88293774f * r[27] - q * ny;
-  out_grad[44][2] = 6.14964892f * r[32] - q * nz;
-  q = lr * y[45];
-  out_grad[45][0] = -4.61223669f * r[32] + 1.33143805f * r[34] - q * nx;
-  out_grad[45][1] = 4.61223669f * r[28] + 1.33143805f * r[26] - q * ny;
-  out_grad[45][2] = 5.64881323f * r[33] - q * nz;
-  q = lr * y[46];
-  out_grad[46][0] = -5.15663738f * r[33] + 0.768706115f * r[35] - q * nx;
-  out_grad[46][1] = 5.15663738f * r[27] + 0.768706115f * r[25] - q * ny;
-  out_grad[46][2] = 4.86172435f * r[34] - q * nz;
-  q = lr * y[47];
-  out_grad[47][0] = -5.70087713f * r[34] - q * nx;
-  out_grad[47][1] = 5.70087713f * r[26] - q * ny;
-  out_grad[47][2] = 3.60555128f * r[35] - q * nz;
-  q = lr * y[48];
-  out_grad[48][0] = -6.244998f * r[35] - q * nx;
-  out_grad[48][1] = 6.244998f * r[25] - q * ny;
-  out_grad[48][2] = -q * nz;
-  lr = 7.0f * ir;
-  q = lr * y[49];
-  out_grad[49][0] = -7.24568837f * r[36] - q * nx;
-  out_grad[49][1] = -7.24568837f * r[48] - q * ny;
-  out_grad[49][2] = -q * nz;
-  q = lr * y[50];
-  out_grad[50][0] = -6.70820393f * r[37] - q * nx;
-  out_grad[50][1] = -6.70820393f * r[47] - q * ny;
-  out_grad[50][2] = 3.87298335f * r[36] - q * nz;
-  q = lr * y[51];
-  out_grad[51][0] = -6.17065013f * r[38] + 0.759554525f * r[36] - q * nx;
-  out_grad[51][1] = -6.17065013f * r[46] + -0.759554525f * r[48] - q * ny;
-  out_grad[51][2] = 5.26234812f * r[37] - q * nz;
-  q = lr * y[52];
-  out_grad[52][0] = -5.63300712f * r[39] + 1.31558703f * r[37] - q * nx;
-  out_grad[52][1] = -5.63300712f * r[45] + -1.31558703f * r[47] - q * ny;
-  out_grad[52][2] = 6.17065013f * r[38] - q * nz;
-  q = lr * y[53];
-  out_grad[53][0] = -5.09524665f * r[40] + 1.86052102f * r[38] - q * nx;
-  out_grad[53][1] = -5.09524665f * r[44] + -1.86052102f * r[46] - q * ny;
-  out_grad[53][2] = 6.7936622f * r[39] - q * nz;
-  q = lr * y[54];
-  out_grad[54][0] = -4.55732715f * r[41] + 2.40192231f * r[39] - q * nx;
-  out_grad[54][1] = -4.55732715f * r[43] + -2.40192231f * r[45] - q * ny;
-  out_grad[54][2] = 7.20576692f * r[40] - q * nz;
-  q = lr * y[55];
-  out_grad[55][0] = 2.94174203f * r[40] - q * nx;
-  out_grad[55][1] = -5.6839856f * r[42] + -2.94174203f * r[44] - q * ny;
-  out_grad[55][2] = 7.44208408f * r[41] - q * nz;
-  q = lr * y[56];
-  out_grad[56][0] = 4.92247592f * r[43] - q * nx;
-  out_grad[56][1] = 4.92247592f * r[41] - q * ny;
-  out_grad[56][2] = 7.51920618f * r[42] - q * nz;
-  q = lr * y[57];
-  out_grad[57][0] = -5.6839856f * r[42] + 2.94174203f * r[44] - q * nx;
-  out_grad[57][1] = 2.94174203f * r[40] - q * ny;
-  out_grad[57][2] = 7.44208408f * r[43] - q * nz;
-  q = lr * y[58];
-  out_grad[58][0] = -4.55732715f * r[43] + 2.40192231f * r[45] - q * nx;
-  out_grad[58][1] = 4.55732715f * r[41] + 2.40192231f * r[39] - q * ny;
-  out_grad[58][2] = 7.20576692f * r[44] - q * nz;
-  q = lr * y[59];
-  out_grad[59][0] = -5.09524665f * r[44] + 1.86052102f * r[46] - q * nx;
-  out_grad[59][1] = 5.09524665f * r[40] + 1.86052102f * r[38] - q * ny;
-  out_grad[59][2] = 6.7936622f * r[45] - q * nz;
-  q = lr * y[60];
-  out_grad[60][0] = -5.63300712f * r[45] + 1.31558703f * r[47] - q * nx;
-  out_grad[60][1] = 5.63300712f * r[39] + 1.31558703f * r[37] - q * ny;
-  out_grad[60][2] = 6.17065013f * r[46] - q * nz;
-  q = lr * y[61];
-  out_grad[61][0] = -6.17065013f * r[46] + 0.759554525f * r[48] - q * nx;
-  out_grad[61][1] = 6.17065013f * r[38] + 0.759554525f * r[36] - q * ny;
-  out_grad[61][2] = 5.26234812f * r[47] - q * nz;
-  q = lr * y[62];
-  out_grad[62][0] = -6.70820393f * r[47] - q * nx;
-  out_grad[62][1] = 6.70820393f * r[37] - q * ny;
-  out_grad[62][2] = 3.87298335f * r[48] - q * nz;
-  q = lr * y[63];
-  out_grad[63][0] = -7.24568837f * r[48] - q * nx;
-  out_grad[63][1] = 7.24568837f * r[36] - q * ny;
-  out_grad[63][2] = -q * nz;
-  lr = 8.0f * ir;
-  q = lr * y[64];
-  out_grad[64][0] = -8.24621125f * r[49] - q * nx;
-  out_grad[64][1] = -8.24621125f * r[63] - q * ny;
-  out_grad[64][2] = -q * nz;
-  q = lr * y[65];
-  out_grad[65][0] = -7.71362431f * r[50] - q * nx;
-  out_grad[65][1] = -7.71362431f * r[62] - q * ny;
-  out_grad[65][2] = 4.12310563f * r[49] - q * nz;
-  q = lr * y[66];
-  out_grad[66][0] = -7.18099343f * r[51] + 0.752772653f * r[49] - q * nx;
-  out_grad[66][1] = -7.18099343f * r[61] + -0.752772653f * r[63] - q * ny;
-  out_grad[66][2] = 5.63323471f * r[50] - q * nz;
-  q = lr * y[67];
-  out_grad[67][0] = -6.64830806f * r[52] + 1.30384048f * r[50] - q * nx;
-  out_grad[67][1] = -6.64830806f * r[60] + -1.30384048f * r[62] - q * ny;
-  out_grad[67][2] = 6.64830806f * r[51] - q * nz;
-  q = lr * y[68];
-  out_grad[68][0] = -6.11555394f * r[53] + 1.84390889f * r[51] - q * nx;
-  out_grad[68][1] = -6.11555394f * r[59] + -1.84390889f * r[61] - q * ny;
-  out_grad[68][2] = 7.37563557f * r[52] - q * nz;
-  q = lr * y[69];
-  out_grad[69][0] = -5.58271141f * r[54] + 2.38047614f * r[52] - q * nx;
-  out_grad[69][1] = -5.58271141f * r[58] + -2.38047614f * r[60] - q * ny;
-  out_grad[69][2] = 7.89514619f * r[53] - q * nz;
-  q = lr * y[70];
-  out_grad[70][0] = -5.04975247f * r[55] + 2.91547595f * r[53] - q * nx;
-  out_grad[70][1] = -5.04975247f * r[57] + -2.91547595f * r[59] - q * ny;
-  out_grad[70][2] = 8.24621125f * r[54] - q * nz;
-  q = lr * y[71];
-  out_grad[71][0] = 3.44963766f * r[54] - q * nx;
-  out_grad[71][1] = -6.38748777f * r[56] + -3.44963766f * r[58] - q * ny;
-  out_grad[71][2] = 8.44985207f * r[55] - q * nz;
-  q = lr * y[72];
-  out_grad[72][0] = 5.63323471f * r[57] - q * nx;
-  out_grad[72][1] = 5.63323471f * r[55] - q * ny;
-  out_grad[72][2] = 8.51665036f * r[56] - q * nz;
-  q = lr * y[73];
-  out_grad[73][0] = -6.38748777f * r[56] + 3.44963766f * r[58] - q * nx;
-  out_grad[73][1] = 3.44963766f * r[54] - q * ny;
-  out_grad[73][2] = 8.44985207f * r[57] - q * nz;
-  q = lr * y[74];
-  out_grad[74][0] = -5.04975247f * r[57] + 2.91547595f * r[59] - q * nx;
-  out_grad[74][1] = 5.04975247f * r[55] + 2.91547595f * r[53] - q * ny;
-  out_grad[74][2] = 8.24621125f * r[58] - q * nz;
-  q = lr * y[75];
-  out_grad[75][0] = -5.58271141f * r[58] + 2.38047614f * r[60] - q * nx;
-  out_grad[75][1] = 5.58271141f * r[54] + 2.38047614f * r[52] - q * ny;
-  out_grad[75][2] = 7.89514619f * r[59] - q * nz;
-  q = lr * y[76];
-  out_grad[76][0] = -6.11555394f * r[59] + 1.84390889f * r[61] - q * nx;
-  out_grad[76][1] = 6.11555394f * r[53] + 1.84390889f * r[51] - q * ny;
-  out_grad[76][2] = 7.37563557f * r[60] - q * nz;
-  q = lr * y[77];
-  out_grad[77][0] = -6.64830806f * r[60] + 1.30384048f * r[62] - q * nx;
-  out_grad[77][1] = 6.64830806f * r[52] + 1.30384048f * r[50] - q * ny;
-  out_grad[77][2] = 6.64830806f * r[61] - q * nz;
-  q = lr * y[78];
-  out_grad[78][0] = -7.18099343f * r[61] + 0.752772653f * r[63] - q * nx;
-  out_grad[78][1] = 7.18099343f * r[51] + 0.752772653f * r[49] - q * ny;
-  out_grad[78][2] = 5.63323471f * r[62] - q * nz;
-  q = lr * y[79];
-  out_grad[79][0] = -7.71362431f * r[62] - q * nx;
-  out_grad[79][1] = 7.71362431f * r[50] - q * ny;
-  out_grad[79][2] = 4.12310563f * r[63] - q * nz;
-  q = lr * y[80];
-  out_grad[80][0] = -8.24621125f * r[63] - q * nx;
-  out_grad[80][1] = 8.24621125f * r[49] - q * ny;
-  out_grad[80][2] = -q * nz;
-  lr = 9.0f * ir;
-  q = lr * y[81];
-  out_grad[81][0] = -9.246621f * r[64] - q * nx;
-  out_grad[81][1] = -9.246621f * r[80] - q * ny;
-  out_grad[81][2] = -q * nz;
-  q = lr * y[82];
-  out_grad[82][0] = -8.71779789f * r[65] - q * nx;
-  out_grad[82][1] = -8.71779789f * r[79] - q * ny;
-  out_grad[82][2] = 4.35889894f * r[64] - q * nz;
-  q = lr * y[83];
-  out_grad[83][0] = -8.1889452f * r[66] + 0.747545002f * r[64] - q * nx;
-  out_grad[83][1] = -8.1889452f * r[78] + -0.747545002f * r[80] - q * ny;
-  out_grad[83][2] = 5.98036001f * r[65] - q * nz;
-  q = lr * y[84];
-  out_grad[84][0] = -7.66005683f * r[67] + 1.29478592f * r[65] - q * nx;
-  out_grad[84][1] = -7.66005683f * r[77] + -1.29478592f * r[79] - q * ny;
-  out_grad[84][2] = 7.09183458f * r[66] - q * nz;
-  q = lr * y[85];
-  out_grad[85][0] = -7.13112482f * r[68] + 1.83110381f * r[66] - q * nx;
-  out_grad[85][1] = -7.13112482f * r[76] + -1.83110381f * r[78] - q * ny;
-  out_grad[85][2] = 7.91127267f * r[67] - q * nz;
-  q = lr * y[86];
-  out_grad[86][0] = -6.60213869f * r[69] + 2.36394486f * r[67] - q * nx;
-  out_grad[86][1] = -6.60213869f * r[75] + -2.36394486f * r[77] - q * ny;
-  out_grad[86][2] = 8.5233244f * r[68] - q * nz;
-  q = lr * y[87];
-  out_grad[87][0] = -6.0730843f * r[70] + 2.89522934f * r[68] - q * nx;
-  out_grad[87][1] = -6.0730843f * r[74] + -2.89522934f * r[76] - q * ny;
-  out_grad[87][2] = 8.97054002f * r[69] - q * nz;
-  q = lr * y[88];
-  out_grad[88][0] = -5.54394211f * r[71] + 3.42568156f * r[69] - q * nx;
-  out_grad[88][1] = -5.54394211f * r[73] + -3.42568156f * r[75] - q * ny;
-  out_grad[88][2] = 9.27678951f * r[70] - q * nz;
-  q = lr * y[89];
-  out_grad[89][0] = 3.95563634f * r[70] - q * nx;
-  out_grad[89][1] = -7.09183458f * r[72] + -3.95563634f * r[74] - q * ny;
-  out_grad[89][2] = 9.45577943f * r[71] - q * nz;
-  q = lr * y[90];
-  out_grad[90][0] = 6.34312968f * r[73] - q * nx;
-  out_grad[90][1] = 6.34312968f * r[71] - q * ny;
-  out_grad[90][2] = 9.51469452f * r[72] - q * nz;
-  q = lr * y[91];
-  out_grad[91][0] = -7.09183458f * r[72] + 3.95563634f * r[74] - q * nx;
-  out_grad[91][1] = 3.95563634f * r[70] - q * ny;
-  out_grad[91][2] = 9.45577943f * r[73] - q * nz;
-  q = lr * y[92];
-  out_grad[92][0] = -5.54394211f * r[73] + 3.42568156f * r[75] - q * nx;
-  out_grad[92][1] = 5.54394211f * r[71] + 3.42568156f * r[69] - q * ny;
-  out_grad[92][2] = 9.27678951f * r[74] - q * nz;
-  q = lr * y[93];
-  out_grad[93][0] = -6.0730843f * r[74] + 2.89522934f * r[76] - q * nx;
-  out_grad[93][1] = 6.0730843f * r[70] + 2.89522934f * r[68] - q * ny;
-  out_grad[93][2] = 8.97054002f * r[75] - q * nz;
-  q = lr * y[94];
-  out_grad[94][0] = -6.60213869f * r[75] + 2.36394486f * r[77] - q * nx;
-  out_grad[94][1] = 6.60213869f * r[69] + 2.36394486f * r[67] - q * ny;
-  out_grad[94][2] = 8.5233244f * r[76] - q * nz;
-  q = lr * y[95];
-  out_grad[95][0] = -7.13112482f * r[76] + 1.83110381f * r[78] - q * nx;
-  out_grad[95][1] = 7.13112482f * r[68] + 1.83110381f * r[66] - q * ny;
-  out_grad[95][2] = 7.91127267f * r[77] - q * nz;
-  q = lr * y[96];
-  out_grad[96][0] = -7.66005683f * r[77] + 1.29478592f * r[79] - q * nx;
-  out_grad[96][1] = 7.66005683f * r[67] + 1.29478592f * r[65] - q * ny;
-  out_grad[96][2] = 7.09183458f * r[78] - q * nz;
-  q = lr * y[97];
-  out_grad[97][0] = -8.1889452f * r[78] + 0.747545002f * r[80] - q * nx;
-  out_grad[97][1] = 8.1889452f * r[66] + 0.747545002f * r[64] - q * ny;
-  out_grad[97][2] = 5.98036001f * r[79] - q * nz;
-  q = lr * y[98];
-  out_grad[98][0] = -8.71779789f * r[79] - q * nx;
-  out_grad[98][1] = 8.71779789f * r[65] - q * ny;
-  out_grad[98][2] = 4.35889894f * r[80] - q * nz;
-  q = lr * y[99];
-  out_grad[99][0] = -9.246621f * r[80] - q * nx;
-  out_grad[99][1] = 9.246621f * r[64] - q * ny;
-  out_grad[99][2] = -q * nz;
-  lr = 10.0f * ir;
-  q = lr * y[100];
-  out_grad[100][0] = -10.2469508f * r[81] - q * nx;
-  out_grad[100][1] = -10.2469508f * r[99] - q * ny;
-  out_grad[100][2] = -q * nz;
-  q = lr * y[101];
-  out_grad[101][0] = -9.72111105f * r[82] - q * nx;
-  out_grad[101][1] = -9.72111105f * r[98] - q * ny;
-  out_grad[101][2] = 4.58257569f * r[81] - q * nz;
-  q = lr * y[102];
-  out_grad[102][0] = -9.19525049f * r[83] + 0.743391942f * r[81] - q * nx;
-  out_grad[102][1] = -9.19525049f * r[97] + -0.743391942f * r[99] - q * ny;
-  out_grad[102][2] = 6.3078898f * r[82] - q * nz;
-  q = lr * y[103];
-  out_grad[103][0] = -8.6693653f * r[84] + 1.28759261f * r[82] - q * nx;
-  out_grad[103][1] = -8.6693653f * r[96] + -1.28759261f * r[98] - q * ny;
-  out_grad[103][2] = 7.50789059f * r[83] - q * nz;
-  q = lr * y[104];
-  out_grad[104][0] = -8.14345071f * r[85] + 1.82093094f * r[83] - q * nx;
-  out_grad[104][1] = -8.14345071f * r[95] + -1.82093094f * r[97] - q * ny;
-  out_grad[104][2] = 8.41051973f * r[84] - q * nz;
-  q = lr * y[105];
-  out_grad[105][0] = -7.61750063f * r[86] + 2.35081173f * r[84] - q * nx;
-  out_grad[105][1] = -7.61750063f * r[94] + -2.35081173f * r[96] - q * ny;
-  out_grad[105][2] = 9.10465468f * r[85] - q * nz;
-  q = lr * y[106];
-  out_grad[106][0] = -7.09150715f * r[87] + 2.87914461f * r[85] - q * nx;
-  out_grad[106][1] = -7.09150715f * r[93] + -2.87914461f * r[95] - q * ny;
-  out_grad[106][2] = 9.63546082f * r[86] - q * nz;
-  q = lr * y[107];
-  out_grad[107][0] = -6.56545986f * r[88] + 3.40664984f * r[86] - q * nx;
-  out_grad[107][1] = -6.56545986f * r[92] + -3.40664984f * r[94] - q * ny;
-  out_grad[107][2] = 10.0289056f * r[87] - q * nz;
-  q = lr * y[108];
-  out_grad[108][0] = -6.03934468f * r[89] + 3.93366041f * r[87] - q * nx;
-  out_grad[108][1] = -6.03934468f * r[91] + -3.93366041f * r[93] - q * ny;
-  out_grad[108][2] = 10.3007409f * r[88] - q * nz;
-  q = lr * y[109];
-  out_grad[109][0] = 4.46035165f * r[88] - q * nx;
-  out_grad[109][1] = -7.79676046f * r[90] + -4.46035165f * r[92] - q * ny;
-  out_grad[109][2] = 10.4604518f * r[89] - q * nz;
-  q = lr * y[110];
-  out_grad[110][0] = 7.05243519f * r[91] - q * nx;
-  out_grad[110][1] = 7.05243519f * r[89] - q * ny;
-  out_grad[110][2] = 10.5131497f * r[90] - q * nz;
-  q = lr * y[111];
-  out_grad[111][0] = -7.79676046f * r[90] + 4.46035165f * r[92] - q * nx;
-  out_grad[111][1] = 4.46035165f * r[88] - q * ny;
-  out_grad[111][2] = 10.4604518f * r[91] - q * nz;
-  q = lr * y[112];
-  out_grad[112][0] = -6.03934468f * r[91] + 3.93366041f * r[93] - q * nx;
-  out_grad[112][1] = 6.03934468f * r[89] + 3.93366041f * r[87] - q * ny;
-  out_grad[112][2] = 10.3007409f * r[92] - q * nz;
-  q = lr * y[113];
-  out_grad[113][0] = -6.56545986f * r[92] + 3.40664984f * r[94] - q * nx;
-  out_grad[113][1] = 6.56545986f * r[88] + 3.40664984f * r[86] - q * ny;
-  out_grad[113][2] = 10.0289056f * r[93] - q * nz;
-  q = lr * y[114];
-  out_grad[114][0] = -7.09150715f * r[93] + 2.87914461f * r[95] - q * nx;
-  out_grad[114][1] = 7.09150715f * r[87] + 2.87914461f * r[85] - q * ny;
-  out_grad[114][2] = 9.63546082f * r[94] - q * nz;
-  q = lr * y[115];
-  out_grad[115][0] = -7.61750063f * r[94] + 2.35081173f * r[96] - q * nx;
-  out_grad[115][1] = 7.61750063f * r[86] + 2.35081173f * r[84] - q * ny;
-  out_grad[115][2] = 9.10465468f * r[95] - q * nz;
-  q = lr * y[116];
-  out_grad[116][0] = -8.14345071f * r[95] + 1.82093094f * r[97] - q * nx;
-  out_grad[116][1] = 8.14345071f * r[85] + 1.82093094f * r[83] - q * ny;
-  out_grad[116][2] = 8.41051973f * r[96] - q * nz;
-  q = lr * y[117];
-  out_grad[117][0] = -8.6693653f * r[96] + 1.28759261f * r[98] - q * nx;
-  out_grad[117][1] = 8.6693653f * r[84] + 1.28759261f * r[82] - q * ny;
-  out_grad[117][2] = 7.50789059f * r[97] - q * nz;
-  q = lr * y[118];
-  out_grad[118][0] = -9.19525049f * r[97] + 0.743391942f * r[99] - q * nx;
-  out_grad[118][1] = 9.19525049f * r[83] + 0.743391942f * r[81] - q * ny;
-  out_grad[118][2] = 6.3078898f * r[98] - q * nz;
-  q = lr * y[119];
-  out_grad[119][0] = -9.72111105f * r[98] - q * nx;
-  out_grad[119][1] = 9.72111105f * r[82] - q * ny;
-  out_grad[119][2] = 4.58257569f * r[99] - q * nz;
-  q = lr * y[120];
-  out_grad[120][0] = -10.2469508f * r[99] - q * nx;
-  out_grad[120][1] = 10.2469508f * r[81] - q * ny;
-  out_grad[120][2] = -q * nz;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 12
-void shli_sh_grad_12(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                     out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[121];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 121; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-  lr = 2.0f * ir;
-  q = lr * y[4];
-  out_grad[4][0] = -2.23606798f * r[1] - q * nx;
-  out_grad[4][1] = -2.23606798f * r[3] - q * ny;
-  out_grad[4][2] = -q * nz;
-  q = lr * y[5];
-  out_grad[5][0] = -q * nx;
-  out_grad[5][1] = -2.23606798f * r[2] - q * ny;
-  out_grad[5][2] = 2.23606798f * r[1] - q * nz;
-  q = lr * y[6];
-  out_grad[6][0] = 1.29099445f * r[3] - q * nx;
-  out_grad[6][1] = 1.29099445f * r[1] - q * ny;
-  out_grad[6][2] = 2.5819889f * r[2] - q * nz;
-  q = lr * y[7];
-  out_grad[7][0] = -2.23606798f * r[2] - q * nx;
-  out_grad[7][1] = -q * ny;
-  out_grad[7][2] = 2.23606798f * r[3] - q * nz;
-  q = lr * y[8];
-  out_grad[8][0] = -2.23606798f * r[3] - q * nx;
-  out_grad[8][1] = 2.23606798f * r[1] - q * ny;
-  out_grad[8][2] = -q * nz;
-  lr = 3.0f * ir;
-  q = lr * y[9];
-  out_grad[9][0] = -3.24037035f * r[4] - q * nx;
-  out_grad[9][1] = -3.24037035f * r[8] - q * ny;
-  out_grad[9][2] = -q * nz;
-  q = lr * y[10];
-  out_grad[10][0] = -2.64575131f * r[5] - q * nx;
-  out_grad[10][1] = -2.64575131f * r[7] - q * ny;
-  out_grad[10][2] = 2.64575131f * r[4] - q * nz;
-  q = lr * y[11];
-  out_grad[11][0] = 0.836660027f * r[4] - q * nx;
-  out_grad[11][1] = -2.89827535f * r[6] + -0.836660027f * r[8] - q * ny;
-  out_grad[11][2] = 3.34664011f * r[5] - q * nz;
-  q = lr * y[12];
-  out_grad[12][0] = 2.04939015f * r[7] - q * nx;
-  out_grad[12][1] = 2.04939015f * r[5] - q * ny;
-  out_grad[12][2] = 3.54964787f * r[6] - q * nz;
-  q = lr * y[13];
-  out_grad[13][0] = -2.89827535f * r[6] + 0.836660027f * r[8] - q * nx;
-  out_grad[13][1] = 0.836660027f * r[4] - q * ny;
-  out_grad[13][2] = 3.34664011f * r[7] - q * nz;
-  q = lr * y[14];
-  out_grad[14][0] = -2.64575131f * r[7] - q * nx;
-  out_grad[14][1] = 2.64575131f * r[5] - q * ny;
-  out_grad[14][2] = 2.64575131f * r[8] - q * nz;
-  q = lr * y[15];
-  out_grad[15][0] = -3.24037035f * r[8] - q * nx;
-  out_grad[15][1] = 3.24037035f * r[4] - q * ny;
-  out_grad[15][2] = -q * nz;
-  lr = 4.0f * ir;
-  q = lr * y[16];
-  out_grad[16][0] = -4.24264069f * r[9] - q * nx;
-  out_grad[16][1] = -4.24264069f * r[15] - q * ny;
-  out_grad[16][2] = -q * nz;
-  q = lr * y[17];
-  out_grad[17][0] = -3.67423461f * r[10] - q * nx;
-  out_grad[17][1] = -3.67423461f * r[14] - q * ny;
-  out_grad[17][2] = 3.0f * r[9] - q * nz;
-  q = lr * y[18];
-  out_grad[18][0] = -3.10529502f * r[11] + 0.801783726f * r[9] - q * nx;
-  out_grad[18][1] = -3.10529502f * r[13] + -0.801783726f * r[15] - q * ny;
-  out_grad[18][2] = 3.92792202f * r[10] - q * nz;
-  q = lr * y[19];
-  out_grad[19][0] = 1.38873015f * r[10] - q * nx;
-  out_grad[19][1] = -3.58568583f * r[12] + -1.38873015f * r[14] - q * ny;
-  out_grad[19][2] = 4.39155033f * r[11] - q * nz;
-  q = lr * y[20];
-  out_grad[20][0] = 2.7774603f * r[13] - q * nx;
-  out_grad[20][1] = 2.7774603f * r[11] - q * ny;
-  out_grad[20][2] = 4.53557368f * r[12] - q * nz;
-  q = lr * y[21];
-  out_grad[21][0] = -3.58568583f * r[12] + 1.38873015f * r[14] - q * nx;
-  out_grad[21][1] = 1.38873015f * r[10] - q * ny;
-  out_grad[21][2] = 4.39155033f * r[13] - q * nz;
-  q = lr * y[22];
-  out_grad[22][0] = -3.10529502f * r[13] + 0.801783726f * r[15] - q * nx;
-  out_grad[22][1] = 3.10529502f * r[11] + 0.801783726f * r[9] - q * ny;
-  out_grad[22][2] = 3.92792202f * r[14] - q * nz;
-  q = lr * y[23];
-  out_grad[23][0] = -3.67423461f * r[14] - q * nx;
-  out_grad[23][1] = 3.67423461f * r[10] - q * ny;
-  out_grad[23][2] = 3.0f * r[15] - q * nz;
-  q = lr * y[24];
-  out_grad[24][0] = -4.24264069f * r[15] - q * nx;
-  out_grad[24][1] = 4.24264069f * r[9] - q * ny;
-  out_grad[24][2] = -q * nz;
-  lr = 5.0f * ir;
-  q = lr * y[25];
-  out_grad[25][0] = -5.24404424f * r[16] - q * nx;
-  out_grad[25][1] = -5.24404424f * r[24] - q * ny;
-  out_grad[25][2] = -q * nz;
-  q = lr * y[26];
-  out_grad[26][0] = -4.69041576f * r[17] - q * nx;
-  out_grad[26][1] = -4.69041576f * r[23] - q * ny;
-  out_grad[26][2] = 3.31662479f * r[16] - q * nz;
-  q = lr * y[27];
-  out_grad[27][0] = -4.13655788f * r[18] + 0.78173596f * r[16] - q * nx;
-  out_grad[27][1] = -4.13655788f * r[22] + -0.78173596f * r[24] - q * ny;
-  out_grad[27][2] = 4.42216639f * r[17] - q * nz;
-  q = lr * y[28];
-  out_grad[28][0] = -3.58236421f * r[19] + 1.3540064f * r[17] - q * nx;
-  out_grad[28][1] = -3.58236421f * r[21] + -1.3540064f * r[23] - q * ny;
-  out_grad[28][2] = 5.06622805f * r[18] - q * nz;
-  q = lr * y[29];
-  out_grad[29][0] = 1.91485422f * r[18] - q * nx;
-  out_grad[29][1] = -4.28174419f * r[20] + -1.91485422f * r[22] - q * ny;
-  out_grad[29][2] = 5.4160256f * r[19] - q * nz;
-  q = lr * y[30];
-  out_grad[30][0] = 3.49602949f * r[21] - q * nx;
-  out_grad[30][1] = 3.49602949f * r[19] - q * ny;
-  out_grad[30][2] = 5.52770798f * r[20] - q * nz;
-  q = lr * y[31];
-  out_grad[31][0] = -4.28174419f * r[20] + 1.91485422f * r[22] - q * nx;
-  out_grad[31][1] = 1.91485422f * r[18] - q * ny;
-  out_grad[31][2] = 5.4160256f * r[21] - q * nz;
-  q = lr * y[32];
-  out_grad[32][0] = -3.58236421f * r[21] + 1.3540064f * r[23] - q * nx;
-  out_grad[32][1] = 3.58236421f * r[19] + 1.3540064f * r[17] - q * ny;
-  out_grad[32][2] = 5.06622805f * r[22] - q * nz;
-  q = lr * y[33];
-  out_grad[33][0] = -4.13655788f * r[22] + 0.78173596f * r[24] - q * nx;
-  out_grad[33][1] = 4.13655788f * r[18] + 0.78173596f * r[16] - q * ny;
-  out_grad[33][2] = 4.42216639f * r[23] - q * nz;
-  q = lr * y[34];
-  out_grad[34][0] = -4.69041576f * r[23] - q * nx;
-  out_grad[34][1] = 4.69041576f * r[17] - q * ny;
-  out_grad[34][2] = 3.31662479f * r[24] - q * nz;
-  q = lr * y[35];
-  out_grad[35][0] = -5.24404424f * r[24] - q * nx;
-  out_grad[35][1] = 5.24404424f * r[16] - q * ny;
-  out_grad[35][2] = -q * nz;
-  lr = 6.0f * ir;
-  q = lr * y[36];
-  out_grad[36][0] = -6.244998f * r[25] - q * nx;
-  out_grad[36][1] = -6.244998f * r[35] - q * ny;
-  out_grad[36][2] = -q * nz;
-  q = lr * y[37];
-  out_grad[37][0] = -5.70087713f * r[26] - q * nx;
-  out_grad[37][1] = -5.70087713f * r[34] - q * ny;
-  out_grad[37][2] = 3.60555128f * r[25] - q * nz;
-  q = lr * y[38];
-  out_grad[38][0] = -5.15663738f * r[27] + 0.768706115f * r[25] - q * nx;
-  out_grad[38][1] = -5.15663738f * r[33] + -0.768706115f * r[35] - q * ny;
-  out_grad[38][2] = 4.86172435f * r[26] - q * nz;
-  q = lr * y[39];
-  out_grad[39][0] = -4.61223669f * r[28] + 1.33143805f * r[26] - q * nx;
-  out_grad[39][1] = -4.61223669f * r[32] + -1.33143805f * r[34] - q * ny;
-  out_grad[39][2] = 5.64881323f * r[27] - q * nz;
-  q = lr * y[40];
-  out_grad[40][0] = -4.06761042f * r[29] + 1.88293774f * r[27] - q * nx;
-  out_grad[40][1] = -4.06761042f * r[31] + -1.88293774f * r[33] - q * ny;
-  out_grad[40][2] = 6.14964892f * r[28] - q * nz;
-  q = lr * y[41];
-  out_grad[41][0] = 2.43086217f * r[28] - q * nx;
-  out_grad[41][1] = -4.981785f * r[30] + -2.43086217f * r[32] - q * ny;
-  out_grad[41][2] = 6.43145678f * r[29] - q * nz;
-  q = lr * y[42];
-  out_grad[42][0] = 4.21037679f * r[31] - q * nx;
-  out_grad[42][1] = 4.21037679f * r[29] - q * ny;
-  out_grad[42][2] = 6.52268768f * r[30] - q * nz;
-  q = lr * y[43];
-  out_grad[43][0] = -4.981785f * r[30] + 2.43086217f * r[32] - q * nx;
-  out_grad[43][1] = 2.43086217f * r[28] - q * ny;
-  out_grad[43][2] = 6.43145678f * r[31] - q * nz;
-  q = lr * y[44];
-  out_grad[44][0] = -4.06761042f * r[31] + 1.88293774f * r[33] - q * nx;
-  out_grad[44][1] = 4.06761042f * r[29] + 1.88293774f * r[27] - q * ny;
-  out_grad[44][2] = 6.14964892f * r[32] - q * nz;
-  q = lr * y[45];
-  out_grad[45][0] = -4.61223669f * r[32] + 1.33143805f * r[34] - q * nx;
-  out_grad[45][1] = 4.61223669f * r[28] + 1.33143805f * r[26] - q * ny;
-  out_grad[45][2] = 5.64881323f * r[33] - q * nz;
-  q = lr * y[46];
-  out_grad[46][0] = -5.15663738f * r[33] + 0.768706115f * r[35] - q * nx;
-  out_grad[46][1] = 5.15663738f * r[27] + 0.768706115f * r[25] - q * ny;
-  out_grad[46][2] = 4.86172435f * r[34] - q * nz;
-  q = lr * y[47];
-  out_grad[47][0] = -5.70087713f * r[34] - q * nx;
-  out_grad[47][1] = 5.70087713f * r[26] - q * ny;
-  out_grad[47][2] = 3.60555128f * r[35] - q * nz;
-  q = lr * y[48];
-  out_grad[48][0] = -6.244998f * r[35] - q * nx;
-  out_grad[48][1] = 6.244998f * r[25] - q * ny;
-  out_grad[48][2] = -q * nz;
-  lr = 7.0f * ir;
-  q = lr * y[49];
-  out_grad[49][0] = -7.24568837f * r[36] - q * nx;
-  out_grad[49][1] = -7.24568837f * r[48] - q * ny;
-  out_grad[49][2] = -q * nz;
-  q = lr * y[50];
-  out_grad[50][0] = -6.70820393f * r[37] - q * nx;
-  out_grad[50][1] = -6.70820393f * r[47] - q * ny;
-  out_grad[50][2] = 3.87298335f * r[36] - q * nz;
-  q = lr * y[51];
-  out_grad[51][0] = -6.17065013f * r[38] + 0.759554525f * r[36] - q * nx;
-  out_grad[51][1] = -6.17065013f * r[46] + -0.759554525f * r[48] - q * ny;
-  out_grad[51][2] = 5.26234812f * r[37] - q * nz;
-  q = lr * y[52];
-  out_grad[52][0] = -5.63300712f * r[39] + 1.31558703f * r[37] - q * nx;
-  out_grad[52][1] = -5.63300712f * r[45] + -1.31558703f * r[47] - q * ny;
-  out_grad[52][2] = 6.17065013f * r[38] - q * nz;
-  q = lr * y[53];
-  out_grad[53][0] = -5.09524665f * r[40] + 1.86052102f * r[38] - q * nx;
-  out_grad[53][1] = -5.09524665f * r[44] + -1.86052102f * r[46] - q * ny;
-  out_grad[53][2] = 6.7936622f * r[39] - q * nz;
-  q = lr * y[54];
-  out_grad[54][0] = -4.55732715f * r[41] + 2.40192231f * r[39] - q * nx;
-  out_grad[54][1] = -4.55732715f * r[43] + -2.40192231f * r[45] - q * ny;
-  out_grad[54][2] = 7.20576692f * r[40] - q * nz;
-  q = lr * y[55];
-  out_grad[55][0] = 2.94174203f * r[40] - q * nx;
-  out_grad[55][1] = -5.6839856f * r[42] + -2.94174203f * r[44] - q * ny;
-  out_grad[55][2] = 7.44208408f * r[41] - q * nz;
-  q = lr * y[56];
-  out_grad[56][0] = 4.92247592f * r[43] - q * nx;
-  out_grad[56][1] = 4.92247592f * r[41] - q * ny;
-  out_grad[56][2] = 7.51920618f * r[42] - q * nz;
-  q = lr * y[57];
-  out_grad[57][0] = -5.6839856f * r[42] + 2.94174203f * r[44] - q * nx;
-  out_grad[57][1] = 2.94174203f * r[40] - q * ny;
-  out_grad[57][2] = 7.44208408f * r[43] - q * nz;
-  q = lr * y[58];
-  out_grad[58][0] = -4.55732715f * r[43] + 2.40192231f * r[45] - q * nx;
-  out_grad[58][1] = 4.55732715f * r[41] + 2.40192231f * r[39] - q * ny;
-  out_grad[58][2] = 7.20576692f * r[44] - q * nz;
-  q = lr * y[59];
-  out_grad[59][0] = -5.09524665f * r[44] + 1.86052102f * r[46] - q * nx;
-  out_grad[59][1] = 5.09524665f * r[40] + 1.86052102f * r[38] - q * ny;
-  out_grad[59][2] = 6.7936622f * r[45] - q * nz;
-  q = lr * y[60];
-  out_grad[60][0] = -5.63300712f * r[45] + 1.31558703f * r[47] - q * nx;
-  out_grad[60][1] = 5.63300712f * r[39] + 1.31558703f * r[37] - q * ny;
-  out_grad[60][2] = 6.17065013f * r[46] - q * nz;
-  q = lr * y[61];
-  out_grad[61][0] = -6.17065013f * r[46] + 0.759554525f * r[48] - q * nx;
-  out_grad[61][1] = 6.17065013f * r[38] + 0.759554525f * r[36] - q * ny;
-  out_grad[61][2] = 5.26234812f * r[47] - q * nz;
-  q = lr * y[62];
-  out_grad[62][0] = -6.70820393f * r[47] - q * nx;
-  out_grad[62][1] = 6.70820393f * r[37] - q * ny;
-  out_grad[62][2] = 3.87298335f * r[48] - q * nz;
-  q = lr * y[63];
-  out_grad[63][0] = -7.24568837f * r[48] - q * nx;
-  out_grad[63][1] = 7.24568837f * r[36] - q * ny;
-  out_grad[63][2] = -q * nz;
-  lr = 8.0f * ir;
-  q = lr * y[64];
-  out_grad[64][0] = -8.24621125f * r[49] - q * nx;
-  out_grad[64][1] = -8.24621125f * r[63] - q * ny;
-  out_grad[64][2] = -q * nz;
-  q = lr * y[65];
-  out_grad[65][0] = -7.71362431f * r[50] - q * nx;
-  out_grad[65][1] = -7.71362431f * r[62] - q * ny;
-  out_grad[65][2] = 4.12310563f * r[49] - q * nz;
-  q = lr * y[66];
-  out_grad[66][0] = -7.18099343f * r[51] + 0.752772653f * r[49] - q * nx;
-  out_grad[66][1] = -7.18099343f * r[61] + -0.752772653f * r[63] - q * ny;
-  out_grad[66][2] = 5.63323471f * r[50] - q * nz;
-  q = lr * y[67];
-  out_grad[67][0] = -6.64830806f * r[52] + 1.30384048f * r[50] - q * nx;
-  out_grad[67][1] = -6.64830806f * r[60] + -1.30384048f * r[62] - q * ny;
-  out_grad[67][2] = 6.64830806f * r[51] - q * nz;
-  q = lr * y[68];
-  out_grad[68][0] = -6.11555394f * r[53] + 1.84390889f * r[51] - q * nx;
-  out_grad[68][1] = -6.11555394f * r[59] + -1.84390889f * r[61] - q * ny;
-  out_grad[68][2] = 7.37563557f * r[52] - q * nz;
-  q = lr * y[69];
-  out_grad[69][0] = -5.58271141f * r[54] + 2.38047614f * r[52] - q * nx;
-  out_grad[69][1] = -5.58271141f * r[58] + -2.38047614f * r[60] - q * ny;
-  out_grad[69][2] = 7.89514619f * r[53] - q * nz;
-  q = lr * y[70];
-  out_grad[70][0] = -5.04975247f * r[55] + 2.91547595f * r[53] - q * nx;
-  out_grad[70][1] = -5.04975247f * r[57] + -2.91547595f * r[59] - q * ny;
-  out_grad[70][2] = 8.24621125f * r[54] - q * nz;
-  q = lr * y[71];
-  out_grad[71][0] = 3.44963766f * r[54] - q * nx;
-  out_grad[71][1] = -6.38748777f * r[56] + -3.44963766f * r[58] - q * ny;
-  out_grad[71][2] = 8.44985207f * r[55] - q * nz;
-  q = lr * y[72];
-  out_grad[72][0] = 5.63323471f * r[57] - q * nx;
-  out_grad[72][1] = 5.63323471f * r[55] - q * ny;
-  out_grad[72][2] = 8.51665036f * r[56] - q * nz;
-  q = lr * y[73];
-  out_grad[73][0] = -6.38748777f * r[56] + 3.44963766f * r[58] - q * nx;
-  out_grad[73][1] = 3.44963766f * r[54] - q * ny;
-  out_grad[73][2] = 8.44985207f * r[57] - q * nz;
-  q = lr * y[74];
-  out_grad[74][0] = -5.04975247f * r[57] + 2.91547595f * r[59] - q * nx;
-  out_grad[74][1] = 5.04975247f * r[55] + 2.91547595f * r[53] - q * ny;
-  out_grad[74][2] = 8.24621125f * r[58] - q * nz;
-  q = lr * y[75];
-  out_grad[75][0] = -5.58271141f * r[58] + 2.38047614f * r[60] - q * nx;
-  out_grad[75][1] = 5.58271141f * r[54] + 2.38047614f * r[52] - q * ny;
-  out_grad[75][2] = 7.89514619f * r[59] - q * nz;
-  q = lr * y[76];
-  out_grad[76][0] = -6.11555394f * r[59] + 1.84390889f * r[61] - q * nx;
-  out_grad[76][1] = 6.11555394f * r[53] + 1.84390889f * r[51] - q * ny;
-  out_grad[76][2] = 7.37563557f * r[60] - q * nz;
-  q = lr * y[77];
-  out_grad[77][0] = -6.64830806f * r[60] + 1.30384048f * r[62] - q * nx;
-  out_grad[77][1] = 6.64830806f * r[52] + 1.30384048f * r[50] - q * ny;
-  out_grad[77][2] = 6.64830806f * r[61] - q * nz;
-  q = lr * y[78];
-  out_grad[78][0] = -7.18099343f * r[61] + 0.752772653f * r[63] - q * nx;
-  out_grad[78][1] = 7.18099343f * r[51] + 0.752772653f * r[49] - q * ny;
-  out_grad[78][2] = 5.63323471f * r[62] - q * nz;
-  q = lr * y[79];
-  out_grad[79][0] = -7.71362431f * r[62] - q * nx;
-  out_grad[79][1] = 7.71362431f * r[50] - q * ny;
-  out_grad[79][2] = 4.12310563f * r[63] - q * nz;
-  q = lr * y[80];
-  out_grad[80][0] = -8.24621125f * r[63] - q * nx;
-  out_grad[80][1] = 8.24621125f * r[49] - q * ny;
-  out_grad[80][2] = -q * nz;
-  lr = 9.0f * ir;
-  q = lr * y[81];
-  out_grad[81][0] = -9.246621f * r[64] - q * nx;
-  out_grad[81][1] = -9.246621f * r[80] - q * ny;
-  out_grad[81][2] = -q * nz;
-  q = lr * y[82];
-  out_grad[82][0] = -8.71779789f * r[65] - q * nx;
-  out_grad[82][1] = -8.71779789f * r[79] - q * ny;
-  out_grad[82][2] = 4.35889894f * r[64] - q * nz;
-  q = lr * y[83];
-  out_grad[83][0] = -8.1889452f * r[66] + 0.747545002f * r[64] - q * nx;
-  out_grad[83][1] = -8.1889452f * r[78] + -0.747545002f * r[80] - q * ny;
-  out_grad[83][2] = 5.98036001f * r[65] - q * nz;
-  q = lr * y[84];
-  out_grad[84][0] = -7.66005683f * r[67] + 1.29478592f * r[65] - q * nx;
-  out_grad[84][1] = -7.66005683f * r[77] + -1.29478592f * r[79] - q * ny;
-  out_grad[84][2] = 7.09183458f * r[66] - q * nz;
-  q = lr * y[85];
-  out_grad[85][0] = -7.13112482f * r[68] + 1.83110381f * r[66] - q * nx;
-  out_grad[85][1] = -7.13112482f * r[76] + -1.83110381f * r[78] - q * ny;
-  out_grad[85][2] = 7.91127267f * r[67] - q * nz;
-  q = lr * y[86];
-  out_grad[86][0] = -6.60213869f * r[69] + 2.36394486f * r[67] - q * nx;
-  out_grad[86][1] = -6.60213869f * r[75] + -2.36394486f * r[77] - q * ny;
-  out_grad[86][2] = 8.5233244f * r[68] - q * nz;
-  q = lr * y[87];
-  out_grad[87][0] = -6.0730843f * r[70] + 2.89522934f * r[68] - q * nx;
-  out_grad[87][1] = -6.0730843f * r[74] + -2.89522934f * r[76] - q * ny;
-  out_grad[87][2] = 8.97054002f * r[69] - q * nz;
-  q = lr * y[88];
-  out_grad[88][0] = -5.54394211f * r[71] + 3.42568156f * r[69] - q * nx;
-  out_grad[88][1] = -5.54394211f * r[73] + -3.42568156f * r[75] - q * ny;
-  out_grad[88][2] = 9.27678951f * r[70] - q * nz;
-  q = lr * y[89];
-  out_grad[89][0] = 3.95563634f * r[70] - q * nx;
-  out_grad[89][1] = -7.09183458f * r[72] + -3.95563634f * r[74] - q * ny;
-  out_grad[89][2] = 9.45577943f * r[71] - q * nz;
-  q = lr * y[90];
-  out_grad[90][0] = 6.34312968f * r[73] - q * nx;
-  out_grad[90][1] = 6.34312968f * r[71] - q * ny;
-  out_grad[90][2] = 9.51469452f * r[72] - q * nz;
-  q = lr * y[91];
-  out_grad[91][0] = -7.09183458f * r[72] + 3.95563634f * r[74] - q * nx;
-  out_grad[91][1] = 3.95563634f * r[70] - q * ny;
-  out_grad[91][2] = 9.45577943f * r[73] - q * nz;
-  q = lr * y[92];
-  out_grad[92][0] = -5.54394211f * r[73] + 3.42568156f * r[75] - q * nx;
-  out_grad[92][1] = 5.54394211f * r[71] + 3.42568156f * r[69] - q * ny;
-  out_grad[92][2] = 9.27678951f * r[74] - q * nz;
-  q = lr * y[93];
-  out_grad[93][0] = -6.0730843f * r[74] + 2.89522934f * r[76] - q * nx;
-  out_grad[93][1] = 6.0730843f * r[70] + 2.89522934f * r[68] - q * ny;
-  out_grad[93][2] = 8.97054002f * r[75] - q * nz;
-  q = lr * y[94];
-  out_grad[94][0] = -6.60213869f * r[75] + 2.36394486f * r[77] - q * nx;
-  out_grad[94][1] = 6.60213869f * r[69] + 2.36394486f * r[67] - q * ny;
-  out_grad[94][2] = 8.5233244f * r[76] - q * nz;
-  q = lr * y[95];
-  out_grad[95][0] = -7.13112482f * r[76] + 1.83110381f * r[78] - q * nx;
-  out_grad[95][1] = 7.13112482f * r[68] + 1.83110381f * r[66] - q * ny;
-  out_grad[95][2] = 7.91127267f * r[77] - q * nz;
-  q = lr * y[96];
-  out_grad[96][0] = -7.66005683f * r[77] + 1.29478592f * r[79] - q * nx;
-  out_grad[96][1] = 7.66005683f * r[67] + 1.29478592f * r[65] - q * ny;
-  out_grad[96][2] = 7.09183458f * r[78] - q * nz;
-  q = lr * y[97];
-  out_grad[97][0] = -8.1889452f * r[78] + 0.747545002f * r[80] - q * nx;
-  out_grad[97][1] = 8.1889452f * r[66] + 0.747545002f * r[64] - q * ny;
-  out_grad[97][2] = 5.98036001f * r[79] - q * nz;
-  q = lr * y[98];
-  out_grad[98][0] = -8.71779789f * r[79] - q * nx;
-  out_grad[98][1] = 8.71779789f * r[65] - q * ny;
-  out_grad[98][2] = 4.35889894f * r[80] - q * nz;
-  q = lr * y[99];
-  out_grad[99][0] = -9.246621f * r[80] - q * nx;
-  out_grad[99][1] = 9.246621f * r[64] - q * ny;
-  out_grad[99][2] = -q * nz;
-  lr = 10.0f * ir;
-  q = lr * y[100];
-  out_grad[100][0] = -10.2469508f * r[81] - q * nx;
-  out_grad[100][1] = -10.2469508f * r[99] - q * ny;
-  out_grad[100][2] = -q * nz;
-  q = lr * y[101];
-  out_grad[101][0] = -9.72111105f * r[82] - q * nx;
-  out_grad[101][1] = -9.72111105f * r[98] - q * ny;
-  out_grad[101][2] = 4.58257569f * r[81] - q * nz;
-  q = lr * y[102];
-  out_grad[102][0] = -9.19525049f * r[83] + 0.743391942f * r[81] - q * nx;
-  out_grad[102][1] = -9.19525049f * r[97] + -0.743391942f * r[99] - q * ny;
-  out_grad[102][2] = 6.3078898f * r[82] - q * nz;
-  q = lr * y[103];
-  out_grad[103][0] = -8.6693653f * r[84] + 1.28759261f * r[82] - q * nx;
-  out_grad[103][1] = -8.6693653f * r[96] + -1.28759261f * r[98] - q * ny;
-  out_grad[103][2] = 7.50789059f * r[83] - q * nz;
-  q = lr * y[104];
-  out_grad[104][0] = -8.14345071f * r[85] + 1.82093094f * r[83] - q * nx;
-  out_grad[104][1] = -8.14345071f * r[95] + -1.82093094f * r[97] - q * ny;
-  out_grad[104][2] = 8.41051973f * r[84] - q * nz;
-  q = lr * y[105];
-  out_grad[105][0] = -7.61750063f * r[86] + 2.35081173f * r[84] - q * nx;
-  out_grad[105][1] = -7.61750063f * r[94] + -2.35081173f * r[96] - q * ny;
-  out_grad[105][2] = 9.10465468f * r[85] - q * nz;
-  q = lr * y[106];
-  out_grad[106][0] = -7.09150715f * r[87] + 2.87914461f * r[85] - q * nx;
-  out_grad[106][1] = -7.09150715f * r[93] + -2.87914461f * r[95] - q * ny;
-  out_grad[106][2] = 9.63546082f * r[86] - q * nz;
-  q = lr * y[107];
-  out_grad[107][0] = -6.56545986f * r[88] + 3.40664984f * r[86] - q * nx;
-  out_grad[107][1] = -6.56545986f * r[92] + -3.40664984f * r[94] - q * ny;
-  out_grad[107][2] = 10.0289056f * r[87] - q * nz;
-  q = lr * y[108];
-  out_grad[108][0] = -6.03934468f * r[89] + 3.93366041f * r[87] - q * nx;
-  out_grad[108][1] = -6.03934468f * r[91] + -3.93366041f * r[93] - q * ny;
-  out_grad[108][2] = 10.3007409f * r[88] - q * nz;
-  q = lr * y[109];
-  out_grad[109][0] = 4.46035165f * r[88] - q * nx;
-  out_grad[109][1] = -7.79676046f * r[90] + -4.46035165f * r[92] - q * ny;
-  out_grad[109][2] = 10.4604518f * r[89] - q * nz;
-  q = lr * y[110];
-  out_grad[110][0] = 7.05243519f * r[91] - q * nx;
-  out_grad[110][1] = 7.05243519f * r[89] - q * ny;
-  out_grad[110][2] = 10.5131497f * r[90] - q * nz;
-  q = lr * y[111];
-  out_grad[111][0] = -7.79676046f * r[90] + 4.46035165f * r[92] - q * nx;
-  out_grad[111][1] = 4.46035165f * r[88] - q * ny;
-  out_grad[111][2] = 10.4604518f * r[91] - q * nz;
-  q = lr * y[112];
-  out_grad[112][0] = -6.03934468f * r[91] + 3.93366041f * r[93] - q * nx;
-  out_grad[112][1] = 6.03934468f * r[89] + 3.93366041f * r[87] - q * ny;
-  out_grad[112][2] = 10.3007409f * r[92] - q * nz;
-  q = lr * y[113];
-  out_grad[113][0] = -6.56545986f * r[92] + 3.40664984f * r[94] - q * nx;
-  out_grad[113][1] = 6.56545986f * r[88] + 3.40664984f * r[86] - q * ny;
-  out_grad[113][2] = 10.0289056f * r[93] - q * nz;
-  q = lr * y[114];
-  out_grad[114][0] = -7.09150715f * r[93] + 2.87914461f * r[95] - q * nx;
-  out_grad[114][1] = 7.09150715f * r[87] + 2.87914461f * r[85] - q * ny;
-  out_grad[114][2] = 9.63546082f * r[94] - q * nz;
-  q = lr * y[115];
-  out_grad[115][0] = -7.61750063f * r[94] + 2.35081173f * r[96] - q * nx;
-  out_grad[115][1] = 7.61750063f * r[86] + 2.35081173f * r[84] - q * ny;
-  out_grad[115][2] = 9.10465468f * r[95] - q * nz;
-  q = lr * y[116];
-  out_grad[116][0] = -8.14345071f * r[95] + 1.82093094f * r[97] - q * nx;
-  out_grad[116][1] = 8.14345071f * r[85] + 1.82093094f * r[83] - q * ny;
-  out_grad[116][2] = 8.41051973f * r[96] - q * nz;
-  q = lr * y[117];
-  out_grad[117][0] = -8.6693653f * r[96] + 1.28759261f * r[98] - q * nx;
-  out_grad[117][1] = 8.6693653f * r[84] + 1.28759261f * r[82] - q * ny;
-  out_grad[117][2] = 7.50789059f * r[97] - q * nz;
-  q = lr * y[118];
-  out_grad[118][0] = -9.19525049f * r[97] + 0.743391942f * r[99] - q * nx;
-  out_grad[118][1] = 9.19525049f * r[83] + 0.743391942f * r[81] - q * ny;
-  out_grad[118][2] = 6.3078898f * r[98] - q * nz;
-  q = lr * y[119];
-  out_grad[119][0] = -9.72111105f * r[98] - q * nx;
-  out_grad[119][1] = 9.72111105f * r[82] - q * ny;
-  out_grad[119][2] = 4.58257569f * r[99] - q * nz;
-  q = lr * y[120];
-  out_grad[120][0] = -10.2469508f * r[99] - q * nx;
-  out_grad[120][1] = 10.2469508f * r[81] - q * ny;
-  out_grad[120][2] = -q * nz;
-  lr = 11.0f * ir;
-  q = lr * y[121];
-  out_grad[121][0] = -11.2472219f * r[100] - q * nx;
-  out_grad[121][1] = -11.2472219f * r[120] - q * ny;
-  out_grad[121][2] = -q * nz;
-  q = lr * y[122];
-  out_grad[122][0] = -10.7238053f * r[101] - q * nx;
-  out_grad[122][1] = -10.7238053f * r[119] - q * ny;
-  out_grad[122][2] = 4.79583152f * r[100] - q * nz;
-  q = lr * y[123];
-  out_grad[123][0] = -10.2003735f * r[102] + 0.74001287f * r[100] - q * nx;
-  out_grad[123][1] = -10.2003735f * r[118] + -0.74001287f * r[120] - q * ny;
-  out_grad[123][2] = 6.61887633f * r[101] - q * nz;
-  q = lr * y[124];
-  out_grad[124][0] = -9.67692395f * r[103] + 1.28173989f * r[101] - q * nx;
-  out_grad[124][1] = -9.67692395f * r[117] + -1.28173989f * r[119] - q * ny;
-  out_grad[124][2] = 7.90117532f * r[102] - q * nz;
-  q = lr * y[125];
-  out_grad[125][0] = -9.15345368f * r[104] + 1.81265393f * r[102] - q * nx;
-  out_grad[125][1] = -9.15345368f * r[116] + -1.81265393f * r[118] - q * ny;
-  out_grad[125][2] = 8.88015444f * r[103] - q * nz;
-  q = lr * y[126];
-  out_grad[126][0] = -8.62995889f * r[105] + 2.34012617f * r[103] - q * nx;
-  out_grad[126][1] = -8.62995889f * r[115] + -2.34012617f * r[117] - q * ny;
-  out_grad[126][2] = 9.64858736f * r[104] - q * nz;
-  q = lr * y[127];
-  out_grad[127][0] = -8.10643483f * r[106] + 2.86605752f * r[104] - q * nx;
-  out_grad[127][1] = -8.10643483f * r[114] + -2.86605752f * r[116] - q * ny;
-  out_grad[127][2] = 10.2539191f * r[105] - q * nz;
-  q = lr * y[128];
-  out_grad[128][0] = -7.58287544f * r[107] + 3.39116499f * r[105] - q * nx;
-  out_grad[128][1] = -7.58287544f * r[113] + -3.39116499f * r[115] - q * ny;
-  out_grad[128][2] = 10.7238053f * r[106] - q * nz;
-  q = lr * y[129];
-  out_grad[129][0] = -7.05927286f * r[108] + 3.91578004f * r[106] - q * nx;
-  out_grad[129][1] = -7.05927286f * r[112] + -3.91578004f * r[114] - q * ny;
-  out_grad[129][2] = 11.0754985f * r[107] - q * nz;
-  q = lr * y[130];
-  out_grad[130][0] = -6.5356167f * r[109] + 4.44007722f * r[107] - q * nx;
-  out_grad[130][1] = -6.5356167f * r[111] + -4.44007722f * r[113] - q * ny;
-  out_grad[130][2] = 11.3200202f * r[108] - q * nz;
-  q = lr * y[131];
-  out_grad[131][0] = 4.96415724f * r[108] - q * nx;
-  out_grad[131][1] = -8.50210058f * r[110] + -4.96415724f * r[112] - q * ny;
-  out_grad[131][2] = 11.4642301f * r[109] - q * nz;
-  q = lr * y[132];
-  out_grad[132][0] = 7.76132046f * r[111] - q * nx;
-  out_grad[132][1] = 7.76132046f * r[109] - q * ny;
-  out_grad[132][2] = 11.5118986f * r[110] - q * nz;
-  q = lr * y[133];
-  out_grad[133][0] = -8.50210058f * r[110] + 4.96415724f * r[112] - q * nx;
-  out_grad[133][1] = 4.96415724f * r[108] - q * ny;
-  out_grad[133][2] = 11.4642301f * r[111] - q * nz;
-  q = lr * y[134];
-  out_grad[134][0] = -6.5356167f * r[111] + 4.44007722f * r[113] - q * nx;
-  out_grad[134][1] = 6.5356167f * r[109] + 4.44007722f * r[107] - q * ny;
-  out_grad[134][2] = 11.3200202f * r[112] - q * nz;
-  q = lr * y[135];
-  out_grad[135][0] = -7.05927286f * r[112] + 3.91578004f * r[114] - q * nx;
-  out_grad[135][1] = 7.05927286f * r[108] + 3.91578004f * r[106] - q * ny;
-  out_grad[135][2] = 11.0754985f * r[113] - q * nz;
-  q = lr * y[136];
-  out_grad[136][0] = -7.58287544f * r[113] + 3.39116499f * r[115] - q * nx;
-  out_grad[136][1] = 7.58287544f * r[107] + 3.39116499f * r[105] - q * ny;
-  out_grad[136][2] = 10.7238053f * r[114] - q * nz;
-  q = lr * y[137];
-  out_grad[137][0] = -8.10643483f * r[114] + 2.86605752f * r[116] - q * nx;
-  out_grad[137][1] = 8.10643483f * r[106] + 2.86605752f * r[104] - q * ny;
-  out_grad[137][2] = 10.2539191f * r[115] - q * nz;
-  q = lr * y[138];
-  out_grad[138][0] = -8.62995889f * r[115] + 2.34012617f * r[117] - q * nx;
-  out_grad[138][1] = 8.62995889f * r[105] + 2.34012617f * r[103] - q * ny;
-  out_grad[138][2] = 9.64858736f * r[116] - q * nz;
-  q = lr * y[139];
-  out_grad[139][0] = -9.15345368f * r[116] + 1.81265393f * r[118] - q * nx;
-  out_grad[139][1] = 9.15345368f * r[104] + 1.81265393f * r[102] - q * ny;
-  out_grad[139][2] = 8.88015444f * r[117] - q * nz;
-  q = lr * y[140];
-  out_grad[140][0] = -9.67692395f * r[117] + 1.28173989f * r[119] - q * nx;
-  out_grad[140][1] = 9.67692395f * r[103] + 1.28173989f * r[101] - q * ny;
-  out_grad[140][2] = 7.90117532f * r[118] - q * nz;
-  q = lr * y[141];
-  out_grad[141][0] = -10.2003735f * r[118] + 0.74001287f * r[120] - q * nx;
-  out_grad[141][1] = 10.2003735f * r[102] + 0.74001287f * r[100] - q * ny;
-  out_grad[141][2] = 6.61887633f * r[119] - q * nz;
-  q = lr * y[142];
-  out_grad[142][0] = -10.7238053f * r[119] - q * nx;
-  out_grad[142][1] = 10.7238053f * r[101] - q * ny;
-  out_grad[142][2] = 4.79583152f * r[120] - q * nz;
-  q = lr * y[143];
-  out_grad[143][0] = -11.2472219f * r[120] - q * nx;
-  out_grad[143][1] = 11.2472219f * r[100] - q * ny;
-  out_grad[143][2] = -q * nz;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 13
-void shli_sh_grad_13(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                     out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[144];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 144; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-  lr = 2.0f * ir;
-  q = lr * y[4];
-  out_grad[4][0] = -2.23606798f * r[1] - q * nx;
-  out_grad[4][1] = -2.23606798f * r[3] - q * ny;
-  out_grad[4][2] = -q * nz;
-  q = lr * y[5];
-  out_grad[5][0] = -q * nx;
-  out_grad[5][1] = -2.23606798f * r[2] - q * ny;
-  out_grad[5][2] = 2.23606798f * r[1] - q * nz;
-  q = lr * y[6];
-  out_grad[6][0] = 1.29099445f * r[3] - q * nx;
-  out_grad[6][1] = 1.29099445f * r[1] - q * ny;
-  out_grad[6][2] = 2.5819889f * r[2] - q * nz;
-  q = lr * y[7];
-  out_grad[7][0] = -2.23606798f * r[2] - q * nx;
-  out_grad[7][1] = -q * ny;
-  out_grad[7][2] = 2.23606798f * r[3] - q * nz;
-  q = lr * y[8];
-  out_grad[8][0] = -2.23606798f * r[3] - q * nx;
-  out_grad[8][1] = 2.23606798f * r[1] - q * ny;
-  out_grad[8][2] = -q * nz;
-  lr = 3.0f * ir;
-  q = lr * y[9];
-  out_grad[9][0] = -3.24037035f * r[4] - q * nx;
-  out_grad[9][1] = -3.24037035f * r[8] - q * ny;
-  out_grad[9][2] = -q * nz;
-  q = lr * y[10];
-  out_grad[10][0] = -2.64575131f * r[5] - q * nx;
-  out_grad[10][1] = -2.64575131f * r[7] - q * ny;
-  out_grad[10][2] = 2.64575131f * r[4] - q * nz;
-  q = lr * y[11];
-  out_grad[11][0] = 0.836660027f * r[4] - q * nx;
-  out_grad[11][1] = -2.89827535f * r[6] + -0.836660027f * r[8] - q * ny;
-  out_grad[11][2] = 3.34664011f * r[5] - q * nz;
-  q = lr * y[12];
-  out_grad[12][0] = 2.04939015f * r[7] - q * nx;
-  out_grad[12][1] = 2.04939015f * r[5] - q * ny;
-  out_grad[12][2] = 3.54964787f * r[6] - q * nz;
-  q = lr * y[13];
-  out_grad[13][0] = -2.89827535f * r[6] + 0.836660027f * r[8] - q * nx;
-  out_grad[13][1] = 0.836660027f * r[4] - q * ny;
-  out_grad[13][2] = 3.34664011f * r[7] - q * nz;
-  q = lr * y[14];
-  out_grad[14][0] = -2.64575131f * r[7] - q * nx;
-  out_grad[14][1] = 2.64575131f * r[5] - q * ny;
-  out_grad[14][2] = 2.64575131f * r[8] - q * nz;
-  q = lr * y[15];
-  out_grad[15][0] = -3.24037035f * r[8] - q * nx;
-  out_grad[15][1] = 3.24037035f * r[4] - q * ny;
-  out_grad[15][2] = -q * nz;
-  lr = 4.0f * ir;
-  q = lr * y[16];
-  out_grad[16][0] = -4.24264069f * r[9] - q * nx;
-  out_grad[16][1] = -4.24264069f * r[15] - q * ny;
-  out_grad[16][2] = -q * nz;
-  q = lr * y[17];
-  out_grad[17][0] = -3.67423461f * r[10] - q * nx;
-  out_grad[17][1] = -3.67423461f * r[14] - q * ny;
-  out_grad[17][2] = 3.0f * r[9] - q * nz;
-  q = lr * y[18];
-  out_grad[18][0] = -3.10529502f * r[11] + 0.801783726f * r[9] - q * nx;
-  out_grad[18][1] = -3.10529502f * r[13] + -0.801783726f * r[15] - q * ny;
-  out_grad[18][2] = 3.92792202f * r[10] - q * nz;
-  q = lr * y[19];
-  out_grad[19][0] = 1.38873015f * r[10] - q * nx;
-  out_grad[19][1] = -3.58568583f * r[12] + -1.38873015f * r[14] - q * ny;
-  out_grad[19][2] = 4.39155033f * r[11] - q * nz;
-  q = lr * y[20];
-  out_grad[20][0] = 2.7774603f * r[13] - q * nx;
-  out_grad[20][1] = 2.7774603f * r[11] - q * ny;
-  out_grad[20][2] = 4.53557368f * r[12] - q * nz;
-  q = lr * y[21];
-  out_grad[21][0] = -3.58568583f * r[12] + 1.38873015f * r[14] - q * nx;
-  out_grad[21][1] = 1.38873015f * r[10] - q * ny;
-  out_grad[21][2] = 4.39155033f * r[13] - q * nz;
-  q = lr * y[22];
-  out_grad[22][0] = -3.10529502f * r[13] + 0.801783726f * r[15] - q * nx;
-  out_grad[22][1] = 3.10529502f * r[11] + 0.801783726f * r[9] - q * ny;
-  out_grad[22][2] = 3.92792202f * r[14] - q * nz;
-  q = lr * y[23];
-  out_grad[23][0] = -3.67423461f * r[14] - q * nx;
-  out_grad[23][1] = 3.67423461f * r[10] - q * ny;
-  out_grad[23][2] = 3.0f * r[15] - q * nz;
-  q = lr * y[24];
-  out_grad[24][0] = -4.24264069f * r[15] - q * nx;
-  out_grad[24][1] = 4.24264069f * r[9] - q * ny;
-  out_grad[24][2] = -q * nz;
-  lr = 5.0f * ir;
-  q = lr * y[25];
-  out_grad[25][0] = -5.24404424f * r[16] - q * nx;
-  out_grad[25][1] = -5.24404424f * r[24] - q * ny;
-  out_grad[25][2] = -q * nz;
-  q = lr * y[26];
-  out_grad[26][0] = -4.69041576f * r[17] - q * nx;
-  out_grad[26][1] = -4.69041576f * r[23] - q * ny;
-  out_grad[26][2] = 3.31662479f * r[16] - q * nz;
-  q = lr * y[27];
-  out_grad[27][0] = -4.13655788f * r[18] + 0.78173596f * r[16] - q * nx;
-  out_grad[27][1] = -4.13655788f * r[22] + -0.78173596f * r[24] - q * ny;
-  out_grad[27][2] = 4.42216639f * r[17] - q * nz;
-  q = lr * y[28];
-  out_grad[28][0] = -3.58236421f * r[19] + 1.3540064f * r[17] - q * nx;
-  out_grad[28][1] = -3.58236421f * r[21] + -1.3540064f * r[23] - q * ny;
-  out_grad[28][2] = 5.06622805f * r[18] - q * nz;
-  q = lr * y[29];
-  out_grad[29][0] = 1.91485422f * r[18] - q * nx;
-  out_grad[29][1] = -4.28174419f * r[20] + -1.91485422f * r[22] - q * ny;
-  out_grad[29][2] = 5.4160256f * r[19] - q * nz;
-  q = lr * y[30];
-  out_grad[30][0] = 3.49602949f * r[21] - q * nx;
-  out_grad[30][1] = 3.49602949f * r[19] - q * ny;
-  out_grad[30][2] = 5.52770798f * r[20] - q * nz;
-  q = lr * y[31];
-  out_grad[31][0] = -4.28174419f * r[20] + 1.91485422f * r[22] - q * nx;
-  out_grad[31][1] = 1.91485422f * r[18] - q * ny;
-  out_grad[31][2] = 5.4160256f * r[21] - q * nz;
-  q = lr * y[32];
-  out_grad[32][0] = -3.58236421f * r[21] + 1.3540064f * r[23] - q * nx;
-  out_grad[32][1] = 3.58236421f * r[19] + 1.3540064f * r[17] - q * ny;
-  out_grad[32][2] = 5.06622805f * r[22] - q * nz;
-  q = lr * y[33];
-  out_grad[33][0] = -4.13655788f * r[22] + 0.78173596f * r[24] - q * nx;
-  out_grad[33][1] = 4.13655788f * r[18] + 0.78173596f * r[16] - q * ny;
-  out_grad[33][2] = 4.42216639f * r[23] - q * nz;
-  q = lr * y[34];
-  out_grad[34][0] = -4.69041576f * r[23] - q * nx;
-  out_grad[34][1] = 4.69041576f * r[17] - q * ny;
-  out_grad[34][2] = 3.31662479f * r[24] - q * nz;
-  q = lr * y[35];
-  out_grad[35][0] = -5.24404424f * r[24] - q * nx;
-  out_grad[35][1] = 5.24404424f * r[16] - q * ny;
-  out_grad[35][2] = -q * nz;
-  lr = 6.0f * ir;
-  q = lr * y[36];
-  out_grad[36][0] = -6.244998f * r[25] - q * nx;
-  out_grad[36][1] = -6.244998f * r[35] - q * ny;
-  out_grad[36][2] = -q * nz;
-  q = lr * y[37];
-  out_grad[37][0] = -5.70087713f * r[26] - q * nx;
-  out_grad[37][1] = -5.70087713f * r[34] - q * ny;
-  out_grad[37][2] = 3.60555128f * r[25] - q * nz;
-  q = lr * y[38];
-  out_grad[38][0] = -5.15663738f * r[27] + 0.768706115f * r[25] - q * nx;
-  out_grad[38][1] = -5.15663738f * r[33] + -0.768706115f * r[35] - q * ny;
-  out_grad[38][2] = 4.86172435f * r[26] - q * nz;
-  q = lr * y[39];
-  out_grad[39][0] = -4.61223669f * r[28] + 1.33143805f * r[26] - q * nx;
-  out_grad[39][1] = -4.61223669f * r[32] + -1.33143805f * r[34] - q * ny;
-  out_grad[39][2] = 5.64881323f * r[27] - q * nz;
-  q = lr * y[40];
-  out_grad[40][0] = -4.06761042f * r[29] + 1.88293774f * r[27] - q * nx;
-  out_grad[40][1] = -4.06761042f * r[31] + -1.88293774f * r[33] - q * ny;
-  out_grad[40][2] = 6.14964892f * r[28] - q * nz;
-  q = lr * y[41];
-  out_grad[41][0] = 2.43086217f * r[28] - q * nx;
-  out_grad[41][1] = -4.981785f * r[30] + -2.43086217f * r[32] - q * ny;
-  out_grad[41][2] = 6.43145678f * r[29] - q * nz;
-  q = lr * y[42];
-  out_grad[42][0] = 4.21037679f * r[31] - q * nx;
-  out_grad[42][1] = 4.21037679f * r[29] - q * ny;
-  out_grad[42][2] = 6.52268768f * r[30] - q * nz;
-  q = lr * y[43];
-  out_grad[43][0] = -4.981785f * r[30] + 2.43086217f * r[32] - q * nx;
-  out_grad[43][1] = 2.43086217f * r[28] - q * ny;
-  out_grad[43][2] = 6.43145678f * r[31] - q * nz;
-  q = lr * y[44];
-  out_grad[44][0] = -4.06761042f * r[31] + 1.88293774f * r[33] - q * nx;
-  out_grad[44][1] = 4.06761042f * r[29] + 1.88293774f * r[27] - q * ny;
-  out_grad[44][2] = 6.14964892f * r[32] - q * nz;
-  q = lr * y[45];
-  out_grad[45][0] = -4.61223669f * r[32] + 1.33143805f * r[34] - q * nx;
-  out_grad[45][1] = 4.61223669f * r[28] + 1.33143805f * r[26] - q * ny;
-  out_grad[45][2] = 5.64881323f * r[33] - q * nz;
-  q = lr * y[46];
-  out_grad[46][0] = -5.15663738f * r[33] + 0.768706115f * r[35] - q * nx;
-  out_grad[46][1] = 5.15663738f * r[27] + 0.768706115f * r[25] - q * ny;
-  out_grad[46][2] = 4.86172435f * r[34] - q * nz;
-  q = lr * y[47];
-  out_grad[47][0] = -5.70087713f * r[34] - q * nx;
-  out_grad[47][1] = 5.70087713f * r[26] - q * ny;
-  out_grad[47][2] = 3.60555128f * r[35] - q * nz;
-  q = lr * y[48];
-  out_grad[48][0] = -6.244998f * r[35] - q * nx;
-  out_grad[48][1] = 6.244998f * r[25] - q * ny;
-  out_grad[48][2] = -q * nz;
-  lr = 7.0f * ir;
-  q = lr * y[49];
-  out_grad[49][0] = -7.24568837f * r[36] - q * nx;
-  out_grad[49][1] = -7.24568837f * r[48] - q * ny;
-  out_grad[49][2] = -q * nz;
-  q = lr * y[50];
-  out_grad[50][0] = -6.70820393f * r[37] - q * nx;
-  out_grad[50][1] = -6.70820393f * r[47] - q * ny;
-  out_grad[50][2] = 3.87298335f * r[36] - q * nz;
-  q = lr * y[51];
-  out_grad[51][0] = -6.17065013f * r[38] + 0.759554525f * r[36] - q * nx;
-  out_grad[51][1] = -6.17065013f * r[46] + -0.759554525f * r[48] - q * ny;
-  out_grad[51][2] = 5.26234812f * r[37] - q * nz;
-  q = lr * y[52];
-  out_grad[52][0] = -5.63300712f * r[39] + 1.31558703f * r[37] - q * nx;
-  out_grad[52][1] = -5.63300712f * r[45] + -1.31558703f * r[47] - q * ny;
-  out_grad[52][2] = 6.17065013f * r[38] - q * nz;
-  q = lr * y[53];
-  out_grad[53][0] = -5.09524665f * r[40] + 1.86052102f * r[38] - q * nx;
-  out_grad[53][1] = -5.09524665f * r[44] + -1.86052102f * r[46] - q * ny;
-  out_grad[53][2] = 6.7936622f * r[39] - q * nz;
-  q = lr * y[54];
-  out_grad[54][0] = -4.55732715f * r[41] + 2.40192231f * r[39] - q * nx;
-  out_grad[54][1] = -4.55732715f * r[43] + -2.40192231f * r[45] - q * ny;
-  out_grad[54][2] = 7.20576692f * r[40] - q * nz;
-  q = lr * y[55];
-  out_grad[55][0] = 2.94174203f * r[40] - q * nx;
-  out_grad[55][1] = -5.6839856f * r[42] + -2.94174203f * r[44] - q * ny;
-  out_grad[55][2] = 7.44208408f * r[41] - q * nz;
-  q = lr * y[56];
-  out_grad[56][0] = 4.92247592f * r[43] - q * nx;
-  out_grad[56][1] = 4.92247592f * r[41] - q * ny;
-  out_grad[56][2] = 7.51920618f * r[42] - q * nz;
-  q = lr * y[57];
-  out_grad[57][0] = -5.6839856f * r[42] + 2.94174203f * r[44] - q * nx;
-  out_grad[57][1] = 2.94174203f * r[40] - q * ny;
-  out_grad[57][2] = 7.44208408f * r[43] - q * nz;
-  q = lr * y[58];
-  out_grad[58][0] = -4.55732715f * r[43] + 2.40192231f * r[45] - q * nx;
-  out_grad[58][1] = 4.55732715f * r[41] + 2.40192231f * r[39] - q * ny;
-  out_grad[58][2] = 7.20576692f * r[44] - q * nz;
-  q = lr * y[59];
-  out_grad[59][0] = -5.09524665f * r[44] + 1.86052102f * r[46] - q * nx;
-  out_grad[59][1] = 5.09524665f * r[40] + 1.86052102f * r[38] - q * ny;
-  out_grad[59][2] = 6.7936622f * r[45] - q * nz;
-  q = lr * y[60];
-  out_grad[60][0] = -5.63300712f * r[45] + 1.31558703f * r[47] - q * nx;
-  out_grad[60][1] = 5.63300712f * r[39] + 1.31558703f * r[37] - q * ny;
-  out_grad[60][2] = 6.17065013f * r[46] - q * nz;
-  q = lr * y[61];
-  out_grad[61][0] = -6.17065013f * r[46] + 0.759554525f * r[48] - q * nx;
-  out_grad[61][1] = 6.17065013f * r[38] + 0.759554525f * r[36] - q * ny;
-  out_grad[61][2] = 5.26234812f * r[47] - q * nz;
-  q = lr * y[62];
-  out_grad[62][0] = -6.70820393f * r[47] - q * nx;
-  out_grad[62][1] = 6.70820393f * r[37] - q * ny;
-  out_grad[62][2] = 3.87298335f * r[48] - q * nz;
-  q = lr * y[63];
-  out_grad[63][0] = -7.24568837f * r[48] - q * nx;
-  out_grad[63][1] = 7.24568837f * r[36] - q * ny;
-  out_grad[63][2] = -q * nz;
-  lr = 8.0f * ir;
-  q = lr * y[64];
-  out_grad[64][0] = -8.24621125f * r[49] - q * nx;
-  out_grad[64][1] = -8.24621125f * r[63] - q * ny;
-  out_grad[64][2] = -q * nz;
-  q = lr * y[65];
-  out_grad[65][0] = -7.71362431f * r[50] - q * nx;
-  out_grad[65][1] = -7.71362431f * r[62] - q * ny;
-  out_grad[65][2] = 4.12310563f * r[49] - q * nz;
-  q = lr * y[66];
-  out_grad[66][0] = -7.18099343f * r[51] + 0.752772653f * r[49] - q * nx;
-  out_grad[66][1] = -7.18099343f * r[61] + -0.752772653f * r[63] - q * ny;
-  out_grad[66][2] = 5.63323471f * r[50] - q * nz;
-  q = lr * y[67];
-  out_grad[67][0] = -6.64830806f * r[52] + 1.30384048f * r[50] - q * nx;
-  out_grad[67][1] = -6.64830806f * r[60] + -1.30384048f * r[62] - q * ny;
-  out_grad[67][2] = 6.64830806f * r[51] - q * nz;
-  q = lr * y[68];
-  out_grad[68][0] = -6.11555394f * r[53] + 1.84390889f * r[51] - q * nx;
-  out_grad[68][1] = -6.11555394f * r[59] + -1.84390889f * r[61] - q * ny;
-  out_grad[68][2] = 7.37563557f * r[52] - q * nz;
-  q = lr * y[69];
-  out_grad[69][0] = -5.58271141f * r[54] + 2.38047614f * r[52] - q * nx;
-  out_grad[69][1] = -5.58271141f * r[58] + -2.38047614f * r[60] - q * ny;
-  out_grad[69][2] = 7.89514619f * r[53] - q * nz;
-  q = lr * y[70];
-  out_grad[70][0] = -5.04975247f * r[55] + 2.91547595f * r[53] - q * nx;
-  out_grad[70][1] = -5.04975247f * r[57] + -2.91547595f * r[59] - q * ny;
-  out_grad[70][2] = 8.24621125f * r[54] - q * nz;
-  q = lr * y[71];
-  out_grad[71][0] = 3.44963766f * r[54] - q * nx;
-  out_grad[71][1] = -6.38748777f * r[56] + -3.44963766f * r[58] - q * ny;
-  out_grad[71][2] = 8.44985207f * r[55] - q * nz;
-  q = lr * y[72];
-  out_grad[72][0] = 5.63323471f * r[57] - q * nx;
-  out_grad[72][1] = 5.63323471f * r[55] - q * ny;
-  out_grad[72][2] = 8.51665036f * r[56] - q * nz;
-  q = lr * y[73];
-  out_grad[73][0] = -6.38748777f * r[56] + 3.44963766f * r[58] - q * nx;
-  out_grad[73][1] = 3.44963766f * r[54] - q * ny;
-  out_grad[73][2] = 8.44985207f * r[57] - q * nz;
-  q = lr * y[74];
-  out_grad[74][0] = -5.04975247f * r[57] + 2.91547595f * r[59] - q * nx;
-  out_grad[74][1] = 5.04975247f * r[55] + 2.91547595f * r[53] - q * ny;
-  out_grad[74][2] = 8.24621125f * r[58] - q * nz;
-  q = lr * y[75];
-  out_grad[75][0] = -5.58271141f * r[58] + 2.38047614f * r[60] - q * nx;
-  out_grad[75][1] = 5.58271141f * r[54] + 2.38047614f * r[52] - q * ny;
-  out_grad[75][2] = 7.89514619f * r[59] - q * nz;
-  q = lr * y[76];
-  out_grad[76][0] = -6.11555394f * r[59] + 1.84390889f * r[61] - q * nx;
-  out_grad[76][1] = 6.11555394f * r[53] + 1.84390889f * r[51] - q * ny;
-  out_grad[76][2] = 7.37563557f * r[60] - q * nz;
-  q = lr * y[77];
-  out_grad[77][0] = -6.64830806f * r[60] + 1.30384048f * r[62] - q * nx;
-  out_grad[77][1] = 6.64830806f * r[52] + 1.30384048f * r[50] - q * ny;
-  out_grad[77][2] = 6.64830806f * r[61] - q * nz;
-  q = lr * y[78];
-  out_grad[78][0] = -7.18099343f * r[61] + 0.752772653f * r[63] - q * nx;
-  out_grad[78][1] = 7.18099343f * r[51] + 0.752772653f * r[49] - q * ny;
-  out_grad[78][2] = 5.63323471f * r[62] - q * nz;
-  q = lr * y[79];
-  out_grad[79][0] = -7.71362431f * r[62] - q * nx;
-  out_grad[79][1] = 7.71362431f * r[50] - q * ny;
-  out_grad[79][2] = 4.12310563f * r[63] - q * nz;
-  q = lr * y[80];
-  out_grad[80][0] = -8.24621125f * r[63] - q * nx;
-  out_grad[80][1] = 8.24621125f * r[49] - q * ny;
-  out_grad[80][2] = -q * nz;
-  lr = 9.0f * ir;
-  q = lr * y[81];
-  out_grad[81][0] = -9.246621f * r[64] - q * nx;
-  out_grad[81][1] = -9.246621f * r[80] - q * ny;
-  out_grad[81][2] = -q * nz;
-  q = lr * y[82];
-  out_grad[82][0] = -8.71779789f * r[65] - q * nx;
-  out_grad[82][1] = -8.71779789f * r[79] - q * ny;
-  out_grad[82][2] = 4.35889894f * r[64] - q * nz;
-  q = lr * y[83];
-  out_grad[83][0] = -8.1889452f * r[66] + 0.747545002f * r[64] - q * nx;
-  out_grad[83][1] = -8.1889452f * r[78] + -0.747545002f * r[80] - q * ny;
-  out_grad[83][2] = 5.98036001f * r[65] - q * nz;
-  q = lr * y[84];
-  out_grad[84][0] = -7.66005683f * r[67] + 1.29478592f * r[65] - q * nx;
-  out_grad[84][1] = -7.66005683f * r[77] + -1.29478592f * r[79] - q * ny;
-  out_grad[84][2] = 7.09183458f * r[66] - q * nz;
-  q = lr * y[85];
-  out_grad[85][0] = -7.13112482f * r[68] + 1.83110381f * r[66] - q * nx;
-  out_grad[85][1] = -7.13112482f * r[76] + -1.83110381f * r[78] - q * ny;
-  out_grad[85][2] = 7.91127267f * r[67] - q * nz;
-  q = lr * y[86];
-  out_grad[86][0] = -6.60213869f * r[69] + 2.36394486f * r[67] - q * nx;
-  out_grad[86][1] = -6.60213869f * r[75] + -2.36394486f * r[77] - q * ny;
-  out_grad[86][2] = 8.5233244f * r[68] - q * nz;
-  q = lr * y[87];
-  out_grad[87][0] = -6.0730843f * r[70] + 2.89522934f * r[68] - q * nx;
-  out_grad[87][1] = -6.0730843f * r[74] + -2.89522934f * r[76] - q * ny;
-  out_grad[87][2] = 8.97054002f * r[69] - q * nz;
-  q = lr * y[88];
-  out_grad[88][0] = -5.54394211f * r[71] + 3.42568156f * r[69] - q * nx;
-  out_grad[88][1] = -5.54394211f * r[73] + -3.42568156f * r[75] - q * ny;
-  out_grad[88][2] = 9.27678951f * r[70] - q * nz;
-  q = lr * y[89];
-  out_grad[89][0] = 3.95563634f * r[70] - q * nx;
-  out_grad[89][1] = -7.09183458f * r[72] + -3.95563634f * r[74] - q * ny;
-  out_grad[89][2] = 9.45577943f * r[71] - q * nz;
-  q = lr * y[90];
-  out_grad[90][0] = 6.34312968f * r[73] - q * nx;
-  out_grad[90][1] = 6.34312968f * r[71] - q * ny;
-  out_grad[90][2] = 9.51469452f * r[72] - q * nz;
-  q = lr * y[91];
-  out_grad[91][0] = -7.09183458f * r[72] + 3.95563634f * r[74] - q * nx;
-  out_grad[91][1] = 3.95563634f * r[70] - q * ny;
-  out_grad[91][2] = 9.45577943f * r[73] - q * nz;
-  q = lr * y[92];
-  out_grad[92][0] = -5.54394211f * r[73] + 3.42568156f * r[75] - q * nx;
-  out_grad[92][1] = 5.54394211f * r[71] + 3.42568156f * r[69] - q * ny;
-  out_grad[92][2] = 9.27678951f * r[74] - q * nz;
-  q = lr * y[93];
-  out_grad[93][0] = -6.0730843f * r[74] + 2.89522934f * r[76] - q * nx;
-  out_grad[93][1] = 6.0730843f * r[70] + 2.89522934f * r[68] - q * ny;
-  out_grad[93][2] = 8.97054002f * r[75] - q * nz;
-  q = lr * y[94];
-  out_grad[94][0] = -6.60213869f * r[75] + 2.36394486f * r[77] - q * nx;
-  out_grad[94][1] = 6.60213869f * r[69] + 2.36394486f * r[67] - q * ny;
-  out_grad[94][2] = 8.5233244f * r[76] - q * nz;
-  q = lr * y[95];
-  out_grad[95][0] = -7.13112482f * r[76] + 1.83110381f * r[78] - q * nx;
-  out_grad[95][1] = 7.13112482f * r[68] + 1.83110381f * r[66] - q * ny;
-  out_grad[95][2] = 7.91127267f * r[77] - q * nz;
-  q = lr * y[96];
-  out_grad[96][0] = -7.66005683f * r[77] + 1.29478592f * r[79] - q * nx;
-  out_grad[96][1] = 7.66005683f * r[67] + 1.29478592f * r[65] - q * ny;
-  out_grad[96][2] = 7.09183458f * r[78] - q * nz;
-  q = lr * y[97];
-  out_grad[97][0] = -8.1889452f * r[78] + 0.747545002f * r[80] - q * nx;
-  out_grad[97][1] = 8.1889452f * r[66] + 0.747545002f * r[64] - q * ny;
-  out_grad[97][2] = 5.98036001f * r[79] - q * nz;
-  q = lr * y[98];
-  out_grad[98][0] = -8.71779789f * r[79] - q * nx;
-  out_grad[98][1] = 8.71779789f * r[65] - q * ny;
-  out_grad[98][2] = 4.35889894f * r[80] - q * nz;
-  q = lr * y[99];
-  out_grad[99][0] = -9.246621f * r[80] - q * nx;
-  out_grad[99][1] = 9.246621f * r[64] - q * ny;
-  out_grad[99][2] = -q * nz;
-  lr = 10.0f * ir;
-  q = lr * y[100];
-  out_grad[100][0] = -10.2469508f * r[81] - q * nx;
-  out_grad[100][1] = -10.2469508f * r[99] - q * ny;
-  out_grad[100][2] = -q * nz;
-  q = lr * y[101];
-  out_grad[101][0] = -9.72111105f * r[82] - q * nx;
-  out_grad[101][1] = -9.72111105f * r[98] - q * ny;
-  out_grad[101][2] = 4.58257569f * r[81] - q * nz;
-  q = lr * y[102];
-  out_grad[102][0] = -9.19525049f * r[83] + 0.743391942f * r[81] - q * nx;
-  out_grad[102][1] = -9.19525049f * r[97] + -0.743391942f * r[99] - q * ny;
-  out_grad[102][2] = 6.3078898f * r[82] - q * nz;
-  q = lr * y[103];
-  out_grad[103][0] = -8.6693653f * r[84] + 1.28759261f * r[82] - q * nx;
-  out_grad[103][1] = -8.6693653f * r[96] + -1.28759261f * r[98] - q * ny;
-  out_grad[103][2] = 7.50789059f * r[83] - q * nz;
-  q = lr * y[104];
-  out_grad[104][0] = -8.14345071f * r[85] + 1.82093094f * r[83] - q * nx;
-  out_grad[104][1] = -8.14345071f * r[95] + -1.82093094f * r[97] - q * ny;
-  out_grad[104][2] = 8.41051973f * r[84] - q * nz;
-  q = lr * y[105];
-  out_grad[105][0] = -7.61750063f * r[86] + 2.35081173f * r[84] - q * nx;
-  out_grad[105][1] = -7.61750063f * r[94] + -2.35081173f * r[96] - q * ny;
-  out_grad[105][2] = 9.10465468f * r[85] - q * nz;
-  q = lr * y[106];
-  out_grad[106][0] = -7.09150715f * r[87] + 2.87914461f * r[85] - q * nx;
-  out_grad[106][1] = -7.09150715f * r[93] + -2.87914461f * r[95] - q * ny;
-  out_grad[106][2] = 9.63546082f * r[86] - q * nz;
-  q = lr * y[107];
-  out_grad[107][0] = -6.56545986f * r[88] + 3.40664984f * r[86] - q * nx;
-  out_grad[107][1] = -6.56545986f * r[92] + -3.40664984f * r[94] - q * ny;
-  out_grad[107][2] = 10.0289056f * r[87] - q * nz;
-  q = lr * y[108];
-  out_grad[108][0] = -6.03934468f * r[89] + 3.93366041f * r[87] - q * nx;
-  out_grad[108][1] = -6.03934468f * r[91] + -3.93366041f * r[93] - q * ny;
-  out_grad[108][2] = 10.3007409f * r[88] - q * nz;
-  q = lr * y[109];
-  out_grad[109][0] = 4.46035165f * r[88] - q * nx;
-  out_grad[109][1] = -7.79676046f * r[90] + -4.46035165f * r[92] - q * ny;
-  out_grad[109][2] = 10.4604518f * r[89] - q * nz;
-  q = lr * y[110];
-  out_grad[110][0] = 7.05243519f * r[91] - q * nx;
-  out_grad[110][1] = 7.05243519f * r[89] - q * ny;
-  out_grad[110][2] = 10.5131497f * r[90] - q * nz;
-  q = lr * y[111];
-  out_grad[111][0] = -7.79676046f * r[90] + 4.46035165f * r[92] - q * nx;
-  out_grad[111][1] = 4.46035165f * r[88] - q * ny;
-  out_grad[111][2] = 10.4604518f * r[91] - q * nz;
-  q = lr * y[112];
-  out_grad[112][0] = -6.03934468f * r[91] + 3.93366041f * r[93] - q * nx;
-  out_grad[112][1] = 6.03934468f * r[89] + 3.93366041f * r[87] - q * ny;
-  out_grad[112][2] = 10.3007409f * r[92] - q * nz;
-  q = lr * y[113];
-  out_grad[113][0] = -6.56545986f * r[92] + 3.40664984f * r[94] - q * nx;
-  out_grad[113][1] = 6.56545986f * r[88] + 3.40664984f * r[86] - q * ny;
-  out_grad[113][2] = 10.0289056f * r[93] - q * nz;
-  q = lr * y[114];
-  out_grad[114][0] = -7.09150715f * r[93] + 2.87914461f * r[95] - q * nx;
-  out_grad[114][1] = 7.09150715f * r[87] + 2.87914461f * r[85] - q * ny;
-  out_grad[114][2] = 9.63546082f * r[94] - q * nz;
-  q = lr * y[115];
-  out_grad[115][0] = -7.61750063f * r[94] + 2.35081173f * r[96] - q * nx;
-  out_grad[115][1] = 7.61750063f * r[86] + 2.35081173f * r[84] - q * ny;
-  out_grad[115][2] = 9.10465468f * r[95] - q * nz;
-  q = lr * y[116];
-  out_grad[116][0] = -8.14345071f * r[95] + 1.82093094f * r[97] - q * nx;
-  out_grad[116][1] = 8.14345071f * r[85] + 1.82093094f * r[83] - q * ny;
-  out_grad[116][2] = 8.41051973f * r[96] - q * nz;
-  q = lr * y[117];
-  out_grad[117][0] = -8.6693653f * r[96] + 1.28759261f * r[98] - q * nx;
-  out_grad[117][1] = 8.6693653f * r[84] + 1.28759261f * r[82] - q * ny;
-  out_grad[117][2] = 7.50789059f * r[97] - q * nz;
-  q = lr * y[118];
-  out_grad[118][0] = -9.19525049f * r[97] + 0.743391942f * r[99] - q * nx;
-  out_grad[118][1] = 9.19525049f * r[83] + 0.743391942f * r[81] - q * ny;
-  out_grad[118][2] = 6.3078898f * r[98] - q * nz;
-  q = lr * y[119];
-  out_grad[119][0] = -9.72111105f * r[98] - q * nx;
-  out_grad[119][1] = 9.72111105f * r[82] - q * ny;
-  out_grad[119][2] = 4.58257569f * r[99] - q * nz;
-  q = lr * y[120];
-  out_grad[120][0] = -10.2469508f * r[99] - q * nx;
-  out_grad[120][1] = 10.2469508f * r[81] - q * ny;
-  out_grad[120][2] = -q * nz;
-  lr = 11.0f * ir;
-  q = lr * y[121];
-  out_grad[121][0] = -11.2472219f * r[100] - q * nx;
-  out_grad[121][1] = -11.2472219f * r[120] - q * ny;
-  out_grad[121][2] = -q * nz;
-  q = lr * y[122];
-  out_grad[122][0] = -10.7238053f * r[101] - q * nx;
-  out_grad[122][1] = -10.7238053f * r[119] - q * ny;
-  out_grad[122][2] = 4.79583152f * r[100] - q * nz;
-  q = lr * y[123];
-  out_grad[123][0] = -10.2003735f * r[102] + 0.74001287f * r[100] - q * nx;
-  out_grad[123][1] = -10.2003735f * r[118] + -0.74001287f * r[120] - q * ny;
-  out_grad[123][2] = 6.61887633f * r[101] - q * nz;
-  q = lr * y[124];
-  out_grad[124][0] = -9.67692395f * r[103] + 1.28173989f * r[101] - q * nx;
-  out_grad[124][1] = -9.67692395f * r[117] + -1.28173989f * r[119] - q * ny;
-  out_grad[124][2] = 7.90117532f * r[102] - q * nz;
-  q = lr * y[125];
-  out_grad[125][0] = -9.15345368f * r[104] + 1.81265393f * r[102] - q * nx;
-  out_grad[125][1] = -9.15345368f * r[116] + -1.81265393f * r[118] - q * ny;
-  out_grad[125][2] = 8.88015444f * r[103] - q * nz;
-  q = lr * y[126];
-  out_grad[126][0] = -8.62995889f * r[105] + 2.34012617f * r[103] - q * nx;
-  out_grad[126][1] = -8.62995889f * r[115] + -2.34012617f * r[117] - q * ny;
-  out_grad[126][2] = 9.64858736f * r[104] - q * nz;
-  q = lr * y[127];
-  out_grad[127][0] = -8.10643483f * r[106] + 2.86605752f * r[104] - q * nx;
-  out_grad[127][1] = -8.10643483f * r[114] + -2.86605752f * r[116] - q * ny;
-  out_grad[127][2] = 10.2539191f * r[105] - q * nz;
-  q = lr * y[128];
-  out_grad[128][0] = -7.58287544f * r[107] + 3.39116499f * r[105] - q * nx;
-  out_grad[128][1] = -7.58287544f * r[113] + -3.39116499f * r[115] - q * ny;
-  out_grad[128][2] = 10.7238053f * r[106] - q * nz;
-  q = lr * y[129];
-  out_grad[129][0] = -7.05927286f * r[108] + 3.91578004f * r[106] - q * nx;
-  out_grad[129][1] = -7.05927286f * r[112] + -3.91578004f * r[114] - q * ny;
-  out_grad[129][2] = 11.0754985f * r[107] - q * nz;
-  q = lr * y[130];
-  out_grad[130][0] = -6.5356167f * r[109] + 4.44007722f * r[107] - q * nx;
-  out_grad[130][1] = -6.5356167f * r[111] + -4.44007722f * r[113] - q * ny;
-  out_grad[130][2] = 11.3200202f * r[108] - q * nz;
-  q = lr * y[131];
-  out_grad[131][0] = 4.96415724f * r[108] - q * nx;
-  out_grad[131][1] = -8.50210058f * r[110] + -4.96415724f * r[112] - q * ny;
-  out_grad[131][2] = 11.4642301f * r[109] - q * nz;
-  q = lr * y[132];
-  out_grad[132][0] = 7.76132046f * r[111] - q * nx;
-  out_grad[132][1] = 7.76132046f * r[109] - q * ny;
-  out_grad[132][2] = 11.5118986f * r[110] - q * nz;
-  q = lr * y[133];
-  out_grad[133][0] = -8.50210058f * r[110] + 4.96415724f * r[112] - q * nx;
-  out_grad[133][1] = 4.96415724f * r[108] - q * ny;
-  out_grad[133][2] = 11.4642301f * r[111] - q * nz;
-  q = lr * y[134];
-  out_grad[134][0] = -6.5356167f * r[111] + 4.44007722f * r[113] - q * nx;
-  out_grad[134][1] = 6.5356167f * r[109] + 4.44007722f * r[107] - q * ny;
-  out_grad[134][2] = 11.3200202f * r[112] - q * nz;
-  q = lr * y[135];
-  out_grad[135][0] = -7.05927286f * r[112] + 3.91578004f * r[114] - q * nx;
-  out_grad[135][1] = 7.05927286f * r[108] + 3.91578004f * r[106] - q * ny;
-  out_grad[135][2] = 11.0754985f * r[113] - q * nz;
-  q = lr * y[136];
-  out_grad[136][0] = -7.58287544f * r[113] + 3.39116499f * r[115] - q * nx;
-  out_grad[136][1] = 7.58287544f * r[107] + 3.39116499f * r[105] - q * ny;
-  out_grad[136][2] = 10.7238053f * r[114] - q * nz;
-  q = lr * y[137];
-  out_grad[137][0] = -8.10643483f * r[114] + 2.86605752f * r[116] - q * nx;
-  out_grad[137][1] = 8.10643483f * r[106] + 2.86605752f * r[104] - q * ny;
-  out_grad[137][2] = 10.2539191f * r[115] - q * nz;
-  q = lr * y[138];
-  out_grad[138][0] = -8.62995889f * r[115] + 2.34012617f * r[117] - q * nx;
-  out_grad[138][1] = 8.62995889f * r[105] + 2.34012617f * r[103] - q * ny;
-  out_grad[138][2] = 9.64858736f * r[116] - q * nz;
-  q = lr * y[139];
-  out_grad[139][0] = -9.15345368f * r[116] + 1.81265393f * r[118] - q * nx;
-  out_grad[139][1] = 9.15345368f * r[104] + 1.81265393f * r[102] - q * ny;
-  out_grad[139][2] = 8.88015444f * r[117] - q * nz;
-  q = lr * y[140];
-  out_grad[140][0] = -9.67692395f * r[117] + 1.28173989f * r[119] - q * nx;
-  out_grad[140][1] = 9.67692395f * r[103] + 1.28173989f * r[101] - q * ny;
-  out_grad[140][2] = 7.90117532f * r[118] - q * nz;
-  q = lr * y[141];
-  out_grad[141][0] = -10.2003735f * r[118] + 0.74001287f * r[120] - q * nx;
-  out_grad[141][1] = 10.2003735f * r[102] + 0.74001287f * r[100] - q * ny;
-  out_grad[141][2] = 6.61887633f * r[119] - q * nz;
-  q = lr * y[142];
-  out_grad[142][0] = -10.7238053f * r[119] - q * nx;
-  out_grad[142][1] = 10.7238053f * r[101] - q * ny;
-  out_grad[142][2] = 4.79583152f * r[120] - q * nz;
-  q = lr * y[143];
-  out_grad[143][0] = -11.2472219f * r[120] - q * nx;
-  out_grad[143][1] = 11.2472219f * r[100] - q * ny;
-  out_grad[143][2] = -q * nz;
-  lr = 12.0f * ir;
-  q = lr * y[144];
-  out_grad[144][0] = -12.2474487f * r[121] - q * nx;
-  out_grad[144][1] = -12.2474487f * r[143] - q * ny;
-  out_grad[144][2] = -q * nz;
-  q = lr * y[145];
-  out_grad[145][0] = -11.7260394f * r[122] - q * nx;
-  out_grad[145][1] = -11.7260394f * r[142] - q * ny;
-  out_grad[145][2] = 5.0f * r[121] - q * nz;
-  q = lr * y[146];
-  out_grad[146][0] = -11.2046186f * r[123] + 0.737209781f * r[121] - q * nx;
-  out_grad[146][1] = -11.2046186f * r[141] + -0.737209781f * r[143] - q * ny;
-  out_grad[146][2] = 6.91564075f * r[122] - q * nz;
-  q = lr * y[147];
-  out_grad[147][0] = -10.6831847f * r[124] + 1.2768848f * r[122] - q * nx;
-  out_grad[147][1] = -10.6831847f * r[140] + -1.2768848f * r[142] - q * ny;
-  out_grad[147][2] = 8.27515927f * r[123] - q * nz;
-  q = lr * y[148];
-  out_grad[148][0] = -10.1617356f * r[125] + 1.8057878f * r[123] - q * nx;
-  out_grad[148][1] = -10.1617356f * r[139] + -1.8057878f * r[141] - q * ny;
-  out_grad[148][2] = 9.32504808f * r[124] - q * nz;
-  q = lr * y[149];
-  out_grad[149][0] = -9.6402688f * r[126] + 2.33126202f * r[124] - q * nx;
-  out_grad[149][1] = -9.6402688f * r[138] + -2.33126202f * r[140] - q * ny;
-  out_grad[149][2] = 10.1617356f * r[125] - q * nz;
-  q = lr * y[150];
-  out_grad[150][0] = -9.11878138f * r[127] + 2.8552012f * r[125] - q * nx;
-  out_grad[150][1] = -9.11878138f * r[137] + -2.8552012f * r[139] - q * ny;
-  out_grad[150][2] = 10.8347268f * r[126] - q * nz;
-  q = lr * y[151];
-  out_grad[151][0] = -8.59726954f * r[128] + 3.37831962f * r[126] - q * nx;
-  out_grad[151][1] = -8.59726954f * r[136] + -3.37831962f * r[138] - q * ny;
-  out_grad[151][2] = 11.3731186f * r[127] - q * nz;
-  q = lr * y[152];
-  out_grad[152][0] = -8.07572853f * r[129] + 3.90094749f * r[127] - q * nx;
-  out_grad[152][1] = -8.07572853f * r[135] + -3.90094749f * r[137] - q * ny;
-  out_grad[152][2] = 11.7953565f * r[128] - q * nz;
-  q = lr * y[153];
-  out_grad[153][0] = -7.55415233f * r[130] + 4.42325868f * r[128] - q * nx;
-  out_grad[153][1] = -7.55415233f * r[134] + -4.42325868f * r[136] - q * ny;
-  out_grad[153][2] = 12.1135928f * r[129] - q * nz;
-  q = lr * y[154];
-  out_grad[154][0] = -7.0325331f * r[131] + 4.94535355f * r[129] - q * nx;
-  out_grad[154][1] = -7.0325331f * r[133] + -4.94535355f * r[135] - q * ny;
-  out_grad[154][2] = 12.3358791f * r[130] - q * nz;
-  q = lr * y[155];
-  out_grad[155][0] = 5.46729406f * r[130] - q * nx;
-  out_grad[155][1] = -9.20774721f * r[132] + -5.46729406f * r[134] - q * ny;
-  out_grad[155][2] = 12.4673487f * r[131] - q * nz;
-  q = lr * y[156];
-  out_grad[156][0] = 8.46989554f * r[133] - q * nx;
-  out_grad[156][1] = 8.46989554f * r[131] - q * ny;
-  out_grad[156][2] = 12.5108648f * r[132] - q * nz;
-  q = lr * y[157];
-  out_grad[157][0] = -9.20774721f * r[132] + 5.46729406f * r[134] - q * nx;
-  out_grad[157][1] = 5.46729406f * r[130] - q * ny;
-  out_grad[157][2] = 12.4673487f * r[133] - q * nz;
-  q = lr * y[158];
-  out_grad[158][0] = -7.0325331f * r[133] + 4.94535355f * r[135] - q * nx;
-  out_grad[158][1] = 7.0325331f * r[131] + 4.94535355f * r[129] - q * ny;
-  out_grad[158][2] = 12.3358791f * r[134] - q * nz;
-  q = lr * y[159];
-  out_grad[159][0] = -7.55415233f * r[134] + 4.42325868f * r[136] - q * nx;
-  out_grad[159][1] = 7.55415233f * r[130] + 4.42325868f * r[128] - q * ny;
-  out_grad[159][2] = 12.1135928f * r[135] - q * nz;
-  q = lr * y[160];
-  out_grad[160][0] = -8.07572853f * r[135] + 3.90094749f * r[137] - q * nx;
-  out_grad[160][1] = 8.07572853f * r[129] + 3.90094749f * r[127] - q * ny;
-  out_grad[160][2] = 11.7953565f * r[136] - q * nz;
-  q = lr * y[161];
-  out_grad[161][0] = -8.59726954f * r[136] + 3.37831962f * r[138] - q * nx;
-  out_grad[161][1] = 8.59726954f * r[128] + 3.37831962f * r[126] - q * ny;
-  out_grad[161][2] = 11.3731186f * r[137] - q * nz;
-  q = lr * y[162];
-  out_grad[162][0] = -9.11878138f * r[137] + 2.8552012f * r[139] - q * nx;
-  out_grad[162][1] = 9.11878138f * r[127] + 2.8552012f * r[125] - q * ny;
-  out_grad[162][2] = 10.8347268f * r[138] - q * nz;
-  q = lr * y[163];
-  out_grad[163][0] = -9.6402688f * r[138] + 2.33126202f * r[140] - q * nx;
-  out_grad[163][1] = 9.6402688f * r[126] + 2.33126202f * r[124] - q * ny;
-  out_grad[163][2] = 10.1617356f * r[139] - q * nz;
-  q = lr * y[164];
-  out_grad[164][0] = -10.1617356f * r[139] + 1.8057878f * r[141] - q * nx;
-  out_grad[164][1] = 10.1617356f * r[125] + 1.8057878f * r[123] - q * ny;
-  out_grad[164][2] = 9.32504808f * r[140] - q * nz;
-  q = lr * y[165];
-  out_grad[165][0] = -10.6831847f * r[140] + 1.2768848f * r[142] - q * nx;
-  out_grad[165][1] = 10.6831847f * r[124] + 1.2768848f * r[122] - q * ny;
-  out_grad[165][2] = 8.27515927f * r[141] - q * nz;
-  q = lr * y[166];
-  out_grad[166][0] = -11.2046186f * r[141] + 0.737209781f * r[143] - q * nx;
-  out_grad[166][1] = 11.2046186f * r[123] + 0.737209781f * r[121] - q * ny;
-  out_grad[166][2] = 6.91564075f * r[142] - q * nz;
-  q = lr * y[167];
-  out_grad[167][0] = -11.7260394f * r[142] - q * nx;
-  out_grad[167][1] = 11.7260394f * r[122] - q * ny;
-  out_grad[167][2] = 5.0f * r[143] - q * nz;
-  q = lr * y[168];
-  out_grad[168][0] = -12.2474487f * r[143] - q * nx;
-  out_grad[168][1] = 12.2474487f * r[121] - q * ny;
-  out_grad[168][2] = -q * nz;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 14
-void shli_sh_grad_14(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                     out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[169];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 169; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-  lr = 2.0f * ir;
-  q = lr * y[4];
-  out_grad[4][0] = -2.23606798f * r[1] - q * nx;
-  out_grad[4][1] = -2.23606798f * r[3] - q * ny;
-  out_grad[4][2] = -q * nz;
-  q = lr * y[5];
-  out_grad[5][0] = -q * nx;
-  out_grad[5][1] = -2.23606798f * r[2] - q * ny;
-  out_grad[5][2] = 2.23606798f * r[1] - q * nz;
-  q = lr * y[6];
-  out_grad[6][0] = 1.29099445f * r[3] - q * nx;
-  out_grad[6][1] = 1.29099445f * r[1] - q * ny;
-  out_grad[6][2] = 2.5819889f * r[2] - q * nz;
-  q = lr * y[7];
-  out_grad[7][0] = -2.23606798f * r[2] - q * nx;
-  out_grad[7][1] = -q * ny;
-  out_grad[7][2] = 2.23606798f * r[3] - q * nz;
-  q = lr * y[8];
-  out_grad[8][0] = -2.23606798f * r[3] - q * nx;
-  out_grad[8][1] = 2.23606798f * r[1] - q * ny;
-  out_grad[8][2] = -q * nz;
-  lr = 3.0f * ir;
-  q = lr * y[9];
-  out_grad[9][0] = -3.24037035f * r[4] - q * nx;
-  out_grad[9][1] = -3.24037035f * r[8] - q * ny;
-  out_grad[9][2] = -q * nz;
-  q = lr * y[10];
-  out_grad[10][0] = -2.64575131f * r[5] - q * nx;
-  out_grad[10][1] = -2.64575131f * r[7] - q * ny;
-  out_grad[10][2] = 2.64575131f * r[4] - q * nz;
-  q = lr * y[11];
-  out_grad[11][0] = 0.836660027f * r[4] - q * nx;
-  out_grad[11][1] = -2.89827535f * r[6] + -0.836660027f * r[8] - q * ny;
-  out_grad[11][2] = 3.34664011f * r[5] - q * nz;
-  q = lr * y[12];
-  out_grad[12][0] = 2.04939015f * r[7] - q * nx;
-  out_grad[12][1] = 2.04939015f * r[5] - q * ny;
-  out_grad[12][2] = 3.54964787f * r[6] - q * nz;
-  q = lr * y[13];
-  out_grad[13][0] = -2.89827535f * r[6] + 0.836660027f * r[8] - q * nx;
-  out_grad[13][1] = 0.836660027f * r[4] - q * ny;
-  out_grad[13][2] = 3.34664011f * r[7] - q * nz;
-  q = lr * y[14];
-  out_grad[14][0] = -2.64575131f * r[7] - q * nx;
-  out_grad[14][1] = 2.64575131f * r[5] - q * ny;
-  out_grad[14][2] = 2.64575131f * r[8] - q * nz;
-  q = lr * y[15];
-  out_grad[15][0] = -3.24037035f * r[8] - q * nx;
-  out_grad[15][1] = 3.24037035f * r[4] - q * ny;
-  out_grad[15][2] = -q * nz;
-  lr = 4.0f * ir;
-  q = lr * y[16];
-  out_grad[16][0] = -4.24264069f * r[9] - q * nx;
-  out_grad[16][1] = -4.24264069f * r[15] - q * ny;
-  out_grad[16][2] = -q * nz;
-  q = lr * y[17];
-  out_grad[17][0] = -3.67423461f * r[10] - q * nx;
-  out_grad[17][1] = -3.67423461f * r[14] - q * ny;
-  out_grad[17][2] = 3.0f * r[9] - q * nz;
-  q = lr * y[18];
-  out_grad[18][0] = -3.10529502f * r[11] + 0.801783726f * r[9] - q * nx;
-  out_grad[18][1] = -3.10529502f * r[13] + -0.801783726f * r[15] - q * ny;
-  out_grad[18][2] = 3.92792202f * r[10] - q * nz;
-  q = lr * y[19];
-  out_grad[19][0] = 1.38873015f * r[10] - q * nx;
-  out_grad[19][1] = -3.58568583f * r[12] + -1.38873015f * r[14] - q * ny;
-  out_grad[19][2] = 4.39155033f * r[11] - q * nz;
-  q = lr * y[20];
-  out_grad[20][0] = 2.7774603f * r[13] - q * nx;
-  out_grad[20][1] = 2.7774603f * r[11] - q * ny;
-  out_grad[20][2] = 4.53557368f * r[12] - q * nz;
-  q = lr * y[21];
-  out_grad[21][0] = -3.58568583f * r[12] + 1.38873015f * r[14] - q * nx;
-  out_grad[21][1] = 1.38873015f * r[10] - q * ny;
-  out_grad[21][2] = 4.39155033f * r[13] - q * nz;
-  q = lr * y[22];
-  out_grad[22][0] = -3.10529502f * r[13] + 0.801783726f * r[15] - q * nx;
-  out_grad[22][1] = 3.10529502f * r[11] + 0.801783726f * r[9] - q * ny;
-  out_grad[22][2] = 3.92792202f * r[14] - q * nz;
-  q = lr * y[23];
-  out_grad[23][0] = -3.67423461f * r[14] - q * nx;
-  out_grad[23][1] = 3.67423461f * r[10] - q * ny;
-  out_grad[23][2] = 3.0f * r[15] - q * nz;
-  q = lr * y[24];
-  out_grad[24][0] = -4.24264069f * r[15] - q * nx;
-  out_grad[24][1] = 4.24264069f * r[9] - q * ny;
-  out_grad[24][2] = -q * nz;
-  lr = 5.0f * ir;
-  q = lr * y[25];
-  out_grad[25][0] = -5.24404424f * r[16] - q * nx;
-  out_grad[25][1] = -5.24404424f * r[24] - q * ny;
-  out_grad[25][2] = -q * nz;
-  q = lr * y[26];
-  out_grad[26][0] = -4.69041576f * r[17] - q * nx;
-  out_grad[26][1] = -4.69041576f * r[23] - q * ny;
-  out_grad[26][2] = 3.31662479f * r[16] - q * nz;
-  q = lr * y[27];
-  out_grad[27][0] = -4.13655788f * r[18] + 0.78173596f * r[16] - q * nx;
-  out_grad[27][1] = -4.13655788f * r[22] + -0.78173596f * r[24] - q * ny;
-  out_grad[27][2] = 4.42216639f * r[17] - q * nz;
-  q = lr * y[28];
-  out_grad[28][0] = -3.58236421f * r[19] + 1.3540064f * r[17] - q * nx;
-  out_grad[28][1] = -3.58236421f * r[21] + -1.3540064f * r[23] - q * ny;
-  out_grad[28][2] = 5.06622805f * r[18] - q * nz;
-  q = lr * y[29];
-  out_grad[29][0] = 1.91485422f * r[18] - q * nx;
-  out_grad[29][1] = -4.28174419f * r[20] + -1.91485422f * r[22] - q * ny;
-  out_grad[29][2] = 5.4160256f * r[19] - q * nz;
-  q = lr * y[30];
-  out_grad[30][0] = 3.49602949f * r[21] - q * nx;
-  out_grad[30][1] = 3.49602949f * r[19] - q * ny;
-  out_grad[30][2] = 5.52770798f * r[20] - q * nz;
-  q = lr * y[31];
-  out_grad[31][0] = -4.28174419f * r[20] + 1.91485422f * r[22] - q * nx;
-  out_grad[31][1] = 1.91485422f * r[18] - q * ny;
-  out_grad[31][2] = 5.4160256f * r[21] - q * nz;
-  q = lr * y[32];
-  out_grad[32][0] = -3.58236421f * r[21] + 1.3540064f * r[23] - q * nx;
-  out_grad[32][1] = 3.58236421f * r[19] + 1.3540064f * r[17] - q * ny;
-  out_grad[32][2] = 5.06622805f * r[22] - q * nz;
-  q = lr * y[33];
-  out_grad[33][0] = -4.13655788f * r[22] + 0.78173596f * r[24] - q * nx;
-  out_grad[33][1] = 4.13655788f * r[18] + 0.78173596f * r[16] - q * ny;
-  out_grad[33][2] = 4.42216639f * r[23] - q * nz;
-  q = lr * y[34];
-  out_grad[34][0] = -4.69041576f * r[23] - q * nx;
-  out_grad[34][1] = 4.69041576f * r[17] - q * ny;
-  out_grad[34][2] = 3.31662479f * r[24] - q * nz;
-  q = lr * y[35];
-  out_grad[35][0] = -5.24404424f * r[24] - q * nx;
-  out_grad[35][1] = 5.24404424f * r[16] - q * ny;
-  out_grad[35][2] = -q * nz;
-  lr = 6.0f * ir;
-  q = lr * y[36];
-  out_grad[36][0] = -6.244998f * r[25] - q * nx;
-  out_grad[36][1] = -6.244998f * r[35] - q * ny;
-  out_grad[36][2] = -q * nz;
-  q = lr * y[37];
-  out_grad[37][0] = -5.70087713f * r[26] - q * nx;
-  out_grad[37][1] = -5.70087713f * r[34] - q * ny;
-  out_grad[37][2] = 3.60555128f * r[25] - q * nz;
-  q = lr * y[38];
-  out_grad[38][0] = -5.15663738f * r[27] + 0.768706115f * r[25] - q * nx;
-  out_grad[38][1] = -5.15663738f * r[33] + -0.768706115f * r[35] - q * ny;
-  out_grad[38][2] = 4.86172435f * r[26] - q * nz;
-  q = lr * y[39];
-  out_grad[39][0] = -4.61223669f * r[28] + 1.33143805f * r[26] - q * nx;
-  out_grad[39][1] = -4.61223669f * r[32] + -1.33143805f * r[34] - q * ny;
-  out_grad[39][2] = 5.64881323f * r[27] - q * nz;
-  q = lr * y[40];
-  out_grad[40][0] = -4.06761042f * r[29] + 1.88293774f * r[27] - q * nx;
-  out_grad[40][1] = -4.06761042f * r[31] + -1.88293774f * r[33] - q * ny;
-  out_grad[40][2] = 6.14964892f * r[28] - q * nz;
-  q = lr * y[41];
-  out_grad[41][0] = 2.43086217f * r[28] - q * nx;
-  out_grad[41][1] = -4.981785f * r[30] + -2.43086217f * r[32] - q * ny;
-  out_grad[41][2] = 6.43145678f * r[29] - q * nz;
-  q = lr * y[42];
-  out_grad[42][0] = 4.21037679f * r[31] - q * nx;
-  out_grad[42][1] = 4.21037679f * r[29] - q * ny;
-  out_grad[42][2] = 6.52268768f * r[30] - q * nz;
-  q = lr * y[43];
-  out_grad[43][0] = -4.981785f * r[30] + 2.43086217f * r[32] - q * nx;
-  out_grad[43][1] = 2.43086217f * r[28] - q * ny;
-  out_grad[43][2] = 6.43145678f * r[31] - q * nz;
-  q = lr * y[44];
-  out_grad[44][0] = -4.06761042f * r[31] + 1.88293774f * r[33] - q * nx;
-  out_grad[44][1] = 4.06761042f * r[29] + 1.88293774f * r[27] - q * ny;
-  out_grad[44][2] = 6.14964892f * r[32] - q * nz;
-  q = lr * y[45];
-  out_grad[45][0] = -4.61223669f * r[32] + 1.33143805f * r[34] - q * nx;
-  out_grad[45][1] = 4.61223669f * r[28] + 1.33143805f * r[26] - q * ny;
-  out_grad[45][2] = 5.64881323f * r[33] - q * nz;
-  q = lr * y[46];
-  out_grad[46][0] = -5.15663738f * r[33] + 0.768706115f * r[35] - q * nx;
-  out_grad[46][1] = 5.15663738f * r[27] + 0.768706115f * r[25] - q * ny;
-  out_grad[46][2] = 4.86172435f * r[34] - q * nz;
-  q = lr * y[47];
-  out_grad[47][0] = -5.70087713f * r[34] - q * nx;
-  out_grad[47][1] = 5.70087713f * r[26] - q * ny;
-  out_grad[47][2] = 3.60555128f * r[35] - q * nz;
-  q = lr * y[48];
-  out_grad[48][0] = -6.244998f * r[35] - q * nx;
-  out_grad[48][1] = 6.244998f * r[25] - q * ny;
-  out_grad[48][2] = -q * nz;
-  lr = 7.0f * ir;
-  q = lr * y[49];
-  out_grad[49][0] = -7.24568837f * r[36] - q * nx;
-  out_grad[49][1] = -7.24568837f * r[48] - q * ny;
-  out_grad[49][2] = -q * nz;
-  q = lr * y[50];
-  out_grad[50][0] = -6.70820393f * r[37] - q * nx;
-  out_grad[50][1] = -6.70820393f * r[47] - q * ny;
-  out_grad[50][2] = 3.87298335f * r[36] - q * nz;
-  q = lr * y[51];
-  out_grad[51][0] = -6.17065013f * r[38] + 0.759554525f * r[36] - q * nx;
-  out_grad[51][1] = -6.17065013f * r[46] + -0.759554525f * r[48] - q * ny;
-  out_grad[51][2] = 5.26234812f * r[37] - q * nz;
-  q = lr * y[52];
-  out_grad[52][0] = -5.63300712f * r[39] + 1.31558703f * r[37] - q * nx;
-  out_grad[52][1] = -5.63300712f * r[45] + -1.31558703f * r[47] - q * ny;
-  out_grad[52][2] = 6.17065013f * r[38] - q * nz;
-  q = lr * y[53];
-  out_grad[53][0] = -5.09524665f * r[40] + 1.86052102f * r[38] - q * nx;
-  out_grad[53][1] = -5.09524665f * r[44] + -1.86052102f * r[46] - q * ny;
-  out_grad[53][2] = 6.7936622f * r[39] - q * nz;
-  q = lr * y[54];
-  out_grad[54][0] = -4.55732715f * r[41] + 2.40192231f * r[39] - q * nx;
-  out_grad[54][1] = -4.55732715f * r[43] + -2.40192231f * r[45] - q * ny;
-  out_grad[54][2] = 7.20576692f * r[40] - q * nz;
-  q = lr * y[55];
-  out_grad[55][0] = 2.94174203f * r[40] - q * nx;
-  out_grad[55][1] = -5.6839856f * r[42] + -2.94174203f * r[44] - q * ny;
-  out_grad[55][2] = 7.44208408f * r[41] - q * nz;
-  q = lr * y[56];
-  out_grad[56][0] = 4.92247592f * r[43] - q * nx;
-  out_grad[56][1] = 4.92247592f * r[41] - q * ny;
-  out_grad[56][2] = 7.51920618f * r[42] - q * nz;
-  q = lr * y[57];
-  out_grad[57][0] = -5.6839856f * r[42] + 2.94174203f * r[44] - q * nx;
-  out_grad[57][1] = 2.94174203f * r[40] - q * ny;
-  out_grad[57][2] = 7.44208408f * r[43] - q * nz;
-  q = lr * y[58];
-  out_grad[58][0] = -4.55732715f * r[43] + 2.40192231f * r[45] - q * nx;
-  out_grad[58][1] = 4.55732715f * r[41] + 2.40192231f * r[39] - q * ny;
-  out_grad[58][2] = 7.20576692f * r[44] - q * nz;
-  q = lr * y[59];
-  out_grad[59][0] = -5.09524665f * r[44] + 1.86052102f * r[46] - q * nx;
-  out_grad[59][1] = 5.09524665f * r[40] + 1.86052102f * r[38] - q * ny;
-  out_grad[59][2] = 6.7936622f * r[45] - q * nz;
-  q = lr * y[60];
-  out_grad[60][0] = -5.63300712f * r[45] + 1.31558703f * r[47] - q * nx;
-  out_grad[60][1] = 5.63300712f * r[39] + 1.31558703f * r[37] - q * ny;
-  out_grad[60][2] = 6.17065013f * r[46] - q * nz;
-  q = lr * y[61];
-  out_grad[61][0] = -6.17065013f * r[46] + 0.759554525f * r[48] - q * nx;
-  out_grad[61][1] = 6.17065013f * r[38] + 0.759554525f * r[36] - q * ny;
-  out_grad[61][2] = 5.26234812f * r[47] - q * nz;
-  q = lr * y[62];
-  out_grad[62][0] = -6.70820393f * r[47] - q * nx;
-  out_grad[62][1] = 6.70820393f * r[37] - q * ny;
-  out_grad[62][2] = 3.87298335f * r[48] - q * nz;
-  q = lr * y[63];
-  out_grad[63][0] = -7.24568837f * r[48] - q * nx;
-  out_grad[63][1] = 7.24568837f * r[36] - q * ny;
-  out_grad[63][2] = -q * nz;
-  lr = 8.0f * ir;
-  q = lr * y[64];
-  out_grad[64][0] = -8.24621125f * r[49] - q * nx;
-  out_grad[64][1] = -8.24621125f * r[63] - q * ny;
-  out_grad[64][2] = -q * nz;
-  q = lr * y[65];
-  out_grad[65][0] = -7.71362431f * r[50] - q * nx;
-  out_grad[65][1] = -7.71362431f * r[62] - q * ny;
-  out_grad[65][2] = 4.12310563f * r[49] - q * nz;
-  q = lr * y[66];
-  out_grad[66][0] = -7.18099343f * r[51] + 0.752772653f * r[49] - q * nx;
-  out_grad[66][1] = -7.18099343f * r[61] + -0.752772653f * r[63] - q * ny;
-  out_grad[66][2] = 5.63323471f * r[50] - q * nz;
-  q = lr * y[67];
-  out_grad[67][0] = -6.64830806f * r[52] + 1.30384048f * r[50] - q * nx;
-  out_grad[67][1] = -6.64830806f * r[60] + -1.30384048f * r[62] - q * ny;
-  out_grad[67][2] = 6.64830806f * r[51] - q * nz;
-  q = lr * y[68];
-  out_grad[68][0] = -6.11555394f * r[53] + 1.84390889f * r[51] - q * nx;
-  out_grad[68][1] = -6.11555394f * r[59] + -1.84390889f * r[61] - q * ny;
-  out_grad[68][2] = 7.37563557f * r[52] - q * nz;
-  q = lr * y[69];
-  out_grad[69][0] = -5.58271141f * r[54] + 2.38047614f * r[52] - q * nx;
-  out_grad[69][1] = -5.58271141f * r[58] + -2.38047614f * r[60] - q * ny;
-  out_grad[69][2] = 7.89514619f * r[53] - q * nz;
-  q = lr * y[70];
-  out_grad[70][0] = -5.04975247f * r[55] + 2.91547595f * r[53] - q * nx;
-  out_grad[70][1] = -5.04975247f * r[57] + -2.91547595f * r[59] - q * ny;
-  out_grad[70][2] = 8.24621125f * r[54] - q * nz;
-  q = lr * y[71];
-  out_grad[71][0] = 3.44963766f * r[54] - q * nx;
-  out_grad[71][1] = -6.38748777f * r[56] + -3.44963766f * r[58] - q * ny;
-  out_grad[71][2] = 8.44985207f * r[55] - q * nz;
-  q = lr * y[72];
-  out_grad[72][0] = 5.63323471f * r[57] - q * nx;
-  out_grad[72][1] = 5.63323471f * r[55] - q * ny;
-  out_grad[72][2] = 8.51665036f * r[56] - q * nz;
-  q = lr * y[73];
-  out_grad[73][0] = -6.38748777f * r[56] + 3.44963766f * r[58] - q * nx;
-  out_grad[73][1] = 3.44963766f * r[54] - q * ny;
-  out_grad[73][2] = 8.44985207f * r[57] - q * nz;
-  q = lr * y[74];
-  out_grad[74][0] = -5.04975247f * r[57] + 2.91547595f * r[59] - q * nx;
-  out_grad[74][1] = 5.04975247f * r[55] + 2.91547595f * r[53] - q * ny;
-  out_grad[74][2] = 8.24621125f * r[58] - q * nz;
-  q = lr * y[75];
-  out_grad[75][0] = -5.58271141f * r[58] + 2.38047614f * r[60] - q * nx;
-  out_grad[75][1] = 5.58271141f * r[54] + 2.38047614f * r[52] - q * ny;
-  out_grad[75][2] = 7.89514619f * r[59] - q * nz;
-  q = lr * y[76];
-  out_grad[76][0] = -6.11555394f * r[59] + 1.84390889f * r[61] - q * nx;
-  out_grad[76][1] = 6.11555394f * r[53] + 1.84390889f * r[51] - q * ny;
-  out_grad[76][2] = 7.37563557f * r[60] - q * nz;
-  q = lr * y[77];
-  out_grad[77][0] = -6.64830806f * r[60] + 1.30384048f * r[62] - q * nx;
-  out_grad[77][1] = 6.64830806f * r[52] + 1.30384048f * r[50] - q * ny;
-  out_grad[77][2] = 6.64830806f * r[61] - q * nz;
-  q = lr * y[78];
-  out_grad[78][0] = -7.18099343f * r[61] + 0.752772653f * r[63] - q * nx;
-  out_grad[78][1] = 7.18099343f * r[51] + 0.752772653f * r[49] - q * ny;
-  out_grad[78][2] = 5.63323471f * r[62] - q * nz;
-  q = lr * y[79];
-  out_grad[79][0] = -7.71362431f * r[62] - q * nx;
-  out_grad[79][1] = 7.71362431f * r[50] - q * ny;
-  out_grad[79][2] = 4.12310563f * r[63] - q * nz;
-  q = lr * y[80];
-  out_grad[80][0] = -8.24621125f * r[63] - q * nx;
-  out_grad[80][1] = 8.24621125f * r[49] - q * ny;
-  out_grad[80][2] = -q * nz;
-  lr = 9.0f * ir;
-  q = lr * y[81];
-  out_grad[81][0] = -9.246621f * r[64] - q * nx;
-  out_grad[81][1] = -9.246621f * r[80] - q * ny;
-  out_grad[81][2] = -q * nz;
-  q = lr * y[82];
-  out_grad[82][0] = -8.71779789f * r[65] - q * nx;
-  out_grad[82][1] = -8.71779789f * r[79] - q * ny;
-  out_grad[82][2] = 4.35889894f * r[64] - q * nz;
-  q = lr * y[83];
-  out_grad[83][0] = -8.1889452f * r[66] + 0.747545002f * r[64] - q * nx;
-  out_grad[83][1] = -8.1889452f * r[78] + -0.747545002f * r[80] - q * ny;
-  out_grad[83][2] = 5.98036001f * r[65] - q * nz;
-  q = lr * y[84];
-  out_grad[84][0] = -7.66005683f * r[67] + 1.29478592f * r[65] - q * nx;
-  out_grad[84][1] = -7.66005683f * r[77] + -1.29478592f * r[79] - q * ny;
-  out_grad[84][2] = 7.09183458f * r[66] - q * nz;
-  q = lr * y[85];
-  out_grad[85][0] = -7.13112482f * r[68] + 1.83110381f * r[66] - q * nx;
-  out_grad[85][1] = -7.13112482f * r[76] + -1.83110381f * r[78] - q * ny;
-  out_grad[85][2] = 7.91127267f * r[67] - q * nz;
-  q = lr * y[86];
-  out_grad[86][0] = -6.60213869f * r[69] + 2.36394486f * r[67] - q * nx;
-  out_grad[86][1] = -6.60213869f * r[75] + -2.36394486f * r[77] - q * ny;
-  out_grad[86][2] = 8.5233244f * r[68] - q * nz;
-  q = lr * y[87];
-  out_grad[87][0] = -6.0730843f * r[70] + 2.89522934f * r[68] - q * nx;
-  out_grad[87][1] = -6.0730843f * r[74] + -2.89522934f * r[76] - q * ny;
-  out_grad[87][2] = 8.97054002f * r[69] - q * nz;
-  q = lr * y[88];
-  out_grad[88][0] = -5.54394211f * r[71] + 3.42568156f * r[69] - q * nx;
-  out_grad[88][1] = -5.54394211f * r[73] + -3.42568156f * r[75] - q * ny;
-  out_grad[88][2] = 9.27678951f * r[70] - q * nz;
-  q = lr * y[89];
-  out_grad[89][0] = 3.95563634f * r[70] - q * nx;
-  out_grad[89][1] = -7.09183458f * r[72] + -3.95563634f * r[74] - q * ny;
-  out_grad[89][2] = 9.45577943f * r[71] - q * nz;
-  q = lr * y[90];
-  out_grad[90][0] = 6.34312968f * r[73] - q * nx;
-  out_grad[90][1] = 6.34312968f * r[71] - q * ny;
-  out_grad[90][2] = 9.51469452f * r[72] - q * nz;
-  q = lr * y[91];
-  out_grad[91][0] = -7.09183458f * r[72] + 3.95563634f * r[74] - q * nx;
-  out_grad[91][1] = 3.95563634f * r[70] - q * ny;
-  out_grad[91][2] = 9.45577943f * r[73] - q * nz;
-  q = lr * y[92];
-  out_grad[92][0] = -5.54394211f * r[73] + 3.42568156f * r[75] - q * nx;
-  out_grad[92][1] = 5.54394211f * r[71] + 3.42568156f * r[69] - q * ny;
-  out_grad[92][2] = 9.27678951f * r[74] - q * nz;
-  q = lr * y[93];
-  out_grad[93][0] = -6.0730843f * r[74] + 2.89522934f * r[76] - q * nx;
-  out_grad[93][1] = 6.0730843f * r[70] + 2.89522934f * r[68] - q * ny;
-  out_grad[93][2] = 8.97054002f * r[75] - q * nz;
-  q = lr * y[94];
-  out_grad[94][0] = -6.60213869f * r[75] + 2.36394486f * r[77] - q * nx;
-  out_grad[94][1] = 6.60213869f * r[69] + 2.36394486f * r[67] - q * ny;
-  out_grad[94][2] = 8.5233244f * r[76] - q * nz;
-  q = lr * y[95];
-  out_grad[95][0] = -7.13112482f * r[76] + 1.83110381f * r[78] - q * nx;
-  out_grad[95][1] = 7.13112482f * r[68] + 1.83110381f * r[66] - q * ny;
-  out_grad[95][2] = 7.91127267f * r[77] - q * nz;
-  q = lr * y[96];
-  out_grad[96][0] = -7.66005683f * r[77] + 1.29478592f * r[79] - q * nx;
-  out_grad[96][1] = 7.66005683f * r[67] + 1.29478592f * r[65] - q * ny;
-  out_grad[96][2] = 7.09183458f * r[78] - q * nz;
-  q = lr * y[97];
-  out_grad[97][0] = -8.1889452f * r[78] + 0.747545002f * r[80] - q * nx;
-  out_grad[97][1] = 8.1889452f * r[66] + 0.747545002f * r[64] - q * ny;
-  out_grad[97][2] = 5.98036001f * r[79] - q * nz;
-  q = lr * y[98];
-  out_grad[98][0] = -8.71779789f * r[79] - q * nx;
-  out_grad[98][1] = 8.71779789f * r[65] - q * ny;
-  out_grad[98][2] = 4.35889894f * r[80] - q * nz;
-  q = lr * y[99];
-  out_grad[99][0] = -9.246621f * r[80] - q * nx;
-  out_grad[99][1] = 9.246621f * r[64] - q * ny;
-  out_grad[99][2] = -q * nz;
-  lr = 10.0f * ir;
-  q = lr * y[100];
-  out_grad[100][0] = -10.2469508f * r[81] - q * nx;
-  out_grad[100][1] = -10.2469508f * r[99] - q * ny;
-  out_grad[100][2] = -q * nz;
-  q = lr * y[101];
-  out_grad[101][0] = -9.72111105f * r[82] - q * nx;
-  out_grad[101][1] = -9.72111105f * r[98] - q * ny;
-  out_grad[101][2] = 4.58257569f * r[81] - q * nz;
-  q = lr * y[102];
-  out_grad[102][0] = -9.19525049f * r[83] + 0.743391942f * r[81] - q * nx;
-  out_grad[102][1] = -9.19525049f * r[97] + -0.743391942f * r[99] - q * ny;
-  out_grad[102][2] = 6.3078898f * r[82] - q * nz;
-  q = lr * y[103];
-  out_grad[103][0] = -8.6693653f * r[84] + 1.28759261f * r[82] - q * nx;
-  out_grad[103][1] = -8.6693653f * r[96] + -1.28759261f * r[98] - q * ny;
-  out_grad[103][2] = 7.50789059f * r[83] - q * nz;
-  q = lr * y[104];
-  out_grad[104][0] = -8.14345071f * r[85] + 1.82093094f * r[83] - q * nx;
-  out_grad[104][1] = -8.14345071f * r[95] + -1.82093094f * r[97] - q * ny;
-  out_grad[104][2] = 8.41051973f * r[84] - q * nz;
-  q = lr * y[105];
-  out_grad[105][0] = -7.61750063f * r[86] + 2.35081173f * r[84] - q * nx;
-  out_grad[105][1] = -7.61750063f * r[94] + -2.35081173f * r[96] - q * ny;
-  out_grad[105][2] = 9.10465468f * r[85] - q * nz;
-  q = lr * y[106];
-  out_grad[106][0] = -7.09150715f * r[87] + 2.87914461f * r[85] - q * nx;
-  out_grad[106][1] = -7.09150715f * r[93] + -2.87914461f * r[95] - q * ny;
-  out_grad[106][2] = 9.63546082f * r[86] - q * nz;
-  q = lr * y[107];
-  out_grad[107][0] = -6.56545986f * r[88] + 3.40664984f * r[86] - q * nx;
-  out_grad[107][1] = -6.56545986f * r[92] + -3.40664984f * r[94] - q * ny;
-  out_grad[107][2] = 10.0289056f * r[87] - q * nz;
-  q = lr * y[108];
-  out_grad[108][0] = -6.03934468f * r[89] + 3.93366041f * r[87] - q * nx;
-  out_grad[108][1] = -6.03934468f * r[91] + -3.93366041f * r[93] - q * ny;
-  out_grad[108][2] = 10.3007409f * r[88] - q * nz;
-  q = lr * y[109];
-  out_grad[109][0] = 4.46035165f * r[88] - q * nx;
-  out_grad[109][1] = -7.79676046f * r[90] + -4.46035165f * r[92] - q * ny;
-  out_grad[109][2] = 10.4604518f * r[89] - q * nz;
-  q = lr * y[110];
-  out_grad[110][0] = 7.05243519f * r[91] - q * nx;
-  out_grad[110][1] = 7.05243519f * r[89] - q * ny;
-  out_grad[110][2] = 10.5131497f * r[90] - q * nz;
-  q = lr * y[111];
-  out_grad[111][0] = -7.79676046f * r[90] + 4.46035165f * r[92] - q * nx;
-  out_grad[111][1] = 4.46035165f * r[88] - q * ny;
-  out_grad[111][2] = 10.4604518f * r[91] - q * nz;
-  q = lr * y[112];
-  out_grad[112][0] = -6.03934468f * r[91] + 3.93366041f * r[93] - q * nx;
-  out_grad[112][1] = 6.03934468f * r[89] + 3.93366041f * r[87] - q * ny;
-  out_grad[112][2] = 10.3007409f * r[92] - q * nz;
-  q = lr * y[113];
-  out_grad[113][0] = -6.56545986f * r[92] + 3.40664984f * r[94] - q * nx;
-  out_grad[113][1] = 6.56545986f * r[88] + 3.40664984f * r[86] - q * ny;
-  out_grad[113][2] = 10.0289056f * r[93] - q * nz;
-  q = lr * y[114];
-  out_grad[114][0] = -7.09150715f * r[93] + 2.87914461f * r[95] - q * nx;
-  out_grad[114][1] = 7.09150715f * r[87] + 2.87914461f * r[85] - q * ny;
-  out_grad[114][2] = 9.63546082f * r[94] - q * nz;
-  q = lr * y[115];
-  out_grad[115][0] = -7.61750063f * r[94] + 2.35081173f * r[96] - q * nx;
-  out_grad[115][1] = 7.61750063f * r[86] + 2.35081173f * r[84] - q * ny;
-  out_grad[115][2] = 9.10465468f * r[95] - q * nz;
-  q = lr * y[116];
-  out_grad[116][0] = -8.14345071f * r[95] + 1.82093094f * r[97] - q * nx;
-  out_grad[116][1] = 8.14345071f * r[85] + 1.82093094f * r[83] - q * ny;
-  out_grad[116][2] = 8.41051973f * r[96] - q * nz;
-  q = lr * y[117];
-  out_grad[117][0] = -8.6693653f * r[96] + 1.28759261f * r[98] - q * nx;
-  out_grad[117][1] = 8.6693653f * r[84] + 1.28759261f * r[82] - q * ny;
-  out_grad[117][2] = 7.50789059f * r[97] - q * nz;
-  q = lr * y[118];
-  out_grad[118][0] = -9.19525049f * r[97] + 0.743391942f * r[99] - q * nx;
-  out_grad[118][1] = 9.19525049f * r[83] + 0.743391942f * r[81] - q * ny;
-  out_grad[118][2] = 6.3078898f * r[98] - q * nz;
-  q = lr * y[119];
-  out_grad[119][0] = -9.72111105f * r[98] - q * nx;
-  out_grad[119][1] = 9.72111105f * r[82] - q * ny;
-  out_grad[119][2] = 4.58257569f * r[99] - q * nz;
-  q = lr * y[120];
-  out_grad[120][0] = -10.2469508f * r[99] - q * nx;
-  out_grad[120][1] = 10.2469508f * r[81] - q * ny;
-  out_grad[120][2] = -q * nz;
-  lr = 11.0f * ir;
-  q = lr * y[121];
-  out_grad[121][0] = -11.2472219f * r[100] - q * nx;
-  out_grad[121][1] = -11.2472219f * r[120] - q * ny;
-  out_grad[121][2] = -q * nz;
-  q = lr * y[122];
-  out_grad[122][0] = -10.7238053f * r[101] - q * nx;
-  out_grad[122][1] = -10.7238053f * r[119] - q * ny;
-  out_grad[122][2] = 4.79583152f * r[100] - q * nz;
-  q = lr * y[123];
-  out_grad[123][0] = -10.2003735f * r[102] + 0.74001287f * r[100] - q * nx;
-  out_grad[123][1] = -10.2003735f * r[118] + -0.74001287f * r[120] - q * ny;
-  out_grad[123][2] = 6.61887633f * r[101] - q * nz;
-  q = lr * y[124];
-  out_grad[124][0] = -9.67692395f * r[103] + 1.28173989f * r[101] - q * nx;
-  out_grad[124][1] = -9.67692395f * r[117] + -1.28173989f * r[119] - q * ny;
-  out_grad[124][2] = 7.90117532f * r[102] - q * nz;
-  q = lr * y[125];
-  out_grad[125][0] = -9.15345368f * r[104] + 1.81265393f * r[102] - q * nx;
-  out_grad[125][1] = -9.15345368f * r[116] + -1.81265393f * r[118] - q * ny;
-  out_grad[125][2] = 8.88015444f * r[103] - q * nz;
-  q = lr * y[126];
-  out_grad[126][0] = -8.62995889f * r[105] + 2.34012617f * r[103] - q * nx;
-  out_grad[126][1] = -8.62995889f * r[115] + -2.34012617f * r[117] - q * ny;
-  out_grad[126][2] = 9.64858736f * r[104] - q * nz;
-  q = lr * y[127];
-  out_grad[127][0] = -8.10643483f * r[106] + 2.86605752f * r[104] - q * nx;
-  out_grad[127][1] = -8.10643483f * r[114] + -2.86605752f * r[116] - q * ny;
-  out_grad[127][2] = 10.2539191f * r[105] - q * nz;
-  q = lr * y[128];
-  out_grad[128][0] = -7.58287544f * r[107] + 3.39116499f * r[105] - q * nx;
-  out_grad[128][1] = -7.58287544f * r[113] + -3.39116499f * r[115] - q * ny;
-  out_grad[128][2] = 10.7238053f * r[106] - q * nz;
-  q = lr * y[129];
-  out_grad[129][0] = -7.05927286f * r[108] + 3.91578004f * r[106] - q * nx;
-  out_grad[129][1] = -7.05927286f * r[112] + -3.91578004f * r[114] - q * ny;
-  out_grad[129][2] = 11.0754985f * r[107] - q * nz;
-  q = lr * y[130];
-  out_grad[130][0] = -6.5356167f * r[109] + 4.44007722f * r[107] - q * nx;
-  out_grad[130][1] = -6.5356167f * r[111] + -4.44007722f * r[113] - q * ny;
-  out_grad[130][2] = 11.3200202f * r[108] - q * nz;
-  q = lr * y[131];
-  out_grad[131][0] = 4.96415724f * r[108] - q * nx;
-  out_grad[131][1] = -8.50210058f * r[110] + -4.96415724f * r[112] - q * ny;
-  out_grad[131][2] = 11.4642301f * r[109] - q * nz;
-  q = lr * y[132];
-  out_grad[132][0] = 7.76132046f * r[111] - q * nx;
-  out_grad[132][1] = 7.76132046f * r[109] - q * ny;
-  out_grad[132][2] = 11.5118986f * r[110] - q * nz;
-  q = lr * y[133];
-  out_grad[133][0] = -8.50210058f * r[110] + 4.96415724f * r[112] - q * nx;
-  out_grad[133][1] = 4.96415724f * r[108] - q * ny;
-  out_grad[133][2] = 11.4642301f * r[111] - q * nz;
-  q = lr * y[134];
-  out_grad[134][0] = -6.5356167f * r[111] + 4.44007722f * r[113] - q * nx;
-  out_grad[134][1] = 6.5356167f * r[109] + 4.44007722f * r[107] - q * ny;
-  out_grad[134][2] = 11.3200202f * r[112] - q * nz;
-  q = lr * y[135];
-  out_grad[135][0] = -7.05927286f * r[112] + 3.91578004f * r[114] - q * nx;
-  out_grad[135][1] = 7.05927286f * r[108] + 3.91578004f * r[106] - q * ny;
-  out_grad[135][2] = 11.0754985f * r[113] - q * nz;
-  q = lr * y[136];
-  out_grad[136][0] = -7.58287544f * r[113] + 3.39116499f * r[115] - q * nx;
-  out_grad[136][1] = 7.58287544f * r[107] + 3.39116499f * r[105] - q * ny;
-  out_grad[136][2] = 10.7238053f * r[114] - q * nz;
-  q = lr * y[137];
-  out_grad[137][0] = -8.10643483f * r[114] + 2.86605752f * r[116] - q * nx;
-  out_grad[137][1] = 8.10643483f * r[106] + 2.86605752f * r[104] - q * ny;
-  out_grad[137][2] = 10.2539191f * r[115] - q * nz;
-  q = lr * y[138];
-  out_grad[138][0] = -8.62995889f * r[115] + 2.34012617f * r[117] - q * nx;
-  out_grad[138][1] = 8.62995889f * r[105] + 2.34012617f * r[103] - q * ny;
-  out_grad[138][2] = 9.64858736f * r[116] - q * nz;
-  q = lr * y[139];
-  out_grad[139][0] = -9.15345368f * r[116] + 1.81265393f * r[118] - q * nx;
-  out_grad[139][1] = 9.15345368f * r[104] + 1.81265393f * r[102] - q * ny;
-  out_grad[139][2] = 8.88015444f * r[117] - q * nz;
-  q = lr * y[140];
-  out_grad[140][0] = -9.67692395f * r[117] + 1.28173989f * r[119] - q * nx;
-  out_grad[140][1] = 9.67692395f * r[103] + 1.28173989f * r[101] - q * ny;
-  out_grad[140][2] = 7.90117532f * r[118] - q * nz;
-  q = lr * y[141];
-  out_grad[141][0] = -10.2003735f * r[118] + 0.74001287f * r[120] - q * nx;
-  out_grad[141][1] = 10.2003735f * r[102] + 0.74001287f * r[100] - q * ny;
-  out_grad[141][2] = 6.61887633f * r[119] - q * nz;
-  q = lr * y[142];
-  out_grad[142][0] = -10.7238053f * r[119] - q * nx;
-  out_grad[142][1] = 10.7238053f * r[101] - q * ny;
-  out_grad[142][2] = 4.79583152f * r[120] - q * nz;
-  q = lr * y[143];
-  out_grad[143][0] = -11.2472219f * r[120] - q * nx;
-  out_grad[143][1] = 11.2472219f * r[100] - q * ny;
-  out_grad[143][2] = -q * nz;
-  lr = 12.0f * ir;
-  q = lr * y[144];
-  out_grad[144][0] = -12.2474487f * r[121] - q * nx;
-  out_grad[144][1] = -12.2474487f * r[143] - q * ny;
-  out_grad[144][2] = -q * nz;
-  q = lr * y[145];
-  out_grad[145][0] = -11.7260394f * r[122] - q * nx;
-  out_grad[145][1] = -11.7260394f * r[142] - q * ny;
-  out_grad[145][2] = 5.0f * r[121] - q * nz;
-  q = lr * y[146];
-  out_grad[146][0] = -11.2046186f * r[123] + 0.737209781f * r[121] - q * nx;
-  out_grad[146][1] = -11.2046186f * r[141] + -0.737209781f * r[143] - q * ny;
-  out_grad[146][2] = 6.91564075f * r[122] - q * nz;
-  q = lr * y[147];
-  out_grad[147][0] = -10.6831847f * r[124] + 1.2768848f * r[122] - q * nx;
-  out_grad[147][1] = -10.6831847f * r[140] + -1.2768848f * r[142] - q * ny;
-  out_grad[147][2] = 8.27515927f * r[123] - q * nz;
-  q = lr * y[148];
-  out_grad[148][0] = -10.1617356f * r[125] + 1.8057878f * r[123] - q * nx;
-  out_grad[148][1] = -10.1617356f * r[139] + -1.8057878f * r[141] - q * ny;
-  out_grad[148][2] = 9.32504808f * r[124] - q * nz;
-  q = lr * y[149];
-  out_grad[149][0] = -9.6402688f * r[126] + 2.33126202f * r[124] - q * nx;
-  out_grad[149][1] = -9.6402688f * r[138] + -2.33126202f * r[140] - q * ny;
-  out_grad[149][2] = 10.1617356f * r[125] - q * nz;
-  q = lr * y[150];
-  out_grad[150][0] = -9.11878138f * r[127] + 2.8552012f * r[125] - q * nx;
-  out_grad[150][1] = -9.11878138f * r[137] + -2.8552012f * r[139] - q * ny;
-  out_grad[150][2] = 10.8347268f * r[126] - q * nz;
-  q = lr * y[151];
-  out_grad[151][0] = -8.59726954f * r[128] + 3.37831962f * r[126] - q * nx;
-  out_grad[151][1] = -8.59726954f * r[136] + -3.37831962f * r[138] - q * ny;
-  out_grad[151][2] = 11.3731186f * r[127] - q * nz;
-  q = lr * y[152];
-  out_grad[152][0] = -8.07572853f * r[129] + 3.90094749f * r[127] - q * nx;
-  out_grad[152][1] = -8.07572853f * r[135] + -3.90094749f * r[137] - q * ny;
-  out_grad[152][2] = 11.7953565f * r[128] - q * nz;
-  q = lr * y[153];
-  out_grad[153][0] = -7.55415233f * r[130] + 4.42325868f * r[128] - q * nx;
-  out_grad[153][1] = -7.55415233f * r[134] + -4.42325868f * r[136] - q * ny;
-  out_grad[153][2] = 12.1135928f * r[129] - q * nz;
-  q = lr * y[154];
-  out_grad[154][0] = -7.0325331f * r[131] + 4.94535355f * r[129] - q * nx;
-  out_grad[154][1] = -7.0325331f * r[133] + -4.94535355f * r[135] - q * ny;
-  out_grad[154][2] = 12.3358791f * r[130] - q * nz;
-  q = lr * y[155];
-  out_grad[155][0] = 5.46729406f * r[130] - q * nx;
-  out_grad[155][1] = -9.20774721f * r[132] + -5.46729406f * r[134] - q * ny;
-  out_grad[155][2] = 12.4673487f * r[131] - q * nz;
-  q = lr * y[156];
-  out_grad[156][0] = 8.46989554f * r[133] - q * nx;
-  out_grad[156][1] = 8.46989554f * r[131] - q * ny;
-  out_grad[156][2] = 12.5108648f * r[132] - q * nz;
-  q = lr * y[157];
-  out_grad[157][0] = -9.20774721f * r[132] + 5.46729406f * r[134] - q * nx;
-  out_grad[157][1] = 5.46729406f * r[130] - q * ny;
-  out_grad[157][2] = 12.4673487f * r[133] - q * nz;
-  q = lr * y[158];
-  out_grad[158][0] = -7.0325331f * r[133] + 4.94535355f * r[135] - q * nx;
-  out_grad[158][1] = 7.0325331f * r[131] + 4.94535355f * r[129] - q * ny;
-  out_grad[158][2] = 12.3358791f * r[134] - q * nz;
-  q = lr * y[159];
-  out_grad[159][0] = -7.55415233f * r[134] + 4.42325868f * r[136] - q * nx;
-  out_grad[159][1] = 7.55415233f * r[130] + 4.42325868f * r[128] - q * ny;
-  out_grad[159][2] = 12.1135928f * r[135] - q * nz;
-  q = lr * y[160];
-  out_grad[160][0] = -8.07572853f * r[135] + 3.90094749f * r[137] - q * nx;
-  out_grad[160][1] = 8.07572853f * r[129] + 3.90094749f * r[127] - q * ny;
-  out_grad[160][2] = 11.7953565f * r[136] - q * nz;
-  q = lr * y[161];
-  out_grad[161][0] = -8.59726954f * r[136] + 3.37831962f * r[138] - q * nx;
-  out_grad[161][1] = 8.59726954f * r[128] + 3.37831962f * r[126] - q * ny;
-  out_grad[161][2] = 11.3731186f * r[137] - q * nz;
-  q = lr * y[162];
-  out_grad[162][0] = -9.11878138f * r[137] + 2.8552012f * r[139] - q * nx;
-  out_grad[162][1] = 9.11878138f * r[127] + 2.8552012f * r[125] - q * ny;
-  out_grad[162][2] = 10.8347268f * r[138] - q * nz;
-  q = lr * y[163];
-  out_grad[163][0] = -9.6402688f * r[138] + 2.33126202f * r[140] - q * nx;
-  out_grad[163][1] = 9.6402688f * r[126] + 2.33126202f * r[124] - q * ny;
-  out_grad[163][2] = 10.1617356f * r[139] - q * nz;
-  q = lr * y[164];
-  out_grad[164][0] = -10.1617356f * r[139] + 1.8057878f * r[141] - q * nx;
-  out_grad[164][1] = 10.1617356f * r[125] + 1.8057878f * r[123] - q * ny;
-  out_grad[164][2] = 9.32504808f * r[140] - q * nz;
-  q = lr * y[165];
-  out_grad[165][0] = -10.6831847f * r[140] + 1.2768848f * r[142] - q * nx;
-  out_grad[165][1] = 10.6831847f * r[124] + 1.2768848f * r[122] - q * ny;
-  out_grad[165][2] = 8.27515927f * r[141] - q * nz;
-  q = lr * y[166];
-  out_grad[166][0] = -11.2046186f * r[141] + 0.737209781f * r[143] - q * nx;
-  out_grad[166][1] = 11.2046186f * r[123] + 0.737209781f * r[121] - q * ny;
-  out_grad[166][2] = 6.91564075f * r[142] - q * nz;
-  q = lr * y[167];
-  out_grad[167][0] = -11.7260394f * r[142] - q * nx;
-  out_grad[167][1] = 11.7260394f * r[122] - q * ny;
-  out_grad[167][2] = 5.0f * r[143] - q * nz;
-  q = lr * y[168];
-  out_grad[168][0] = -12.2474487f * r[143] - q * nx;
-  out_grad[168][1] = 12.2474487f * r[121] - q * ny;
-  out_grad[168][2] = -q * nz;
-  lr = 13.0f * ir;
-  q = lr * y[169];
-  out_grad[169][0] = -13.2476413f * r[144] - q * nx;
-  out_grad[169][1] = -13.2476413f * r[168] - q * ny;
-  out_grad[169][2] = -q * nz;
-  q = lr * y[170];
-  out_grad[170][0] = -12.7279221f * r[145] - q * nx;
-  out_grad[170][1] = -12.7279221f * r[167] - q * ny;
-  out_grad[170][2] = 5.19615242f * r[144] - q * nz;
-  q = lr * y[171];
-  out_grad[171][0] = -12.208194f * r[146] + 0.734846923f * r[144] - q * nx;
-  out_grad[171][1] = -12.208194f * r[166] + -0.734846923f * r[168] - q * ny;
-  out_grad[171][2] = 7.2f * r[145] - q * nz;
-  q = lr * y[172];
-  out_grad[172][0] = -11.6884558f * r[147] + 1.27279221f * r[145] - q * nx;
-  out_grad[172][1] = -11.6884558f * r[165] + -1.27279221f * r[167] - q * ny;
-  out_grad[172][2] = 8.63249674f * r[146] - q * nz;
-  q = lr * y[173];
-  out_grad[173][0] = -11.1687063f * r[148] + 1.8f * r[146] - q * nx;
-  out_grad[173][1] = -11.1687063f * r[164] + -1.8f * r[166] - q * ny;
-  out_grad[173][2] = 9.74884609f * r[147] - q * nz;
-  q = lr * y[174];
-  out_grad[174][0] = -10.6489436f * r[149] + 2.32379001f * r[147] - q * nx;
-  out_grad[174][1] = -10.6489436f * r[163] + -2.32379001f * r[165] - q * ny;
-  out_grad[174][2] = 10.6489436f * r[148] - q * nz;
-  q = lr * y[175];
-  out_grad[175][0] = -10.1291658f * r[150] + 2.84604989f * r[148] - q * nx;
-  out_grad[175][1] = -10.1291658f * r[162] + -2.84604989f * r[164] - q * ny;
-  out_grad[175][2] = 11.3841996f * r[149] - q * nz;
-  q = lr * y[176];
-  out_grad[176][0] = -9.60937043f * r[151] + 3.36749165f * r[149] - q * nx;
-  out_grad[176][1] = -9.60937043f * r[161] + -3.36749165f * r[163] - q * ny;
-  out_grad[176][2] = 11.9849906f * r[150] - q * nz;
-  q = lr * y[177];
-  out_grad[177][0] = -9.08955444f * r[152] + 3.88844442f * r[150] - q * nx;
-  out_grad[177][1] = -9.08955444f * r[160] + -3.88844442f * r[162] - q * ny;
-  out_grad[177][2] = 12.4707658f * r[151] - q * nz;
-  q = lr * y[178];
-  out_grad[178][0] = -8.56971411f * r[153] + 4.40908154f * r[151] - q * nx;
-  out_grad[178][1] = -8.56971411f * r[159] + -4.40908154f * r[161] - q * ny;
-  out_grad[178][2] = 12.8545712f * r[152] - q * nz;
-  q = lr * y[179];
-  out_grad[179][0] = -8.04984472f * r[154] + 4.92950302f * r[152] - q * nx;
-  out_grad[179][1] = -8.04984472f * r[158] + -4.92950302f * r[160] - q * ny;
-  out_grad[179][2] = 13.1453414f * r[153] - q * nz;
-  q = lr * y[180];
-  out_grad[180][0] = -7.52994024f * r[155] + 5.44977064f * r[153] - q * nx;
-  out_grad[180][1] = -7.52994024f * r[157] + -5.44977064f * r[159] - q * ny;
-  out_grad[180][2] = 13.3491573f * r[154] - q * nz;
-  q = lr * y[181];
-  out_grad[181][0] = 5.96992462f * r[154] - q * nx;
-  out_grad[181][1] = -9.91362699f * r[156] + -5.96992462f * r[158] - q * ny;
-  out_grad[181][2] = 13.4699666f * r[155] - q * nz;
-  q = lr * y[182];
-  out_grad[182][0] = 9.17823512f * r[157] - q * nx;
-  out_grad[182][1] = 9.17823512f * r[155] - q * ny;
-  out_grad[182][2] = 13.5099963f * r[156] - q * nz;
-  q = lr * y[183];
-  out_grad[183][0] = -9.91362699f * r[156] + 5.96992462f * r[158] - q * nx;
-  out_grad[183][1] = 5.96992462f * r[154] - q * ny;
-  out_grad[183][2] = 13.4699666f * r[157] - q * nz;
-  q = lr * y[184];
-  out_grad[184][0] = -7.52994024f * r[157] + 5.44977064f * r[159] - q * nx;
-  out_grad[184][1] = 7.52994024f * r[155] + 5.44977064f * r[153] - q * ny;
-  out_grad[184][2] = 13.3491573f * r[158] - q * nz;
-  q = lr * y[185];
-  out_grad[185][0] = -8.04984472f * r[158] + 4.92950302f * r[160] - q * nx;
-  out_grad[185][1] = 8.04984472f * r[154] + 4.92950302f * r[152] - q * ny;
-  out_grad[185][2] = 13.1453414f * r[159] - q * nz;
-  q = lr * y[186];
-  out_grad[186][0] = -8.56971411f * r[159] + 4.40908154f * r[161] - q * nx;
-  out_grad[186][1] = 8.56971411f * r[153] + 4.40908154f * r[151] - q * ny;
-  out_grad[186][2] = 12.8545712f * r[160] - q * nz;
-  q = lr * y[187];
-  out_grad[187][0] = -9.08955444f * r[160] + 3.88844442f * r[162] - q * nx;
-  out_grad[187][1] = 9.08955444f * r[152] + 3.88844442f * r[150] - q * ny;
-  out_grad[187][2] = 12.4707658f * r[161] - q * nz;
-  q = lr * y[188];
-  out_grad[188][0] = -9.60937043f * r[161] + 3.36749165f * r[163] - q * nx;
-  out_grad[188][1] = 9.60937043f * r[151] + 3.36749165f * r[149] - q * ny;
-  out_grad[188][2] = 11.9849906f * r[162] - q * nz;
-  q = lr * y[189];
-  out_grad[189][0] = -10.1291658f * r[162] + 2.84604989f * r[164] - q * nx;
-  out_grad[189][1] = 10.1291658f * r[150] + 2.84604989f * r[148] - q * ny;
-  out_grad[189][2] = 11.3841996f * r[163] - q * nz;
-  q = lr * y[190];
-  out_grad[190][0] = -10.6489436f * r[163] + 2.32379001f * r[165] - q * nx;
-  out_grad[190][1] = 10.6489436f * r[149] + 2.32379001f * r[147] - q * ny;
-  out_grad[190][2] = 10.6489436f * r[164] - q * nz;
-  q = lr * y[191];
-  out_grad[191][0] = -11.1687063f * r[164] + 1.8f * r[166] - q * nx;
-  out_grad[191][1] = 11.1687063f * r[148] + 1.8f * r[146] - q * ny;
-  out_grad[191][2] = 9.74884609f * r[165] - q * nz;
-  q = lr * y[192];
-  out_grad[192][0] = -11.6884558f * r[165] + 1.27279221f * r[167] - q * nx;
-  out_grad[192][1] = 11.6884558f * r[147] + 1.27279221f * r[145] - q * ny;
-  out_grad[192][2] = 8.63249674f * r[166] - q * nz;
-  q = lr * y[193];
-  out_grad[193][0] = -12.208194f * r[166] + 0.734846923f * r[168] - q * nx;
-  out_grad[193][1] = 12.208194f * r[146] + 0.734846923f * r[144] - q * ny;
-  out_grad[193][2] = 7.2f * r[167] - q * nz;
-  q = lr * y[194];
-  out_grad[194][0] = -12.7279221f * r[167] - q * nx;
-  out_grad[194][1] = 12.7279221f * r[145] - q * ny;
-  out_grad[194][2] = 5.19615242f * r[168] - q * nz;
-  q = lr * y[195];
-  out_grad[195][0] = -13.2476413f * r[168] - q * nx;
-  out_grad[195][1] = 13.2476413f * r[144] - q * ny;
-  out_grad[195][2] = -q * nz;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 15
-void shli_sh_grad_15(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                     out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[196];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 196; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-  lr = 2.0f * ir;
-  q = lr * y[4];
-  out_grad[4][0] = -2.23606798f * r[1] - q * nx;
-  out_grad[4][1] = -2.23606798f * r[3] - q * ny;
-  out_grad[4][2] = -q * nz;
-  q = lr * y[5];
-  out_grad[5][0] = -q * nx;
-  out_grad[5][1] = -2.23606798f * r[2] - q * ny;
-  out_grad[5][2] = 2.23606798f * r[1] - q * nz;
-  q = lr * y[6];
-  out_grad[6][0] = 1.29099445f * r[3] - q * nx;
-  out_grad[6][1] = 1.29099445f * r[1] - q * ny;
-  out_grad[6][2] = 2.5819889f * r[2] - q * nz;
-  q = lr * y[7];
-  out_grad[7][0] = -2.23606798f * r[2] - q * nx;
-  out_grad[7][1] = -q * ny;
-  out_grad[7][2] = 2.23606798f * r[3] - q * nz;
-  q = lr * y[8];
-  out_grad[8][0] = -2.23606798f * r[3] - q * nx;
-  out_grad[8][1] = 2.23606798f * r[1] - q * ny;
-  out_grad[8][2] = -q * nz;
-  lr = 3.0f * ir;
-  q = lr * y[9];
-  out_grad[9][0] = -3.24037035f * r[4] - q * nx;
-  out_grad[9][1] = -3.24037035f * r[8] - q * ny;
-  out_grad[9][2] = -q * nz;
-  q = lr * y[10];
-  out_grad[10][0] = -2.64575131f * r[5] - q * nx;
-  out_grad[10][1] = -2.64575131f * r[7] - q * ny;
-  out_grad[10][2] = 2.64575131f * r[4] - q * nz;
-  q = lr * y[11];
-  out_grad[11][0] = 0.836660027f * r[4] - q * nx;
-  out_grad[11][1] = -2.89827535f * r[6] + -0.836660027f * r[8] - q * ny;
-  out_grad[11][2] = 3.34664011f * r[5] - q * nz;
-  q = lr * y[12];
-  out_grad[12][0] = 2.04939015f * r[7] - q * nx;
-  out_grad[12][1] = 2.04939015f * r[5] - q * ny;
-  out_grad[12][2] = 3.54964787f * r[6] - q * nz;
-  q = lr * y[13];
-  out_grad[13][0] = -2.89827535f * r[6] + 0.836660027f * r[8] - q * nx;
-  out_grad[13][1] = 0.836660027f * r[4] - q * ny;
-  out_grad[13][2] = 3.34664011f * r[7] - q * nz;
-  q = lr * y[14];
-  out_grad[14][0] = -2.64575131f * r[7] - q * nx;
-  out_grad[14][1] = 2.64575131f * r[5] - q * ny;
-  out_grad[14][2] = 2.64575131f * r[8] - q * nz;
-  q = lr * y[15];
-  out_grad[15][0] = -3.24037035f * r[8] - q * nx;
-  out_grad[15][1] = 3.24037035f * r[4] - q * ny;
-  out_grad[15][2] = -q * nz;
-  lr = 4.0f * ir;
-  q = lr * y[16];
-  out_grad[16][0] = -4.24264069f * r[9] - q * nx;
-  out_grad[16][1] = -4.24264069f * r[15] - q * ny;
-  out_grad[16][2] = -q * nz;
-  q = lr * y[17];
-  out_grad[17][0] = -3.67423461f * r[10] - q * nx;
-  out_grad[17][1] = -3.67423461f * r[14] - q * ny;
-  out_grad[17][2] = 3.0f * r[9] - q * nz;
-  q = lr * y[18];
-  out_grad[18][0] = -3.10529502f * r[11] + 0.801783726f * r[9] - q * nx;
-  out_grad[18][1] = -3.10529502f * r[13] + -0.801783726f * r[15] - q * ny;
-  out_grad[18][2] = 3.92792202f * r[10] - q * nz;
-  q = lr * y[19];
-  out_grad[19][0] = 1.38873015f * r[10] - q * nx;
-  out_grad[19][1] = -3.58568583f * r[12] + -1.38873015f * r[14] - q * ny;
-  out_grad[19][2] = 4.39155033f * r[11] - q * nz;
-  q = lr * y[20];
-  out_grad[20][0] = 2.7774603f * r[13] - q * nx;
-  out_grad[20][1] = 2.7774603f * r[11] - q * ny;
-  out_grad[20][2] = 4.53557368f * r[12] - q * nz;
-  q = lr * y[21];
-  out_grad[21][0] = -3.58568583f * r[12] + 1.38873015f * r[14] - q * nx;
-  out_grad[21][1] = 1.38873015f * r[10] - q * ny;
-  out_grad[21][2] = 4.39155033f * r[13] - q * nz;
-  q = lr * y[22];
-  out_grad[22][0] = -3.10529502f * r[13] + 0.801783726f * r[15] - q * nx;
-  out_grad[22][1] = 3.10529502f * r[11] + 0.801783726f * r[9] - q * ny;
-  out_grad[22][2] = 3.92792202f * r[14] - q * nz;
-  q = lr * y[23];
-  out_grad[23][0] = -3.67423461f * r[14] - q * nx;
-  out_grad[23][1] = 3.67423461f * r[10] - q * ny;
-  out_grad[23][2] = 3.0f * r[15] - q * nz;
-  q = lr * y[24];
-  out_grad[24][0] = -4.24264069f * r[15] - q * nx;
-  out_grad[24][1] = 4.24264069f * r[9] - q * ny;
-  out_grad[24][2] = -q * nz;
-  lr = 5.0f * ir;
-  q = lr * y[25];
-  out_grad[25][0] = -5.24404424f * r[16] - q * nx;
-  out_grad[25][1] = -5.24404424f * r[24] - q * ny;
-  out_grad[25][2] = -q * nz;
-  q = lr * y[26];
-  out_grad[26][0] = -4.69041576f * r[17] - q * nx;
-  out_grad[26][1] = -4.69041576f * r[23] - q * ny;
-  out_grad[26][2] = 3.31662479f * r[16] - q * nz;
-  q = lr * y[27];
-  out_grad[27][0] = -4.13655788f * r[18] + 0.78173596f * r[16] - q * nx;
-  out_grad[27][1] = -4.13655788f * r[22] + -0.78173596f * r[24] - q * ny;
-  out_grad[27][2] = 4.42216639f * r[17] - q * nz;
-  q = lr * y[28];
-  out_grad[28][0] = -3.58236421f * r[19] + 1.3540064f * r[17] - q * nx;
-  out_grad[28][1] = -3.58236421f * r[21] + -1.3540064f * r[23] - q * ny;
-  out_grad[28][2] = 5.06622805f * r[18] - q * nz;
-  q = lr * y[29];
-  out_grad[29][0] = 1.91485422f * r[18] - q * nx;
-  out_grad[29][1] = -4.28174419f * r[20] + -1.91485422f * r[22] - q * ny;
-  out_grad[29][2] = 5.4160256f * r[19] - q * nz;
-  q = lr * y[30];
-  out_grad[30][0] = 3.49602949f * r[21] - q * nx;
-  out_grad[30][1] = 3.49602949f * r[19] - q * ny;
-  out_grad[30][2] = 5.52770798f * r[20] - q * nz;
-  q = lr * y[31];
-  out_grad[31][0] = -4.28174419f * r[20] + 1.91485422f * r[22] - q * nx;
-  out_grad[31][1] = 1.91485422f * r[18] - q * ny;
-  out_grad[31][2] = 5.4160256f * r[21] - q * nz;
-  q = lr * y[32];
-  out_grad[32][0] = -3.58236421f * r[21] + 1.3540064f * r[23] - q * nx;
-  out_grad[32][1] = 3.58236421f * r[19] + 1.3540064f * r[17] - q * ny;
-  out_grad[32][2] = 5.06622805f * r[22] - q * nz;
-  q = lr * y[33];
-  out_grad[33][0] = -4.13655788f * r[22] + 0.78173596f * r[24] - q * nx;
-  out_grad[33][1] = 4.13655788f * r[18] + 0.78173596f * r[16] - q * ny;
-  out_grad[33][2] = 4.42216639f * r[23] - q * nz;
-  q = lr * y[34];
-  out_grad[34][0] = -4.69041576f * r[23] - q * nx;
-  out_grad[34][1] = 4.69041576f * r[17] - q * ny;
-  out_grad[34][2] = 3.31662479f * r[24] - q * nz;
-  q = lr * y[35];
-  out_grad[35][0] = -5.24404424f * r[24] - q * nx;
-  out_grad[35][1] = 5.24404424f * r[16] - q * ny;
-  out_grad[35][2] = -q * nz;
-  lr = 6.0f * ir;
-  q = lr * y[36];
-  out_grad[36][0] = -6.244998f * r[25] - q * nx;
-  out_grad[36][1] = -6.244998f * r[35] - q * ny;
-  out_grad[36][2] = -q * nz;
-  q = lr * y[37];
-  out_grad[37][0] = -5.70087713f * r[26] - q * nx;
-  out_grad[37][1] = -5.70087713f * r[34] - q * ny;
-  out_grad[37][2] = 3.60555128f * r[25] - q * nz;
-  q = lr * y[38];
-  out_grad[38][0] = -5.15663738f * r[27] + 0.768706115f * r[25] - q * nx;
-  out_grad[38][1] = -5.15663738f * r[33] + -0.768706115f * r[35] - q * ny;
-  out_grad[38][2] = 4.86172435f * r[26] - q * nz;
-  q = lr * y[39];
-  out_grad[39][0] = -4.61223669f * r[28] + 1.33143805f * r[26] - q * nx;
-  out_grad[39][1] = -4.61223669f * r[32] + -1.33143805f * r[34] - q * ny;
-  out_grad[39][2] = 5.64881323f * r[27] - q * nz;
-  q = lr * y[40];
-  out_grad[40][0] = -4.06761042f * r[29] + 1.88293774f * r[27] - q * nx;
-  out_grad[40][1] = -4.06761042f * r[31] + -1.88293774f * r[33] - q * ny;
-  out_grad[40][2] = 6.14964892f * r[28] - q * nz;
-  q = lr * y[41];
-  out_grad[41][0] = 2.43086217f * r[28] - q * nx;
-  out_grad[41][1] = -4.981785f * r[30] + -2.43086217f * r[32] - q * ny;
-  out_grad[41][2] = 6.43145678f * r[29] - q * nz;
-  q = lr * y[42];
-  out_grad[42][0] = 4.21037679f * r[31] - q * nx;
-  out_grad[42][1] = 4.21037679f * r[29] - q * ny;
-  out_grad[42][2] = 6.52268768f * r[30] - q * nz;
-  q = lr * y[43];
-  out_grad[43][0] = -4.981785f * r[30] + 2.43086217f * r[32] - q * nx;
-  out_grad[43][1] = 2.43086217f * r[28] - q * ny;
-  out_grad[43][2] = 6.43145678f * r[31] - q * nz;
-  q = lr * y[44];
-  out_grad[44][0] = -4.06761042f * r[31] + 1.88293774f * r[33] - q * nx;
-  out_grad[44][1] = 4.06761042f * r[29] + 1.88293774f * r[27] - q * ny;
-  out_grad[44][2] = 6.14964892f * r[32] - q * nz;
-  q = lr * y[45];
-  out_grad[45][0] = -4.61223669f * r[32] + 1.33143805f * r[34] - q * nx;
-  out_grad[45][1] = 4.61223669f * r[28] + 1.33143805f * r[26] - q * ny;
-  out_grad[45][2] = 5.64881323f * r[33] - q * nz;
-  q = lr * y[46];
-  out_grad[46][0] = -5.15663738f * r[33] + 0.768706115f * r[35] - q * nx;
-  out_grad[46][1] = 5.15663738f * r[27] + 0.768706115f * r[25] - q * ny;
-  out_grad[46][2] = 4.86172435f * r[34] - q * nz;
-  q = lr * y[47];
-  out_grad[47][0] = -5.70087713f * r[34] - q * nx;
-  out_grad[47][1] = 5.70087713f * r[26] - q * ny;
-  out_grad[47][2] = 3.60555128f * r[35] - q * nz;
-  q = lr * y[48];
-  out_grad[48][0] = -6.244998f * r[35] - q * nx;
-  out_grad[48][1] = 6.244998f * r[25] - q * ny;
-  out_grad[48][2] = -q * nz;
-  lr = 7.0f * ir;
-  q = lr * y[49];
-  out_grad[49][0] = -7.24568837f * r[36] - q * nx;
-  out_grad[49][1] = -7.24568837f * r[48] - q * ny;
-  out_grad[49][2] = -q * nz;
-  q = lr * y[50];
-  out_grad[50][0] = -6.70820393f * r[37] - q * nx;
-  out_grad[50][1] = -6.70820393f * r[47] - q * ny;
-  out_grad[50][2] = 3.87298335f * r[36] - q * nz;
-  q = lr * y[51];
-  out_grad[51][0] = -6.17065013f * r[38] + 0.759554525f * r[36] - q * nx;
-  out_grad[51][1] = -6.17065013f * r[46] + -0.759554525f * r[48] - q * ny;
-  out_grad[51][2] = 5.26234812f * r[37] - q * nz;
-  q = lr * y[52];
-  out_grad[52][0] = -5.63300712f * r[39] + 1.31558703f * r[37] - q * nx;
-  out_grad[52][1] = -5.63300712f * r[45] + -1.31558703f * r[47] - q * ny;
-  out_grad[52][2] = 6.17065013f * r[38] - q * nz;
-  q = lr * y[53];
-  out_grad[53][0] = -5.09524665f * r[40] + 1.86052102f * r[38] - q * nx;
-  out_grad[53][1] = -5.09524665f * r[44] + -1.86052102f * r[46] - q * ny;
-  out_grad[53][2] = 6.7936622f * r[39] - q * nz;
-  q = lr * y[54];
-  out_grad[54][0] = -4.55732715f * r[41] + 2.40192231f * r[39] - q * nx;
-  out_grad[54][1] = -4.55732715f * r[43] + -2.40192231f * r[45] - q * ny;
-  out_grad[54][2] = 7.20576692f * r[40] - q * nz;
-  q = lr * y[55];
-  out_grad[55][0] = 2.94174203f * r[40] - q * nx;
-  out_grad[55][1] = -5.6839856f * r[42] + -2.94174203f * r[44] - q * ny;
-  out_grad[55][2] = 7.44208408f * r[41] - q * nz;
-  q = lr * y[56];
-  out_grad[56][0] = 4.92247592f * r[43] - q * nx;
-  out_grad[56][1] = 4.92247592f * r[41] - q * ny;
-  out_grad[56][2] = 7.51920618f * r[42] - q * nz;
-  q = lr * y[57];
-  out_grad[57][0] = -5.6839856f * r[42] + 2.94174203f * r[44] - q * nx;
-  out_grad[57][1] = 2.94174203f * r[40] - q * ny;
-  out_grad[57][2] = 7.44208408f * r[43] - q * nz;
-  q = lr * y[58];
-  out_grad[58][0] = -4.55732715f * r[43] + 2.40192231f * r[45] - q * nx;
-  out_grad[58][1] = 4.55732715f * r[41] + 2.40192231f * r[39] - q * ny;
-  out_grad[58][2] = 7.20576692f * r[44] - q * nz;
-  q = lr * y[59];
-  out_grad[59][0] = -5.09524665f * r[44] + 1.86052102f * r[46] - q * nx;
-  out_grad[59][1] = 5.09524665f * r[40] + 1.86052102f * r[38] - q * ny;
-  out_grad[59][2] = 6.7936622f * r[45] - q * nz;
-  q = lr * y[60];
-  out_grad[60][0] = -5.63300712f * r[45] + 1.31558703f * r[47] - q * nx;
-  out_grad[60][1] = 5.63300712f * r[39] + 1.31558703f * r[37] - q * ny;
-  out_grad[60][2] = 6.17065013f * r[46] - q * nz;
-  q = lr * y[61];
-  out_grad[61][0] = -6.17065013f * r[46] + 0.759554525f * r[48] - q * nx;
-  out_grad[61][1] = 6.17065013f * r[38] + 0.759554525f * r[36] - q * ny;
-  out_grad[61][2] = 5.26234812f * r[47] - q * nz;
-  q = lr * y[62];
-  out_grad[62][0] = -6.70820393f * r[47] - q * nx;
-  out_grad[62][1] = 6.70820393f * r[37] - q * ny;
-  out_grad[62][2] = 3.87298335f * r[48] - q * nz;
-  q = lr * y[63];
-  out_grad[63][0] = -7.24568837f * r[48] - q * nx;
-  out_grad[63][1] = 7.24568837f * r[36] - q * ny;
-  out_grad[63][2] = -q * nz;
-  lr = 8.0f * ir;
-  q = lr * y[64];
-  out_grad[64][0] = -8.24621125f * r[49] - q * nx;
-  out_grad[64][1] = -8.24621125f * r[63] - q * ny;
-  out_grad[64][2] = -q * nz;
-  q = lr * y[65];
-  out_grad[65][0] = -7.71362431f * r[50] - q * nx;
-  out_grad[65][1] = -7.71362431f * r[62] - q * ny;
-  out_grad[65][2] = 4.12310563f * r[49] - q * nz;
-  q = lr * y[66];
-  out_grad[66][0] = -7.18099343f * r[51] + 0.752772653f * r[49] - q * nx;
-  out_grad[66][1] = -7.18099343f * r[61] + -0.752772653f * r[63] - q * ny;
-  out_grad[66][2] = 5.63323471f * r[50] - q * nz;
-  q = lr * y[67];
-  out_grad[67][0] = -6.64830806f * r[52] + 1.30384048f * r[50] - q * nx;
-  out_grad[67][1] = -6.64830806f * r[60] + -1.30384048f * r[62] - q * ny;
-  out_grad[67][2] = 6.64830806f * r[51] - q * nz;
-  q = lr * y[68];
-  out_grad[68][0] = -6.11555394f * r[53] + 1.84390889f * r[51] - q * nx;
-  out_grad[68][1] = -6.11555394f * r[59] + -1.84390889f * r[61] - q * ny;
-  out_grad[68][2] = 7.37563557f * r[52] - q * nz;
-  q = lr * y[69];
-  out_grad[69][0] = -5.58271141f * r[54] + 2.38047614f * r[52] - q * nx;
-  out_grad[69][1] = -5.58271141f * r[58] + -2.38047614f * r[60] - q * ny;
-  out_grad[69][2] = 7.89514619f * r[53] - q * nz;
-  q = lr * y[70];
-  out_grad[70][0] = -5.04975247f * r[55] + 2.91547595f * r[53] - q * nx;
-  out_grad[70][1] = -5.04975247f * r[57] + -2.91547595f * r[59] - q * ny;
-  out_grad[70][2] = 8.24621125f * r[54] - q * nz;
-  q = lr * y[71];
-  out_grad[71][0] = 3.44963766f * r[54] - q * nx;
-  out_grad[71][1] = -6.38748777f * r[56] + -3.44963766f * r[58] - q * ny;
-  out_grad[71][2] = 8.44985207f * r[55] - q * nz;
-  q = lr * y[72];
-  out_grad[72][0] = 5.63323471f * r[57] - q * nx;
-  out_grad[72][1] = 5.63323471f * r[55] - q * ny;
-  out_grad[72][2] = 8.51665036f * r[56] - q * nz;
-  q = lr * y[73];
-  out_grad[73][0] = -6.38748777f * r[56] + 3.44963766f * r[58] - q * nx;
-  out_grad[73][1] = 3.44963766f * r[54] - q * ny;
-  out_grad[73][2] = 8.44985207f * r[57] - q * nz;
-  q = lr * y[74];
-  out_grad[74][0] = -5.04975247f * r[57] + 2.91547595f * r[59] - q * nx;
-  out_grad[74][1] = 5.04975247f * r[55] + 2.91547595f * r[53] - q * ny;
-  out_grad[74][2] = 8.24621125f * r[58] - q * nz;
-  q = lr * y[75];
-  out_grad[75][0] = -5.58271141f * r[58] + 2.38047614f * r[60] - q * nx;
-  out_grad[75][1] = 5.58271141f * r[54] + 2.38047614f * r[52] - q * ny;
-  out_grad[75][2] = 7.89514619f * r[59] - q * nz;
-  q = lr * y[76];
-  out_grad[76][0] = -6.11555394f * r[59] + 1.84390889f * r[61] - q * nx;
-  out_grad[76][1] = 6.11555394f * r[53] + 1.84390889f * r[51] - q * ny;
-  out_grad[76][2] = 7.37563557f * r[60] - q * nz;
-  q = lr * y[77];
-  out_grad[77][0] = -6.64830806f * r[60] + 1.30384048f * r[62] - q * nx;
-  out_grad[77][1] = 6.64830806f * r[52] + 1.30384048f * r[50] - q * ny;
-  out_grad[77][2] = 6.64830806f * r[61] - q * nz;
-  q = lr * y[78];
-  out_grad[78][0] = -7.18099343f * r[61] + 0.752772653f * r[63] - q * nx;
-  out_grad[78][1] = 7.18099343f * r[51] + 0.752772653f * r[49] - q * ny;
-  out_grad[78][2] = 5.63323471f * r[62] - q * nz;
-  q = lr * y[79];
-  out_grad[79][0] = -7.71362431f * r[62] - q * nx;
-  out_grad[79][1] = 7.71362431f * r[50] - q * ny;
-  out_grad[79][2] = 4.12310563f * r[63] - q * nz;
-  q = lr * y[80];
-  out_grad[80][0] = -8.24621125f * r[63] - q * nx;
-  out_grad[80][1] = 8.24621125f * r[49] - q * ny;
-  out_grad[80][2] = -q * nz;
-  lr = 9.0f * ir;
-  q = lr * y[81];
-  out_grad[81][0] = -9.246621f * r[64] - q * nx;
-  out_grad[81][1] = -9.246621f * r[80] - q * ny;
-  out_grad[81][2] = -q * nz;
-  q = lr * y[82];
-  out_grad[82][0] = -8.71779789f * r[65] - q * nx;
-  out_grad[82][1] = -8.71779789f * r[79] - q * ny;
-  out_grad[82][2] = 4.35889894f * r[64] - q * nz;
-  q = lr * y[83];
-  out_grad[83][0] = -8.1889452f * r[66] + 0.747545002f * r[64] - q * nx;
-  out_grad[83][1] = -8.1889452f * r[78] + -0.747545002f * r[80] - q * ny;
-  out_grad[83][2] = 5.98036001f * r[65] - q * nz;
-  q = lr * y[84];
-  out_grad[84][0] = -7.66005683f * r[67] + 1.29478592f * r[65] - q * nx;
-  out_grad[84][1] = -7.66005683f * r[77] + -1.29478592f * r[79] - q * ny;
-  out_grad[84][2] = 7.09183458f * r[66] - q * nz;
-  q = lr * y[85];
-  out_grad[85][0] = -7.13112482f * r[68] + 1.83110381f * r[66] - q * nx;
-  out_grad[85][1] = -7.13112482f * r[76] + -1.83110381f * r[78] - q * ny;
-  out_grad[85][2] = 7.91127267f * r[67] - q * nz;
-  q = lr * y[86];
-  out_grad[86][0] = -6.60213869f * r[69] + 2.36394486f * r[67] - q * nx;
-  out_grad[86][1] = -6.60213869f * r[75] + -2.36394486f * r[77] - q * ny;
-  out_grad[86][2] = 8.5233244f * r[68] - q * nz;
-  q = lr * y[87];
-  out_grad[87][0] = -6.0730843f * r[70] + 2.89522934f * r[68] - q * nx;
-  out_grad[87][1] = -6.0730843f * r[74] + -2.89522934f * r[76] - q * ny;
-  out_grad[87][2] = 8.97054002f * r[69] - q * nz;
-  q = lr * y[88];
-  out_grad[88][0] = -5.54394211f * r[71] + 3.42568156f * r[69] - q * nx;
-  out_grad[88][1] = -5.54394211f * r[73] + -3.42568156f * r[75] - q * ny;
-  out_grad[88][2] = 9.27678951f * r[70] - q * nz;
-  q = lr * y[89];
-  out_grad[89][0] = 3.95563634f * r[70] - q * nx;
-  out_grad[89][1] = -7.09183458f * r[72] + -3.95563634f * r[74] - q * ny;
-  out_grad[89][2] = 9.45577943f * r[71] - q * nz;
-  q = lr * y[90];
-  out_grad[90][0] = 6.34312968f * r[73] - q * nx;
-  out_grad[90][1] = 6.34312968f * r[71] - q * ny;
-  out_grad[90][2] = 9.51469452f * r[72] - q * nz;
-  q = lr * y[91];
-  out_grad[91][0] = -7.09183458f * r[72] + 3.95563634f * r[74] - q * nx;
-  out_grad[91][1] = 3.95563634f * r[70] - q * ny;
-  out_grad[91][2] = 9.45577943f * r[73] - q * nz;
-  q = lr * y[92];
-  out_grad[92][0] = -5.54394211f * r[73] + 3.42568156f * r[75] - q * nx;
-  out_grad[92][1] = 5.54394211f * r[71] + 3.42568156f * r[69] - q * ny;
-  out_grad[92][2] = 9.27678951f * r[74] - q * nz;
-  q = lr * y[93];
-  out_grad[93][0] = -6.0730843f * r[74] + 2.89522934f * r[76] - q * nx;
-  out_grad[93][1] = 6.0730843f * r[70] + 2.89522934f * r[68] - q * ny;
-  out_grad[93][2] = 8.97054002f * r[75] - q * nz;
-  q = lr * y[94];
-  out_grad[94][0] = -6.60213869f * r[75] + 2.36394486f * r[77] - q * nx;
-  out_grad[94][1] = 6.60213869f * r[69] + 2.36394486f * r[67] - q * ny;
-  out_grad[94][2] = 8.5233244f * r[76] - q * nz;
-  q = lr * y[95];
-  out_grad[95][0] = -7.13112482f * r[76] + 1.83110381f * r[78] - q * nx;
-  out_grad[95][1] = 7.13112482f * r[68] + 1.83110381f * r[66] - q * ny;
-  out_grad[95][2] = 7.91127267f * r[77] - q * nz;
-  q = lr * y[96];
-  out_grad[96][0] = -7.66005683f * r[77] + 1.29478592f * r[79] - q * nx;
-  out_grad[96][1] = 7.66005683f * r[67] + 1.29478592f * r[65] - q * ny;
-  out_grad[96][2] = 7.09183458f * r[78] - q * nz;
-  q = lr * y[97];
-  out_grad[97][0] = -8.1889452f * r[78] + 0.747545002f * r[80] - q * nx;
-  out_grad[97][1] = 8.1889452f * r[66] + 0.747545002f * r[64] - q * ny;
-  out_grad[97][2] = 5.98036001f * r[79] - q * nz;
-  q = lr * y[98];
-  out_grad[98][0] = -8.71779789f * r[79] - q * nx;
-  out_grad[98][1] = 8.71779789f * r[65] - q * ny;
-  out_grad[98][2] = 4.35889894f * r[80] - q * nz;
-  q = lr * y[99];
-  out_grad[99][0] = -9.246621f * r[80] - q * nx;
-  out_grad[99][1] = 9.246621f * r[64] - q * ny;
-  out_grad[99][2] = -q * nz;
-  lr = 10.0f * ir;
-  q = lr * y[100];
-  out_grad[100][0] = -10.2469508f * r[81] - q * nx;
-  out_grad[100][1] = -10.2469508f * r[99] - q * ny;
-  out_grad[100][2] = -q * nz;
-  q = lr * y[101];
-  out_grad[101][0] = -9.72111105f * r[82] - q * nx;
-  out_grad[101][1] = -9.72111105f * r[98] - q * ny;
-  out_grad[101][2] = 4.58257569f * r[81] - q * nz;
-  q = lr * y[102];
-  out_grad[102][0] = -9.19525049f * r[83] + 0.743391942f * r[81] - q * nx;
-  out_grad[102][1] = -9.19525049f * r[97] + -0.743391942f * r[99] - q * ny;
-  out_grad[102][2] = 6.3078898f * r[82] - q * nz;
-  q = lr * y[103];
-  out_grad[103][0] = -8.6693653f * r[84] + 1.28759261f * r[82] - q * nx;
-  out_grad[103][1] = -8.6693653f * r[96] + -1.28759261f * r[98] - q * ny;
-  out_grad[103][2] = 7.50789059f * r[83] - q * nz;
-  q = lr * y[104];
-  out_grad[104][0] = -8.14345071f * r[85] + 1.82093094f * r[83] - q * nx;
-  out_grad[104][1] = -8.14345071f * r[95] + -1.82093094f * r[97] - q * ny;
-  out_grad[104][2] = 8.41051973f * r[84] - q * nz;
-  q = lr * y[105];
-  out_grad[105][0] = -7.61750063f * r[86] + 2.35081173f * r[84] - q * nx;
-  out_grad[105][1] = -7.61750063f * r[94] + -2.35081173f * r[96] - q * ny;
-  out_grad[105][2] = 9.10465468f * r[85] - q * nz;
-  q = lr * y[106];
-  out_grad[106][0] = -7.09150715f * r[87] + 2.87914461f * r[85] - q * nx;
-  out_grad[106][1] = -7.09150715f * r[93] + -2.87914461f * r[95] - q * ny;
-  out_grad[106][2] = 9.63546082f * r[86] - q * nz;
-  q = lr * y[107];
-  out_grad[107][0] = -6.56545986f * r[88] + 3.40664984f * r[86] - q * nx;
-  out_grad[107][1] = -6.56545986f * r[92] + -3.40664984f * r[94] - q * ny;
-  out_grad[107][2] = 10.0289056f * r[87] - q * nz;
-  q = lr * y[108];
-  out_grad[108][0] = -6.03934468f * r[89] + 3.93366041f * r[87] - q * nx;
-  out_grad[108][1] = -6.03934468f * r[91] + -3.93366041f * r[93] - q * ny;
-  out_grad[108][2] = 10.3007409f * r[88] - q * nz;
-  q = lr * y[109];
-  out_grad[109][0] = 4.46035165f * r[88] - q * nx;
-  out_grad[109][1] = -7.79676046f * r[90] + -4.46035165f * r[92] - q * ny;
-  out_grad[109][2] = 10.4604518f * r[89] - q * nz;
-  q = lr * y[110];
-  out_grad[110][0] = 7.05243519f * r[91] - q * nx;
-  out_grad[110][1] = 7.05243519f * r[89] - q * ny;
-  out_grad[110][2] = 10.5131497f * r[90] - q * nz;
-  q = lr * y[111];
-  out_grad[111][0] = -7.79676046f * r[90] + 4.46035165f * r[92] - q * nx;
-  out_grad[111][1] = 4.46035165f * r[88] - q * ny;
-  out_grad[111][2] = 10.4604518f * r[91] - q * nz;
-  q = lr * y[112];
-  out_grad[112][0] = -6.03934468f * r[91] + 3.93366041f * r[93] - q * nx;
-  out_grad[112][1] = 6.03934468f * r[89] + 3.93366041f * r[87] - q * ny;
-  out_grad[112][2] = 10.3007409f * r[92] - q * nz;
-  q = lr * y[113];
-  out_grad[113][0] = -6.56545986f * r[92] + 3.40664984f * r[94] - q * nx;
-  out_grad[113][1] = 6.56545986f * r[88] + 3.40664984f * r[86] - q * ny;
-  out_grad[113][2] = 10.0289056f * r[93] - q * nz;
-  q = lr * y[114];
-  out_grad[114][0] = -7.09150715f * r[93] + 2.87914461f * r[95] - q * nx;
-  out_grad[114][1] = 7.09150715f * r[87] + 2.87914461f * r[85] - q * ny;
-  out_grad[114][2] = 9.63546082f * r[94] - q * nz;
-  q = lr * y[115];
-  out_grad[115][0] = -7.61750063f * r[94] + 2.35081173f * r[96] - q * nx;
-  out_grad[115][1] = 7.61750063f * r[86] + 2.35081173f * r[84] - q * ny;
-  out_grad[115][2] = 9.10465468f * r[95] - q * nz;
-  q = lr * y[116];
-  out_grad[116][0] = -8.14345071f * r[95] + 1.82093094f * r[97] - q * nx;
-  out_grad[116][1] = 8.14345071f * r[85] + 1.82093094f * r[83] - q * ny;
-  out_grad[116][2] = 8.41051973f * r[96] - q * nz;
-  q = lr * y[117];
-  out_grad[117][0] = -8.6693653f * r[96] + 1.28759261f * r[98] - q * nx;
-  out_grad[117][1] = 8.6693653f * r[84] + 1.28759261f * r[82] - q * ny;
-  out_grad[117][2] = 7.50789059f * r[97] - q * nz;
-  q = lr * y[118];
-  out_grad[118][0] = -9.19525049f * r[97] + 0.743391942f * r[99] - q * nx;
-  out_grad[118][1] = 9.19525049f * r[83] + 0.743391942f * r[81] - q * ny;
-  out_grad[118][2] = 6.3078898f * r[98] - q * nz;
-  q = lr * y[119];
-  out_grad[119][0] = -9.72111105f * r[98] - q * nx;
-  out_grad[119][1] = 9.72111105f * r[82] - q * ny;
-  out_grad[119][2] = 4.58257569f * r[99] - q * nz;
-  q = lr * y[120];
-  out_grad[120][0] = -10.2469508f * r[99] - q * nx;
-  out_grad[120][1] = 10.2469508f * r[81] - q * ny;
-  out_grad[120][2] = -q * nz;
-  lr = 11.0f * ir;
-  q = lr * y[121];
-  out_grad[121][0] = -11.2472219f * r[100] - q * nx;
-  out_grad[121][1] = -11.2472219f * r[120] - q * ny;
-  out_grad[121][2] = -q * nz;
-  q = lr * y[122];
-  out_grad[122][0] = -10.7238053f * r[101] - q * nx;
-  out_grad[122][1] = -10.7238053f * r[119] - q * ny;
-  out_grad[122][2] = 4.79583152f * r[100] - q * nz;
-  q = lr * y[123];
-  out_grad[123][0] = -10.2003735f * r[102] + 0.74001287f * r[100] - q * nx;
-  out_grad[123][1] = -10.2003735f * r[118] + -0.74001287f * r[120] - q * ny;
-  out_grad[123][2] = 6.61887633f * r[101] - q * nz;
-  q = lr * y[124];
-  out_grad[124][0] = -9.67692395f * r[103] + 1.28173989f * r[101] - q * nx;
-  out_grad[124][1] = -9.67692395f * r[117] + -1.28173989f * r[119] - q * ny;
-  out_grad[124][2] = 7.90117532f * r[102] - q * nz;
-  q = lr * y[125];
-  out_grad[125][0] = -9.15345368f * r[104] + 1.81265393f * r[102] - q * nx;
-  out_grad[125][1] = -9.15345368f * r[116] + -1.81265393f * r[118] - q * ny;
-  out_grad[125][2] = 8.88015444f * r[103] - q * nz;
-  q = lr * y[126];
-  out_grad[126][0] = -8.62995889f * r[105] + 2.34012617f * r[103] - q * nx;
-  out_grad[126][1] = -8.62995889f * r[115] + -2.34012617f * r[117] - q * ny;
-  out_grad[126][2] = 9.64858736f * r[104] - q * nz;
-  q = lr * y[127];
-  out_grad[127][0] = -8.10643483f * r[106] + 2.86605752f * r[104] - q * nx;
-  out_grad[127][1] = -8.10643483f * r[114] + -2.86605752f * r[116] - q * ny;
-  out_grad[127][2] = 10.2539191f * r[105] - q * nz;
-  q = lr * y[128];
-  out_grad[128][0] = -7.58287544f * r[107] + 3.39116499f * r[105] - q * nx;
-  out_grad[128][1] = -7.58287544f * r[113] + -3.39116499f * r[115] - q * ny;
-  out_grad[128][2] = 10.7238053f * r[106] - q * nz;
-  q = lr * y[129];
-  out_grad[129][0] = -7.05927286f * r[108] + 3.91578004f * r[106] - q * nx;
-  out_grad[129][1] = -7.05927286f * r[112] + -3.91578004f * r[114] - q * ny;
-  out_grad[129][2] = 11.0754985f * r[107] - q * nz;
-  q = lr * y[130];
-  out_grad[130][0] = -6.5356167f * r[109] + 4.44007722f * r[107] - q * nx;
-  out_grad[130][1] = -6.5356167f * r[111] + -4.44007722f * r[113] - q * ny;
-  out_grad[130][2] = 11.3200202f * r[108] - q * nz;
-  q = lr * y[131];
-  out_grad[131][0] = 4.96415724f * r[108] - q * nx;
-  out_grad[131][1] = -8.50210058f * r[110] + -4.96415724f * r[112] - q * ny;
-  out_grad[131][2] = 11.4642301f * r[109] - q * nz;
-  q = lr * y[132];
-  out_grad[132][0] = 7.76132046f * r[111] - q * nx;
-  out_grad[132][1] = 7.76132046f * r[109] - q * ny;
-  out_grad[132][2] = 11.5118986f * r[110] - q * nz;
-  q = lr * y[133];
-  out_grad[133][0] = -8.50210058f * r[110] + 4.96415724f * r[112] - q * nx;
-  out_grad[133][1] = 4.96415724f * r[108] - q * ny;
-  out_grad[133][2] = 11.4642301f * r[111] - q * nz;
-  q = lr * y[134];
-  out_grad[134][0] = -6.5356167f * r[111] + 4.44007722f * r[113] - q * nx;
-  out_grad[134][1] = 6.5356167f * r[109] + 4.44007722f * r[107] - q * ny;
-  out_grad[134][2] = 11.3200202f * r[112] - q * nz;
-  q = lr * y[135];
-  out_grad[135][0] = -7.05927286f * r[112] + 3.91578004f * r[114] - q * nx;
-  out_grad[135][1] = 7.05927286f * r[108] + 3.91578004f * r[106] - q * ny;
-  out_grad[135][2] = 11.0754985f * r[113] - q * nz;
-  q = lr * y[136];
-  out_grad[136][0] = -7.58287544f * r[113] + 3.39116499f * r[115] - q * nx;
-  out_grad[136][1] = 7.58287544f * r[107] + 3.39116499f * r[105] - q * ny;
-  out_grad[136][2] = 10.7238053f * r[114] - q * nz;
-  q = lr * y[137];
-  out_grad[137][0] = -8.10643483f * r[114] + 2.86605752f * r[116] - q * nx;
-  out_grad[137][1] = 8.10643483f * r[106] + 2.86605752f * r[104] - q * ny;
-  out_grad[137][2] = 10.2539191f * r[115] - q * nz;
-  q = lr * y[138];
-  out_grad[138][0] = -8.62995889f * r[115] + 2.34012617f * r[117] - q * nx;
-  out_grad[138][1] = 8.62995889f * r[105] + 2.34012617f * r[103] - q * ny;
-  out_grad[138][2] = 9.64858736f * r[116] - q * nz;
-  q = lr * y[139];
-  out_grad[139][0] = -9.15345368f * r[116] + 1.81265393f * r[118] - q * nx;
-  out_grad[139][1] = 9.15345368f * r[104] + 1.81265393f * r[102] - q * ny;
-  out_grad[139][2] = 8.88015444f * r[117] - q * nz;
-  q = lr * y[140];
-  out_grad[140][0] = -9.67692395f * r[117] + 1.28173989f * r[119] - q * nx;
-  out_grad[140][1] = 9.67692395f * r[103] + 1.28173989f * r[101] - q * ny;
-  out_grad[140][2] = 7.90117532f * r[118] - q * nz;
-  q = lr * y[141];
-  out_grad[141][0] = -10.2003735f * r[118] + 0.74001287f * r[120] - q * nx;
-  out_grad[141][1] = 10.2003735f * r[102] + 0.74001287f * r[100] - q * ny;
-  out_grad[141][2] = 6.61887633f * r[119] - q * nz;
-  q = lr * y[142];
-  out_grad[142][0] = -10.7238053f * r[119] - q * nx;
-  out_grad[142][1] = 10.7238053f * r[101] - q * ny;
-  out_grad[142][2] = 4.79583152f * r[120] - q * nz;
-  q = lr * y[143];
-  out_grad[143][0] = -11.2472219f * r[120] - q * nx;
-  out_grad[143][1] = 11.2472219f * r[100] - q * ny;
-  out_grad[143][2] = -q * nz;
-  lr = 12.0f * ir;
-  q = lr * y[144];
-  out_grad[144][0] = -12.2474487f * r[121] - q * nx;
-  out_grad[144][1] = -12.2474487f * r[143] - q * ny;
-  out_grad[144][2] = -q * nz;
-  q = lr * y[145];
-  out_grad[145][0] = -11.7260394f * r[122] - q * nx;
-  out_grad[145][1] = -11.7260394f * r[142] - q * ny;
-  out_grad[145][2] = 5.0f * r[121] - q * nz;
-  q = lr * y[146];
-  out_grad[146][0] = -11.2046186f * r[123] + 0.737209781f * r[121] - q * nx;
-  out_grad[146][1] = -11.2046186f * r[141] + -0.737209781f * r[143] - q * ny;
-  out_grad[146][2] = 6.91564075f * r[122] - q * nz;
-  q = lr * y[147];
-  out_grad[147][0] = -10.6831847f * r[124] + 1.2768848f * r[122] - q * nx;
-  out_grad[147][1] = -10.6831847f * r[140] + -1.2768848f * r[142] - q * ny;
-  out_grad[147][2] = 8.27515927f * r[123] - q * nz;
-  q = lr * y[148];
-  out_grad[148][0] = -10.1617356f * r[125] + 1.8057878f * r[123] - q * nx;
-  out_grad[148][1] = -10.1617356f * r[139] + -1.8057878f * r[141] - q * ny;
-  out_grad[148][2] = 9.32504808f * r[124] - q * nz;
-  q = lr * y[149];
-  out_grad[149][0] = -9.6402688f * r[126] + 2.33126202f * r[124] - q * nx;
-  out_grad[149][1] = -9.6402688f * r[138] + -2.33126202f * r[140] - q * ny;
-  out_grad[149][2] = 10.1617356f * r[125] - q * nz;
-  q = lr * y[150];
-  out_grad[150][0] = -9.11878138f * r[127] + 2.8552012f * r[125] - q * nx;
-  out_grad[150][1] = -9.11878138f * r[137] + -2.8552012f * r[139] - q * ny;
-  out_grad[150][2] = 10.8347268f * r[126] - q * nz;
-  q = lr * y[151];
-  out_grad[151][0] = -8.59726954f * r[128] + 3.37831962f * r[126] - q * nx;
-  out_grad[151][1] = -8.59726954f * r[136] + -3.37831962f * r[138] - q * ny;
-  out_grad[151][2] = 11.3731186f * r[127] - q * nz;
-  q = lr * y[152];
-  out_grad[152][0] = -8.07572853f * r[129] + 3.90094749f * r[127] - q * nx;
-  out_grad[152][1] = -8.07572853f * r[135] + -3.90094749f * r[137] - q * ny;
-  out_grad[152][2] = 11.7953565f * r[128] - q * nz;
-  q = lr * y[153];
-  out_grad[153][0] = -7.55415233f * r[130] + 4.42325868f * r[128] - q * nx;
-  out_grad[153][1] = -7.55415233f * r[134] + -4.42325868f * r[136] - q * ny;
-  out_grad[153][2] = 12.1135928f * r[129] - q * nz;
-  q = lr * y[154];
-  out_grad[154][0] = -7.0325331f * r[131] + 4.94535355f * r[129] - q * nx;
-  out_grad[154][1] = -7.0325331f * r[133] + -4.94535355f * r[135] - q * ny;
-  out_grad[154][2] = 12.3358791f * r[130] - q * nz;
-  q = lr * y[155];
-  out_grad[155][0] = 5.46729406f * r[130] - q * nx;
-  out_grad[155][1] = -9.20774721f * r[132] + -5.46729406f * r[134] - q * ny;
-  out_grad[155][2] = 12.4673487f * r[131] - q * nz;
-  q = lr * y[156];
-  out_grad[156][0] = 8.46989554f * r[133] - q * nx;
-  out_grad[156][1] = 8.46989554f * r[131] - q * ny;
-  out_grad[156][2] = 12.5108648f * r[132] - q * nz;
-  q = lr * y[157];
-  out_grad[157][0] = -9.20774721f * r[132] + 5.46729406f * r[134] - q * nx;
-  out_grad[157][1] = 5.46729406f * r[130] - q * ny;
-  out_grad[157][2] = 12.4673487f * r[133] - q * nz;
-  q = lr * y[158];
-  out_grad[158][0] = -7.0325331f * r[133] + 4.94535355f * r[135] - q * nx;
-  out_grad[158][1] = 7.0325331f * r[131] + 4.94535355f * r[129] - q * ny;
-  out_grad[158][2] = 12.3358791f * r[134] - q * nz;
-  q = lr * y[159];
-  out_grad[159][0] = -7.55415233f * r[134] + 4.42325868f * r[136] - q * nx;
-  out_grad[159][1] = 7.55415233f * r[130] + 4.42325868f * r[128] - q * ny;
-  out_grad[159][2] = 12.1135928f * r[135] - q * nz;
-  q = lr * y[160];
-  out_grad[160][0] = -8.07572853f * r[135] + 3.90094749f * r[137] - q * nx;
-  out_grad[160][1] = 8.07572853f * r[129] + 3.90094749f * r[127] - q * ny;
-  out_grad[160][2] = 11.7953565f * r[136] - q * nz;
-  q = lr * y[161];
-  out_grad[161][0] = -8.59726954f * r[136] + 3.37831962f * r[138] - q * nx;
-  out_grad[161][1] = 8.59726954f * r[128] + 3.37831962f * r[126] - q * ny;
-  out_grad[161][2] = 11.3731186f * r[137] - q * nz;
-  q = lr * y[162];
-  out_grad[162][0] = -9.11878138f * r[137] + 2.8552012f * r[139] - q * nx;
-  out_grad[162][1] = 9.11878138f * r[127] + 2.8552012f * r[125] - q * ny;
-  out_grad[162][2] = 10.8347268f * r[138] - q * nz;
-  q = lr * y[163];
-  out_grad[163][0] = -9.6402688f * r[138] + 2.33126202f * r[140] - q * nx;
-  out_grad[163][1] = 9.6402688f * r[126] + 2.33126202f * r[124] - q * ny;
-  out_grad[163][2] = 10.1617356f * r[139] - q * nz;
-  q = lr * y[164];
-  out_grad[164][0] = -10.1617356f * r[139] + 1.8057878f * r[141] - q * nx;
-  out_grad[164][1] = 10.1617356f * r[125] + 1.8057878f * r[123] - q * ny;
-  out_grad[164][2] = 9.32504808f * r[140] - q * nz;
-  q = lr * y[165];
-  out_grad[165][0] = -10.6831847f * r[140] + 1.2768848f * r[142] - q * nx;
-  out_grad[165][1] = 10.6831847f * r[124] + 1.2768848f * r[122] - q * ny;
-  out_grad[165][2] = 8.27515927f * r[141] - q * nz;
-  q = lr * y[166];
-  out_grad[166][0] = -11.2046186f * r[141] + 0.737209781f * r[143] - q * nx;
-  out_grad[166][1] = 11.2046186f * r[123] + 0.737209781f * r[121] - q * ny;
-  out_grad[166][2] = 6.91564075f * r[142] - q * nz;
-  q = lr * y[167];
-  out_grad[167][0] = -11.7260394f * r[142] - q * nx;
-  out_grad[167][1] = 11.7260394f * r[122] - q * ny;
-  out_grad[167][2] = 5.0f * r[143] - q * nz;
-  q = lr * y[168];
-  out_grad[168][0] = -12.2474487f * r[143] - q * nx;
-  out_grad[168][1] = 12.2474487f * r[121] - q * ny;
-  out_grad[168][2] = -q * nz;
-  lr = 13.0f * ir;
-  q = lr * y[169];
-  out_grad[169][0] = -13.2476413f * r[144] - q * nx;
-  out_grad[169][1] = -13.2476413f * r[168] - q * ny;
-  out_grad[169][2] = -q * nz;
-  q = lr * y[170];
-  out_grad[170][0] = -12.7279221f * r[145] - q * nx;
-  out_grad[170][1] = -12.7279221f * r[167] - q * ny;
-  out_grad[170][2] = 5.19615242f * r[144] - q * nz;
-  q = lr * y[171];
-  out_grad[171][0] = -12.208194f * r[146] + 0.734846923f * r[144] - q * nx;
-  out_grad[171][1] = -12.208194f * r[166] + -0.734846923f * r[168] - q * ny;
-  out_grad[171][2] = 7.2f * r[145] - q * nz;
-  q = lr * y[172];
-  out_grad[172][0] = -11.6884558f * r[147] + 1.27279221f * r[145] - q * nx;
-  out_grad[172][1] = -11.6884558f * r[165] + -1.27279221f * r[167] - q * ny;
-  out_grad[172][2] = 8.63249674f * r[146] - q * nz;
-  q = lr * y[173];
-  out_grad[173][0] = -11.1687063f * r[148] + 1.8f * r[146] - q * nx;
-  out_grad[173][1] = -11.1687063f * r[164] + -1.8f * r[166] - q * ny;
-  out_grad[173][2] = 9.74884609f * r[147] - q * nz;
-  q = lr * y[174];
-  out_grad[174][0] = -10.6489436f * r[149] + 2.32379001f * r[147] - q * nx;
-  out_grad[174][1] = -10.6489436f * r[163] + -2.32379001f * r[165] - q * ny;
-  out_grad[174][2] = 10.6489436f * r[148] - q * nz;
-  q = lr * y[175];
-  out_grad[175][0] = -10.1291658f * r[150] + 2.84604989f * r[148] - q * nx;
-  out_grad[175][1] = -10.1291658f * r[162] + -2.84604989f * r[164] - q * ny;
-  out_grad[175][2] = 11.3841996f * r[149] - q * nz;
-  q = lr * y[176];
-  out_grad[176][0] = -9.60937043f * r[151] + 3.36749165f * r[149] - q * nx;
-  out_grad[176][1] = -9.60937043f * r[161] + -3.36749165f * r[163] - q * ny;
-  out_grad[176][2] = 11.9849906f * r[150] - q * nz;
-  q = lr * y[177];
-  out_grad[177][0] = -9.08955444f * r[152] + 3.88844442f * r[150] - q * nx;
-  out_grad[177][1] = -9.08955444f * r[160] + -3.88844442f * r[162] - q * ny;
-  out_grad[177][2] = 12.4707658f * r[151] - q * nz;
-  q = lr * y[178];
-  out_grad[178][0] = -8.56971411f * r[153] + 4.40908154f * r[151] - q * nx;
-  out_grad[178][1] = -8.56971411f * r[159] + -4.40908154f * r[161] - q * ny;
-  out_grad[178][2] = 12.8545712f * r[152] - q * nz;
-  q = lr * y[179];
-  out_grad[179][0] = -8.04984472f * r[154] + 4.92950302f * r[152] - q * nx;
-  out_grad[179][1] = -8.04984472f * r[158] + -4.92950302f * r[160] - q * ny;
-  out_grad[179][2] = 13.1453414f * r[153] - q * nz;
-  q = lr * y[180];
-  out_grad[180][0] = -7.52994024f * r[155] + 5.44977064f * r[153] - q * nx;
-  out_grad[180][1] = -7.52994024f * r[157] + -5.44977064f * r[159] - q * ny;
-  out_grad[180][2] = 13.3491573f * r[154] - q * nz;
-  q = lr * y[181];
-  out_grad[181][0] = 5.96992462f * r[154] - q * nx;
-  out_grad[181][1] = -9.91362699f * r[156] + -5.96992462f * r[158] - q * ny;
-  out_grad[181][2] = 13.4699666f * r[155] - q * nz;
-  q = lr * y[182];
-  out_grad[182][0] = 9.17823512f * r[157] - q * nx;
-  out_grad[182][1] = 9.17823512f * r[155] - q * ny;
-  out_grad[182][2] = 13.5099963f * r[156] - q * nz;
-  q = lr * y[183];
-  out_grad[183][0] = -9.91362699f * r[156] + 5.96992462f * r[158] - q * nx;
-  out_grad[183][1] = 5.96992462f * r[154] - q * ny;
-  out_grad[183][2] = 13.4699666f * r[157] - q * nz;
-  q = lr * y[184];
-  out_grad[184][0] = -7.52994024f * r[157] + 5.44977064f * r[159] - q * nx;
-  out_grad[184][1] = 7.52994024f * r[155] + 5.44977064f * r[153] - q * ny;
-  out_grad[184][2] = 13.3491573f * r[158] - q * nz;
-  q = lr * y[185];
-  out_grad[185][0] = -8.04984472f * r[158] + 4.92950302f * r[160] - q * nx;
-  out_grad[185][1] = 8.04984472f * r[154] + 4.92950302f * r[152] - q * ny;
-  out_grad[185][2] = 13.1453414f * r[159] - q * nz;
-  q = lr * y[186];
-  out_grad[186][0] = -8.56971411f * r[159] + 4.40908154f * r[161] - q * nx;
-  out_grad[186][1] = 8.56971411f * r[153] + 4.40908154f * r[151] - q * ny;
-  out_grad[186][2] = 12.8545712f * r[160] - q * nz;
-  q = lr * y[187];
-  out_grad[187][0] = -9.08955444f * r[160] + 3.88844442f * r[162] - q * nx;
-  out_grad[187][1] = 9.08955444f * r[152] + 3.88844442f * r[150] - q * ny;
-  out_grad[187][2] = 12.4707658f * r[161] - q * nz;
-  q = lr * y[188];
-  out_grad[188][0] = -9.60937043f * r[161] + 3.36749165f * r[163] - q * nx;
-  out_grad[188][1] = 9.60937043f * r[151] + 3.36749165f * r[149] - q * ny;
-  out_grad[188][2] = 11.9849906f * r[162] - q * nz;
-  q = lr * y[189];
-  out_grad[189][0] = -10.1291658f * r[162] + 2.84604989f * r[164] - q * nx;
-  out_grad[189][1] = 10.1291658f * r[150] + 2.84604989f * r[148] - q * ny;
-  out_grad[189][2] = 11.3841996f * r[163] - q * nz;
-  q = lr * y[190];
-  out_grad[190][0] = -10.6489436f * r[163] + 2.32379001f * r[165] - q * nx;
-  out_grad[190][1] = 10.6489436f * r[149] + 2.32379001f * r[147] - q * ny;
-  out_grad[190][2] = 10.6489436f * r[164] - q * nz;
-  q = lr * y[191];
-  out_grad[191][0] = -11.1687063f * r[164] + 1.8f * r[166] - q * nx;
-  out_grad[191][1] = 11.1687063f * r[148] + 1.8f * r[146] - q * ny;
-  out_grad[191][2] = 9.74884609f * r[165] - q * nz;
-  q = lr * y[192];
-  out_grad[192][0] = -11.6884558f * r[165] + 1.27279221f * r[167] - q * nx;
-  out_grad[192][1] = 11.6884558f * r[147] + 1.27279221f * r[145] - q * ny;
-  out_grad[192][2] = 8.63249674f * r[166] - q * nz;
-  q = lr * y[193];
-  out_grad[193][0] = -12.208194f * r[166] + 0.734846923f * r[168] - q * nx;
-  out_grad[193][1] = 12.208194f * r[146] + 0.734846923f * r[144] - q * ny;
-  out_grad[193][2] = 7.2f * r[167] - q * nz;
-  q = lr * y[194];
-  out_grad[194][0] = -12.7279221f * r[167] - q * nx;
-  out_grad[194][1] = 12.7279221f * r[145] - q * ny;
-  out_grad[194][2] = 5.19615242f * r[168] - q * nz;
-  q = lr * y[195];
-  out_grad[195][0] = -13.2476413f * r[168] - q * nx;
-  out_grad[195][1] = 13.2476413f * r[144] - q * ny;
-  out_grad[195][2] = -q * nz;
-  lr = 14.0f * ir;
-  q = lr * y[196];
-  out_grad[196][0] = -14.2478068f * r[169] - q * nx;
-  out_grad[196][1] = -14.2478068f * r[195] - q * ny;
-  out_grad[196][2] = -q * nz;
-  q = lr * y[197];
-  out_grad[197][0] = -13.7295302f * r[170] - q * nx;
-  out_grad[197][1] = -13.7295302f * r[194] - q * ny;
-  out_grad[197][2] = 5.38516481f * r[169] - q * nz;
-  q = lr * y[198];
-  out_grad[198][0] = -13.2112466f * r[171] + 0.732828109f * r[169] - q * nx;
-  out_grad[198][1] = -13.2112466f * r[193] + -0.732828109f * r[195] - q * ny;
-  out_grad[198][2] = 7.47340965f * r[170] - q * nz;
-  q = lr * y[199];
-  out_grad[199][0] = -12.6929552f * r[172] + 1.26929552f * r[170] - q * nx;
-  out_grad[199][1] = -12.6929552f * r[192] + -1.26929552f * r[194] - q * ny;
-  out_grad[199][2] = 8.97527468f * r[171] - q * nz;
-  q = lr * y[200];
-  out_grad[200][0] = -12.1746549f * r[173] + 1.79505494f * r[171] - q * nx;
-  out_grad[200][1] = -12.1746549f * r[191] + -1.79505494f * r[193] - q * ny;
-  out_grad[200][2] = 10.1543641f * r[172] - q * nz;
-  q = lr * y[201];
-  out_grad[201][0] = -11.6563446f * r[174] + 2.31740596f * r[172] - q * nx;
-  out_grad[201][1] = -11.6563446f * r[190] + -2.31740596f * r[192] - q * ny;
-  out_grad[201][2] = 11.1138885f * r[173] - q * nz;
-  q = lr * y[202];
-  out_grad[202][0] = -11.138023f * r[175] + 2.83823106f * r[173] - q * nx;
-  out_grad[202][1] = -11.138023f * r[189] + -2.83823106f * r[191] - q * ny;
-  out_grad[202][2] = 11.9070474f * r[174] - q * nz;
-  q = lr * y[203];
-  out_grad[203][0] = -10.6196882f * r[176] + 3.35824028f * r[174] - q * nx;
-  out_grad[203][1] = -10.6196882f * r[188] + -3.35824028f * r[190] - q * ny;
-  out_grad[203][2] = 12.5653845f * r[175] - q * nz;
-  q = lr * y[204];
-  out_grad[204][0] = -10.1013384f * r[177] + 3.87776186f * r[175] - q * nx;
-  out_grad[204][1] = -10.1013384f * r[187] + -3.87776186f * r[189] - q * ny;
-  out_grad[204][2] = 13.1092277f * r[176] - q * nz;
-  q = lr * y[205];
-  out_grad[205][0] = -9.58297101f * r[178] + 4.39696865f * r[176] - q * nx;
-  out_grad[205][1] = -9.58297101f * r[186] + -4.39696865f * r[188] - q * ny;
-  out_grad[205][2] = 13.5523676f * r[177] - q * nz;
-  q = lr * y[206];
-  out_grad[206][0] = -9.06458309f * r[179] + 4.9159604f * r[177] - q * nx;
-  out_grad[206][1] = -9.06458309f * r[185] + -4.9159604f * r[187] - q * ny;
-  out_grad[206][2] = 13.9044357f * r[178] - q * nz;
-  q = lr * y[207];
-  out_grad[207][0] = -8.5461709f * r[180] + 5.43479871f * r[178] - q * nx;
-  out_grad[207][1] = -8.5461709f * r[184] + -5.43479871f * r[186] - q * ny;
-  out_grad[207][2] = 14.1722211f * r[179] - q * nz;
-  q = lr * y[208];
-  out_grad[208][0] = -8.02772972f * r[181] + 5.9535237f * r[179] - q * nx;
-  out_grad[208][1] = -8.02772972f * r[183] + -5.9535237f * r[185] - q * ny;
-  out_grad[208][2] = 14.3604395f * r[180] - q * nz;
-  q = lr * y[209];
-  out_grad[209][0] = 6.47216261f * r[180] - q * nx;
-  out_grad[209][1] = -10.6196882f * r[182] + -6.47216261f * r[184] - q * ny;
-  out_grad[209][2] = 14.4721956f * r[181] - q * nz;
-  q = lr * y[210];
-  out_grad[210][0] = 9.88639169f * r[183] - q * nx;
-  out_grad[210][1] = 9.88639169f * r[181] - q * ny;
-  out_grad[210][2] = 14.5092563f * r[182] - q * nz;
-  q = lr * y[211];
-  out_grad[211][0] = -10.6196882f * r[182] + 6.47216261f * r[184] - q * nx;
-  out_grad[211][1] = 6.47216261f * r[180] - q * ny;
-  out_grad[211][2] = 14.4721956f * r[183] - q * nz;
-  q = lr * y[212];
-  out_grad[212][0] = -8.02772972f * r[183] + 5.9535237f * r[185] - q * nx;
-  out_grad[212][1] = 8.02772972f * r[181] + 5.9535237f * r[179] - q * ny;
-  out_grad[212][2] = 14.3604395f * r[184] - q * nz;
-  q = lr * y[213];
-  out_grad[213][0] = -8.5461709f * r[184] + 5.43479871f * r[186] - q * nx;
-  out_grad[213][1] = 8.5461709f * r[180] + 5.43479871f * r[178] - q * ny;
-  out_grad[213][2] = 14.1722211f * r[185] - q * nz;
-  q = lr * y[214];
-  out_grad[214][0] = -9.06458309f * r[185] + 4.9159604f * r[187] - q * nx;
-  out_grad[214][1] = 9.06458309f * r[179] + 4.9159604f * r[177] - q * ny;
-  out_grad[214][2] = 13.9044357f * r[186] - q * nz;
-  q = lr * y[215];
-  out_grad[215][0] = -9.58297101f * r[186] + 4.39696865f * r[188] - q * nx;
-  out_grad[215][1] = 9.58297101f * r[178] + 4.39696865f * r[176] - q * ny;
-  out_grad[215][2] = 13.5523676f * r[187] - q * nz;
-  q = lr * y[216];
-  out_grad[216][0] = -10.1013384f * r[187] + 3.87776186f * r[189] - q * nx;
-  out_grad[216][1] = 10.1013384f * r[177] + 3.87776186f * r[175] - q * ny;
-  out_grad[216][2] = 13.1092277f * r[188] - q * nz;
-  q = lr * y[217];
-  out_grad[217][0] = -10.6196882f * r[188] + 3.35824028f * r[190] - q * nx;
-  out_grad[217][1] = 10.6196882f * r[176] + 3.35824028f * r[174] - q * ny;
-  out_grad[217][2] = 12.5653845f * r[189] - q * nz;
-  q = lr * y[218];
-  out_grad[218][0] = -11.138023f * r[189] + 2.83823106f * r[191] - q * nx;
-  out_grad[218][1] = 11.138023f * r[175] + 2.83823106f * r[173] - q * ny;
-  out_grad[218][2] = 11.9070474f * r[190] - q * nz;
-  q = lr * y[219];
-  out_grad[219][0] = -11.6563446f * r[190] + 2.31740596f * r[192] - q * nx;
-  out_grad[219][1] = 11.6563446f * r[174] + 2.31740596f * r[172] - q * ny;
-  out_grad[219][2] = 11.1138885f * r[191] - q * nz;
-  q = lr * y[220];
-  out_grad[220][0] = -12.1746549f * r[191] + 1.79505494f * r[193] - q * nx;
-  out_grad[220][1] = 12.1746549f * r[173] + 1.79505494f * r[171] - q * ny;
-  out_grad[220][2] = 10.1543641f * r[192] - q * nz;
-  q = lr * y[221];
-  out_grad[221][0] = -12.6929552f * r[192] + 1.26929552f * r[194] - q * nx;
-  out_grad[221][1] = 12.6929552f * r[172] + 1.26929552f * r[170] - q * ny;
-  out_grad[221][2] = 8.97527468f * r[193] - q * nz;
-  q = lr * y[222];
-  out_grad[222][0] = -13.2112466f * r[193] + 0.732828109f * r[195] - q * nx;
-  out_grad[222][1] = 13.2112466f * r[171] + 0.732828109f * r[169] - q * ny;
-  out_grad[222][2] = 7.47340965f * r[194] - q * nz;
-  q = lr * y[223];
-  out_grad[223][0] = -13.7295302f * r[194] - q * nx;
-  out_grad[223][1] = 13.7295302f * r[170] - q * ny;
-  out_grad[223][2] = 5.38516481f * r[195] - q * nz;
-  q = lr * y[224];
-  out_grad[224][0] = -14.2478068f * r[195] - q * nx;
-  out_grad[224][1] = 14.2478068f * r[169] - q * ny;
-  out_grad[224][2] = -q * nz;
-}
-#endif
-
-#if SHLIGHT_MAX_BANDS >= 16
-void shli_sh_grad_16(float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                     out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[225];
-  float lr;
-  float q;
-  int i;
-  for (i = 0; i < 225; ++i) {
-    r[i] = y[i] * ir;
-  }
-  out_grad[0][0] = 0.0f;
-  out_grad[0][1] = 0.0f;
-  out_grad[0][2] = 0.0f;
-  lr = 1.0f * ir;
-  q = lr * y[1];
-  out_grad[1][0] = -q * nx;
-  out_grad[1][1] = -1.73205081f * r[0] - q * ny;
-  out_grad[1][2] = -q * nz;
-  q = lr * y[2];
-  out_grad[2][0] = -q * nx;
-  out_grad[2][1] = -q * ny;
-  out_grad[2][2] = 1.73205081f * r[0] - q * nz;
-  q = lr * y[3];
-  out_grad[3][0] = -1.73205081f * r[0] - q * nx;
-  out_grad[3][1] = -q * ny;
-  out_grad[3][2] = -q * nz;
-  lr = 2.0f * ir;
-  q = lr * y[4];
-  out_grad[4][0] = -2.23606798f * r[1] - q * nx;
-  out_grad[4][1] = -2.23606798f * r[3] - q * ny;
-  out_grad[4][2] = -q * nz;
-  q = lr * y[5];
-  out_grad[5][0] = -q * nx;
-  out_grad[5][1] = -2.23606798f * r[2] - q * ny;
-  out_grad[5][2] = 2.23606798f * r[1] - q * nz;
-  q = lr * y[6];
-  out_grad[6][0] = 1.29099445f * r[3] - q * nx;
-  out_grad[6][1] = 1.29099445f * r[1] - q * ny;
-  out_grad[6][2] = 2.5819889f * r[2] - q * nz;
-  q = lr * y[7];
-  out_grad[7][0] = -2.23606798f * r[2] - q * nx;
-  out_grad[7][1] = -q * ny;
-  out_grad[7][2] = 2.23606798f * r[3] - q * nz;
-  q = lr * y[8];
-  out_grad[8][0] = -2.23606798f * r[3] - q * nx;
-  out_grad[8][1] = 2.23606798f * r[1] - q * ny;
-  out_grad[8][2] = -q * nz;
-  lr = 3.0f * ir;
-  q = lr * y[9];
-  out_grad[9][0] = -3.24037035f * r[4] - q * nx;
-  out_grad[9][1] = -3.24037035f * r[8] - q * ny;
-  out_grad[9][2] = -q * nz;
-  q = lr * y[10];
-  out_grad[10][0] = -2.64575131f * r[5] - q * nx;
-  out_grad[10][1] = -2.64575131f * r[7] - q * ny;
-  out_grad[10][2] = 2.64575131f * r[4] - q * nz;
-  q = lr * y[11];
-  out_grad[11][0] = 0.836660027f * r[4] - q * nx;
-  out_grad[11][1] = -2.89827535f * r[6] + -0.836660027f * r[8] - q * ny;
-  out_grad[11][2] = 3.34664011f * r[5] - q * nz;
-  q = lr * y[12];
-  out_grad[12][0] = 2.04939015f * r[7] - q * nx;
-  out_grad[12][1] = 2.04939015f * r[5] - q * ny;
-  out_grad[12][2] = 3.54964787f * r[6] - q * nz;
-  q = lr * y[13];
-  out_grad[13][0] = -2.89827535f * r[6] + 0.836660027f * r[8] - q * nx;
-  out_grad[13][1] = 0.836660027f * r[4] - q * ny;
-  out_grad[13][2] = 3.34664011f * r[7] - q * nz;
-  q = lr * y[14];
-  out_grad[14][0] = -2.64575131f * r[7] - q * nx;
-  out_grad[14][1] = 2.64575131f * r[5] - q * ny;
-  out_grad[14][2] = 2.64575131f * r[8] - q * nz;
-  q = lr * y[15];
-  out_grad[15][0] = -3.24037035f * r[8] - q * nx;
-  out_grad[15][1] = 3.24037035f * r[4] - q * ny;
-  out_grad[15][2] = -q * nz;
-  lr = 4.0f * ir;
-  q = lr * y[16];
-  out_grad[16][0] = -4.24264069f * r[9] - q * nx;
-  out_grad[16][1] = -4.24264069f * r[15] - q * ny;
-  out_grad[16][2] = -q * nz;
-  q = lr * y[17];
-  out_grad[17][0] = -3.67423461f * r[10] - q * nx;
-  out_grad[17][1] = -3.67423461f * r[14] - q * ny;
-  out_grad[17][2] = 3.0f * r[9] - q * nz;
-  q = lr * y[18];
-  out_grad[18][0] = -3.10529502f * r[11] + 0.801783726f * r[9] - q * nx;
-  out_grad[18][1] = -3.10529502f * r[13] + -0.801783726f * r[15] - q * ny;
-  out_grad[18][2] = 3.92792202f * r[10] - q * nz;
-  q = lr * y[19];
-  out_grad[19][0] = 1.38873015f * r[10] - q * nx;
-  out_grad[19][1] = -3.58568583f * r[12] + -1.38873015f * r[14] - q * ny;
-  out_grad[19][2] = 4.39155033f * r[11] - q * nz;
-  q = lr * y[20];
-  out_grad[20][0] = 2.7774603f * r[13] - q * nx;
-  out_grad[20][1] = 2.7774603f * r[11] - q * ny;
-  out_grad[20][2] = 4.53557368f * r[12] - q * nz;
-  q = lr * y[21];
-  out_grad[21][0] = -3.58568583f * r[12] + 1.38873015f * r[14] - q * nx;
-  out_grad[21][1] = 1.38873015f * r[10] - q * ny;
-  out_grad[21][2] = 4.39155033f * r[13] - q * nz;
-  q = lr * y[22];
-  out_grad[22][0] = -3.10529502f * r[13] + 0.801783726f * r[15] - q * nx;
-  out_grad[22][1] = 3.10529502f * r[11] + 0.801783726f * r[9] - q * ny;
-  out_grad[22][2] = 3.92792202f * r[14] - q * nz;
-  q = lr * y[23];
-  out_grad[23][0] = -3.67423461f * r[14] - q * nx;
-  out_grad[23][1] = 3.67423461f * r[10] - q * ny;
-  out_grad[23][2] = 3.0f * r[15] - q * nz;
-  q = lr * y[24];
-  out_grad[24][0] = -4.24264069f * r[15] - q * nx;
-  out_grad[24][1] = 4.24264069f * r[9] - q * ny;
-  out_grad[24][2] = -q * nz;
-  lr = 5.0f * ir;
-  q = lr * y[25];
-  out_grad[25][0] = -5.24404424f * r[16] - q * nx;
-  out_grad[25][1] = -5.24404424f * r[24] - q * ny;
-  out_grad[25][2] = -q * nz;
-  q = lr * y[26];
-  out_grad[26][0] = -4.69041576f * r[17] - q * nx;
-  out_grad[26][1] = -4.69041576f * r[23] - q * ny;
-  out_grad[26][2] = 3.31662479f * r[16] - q * nz;
-  q = lr * y[27];
-  out_grad[27][0] = -4.13655788f * r[18] + 0.78173596f * r[16] - q * nx;
-  out_grad[27][1] = -4.13655788f * r[22] + -0.78173596f * r[24] - q * ny;
-  out_grad[27][2] = 4.42216639f * r[17] - q * nz;
-  q = lr * y[28];
-  out_grad[28][0] = -3.58236421f * r[19] + 1.3540064f * r[17] - q * nx;
-  out_grad[28][1] = -3.58236421f * r[21] + -1.3540064f * r[23] - q * ny;
-  out_grad[28][2] = 5.06622805f * r[18] - q * nz;
-  q = lr * y[29];
-  out_grad[29][0] = 1.91485422f * r[18] - q * nx;
-  out_grad[29][1] = -4.28174419f * r[20] + -1.91485422f * r[22] - q * ny;
-  out_grad[29][2] = 5.4160256f * r[19] - q * nz;
-  q = lr * y[30];
-  out_grad[30][0] = 3.49602949f * r[21] - q * nx;
-  out_grad[30][1] = 3.49602949f * r[19] - q * ny;
-  out_grad[30][2] = 5.52770798f * r[20] - q * nz;
-  q = lr * y[31];
-  out_grad[31][0] = -4.28174419f * r[20] + 1.91485422f * r[22] - q * nx;
-  out_grad[31][1] = 1.91485422f * r[18] - q * ny;
-  out_grad[31][2] = 5.4160256f * r[21] - q * nz;
-  q = lr * y[32];
-  out_grad[32][0] = -3.58236421f * r[21] + 1.3540064f * r[23] - q * nx;
-  out_grad[32][1] = 3.58236421f * r[19] + 1.3540064f * r[17] - q * ny;
-  out_grad[32][2] = 5.06622805f * r[22] - q * nz;
-  q = lr * y[33];
-  out_grad[33][0] = -4.13655788f * r[22] + 0.78173596f * r[24] - q * nx;
-  out_grad[33][1] = 4.13655788f * r[18] + 0.78173596f * r[16] - q * ny;
-  out_grad[33][2] = 4.42216639f * r[23] - q * nz;
-  q = lr * y[34];
-  out_grad[34][0] = -4.69041576f * r[23] - q * nx;
-  out_grad[34][1] = 4.69041576f * r[17] - q * ny;
-  out_grad[34][2] = 3.31662479f * r[24] - q * nz;
-  q = lr * y[35];
-  out_grad[35][0] = -5.24404424f * r[24] - q * nx;
-  out_grad[35][1] = 5.24404424f * r[16] - q * ny;
-  out_grad[35][2] = -q * nz;
-  lr = 6.0f * ir;
-  q = lr * y[36];
-  out_grad[36][0] = -6.244998f * r[25] - q * nx;
-  out_grad[36][1] = -6.244998f * r[35] - q * ny;
-  out_grad[36][2] = -q * nz;
-  q = lr * y[37];
-  out_grad[37][0] = -5.70087713f * r[26] - q * nx;
-  out_grad[37][1] = -5.70087713f * r[34] - q * ny;
-  out_grad[37][2] = 3.60555128f * r[25] - q * nz;
-  q = lr * y[38];
-  out_grad[38][0] = -5.15663738f * r[27] + 0.768706115f * r[25] - q * nx;
-  out_grad[38][1] = -5.15663738f * r[33] + -0.768706115f * r[35] - q * ny;
-  out_grad[38][2] = 4.86172435f * r[26] - q * nz;
-  q = lr * y[39];
-  out_grad[39][0] = -4.61223669f * r[28] + 1.33143805f * r[26] - q * nx;
-  out_grad[39][1] = -4.61223669f * r[32] + -1.33143805f * r[34] - q * ny;
-  out_grad[39][2] = 5.64881323f * r[27] - q * nz;
-  q = lr * y[40];
-  out_grad[40][0] = -4.06761042f * r[29] + 1.88293774f * r[27] - q * nx;
-  out_grad[40][1] = -4.06761042f * r[31] + -1.88293774f * r[33] - q * ny;
-  out_grad[40][2] = 6.14964892f * r[28] - q * nz;
-  q = lr * y[41];
-  out_grad[41][0] = 2.43086217f * r[28] - q * nx;
-  out_grad[41][1] = -4.981785f * r[30] + -2.43086217f * r[32] - q * ny;
-  out_grad[41][2] = 6.43145678f * r[29] - q * nz;
-  q = lr * y[42];
-  out_grad[42][0] = 4.21037679f * r[31] - q * nx;
-  out_grad[42][1] = 4.21037679f * r[29] - q * ny;
-  out_grad[42][2] = 6.52268768f * r[30] - q * nz;
-  q = lr * y[43];
-  out_grad[43][0] = -4.981785f * r[30] + 2.43086217f * r[32] - q * nx;
-  out_grad[43][1] = 2.43086217f * r[28] - q * ny;
-  out_grad[43][2] = 6.43145678f * r[31] - q * nz;
-  q = lr * y[44];
-  out_grad[44][0] = -4.06761042f * r[31] + 1.88293774f * r[33] - q * nx;
-  out_grad[44][1] = 4.06761042f * r[29] + 1.88293774f * r[27] - q * ny;
-  out_grad[44][2] = 6.14964892f * r[32] - q * nz;
-  q = lr * y[45];
-  out_grad[45][0] = -4.61223669f * r[32] + 1.33143805f * r[34] - q * nx;
-  out_grad[45][1] = 4.61223669f * r[28] + 1.33143805f * r[26] - q * ny;
-  out_grad[45][2] = 5.64881323f * r[33] - q * nz;
-  q = lr * y[46];
-  out_grad[46][0] = -5.15663738f * r[33] + 0.768706115f * r[35] - q * nx;
-  out_grad[46][1] = 5.15663738f * r[27] + 0.768706115f * r[25] - q * ny;
-  out_grad[46][2] = 4.86172435f * r[34] - q * nz;
-  q = lr * y[47];
-  out_grad[47][0] = -5.70087713f * r[34] - q * nx;
-  out_grad[47][1] = 5.70087713f * r[26] - q * ny;
-  out_grad[47][2] = 3.60555128f * r[35] - q * nz;
-  q = lr * y[48];
-  out_grad[48][0] = -6.244998f * r[35] - q * nx;
-  out_grad[48][1] = 6.244998f * r[25] - q * ny;
-  out_grad[48][2] = -q * nz;
-  lr = 7.0f * ir;
-  q = lr * y[49];
-  out_grad[49][0] = -7.24568837f * r[36] - q * nx;
-  out_grad[49][1] = -7.24568837f * r[48] - q * ny;
-  out_grad[49][2] = -q * nz;
-  q = lr * y[50];
-  out_grad[50][0] = -6.70820393f * r[37] - q * nx;
-  out_grad[50][1] = -6.70820393f * r[47] - q * ny;
-  out_grad[50][2] = 3.87298335f * r[36] - q * nz;
-  q = lr * y[51];
-  out_grad[51][0] = -6.17065013f * r[38] + 0.759554525f * r[36] - q * nx;
-  out_grad[51][1] = -6.17065013f * r[46] + -0.759554525f * r[48] - q * ny;
-  out_grad[51][2] = 5.26234812f * r[37] - q * nz;
-  q = lr * y[52];
-  out_grad[52][0] = -5.63300712f * r[39] + 1.31558703f * r[37] - q * nx;
-  out_grad[52][1] = -5.63300712f * r[45] + -1.31558703f * r[47] - q * ny;
-  out_grad[52][2] = 6.17065013f * r[38] - q * nz;
-  q = lr * y[53];
-  out_grad[53][0] = -5.09524665f * r[40] + 1.86052102f * r[38] - q * nx;
-  out_grad[53][1] = -5.09524665f * r[44] + -1.86052102f * r[46] - q * ny;
-  out_grad[53][2] = 6.7936622f * r[39] - q * nz;
-  q = lr * y[54];
-  out_grad[54][0] = -4.55732715f * r[41] + 2.40192231f * r[39] - q * nx;
-  out_grad[54][1] = -4.55732715f * r[43] + -2.40192231f * r[45] - q * ny;
-  out_grad[54][2] = 7.20576692f * r[40] - q * nz;
-  q = lr * y[55];
-  out_grad[55][0] = 2.94174203f * r[40] - q * nx;
-  out_grad[55][1] = -5.6839856f * r[42] + -2.94174203f * r[44] - q * ny;
-  out_grad[55][2] = 7.44208408f * r[41] - q * nz;
-  q = lr * y[56];
-  out_grad[56][0] = 4.92247592f * r[43] - q * nx;
-  out_grad[56][1] = 4.92247592f * r[41] - q * ny;
-  out_grad[56][2] = 7.51920618f * r[42] - q * nz;
-  q = lr * y[57];
-  out_grad[57][0] = -5.6839856f * r[42] + 2.94174203f * r[44] - q * nx;
-  out_grad[57][1] = 2.94174203f * r[40] - q * ny;
-  out_grad[57][2] = 7.44208408f * r[43] - q * nz;
-  q = lr * y[58];
-  out_grad[58][0] = -4.55732715f * r[43] + 2.40192231f * r[45] - q * nx;
-  out_grad[58][1] = 4.55732715f * r[41] + 2.40192231f * r[39] - q * ny;
-  out_grad[58][2] = 7.20576692f * r[44] - q * nz;
-  q = lr * y[59];
-  out_grad[59][0] = -5.09524665f * r[44] + 1.86052102f * r[46] - q * nx;
-  out_grad[59][1] = 5.09524665f * r[40] + 1.86052102f * r[38] - q * ny;
-  out_grad[59][2] = 6.7936622f * r[45] - q * nz;
-  q = lr * y[60];
-  out_grad[60][0] = -5.63300712f * r[45] + 1.31558703f * r[47] - q * nx;
-  out_grad[60][1] = 5.63300712f * r[39] + 1.31558703f * r[37] - q * ny;
-  out_grad[60][2] = 6.17065013f * r[46] - q * nz;
-  q = lr * y[61];
-  out_grad[61][0] = -6.17065013f * r[46] + 0.759554525f * r[48] - q * nx;
-  out_grad[61][1] = 6.17065013f * r[38] + 0.759554525f * r[36] - q * ny;
-  out_grad[61][2] = 5.26234812f * r[47] - q * nz;
-  q = lr * y[62];
-  out_grad[62][0] = -6.70820393f * r[47] - q * nx;
-  out_grad[62][1] = 6.70820393f * r[37] - q * ny;
-  out_grad[62][2] = 3.87298335f * r[48] - q * nz;
-  q = lr * y[63];
-  out_grad[63][0] = -7.24568837f * r[48] - q * nx;
-  out_grad[63][1] = 7.24568837f * r[36] - q * ny;
-  out_grad[63][2] = -q * nz;
-  lr = 8.0f * ir;
-  q = lr * y[64];
-  out_grad[64][0] = -8.24621125f * r[49] - q * nx;
-  out_grad[64][1] = -8.24621125f * r[63] - q * ny;
-  out_grad[64][2] = -q * nz;
-  q = lr * y[65];
-  out_grad[65][0] = -7.71362431f * r[50] - q * nx;
-  out_grad[65][1] = -7.71362431f * r[62] - q * ny;
-  out_grad[65][2] = 4.12310563f * r[49] - q * nz;
-  q = lr * y[66];
-  out_grad[66][0] = -7.18099343f * r[51] + 0.752772653f * r[49] - q * nx;
-  out_grad[66][1] = -7.18099343f * r[61] + -0.752772653f * r[63] - q * ny;
-  out_grad[66][2] = 5.63323471f * r[50] - q * nz;
-  q = lr * y[67];
-  out_grad[67][0] = -6.64830806f * r[52] + 1.30384048f * r[50] - q * nx;
-  out_grad[67][1] = -6.64830806f * r[60] + -1.30384048f * r[62] - q * ny;
-  out_grad[67][2] = 6.64830806f * r[51] - q * nz;
-  q = lr * y[68];
-  out_grad[68][0] = -6.11555394f * r[53] + 1.84390889f * r[51] - q * nx;
-  out_grad[68][1] = -6.11555394f * r[59] + -1.84390889f * r[61] - q * ny;
-  out_grad[68][2] = 7.37563557f * r[52] - q * nz;
-  q = lr * y[69];
-  out_grad[69][0] = -5.58271141f * r[54] + 2.38047614f * r[52] - q * nx;
-  out_grad[69][1] = -5.58271141f * r[58] + -2.38047614f * r[60] - q * ny;
-  out_grad[69][2] = 7.89514619f * r[53] - q * nz;
-  q = lr * y[70];
-  out_grad[70][0] = -5.04975247f * r[55] + 2.91547595f * r[53] - q * nx;
-  out_grad[70][1] = -5.04975247f * r[57] + -2.91547595f * r[59] - q * ny;
-  out_grad[70][2] = 8.24621125f * r[54] - q * nz;
-  q = lr * y[71];
-  out_grad[71][0] = 3.44963766f * r[54] - q * nx;
-  out_grad[71][1] = -6.38748777f * r[56] + -3.44963766f * r[58] - q * ny;
-  out_grad[71][2] = 8.44985207f * r[55] - q * nz;
-  q = lr * y[72];
-  out_grad[72][0] = 5.63323471f * r[57] - q * nx;
-  out_grad[72][1] = 5.63323471f * r[55] - q * ny;
-  out_grad[72][2] = 8.51665036f * r[56] - q * nz;
-  q = lr * y[73];
-  out_grad[73][0] = -6.38748777f * r[56] + 3.44963766f * r[58] - q * nx;
-  out_grad[73][1] = 3.44963766f * r[54] - q * ny;
-  out_grad[73][2] = 8.44985207f * r[57] - q * nz;
-  q = lr * y[74];
-  out_grad[74][0] = -5.04975247f * r[57] + 2.91547595f * r[59] - q * nx;
-  out_grad[74][1] = 5.04975247f * r[55] + 2.91547595f * r[53] - q * ny;
-  out_grad[74][2] = 8.24621125f * r[58] - q * nz;
-  q = lr * y[75];
-  out_grad[75][0] = -5.58271141f * r[58] + 2.38047614f * r[60] - q * nx;
-  out_grad[75][1] = 5.58271141f * r[54] + 2.38047614f * r[52] - q * ny;
-  out_grad[75][2] = 7.89514619f * r[59] - q * nz;
-  q = lr * y[76];
-  out_grad[76][0] = -6.11555394f * r[59] + 1.84390889f * r[61] - q * nx;
-  out_grad[76][1] = 6.11555394f * r[53] + 1.84390889f * r[51] - q * ny;
-  out_grad[76][2] = 7.37563557f * r[60] - q * nz;
-  q = lr * y[77];
-  out_grad[77][0] = -6.64830806f * r[60] + 1.30384048f * r[62] - q * nx;
-  out_grad[77][1] = 6.64830806f * r[52] + 1.30384048f * r[50] - q * ny;
-  out_grad[77][2] = 6.64830806f * r[61] - q * nz;
-  q = lr * y[78];
-  out_grad[78][0] = -7.18099343f * r[61] + 0.752772653f * r[63] - q * nx;
-  out_grad[78][1] = 7.18099343f * r[51] + 0.752772653f * r[49] - q * ny;
-  out_grad[78][2] = 5.63323471f * r[62] - q * nz;
-  q = lr * y[79];
-  out_grad[79][0] = -7.71362431f * r[62] - q * nx;
-  out_grad[79][1] = 7.71362431f * r[50] - q * ny;
-  out_grad[79][2] = 4.12310563f * r[63] - q * nz;
-  q = lr * y[80];
-  out_grad[80][0] = -8.24621125f * r[63] - q * nx;
-  out_grad[80][1] = 8.24621125f * r[49] - q * ny;
-  out_grad[80][2] = -q * nz;
-  lr = 9.0f * ir;
-  q = lr * y[81];
-  out_grad[81][0] = -9.246621f * r[64] - q * nx;
-  out_grad[81][1] = -9.246621f * r[80] - q * ny;
-  out_grad[81][2] = -q * nz;
-  q = lr * y[82];
-  out_grad[82][0] = -8.71779789f * r[65] - q * nx;
-  out_grad[82][1] = -8.71779789f * r[79] - q * ny;
-  out_grad[82][2] = 4.35889894f * r[64] - q * nz;
-  q = lr * y[83];
-  out_grad[83][0] = -8.1889452f * r[66] + 0.747545002f * r[64] - q * nx;
-  out_grad[83][1] = -8.1889452f * r[78] + -0.747545002f * r[80] - q * ny;
-  out_grad[83][2] = 5.98036001f * r[65] - q * nz;
-  q = lr * y[84];
-  out_grad[84][0] = -7.66005683f * r[67] + 1.29478592f * r[65] - q * nx;
-  out_grad[84][1] = -7.66005683f * r[77] + -1.29478592f * r[79] - q * ny;
-  out_grad[84][2] = 7.09183458f * r[66] - q * nz;
-  q = lr * y[85];
-  out_grad[85][0] = -7.13112482f * r[68] + 1.83110381f * r[66] - q * nx;
-  out_grad[85][1] = -7.13112482f * r[76] + -1.83110381f * r[78] - q * ny;
-  out_grad[85][2] = 7.91127267f * r[67] - q * nz;
-  q = lr * y[86];
-  out_grad[86][0] = -6.60213869f * r[69] + 2.36394486f * r[67] - q * nx;
-  out_grad[86][1] = -6.60213869f * r[75] + -2.36394486f * r[77] - q * ny;
-  out_grad[86][2] = 8.5233244f * r[68] - q * nz;
-  q = lr * y[87];
-  out_grad[87][0] = -6.0730843f * r[70] + 2.89522934f * r[68] - q * nx;
-  out_grad[87][1] = -6.0730843f * r[74] + -2.89522934f * r[76] - q * ny;
-  out_grad[87][2] = 8.97054002f * r[69] - q * nz;
-  q = lr * y[88];
-  out_grad[88][0] = -5.54394211f * r[71] + 3.42568156f * r[69] - q * nx;
-  out_grad[88][1] = -5.54394211f * r[73] + -3.42568156f * r[75] - q * ny;
-  out_grad[88][2] = 9.27678951f * r[70] - q * nz;
-  q = lr * y[89];
-  out_grad[89][0] = 3.95563634f * r[70] - q * nx;
-  out_grad[89][1] = -7.09183458f * r[72] + -3.95563634f * r[74] - q * ny;
-  out_grad[89][2] = 9.45577943f * r[71] - q * nz;
-  q = lr * y[90];
-  out_grad[90][0] = 6.34312968f * r[73] - q * nx;
-  out_grad[90][1] = 6.34312968f * r[71] - q * ny;
-  out_grad[90][2] = 9.51469452f * r[72] - q * nz;
-  q = lr * y[91];
-  out_grad[91][0] = -7.09183458f * r[72] + 3.95563634f * r[74] - q * nx;
-  out_grad[91][1] = 3.95563634f * r[70] - q * ny;
-  out_grad[91][2] = 9.45577943f * r[73] - q * nz;
-  q = lr * y[92];
-  out_grad[92][0] = -5.54394211f * r[73] + 3.42568156f * r[75] - q * nx;
-  out_grad[92][1] = 5.54394211f * r[71] + 3.42568156f * r[69] - q * ny;
-  out_grad[92][2] = 9.27678951f * r[74] - q * nz;
-  q = lr * y[93];
-  out_grad[93][0] = -6.0730843f * r[74] + 2.89522934f * r[76] - q * nx;
-  out_grad[93][1] = 6.0730843f * r[70] + 2.89522934f * r[68] - q * ny;
-  out_grad[93][2] = 8.97054002f * r[75] - q * nz;
-  q = lr * y[94];
-  out_grad[94][0] = -6.60213869f * r[75] + 2.36394486f * r[77] - q * nx;
-  out_grad[94][1] = 6.60213869f * r[69] + 2.36394486f * r[67] - q * ny;
-  out_grad[94][2] = 8.5233244f * r[76] - q * nz;
-  q = lr * y[95];
-  out_grad[95][0] = -7.13112482f * r[76] + 1.83110381f * r[78] - q * nx;
-  out_grad[95][1] = 7.13112482f * r[68] + 1.83110381f * r[66] - q * ny;
-  out_grad[95][2] = 7.91127267f * r[77] - q * nz;
-  q = lr * y[96];
-  out_grad[96][0] = -7.66005683f * r[77] + 1.29478592f * r[79] - q * nx;
-  out_grad[96][1] = 7.66005683f * r[67] + 1.29478592f * r[65] - q * ny;
-  out_grad[96][2] = 7.09183458f * r[78] - q * nz;
-  q = lr * y[97];
-  out_grad[97][0] = -8.1889452f * r[78] + 0.747545002f * r[80] - q * nx;
-  out_grad[97][1] = 8.1889452f * r[66] + 0.747545002f * r[64] - q * ny;
-  out_grad[97][2] = 5.98036001f * r[79] - q * nz;
-  q = lr * y[98];
-  out_grad[98][0] = -8.71779789f * r[79] - q * nx;
-  out_grad[98][1] = 8.71779789f * r[65] - q * ny;
-  out_grad[98][2] = 4.35889894f * r[80] - q * nz;
-  q = lr * y[99];
-  out_grad[99][0] = -9.246621f * r[80] - q * nx;
-  out_grad[99][1] = 9.246621f * r[64] - q * ny;
-  out_grad[99][2] = -q * nz;
-  lr = 10.0f * ir;
-  q = lr * y[100];
-  out_grad[100][0] = -10.2469508f * r[81] - q * nx;
-  out_grad[100][1] = -10.2469508f * r[99] - q * ny;
-  out_grad[100][2] = -q * nz;
-  q = lr * y[101];
-  out_grad[101][0] = -9.72111105f * r[82] - q * nx;
-  out_grad[101][1] = -9.72111105f * r[98] - q * ny;
-  out_grad[101][2] = 4.58257569f * r[81] - q * nz;
-  q = lr * y[102];
-  out_grad[102][0] = -9.19525049f * r[83] + 0.743391942f * r[81] - q * nx;
-  out_grad[102][1] = -9.19525049f * r[97] + -0.743391942f * r[99] - q * ny;
-  out_grad[102][2] = 6.3078898f * r[82] - q * nz;
-  q = lr * y[103];
-  out_grad[103][0] = -8.6693653f * r[84] + 1.28759261f * r[82] - q * nx;
-  out_grad[103][1] = -8.6693653f * r[96] + -1.28759261f * r[98] - q * ny;
-  out_grad[103][2] = 7.50789059f * r[83] - q * nz;
-  q = lr * y[104];
-  out_grad[104][0] = -8.14345071f * r[85] + 1.82093094f * r[83] - q * nx;
-  out_grad[104][1] = -8.14345071f * r[95] + -1.82093094f * r[97] - q * ny;
-  out_grad[104][2] = 8.41051973f * r[84] - q * nz;
-  q = lr * y[105];
-  out_grad[105][0] = -7.61750063f * r[86] + 2.35081173f * r[84] - q * nx;
-  out_grad[105][1] = -7.61750063f * r[94] + -2.35081173f * r[96] - q * ny;
-  out_grad[105][2] = 9.10465468f * r[85] - q * nz;
-  q = lr * y[106];
-  out_grad[106][0] = -7.09150715f * r[87] + 2.87914461f * r[85] - q * nx;
-  out_grad[106][1] = -7.09150715f * r[93] + -2.87914461f * r[95] - q * ny;
-  out_grad[106][2] = 9.63546082f * r[86] - q * nz;
-  q = lr * y[107];
-  out_grad[107][0] = -6.56545986f * r[88] + 3.40664984f * r[86] - q * nx;
-  out_grad[107][1] = -6.56545986f * r[92] + -3.40664984f * r[94] - q * ny;
-  out_grad[107][2] = 10.0289056f * r[87] - q * nz;
-  q = lr * y[108];
-  out_grad[108][0] = -6.03934468f * r[89] + 3.93366041f * r[87] - q * nx;
-  out_grad[108][1] = -6.03934468f * r[91] + -3.93366041f * r[93] - q * ny;
-  out_grad[108][2] = 10.3007409f * r[88] - q * nz;
-  q = lr * y[109];
-  out_grad[109][0] = 4.46035165f * r[88] - q * nx;
-  out_grad[109][1] = -7.79676046f * r[90] + -4.46035165f * r[92] - q * ny;
-  out_grad[109][2] = 10.4604518f * r[89] - q * nz;
-  q = lr * y[110];
-  out_grad[110][0] = 7.05243519f * r[91] - q * nx;
-  out_grad[110][1] = 7.05243519f * r[89] - q * ny;
-  out_grad[110][2] = 10.5131497f * r[90] - q * nz;
-  q = lr * y[111];
-  out_grad[111][0] = -7.79676046f * r[90] + 4.46035165f * r[92] - q * nx;
-  out_grad[111][1] = 4.46035165f * r[88] - q * ny;
-  out_grad[111][2] = 10.4604518f * r[91] - q * nz;
-  q = lr * y[112];
-  out_grad[112][0] = -6.03934468f * r[91] + 3.93366041f * r[93] - q * nx;
-  out_grad[112][1] = 6.03934468f * r[89] + 3.93366041f * r[87] - q * ny;
-  out_grad[112][2] = 10.3007409f * r[92] - q * nz;
-  q = lr * y[113];
-  out_grad[113][0] = -6.56545986f * r[92] + 3.40664984f * r[94] - q * nx;
-  out_grad[113][1] = 6.56545986f * r[88] + 3.40664984f * r[86] - q * ny;
-  out_grad[113][2] = 10.0289056f * r[93] - q * nz;
-  q = lr * y[114];
-  out_grad[114][0] = -7.09150715f * r[93] + 2.87914461f * r[95] - q * nx;
-  out_grad[114][1] = 7.09150715f * r[87] + 2.87914461f * r[85] - q * ny;
-  out_grad[114][2] = 9.63546082f * r[94] - q * nz;
-  q = lr * y[115];
-  out_grad[115][0] = -7.61750063f * r[94] + 2.35081173f * r[96] - q * nx;
-  out_grad[115][1] = 7.61750063f * r[86] + 2.35081173f * r[84] - q * ny;
-  out_grad[115][2] = 9.10465468f * r[95] - q * nz;
-  q = lr * y[116];
-  out_grad[116][0] = -8.14345071f * r[95] + 1.82093094f * r[97] - q * nx;
-  out_grad[116][1] = 8.14345071f * r[85] + 1.82093094f * r[83] - q * ny;
-  out_grad[116][2] = 8.41051973f * r[96] - q * nz;
-  q = lr * y[117];
-  out_grad[117][0] = -8.6693653f * r[96] + 1.28759261f * r[98] - q * nx;
-  out_grad[117][1] = 8.6693653f * r[84] + 1.28759261f * r[82] - q * ny;
-  out_grad[117][2] = 7.50789059f * r[97] - q * nz;
-  q = lr * y[118];
-  out_grad[118][0] = -9.19525049f * r[97] + 0.743391942f * r[99] - q * nx;
-  out_grad[118][1] = 9.19525049f * r[83] + 0.743391942f * r[81] - q * ny;
-  out_grad[118][2] = 6.3078898f * r[98] - q * nz;
-  q = lr * y[119];
-  out_grad[119][0] = -9.72111105f * r[98] - q * nx;
-  out_grad[119][1] = 9.72111105f * r[82] - q * ny;
-  out_grad[119][2] = 4.58257569f * r[99] - q * nz;
-  q = lr * y[120];
-  out_grad[120][0] = -10.2469508f * r[99] - q * nx;
-  out_grad[120][1] = 10.2469508f * r[81] - q * ny;
-  out_grad[120][2] = -q * nz;
-  lr = 11.0f * ir;
-  q = lr * y[121];
-  out_grad[121][0] = -11.2472219f * r[100] - q * nx;
-  out_grad[121][1] = -11.2472219f * r[120] - q * ny;
-  out_grad[121][2] = -q * nz;
-  q = lr * y[122];
-  out_grad[122][0] = -10.7238053f * r[101] - q * nx;
-  out_grad[122][1] = -10.7238053f * r[119] - q * ny;
-  out_grad[122][2] = 4.79583152f * r[100] - q * nz;
-  q = lr * y[123];
-  out_grad[123][0] = -10.2003735f * r[102] + 0.74001287f * r[100] - q * nx;
-  out_grad[123][1] = -10.2003735f * r[118] + -0.74001287f * r[120] - q * ny;
-  out_grad[123][2] = 6.61887633f * r[101] - q * nz;
-  q = lr * y[124];
-  out_grad[124][0] = -9.67692395f * r[103] + 1.28173989f * r[101] - q * nx;
-  out_grad[124][1] = -9.67692395f * r[117] + -1.28173989f * r[119] - q * ny;
-  out_grad[124][2] = 7.90117532f * r[102] - q * nz;
-  q = lr * y[125];
-  out_grad[125][0] = -9.15345368f * r[104] + 1.81265393f * r[102] - q * nx;
-  out_grad[125][1] = -9.15345368f * r[116] + -1.81265393f * r[118] - q * ny;
-  out_grad[125][2] = 8.88015444f * r[103] - q * nz;
-  q = lr * y[126];
-  out_grad[126][0] = -8.62995889f * r[105] + 2.34012617f * r[103] - q * nx;
-  out_grad[126][1] = -8.62995889f * r[115] + -2.34012617f * r[117] - q * ny;
-  out_grad[126][2] = 9.64858736f * r[104] - q * nz;
-  q = lr * y[127];
-  out_grad[127][0] = -8.10643483f * r[106] + 2.86605752f * r[104] - q * nx;
-  out_grad[127][1] = -8.10643483f * r[114] + -2.86605752f * r[116] - q * ny;
-  out_grad[127][2] = 10.2539191f * r[105] - q * nz;
-  q = lr * y[128];
-  out_grad[128][0] = -7.58287544f * r[107] + 3.39116499f * r[105] - q * nx;
-  out_grad[128][1] = -7.58287544f * r[113] + -3.39116499f * r[115] - q * ny;
-  out_grad[128][2] = 10.7238053f * r[106] - q * nz;
-  q = lr * y[129];
-  out_grad[129][0] = -7.05927286f * r[108] + 3.91578004f * r[106] - q * nx;
-  out_grad[129][1] = -7.05927286f * r[112] + -3.91578004f * r[114] - q * ny;
-  out_grad[129][2] = 11.0754985f * r[107] - q * nz;
-  q = lr * y[130];
-  out_grad[130][0] = -6.5356167f * r[109] + 4.44007722f * r[107] - q * nx;
-  out_grad[130][1] = -6.5356167f * r[111] + -4.44007722f * r[113] - q * ny;
-  out_grad[130][2] = 11.3200202f * r[108] - q * nz;
-  q = lr * y[131];
-  out_grad[131][0] = 4.96415724f * r[108] - q * nx;
-  out_grad[131][1] = -8.50210058f * r[110] + -4.96415724f * r[112] - q * ny;
-  out_grad[131][2] = 11.4642301f * r[109] - q * nz;
-  q = lr * y[132];
-  out_grad[132][0] = 7.76132046f * r[111] - q * nx;
-  out_grad[132][1] = 7.76132046f * r[109] - q * ny;
-  out_grad[132][2] = 11.5118986f * r[110] - q * nz;
-  q = lr * y[133];
-  out_grad[133][0] = -8.50210058f * r[110] + 4.96415724f * r[112] - q * nx;
-  out_grad[133][1] = 4.96415724f * r[108] - q * ny;
-  out_grad[133][2] = 11.4642301f * r[111] - q * nz;
-  q = lr * y[134];
-  out_grad[134][0] = -6.5356167f * r[111] + 4.44007722f * r[113] - q * nx;
-  out_grad[134][1] = 6.5356167f * r[109] + 4.44007722f * r[107] - q * ny;
-  out_grad[134][2] = 11.3200202f * r[112] - q * nz;
-  q = lr * y[135];
-  out_grad[135][0] = -7.05927286f * r[112] + 3.91578004f * r[114] - q * nx;
-  out_grad[135][1] = 7.05927286f * r[108] + 3.91578004f * r[106] - q * ny;
-  out_grad[135][2] = 11.0754985f * r[113] - q * nz;
-  q = lr * y[136];
-  out_grad[136][0] = -7.58287544f * r[113] + 3.39116499f * r[115] - q * nx;
-  out_grad[136][1] = 7.58287544f * r[107] + 3.39116499f * r[105] - q * ny;
-  out_grad[136][2] = 10.7238053f * r[114] - q * nz;
-  q = lr * y[137];
-  out_grad[137][0] = -8.10643483f * r[114] + 2.86605752f * r[116] - q * nx;
-  out_grad[137][1] = 8.10643483f * r[106] + 2.86605752f * r[104] - q * ny;
-  out_grad[137][2] = 10.2539191f * r[115] - q * nz;
-  q = lr * y[138];
-  out_grad[138][0] = -8.62995889f * r[115] + 2.34012617f * r[117] - q * nx;
-  out_grad[138][1] = 8.62995889f * r[105] + 2.34012617f * r[103] - q * ny;
-  out_grad[138][2] = 9.64858736f * r[116] - q * nz;
-  q = lr * y[139];
-  out_grad[139][0] = -9.15345368f * r[116] + 1.81265393f * r[118] - q * nx;
-  out_grad[139][1] = 9.15345368f * r[104] + 1.81265393f * r[102] - q * ny;
-  out_grad[139][2] = 8.88015444f * r[117] - q * nz;
-  q = lr * y[140];
-  out_grad[140][0] = -9.67692395f * r[117] + 1.28173989f * r[119] - q * nx;
-  out_grad[140][1] = 9.67692395f * r[103] + 1.28173989f * r[101] - q * ny;
-  out_grad[140][2] = 7.90117532f * r[118] - q * nz;
-  q = lr * y[141];
-  out_grad[141][0] = -10.2003735f * r[118] + 0.74001287f * r[120] - q * nx;
-  out_grad[141][1] = 10.2003735f * r[102] + 0.74001287f * r[100] - q * ny;
-  out_grad[141][2] = 6.61887633f * r[119] - q * nz;
-  q = lr * y[142];
-  out_grad[142][0] = -10.7238053f * r[119] - q * nx;
-  out_grad[142][1] = 10.7238053f * r[101] - q * ny;
-  out_grad[142][2] = 4.79583152f * r[120] - q * nz;
-  q = lr * y[143];
-  out_grad[143][0] = -11.2472219f * r[120] - q * nx;
-  out_grad[143][1] = 11.2472219f * r[100] - q * ny;
-  out_grad[143][2] = -q * nz;
-  lr = 12.0f * ir;
-  q = lr * y[144];
-  out_grad[144][0] = -12.2474487f * r[121] - q * nx;
-  out_grad[144][1] = -12.2474487f * r[143] - q * ny;
-  out_grad[144][2] = -q * nz;
-  q = lr * y[145];
-  out_grad[145][0] = -11.7260394f * r[122] - q * nx;
-  out_grad[145][1] = -11.7260394f * r[142] - q * ny;
-  out_grad[145][2] = 5.0f * r[121] - q * nz;
-  q = lr * y[146];
-  out_grad[146][0] = -11.2046186f * r[123] + 0.737209781f * r[121] - q * nx;
-  out_grad[146][1] = -11.2046186f * r[141] + -0.737209781f * r[143] - q * ny;
-  out_grad[146][2] = 6.91564075f * r[122] - q * nz;
-  q = lr * y[147];
-  out_grad[147][0] = -10.6831847f * r[124] + 1.2768848f * r[122] - q * nx;
-  out_grad[147][1] = -10.6831847f * r[140] + -1.2768848f * r[142] - q * ny;
-  out_grad[147][2] = 8.27515927f * r[123] - q * nz;
-  q = lr * y[148];
-  out_grad[148][0] = -10.1617356f * r[125] + 1.8057878f * r[123] - q * nx;
-  out_grad[148][1] = -10.1617356f * r[139] + -1.8057878f * r[141] - q * ny;
-  out_grad[148][2] = 9.32504808f * r[124] - q * nz;
-  q = lr * y[149];
-  out_grad[149][0] = -9.6402688f * r[126] + 2.33126202f * r[124] - q * nx;
-  out_grad[149][1] = -9.6402688f * r[138] + -2.33126202f * r[140] - q * ny;
-  out_grad[149][2] = 10.1617356f * r[125] - q * nz;
-  q = lr * y[150];
-  out_grad[150][0] = -9.11878138f * r[127] + 2.8552012f * r[125] - q * nx;
-  out_grad[150][1] = -9.11878138f * r[137] + -2.8552012f * r[139] - q * ny;
-  out_grad[150][2] = 10.8347268f * r[126] - q * nz;
-  q = lr * y[151];
-  out_grad[151][0] = -8.59726954f * r[128] + 3.37831962f * r[126] - q * nx;
-  out_grad[151][1] = -8.59726954f * r[136] + -3.37831962f * r[138] - q * ny;
-  out_grad[151][2] = 11.3731186f * r[127] - q * nz;
-  q = lr * y[152];
-  out_grad[152][0] = -8.07572853f * r[129] + 3.90094749f * r[127] - q * nx;
-  out_grad[152][1] = -8.07572853f * r[135] + -3.90094749f * r[137] - q * ny;
-  out_grad[152][2] = 11.7953565f * r[128] - q * nz;
-  q = lr * y[153];
-  out_grad[153][0] = -7.55415233f * r[130] + 4.42325868f * r[128] - q * nx;
-  out_grad[153][1] = -7.55415233f * r[134] + -4.42325868f * r[136] - q * ny;
-  out_grad[153][2] = 12.1135928f * r[129] - q * nz;
-  q = lr * y[154];
-  out_grad[154][0] = -7.0325331f * r[131] + 4.94535355f * r[129] - q * nx;
-  out_grad[154][1] = -7.0325331f * r[133] + -4.94535355f * r[135] - q * ny;
-  out_grad[154][2] = 12.3358791f * r[130] - q * nz;
-  q = lr * y[155];
-  out_grad[155][0] = 5.46729406f * r[130] - q * nx;
-  out_grad[155][1] = -9.20774721f * r[132] + -5.46729406f * r[134] - q * ny;
-  out_grad[155][2] = 12.4673487f * r[131] - q * nz;
-  q = lr * y[156];
-  out_grad[156][0] = 8.46989554f * r[133] - q * nx;
-  out_grad[156][1] = 8.46989554f * r[131] - q * ny;
-  out_grad[156][2] = 12.5108648f * r[132] - q * nz;
-  q = lr * y[157];
-  out_grad[157][0] = -9.20774721f * r[132] + 5.46729406f * r[134] - q * nx;
-  out_grad[157][1] = 5.46729406f * r[130] - q * ny;
-  out_grad[157][2] = 12.4673487f * r[133] - q * nz;
-  q = lr * y[158];
-  out_grad[158][0] = -7.0325331f * r[133] + 4.94535355f * r[135] - q * nx;
-  out_grad[158][1] = 7.0325331f * r[131] + 4.94535355f * r[129] - q * ny;
-  out_grad[158][2] = 12.3358791f * r[134] - q * nz;
-  q = lr * y[159];
-  out_grad[159][0] = -7.55415233f * r[134] + 4.42325868f * r[136] - q * nx;
-  out_grad[159][1] = 7.55415233f * r[130] + 4.42325868f * r[128] - q * ny;
-  out_grad[159][2] = 12.1135928f * r[135] - q * nz;
-  q = lr * y[160];
-  out_grad[160][0] = -8.07572853f * r[135] + 3.90094749f * r[137] - q * nx;
-  out_grad[160][1] = 8.07572853f * r[129] + 3.90094749f * r[127] - q * ny;
-  out_grad[160][2] = 11.7953565f * r[136] - q * nz;
-  q = lr * y[161];
-  out_grad[161][0] = -8.59726954f * r[136] + 3.37831962f * r[138] - q * nx;
-  out_grad[161][1] = 8.59726954f * r[128] + 3.37831962f * r[126] - q * ny;
-  out_grad[161][2] = 11.3731186f * r[137] - q * nz;
-  q = lr * y[162];
-  out_grad[162][0] = -9.11878138f * r[137] + 2.8552012f * r[139] - q * nx;
-  out_grad[162][1] = 9.11878138f * r[127] + 2.8552012f * r[125] - q * ny;
-  out_grad[162][2] = 10.8347268f * r[138] - q * nz;
-  q = lr * y[163];
-  out_grad[163][0] = -9.6402688f * r[138] + 2.33126202f * r[140] - q * nx;
-  out_grad[163][1] = 9.6402688f * r[126] + 2.33126202f * r[124] - q * ny;
-  out_grad[163][2] = 10.1617356f * r[139] - q * nz;
-  q = lr * y[164];
-  out_grad[164][0] = -10.1617356f * r[139] + 1.8057878f * r[141] - q * nx;
-  out_grad[164][1] = 10.1617356f * r[125] + 1.8057878f * r[123] - q * ny;
-  out_grad[164][2] = 9.32504808f * r[140] - q * nz;
-  q = lr * y[165];
-  out_grad[165][0] = -10.6831847f * r[140] + 1.2768848f * r[142] - q * nx;
-  out_grad[165][1] = 10.6831847f * r[124] + 1.2768848f * r[122] - q * ny;
-  out_grad[165][2] = 8.27515927f * r[141] - q * nz;
-  q = lr * y[166];
-  out_grad[166][0] = -11.2046186f * r[141] + 0.737209781f * r[143] - q * nx;
-  out_grad[166][1] = 11.2046186f * r[123] + 0.737209781f * r[121] - q * ny;
-  out_grad[166][2] = 6.91564075f * r[142] - q * nz;
-  q = lr * y[167];
-  out_grad[167][0] = -11.7260394f * r[142] - q * nx;
-  out_grad[167][1] = 11.7260394f * r[122] - q * ny;
-  out_grad[167][2] = 5.0f * r[143] - q * nz;
-  q = lr * y[168];
-  out_grad[168][0] = -12.2474487f * r[143] - q * nx;
-  out_grad[168][1] = 12.2474487f * r[121] - q * ny;
-  out_grad[168][2] = -q * nz;
-  lr = 13.0f * ir;
-  q = lr * y[169];
-  out_grad[169][0] = -13.2476413f * r[144] - q * nx;
-  out_grad[169][1] = -13.2476413f * r[168] - q * ny;
-  out_grad[169][2] = -q * nz;
-  q = lr * y[170];
-  out_grad[170][0] = -12.7279221f * r[145] - q * nx;
-  out_grad[170][1] = -12.7279221f * r[167] - q * ny;
-  out_grad[170][2] = 5.19615242f * r[144] - q * nz;
-  q = lr * y[171];
-  out_grad[171][0] = -12.208194f * r[146] + 0.734846923f * r[144] - q * nx;
-  out_grad[171][1] = -12.208194f * r[166] + -0.734846923f * r[168] - q * ny;
-  out_grad[171][2] = 7.2f * r[145] - q * nz;
-  q = lr * y[172];
-  out_grad[172][0] = -11.6884558f * r[147] + 1.27279221f * r[145] - q * nx;
-  out_grad[172][1] = -11.6884558f * r[165] + -1.27279221f * r[167] - q * ny;
-  out_grad[172][2] = 8.63249674f * r[146] - q * nz;
-  q = lr * y[173];
-  out_grad[173][0] = -11.1687063f * r[148] + 1.8f * r[146] - q * nx;
-  out_grad[173][1] = -11.1687063f * r[164] + -1.8f * r[166] - q * ny;
-  out_grad[173][2] = 9.74884609f * r[147] - q * nz;
-  q = lr * y[174];
-  out_grad[174][0] = -10.6489436f * r[149] + 2.32379001f * r[147] - q * nx;
-  out_grad[174][1] = -10.6489436f * r[163] + -2.32379001f * r[165] - q * ny;
-  out_grad[174][2] = 10.6489436f * r[148] - q * nz;
-  q = lr * y[175];
-  out_grad[175][0] = -10.1291658f * r[150] + 2.84604989f * r[148] - q * nx;
-  out_grad[175][1] = -10.1291658f * r[162] + -2.84604989f * r[164] - q * ny;
-  out_grad[175][2] = 11.3841996f * r[149] - q * nz;
-  q = lr * y[176];
-  out_grad[176][0] = -9.60937043f * r[151] + 3.36749165f * r[149] - q * nx;
-  out_grad[176][1] = -9.60937043f * r[161] + -3.36749165f * r[163] - q * ny;
-  out_grad[176][2] = 11.9849906f * r[150] - q * nz;
-  q = lr * y[177];
-  out_grad[177][0] = -9.08955444f * r[152] + 3.88844442f * r[150] - q * nx;
-  out_grad[177][1] = -9.08955444f * r[160] + -3.88844442f * r[162] - q * ny;
-  out_grad[177][2] = 12.4707658f * r[151] - q * nz;
-  q = lr * y[178];
-  out_grad[178][0] = -8.56971411f * r[153] + 4.40908154f * r[151] - q * nx;
-  out_grad[178][1] = -8.56971411f * r[159] + -4.40908154f * r[161] - q * ny;
-  out_grad[178][2] = 12.8545712f * r[152] - q * nz;
-  q = lr * y[179];
-  out_grad[179][0] = -8.04984472f * r[154] + 4.92950302f * r[152] - q * nx;
-  out_grad[179][1] = -8.04984472f * r[158] + -4.92950302f * r[160] - q * ny;
-  out_grad[179][2] = 13.1453414f * r[153] - q * nz;
-  q = lr * y[180];
-  out_grad[180][0] = -7.52994024f * r[155] + 5.44977064f * r[153] - q * nx;
-  out_grad[180][1] = -7.52994024f * r[157] + -5.44977064f * r[159] - q * ny;
-  out_grad[180][2] = 13.3491573f * r[154] - q * nz;
-  q = lr * y[181];
-  out_grad[181][0] = 5.96992462f * r[154] - q * nx;
-  out_grad[181][1] = -9.91362699f * r[156] + -5.96992462f * r[158] - q * ny;
-  out_grad[181][2] = 13.4699666f * r[155] - q * nz;
-  q = lr * y[182];
-  out_grad[182][0] = 9.17823512f * r[157] - q * nx;
-  out_grad[182][1] = 9.17823512f * r[155] - q * ny;
-  out_grad[182][2] = 13.5099963f * r[156] - q * nz;
-  q = lr * y[183];
-  out_grad[183][0] = -9.91362699f * r[156] + 5.96992462f * r[158] - q * nx;
-  out_grad[183][1] = 5.96992462f * r[154] - q * ny;
-  out_grad[183][2] = 13.4699666f * r[157] - q * nz;
-  q = lr * y[184];
-  out_grad[184][0] = -7.52994024f * r[157] + 5.44977064f * r[159] - q * nx;
-  out_grad[184][1] = 7.52994024f * r[155] + 5.44977064f * r[153] - q * ny;
-  out_grad[184][2] = 13.3491573f * r[158] - q * nz;
-  q = lr * y[185];
-  out_grad[185][0] = -8.04984472f * r[158] + 4.92950302f * r[160] - q * nx;
-  out_grad[185][1] = 8.04984472f * r[154] + 4.92950302f * r[152] - q * ny;
-  out_grad[185][2] = 13.1453414f * r[159] - q * nz;
-  q = lr * y[186];
-  out_grad[186][0] = -8.56971411f * r[159] + 4.40908154f * r[161] - q * nx;
-  out_grad[186][1] = 8.56971411f * r[153] + 4.40908154f * r[151] - q * ny;
-  out_grad[186][2] = 12.8545712f * r[160] - q * nz;
-  q = lr * y[187];
-  out_grad[187][0] = -9.08955444f * r[160] + 3.88844442f * r[162] - q * nx;
-  out_grad[187][1] = 9.08955444f * r[152] + 3.88844442f * r[150] - q * ny;
-  out_grad[187][2] = 12.4707658f * r[161] - q * nz;
-  q = lr * y[188];
-  out_grad[188][0] = -9.60937043f * r[161] + 3.36749165f * r[163] - q * nx;
-  out_grad[188][1] = 9.60937043f * r[151] + 3.36749165f * r[149] - q * ny;
-  out_grad[188][2] = 11.9849906f * r[162] - q * nz;
-  q = lr * y[189];
-  out_grad[189][0] = -10.1291658f * r[162] + 2.84604989f * r[164] - q * nx;
-  out_grad[189][1] = 10.1291658f * r[150] + 2.84604989f * r[148] - q * ny;
-  out_grad[189][2] = 11.3841996f * r[163] - q * nz;
-  q = lr * y[190];
-  out_grad[190][0] = -10.6489436f * r[163] + 2.32379001f * r[165] - q * nx;
-  out_grad[190][1] = 10.6489436f * r[149] + 2.32379001f * r[147] - q * ny;
-  out_grad[190][2] = 10.6489436f * r[164] - q * nz;
-  q = lr * y[191];
-  out_grad[191][0] = -11.1687063f * r[164] + 1.8f * r[166] - q * nx;
-  out_grad[191][1] = 11.1687063f * r[148] + 1.8f * r[146] - q * ny;
-  out_grad[191][2] = 9.74884609f * r[165] - q * nz;
-  q = lr * y[192];
-  out_grad[192][0] = -11.6884558f * r[165] + 1.27279221f * r[167] - q * nx;
-  out_grad[192][1] = 11.6884558f * r[147] + 1.27279221f * r[145] - q * ny;
-  out_grad[192][2] = 8.63249674f * r[166] - q * nz;
-  q = lr * y[193];
-  out_grad[193][0] = -12.208194f * r[166] + 0.734846923f * r[168] - q * nx;
-  out_grad[193][1] = 12.208194f * r[146] + 0.734846923f * r[144] - q * ny;
-  out_grad[193][2] = 7.2f * r[167] - q * nz;
-  q = lr * y[194];
-  out_grad[194][0] = -12.7279221f * r[167] - q * nx;
-  out_grad[194][1] = 12.7279221f * r[145] - q * ny;
-  out_grad[194][2] = 5.19615242f * r[168] - q * nz;
-  q = lr * y[195];
-  out_grad[195][0] = -13.2476413f * r[168] - q * nx;
-  out_grad[195][1] = 13.2476413f * r[144] - q * ny;
-  out_grad[195][2] = -q * nz;
-  lr = 14.0f * ir;
-  q = lr * y[196];
-  out_grad[196][0] = -14.2478068f * r[169] - q * nx;
-  out_grad[196][1] = -14.2478068f * r[195] - q * ny;
-  out_grad[196][2] = -q * nz;
-  q = lr * y[197];
-  out_grad[197][0] = -13.7295302f * r[170] - q * nx;
-  out_grad[197][1] = -13.7295302f * r[194] - q * ny;
-  out_grad[197][2] = 5.38516481f * r[169] - q * nz;
-  q = lr * y[198];
-  out_grad[198][0] = -13.2112466f * r[171] + 0.732828109f * r[169] - q * nx;
-  out_grad[198][1] = -13.2112466f * r[193] + -0.732828109f * r[195] - q * ny;
-  out_grad[198][2] = 7.47340965f * r[170] - q * nz;
-  q = lr * y[199];
-  out_grad[199][0] = -12.6929552f * r[172] + 1.26929552f * r[170] - q * nx;
-  out_grad[199][1] = -12.6929552f * r[192] + -1.26929552f * r[194] - q * ny;
-  out_grad[199][2] = 8.97527468f * r[171] - q * nz;
-  q = lr * y[200];
-  out_grad[200][0] = -12.1746549f * r[173] + 1.79505494f * r[171] - q * nx;
-  out_grad[200][1] = -12.1746549f * r[191] + -1.79505494f * r[193] - q * ny;
-  out_grad[200][2] = 10.1543641f * r[172] - q * nz;
-  q = lr * y[201];
-  out_grad[201][0] = -11.6563446f * r[174] + 2.31740596f * r[172] - q * nx;
-  out_grad[201][1] = -11.6563446f * r[190] + -2.31740596f * r[192] - q * ny;
-  out_grad[201][2] = 11.1138885f * r[173] - q * nz;
-  q = lr * y[202];
-  out_grad[202][0] = -11.138023f * r[175] + 2.83823106f * r[173] - q * nx;
-  out_grad[202][1] = -11.138023f * r[189] + -2.83823106f * r[191] - q * ny;
-  out_grad[202][2] = 11.9070474f * r[174] - q * nz;
-  q = lr * y[203];
-  out_grad[203][0] = -10.6196882f * r[176] + 3.35824028f * r[174] - q * nx;
-  out_grad[203][1] = -10.6196882f * r[188] + -3.35824028f * r[190] - q * ny;
-  out_grad[203][2] = 12.5653845f * r[175] - q * nz;
-  q = lr * y[204];
-  out_grad[204][0] = -10.1013384f * r[177] + 3.87776186f * r[175] - q * nx;
-  out_grad[204][1] = -10.1013384f * r[187] + -3.87776186f * r[189] - q * ny;
-  out_grad[204][2] = 13.1092277f * r[176] - q * nz;
-  q = lr * y[205];
-  out_grad[205][0] = -9.58297101f * r[178] + 4.39696865f * r[176] - q * nx;
-  out_grad[205][1] = -9.58297101f * r[186] + -4.39696865f * r[188] - q * ny;
-  out_grad[205][2] = 13.5523676f * r[177] - q * nz;
-  q = lr * y[206];
-  out_grad[206][0] = -9.06458309f * r[179] + 4.9159604f * r[177] - q * nx;
-  out_grad[206][1] = -9.06458309f * r[185] + -4.9159604f * r[187] - q * ny;
-  out_grad[206][2] = 13.9044357f * r[178] - q * nz;
-  q = lr * y[207];
-  out_grad[207][0] = -8.5461709f * r[180] + 5.43479871f * r[178] - q * nx;
-  out_grad[207][1] = -8.5461709f * r[184] + -5.43479871f * r[186] - q * ny;
-  out_grad[207][2] = 14.1722211f * r[179] - q * nz;
-  q = lr * y[208];
-  out_grad[208][0] = -8.02772972f * r[181] + 5.9535237f * r[179] - q * nx;
-  out_grad[208][1] = -8.02772972f * r[183] + -5.9535237f * r[185] - q * ny;
-  out_grad[208][2] = 14.3604395f * r[180] - q * nz;
-  q = lr * y[209];
-  out_grad[209][0] = 6.47216261f * r[180] - q * nx;
-  out_grad[209][1] = -10.6196882f * r[182] + -6.47216261f * r[184] - q * ny;
-  out_grad[209][2] = 14.4721956f * r[181] - q * nz;
-  q = lr * y[210];
-  out_grad[210][0] = 9.88639169f * r[183] - q * nx;
-  out_grad[210][1] = 9.88639169f * r[181] - q * ny;
-  out_grad[210][2] = 14.5092563f * r[182] - q * nz;
-  q = lr * y[211];
-  out_grad[211][0] = -10.6196882f * r[182] + 6.47216261f * r[184] - q * nx;
-  out_grad[211][1] = 6.47216261f * r[180] - q * ny;
-  out_grad[211][2] = 14.4721956f * r[183] - q * nz;
-  q = lr * y[212];
-  out_grad[212][0] = -8.02772972f * r[183] + 5.9535237f * r[185] - q * nx;
-  out_grad[212][1] = 8.02772972f * r[181] + 5.9535237f * r[179] - q * ny;
-  out_grad[212][2] = 14.3604395f * r[184] - q * nz;
-  q = lr * y[213];
-  out_grad[213][0] = -8.5461709f * r[184] + 5.43479871f * r[186] - q * nx;
-  out_grad[213][1] = 8.5461709f * r[180] + 5.43479871f * r[178] - q * ny;
-  out_grad[213][2] = 14.1722211f * r[185] - q * nz;
-  q = lr * y[214];
-  out_grad[214][0] = -9.06458309f * r[185] + 4.9159604f * r[187] - q * nx;
-  out_grad[214][1] = 9.06458309f * r[179] + 4.9159604f * r[177] - q * ny;
-  out_grad[214][2] = 13.9044357f * r[186] - q * nz;
-  q = lr * y[215];
-  out_grad[215][0] = -9.58297101f * r[186] + 4.39696865f * r[188] - q * nx;
-  out_grad[215][1] = 9.58297101f * r[178] + 4.39696865f * r[176] - q * ny;
-  out_grad[215][2] = 13.5523676f * r[187] - q * nz;
-  q = lr * y[216];
-  out_grad[216][0] = -10.1013384f * r[187] + 3.87776186f * r[189] - q * nx;
-  out_grad[216][1] = 10.1013384f * r[177] + 3.87776186f * r[175] - q * ny;
-  out_grad[216][2] = 13.1092277f * r[188] - q * nz;
-  q = lr * y[217];
-  out_grad[217][0] = -10.6196882f * r[188] + 3.35824028f * r[190] - q * nx;
-  out_grad[217][1] = 10.6196882f * r[176] + 3.35824028f * r[174] - q * ny;
-  out_grad[217][2] = 12.5653845f * r[189] - q * nz;
-  q = lr * y[218];
-  out_grad[218][0] = -11.138023f * r[189] + 2.83823106f * r[191] - q * nx;
-  out_grad[218][1] = 11.138023f * r[175] + 2.83823106f * r[173] - q * ny;
-  out_grad[218][2] = 11.9070474f * r[190] - q * nz;
-  q = lr * y[219];
-  out_grad[219][0] = -11.6563446f * r[190] + 2.31740596f * r[192] - q * nx;
-  out_grad[219][1] = 11.6563446f * r[174] + 2.31740596f * r[172] - q * ny;
-  out_grad[219][2] = 11.1138885f * r[191] - q * nz;
-  q = lr * y[220];
-  out_grad[220][0] = -12.1746549f * r[191] + 1.79505494f * r[193] - q * nx;
-  out_grad[220][1] = 12.1746549f * r[173] + 1.79505494f * r[171] - q * ny;
-  out_grad[220][2] = 10.1543641f * r[192] - q * nz;
-  q = lr * y[221];
-  out_grad[221][0] = -12.6929552f * r[192] + 1.26929552f * r[194] - q * nx;
-  out_grad[221][1] = 12.6929552f * r[172] + 1.26929552f * r[170] - q * ny;
-  out_grad[221][2] = 8.97527468f * r[193] - q * nz;
-  q = lr * y[222];
-  out_grad[222][0] = -13.2112466f * r[193] + 0.732828109f * r[195] - q * nx;
-  out_grad[222][1] = 13.2112466f * r[171] + 0.732828109f * r[169] - q * ny;
-  out_grad[222][2] = 7.47340965f * r[194] - q * nz;
-  q = lr * y[223];
-  out_grad[223][0] = -13.7295302f * r[194] - q * nx;
-  out_grad[223][1] = 13.7295302f * r[170] - q * ny;
-  out_grad[223][2] = 5.38516481f * r[195] - q * nz;
-  q = lr * y[224];
-  out_grad[224][0] = -14.2478068f * r[195] - q * nx;
-  out_grad[224][1] = 14.2478068f * r[169] - q * ny;
-  out_grad[224][2] = -q * nz;
-  lr = 15.0f * ir;
-  q = lr * y[225];
-  out_grad[225][0] = -15.2479507f * r[196] - q * nx;
-  out_grad[225][1] = -15.2479507f * r[224] - q * ny;
-  out_grad[225][2] = -q * nz;
-  q = lr * y[226];
-  out_grad[226][0] = -14.7309199f * r[197] - q * nx;
-  out_grad[226][1] = -14.7309199f * r[223] - q * ny;
-  out_grad[226][2] = 5.56776436f * r[196] - q * nz;
-  q = lr * y[227];
-  out_grad[227][0] = -14.2138835f * r[198] + 0.731083277f * r[196] - q * nx;
-  out_grad[227][1] = -14.2138835f * r[222] + -0.731083277f * r[224] - q * ny;
-  out_grad[227][2] = 7.73705816f * r[197] - q * nz;
-  q = lr * y[228];
-  out_grad[228][0] = -13.6968408f * r[199] + 1.26627338f * r[197] - q * nx;
-  out_grad[228][1] = -13.6968408f * r[221] + -1.26627338f * r[223] - q * ny;
-  out_grad[228][2] = 9.30517098f * r[198] - q * nz;
-  q = lr * y[229];
-  out_grad[229][0] = -13.1797912f * r[200] + 1.79078099f * r[198] - q * nx;
-  out_grad[229][1] = -13.1797912f * r[220] + -1.79078099f * r[222] - q * ny;
-  out_grad[229][2] = 10.543833f * r[199] - q * nz;
-  q = lr * y[230];
-  out_grad[230][0] = -12.6627338f * r[201] + 2.31188832f * r[199] - q * nx;
-  out_grad[230][1] = -12.6627338f * r[219] + -2.31188832f * r[221] - q * ny;
-  out_grad[230][2] = 11.5594416f * r[200] - q * nz;
-  q = lr * y[231];
-  out_grad[231][0] = -12.1456676f * r[202] + 2.83147336f * r[200] - q * nx;
-  out_grad[231][1] = -12.1456676f * r[218] + -2.83147336f * r[220] - q * ny;
-  out_grad[231][2] = 12.4068946f * r[201] - q * nz;
-  q = lr * y[232];
-  out_grad[232][0] = -11.6285914f * r[203] + 3.35024446f * r[201] - q * nx;
-  out_grad[232][1] = -11.6285914f * r[217] + -3.35024446f * r[219] - q * ny;
-  out_grad[232][2] = 13.1188204f * r[202] - q * nz;
-  q = lr * y[233];
-  out_grad[233][0] = -11.1115038f * r[204] + 3.86852908f * r[202] - q * nx;
-  out_grad[233][1] = -11.1115038f * r[216] + -3.86852908f * r[218] - q * ny;
-  out_grad[233][2] = 13.7163381f * r[203] - q * nz;
-  q = lr * y[234];
-  out_grad[234][0] = -10.5944032f * r[205] + 4.38649966f * r[203] - q * nx;
-  out_grad[234][1] = -10.5944032f * r[215] + -4.38649966f * r[217] - q * ny;
-  out_grad[234][2] = 14.2138835f * r[204] - q * nz;
-  q = lr * y[235];
-  out_grad[235][0] = -10.0772875f * r[206] + 4.90425572f * r[204] - q * nx;
-  out_grad[235][1] = -10.0772875f * r[214] + -4.90425572f * r[216] - q * ny;
-  out_grad[235][2] = 14.6216655f * r[205] - q * nz;
-  q = lr * y[236];
-  out_grad[236][0] = -9.56015438f * r[207] + 5.4218587f * r[205] - q * nx;
-  out_grad[236][1] = -9.56015438f * r[213] + -5.4218587f * r[215] - q * ny;
-  out_grad[236][2] = 14.9470329f * r[206] - q * nz;
-  q = lr * y[237];
-  out_grad[237][0] = -9.04300072f * r[208] + 5.93934862f * r[206] - q * nx;
-  out_grad[237][1] = -9.04300072f * r[212] + -5.93934862f * r[214] - q * ny;
-  out_grad[237][2] = 15.1952806f * r[207] - q * nz;
-  q = lr * y[238];
-  out_grad[238][0] = -8.52582284f * r[209] + 6.45675268f * r[207] - q * nx;
-  out_grad[238][1] = -8.52582284f * r[211] + -6.45675268f * r[213] - q * ny;
-  out_grad[238][2] = 15.3701457f * r[208] - q * nz;
-  q = lr * y[239];
-  out_grad[239][0] = 6.97408998f * r[208] - q * nx;
-  out_grad[239][1] = -11.3258934f * r[210] + -6.97408998f * r[212] - q * ny;
-  out_grad[239][2] = 15.4741163f * r[209] - q * nz;
-  q = lr * y[240];
-  out_grad[240][0] = 10.5944032f * r[211] - q * nx;
-  out_grad[240][1] = 10.5944032f * r[209] - q * ny;
-  out_grad[240][2] = 15.5086183f * r[210] - q * nz;
-  q = lr * y[241];
-  out_grad[241][0] = -11.3258934f * r[210] + 6.97408998f * r[212] - q * nx;
-  out_grad[241][1] = 6.97408998f * r[208] - q * ny;
-  out_grad[241][2] = 15.4741163f * r[211] - q * nz;
-  q = lr * y[242];
-  out_grad[242][0] = -8.52582284f * r[211] + 6.45675268f * r[213] - q * nx;
-  out_grad[242][1] = 8.52582284f * r[209] + 6.45675268f * r[207] - q * ny;
-  out_grad[242][2] = 15.3701457f * r[212] - q * nz;
-  q = lr * y[243];
-  out_grad[243][0] = -9.04300072f * r[212] + 5.93934862f * r[214] - q * nx;
-  out_grad[243][1] = 9.04300072f * r[208] + 5.93934862f * r[206] - q * ny;
-  out_grad[243][2] = 15.1952806f * r[213] - q * nz;
-  q = lr * y[244];
-  out_grad[244][0] = -9.56015438f * r[213] + 5.4218587f * r[215] - q * nx;
-  out_grad[244][1] = 9.56015438f * r[207] + 5.4218587f * r[205] - q * ny;
-  out_grad[244][2] = 14.9470329f * r[214] - q * nz;
-  q = lr * y[245];
-  out_grad[245][0] = -10.0772875f * r[214] + 4.90425572f * r[216] - q * nx;
-  out_grad[245][1] = 10.0772875f * r[206] + 4.90425572f * r[204] - q * ny;
-  out_grad[245][2] = 14.6216655f * r[215] - q * nz;
-  q = lr * y[246];
-  out_grad[246][0] = -10.5944032f * r[215] + 4.38649966f * r[217] - q * nx;
-  out_grad[246][1] = 10.5944032f * r[205] + 4.38649966f * r[203] - q * ny;
-  out_grad[246][2] = 14.2138835f * r[216] - q * nz;
-  q = lr * y[247];
-  out_grad[247][0] = -11.1115038f * r[216] + 3.86852908f * r[218] - q * nx;
-  out_grad[247][1] = 11.1115038f * r[204] + 3.86852908f * r[202] - q * ny;
-  out_grad[247][2] = 13.7163381f * r[217] - q * nz;
-  q = lr * y[248];
-  out_grad[248][0] = -11.6285914f * r[217] + 3.35024446f * r[219] - q * nx;
-  out_grad[248][1] = 11.6285914f * r[203] + 3.35024446f * r[201] - q * ny;
-  out_grad[248][2] = 13.1188204f * r[218] - q * nz;
-  q = lr * y[249];
-  out_grad[249][0] = -12.1456676f * r[218] + 2.83147336f * r[220] - q * nx;
-  out_grad[249][1] = 12.1456676f * r[202] + 2.83147336f * r[200] - q * ny;
-  out_grad[249][2] = 12.4068946f * r[219] - q * nz;
-  q = lr * y[250];
-  out_grad[250][0] = -12.6627338f * r[219] + 2.31188832f * r[221] - q * nx;
-  out_grad[250][1] = 12.6627338f * r[201] + 2.31188832f * r[199] - q * ny;
-  out_grad[250][2] = 11.5594416f * r[220] - q * nz;
-  q = lr * y[251];
-  out_grad[251][0] = -13.1797912f * r[220] + 1.79078099f * r[222] - q * nx;
-  out_grad[251][1] = 13.1797912f * r[200] + 1.79078099f * r[198] - q * ny;
-  out_grad[251][2] = 10.543833f * r[221] - q * nz;
-  q = lr * y[252];
-  out_grad[252][0] = -13.6968408f * r[221] + 1.26627338f * r[223] - q * nx;
-  out_grad[252][1] = 13.6968408f * r[199] + 1.26627338f * r[197] - q * ny;
-  out_grad[252][2] = 9.30517098f * r[222] - q * nz;
-  q = lr * y[253];
-  out_grad[253][0] = -14.2138835f * r[222] + 0.731083277f * r[224] - q * nx;
-  out_grad[253][1] = 14.2138835f * r[198] + 0.731083277f * r[196] - q * ny;
-  out_grad[253][2] = 7.73705816f * r[223] - q * nz;
-  q = lr * y[254];
-  out_grad[254][0] = -14.7309199f * r[223] - q * nx;
-  out_grad[254][1] = 14.7309199f * r[197] - q * ny;
-  out_grad[254][2] = 5.56776436f * r[224] - q * nz;
-  q = lr * y[255];
-  out_grad[255][0] = -15.2479507f * r[224] - q * nx;
-  out_grad[255][1] = 15.2479507f * r[196] - q * ny;
-  out_grad[255][2] = -q * nz;
-}
-#endif
-
 void shli_sh_grad(int n, float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
-                  out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  switch (n) {
-#if SHLIGHT_MAX_BANDS >= 1
-  case 1:
-    shli_sh_grad_1(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 2
-  case 2:
-    shli_sh_grad_2(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 3
-  case 3:
-    shli_sh_grad_3(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 4
-  case 4:
-    shli_sh_grad_4(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 5
-  case 5:
-    shli_sh_grad_5(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 6
-  case 6:
-    shli_sh_grad_6(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 7
-  case 7:
-    shli_sh_grad_7(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 8
-  case 8:
-    shli_sh_grad_8(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 9
-  case 9:
-    shli_sh_grad_9(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 10
-  case 10:
-    shli_sh_grad_10(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 11
-  case 11:
-    shli_sh_grad_11(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 12
-  case 12:
-    shli_sh_grad_12(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 13
-  case 13:
-    shli_sh_grad_13(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 14
-  case 14:
-    shli_sh_grad_14(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 15
-  case 15:
-    shli_sh_grad_15(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-#if SHLIGHT_MAX_BANDS >= 16
-  case 16:
-    shli_sh_grad_16(y, nx, ny, nz, ir, out_grad);
-    break;
-#endif
-  default:
+                  float ib, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+  float lr;
+  float q;
 #if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
-    shli_sh_grad_loop(n, y, nx, ny, nz, ir, out_grad);
-#endif
-    break;
+  if (n > SHLIGHT_UNROLLED_BANDS) {
+    shli_sh_grad_loop(n, y, nx, ny, nz, ir, ib, out_grad);
+    return;
   }
+#endif
+  lr = 0.0f;
+  q = 0.0f;
+  SHLIGHT_SET3(out_grad[0], 0.0f, 0.0f, 0.0f);
+#if SHLIGHT_MAX_BANDS > 1
+  if (n > 1) {
+    lr = 1.0f * ir;
+    q = lr * y[1];
+    SHLIGHT_SET3(out_grad[1], -q * nx * ib, (-1.73205081f * (y[0] * ir) - q * ny) * ib,
+                 -q * nz * ib);
+    q = lr * y[2];
+    SHLIGHT_SET3(out_grad[2], -q * nx * ib, -q * ny * ib,
+                 (1.73205081f * (y[0] * ir) - q * nz) * ib);
+    q = lr * y[3];
+    SHLIGHT_SET3(out_grad[3], (-1.73205081f * (y[0] * ir) - q * nx) * ib, -q * ny * ib,
+                 -q * nz * ib);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 2
+  if (n > 2) {
+    lr = 2.0f * ir;
+    q = lr * y[4];
+    SHLIGHT_SET3(out_grad[4], (-2.23606798f * (y[1] * ir) - q * nx) * ib,
+                 (-2.23606798f * (y[3] * ir) - q * ny) * ib, -q * nz * ib);
+    q = lr * y[5];
+    SHLIGHT_SET3(out_grad[5], -q * nx * ib, (-2.23606798f * (y[2] * ir) - q * ny) * ib,
+                 (2.23606798f * (y[1] * ir) - q * nz) * ib);
+    q = lr * y[6];
+    SHLIGHT_SET3(out_grad[6], (1.29099445f * (y[3] * ir) - q * nx) * ib,
+                 (1.29099445f * (y[1] * ir) - q * ny) * ib,
+                 (2.5819889f * (y[2] * ir) - q * nz) * ib);
+    q = lr * y[7];
+    SHLIGHT_SET3(out_grad[7], (-2.23606798f * (y[2] * ir) - q * nx) * ib, -q * ny * ib,
+                 (2.23606798f * (y[3] * ir) - q * nz) * ib);
+    q = lr * y[8];
+    SHLIGHT_SET3(out_grad[8], (-2.23606798f * (y[3] * ir) - q * nx) * ib,
+                 (2.23606798f * (y[1] * ir) - q * ny) * ib, -q * nz * ib);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 3
+  if (n > 3) {
+    lr = 3.0f * ir;
+    q = lr * y[9];
+    SHLIGHT_SET3(out_grad[9], (-3.24037035f * (y[4] * ir) - q * nx) * ib,
+                 (-3.24037035f * (y[8] * ir) - q * ny) * ib, -q * nz * ib);
+    q = lr * y[10];
+    SHLIGHT_SET3(out_grad[10], (-2.64575131f * (y[5] * ir) - q * nx) * ib,
+                 (-2.64575131f * (y[7] * ir) - q * ny) * ib,
+                 (2.64575131f * (y[4] * ir) - q * nz) * ib);
+    q = lr * y[11];
+    SHLIGHT_SET3(out_grad[11], (0.836660027f * (y[4] * ir) - q * nx) * ib,
+                 (-2.89827535f * (y[6] * ir) + -0.836660027f * (y[8] * ir) - q * ny) * ib,
+                 (3.34664011f * (y[5] * ir) - q * nz) * ib);
+    q = lr * y[12];
+    SHLIGHT_SET3(out_grad[12], (2.04939015f * (y[7] * ir) - q * nx) * ib,
+                 (2.04939015f * (y[5] * ir) - q * ny) * ib,
+                 (3.54964787f * (y[6] * ir) - q * nz) * ib);
+    q = lr * y[13];
+    SHLIGHT_SET3(
+        out_grad[13], (-2.89827535f * (y[6] * ir) + 0.836660027f * (y[8] * ir) - q * nx) * ib,
+        (0.836660027f * (y[4] * ir) - q * ny) * ib, (3.34664011f * (y[7] * ir) - q * nz) * ib);
+    q = lr * y[14];
+    SHLIGHT_SET3(out_grad[14], (-2.64575131f * (y[7] * ir) - q * nx) * ib,
+                 (2.64575131f * (y[5] * ir) - q * ny) * ib,
+                 (2.64575131f * (y[8] * ir) - q * nz) * ib);
+    q = lr * y[15];
+    SHLIGHT_SET3(out_grad[15], (-3.24037035f * (y[8] * ir) - q * nx) * ib,
+                 (3.24037035f * (y[4] * ir) - q * ny) * ib, -q * nz * ib);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    lr = 4.0f * ir;
+    q = lr * y[16];
+    SHLIGHT_SET3(out_grad[16], (-4.24264069f * (y[9] * ir) - q * nx) * ib,
+                 (-4.24264069f * (y[15] * ir) - q * ny) * ib, -q * nz * ib);
+    q = lr * y[17];
+    SHLIGHT_SET3(out_grad[17], (-3.67423461f * (y[10] * ir) - q * nx) * ib,
+                 (-3.67423461f * (y[14] * ir) - q * ny) * ib, (3.0f * (y[9] * ir) - q * nz) * ib);
+    q = lr * y[18];
+    SHLIGHT_SET3(out_grad[18],
+                 (-3.10529502f * (y[11] * ir) + 0.801783726f * (y[9] * ir) - q * nx) * ib,
+                 (-3.10529502f * (y[13] * ir) + -0.801783726f * (y[15] * ir) - q * ny) * ib,
+                 (3.92792202f * (y[10] * ir) - q * nz) * ib);
+    q = lr * y[19];
+    SHLIGHT_SET3(out_grad[19], (1.38873015f * (y[10] * ir) - q * nx) * ib,
+                 (-3.58568583f * (y[12] * ir) + -1.38873015f * (y[14] * ir) - q * ny) * ib,
+                 (4.39155033f * (y[11] * ir) - q * nz) * ib);
+    q = lr * y[20];
+    SHLIGHT_SET3(out_grad[20], (2.7774603f * (y[13] * ir) - q * nx) * ib,
+                 (2.7774603f * (y[11] * ir) - q * ny) * ib,
+                 (4.53557368f * (y[12] * ir) - q * nz) * ib);
+    q = lr * y[21];
+    SHLIGHT_SET3(
+        out_grad[21], (-3.58568583f * (y[12] * ir) + 1.38873015f * (y[14] * ir) - q * nx) * ib,
+        (1.38873015f * (y[10] * ir) - q * ny) * ib, (4.39155033f * (y[13] * ir) - q * nz) * ib);
+    q = lr * y[22];
+    SHLIGHT_SET3(out_grad[22],
+                 (-3.10529502f * (y[13] * ir) + 0.801783726f * (y[15] * ir) - q * nx) * ib,
+                 (3.10529502f * (y[11] * ir) + 0.801783726f * (y[9] * ir) - q * ny) * ib,
+                 (3.92792202f * (y[14] * ir) - q * nz) * ib);
+    q = lr * y[23];
+    SHLIGHT_SET3(out_grad[23], (-3.67423461f * (y[14] * ir) - q * nx) * ib,
+                 (3.67423461f * (y[10] * ir) - q * ny) * ib, (3.0f * (y[15] * ir) - q * nz) * ib);
+    q = lr * y[24];
+    SHLIGHT_SET3(out_grad[24], (-4.24264069f * (y[15] * ir) - q * nx) * ib,
+                 (4.24264069f * (y[9] * ir) - q * ny) * ib, -q * nz * ib);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    lr = 5.0f * ir;
+    q = lr * y[25];
+    SHLIGHT_SET3(out_grad[25], (-5.24404424f * (y[16] * ir) - q * nx) * ib,
+                 (-5.24404424f * (y[24] * ir) - q * ny) * ib, -q * nz * ib);
+    q = lr * y[26];
+    SHLIGHT_SET3(out_grad[26], (-4.69041576f * (y[17] * ir) - q * nx) * ib,
+                 (-4.69041576f * (y[23] * ir) - q * ny) * ib,
+                 (3.31662479f * (y[16] * ir) - q * nz) * ib);
+    q = lr * y[27];
+    SHLIGHT_SET3(out_grad[27],
+                 (-4.13655788f * (y[18] * ir) + 0.78173596f * (y[16] * ir) - q * nx) * ib,
+                 (-4.13655788f * (y[22] * ir) + -0.78173596f * (y[24] * ir) - q * ny) * ib,
+                 (4.42216639f * (y[17] * ir) - q * nz) * ib);
+    q = lr * y[28];
+    SHLIGHT_SET3(out_grad[28],
+                 (-3.58236421f * (y[19] * ir) + 1.3540064f * (y[17] * ir) - q * nx) * ib,
+                 (-3.58236421f * (y[21] * ir) + -1.3540064f * (y[23] * ir) - q * ny) * ib,
+                 (5.06622805f * (y[18] * ir) - q * nz) * ib);
+    q = lr * y[29];
+    SHLIGHT_SET3(out_grad[29], (1.91485422f * (y[18] * ir) - q * nx) * ib,
+                 (-4.28174419f * (y[20] * ir) + -1.91485422f * (y[22] * ir) - q * ny) * ib,
+                 (5.4160256f * (y[19] * ir) - q * nz) * ib);
+    q = lr * y[30];
+    SHLIGHT_SET3(out_grad[30], (3.49602949f * (y[21] * ir) - q * nx) * ib,
+                 (3.49602949f * (y[19] * ir) - q * ny) * ib,
+                 (5.52770798f * (y[20] * ir) - q * nz) * ib);
+    q = lr * y[31];
+    SHLIGHT_SET3(
+        out_grad[31], (-4.28174419f * (y[20] * ir) + 1.91485422f * (y[22] * ir) - q * nx) * ib,
+        (1.91485422f * (y[18] * ir) - q * ny) * ib, (5.4160256f * (y[21] * ir) - q * nz) * ib);
+    q = lr * y[32];
+    SHLIGHT_SET3(out_grad[32],
+                 (-3.58236421f * (y[21] * ir) + 1.3540064f * (y[23] * ir) - q * nx) * ib,
+                 (3.58236421f * (y[19] * ir) + 1.3540064f * (y[17] * ir) - q * ny) * ib,
+                 (5.06622805f * (y[22] * ir) - q * nz) * ib);
+    q = lr * y[33];
+    SHLIGHT_SET3(out_grad[33],
+                 (-4.13655788f * (y[22] * ir) + 0.78173596f * (y[24] * ir) - q * nx) * ib,
+                 (4.13655788f * (y[18] * ir) + 0.78173596f * (y[16] * ir) - q * ny) * ib,
+                 (4.42216639f * (y[23] * ir) - q * nz) * ib);
+    q = lr * y[34];
+    SHLIGHT_SET3(out_grad[34], (-4.69041576f * (y[23] * ir) - q * nx) * ib,
+                 (4.69041576f * (y[17] * ir) - q * ny) * ib,
+                 (3.31662479f * (y[24] * ir) - q * nz) * ib);
+    q = lr * y[35];
+    SHLIGHT_SET3(out_grad[35], (-5.24404424f * (y[24] * ir) - q * nx) * ib,
+                 (5.24404424f * (y[16] * ir) - q * ny) * ib, -q * nz * ib);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    lr = 6.0f * ir;
+    q = lr * y[36];
+    SHLIGHT_SET3(out_grad[36], (-6.244998f * (y[25] * ir) - q * nx) * ib,
+                 (-6.244998f * (y[35] * ir) - q * ny) * ib, -q * nz * ib);
+    q = lr * y[37];
+    SHLIGHT_SET3(out_grad[37], (-5.70087713f * (y[26] * ir) - q * nx) * ib,
+                 (-5.70087713f * (y[34] * ir) - q * ny) * ib,
+                 (3.60555128f * (y[25] * ir) - q * nz) * ib);
+    q = lr * y[38];
+    SHLIGHT_SET3(out_grad[38],
+                 (-5.15663738f * (y[27] * ir) + 0.768706115f * (y[25] * ir) - q * nx) * ib,
+                 (-5.15663738f * (y[33] * ir) + -0.768706115f * (y[35] * ir) - q * ny) * ib,
+                 (4.86172435f * (y[26] * ir) - q * nz) * ib);
+    q = lr * y[39];
+    SHLIGHT_SET3(out_grad[39],
+                 (-4.61223669f * (y[28] * ir) + 1.33143805f * (y[26] * ir) - q * nx) * ib,
+                 (-4.61223669f * (y[32] * ir) + -1.33143805f * (y[34] * ir) - q * ny) * ib,
+                 (5.64881323f * (y[27] * ir) - q * nz) * ib);
+    q = lr * y[40];
+    SHLIGHT_SET3(out_grad[40],
+                 (-4.06761042f * (y[29] * ir) + 1.88293774f * (y[27] * ir) - q * nx) * ib,
+                 (-4.06761042f * (y[31] * ir) + -1.88293774f * (y[33] * ir) - q * ny) * ib,
+                 (6.14964892f * (y[28] * ir) - q * nz) * ib);
+    q = lr * y[41];
+    SHLIGHT_SET3(out_grad[41], (2.43086217f * (y[28] * ir) - q * nx) * ib,
+                 (-4.981785f * (y[30] * ir) + -2.43086217f * (y[32] * ir) - q * ny) * ib,
+                 (6.43145678f * (y[29] * ir) - q * nz) * ib);
+    q = lr * y[42];
+    SHLIGHT_SET3(out_grad[42], (4.21037679f * (y[31] * ir) - q * nx) * ib,
+                 (4.21037679f * (y[29] * ir) - q * ny) * ib,
+                 (6.52268768f * (y[30] * ir) - q * nz) * ib);
+    q = lr * y[43];
+    SHLIGHT_SET3(
+        out_grad[43], (-4.981785f * (y[30] * ir) + 2.43086217f * (y[32] * ir) - q * nx) * ib,
+        (2.43086217f * (y[28] * ir) - q * ny) * ib, (6.43145678f * (y[31] * ir) - q * nz) * ib);
+    q = lr * y[44];
+    SHLIGHT_SET3(out_grad[44],
+                 (-4.06761042f * (y[31] * ir) + 1.88293774f * (y[33] * ir) - q * nx) * ib,
+                 (4.06761042f * (y[29] * ir) + 1.88293774f * (y[27] * ir) - q * ny) * ib,
+                 (6.14964892f * (y[32] * ir) - q * nz) * ib);
+    q = lr * y[45];
+    SHLIGHT_SET3(out_grad[45],
+                 (-4.61223669f * (y[32] * ir) + 1.33143805f * (y[34] * ir) - q * nx) * ib,
+                 (4.61223669f * (y[28] * ir) + 1.33143805f * (y[26] * ir) - q * ny) * ib,
+                 (5.64881323f * (y[33] * ir) - q * nz) * ib);
+    q = lr * y[46];
+    SHLIGHT_SET3(out_grad[46],
+                 (-5.15663738f * (y[33] * ir) + 0.768706115f * (y[35] * ir) - q * nx) * ib,
+                 (5.15663738f * (y[27] * ir) + 0.768706115f * (y[25] * ir) - q * ny) * ib,
+                 (4.86172435f * (y[34] * ir) - q * nz) * ib);
+    q = lr * y[47];
+    SHLIGHT_SET3(out_grad[47], (-5.70087713f * (y[34] * ir) - q * nx) * ib,
+                 (5.70087713f * (y[26] * ir) - q * ny) * ib,
+                 (3.60555128f * (y[35] * ir) - q * nz) * ib);
+    q = lr * y[48];
+    SHLIGHT_SET3(out_grad[48], (-6.244998f * (y[35] * ir) - q * nx) * ib,
+                 (6.244998f * (y[25] * ir) - q * ny) * ib, -q * nz * ib);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 7
+  if (n > 7) {
+    lr = 7.0f * ir;
+    q = lr * y[49];
+    SHLIGHT_SET3(out_grad[49], (-7.24568837f * (y[36] * ir) - q * nx) * ib,
+                 (-7.24568837f * (y[48] * ir) - q * ny) * ib, -q * nz * ib);
+    q = lr * y[50];
+    SHLIGHT_SET3(out_grad[50], (-6.70820393f * (y[37] * ir) - q * nx) * ib,
+                 (-6.70820393f * (y[47] * ir) - q * ny) * ib,
+                 (3.87298335f * (y[36] * ir) - q * nz) * ib);
+    q = lr * y[51];
+    SHLIGHT_SET3(out_grad[51],
+                 (-6.17065013f * (y[38] * ir) + 0.759554525f * (y[36] * ir) - q * nx) * ib,
+                 (-6.17065013f * (y[46] * ir) + -0.759554525f * (y[48] * ir) - q * ny) * ib,
+                 (5.26234812f * (y[37] * ir) - q * nz) * ib);
+    q = lr * y[52];
+    SHLIGHT_SET3(out_grad[52],
+                 (-5.63300712f * (y[39] * ir) + 1.31558703f * (y[37] * ir) - q * nx) * ib,
+                 (-5.63300712f * (y[45] * ir) + -1.31558703f * (y[47] * ir) - q * ny) * ib,
+                 (6.17065013f * (y[38] * ir) - q * nz) * ib);
+    q = lr * y[53];
+    SHLIGHT_SET3(out_grad[53],
+                 (-5.09524665f * (y[40] * ir) + 1.86052102f * (y[38] * ir) - q * nx) * ib,
+                 (-5.09524665f * (y[44] * ir) + -1.86052102f * (y[46] * ir) - q * ny) * ib,
+                 (6.7936622f * (y[39] * ir) - q * nz) * ib);
+    q = lr * y[54];
+    SHLIGHT_SET3(out_grad[54],
+                 (-4.55732715f * (y[41] * ir) + 2.40192231f * (y[39] * ir) - q * nx) * ib,
+                 (-4.55732715f * (y[43] * ir) + -2.40192231f * (y[45] * ir) - q * ny) * ib,
+                 (7.20576692f * (y[40] * ir) - q * nz) * ib);
+    q = lr * y[55];
+    SHLIGHT_SET3(out_grad[55], (2.94174203f * (y[40] * ir) - q * nx) * ib,
+                 (-5.6839856f * (y[42] * ir) + -2.94174203f * (y[44] * ir) - q * ny) * ib,
+                 (7.44208408f * (y[41] * ir) - q * nz) * ib);
+    q = lr * y[56];
+    SHLIGHT_SET3(out_grad[56], (4.92247592f * (y[43] * ir) - q * nx) * ib,
+                 (4.92247592f * (y[41] * ir) - q * ny) * ib,
+                 (7.51920618f * (y[42] * ir) - q * nz) * ib);
+    q = lr * y[57];
+    SHLIGHT_SET3(
+        out_grad[57], (-5.6839856f * (y[42] * ir) + 2.94174203f * (y[44] * ir) - q * nx) * ib,
+        (2.94174203f * (y[40] * ir) - q * ny) * ib, (7.44208408f * (y[43] * ir) - q * nz) * ib);
+    q = lr * y[58];
+    SHLIGHT_SET3(out_grad[58],
+                 (-4.55732715f * (y[43] * ir) + 2.40192231f * (y[45] * ir) - q * nx) * ib,
+                 (4.55732715f * (y[41] * ir) + 2.40192231f * (y[39] * ir) - q * ny) * ib,
+                 (7.20576692f * (y[44] * ir) - q * nz) * ib);
+    q = lr * y[59];
+    SHLIGHT_SET3(out_grad[59],
+                 (-5.09524665f * (y[44] * ir) + 1.86052102f * (y[46] * ir) - q * nx) * ib,
+                 (5.09524665f * (y[40] * ir) + 1.86052102f * (y[38] * ir) - q * ny) * ib,
+                 (6.7936622f * (y[45] * ir) - q * nz) * ib);
+    q = lr * y[60];
+    SHLIGHT_SET3(out_grad[60],
+                 (-5.63300712f * (y[45] * ir) + 1.31558703f * (y[47] * ir) - q * nx) * ib,
+                 (5.63300712f * (y[39] * ir) + 1.31558703f * (y[37] * ir) - q * ny) * ib,
+                 (6.17065013f * (y[46] * ir) - q * nz) * ib);
+    q = lr * y[61];
+    SHLIGHT_SET3(out_grad[61],
+                 (-6.17065013f * (y[46] * ir) + 0.759554525f * (y[48] * ir) - q * nx) * ib,
+                 (6.17065013f * (y[38] * ir) + 0.759554525f * (y[36] * ir) - q * ny) * ib,
+                 (5.26234812f * (y[47] * ir) - q * nz) * ib);
+    q = lr * y[62];
+    SHLIGHT_SET3(out_grad[62], (-6.70820393f * (y[47] * ir) - q * nx) * ib,
+                 (6.70820393f * (y[37] * ir) - q * ny) * ib,
+                 (3.87298335f * (y[48] * ir) - q * nz) * ib);
+    q = lr * y[63];
+    SHLIGHT_SET3(out_grad[63], (-7.24568837f * (y[48] * ir) - q * nx) * ib,
+                 (7.24568837f * (y[36] * ir) - q * ny) * ib, -q * nz * ib);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 8
+  if (n > 8) {
+    lr = 8.0f * ir;
+    q = lr * y[64];
+    SHLIGHT_SET3(out_grad[64], (-8.24621125f * (y[49] * ir) - q * nx) * ib,
+                 (-8.24621125f * (y[63] * ir) - q * ny) * ib, -q * nz * ib);
+    q = lr * y[65];
+    SHLIGHT_SET3(out_grad[65], (-7.71362431f * (y[50] * ir) - q * nx) * ib,
+                 (-7.71362431f * (y[62] * ir) - q * ny) * ib,
+                 (4.12310563f * (y[49] * ir) - q * nz) * ib);
+    q = lr * y[66];
+    SHLIGHT_SET3(out_grad[66],
+                 (-7.18099343f * (y[51] * ir) + 0.752772653f * (y[49] * ir) - q * nx) * ib,
+                 (-7.18099343f * (y[61] * ir) + -0.752772653f * (y[63] * ir) - q * ny) * ib,
+                 (5.63323471f * (y[50] * ir) - q * nz) * ib);
+    q = lr * y[67];
+    SHLIGHT_SET3(out_grad[67],
+                 (-6.64830806f * (y[52] * ir) + 1.30384048f * (y[50] * ir) - q * nx) * ib,
+                 (-6.64830806f * (y[60] * ir) + -1.30384048f * (y[62] * ir) - q * ny) * ib,
+                 (6.64830806f * (y[51] * ir) - q * nz) * ib);
+    q = lr * y[68];
+    SHLIGHT_SET3(out_grad[68],
+                 (-6.11555394f * (y[53] * ir) + 1.84390889f * (y[51] * ir) - q * nx) * ib,
+                 (-6.11555394f * (y[59] * ir) + -1.84390889f * (y[61] * ir) - q * ny) * ib,
+                 (7.37563557f * (y[52] * ir) - q * nz) * ib);
+    q = lr * y[69];
+    SHLIGHT_SET3(out_grad[69],
+                 (-5.58271141f * (y[54] * ir) + 2.38047614f * (y[52] * ir) - q * nx) * ib,
+                 (-5.58271141f * (y[58] * ir) + -2.38047614f * (y[60] * ir) - q * ny) * ib,
+                 (7.89514619f * (y[53] * ir) - q * nz) * ib);
+    q = lr * y[70];
+    SHLIGHT_SET3(out_grad[70],
+                 (-5.04975247f * (y[55] * ir) + 2.91547595f * (y[53] * ir) - q * nx) * ib,
+                 (-5.04975247f * (y[57] * ir) + -2.91547595f * (y[59] * ir) - q * ny) * ib,
+                 (8.24621125f * (y[54] * ir) - q * nz) * ib);
+    q = lr * y[71];
+    SHLIGHT_SET3(out_grad[71], (3.44963766f * (y[54] * ir) - q * nx) * ib,
+                 (-6.38748777f * (y[56] * ir) + -3.44963766f * (y[58] * ir) - q * ny) * ib,
+                 (8.44985207f * (y[55] * ir) - q * nz) * ib);
+    q = lr * y[72];
+    SHLIGHT_SET3(out_grad[72], (5.63323471f * (y[57] * ir) - q * nx) * ib,
+                 (5.63323471f * (y[55] * ir) - q * ny) * ib,
+                 (8.51665036f * (y[56] * ir) - q * nz) * ib);
+    q = lr * y[73];
+    SHLIGHT_SET3(
+        out_grad[73], (-6.38748777f * (y[56] * ir) + 3.44963766f * (y[58] * ir) - q * nx) * ib,
+        (3.44963766f * (y[54] * ir) - q * ny) * ib, (8.44985207f * (y[57] * ir) - q * nz) * ib);
+    q = lr * y[74];
+    SHLIGHT_SET3(out_grad[74],
+                 (-5.04975247f * (y[57] * ir) + 2.91547595f * (y[59] * ir) - q * nx) * ib,
+                 (5.04975247f * (y[55] * ir) + 2.91547595f * (y[53] * ir) - q * ny) * ib,
+                 (8.24621125f * (y[58] * ir) - q * nz) * ib);
+    q = lr * y[75];
+    SHLIGHT_SET3(out_grad[75],
+                 (-5.58271141f * (y[58] * ir) + 2.38047614f * (y[60] * ir) - q * nx) * ib,
+                 (5.58271141f * (y[54] * ir) + 2.38047614f * (y[52] * ir) - q * ny) * ib,
+                 (7.89514619f * (y[59] * ir) - q * nz) * ib);
+    q = lr * y[76];
+    SHLIGHT_SET3(out_grad[76],
+                 (-6.11555394f * (y[59] * ir) + 1.84390889f * (y[61] * ir) - q * nx) * ib,
+                 (6.11555394f * (y[53] * ir) + 1.84390889f * (y[51] * ir) - q * ny) * ib,
+                 (7.37563557f * (y[60] * ir) - q * nz) * ib);
+    q = lr * y[77];
+    SHLIGHT_SET3(out_grad[77],
+                 (-6.64830806f * (y[60] * ir) + 1.30384048f * (y[62] * ir) - q * nx) * ib,
+                 (6.64830806f * (y[52] * ir) + 1.30384048f * (y[50] * ir) - q * ny) * ib,
+                 (6.64830806f * (y[61] * ir) - q * nz) * ib);
+    q = lr * y[78];
+    SHLIGHT_SET3(out_grad[78],
+                 (-7.18099343f * (y[61] * ir) + 0.752772653f * (y[63] * ir) - q * nx) * ib,
+                 (7.18099343f * (y[51] * ir) + 0.752772653f * (y[49] * ir) - q * ny) * ib,
+                 (5.63323471f * (y[62] * ir) - q * nz) * ib);
+    q = lr * y[79];
+    SHLIGHT_SET3(out_grad[79], (-7.71362431f * (y[62] * ir) - q * nx) * ib,
+                 (7.71362431f * (y[50] * ir) - q * ny) * ib,
+                 (4.12310563f * (y[63] * ir) - q * nz) * ib);
+    q = lr * y[80];
+    SHLIGHT_SET3(out_grad[80], (-8.24621125f * (y[63] * ir) - q * nx) * ib,
+                 (8.24621125f * (y[49] * ir) - q * ny) * ib, -q * nz * ib);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 9
+  if (n > 9) {
+    lr = 9.0f * ir;
+    q = lr * y[81];
+    SHLIGHT_SET3(out_grad[81], (-9.246621f * (y[64] * ir) - q * nx) * ib,
+                 (-9.246621f * (y[80] * ir) - q * ny) * ib, -q * nz * ib);
+    q = lr * y[82];
+    SHLIGHT_SET3(out_grad[82], (-8.71779789f * (y[65] * ir) - q * nx) * ib,
+                 (-8.71779789f * (y[79] * ir) - q * ny) * ib,
+                 (4.35889894f * (y[64] * ir) - q * nz) * ib);
+    q = lr * y[83];
+    SHLIGHT_SET3(out_grad[83],
+                 (-8.1889452f * (y[66] * ir) + 0.747545002f * (y[64] * ir) - q * nx) * ib,
+                 (-8.1889452f * (y[78] * ir) + -0.747545002f * (y[80] * ir) - q * ny) * ib,
+                 (5.98036001f * (y[65] * ir) - q * nz) * ib);
+    q = lr * y[84];
+    SHLIGHT_SET3(out_grad[84],
+                 (-7.66005683f * (y[67] * ir) + 1.29478592f * (y[65] * ir) - q * nx) * ib,
+                 (-7.66005683f * (y[77] * ir) + -1.29478592f * (y[79] * ir) - q * ny) * ib,
+                 (7.09183458f * (y[66] * ir) - q * nz) * ib);
+    q = lr * y[85];
+    SHLIGHT_SET3(out_grad[85],
+                 (-7.13112482f * (y[68] * ir) + 1.83110381f * (y[66] * ir) - q * nx) * ib,
+                 (-7.13112482f * (y[76] * ir) + -1.83110381f * (y[78] * ir) - q * ny) * ib,
+                 (7.91127267f * (y[67] * ir) - q * nz) * ib);
+    q = lr * y[86];
+    SHLIGHT_SET3(out_grad[86],
+                 (-6.60213869f * (y[69] * ir) + 2.36394486f * (y[67] * ir) - q * nx) * ib,
+                 (-6.60213869f * (y[75] * ir) + -2.36394486f * (y[77] * ir) - q * ny) * ib,
+                 (8.5233244f * (y[68] * ir) - q * nz) * ib);
+    q = lr * y[87];
+    SHLIGHT_SET3(out_grad[87],
+                 (-6.0730843f * (y[70] * ir) + 2.89522934f * (y[68] * ir) - q * nx) * ib,
+                 (-6.0730843f * (y[74] * ir) + -2.89522934f * (y[76] * ir) - q * ny) * ib,
+                 (8.97054002f * (y[69] * ir) - q * nz) * ib);
+    q = lr * y[88];
+    SHLIGHT_SET3(out_grad[88],
+                 (-5.54394211f * (y[71] * ir) + 3.42568156f * (y[69] * ir) - q * nx) * ib,
+                 (-5.54394211f * (y[73] * ir) + -3.42568156f * (y[75] * ir) - q * ny) * ib,
+                 (9.27678951f * (y[70] * ir) - q * nz) * ib);
+    q = lr * y[89];
+    SHLIGHT_SET3(out_grad[89], (3.95563634f * (y[70] * ir) - q * nx) * ib,
+                 (-7.09183458f * (y[72] * ir) + -3.95563634f * (y[74] * ir) - q * ny) * ib,
+                 (9.45577943f * (y[71] * ir) - q * nz) * ib);
+    q = lr * y[90];
+    SHLIGHT_SET3(out_grad[90], (6.34312968f * (y[73] * ir) - q * nx) * ib,
+                 (6.34312968f * (y[71] * ir) - q * ny) * ib,
+                 (9.51469452f * (y[72] * ir) - q * nz) * ib);
+    q = lr * y[91];
+    SHLIGHT_SET3(
+        out_grad[91], (-7.09183458f * (y[72] * ir) + 3.95563634f * (y[74] * ir) - q * nx) * ib,
+        (3.95563634f * (y[70] * ir) - q * ny) * ib, (9.45577943f * (y[73] * ir) - q * nz) * ib);
+    q = lr * y[92];
+    SHLIGHT_SET3(out_grad[92],
+                 (-5.54394211f * (y[73] * ir) + 3.42568156f * (y[75] * ir) - q * nx) * ib,
+                 (5.54394211f * (y[71] * ir) + 3.42568156f * (y[69] * ir) - q * ny) * ib,
+                 (9.27678951f * (y[74] * ir) - q * nz) * ib);
+    q = lr * y[93];
+    SHLIGHT_SET3(out_grad[93],
+                 (-6.0730843f * (y[74] * ir) + 2.89522934f * (y[76] * ir) - q * nx) * ib,
+                 (6.0730843f * (y[70] * ir) + 2.89522934f * (y[68] * ir) - q * ny) * ib,
+                 (8.97054002f * (y[75] * ir) - q * nz) * ib);
+    q = lr * y[94];
+    SHLIGHT_SET3(out_grad[94],
+                 (-6.60213869f * (y[75] * ir) + 2.36394486f * (y[77] * ir) - q * nx) * ib,
+                 (6.60213869f * (y[69] * ir) + 2.36394486f * (y[67] * ir) - q * ny) * ib,
+                 (8.5233244f * (y[76] * ir) - q * nz) * ib);
+    q = lr * y[95];
+    SHLIGHT_SET3(out_grad[95],
+                 (-7.13112482f * (y[76] * ir) + 1.83110381f * (y[78] * ir) - q * nx) * ib,
+                 (7.13112482f * (y[68] * ir) + 1.83110381f * (y[66] * ir) - q * ny) * ib,
+                 (7.91127267f * (y[77] * ir) - q * nz) * ib);
+    q = lr * y[96];
+    SHLIGHT_SET3(out_grad[96],
+                 (-7.66005683f * (y[77] * ir) + 1.29478592f * (y[79] * ir) - q * nx) * ib,
+                 (7.66005683f * (y[67] * ir) + 1.29478592f * (y[65] * ir) - q * ny) * ib,
+                 (7.09183458f * (y[78] * ir) - q * nz) * ib);
+    q = lr * y[97];
+    SHLIGHT_SET3(out_grad[97],
+                 (-8.1889452f * (y[78] * ir) + 0.747545002f * (y[80] * ir) - q * nx) * ib,
+                 (8.1889452f * (y[66] * ir) + 0.747545002f * (y[64] * ir) - q * ny) * ib,
+                 (5.98036001f * (y[79] * ir) - q * nz) * ib);
+    q = lr * y[98];
+    SHLIGHT_SET3(out_grad[98], (-8.71779789f * (y[79] * ir) - q * nx) * ib,
+                 (8.71779789f * (y[65] * ir) - q * ny) * ib,
+                 (4.35889894f * (y[80] * ir) - q * nz) * ib);
+    q = lr * y[99];
+    SHLIGHT_SET3(out_grad[99], (-9.246621f * (y[80] * ir) - q * nx) * ib,
+                 (9.246621f * (y[64] * ir) - q * ny) * ib, -q * nz * ib);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 10
+  if (n > 10) {
+    lr = 10.0f * ir;
+    q = lr * y[100];
+    SHLIGHT_SET3(out_grad[100], (-10.2469508f * (y[81] * ir) - q * nx) * ib,
+                 (-10.2469508f * (y[99] * ir) - q * ny) * ib, -q * nz * ib);
+    q = lr * y[101];
+    SHLIGHT_SET3(out_grad[101], (-9.72111105f * (y[82] * ir) - q * nx) * ib,
+                 (-9.72111105f * (y[98] * ir) - q * ny) * ib,
+                 (4.58257569f * (y[81] * ir) - q * nz) * ib);
+    q = lr * y[102];
+    SHLIGHT_SET3(out_grad[102],
+                 (-9.19525049f * (y[83] * ir) + 0.743391942f * (y[81] * ir) - q * nx) * ib,
+                 (-9.19525049f * (y[97] * ir) + -0.743391942f * (y[99] * ir) - q * ny) * ib,
+                 (6.3078898f * (y[82] * ir) - q * nz) * ib);
+    q = lr * y[103];
+    SHLIGHT_SET3(out_grad[103],
+                 (-8.6693653f * (y[84] * ir) + 1.28759261f * (y[82] * ir) - q * nx) * ib,
+                 (-8.6693653f * (y[96] * ir) + -1.28759261f * (y[98] * ir) - q * ny) * ib,
+                 (7.50789059f * (y[83] * ir) - q * nz) * ib);
+    q = lr * y[104];
+    SHLIGHT_SET3(out_grad[104],
+                 (-8.14345071f * (y[85] * ir) + 1.82093094f * (y[83] * ir) - q * nx) * ib,
+                 (-8.14345071f * (y[95] * ir) + -1.82093094f * (y[97] * ir) - q * ny) * ib,
+                 (8.41051973f * (y[84] * ir) - q * nz) * ib);
+    q = lr * y[105];
+    SHLIGHT_SET3(out_grad[105],
+                 (-7.61750063f * (y[86] * ir) + 2.35081173f * (y[84] * ir) - q * nx) * ib,
+                 (-7.61750063f * (y[94] * ir) + -2.35081173f * (y[96] * ir) - q * ny) * ib,
+                 (9.10465468f * (y[85] * ir) - q * nz) * ib);
+    q = lr * y[106];
+    SHLIGHT_SET3(out_grad[106],
+                 (-7.09150715f * (y[87] * ir) + 2.87914461f * (y[85] * ir) - q * nx) * ib,
+                 (-7.09150715f * (y[93] * ir) + -2.87914461f * (y[95] * ir) - q * ny) * ib,
+                 (9.63546082f * (y[86] * ir) - q * nz) * ib);
+    q = lr * y[107];
+    SHLIGHT_SET3(out_grad[107],
+                 (-6.56545986f * (y[88] * ir) + 3.40664984f * (y[86] * ir) - q * nx) * ib,
+                 (-6.56545986f * (y[92] * ir) + -3.40664984f * (y[94] * ir) - q * ny) * ib,
+                 (10.0289056f * (y[87] * ir) - q * nz) * ib);
+    q = lr * y[108];
+    SHLIGHT_SET3(out_grad[108],
+                 (-6.03934468f * (y[89] * ir) + 3.93366041f * (y[87] * ir) - q * nx) * ib,
+                 (-6.03934468f * (y[91] * ir) + -3.93366041f * (y[93] * ir) - q * ny) * ib,
+                 (10.3007409f * (y[88] * ir) - q * nz) * ib);
+    q = lr * y[109];
+    SHLIGHT_SET3(out_grad[109], (4.46035165f * (y[88] * ir) - q * nx) * ib,
+                 (-7.79676046f * (y[90] * ir) + -4.46035165f * (y[92] * ir) - q * ny) * ib,
+                 (10.4604518f * (y[89] * ir) - q * nz) * ib);
+    q = lr * y[110];
+    SHLIGHT_SET3(out_grad[110], (7.05243519f * (y[91] * ir) - q * nx) * ib,
+                 (7.05243519f * (y[89] * ir) - q * ny) * ib,
+                 (10.5131497f * (y[90] * ir) - q * nz) * ib);
+    q = lr * y[111];
+    SHLIGHT_SET3(
+        out_grad[111], (-7.79676046f * (y[90] * ir) + 4.46035165f * (y[92] * ir) - q * nx) * ib,
+        (4.46035165f * (y[88] * ir) - q * ny) * ib, (10.4604518f * (y[91] * ir) - q * nz) * ib);
+    q = lr * y[112];
+    SHLIGHT_SET3(out_grad[112],
+                 (-6.03934468f * (y[91] * ir) + 3.93366041f * (y[93] * ir) - q * nx) * ib,
+                 (6.03934468f * (y[89] * ir) + 3.93366041f * (y[87] * ir) - q * ny) * ib,
+                 (10.3007409f * (y[92] * ir) - q * nz) * ib);
+    q = lr * y[113];
+    SHLIGHT_SET3(out_grad[113],
+                 (-6.56545986f * (y[92] * ir) + 3.40664984f * (y[94] * ir) - q * nx) * ib,
+                 (6.56545986f * (y[88] * ir) + 3.40664984f * (y[86] * ir) - q * ny) * ib,
+                 (10.0289056f * (y[93] * ir) - q * nz) * ib);
+    q = lr * y[114];
+    SHLIGHT_SET3(out_grad[114],
+                 (-7.09150715f * (y[93] * ir) + 2.87914461f * (y[95] * ir) - q * nx) * ib,
+                 (7.09150715f * (y[87] * ir) + 2.87914461f * (y[85] * ir) - q * ny) * ib,
+                 (9.63546082f * (y[94] * ir) - q * nz) * ib);
+    q = lr * y[115];
+    SHLIGHT_SET3(out_grad[115],
+                 (-7.61750063f * (y[94] * ir) + 2.35081173f * (y[96] * ir) - q * nx) * ib,
+                 (7.61750063f * (y[86] * ir) + 2.35081173f * (y[84] * ir) - q * ny) * ib,
+                 (9.10465468f * (y[95] * ir) - q * nz) * ib);
+    q = lr * y[116];
+    SHLIGHT_SET3(out_grad[116],
+                 (-8.14345071f * (y[95] * ir) + 1.82093094f * (y[97] * ir) - q * nx) * ib,
+                 (8.14345071f * (y[85] * ir) + 1.82093094f * (y[83] * ir) - q * ny) * ib,
+                 (8.41051973f * (y[96] * ir) - q * nz) * ib);
+    q = lr * y[117];
+    SHLIGHT_SET3(out_grad[117],
+                 (-8.6693653f * (y[96] * ir) + 1.28759261f * (y[98] * ir) - q * nx) * ib,
+                 (8.6693653f * (y[84] * ir) + 1.28759261f * (y[82] * ir) - q * ny) * ib,
+                 (7.50789059f * (y[97] * ir) - q * nz) * ib);
+    q = lr * y[118];
+    SHLIGHT_SET3(out_grad[118],
+                 (-9.19525049f * (y[97] * ir) + 0.743391942f * (y[99] * ir) - q * nx) * ib,
+                 (9.19525049f * (y[83] * ir) + 0.743391942f * (y[81] * ir) - q * ny) * ib,
+                 (6.3078898f * (y[98] * ir) - q * nz) * ib);
+    q = lr * y[119];
+    SHLIGHT_SET3(out_grad[119], (-9.72111105f * (y[98] * ir) - q * nx) * ib,
+                 (9.72111105f * (y[82] * ir) - q * ny) * ib,
+                 (4.58257569f * (y[99] * ir) - q * nz) * ib);
+    q = lr * y[120];
+    SHLIGHT_SET3(out_grad[120], (-10.2469508f * (y[99] * ir) - q * nx) * ib,
+                 (10.2469508f * (y[81] * ir) - q * ny) * ib, -q * nz * ib);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 11
+  if (n > 11) {
+    lr = 11.0f * ir;
+    q = lr * y[121];
+    SHLIGHT_SET3(out_grad[121], (-11.2472219f * (y[100] * ir) - q * nx) * ib,
+                 (-11.2472219f * (y[120] * ir) - q * ny) * ib, -q * nz * ib);
+    q = lr * y[122];
+    SHLIGHT_SET3(out_grad[122], (-10.7238053f * (y[101] * ir) - q * nx) * ib,
+                 (-10.7238053f * (y[119] * ir) - q * ny) * ib,
+                 (4.79583152f * (y[100] * ir) - q * nz) * ib);
+    q = lr * y[123];
+    SHLIGHT_SET3(out_grad[123],
+                 (-10.2003735f * (y[102] * ir) + 0.74001287f * (y[100] * ir) - q * nx) * ib,
+                 (-10.2003735f * (y[118] * ir) + -0.74001287f * (y[120] * ir) - q * ny) * ib,
+                 (6.61887633f * (y[101] * ir) - q * nz) * ib);
+    q = lr * y[124];
+    SHLIGHT_SET3(out_grad[124],
+                 (-9.67692395f * (y[103] * ir) + 1.28173989f * (y[101] * ir) - q * nx) * ib,
+                 (-9.67692395f * (y[117] * ir) + -1.28173989f * (y[119] * ir) - q * ny) * ib,
+                 (7.90117532f * (y[102] * ir) - q * nz) * ib);
+    q = lr * y[125];
+    SHLIGHT_SET3(out_grad[125],
+                 (-9.15345368f * (y[104] * ir) + 1.81265393f * (y[102] * ir) - q * nx) * ib,
+                 (-9.15345368f * (y[116] * ir) + -1.81265393f * (y[118] * ir) - q * ny) * ib,
+                 (8.88015444f * (y[103] * ir) - q * nz) * ib);
+    q = lr * y[126];
+    SHLIGHT_SET3(out_grad[126],
+                 (-8.62995889f * (y[105] * ir) + 2.34012617f * (y[103] * ir) - q * nx) * ib,
+                 (-8.62995889f * (y[115] * ir) + -2.34012617f * (y[117] * ir) - q * ny) * ib,
+                 (9.64858736f * (y[104] * ir) - q * nz) * ib);
+    q = lr * y[127];
+    SHLIGHT_SET3(out_grad[127],
+                 (-8.10643483f * (y[106] * ir) + 2.86605752f * (y[104] * ir) - q * nx) * ib,
+                 (-8.10643483f * (y[114] * ir) + -2.86605752f * (y[116] * ir) - q * ny) * ib,
+                 (10.2539191f * (y[105] * ir) - q * nz) * ib);
+    q = lr * y[128];
+    SHLIGHT_SET3(out_grad[128],
+                 (-7.58287544f * (y[107] * ir) + 3.39116499f * (y[105] * ir) - q * nx) * ib,
+                 (-7.58287544f * (y[113] * ir) + -3.39116499f * (y[115] * ir) - q * ny) * ib,
+                 (10.7238053f * (y[106] * ir) - q * nz) * ib);
+    q = lr * y[129];
+    SHLIGHT_SET3(out_grad[129],
+                 (-7.05927286f * (y[108] * ir) + 3.91578004f * (y[106] * ir) - q * nx) * ib,
+                 (-7.05927286f * (y[112] * ir) + -3.91578004f * (y[114] * ir) - q * ny) * ib,
+                 (11.0754985f * (y[107] * ir) - q * nz) * ib);
+    q = lr * y[130];
+    SHLIGHT_SET3(out_grad[130],
+                 (-6.5356167f * (y[109] * ir) + 4.44007722f * (y[107] * ir) - q * nx) * ib,
+                 (-6.5356167f * (y[111] * ir) + -4.44007722f * (y[113] * ir) - q * ny) * ib,
+                 (11.3200202f * (y[108] * ir) - q * nz) * ib);
+    q = lr * y[131];
+    SHLIGHT_SET3(out_grad[131], (4.96415724f * (y[108] * ir) - q * nx) * ib,
+                 (-8.50210058f * (y[110] * ir) + -4.96415724f * (y[112] * ir) - q * ny) * ib,
+                 (11.4642301f * (y[109] * ir) - q * nz) * ib);
+    q = lr * y[132];
+    SHLIGHT_SET3(out_grad[132], (7.76132046f * (y[111] * ir) - q * nx) * ib,
+                 (7.76132046f * (y[109] * ir) - q * ny) * ib,
+                 (11.5118986f * (y[110] * ir) - q * nz) * ib);
+    q = lr * y[133];
+    SHLIGHT_SET3(
+        out_grad[133], (-8.50210058f * (y[110] * ir) + 4.96415724f * (y[112] * ir) - q * nx) * ib,
+        (4.96415724f * (y[108] * ir) - q * ny) * ib, (11.4642301f * (y[111] * ir) - q * nz) * ib);
+    q = lr * y[134];
+    SHLIGHT_SET3(out_grad[134],
+                 (-6.5356167f * (y[111] * ir) + 4.44007722f * (y[113] * ir) - q * nx) * ib,
+                 (6.5356167f * (y[109] * ir) + 4.44007722f * (y[107] * ir) - q * ny) * ib,
+                 (11.3200202f * (y[112] * ir) - q * nz) * ib);
+    q = lr * y[135];
+    SHLIGHT_SET3(out_grad[135],
+                 (-7.05927286f * (y[112] * ir) + 3.91578004f * (y[114] * ir) - q * nx) * ib,
+                 (7.05927286f * (y[108] * ir) + 3.91578004f * (y[106] * ir) - q * ny) * ib,
+                 (11.0754985f * (y[113] * ir) - q * nz) * ib);
+    q = lr * y[136];
+    SHLIGHT_SET3(out_grad[136],
+                 (-7.58287544f * (y[113] * ir) + 3.39116499f * (y[115] * ir) - q * nx) * ib,
+                 (7.58287544f * (y[107] * ir) + 3.39116499f * (y[105] * ir) - q * ny) * ib,
+                 (10.7238053f * (y[114] * ir) - q * nz) * ib);
+    q = lr * y[137];
+    SHLIGHT_SET3(out_grad[137],
+                 (-8.10643483f * (y[114] * ir) + 2.86605752f * (y[116] * ir) - q * nx) * ib,
+                 (8.10643483f * (y[106] * ir) + 2.86605752f * (y[104] * ir) - q * ny) * ib,
+                 (10.2539191f * (y[115] * ir) - q * nz) * ib);
+    q = lr * y[138];
+    SHLIGHT_SET3(out_grad[138],
+                 (-8.62995889f * (y[115] * ir) + 2.34012617f * (y[117] * ir) - q * nx) * ib,
+                 (8.62995889f * (y[105] * ir) + 2.34012617f * (y[103] * ir) - q * ny) * ib,
+                 (9.64858736f * (y[116] * ir) - q * nz) * ib);
+    q = lr * y[139];
+    SHLIGHT_SET3(out_grad[139],
+                 (-9.15345368f * (y[116] * ir) + 1.81265393f * (y[118] * ir) - q * nx) * ib,
+                 (9.15345368f * (y[104] * ir) + 1.81265393f * (y[102] * ir) - q * ny) * ib,
+                 (8.88015444f * (y[117] * ir) - q * nz) * ib);
+    q = lr * y[140];
+    SHLIGHT_SET3(out_grad[140],
+                 (-9.67692395f * (y[117] * ir) + 1.28173989f * (y[119] * ir) - q * nx) * ib,
+                 (9.67692395f * (y[103] * ir) + 1.28173989f * (y[101] * ir) - q * ny) * ib,
+                 (7.90117532f * (y[118] * ir) - q * nz) * ib);
+    q = lr * y[141];
+    SHLIGHT_SET3(out_grad[141],
+                 (-10.2003735f * (y[118] * ir) + 0.74001287f * (y[120] * ir) - q * nx) * ib,
+                 (10.2003735f * (y[102] * ir) + 0.74001287f * (y[100] * ir) - q * ny) * ib,
+                 (6.61887633f * (y[119] * ir) - q * nz) * ib);
+    q = lr * y[142];
+    SHLIGHT_SET3(out_grad[142], (-10.7238053f * (y[119] * ir) - q * nx) * ib,
+                 (10.7238053f * (y[101] * ir) - q * ny) * ib,
+                 (4.79583152f * (y[120] * ir) - q * nz) * ib);
+    q = lr * y[143];
+    SHLIGHT_SET3(out_grad[143], (-11.2472219f * (y[120] * ir) - q * nx) * ib,
+                 (11.2472219f * (y[100] * ir) - q * ny) * ib, -q * nz * ib);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 12
+  if (n > 12) {
+    lr = 12.0f * ir;
+    q = lr * y[144];
+    SHLIGHT_SET3(out_grad[144], (-12.2474487f * (y[121] * ir) - q * nx) * ib,
+                 (-12.2474487f * (y[143] * ir) - q * ny) * ib, -q * nz * ib);
+    q = lr * y[145];
+    SHLIGHT_SET3(out_grad[145], (-11.7260394f * (y[122] * ir) - q * nx) * ib,
+                 (-11.7260394f * (y[142] * ir) - q * ny) * ib,
+                 (5.0f * (y[121] * ir) - q * nz) * ib);
+    q = lr * y[146];
+    SHLIGHT_SET3(out_grad[146],
+                 (-11.2046186f * (y[123] * ir) + 0.737209781f * (y[121] * ir) - q * nx) * ib,
+                 (-11.2046186f * (y[141] * ir) + -0.737209781f * (y[143] * ir) - q * ny) * ib,
+                 (6.91564075f * (y[122] * ir) - q * nz) * ib);
+    q = lr * y[147];
+    SHLIGHT_SET3(out_grad[147],
+                 (-10.6831847f * (y[124] * ir) + 1.2768848f * (y[122] * ir) - q * nx) * ib,
+                 (-10.6831847f * (y[140] * ir) + -1.2768848f * (y[142] * ir) - q * ny) * ib,
+                 (8.27515927f * (y[123] * ir) - q * nz) * ib);
+    q = lr * y[148];
+    SHLIGHT_SET3(out_grad[148],
+                 (-10.1617356f * (y[125] * ir) + 1.8057878f * (y[123] * ir) - q * nx) * ib,
+                 (-10.1617356f * (y[139] * ir) + -1.8057878f * (y[141] * ir) - q * ny) * ib,
+                 (9.32504808f * (y[124] * ir) - q * nz) * ib);
+    q = lr * y[149];
+    SHLIGHT_SET3(out_grad[149],
+                 (-9.6402688f * (y[126] * ir) + 2.33126202f * (y[124] * ir) - q * nx) * ib,
+                 (-9.6402688f * (y[138] * ir) + -2.33126202f * (y[140] * ir) - q * ny) * ib,
+                 (10.1617356f * (y[125] * ir) - q * nz) * ib);
+    q = lr * y[150];
+    SHLIGHT_SET3(out_grad[150],
+                 (-9.11878138f * (y[127] * ir) + 2.8552012f * (y[125] * ir) - q * nx) * ib,
+                 (-9.11878138f * (y[137] * ir) + -2.8552012f * (y[139] * ir) - q * ny) * ib,
+                 (10.8347268f * (y[126] * ir) - q * nz) * ib);
+    q = lr * y[151];
+    SHLIGHT_SET3(out_grad[151],
+                 (-8.59726954f * (y[128] * ir) + 3.37831962f * (y[126] * ir) - q * nx) * ib,
+                 (-8.59726954f * (y[136] * ir) + -3.37831962f * (y[138] * ir) - q * ny) * ib,
+                 (11.3731186f * (y[127] * ir) - q * nz) * ib);
+    q = lr * y[152];
+    SHLIGHT_SET3(out_grad[152],
+                 (-8.07572853f * (y[129] * ir) + 3.90094749f * (y[127] * ir) - q * nx) * ib,
+                 (-8.07572853f * (y[135] * ir) + -3.90094749f * (y[137] * ir) - q * ny) * ib,
+                 (11.7953565f * (y[128] * ir) - q * nz) * ib);
+    q = lr * y[153];
+    SHLIGHT_SET3(out_grad[153],
+                 (-7.55415233f * (y[130] * ir) + 4.42325868f * (y[128] * ir) - q * nx) * ib,
+                 (-7.55415233f * (y[134] * ir) + -4.42325868f * (y[136] * ir) - q * ny) * ib,
+                 (12.1135928f * (y[129] * ir) - q * nz) * ib);
+    q = lr * y[154];
+    SHLIGHT_SET3(out_grad[154],
+                 (-7.0325331f * (y[131] * ir) + 4.94535355f * (y[129] * ir) - q * nx) * ib,
+                 (-7.0325331f * (y[133] * ir) + -4.94535355f * (y[135] * ir) - q * ny) * ib,
+                 (12.3358791f * (y[130] * ir) - q * nz) * ib);
+    q = lr * y[155];
+    SHLIGHT_SET3(out_grad[155], (5.46729406f * (y[130] * ir) - q * nx) * ib,
+                 (-9.20774721f * (y[132] * ir) + -5.46729406f * (y[134] * ir) - q * ny) * ib,
+                 (12.4673487f * (y[131] * ir) - q * nz) * ib);
+    q = lr * y[156];
+    SHLIGHT_SET3(out_grad[156], (8.46989554f * (y[133] * ir) - q * nx) * ib,
+                 (8.46989554f * (y[131] * ir) - q * ny) * ib,
+                 (12.5108648f * (y[132] * ir) - q * nz) * ib);
+    q = lr * y[157];
+    SHLIGHT_SET3(
+        out_grad[157], (-9.20774721f * (y[132] * ir) + 5.46729406f * (y[134] * ir) - q * nx) * ib,
+        (5.46729406f * (y[130] * ir) - q * ny) * ib, (12.4673487f * (y[133] * ir) - q * nz) * ib);
+    q = lr * y[158];
+    SHLIGHT_SET3(out_grad[158],
+                 (-7.0325331f * (y[133] * ir) + 4.94535355f * (y[135] * ir) - q * nx) * ib,
+                 (7.0325331f * (y[131] * ir) + 4.94535355f * (y[129] * ir) - q * ny) * ib,
+                 (12.3358791f * (y[134] * ir) - q * nz) * ib);
+    q = lr * y[159];
+    SHLIGHT_SET3(out_grad[159],
+                 (-7.55415233f * (y[134] * ir) + 4.42325868f * (y[136] * ir) - q * nx) * ib,
+                 (7.55415233f * (y[130] * ir) + 4.42325868f * (y[128] * ir) - q * ny) * ib,
+                 (12.1135928f * (y[135] * ir) - q * nz) * ib);
+    q = lr * y[160];
+    SHLIGHT_SET3(out_grad[160],
+                 (-8.07572853f * (y[135] * ir) + 3.90094749f * (y[137] * ir) - q * nx) * ib,
+                 (8.07572853f * (y[129] * ir) + 3.90094749f * (y[127] * ir) - q * ny) * ib,
+                 (11.7953565f * (y[136] * ir) - q * nz) * ib);
+    q = lr * y[161];
+    SHLIGHT_SET3(out_grad[161],
+                 (-8.59726954f * (y[136] * ir) + 3.37831962f * (y[138] * ir) - q * nx) * ib,
+                 (8.59726954f * (y[128] * ir) + 3.37831962f * (y[126] * ir) - q * ny) * ib,
+                 (11.3731186f * (y[137] * ir) - q * nz) * ib);
+    q = lr * y[162];
+    SHLIGHT_SET3(out_grad[162],
+                 (-9.11878138f * (y[137] * ir) + 2.8552012f * (y[139] * ir) - q * nx) * ib,
+                 (9.11878138f * (y[127] * ir) + 2.8552012f * (y[125] * ir) - q * ny) * ib,
+                 (10.8347268f * (y[138] * ir) - q * nz) * ib);
+    q = lr * y[163];
+    SHLIGHT_SET3(out_grad[163],
+                 (-9.6402688f * (y[138] * ir) + 2.33126202f * (y[140] * ir) - q * nx) * ib,
+                 (9.6402688f * (y[126] * ir) + 2.33126202f * (y[124] * ir) - q * ny) * ib,
+                 (10.1617356f * (y[139] * ir) - q * nz) * ib);
+    q = lr * y[164];
+    SHLIGHT_SET3(out_grad[164],
+                 (-10.1617356f * (y[139] * ir) + 1.8057878f * (y[141] * ir) - q * nx) * ib,
+                 (10.1617356f * (y[125] * ir) + 1.8057878f * (y[123] * ir) - q * ny) * ib,
+                 (9.32504808f * (y[140] * ir) - q * nz) * ib);
+    q = lr * y[165];
+    SHLIGHT_SET3(out_grad[165],
+                 (-10.6831847f * (y[140] * ir) + 1.2768848f * (y[142] * ir) - q * nx) * ib,
+                 (10.6831847f * (y[124] * ir) + 1.2768848f * (y[122] * ir) - q * ny) * ib,
+                 (8.27515927f * (y[141] * ir) - q * nz) * ib);
+    q = lr * y[166];
+    SHLIGHT_SET3(out_grad[166],
+                 (-11.2046186f * (y[141] * ir) + 0.737209781f * (y[143] * ir) - q * nx) * ib,
+                 (11.2046186f * (y[123] * ir) + 0.737209781f * (y[121] * ir) - q * ny) * ib,
+                 (6.91564075f * (y[142] * ir) - q * nz) * ib);
+    q = lr * y[167];
+    SHLIGHT_SET3(out_grad[167], (-11.7260394f * (y[142] * ir) - q * nx) * ib,
+                 (11.7260394f * (y[122] * ir) - q * ny) * ib, (5.0f * (y[143] * ir) - q * nz) * ib);
+    q = lr * y[168];
+    SHLIGHT_SET3(out_grad[168], (-12.2474487f * (y[143] * ir) - q * nx) * ib,
+                 (12.2474487f * (y[121] * ir) - q * ny) * ib, -q * nz * ib);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 13
+  if (n > 13) {
+    lr = 13.0f * ir;
+    q = lr * y[169];
+    SHLIGHT_SET3(out_grad[169], (-13.2476413f * (y[144] * ir) - q * nx) * ib,
+                 (-13.2476413f * (y[168] * ir) - q * ny) * ib, -q * nz * ib);
+    q = lr * y[170];
+    SHLIGHT_SET3(out_grad[170], (-12.7279221f * (y[145] * ir) - q * nx) * ib,
+                 (-12.7279221f * (y[167] * ir) - q * ny) * ib,
+                 (5.19615242f * (y[144] * ir) - q * nz) * ib);
+    q = lr * y[171];
+    SHLIGHT_SET3(out_grad[171],
+                 (-12.208194f * (y[146] * ir) + 0.734846923f * (y[144] * ir) - q * nx) * ib,
+                 (-12.208194f * (y[166] * ir) + -0.734846923f * (y[168] * ir) - q * ny) * ib,
+                 (7.2f * (y[145] * ir) - q * nz) * ib);
+    q = lr * y[172];
+    SHLIGHT_SET3(out_grad[172],
+                 (-11.6884558f * (y[147] * ir) + 1.27279221f * (y[145] * ir) - q * nx) * ib,
+                 (-11.6884558f * (y[165] * ir) + -1.27279221f * (y[167] * ir) - q * ny) * ib,
+                 (8.63249674f * (y[146] * ir) - q * nz) * ib);
+    q = lr * y[173];
+    SHLIGHT_SET3(out_grad[173], (-11.1687063f * (y[148] * ir) + 1.8f * (y[146] * ir) - q * nx) * ib,
+                 (-11.1687063f * (y[164] * ir) + -1.8f * (y[166] * ir) - q * ny) * ib,
+                 (9.74884609f * (y[147] * ir) - q * nz) * ib);
+    q = lr * y[174];
+    SHLIGHT_SET3(out_grad[174],
+                 (-10.6489436f * (y[149] * ir) + 2.32379001f * (y[147] * ir) - q * nx) * ib,
+                 (-10.6489436f * (y[163] * ir) + -2.32379001f * (y[165] * ir) - q * ny) * ib,
+                 (10.6489436f * (y[148] * ir) - q * nz) * ib);
+    q = lr * y[175];
+    SHLIGHT_SET3(out_grad[175],
+                 (-10.1291658f * (y[150] * ir) + 2.84604989f * (y[148] * ir) - q * nx) * ib,
+                 (-10.1291658f * (y[162] * ir) + -2.84604989f * (y[164] * ir) - q * ny) * ib,
+                 (11.3841996f * (y[149] * ir) - q * nz) * ib);
+    q = lr * y[176];
+    SHLIGHT_SET3(out_grad[176],
+                 (-9.60937043f * (y[151] * ir) + 3.36749165f * (y[149] * ir) - q * nx) * ib,
+                 (-9.60937043f * (y[161] * ir) + -3.36749165f * (y[163] * ir) - q * ny) * ib,
+                 (11.9849906f * (y[150] * ir) - q * nz) * ib);
+    q = lr * y[177];
+    SHLIGHT_SET3(out_grad[177],
+                 (-9.08955444f * (y[152] * ir) + 3.88844442f * (y[150] * ir) - q * nx) * ib,
+                 (-9.08955444f * (y[160] * ir) + -3.88844442f * (y[162] * ir) - q * ny) * ib,
+                 (12.4707658f * (y[151] * ir) - q * nz) * ib);
+    q = lr * y[178];
+    SHLIGHT_SET3(out_grad[178],
+                 (-8.56971411f * (y[153] * ir) + 4.40908154f * (y[151] * ir) - q * nx) * ib,
+                 (-8.56971411f * (y[159] * ir) + -4.40908154f * (y[161] * ir) - q * ny) * ib,
+                 (12.8545712f * (y[152] * ir) - q * nz) * ib);
+    q = lr * y[179];
+    SHLIGHT_SET3(out_grad[179],
+                 (-8.04984472f * (y[154] * ir) + 4.92950302f * (y[152] * ir) - q * nx) * ib,
+                 (-8.04984472f * (y[158] * ir) + -4.92950302f * (y[160] * ir) - q * ny) * ib,
+                 (13.1453414f * (y[153] * ir) - q * nz) * ib);
+    q = lr * y[180];
+    SHLIGHT_SET3(out_grad[180],
+                 (-7.52994024f * (y[155] * ir) + 5.44977064f * (y[153] * ir) - q * nx) * ib,
+                 (-7.52994024f * (y[157] * ir) + -5.44977064f * (y[159] * ir) - q * ny) * ib,
+                 (13.3491573f * (y[154] * ir) - q * nz) * ib);
+    q = lr * y[181];
+    SHLIGHT_SET3(out_grad[181], (5.96992462f * (y[154] * ir) - q * nx) * ib,
+                 (-9.91362699f * (y[156] * ir) + -5.96992462f * (y[158] * ir) - q * ny) * ib,
+                 (13.4699666f * (y[155] * ir) - q * nz) * ib);
+    q = lr * y[182];
+    SHLIGHT_SET3(out_grad[182], (9.17823512f * (y[157] * ir) - q * nx) * ib,
+                 (9.17823512f * (y[155] * ir) - q * ny) * ib,
+                 (13.5099963f * (y[156] * ir) - q * nz) * ib);
+    q = lr * y[183];
+    SHLIGHT_SET3(
+        out_grad[183], (-9.91362699f * (y[156] * ir) + 5.96992462f * (y[158] * ir) - q * nx) * ib,
+        (5.96992462f * (y[154] * ir) - q * ny) * ib, (13.4699666f * (y[157] * ir) - q * nz) * ib);
+    q = lr * y[184];
+    SHLIGHT_SET3(out_grad[184],
+                 (-7.52994024f * (y[157] * ir) + 5.44977064f * (y[159] * ir) - q * nx) * ib,
+                 (7.52994024f * (y[155] * ir) + 5.44977064f * (y[153] * ir) - q * ny) * ib,
+                 (13.3491573f * (y[158] * ir) - q * nz) * ib);
+    q = lr * y[185];
+    SHLIGHT_SET3(out_grad[185],
+                 (-8.04984472f * (y[158] * ir) + 4.92950302f * (y[160] * ir) - q * nx) * ib,
+                 (8.04984472f * (y[154] * ir) + 4.92950302f * (y[152] * ir) - q * ny) * ib,
+                 (13.1453414f * (y[159] * ir) - q * nz) * ib);
+    q = lr * y[186];
+    SHLIGHT_SET3(out_grad[186],
+                 (-8.56971411f * (y[159] * ir) + 4.40908154f * (y[161] * ir) - q * nx) * ib,
+                 (8.56971411f * (y[153] * ir) + 4.40908154f * (y[151] * ir) - q * ny) * ib,
+                 (12.8545712f * (y[160] * ir) - q * nz) * ib);
+    q = lr * y[187];
+    SHLIGHT_SET3(out_grad[187],
+                 (-9.08955444f * (y[160] * ir) + 3.88844442f * (y[162] * ir) - q * nx) * ib,
+                 (9.08955444f * (y[152] * ir) + 3.88844442f * (y[150] * ir) - q * ny) * ib,
+                 (12.4707658f * (y[161] * ir) - q * nz) * ib);
+    q = lr * y[188];
+    SHLIGHT_SET3(out_grad[188],
+                 (-9.60937043f * (y[161] * ir) + 3.36749165f * (y[163] * ir) - q * nx) * ib,
+                 (9.60937043f * (y[151] * ir) + 3.36749165f * (y[149] * ir) - q * ny) * ib,
+                 (11.9849906f * (y[162] * ir) - q * nz) * ib);
+    q = lr * y[189];
+    SHLIGHT_SET3(out_grad[189],
+                 (-10.1291658f * (y[162] * ir) + 2.84604989f * (y[164] * ir) - q * nx) * ib,
+                 (10.1291658f * (y[150] * ir) + 2.84604989f * (y[148] * ir) - q * ny) * ib,
+                 (11.3841996f * (y[163] * ir) - q * nz) * ib);
+    q = lr * y[190];
+    SHLIGHT_SET3(out_grad[190],
+                 (-10.6489436f * (y[163] * ir) + 2.32379001f * (y[165] * ir) - q * nx) * ib,
+                 (10.6489436f * (y[149] * ir) + 2.32379001f * (y[147] * ir) - q * ny) * ib,
+                 (10.6489436f * (y[164] * ir) - q * nz) * ib);
+    q = lr * y[191];
+    SHLIGHT_SET3(out_grad[191], (-11.1687063f * (y[164] * ir) + 1.8f * (y[166] * ir) - q * nx) * ib,
+                 (11.1687063f * (y[148] * ir) + 1.8f * (y[146] * ir) - q * ny) * ib,
+                 (9.74884609f * (y[165] * ir) - q * nz) * ib);
+    q = lr * y[192];
+    SHLIGHT_SET3(out_grad[192],
+                 (-11.6884558f * (y[165] * ir) + 1.27279221f * (y[167] * ir) - q * nx) * ib,
+                 (11.6884558f * (y[147] * ir) + 1.27279221f * (y[145] * ir) - q * ny) * ib,
+                 (8.63249674f * (y[166] * ir) - q * nz) * ib);
+    q = lr * y[193];
+    SHLIGHT_SET3(out_grad[193],
+                 (-12.208194f * (y[166] * ir) + 0.734846923f * (y[168] * ir) - q * nx) * ib,
+                 (12.208194f * (y[146] * ir) + 0.734846923f * (y[144] * ir) - q * ny) * ib,
+                 (7.2f * (y[167] * ir) - q * nz) * ib);
+    q = lr * y[194];
+    SHLIGHT_SET3(out_grad[194], (-12.7279221f * (y[167] * ir) - q * nx) * ib,
+                 (12.7279221f * (y[145] * ir) - q * ny) * ib,
+                 (5.19615242f * (y[168] * ir) - q * nz) * ib);
+    q = lr * y[195];
+    SHLIGHT_SET3(out_grad[195], (-13.2476413f * (y[168] * ir) - q * nx) * ib,
+                 (13.2476413f * (y[144] * ir) - q * ny) * ib, -q * nz * ib);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 14
+  if (n > 14) {
+    lr = 14.0f * ir;
+    q = lr * y[196];
+    SHLIGHT_SET3(out_grad[196], (-14.2478068f * (y[169] * ir) - q * nx) * ib,
+                 (-14.2478068f * (y[195] * ir) - q * ny) * ib, -q * nz * ib);
+    q = lr * y[197];
+    SHLIGHT_SET3(out_grad[197], (-13.7295302f * (y[170] * ir) - q * nx) * ib,
+                 (-13.7295302f * (y[194] * ir) - q * ny) * ib,
+                 (5.38516481f * (y[169] * ir) - q * nz) * ib);
+    q = lr * y[198];
+    SHLIGHT_SET3(out_grad[198],
+                 (-13.2112466f * (y[171] * ir) + 0.732828109f * (y[169] * ir) - q * nx) * ib,
+                 (-13.2112466f * (y[193] * ir) + -0.732828109f * (y[195] * ir) - q * ny) * ib,
+                 (7.47340965f * (y[170] * ir) - q * nz) * ib);
+    q = lr * y[199];
+    SHLIGHT_SET3(out_grad[199],
+                 (-12.6929552f * (y[172] * ir) + 1.26929552f * (y[170] * ir) - q * nx) * ib,
+                 (-12.6929552f * (y[192] * ir) + -1.26929552f * (y[194] * ir) - q * ny) * ib,
+                 (8.97527468f * (y[171] * ir) - q * nz) * ib);
+    q = lr * y[200];
+    SHLIGHT_SET3(out_grad[200],
+                 (-12.1746549f * (y[173] * ir) + 1.79505494f * (y[171] * ir) - q * nx) * ib,
+                 (-12.1746549f * (y[191] * ir) + -1.79505494f * (y[193] * ir) - q * ny) * ib,
+                 (10.1543641f * (y[172] * ir) - q * nz) * ib);
+    q = lr * y[201];
+    SHLIGHT_SET3(out_grad[201],
+                 (-11.6563446f * (y[174] * ir) + 2.31740596f * (y[172] * ir) - q * nx) * ib,
+                 (-11.6563446f * (y[190] * ir) + -2.31740596f * (y[192] * ir) - q * ny) * ib,
+                 (11.1138885f * (y[173] * ir) - q * nz) * ib);
+    q = lr * y[202];
+    SHLIGHT_SET3(out_grad[202],
+                 (-11.138023f * (y[175] * ir) + 2.83823106f * (y[173] * ir) - q * nx) * ib,
+                 (-11.138023f * (y[189] * ir) + -2.83823106f * (y[191] * ir) - q * ny) * ib,
+                 (11.9070474f * (y[174] * ir) - q * nz) * ib);
+    q = lr * y[203];
+    SHLIGHT_SET3(out_grad[203],
+                 (-10.6196882f * (y[176] * ir) + 3.35824028f * (y[174] * ir) - q * nx) * ib,
+                 (-10.6196882f * (y[188] * ir) + -3.35824028f * (y[190] * ir) - q * ny) * ib,
+                 (12.5653845f * (y[175] * ir) - q * nz) * ib);
+    q = lr * y[204];
+    SHLIGHT_SET3(out_grad[204],
+                 (-10.1013384f * (y[177] * ir) + 3.87776186f * (y[175] * ir) - q * nx) * ib,
+                 (-10.1013384f * (y[187] * ir) + -3.87776186f * (y[189] * ir) - q * ny) * ib,
+                 (13.1092277f * (y[176] * ir) - q * nz) * ib);
+    q = lr * y[205];
+    SHLIGHT_SET3(out_grad[205],
+                 (-9.58297101f * (y[178] * ir) + 4.39696865f * (y[176] * ir) - q * nx) * ib,
+                 (-9.58297101f * (y[186] * ir) + -4.39696865f * (y[188] * ir) - q * ny) * ib,
+                 (13.5523676f * (y[177] * ir) - q * nz) * ib);
+    q = lr * y[206];
+    SHLIGHT_SET3(out_grad[206],
+                 (-9.06458309f * (y[179] * ir) + 4.9159604f * (y[177] * ir) - q * nx) * ib,
+                 (-9.06458309f * (y[185] * ir) + -4.9159604f * (y[187] * ir) - q * ny) * ib,
+                 (13.9044357f * (y[178] * ir) - q * nz) * ib);
+    q = lr * y[207];
+    SHLIGHT_SET3(out_grad[207],
+                 (-8.5461709f * (y[180] * ir) + 5.43479871f * (y[178] * ir) - q * nx) * ib,
+                 (-8.5461709f * (y[184] * ir) + -5.43479871f * (y[186] * ir) - q * ny) * ib,
+                 (14.1722211f * (y[179] * ir) - q * nz) * ib);
+    q = lr * y[208];
+    SHLIGHT_SET3(out_grad[208],
+                 (-8.02772972f * (y[181] * ir) + 5.9535237f * (y[179] * ir) - q * nx) * ib,
+                 (-8.02772972f * (y[183] * ir) + -5.9535237f * (y[185] * ir) - q * ny) * ib,
+                 (14.3604395f * (y[180] * ir) - q * nz) * ib);
+    q = lr * y[209];
+    SHLIGHT_SET3(out_grad[209], (6.47216261f * (y[180] * ir) - q * nx) * ib,
+                 (-10.6196882f * (y[182] * ir) + -6.47216261f * (y[184] * ir) - q * ny) * ib,
+                 (14.4721956f * (y[181] * ir) - q * nz) * ib);
+    q = lr * y[210];
+    SHLIGHT_SET3(out_grad[210], (9.88639169f * (y[183] * ir) - q * nx) * ib,
+                 (9.88639169f * (y[181] * ir) - q * ny) * ib,
+                 (14.5092563f * (y[182] * ir) - q * nz) * ib);
+    q = lr * y[211];
+    SHLIGHT_SET3(
+        out_grad[211], (-10.6196882f * (y[182] * ir) + 6.47216261f * (y[184] * ir) - q * nx) * ib,
+        (6.47216261f * (y[180] * ir) - q * ny) * ib, (14.4721956f * (y[183] * ir) - q * nz) * ib);
+    q = lr * y[212];
+    SHLIGHT_SET3(out_grad[212],
+                 (-8.02772972f * (y[183] * ir) + 5.9535237f * (y[185] * ir) - q * nx) * ib,
+                 (8.02772972f * (y[181] * ir) + 5.9535237f * (y[179] * ir) - q * ny) * ib,
+                 (14.3604395f * (y[184] * ir) - q * nz) * ib);
+    q = lr * y[213];
+    SHLIGHT_SET3(out_grad[213],
+                 (-8.5461709f * (y[184] * ir) + 5.43479871f * (y[186] * ir) - q * nx) * ib,
+                 (8.5461709f * (y[180] * ir) + 5.43479871f * (y[178] * ir) - q * ny) * ib,
+                 (14.1722211f * (y[185] * ir) - q * nz) * ib);
+    q = lr * y[214];
+    SHLIGHT_SET3(out_grad[214],
+                 (-9.06458309f * (y[185] * ir) + 4.9159604f * (y[187] * ir) - q * nx) * ib,
+                 (9.06458309f * (y[179] * ir) + 4.9159604f * (y[177] * ir) - q * ny) * ib,
+                 (13.9044357f * (y[186] * ir) - q * nz) * ib);
+    q = lr * y[215];
+    SHLIGHT_SET3(out_grad[215],
+                 (-9.58297101f * (y[186] * ir) + 4.39696865f * (y[188] * ir) - q * nx) * ib,
+                 (9.58297101f * (y[178] * ir) + 4.39696865f * (y[176] * ir) - q * ny) * ib,
+                 (13.5523676f * (y[187] * ir) - q * nz) * ib);
+    q = lr * y[216];
+    SHLIGHT_SET3(out_grad[216],
+                 (-10.1013384f * (y[187] * ir) + 3.87776186f * (y[189] * ir) - q * nx) * ib,
+                 (10.1013384f * (y[177] * ir) + 3.87776186f * (y[175] * ir) - q * ny) * ib,
+                 (13.1092277f * (y[188] * ir) - q * nz) * ib);
+    q = lr * y[217];
+    SHLIGHT_SET3(out_grad[217],
+                 (-10.6196882f * (y[188] * ir) + 3.35824028f * (y[190] * ir) - q * nx) * ib,
+                 (10.6196882f * (y[176] * ir) + 3.35824028f * (y[174] * ir) - q * ny) * ib,
+                 (12.5653845f * (y[189] * ir) - q * nz) * ib);
+    q = lr * y[218];
+    SHLIGHT_SET3(out_grad[218],
+                 (-11.138023f * (y[189] * ir) + 2.83823106f * (y[191] * ir) - q * nx) * ib,
+                 (11.138023f * (y[175] * ir) + 2.83823106f * (y[173] * ir) - q * ny) * ib,
+                 (11.9070474f * (y[190] * ir) - q * nz) * ib);
+    q = lr * y[219];
+    SHLIGHT_SET3(out_grad[219],
+                 (-11.6563446f * (y[190] * ir) + 2.31740596f * (y[192] * ir) - q * nx) * ib,
+                 (11.6563446f * (y[174] * ir) + 2.31740596f * (y[172] * ir) - q * ny) * ib,
+                 (11.1138885f * (y[191] * ir) - q * nz) * ib);
+    q = lr * y[220];
+    SHLIGHT_SET3(out_grad[220],
+                 (-12.1746549f * (y[191] * ir) + 1.79505494f * (y[193] * ir) - q * nx) * ib,
+                 (12.1746549f * (y[173] * ir) + 1.79505494f * (y[171] * ir) - q * ny) * ib,
+                 (10.1543641f * (y[192] * ir) - q * nz) * ib);
+    q = lr * y[221];
+    SHLIGHT_SET3(out_grad[221],
+                 (-12.6929552f * (y[192] * ir) + 1.26929552f * (y[194] * ir) - q * nx) * ib,
+                 (12.6929552f * (y[172] * ir) + 1.26929552f * (y[170] * ir) - q * ny) * ib,
+                 (8.97527468f * (y[193] * ir) - q * nz) * ib);
+    q = lr * y[222];
+    SHLIGHT_SET3(out_grad[222],
+                 (-13.2112466f * (y[193] * ir) + 0.732828109f * (y[195] * ir) - q * nx) * ib,
+                 (13.2112466f * (y[171] * ir) + 0.732828109f * (y[169] * ir) - q * ny) * ib,
+                 (7.47340965f * (y[194] * ir) - q * nz) * ib);
+    q = lr * y[223];
+    SHLIGHT_SET3(out_grad[223], (-13.7295302f * (y[194] * ir) - q * nx) * ib,
+                 (13.7295302f * (y[170] * ir) - q * ny) * ib,
+                 (5.38516481f * (y[195] * ir) - q * nz) * ib);
+    q = lr * y[224];
+    SHLIGHT_SET3(out_grad[224], (-14.2478068f * (y[195] * ir) - q * nx) * ib,
+                 (14.2478068f * (y[169] * ir) - q * ny) * ib, -q * nz * ib);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 15
+  if (n > 15) {
+    lr = 15.0f * ir;
+    q = lr * y[225];
+    SHLIGHT_SET3(out_grad[225], (-15.2479507f * (y[196] * ir) - q * nx) * ib,
+                 (-15.2479507f * (y[224] * ir) - q * ny) * ib, -q * nz * ib);
+    q = lr * y[226];
+    SHLIGHT_SET3(out_grad[226], (-14.7309199f * (y[197] * ir) - q * nx) * ib,
+                 (-14.7309199f * (y[223] * ir) - q * ny) * ib,
+                 (5.56776436f * (y[196] * ir) - q * nz) * ib);
+    q = lr * y[227];
+    SHLIGHT_SET3(out_grad[227],
+                 (-14.2138835f * (y[198] * ir) + 0.731083277f * (y[196] * ir) - q * nx) * ib,
+                 (-14.2138835f * (y[222] * ir) + -0.731083277f * (y[224] * ir) - q * ny) * ib,
+                 (7.73705816f * (y[197] * ir) - q * nz) * ib);
+    q = lr * y[228];
+    SHLIGHT_SET3(out_grad[228],
+                 (-13.6968408f * (y[199] * ir) + 1.26627338f * (y[197] * ir) - q * nx) * ib,
+                 (-13.6968408f * (y[221] * ir) + -1.26627338f * (y[223] * ir) - q * ny) * ib,
+                 (9.30517098f * (y[198] * ir) - q * nz) * ib);
+    q = lr * y[229];
+    SHLIGHT_SET3(out_grad[229],
+                 (-13.1797912f * (y[200] * ir) + 1.79078099f * (y[198] * ir) - q * nx) * ib,
+                 (-13.1797912f * (y[220] * ir) + -1.79078099f * (y[222] * ir) - q * ny) * ib,
+                 (10.543833f * (y[199] * ir) - q * nz) * ib);
+    q = lr * y[230];
+    SHLIGHT_SET3(out_grad[230],
+                 (-12.6627338f * (y[201] * ir) + 2.31188832f * (y[199] * ir) - q * nx) * ib,
+                 (-12.6627338f * (y[219] * ir) + -2.31188832f * (y[221] * ir) - q * ny) * ib,
+                 (11.5594416f * (y[200] * ir) - q * nz) * ib);
+    q = lr * y[231];
+    SHLIGHT_SET3(out_grad[231],
+                 (-12.1456676f * (y[202] * ir) + 2.83147336f * (y[200] * ir) - q * nx) * ib,
+                 (-12.1456676f * (y[218] * ir) + -2.83147336f * (y[220] * ir) - q * ny) * ib,
+                 (12.4068946f * (y[201] * ir) - q * nz) * ib);
+    q = lr * y[232];
+    SHLIGHT_SET3(out_grad[232],
+                 (-11.6285914f * (y[203] * ir) + 3.35024446f * (y[201] * ir) - q * nx) * ib,
+                 (-11.6285914f * (y[217] * ir) + -3.35024446f * (y[219] * ir) - q * ny) * ib,
+                 (13.1188204f * (y[202] * ir) - q * nz) * ib);
+    q = lr * y[233];
+    SHLIGHT_SET3(out_grad[233],
+                 (-11.1115038f * (y[204] * ir) + 3.86852908f * (y[202] * ir) - q * nx) * ib,
+                 (-11.1115038f * (y[216] * ir) + -3.86852908f * (y[218] * ir) - q * ny) * ib,
+                 (13.7163381f * (y[203] * ir) - q * nz) * ib);
+    q = lr * y[234];
+    SHLIGHT_SET3(out_grad[234],
+                 (-10.5944032f * (y[205] * ir) + 4.38649966f * (y[203] * ir) - q * nx) * ib,
+                 (-10.5944032f * (y[215] * ir) + -4.38649966f * (y[217] * ir) - q * ny) * ib,
+                 (14.2138835f * (y[204] * ir) - q * nz) * ib);
+    q = lr * y[235];
+    SHLIGHT_SET3(out_grad[235],
+                 (-10.0772875f * (y[206] * ir) + 4.90425572f * (y[204] * ir) - q * nx) * ib,
+                 (-10.0772875f * (y[214] * ir) + -4.90425572f * (y[216] * ir) - q * ny) * ib,
+                 (14.6216655f * (y[205] * ir) - q * nz) * ib);
+    q = lr * y[236];
+    SHLIGHT_SET3(out_grad[236],
+                 (-9.56015438f * (y[207] * ir) + 5.4218587f * (y[205] * ir) - q * nx) * ib,
+                 (-9.56015438f * (y[213] * ir) + -5.4218587f * (y[215] * ir) - q * ny) * ib,
+                 (14.9470329f * (y[206] * ir) - q * nz) * ib);
+    q = lr * y[237];
+    SHLIGHT_SET3(out_grad[237],
+                 (-9.04300072f * (y[208] * ir) + 5.93934862f * (y[206] * ir) - q * nx) * ib,
+                 (-9.04300072f * (y[212] * ir) + -5.93934862f * (y[214] * ir) - q * ny) * ib,
+                 (15.1952806f * (y[207] * ir) - q * nz) * ib);
+    q = lr * y[238];
+    SHLIGHT_SET3(out_grad[238],
+                 (-8.52582284f * (y[209] * ir) + 6.45675268f * (y[207] * ir) - q * nx) * ib,
+                 (-8.52582284f * (y[211] * ir) + -6.45675268f * (y[213] * ir) - q * ny) * ib,
+                 (15.3701457f * (y[208] * ir) - q * nz) * ib);
+    q = lr * y[239];
+    SHLIGHT_SET3(out_grad[239], (6.97408998f * (y[208] * ir) - q * nx) * ib,
+                 (-11.3258934f * (y[210] * ir) + -6.97408998f * (y[212] * ir) - q * ny) * ib,
+                 (15.4741163f * (y[209] * ir) - q * nz) * ib);
+    q = lr * y[240];
+    SHLIGHT_SET3(out_grad[240], (10.5944032f * (y[211] * ir) - q * nx) * ib,
+                 (10.5944032f * (y[209] * ir) - q * ny) * ib,
+                 (15.5086183f * (y[210] * ir) - q * nz) * ib);
+    q = lr * y[241];
+    SHLIGHT_SET3(
+        out_grad[241], (-11.3258934f * (y[210] * ir) + 6.97408998f * (y[212] * ir) - q * nx) * ib,
+        (6.97408998f * (y[208] * ir) - q * ny) * ib, (15.4741163f * (y[211] * ir) - q * nz) * ib);
+    q = lr * y[242];
+    SHLIGHT_SET3(out_grad[242],
+                 (-8.52582284f * (y[211] * ir) + 6.45675268f * (y[213] * ir) - q * nx) * ib,
+                 (8.52582284f * (y[209] * ir) + 6.45675268f * (y[207] * ir) - q * ny) * ib,
+                 (15.3701457f * (y[212] * ir) - q * nz) * ib);
+    q = lr * y[243];
+    SHLIGHT_SET3(out_grad[243],
+                 (-9.04300072f * (y[212] * ir) + 5.93934862f * (y[214] * ir) - q * nx) * ib,
+                 (9.04300072f * (y[208] * ir) + 5.93934862f * (y[206] * ir) - q * ny) * ib,
+                 (15.1952806f * (y[213] * ir) - q * nz) * ib);
+    q = lr * y[244];
+    SHLIGHT_SET3(out_grad[244],
+                 (-9.56015438f * (y[213] * ir) + 5.4218587f * (y[215] * ir) - q * nx) * ib,
+                 (9.56015438f * (y[207] * ir) + 5.4218587f * (y[205] * ir) - q * ny) * ib,
+                 (14.9470329f * (y[214] * ir) - q * nz) * ib);
+    q = lr * y[245];
+    SHLIGHT_SET3(out_grad[245],
+                 (-10.0772875f * (y[214] * ir) + 4.90425572f * (y[216] * ir) - q * nx) * ib,
+                 (10.0772875f * (y[206] * ir) + 4.90425572f * (y[204] * ir) - q * ny) * ib,
+                 (14.6216655f * (y[215] * ir) - q * nz) * ib);
+    q = lr * y[246];
+    SHLIGHT_SET3(out_grad[246],
+                 (-10.5944032f * (y[215] * ir) + 4.38649966f * (y[217] * ir) - q * nx) * ib,
+                 (10.5944032f * (y[205] * ir) + 4.38649966f * (y[203] * ir) - q * ny) * ib,
+                 (14.2138835f * (y[216] * ir) - q * nz) * ib);
+    q = lr * y[247];
+    SHLIGHT_SET3(out_grad[247],
+                 (-11.1115038f * (y[216] * ir) + 3.86852908f * (y[218] * ir) - q * nx) * ib,
+                 (11.1115038f * (y[204] * ir) + 3.86852908f * (y[202] * ir) - q * ny) * ib,
+                 (13.7163381f * (y[217] * ir) - q * nz) * ib);
+    q = lr * y[248];
+    SHLIGHT_SET3(out_grad[248],
+                 (-11.6285914f * (y[217] * ir) + 3.35024446f * (y[219] * ir) - q * nx) * ib,
+                 (11.6285914f * (y[203] * ir) + 3.35024446f * (y[201] * ir) - q * ny) * ib,
+                 (13.1188204f * (y[218] * ir) - q * nz) * ib);
+    q = lr * y[249];
+    SHLIGHT_SET3(out_grad[249],
+                 (-12.1456676f * (y[218] * ir) + 2.83147336f * (y[220] * ir) - q * nx) * ib,
+                 (12.1456676f * (y[202] * ir) + 2.83147336f * (y[200] * ir) - q * ny) * ib,
+                 (12.4068946f * (y[219] * ir) - q * nz) * ib);
+    q = lr * y[250];
+    SHLIGHT_SET3(out_grad[250],
+                 (-12.6627338f * (y[219] * ir) + 2.31188832f * (y[221] * ir) - q * nx) * ib,
+                 (12.6627338f * (y[201] * ir) + 2.31188832f * (y[199] * ir) - q * ny) * ib,
+                 (11.5594416f * (y[220] * ir) - q * nz) * ib);
+    q = lr * y[251];
+    SHLIGHT_SET3(out_grad[251],
+                 (-13.1797912f * (y[220] * ir) + 1.79078099f * (y[222] * ir) - q * nx) * ib,
+                 (13.1797912f * (y[200] * ir) + 1.79078099f * (y[198] * ir) - q * ny) * ib,
+                 (10.543833f * (y[221] * ir) - q * nz) * ib);
+    q = lr * y[252];
+    SHLIGHT_SET3(out_grad[252],
+                 (-13.6968408f * (y[221] * ir) + 1.26627338f * (y[223] * ir) - q * nx) * ib,
+                 (13.6968408f * (y[199] * ir) + 1.26627338f * (y[197] * ir) - q * ny) * ib,
+                 (9.30517098f * (y[222] * ir) - q * nz) * ib);
+    q = lr * y[253];
+    SHLIGHT_SET3(out_grad[253],
+                 (-14.2138835f * (y[222] * ir) + 0.731083277f * (y[224] * ir) - q * nx) * ib,
+                 (14.2138835f * (y[198] * ir) + 0.731083277f * (y[196] * ir) - q * ny) * ib,
+                 (7.73705816f * (y[223] * ir) - q * nz) * ib);
+    q = lr * y[254];
+    SHLIGHT_SET3(out_grad[254], (-14.7309199f * (y[223] * ir) - q * nx) * ib,
+                 (14.7309199f * (y[197] * ir) - q * ny) * ib,
+                 (5.56776436f * (y[224] * ir) - q * nz) * ib);
+    q = lr * y[255];
+    SHLIGHT_SET3(out_grad[255], (-15.2479507f * (y[224] * ir) - q * nx) * ib,
+                 (15.2479507f * (y[196] * ir) - q * ny) * ib, -q * nz * ib);
+  }
+#endif
 }
 
 void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
@@ -6399,7 +1242,6 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
   shli_real iu;
   float ir;
   float ib;
-  int i;
   n = shli_bands(n);
   if (n < 1) {
     return;
@@ -6466,16 +1308,9 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
     return;
   }
 #endif
-  if (ib == 1.0f) {
-    shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, out_grad);
-  } else {
-    shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), 1.0f, out_grad);
-    for (i = 0; i < n * n; ++i) {
-      out_grad[i][0] = (out_grad[i][0] * ir) * ib;
-      out_grad[i][1] = (out_grad[i][1] * ir) * ib;
-      out_grad[i][2] = (out_grad[i][2] * ir) * ib;
-    }
-  }
+  /* one call (a second inlined copy and a rescaling loop over out_grad cost a shader ~100x
+     its compile time): ib = 1 leaves every output exact */
+  shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, ib, out_grad);
 }
 
 void shl_sh_eval_grad_spherical(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],

@@ -5,6 +5,350 @@
 #ifndef SHL_LIGHT_GLSL
 #define SHL_LIGHT_GLSL
 
+void shli_sh_band_weights(int n, float kv[SHLIGHT_MAX_BANDS], float kg[SHLIGHT_MAX_BANDS],
+                          float ka[SHLIGHT_MAX_BANDS], float kb[SHLIGHT_MAX_BANDS], float wg[6],
+                          inout float io_sh[SHLIGHT_MAX_COEFFS],
+                          inout vec3 io_grad[SHLIGHT_MAX_COEFFS]) {
+  float y;
+  int i;
+  int l;
+  l = 0;
+#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
+  for (l = SHLIGHT_UNROLLED_BANDS; l < n; ++l) {
+    for (i = l * l; i < (l + 1) * (l + 1); ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+  l = 0;
+  for (i = 0; i < 1; ++i) {
+    y = io_sh[i];
+    io_sh[i] = kv[l] * y;
+    SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                 kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                 kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+  }
+#if SHLIGHT_MAX_BANDS > 1
+  if (n > 1) {
+    l = 1;
+    for (i = 1; i < 4; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 2
+  if (n > 2) {
+    l = 2;
+    for (i = 4; i < 9; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 3
+  if (n > 3) {
+    l = 3;
+    for (i = 9; i < 16; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    l = 4;
+    for (i = 16; i < 25; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    l = 5;
+    for (i = 25; i < 36; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    l = 6;
+    for (i = 36; i < 49; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 7
+  if (n > 7) {
+    l = 7;
+    for (i = 49; i < 64; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 8
+  if (n > 8) {
+    l = 8;
+    for (i = 64; i < 81; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 9
+  if (n > 9) {
+    l = 9;
+    for (i = 81; i < 100; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 10
+  if (n > 10) {
+    l = 10;
+    for (i = 100; i < 121; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 11
+  if (n > 11) {
+    l = 11;
+    for (i = 121; i < 144; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 12
+  if (n > 12) {
+    l = 12;
+    for (i = 144; i < 169; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 13
+  if (n > 13) {
+    l = 13;
+    for (i = 169; i < 196; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 14
+  if (n > 14) {
+    l = 14;
+    for (i = 196; i < 225; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 15
+  if (n > 15) {
+    l = 15;
+    for (i = 225; i < 256; ++i) {
+      y = io_sh[i];
+      io_sh[i] = kv[l] * y;
+      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
+                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
+                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    }
+  }
+#endif
+}
+
+void shli_sh_zero_grad(int n, out float out_sh[SHLIGHT_MAX_COEFFS],
+                       out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+  int i;
+#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
+  for (i = SHLIGHT_UNROLLED_BANDS * SHLIGHT_UNROLLED_BANDS; i < n * n; ++i) {
+    out_sh[i] = 0.0f;
+    SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+  }
+#endif
+  for (i = 0; i < 1; ++i) {
+    out_sh[i] = 0.0f;
+    SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+  }
+#if SHLIGHT_MAX_BANDS > 1
+  if (n > 1) {
+    for (i = 1; i < 4; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 2
+  if (n > 2) {
+    for (i = 4; i < 9; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 3
+  if (n > 3) {
+    for (i = 9; i < 16; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    for (i = 16; i < 25; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    for (i = 25; i < 36; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    for (i = 36; i < 49; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 7
+  if (n > 7) {
+    for (i = 49; i < 64; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 8
+  if (n > 8) {
+    for (i = 64; i < 81; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 9
+  if (n > 9) {
+    for (i = 81; i < 100; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 10
+  if (n > 10) {
+    for (i = 100; i < 121; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 11
+  if (n > 11) {
+    for (i = 121; i < 144; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 12
+  if (n > 12) {
+    for (i = 144; i < 169; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 13
+  if (n > 13) {
+    for (i = 169; i < 196; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 14
+  if (n > 14) {
+    for (i = 196; i < 225; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 15
+  if (n > 15) {
+    for (i = 225; i < 256; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
+  }
+#endif
+}
+
 void shli_cap_light_apply(int n, shli_real g[8], shli_real wgt,
                           inout float io_sh[SHLIGHT_MAX_COEFFS]) {
   shli_real f = 6.283185307179586 * g[4] * wgt;
@@ -65,7 +409,7 @@ void shli_sh_eval_grad_unit(int n, float nx, float ny, float nz, float ir,
                             out float out_y[SHLIGHT_MAX_COEFFS],
                             out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   shli_sh_eval_xyz(n, nx, ny, nz, out_y);
-  shli_sh_grad(n, out_y, nx, ny, nz, ir, out_grad);
+  shli_sh_grad(n, out_y, nx, ny, nz, ir, 1.0f, out_grad);
 }
 
 void shli_cap_light_grad(int n, shli_real g[8], shli_real wgt, shli_real gw0, shli_real gw1,
@@ -89,10 +433,7 @@ void shli_cap_light_grad(int n, shli_real g[8], shli_real wgt, shli_real gw0, sh
   float ny = SHLIGHT_FLOAT(g[1]);
   float nz = SHLIGHT_FLOAT(g[2]);
   float wg[6];
-  float y;
   int l;
-  int m;
-  int i;
   float kv[SHLIGHT_MAX_BANDS];
   float kg[SHLIGHT_MAX_BANDS];
   float ka[SHLIGHT_MAX_BANDS];
@@ -127,16 +468,7 @@ void shli_cap_light_grad(int n, shli_real g[8], shli_real wgt, shli_real gw0, sh
     fl = fl + 1.0;
   }
   shli_sh_eval_grad_unit(n, nx, ny, nz, 1.0f, io_sh, io_grad);
-  for (l = 0; l < n; ++l) {
-    for (m = -l; m <= l; ++m) {
-      i = l * (l + 1) + m;
-      y = io_sh[i];
-      io_sh[i] = kv[l] * y;
-      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
-      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
-      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
-    }
-  }
+  shli_sh_band_weights(n, kv, kg, ka, kb, wg, io_sh, io_grad);
 }
 
 void shl_sphere_light(int n, vec3 x, vec3 c, float r, out float out_sh[SHLIGHT_MAX_COEFFS]) {
@@ -161,7 +493,6 @@ void shl_sphere_light(int n, vec3 x, vec3 c, float r, out float out_sh[SHLIGHT_M
 void shl_sphere_light_grad(int n, vec3 x, vec3 c, float r, out float out_sh[SHLIGHT_MAX_COEFFS],
                            out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
   shli_real g[8];
-  int i;
   n = shli_bands(n);
   if (n < 1) {
     return;
@@ -169,12 +500,7 @@ void shl_sphere_light_grad(int n, vec3 x, vec3 c, float r, out float out_sh[SHLI
   shli_cap_frame(SHLIGHT_REAL(c[0]) - SHLIGHT_REAL(x[0]), SHLIGHT_REAL(c[1]) - SHLIGHT_REAL(x[1]),
                  SHLIGHT_REAL(c[2]) - SHLIGHT_REAL(x[2]), SHLIGHT_REAL(r), g);
   if (g[6] == 0.0) {
-    for (i = 0; i < n * n; ++i) {
-      out_sh[i] = 0.0f;
-      out_grad[i][0] = 0.0f;
-      out_grad[i][1] = 0.0f;
-      out_grad[i][2] = 0.0f;
-    }
+    shli_sh_zero_grad(n, out_sh, out_grad);
     return;
   }
 #if SHLIGHT_SIMD_EVAL

@@ -94,6 +94,7 @@ mkdir -p build/logs/lane
 lane_pid=$!
 step generated-code-fresh $PY tools/gen_basis.py --check
 step mirror-check $PY tools/check_mirror.py -q
+step glsl-one-include bash tools/glsl_one_check.sh
 step mirror-checker-selftest bash tools/tests_mirror/run.sh
 step glslang-450-330-300es bash tools/glsl_validate.sh
 step format-check $MAKE -s format-check
@@ -157,6 +158,8 @@ for b in $backends; do
   step "render-$b" env SHLIGHT_RENDER_SCENES="$rsc" bash tests/test_render.sh $b
   step "glsl-brdftab-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_brdftab_glsl
 done
+# GLSL compile budgets (llvmpipe, compile + link + first draw, CPU s) at 2x, the one include
+step glsl-compile-budget bash bench/glsl_budget.sh --no-run --check 2 --one-include
 # the second lane's steps, in its order (the -march=native variants run the same tests on this
 # machine's SIMD paths, AVX-512 / AVX2 kernels, with FMA contraction)
 wait "$lane_pid"

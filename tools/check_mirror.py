@@ -973,7 +973,9 @@ def run(root, quiet, require_f=False):
 
     glsl_files = []
     if os.path.isdir(gdir):
-        glsl_files = sorted(x for x in os.listdir(gdir) if x.endswith(".glsl"))
+        # shlight.glsl: the one-include bundle of the modules (tools/gen_glsl_one.py --check)
+        glsl_files = sorted(x for x in os.listdir(gdir) if x.endswith(".glsl") and
+                            x != "shlight.glsl")
 
     for mod in modules:
         ks = kernels[mod]

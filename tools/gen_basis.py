@@ -164,6 +164,84 @@ def gen_core(n):
                        ('shli_real', 'dd', None), ('float', 'xf', None)])
 
 
+def gen_core_any(nmax):
+    """shli_sh_core(n, x, y, z, t, sg, out_y): any 1 <= n <= nmax in one body, the column-m
+    recurrence of gen_core with each band's step under `if (n > l)` and, for GLSL (and C
+    builds with a smaller SHLIGHT_MAX_BANDS), under `#if SHLIGHT_MAX_BANDS > l`: a shader
+    compiles only the bands it can use, and a constant n folds every test away."""
+    L = []
+    w = L.append
+    w('SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t,')
+    w('                                 float sg, float *out_y) {')
+    w('@DECLS@')
+    w('  SHLIGHT_UNUSED(z);')
+    w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
+    w('  if (n > SHLIGHT_UNROLLED_BANDS) {')
+    w('    shli_sh_core_loop(n, x, y, z, t, sg, out_y);')
+    w('    return;')
+    w('  }')
+    w('#endif')
+    for m in range(nmax):
+        k = diag(m)
+        if m == 0:
+            w('  out_y[0] = %s;' % lit_f(k))
+        else:
+            w('#if SHLIGHT_MAX_BANDS > %d' % m)
+            w('  if (n > %d) {' % m)
+            if m >= 2:
+                w('    qc = x * pc - y * ps;')
+                w('    ps = x * ps + y * pc;')
+                w('    pc = qc;')
+            w('    fc = SHLIGHT_FLOAT(pc);')
+            w('    fs = SHLIGHT_FLOAT(ps);')
+            w('    out_y[%d] = %s * fc;' % (idx(m, m), lit_f(k)))
+            w('    out_y[%d] = %s * fs;' % (idx(m, -m), lit_f(k)))
+            if m + 1 < nmax:
+                w('    gc = sg * fc;')
+                w('    gs = sg * fs;')
+            w('  }')
+            w('#endif')
+        prev, cur = 'xa', 'xb'
+        for l in range(m + 1, nmax):
+            w('#if SHLIGHT_MAX_BANDS > %d' % l)
+            w('  if (n > %d) {' % l)
+            a, g, c = reinsch(l, m)
+            if l == m + 1:
+                w('    dd = %s * t;' % lit_d(-a * k))
+                w('    xa = %s + dd;' % lit_d(g * k))
+            else:
+                w('    dd = %s * dd - %s * (t * %s);' % (lit_d(c), lit_d(a), prev))
+                w('    %s = %s * %s + dd;' % (cur, lit_d(g), prev))
+                prev, cur = cur, prev
+            odd = (l - m) % 2 == 1
+            if m == 0:
+                if odd:
+                    w('    out_y[%d] = sg * SHLIGHT_FLOAT(%s);' % (idx(l, 0), prev))
+                else:
+                    w('    out_y[%d] = SHLIGHT_FLOAT(%s);' % (idx(l, 0), prev))
+            else:
+                w('    xf = SHLIGHT_FLOAT(%s);' % prev)
+                w('    out_y[%d] = xf * %s;' % (idx(l, m), 'gc' if odd else 'fc'))
+                w('    out_y[%d] = xf * %s;' % (idx(l, -m), 'gs' if odd else 'fs'))
+            w('  }')
+            w('#endif')
+    w('}')
+    return declare(L, [('shli_real', 'pc', 'x'), ('shli_real', 'ps', 'y'), ('shli_real', 'qc', None),
+                       ('float', 'fc', '0.0f'), ('float', 'fs', '0.0f'), ('float', 'gc', '0.0f'),
+                       ('float', 'gs', '0.0f'), ('shli_real', 'xa', '0.0'), ('shli_real', 'xb', '0.0'),
+                       ('shli_real', 'dd', '0.0'), ('float', 'xf', None)])
+
+
+def fmt_table_packed(ctype, name, size, vals, lit, per_row):
+    """a C table several numbers per line, kept so by clang-format off/on"""
+    out = ['/* clang-format off */', 'static const %s %s[%s] = {' % (ctype, name, size)]
+    for i in range(0, len(vals), per_row):
+        row = [lit(v) for v in vals[i:i + per_row]]
+        out.append('  ' + ', '.join(row) + (',' if i + per_row < len(vals) else ''))
+    out += ['};', '/* clang-format on */']
+    return out
+
+
 def declare(L, candidates):
     body = '\n'.join(L)
     decl = []
@@ -258,6 +336,44 @@ def gen_grad(n):
                     w('  out_grad[%d][%d] = %s - q * %s;' % (i, k, expr, nk))
                 else:
                     w('  out_grad[%d][%d] = -q * %s;' % (i, k, nk))
+    w('}')
+    return L
+
+
+def gen_grad_any(nmax):
+    """shli_sh_grad(n, y, nx, ny, nz, ir, out_grad): any 1 <= n <= nmax in one body, band l
+    under `if (n > l)` and `#if SHLIGHT_MAX_BANDS > l`; each output one SHLIGHT_SET3 (a vec3
+    store in GLSL, not three component writes), the products c (y_j ir) rounded as before, each
+    output times ib (1: exact; shl_sh_eval_grad's second factor of 1 / |d| for tiny |d|)."""
+    L = []
+    w = L.append
+    w('SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir,')
+    w('                                 float ib, float (*out_grad)[3]) {')
+    w('  float lr;')
+    w('  float q;')
+    w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
+    w('  if (n > SHLIGHT_UNROLLED_BANDS) {')
+    w('    shli_sh_grad_loop(n, y, nx, ny, nz, ir, ib, out_grad);')
+    w('    return;')
+    w('  }')
+    w('#endif')
+    w('  lr = 0.0f;')
+    w('  q = 0.0f;')
+    w('  SHLIGHT_SET3(out_grad[0], 0.0f, 0.0f, 0.0f);')
+    for l in range(1, nmax):
+        w('#if SHLIGHT_MAX_BANDS > %d' % l)
+        w('  if (n > %d) {' % l)
+        w('    lr = %s * ir;' % lit_f(float(l)))
+        for m in range(-l, l + 1):
+            i = idx(l, m)
+            w('    q = lr * y[%d];' % i)
+            ex = []
+            for g, nk in zip(grad_terms(l, m), ('nx', 'ny', 'nz')):
+                expr = ' + '.join('%s * (y[%d] * ir)' % (lit_f(cf), j) for cf, j in g)
+                ex.append(('(%s - q * %s) * ib' % (expr, nk)) if expr else ('-q * %s * ib' % nk))
+            w('    SHLIGHT_SET3(out_grad[%d], %s, %s, %s);' % (i, ex[0], ex[1], ex[2]))
+        w('  }')
+        w('#endif')
     w('}')
     return L
 
@@ -596,25 +712,89 @@ def gen_light_idx():
     band = [int(math.isqrt(i)) for i in range(UNROLLED * UNROLLED)]
     lit = lambda v: '%d' % v
     return (['#if SHLIGHT_SIMD_EVAL'] +
-            fmt_table('int', 'SHLI_LIGHT_BAND', '%d' % len(band), band, lit, False) +
+            fmt_table_packed('int', 'SHLI_LIGHT_BAND', '%d' % len(band), band, lit, 32) +
             ['#endif'])
+
+
+def gen_band_weights(nmax):
+    """>>light, mirrored: the per-band weights of a cap light applied to Y and its gradient,
+    io_sh[i] = kv_l y, io_grad[i] = kg_l io_grad[i] + (ka_l wg[0..2] + kb_l wg[3..5]) y (y the
+    old io_sh[i]), as one constant-trip loop per band (unrolled by shader compilers into
+    constant indices: a run-time loop over n * n outputs would send the arrays to memory);
+    and shli_sh_zero_grad, zeros the same way."""
+    L = []
+    w = L.append
+    w('SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg, const float *ka,')
+    w('                                         const float *kb, const float *wg, float *io_sh,')
+    w('                                         float (*io_grad)[3]) {')
+    w('  float y;')
+    w('  int i;')
+    w('  int l;')
+    w('  l = 0;')
+    w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
+    w('  for (l = SHLIGHT_UNROLLED_BANDS; l < n; ++l) {')
+    w('    for (i = l * l; i < (l + 1) * (l + 1); ++i) {')
+    body = ['y = io_sh[i];', 'io_sh[i] = kv[l] * y;',
+            'SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,',
+            '             kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,',
+            '             kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);']
+    for b in body:
+        w('      ' + b)
+    w('    }')
+    w('  }')
+    w('#endif')
+    for l in range(nmax):
+        ind = '  '
+        if l > 0:
+            w('#if SHLIGHT_MAX_BANDS > %d' % l)
+            w('  if (n > %d) {' % l)
+            ind = '    '
+        w(ind + 'l = %d;' % l)
+        w(ind + 'for (i = %d; i < %d; ++i) {' % (l * l, (l + 1) * (l + 1)))
+        for b in body:
+            w(ind + '  ' + b)
+        w(ind + '}')
+        if l > 0:
+            w('  }')
+            w('#endif')
+    w('}')
+    w('')
+    w('SHLIGHT_INLINE void shli_sh_zero_grad(int n, float *out_sh, float (*out_grad)[3]) {')
+    w('  int i;')
+    w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
+    w('  for (i = SHLIGHT_UNROLLED_BANDS * SHLIGHT_UNROLLED_BANDS; i < n * n; ++i) {')
+    w('    out_sh[i] = 0.0f;')
+    w('    SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);')
+    w('  }')
+    w('#endif')
+    for l in range(nmax):
+        ind = '  '
+        if l > 0:
+            w('#if SHLIGHT_MAX_BANDS > %d' % l)
+            w('  if (n > %d) {' % l)
+            ind = '    '
+        w(ind + 'for (i = %d; i < %d; ++i) {' % (l * l, (l + 1) * (l + 1)))
+        w(ind + '  out_sh[i] = 0.0f;')
+        w(ind + '  SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);')
+        w(ind + '}')
+        if l > 0:
+            w('  }')
+            w('#endif')
+    w('}')
+    return L
 
 
 def c_regions():
     tab, diagv = gen_tables()
     R = {}
+    R['sh_tab'] = (fmt_table_packed('shli_real', 'SHLI_SH_TAB', '%d' % len(tab), tab, lit_d, 4) +
+                      fmt_table_packed('float', 'SHLI_SH_DIAG', '%d' % len(diagv), diagv, lit_f, 6))
     body = []
-    body += fmt_table('shli_real', 'SHLI_SH_TAB', '%d' % len(tab), tab, lit_d, False)
-    body += fmt_table('float', 'SHLI_SH_DIAG', '%d' % len(diagv), diagv, lit_f, False)
     for n in range(1, POLY_BANDS + 1):
         body += [''] + gen_poly(n)
-    for n in range(1, UNROLLED + 1):
-        body += [''] + gen_core(n)
+    body += [''] + gen_core_any(UNROLLED)
     R['basis'] = body
-    gb = fmt_table('float', 'SHLI_SH_GTAB', '%d' % len(gen_grad_tables()), gen_grad_tables(), lit_f, False)
-    for n in range(1, UNROLLED + 1):
-        gb += [''] + gen_grad(n)
-    R['gradient'] = gb
+    R['gradient'] = gen_grad_any(UNROLLED)
     bb = []
     for n in range(1, UNROLLED + 1):
         bb += [''] + (gen_batch_poly(n) if n <= POLY_BANDS else gen_batch_rs(n))
@@ -628,11 +808,11 @@ def c_regions():
            'static const shli_sh_batch_fn SHLI_SH_BATCH[%d] = {' % (UNROLLED + 1),
            '    0, ' + ', '.join('shli_sh_batch_%d' % n for n in range(1, UNROLLED + 1)) + '};']
     R['batch'] = bb
-    R['zh_tab'] = fmt_table('shli_real', 'SHLI_ZH_TAB', '%d' % (5 * MAX_BANDS), zh_table(MAX_BANDS),
-                            lit_d, False)
+    R['zh_tab'] = fmt_table_packed('shli_real', 'SHLI_ZH_TAB', '%d' % (5 * MAX_BANDS),
+                                   zh_table(MAX_BANDS), lit_d, 5)
     import gen_grad_simd
     R['gradv'] = gen_grad_simd.main()
-    R['light_idx'] = gen_light_idx()
+    R['light_idx'] = gen_light_idx() + [''] + gen_band_weights(UNROLLED)
     lt = gen_lane_table()
     ls = gen_lane_table_scaled()
     pco, ptap, podd = gen_poly_lanes()
@@ -657,7 +837,9 @@ ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
                'v': 'SHLIGHT_POLYGON_MAX', 'io_px': 'SHLIGHT_CLIP_MAX', 'io_py': 'SHLIGHT_CLIP_MAX',
                'io_pz': 'SHLIGHT_CLIP_MAX', 'out_rp': '3', 'out_np': '1',
                'out_idx': '4', 'out_w': '4', 'tab': 'SHLIGHT_BRDF_TABLE_FLOATS',
-               'out_range': '2', 'io_split': 'SHLIGHT_HALF_K', 'io_am': '2', 'out_par': '5'}
+               'out_range': '2', 'io_split': 'SHLIGHT_HALF_K', 'io_am': '2', 'out_par': '5',
+               'kv': 'SHLIGHT_MAX_BANDS', 'kg': 'SHLIGHT_MAX_BANDS', 'ka': 'SHLIGHT_MAX_BANDS',
+               'kb': 'SHLIGHT_MAX_BANDS', 'wg': '6'}
 
 
 def glsl_param(prm, fname):
