@@ -389,77 +389,64 @@ def gen_grad_tables():
 
 
 # ---------------------------------------------------------------- SIMD batch (C only)
-def gen_batch_rs(n):
-    """shli_sh_batch_<n> for POLY_BANDS < n <= UNROLLED: one vector of directions, the float
-    Reinsch form of gen_core per column m (X_l^m in t = 1 - |z|, then Y = X U, X V with the
-    parity sign folded into U, V by a XOR, SHLI_VFLIP), products and sums kept apart (SHLI_VMULS, SHLI_VFMS2,
-    SHLI_VMADDS: never FMAs on AVX-512, see there), and column 0, whose chain is the longest,
-    interleaved evenly with the others (its variables are its own)."""
-    L = []
-    w = L.append
-    w('static void shli_sh_batch_%d(SHLI_V x, SHLI_V y, SHLI_V z, float *out, ptrdiff_t stride) {' % n)
-    w('  SHLI_V s2 = SHLI_VMADD(x, x, SHLI_VMUL(y, y));')
-    w('  SHLI_V ir = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(z, z, s2)));')
-    w('  SHLI_V az = SHLI_VMUL(SHLI_VABS(z), ir);')
-    w('  SHLI_V t = SHLI_VDIV(SHLI_VMUL(s2, SHLI_VMUL(ir, ir)), SHLI_VADD(SHLI_VSET(1.0f), az));')
-    w('  SHLI_V sg = SHLI_VSGN(z);')
-    w('@DECLS@')
-    w('  x = SHLI_VMUL(x, ir);')
-    w('  y = SHLI_VMUL(y, ir);')
-    cols = []
-    for m in range(n):
-        C = []
-        v = (lambda s: s + '0') if m == 0 else (lambda s: s)
-        k = diag(m)
-        if m == 0:
-            C.append('  SHLI_VSTORE(out, SHLI_VSET(%s));' % lit_f(k))
-        else:
-            if m == 1:
-                C.append('  pc = x;')
-                C.append('  ps = y;')
+def lit_fs(v):
+    """the shortest float literal for the float that lit_f(v) gives (packed C-only tables; the
+    same value as lit_f, which rounds v to 9 digits first, bit for bit)"""
+    import struct
+    f = struct.unpack('f', struct.pack('f', float(lit_f(v)[:-1])))[0]
+    if f == 0.0:
+        return '0'
+    for p in range(1, 10):
+        s = '%.*g' % (p, f)
+        if struct.unpack('f', struct.pack('f', float(s)))[0] == f:
+            break
+    if s == '%d' % int(float(s)) and abs(f) < 1e6 and 'e' not in s:
+        return s
+    if 'e' not in s and '.' not in s:
+        s += '.0'
+    return s + 'f'
+
+
+def packed_table(ctype, name, vals, lit, width=98):
+    """a C-only constant table with as many numbers per line as fit (clang-format off)"""
+    out = ['/* clang-format off */', 'static const %s %s[%d] = {' % (ctype, name, len(vals))]
+    row = ''
+    for i, v in enumerate(vals):
+        item = lit(v) + (',' if i + 1 < len(vals) else '')
+        if row and len(row) + 1 + len(item) > width:
+            out.append(row)
+            row = ''
+        row = (row + ' ' + item) if row else '    ' + item
+    out += [row, '};', '/* clang-format on */']
+    return out
+
+
+def gen_batch_tables():
+    """>>basis batch (C only), read by the one batch body of shlight.h with literal n (the loops
+    unroll and these loads fold to constants):
+    SHLI_SH_BRS[m] (m < 16): X_m^m; SHLI_SH_BRS[16 + 3 (l (l-1)/2 + m) + {0, 1, 2}] for
+    0 <= m < l < 16: the float Reinsch step of band l in column m (alpha, g, c; the first step
+    of a column, l = m + 1, as -alpha X_m^m, g X_m^m);
+    SHLI_SH_BPOLY[3 (l (l+1)/2 + m) + k], 0 <= m <= l < POLY_BANDS: coefficient k of X_l^m in z^2
+    (its even part, or its odd part divided by z), the Horner forms of n <= POLY_BANDS."""
+    rs = [diag(m) for m in range(UNROLLED)]
+    for l in range(1, UNROLLED):
+        for m in range(l):
+            a, g, c = reinsch(l, m)
+            if l == m + 1:
+                k = diag(m)
+                rs += [-a * k, g * k, 0.0]
             else:
-                C.append('  qc = SHLI_VFMS2(x, pc, y, ps);')
-                C.append('  ps = SHLI_VFMA2(x, ps, y, pc);')
-                C.append('  pc = qc;')
-            C.append('  SHLI_VSTORE(out + %d * stride, SHLI_VMULS(SHLI_VSET(%s), pc));' % (idx(m, m), lit_f(k)))
-            C.append('  SHLI_VSTORE(out + %d * stride, SHLI_VMULS(SHLI_VSET(%s), ps));' % (idx(m, -m), lit_f(k)))
-            if m + 1 < n:
-                C.append('  gc = SHLI_VFLIP(pc, sg);')
-                C.append('  gs = SHLI_VFLIP(ps, sg);')
-        if m + 1 < n:
-            a, g, c = reinsch(m + 1, m)
-            C.append('  %s = SHLI_VMULS(SHLI_VSET(%s), t);' % (v('dd'), lit_f(-a * k)))
-            C.append('  %s = SHLI_VADD(SHLI_VSET(%s), %s);' % (v('xa'), lit_f(g * k), v('dd')))
-            prev, cur = v('xa'), v('xb')
-            for l in range(m + 1, n):
-                if l > m + 1:
-                    a, g, c = reinsch(l, m)
-                    C.append('  %s = SHLI_VMULS(t, %s);' % (v('tx'), prev))
-                    C.append('  %s = SHLI_VFMS2(SHLI_VSET(%s), %s, SHLI_VSET(%s), %s);'
-                             % (v('dd'), lit_f(c), v('dd'), lit_f(a), v('tx')))
-                    C.append('  %s = SHLI_VMADDS(SHLI_VSET(%s), %s, %s);' % (cur, lit_f(g), prev, v('dd')))
-                    prev, cur = cur, prev
-                odd = (l - m) % 2 == 1
-                if m == 0:
-                    e = 'SHLI_VFLIP(%s, sg)' % prev if odd else prev
-                    C.append('  SHLI_VSTORE(out + %d * stride, %s);' % (idx(l, 0), e))
-                else:
-                    C.append('  SHLI_VSTORE(out + %d * stride, SHLI_VMULS(%s, %s));'
-                             % (idx(l, m), prev, 'gc' if odd else 'pc'))
-                    C.append('  SHLI_VSTORE(out + %d * stride, SHLI_VMULS(%s, %s));'
-                             % (idx(l, -m), prev, 'gs' if odd else 'ps'))
-        cols.append(C)
-    c0 = cols[0]
-    cm = [st for C in cols[1:] for st in C]
-    k0 = len(c0)
-    for i, st in enumerate(cm):
-        while c0 and len(c0) * len(cm) > k0 * (len(cm) - i):
-            w(c0.pop(0))
-        w(st)
-    L += c0
-    w('}')
-    return declare(L, [('SHLI_V', v, None) for v in ('pc', 'ps', 'qc', 'gc', 'gs', 'xa', 'xb', 'dd', 'tx',
-                                                     'xa0', 'xb0', 'dd0', 'tx0')])
+                rs += [a, g, c]
+    po = []
+    for l in range(POLY_BANDS):
+        for m in range(l + 1):
+            c = xpoly(l, m)
+            odd = (l - m) % 2 == 1
+            ev = [c[i] for i in range(1 if odd else 0, len(c), 2)]
+            po += ev + [0.0] * (3 - len(ev))
+    return (packed_table('float', 'SHLI_SH_BRS', rs, lit_fs) +
+            packed_table('float', 'SHLI_SH_BPOLY', po, lit_fs))
 
 
 # ---------------------------------------------------------------- small n: float polynomials
@@ -535,89 +522,6 @@ def gen_poly(n):
     return declare(L, [('float', 'z2', None), ('float', 'pc', None), ('float', 'ps', None),
                        ('float', 'qc', None), ('float', 'xf', None)])
 
-
-def gen_batch_poly(n):
-    """SIMD twin of gen_poly: the batch kernel for n <= POLY_BANDS"""
-    L = []
-    w = L.append
-    w('static void shli_sh_batch_%d(SHLI_V x, SHLI_V y, SHLI_V z, float *out, ptrdiff_t stride) {' % n)
-    if n == 1:
-        for v in ('x', 'y', 'z', 'stride'):
-            w('  (void)%s;' % v)
-        w('  SHLI_VSTORE(out, SHLI_VSET(%s));' % lit_f(diag(0)))
-        w('}')
-        return L
-    w('@DECLS@')
-    if n >= 3:
-        w('  z2 = SHLI_VMUL(z, z);')
-
-    def vh(coefs, var):
-        e = 'SHLI_VSET(%s)' % lit_f(coefs[-1])
-        for c in reversed(coefs[:-1]):
-            e = 'SHLI_VMADD(%s, %s, SHLI_VSET(%s))' % (e, var, lit_f(c)) if c != 0.0 else \
-                'SHLI_VMUL(%s, %s)' % (e, var)
-        return e
-    for m in range(n):
-        if m == 2:
-            w('  pc = SHLI_VNMADD(y, y, SHLI_VMUL(x, x));')
-            w('  ps = SHLI_VMUL(SHLI_VADD(x, x), y);')
-        elif m >= 3:
-            w('  qc = SHLI_VNMADD(y, ps, SHLI_VMUL(x, pc));')
-            w('  ps = SHLI_VMADD(x, ps, SHLI_VMUL(y, pc));')
-            w('  pc = qc;')
-        cu = 'x' if m == 1 else 'pc'
-        su = 'y' if m == 1 else 'ps'
-        for l in range(m, n):
-            c = xpoly(l, m)
-            odd = (l - m) % 2 == 1
-            ev = [c[i] for i in range(1 if odd else 0, len(c), 2)]
-            e = vh(ev, 'z2') if len(ev) > 1 else 'SHLI_VSET(%s)' % lit_f(ev[0])
-            if odd:
-                e = 'SHLI_VMUL(%s, z)' % e
-            if m == 0:
-                w('  SHLI_VSTORE(out + %d * stride, %s);' % (idx(l, 0), e))
-            else:
-                w('  xf = %s;' % e)
-                w('  SHLI_VSTORE(out + %d * stride, SHLI_VMUL(xf, %s));' % (idx(l, m), cu))
-                w('  SHLI_VSTORE(out + %d * stride, SHLI_VMUL(xf, %s));' % (idx(l, -m), su))
-    w('}')
-    return declare(L, [('SHLI_V', v, None) for v in ('z2', 'pc', 'ps', 'qc', 'xf')])
-
-
-
-def gen_batch2(n):
-    """the batch kernel of n bands for two vectors of directions at once (A: lanes j..j+W-1,
-    B: j+W..j+2W-1): every statement twice, constants shared, half the code per direction"""
-    one = gen_batch_poly(n) if n <= POLY_BANDS else gen_batch_rs(n)
-    names = ['x', 'y', 'z', 's2', 'ir', 'az', 't', 'sg', 'pc', 'ps', 'qc', 'gc', 'gs', 'xa', 'xb',
-             'dd', 'z2', 'xf', 'tx', 'xa0', 'xb0', 'dd0', 'tx0']
-    rx = re.compile(r'\b(%s)\b' % '|'.join(names))
-    L = ['static void shli_sh_batch2_%d(const float *x, const float *y, const float *z, float *out,'
-         % n, '                               ptrdiff_t stride) {']
-    body = one[1:-1]
-    decl = [l for l in body if l.startswith('  SHLI_V ')]
-    rest = [l for l in body if not l.startswith('  SHLI_V ')]
-    for suf in ('A', 'B'):
-        off = '' if suf == 'A' else ' + SHLI_W'
-        L.append('  SHLI_V xA%s = SHLI_VLOAD(x%s), yA%s = SHLI_VLOAD(y%s), zA%s = SHLI_VLOAD(z%s);'
-                 .replace('A%s', suf).replace('%s', off) if False else
-                 '  SHLI_V x%s = SHLI_VLOAD(x%s), y%s = SHLI_VLOAD(y%s), z%s = SHLI_VLOAD(z%s);'
-                 % (suf, off, suf, off, suf, off))
-    for l in decl:
-        for suf in ('A', 'B'):
-            L.append(rx.sub(lambda m: m.group(1) + suf, l))
-    for l in rest:
-        if l.strip().startswith('(void)'):
-            continue
-        for suf in ('A', 'B'):
-            s = rx.sub(lambda m: m.group(1) + suf, l)
-            if suf == 'B':
-                s = s.replace('SHLI_VSTORE(out', 'SHLI_VSTORE(out + SHLI_W')
-            L.append(s)
-    L.append('  (void)stride;')
-    L.append('  (void)xA, (void)yA, (void)zA, (void)xB, (void)yB, (void)zB;')
-    L.append('}')
-    return L
 
 # ---------------------------------------------------------------- regions
 def zh_table(nb):
@@ -795,19 +699,7 @@ def c_regions():
     body += [''] + gen_core_any(UNROLLED)
     R['basis'] = body
     R['gradient'] = gen_grad_any(UNROLLED)
-    bb = []
-    for n in range(1, UNROLLED + 1):
-        bb += [''] + (gen_batch_poly(n) if n <= POLY_BANDS else gen_batch_rs(n))
-    for n in range(1, UNROLLED + 1):
-        bb += [''] + gen_batch2(n)
-    bb += ['', 'typedef void (*shli_sh_batch2_fn)(const float *, const float *, const float *, float *,',
-           '                                  ptrdiff_t);',
-           'static const shli_sh_batch2_fn SHLI_SH_BATCH2[%d] = {' % (UNROLLED + 1),
-           '    0, ' + ', '.join('shli_sh_batch2_%d' % n for n in range(1, UNROLLED + 1)) + '};']
-    bb += ['', 'typedef void (*shli_sh_batch_fn)(SHLI_V, SHLI_V, SHLI_V, float *, ptrdiff_t);',
-           'static const shli_sh_batch_fn SHLI_SH_BATCH[%d] = {' % (UNROLLED + 1),
-           '    0, ' + ', '.join('shli_sh_batch_%d' % n for n in range(1, UNROLLED + 1)) + '};']
-    R['batch'] = bb
+    R['batch'] = gen_batch_tables()
     R['zh_tab'] = fmt_table_packed('shli_real', 'SHLI_ZH_TAB', '%d' % (5 * MAX_BANDS),
                                    zh_table(MAX_BANDS), lit_d, 5)
     import gen_grad_simd
