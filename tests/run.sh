@@ -110,7 +110,8 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/tests/test_brdf build/tests/native/test_brdf build/tests/test_brdf_glsl \
   build/tests/test_brdftab build/tests/fuzz_replay_brdftab build/tests/test_brdftab_glsl \
   build/tests/test_ssf build/tests/test_ssf_glsl \
-  build/render/shlrender build/tests/fuzz_replay_scene build/tests/test_rd_core
+  build/render/shlrender build/tests/fuzz_replay_scene build/tests/test_rd_core \
+  build/tests/test_contracts
 touch build/logs/lane/tests-built
 step test_basis build/tests/test_basis
 step test_simd_novl build/tests/native-novl/test_simd_novl
@@ -128,6 +129,7 @@ step fuzz-corpus-replay-scene build/tests/fuzz_replay_scene tests/corpus/scene
 step test_glm build/tests/test_glm
 step fuzz-corpus-replay build/tests/fuzz_replay tests/corpus/basis
 step test_brdftab build/tests/test_brdftab
+step test_contracts build/tests/test_contracts
 # in the foreground: it balances the two lanes (both ~555 s)
 step lightref-selftest build/tests/selftest_lightref
 step fuzz-corpus-replay-brdftab build/tests/fuzz_replay_brdftab tests/corpus/brdftab

@@ -213,3 +213,16 @@ $(TESTS_BUILD)/test_ssf: $(TESTS_SSF_DEPS)
 $(TESTS_BUILD)/asan/test_ssf: $(TESTS_SSF_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/test_ssf.c $(TESTS_QUADLIBS)
+
+# >>contracts: out-of-domain contracts of the zonal / light / grid / lobe / HVL / SSF functions
+# and the 16 KB stack restructurings (tests/test_contracts.c)
+TESTS_CONTRACTS_DEPS := tests/test_contracts.c tests/tl.h shlight.h
+$(TESTS_BUILD)/test_contracts: $(TESTS_CONTRACTS_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion -o $@ tests/test_contracts.c -lm
+$(TESTS_BUILD)/native/test_contracts: $(TESTS_CONTRACTS_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion -march=native -ffp-contract=fast -o $@ tests/test_contracts.c -lm
+$(TESTS_BUILD)/asan/test_contracts: $(TESTS_CONTRACTS_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion $(TESTS_ASAN) -fsanitize=float-cast-overflow -fno-sanitize-recover=all -o $@ tests/test_contracts.c -lm
