@@ -23928,8 +23928,8 @@ SHLIGHT_INLINE void shl_zh_cap_printed(int n, float r, float d, float *out_zh) {
    zh: n floats, any finite values: |out_sh[l (l+1) + m]| <= |zh[l]| (Unsold's bound), so the
    output is finite for finite zh up to FLT_MAX (no intermediate overflow; a value that float
    rounding carries past FLT_MAX saturates to +-FLT_MAX). Not finite input: a NaN zh[l] gives
-   NaN in band l, an infinite one +-FLT_MAX or NaN (where Y = 0) in band l only. out_sh: n * n floats. Cost: one
-   shl_sh_eval plus n sqrt and n * n mul. */
+   NaN in band l, an infinite one +-FLT_MAX or NaN (where Y = 0) in band l only. out_sh: n * n
+   floats. Cost: one shl_sh_eval plus n sqrt and n * n mul (two in a band with |zh| >= 1e30). */
 SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], float *out_sh) {
   shli_real g[8];
   shli_real t;
@@ -24348,8 +24348,8 @@ SHLIGHT_INLINE void shli_tri_frame(const float x[3], const float p0[3], const fl
   out_nt[0] = 0.0;
   out_nt[1] = 0.0;
   out_nt[2] = 0.0;
-  mx = SHLIGHT_MAXR(mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)),
-                                     SHLIGHT_ABSR(bz)));
+  mx = SHLIGHT_MAXR(
+      mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)), SHLIGHT_ABSR(bz)));
   if ((mx > 1.0e9 || mx < 1.0e-8) && mx > 0.0 && mx <= SHLIGHT_REAL_MAX) {
     /* large or tiny edges scaled to ~1: the area |e1 x e2| = sc^2 |e1/sc x e2/sc| neither
        overflows nor underflows (it did above edges ~1.3e19 in C, float squares in GLSL) */
@@ -24538,10 +24538,10 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
   shli_real lc;
   shli_real nm;
   shli_real dn;
-  mx = SHLIGHT_MAXR(mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)),
-                                     SHLIGHT_ABSR(bz)));
-  mx = SHLIGHT_MAXR(mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(cx), SHLIGHT_ABSR(cy)),
-                                     SHLIGHT_ABSR(cz)));
+  mx = SHLIGHT_MAXR(
+      mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)), SHLIGHT_ABSR(bz)));
+  mx = SHLIGHT_MAXR(
+      mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(cx), SHLIGHT_ABSR(cy)), SHLIGHT_ABSR(cz)));
   if ((mx > 1.0e9 || mx < 1.0e-8) && mx > 0.0 && mx <= SHLIGHT_REAL_MAX) {
     /* Omega is scale-invariant: far or tiny triangles are scaled to |R| ~ 1 first, so the
        degree-3 products N and D neither overflow nor underflow (float in GLSL) */
@@ -28218,8 +28218,8 @@ SHLIGHT_INLINE float shli_sh_conv_zh_xyz(int n, const float *sh, const float *zh
   int b;
 #if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
   if (n * n > SHLI_YBUF_COEFFS) {
-    return SHLIGHT_FLOAT(shli_sh_ystream(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy),
-                                         SHLIGHT_FLOAT(uz), sh, zh, 0.0f, 0, 1));
+    return SHLIGHT_FLOAT(shli_sh_ystream(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz),
+                                         sh, zh, 0.0f, 0, 1));
   }
 #endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);
@@ -28668,8 +28668,8 @@ SHLIGHT_INLINE float shli_hvl_emission_xyz(int n, const float *femit, shli_real 
   }
 #if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
   if (n * n > SHLI_YBUF_COEFFS) {
-    return SHLIGHT_FLOAT(shli_sh_ystream(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy),
-                                         SHLIGHT_FLOAT(uz), femit, 0, 0.0f, 0, 1));
+    return SHLIGHT_FLOAT(shli_sh_ystream(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz),
+                                         femit, 0, 0.0f, 0, 1));
   }
 #endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);
@@ -29168,8 +29168,8 @@ SHLIGHT_INLINE void shl_ssf_vpl_sh(int n, const float x[3], const float nx[3], c
   }
 #if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
   if (n * n > SHLI_YBUF_COEFFS) {
-    shli_sh_ystream(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), io_sh, 0,
-                    e, io_sh, 1);
+    shli_sh_ystream(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), io_sh, 0, e,
+                    io_sh, 1);
     return;
   }
 #endif
@@ -42233,7 +42233,7 @@ SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float
   int j;
   n = shli_bands(n);
   if (n < 1 || count <= 0) return;
-  if (count < SHLI_W) { /* too few for one vector: the scalar kernel, strided */
+  if (count < SHLI_W) {          /* too few for one vector: the scalar kernel, strided */
     float tmp[SHLI_YBUF_COEFFS]; /* <= 8 KB; more bands streamed (16 KB stack rule) */
     int i;
 #if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS

@@ -43,19 +43,21 @@ long fuzz_basis_failures;
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-#define FF_LIST(X)                                                                                 \
+/* clang-format off */
+#define FF_LIST(X)                                                                                \
   X(zh_cap) X(zh_cap_da) X(zh_cap_printed) X(zh_rotate) X(sphere_light) X(sphere_light_grad)      \
-  X(triangle_light) X(triangle_light_grad) X(triangle_solid_angle) X(grid_build) X(grid_sample)    \
-  X(grid_trilinear) X(grid_taylor) X(grid_hermite) X(edge_integral) X(polygon_moment)              \
-  X(polygon_phong) X(polygon_phong2) X(ellipse_phong) X(sphere_phong) X(polygon_ggx_ndf)           \
-  X(polygon_ggx) X(polygon_beckmann_taylor) X(polygon_beckmann_ndf) X(polygon_blinn_phong)         \
-  X(polygon_beckmann) X(lobe_to_sg) X(sg_to_lobe) X(lobe_product) X(zh_phong) X(zh_cosine_power)   \
-  X(zh_lambert) X(zh_blinn_phong) X(zh_ggx) X(zh_beckmann) X(sh_dot) X(sh_conv_zh) X(zh_dot_zh)     \
-  X(zh_irradiance3) X(zh_irradiance) X(sh_window) X(zh_bands_for) X(sh_rotate_z) X(brdf_eval)      \
-  X(hvl_horizon) X(hvl_horizon_smoothstep) X(hvl_geometric) X(hvl_emission) X(hvl_radiance)        \
-  X(hvl_contribution) X(hvl_contribution_zh) X(hvl_radius_neighbours) X(hvl_radius_fov)            \
-  X(hvl_radius_fov_tan) X(ssf_vpl_sh) X(ssf_vpl_irradiance) X(ssf_interleave) X(ssf_weight)         \
-  X(ssf_irradiance)
+  X(triangle_light) X(triangle_light_grad) X(triangle_solid_angle) X(grid_build)                  \
+  X(grid_sample) X(grid_trilinear) X(grid_taylor) X(grid_hermite) X(edge_integral)                \
+  X(polygon_moment) X(polygon_phong) X(polygon_phong2) X(ellipse_phong) X(sphere_phong)           \
+  X(polygon_ggx_ndf) X(polygon_ggx) X(polygon_beckmann_taylor) X(polygon_beckmann_ndf)            \
+  X(polygon_blinn_phong) X(polygon_beckmann) X(lobe_to_sg) X(sg_to_lobe) X(lobe_product)          \
+  X(zh_phong) X(zh_cosine_power) X(zh_lambert) X(zh_blinn_phong) X(zh_ggx) X(zh_beckmann)         \
+  X(sh_dot) X(sh_conv_zh) X(zh_dot_zh) X(zh_irradiance3) X(zh_irradiance) X(sh_window)            \
+  X(zh_bands_for) X(sh_rotate_z) X(brdf_eval) X(hvl_horizon) X(hvl_horizon_smoothstep)            \
+  X(hvl_geometric) X(hvl_emission) X(hvl_radiance) X(hvl_contribution) X(hvl_contribution_zh)     \
+  X(hvl_radius_neighbours) X(hvl_radius_fov) X(hvl_radius_fov_tan) X(ssf_vpl_sh)                  \
+  X(ssf_vpl_irradiance) X(ssf_interleave) X(ssf_weight) X(ssf_irradiance)
+/* clang-format on */
 #define FF_ENUM(name) FF_##name,
 enum { FF_LIST(FF_ENUM) FF_COUNT };
 #define FF_NAME(name) "shl_" #name,
@@ -68,11 +70,14 @@ typedef struct {
   const uint8_t *p;
   size_t n, i;
 } rd_t;
-static unsigned rd_u8(rd_t *r) { return r->i < r->n ? r->p[r->i++] : 0u; }
-static const float HARD[32] = {0.0f,    -0.0f,  1.0f,    -1.0f,  0.5f,    1e-45f,  1e-40f,  1.17549435e-38f,
-                               1e-20f,  1e-8f,  1e-3f,   2.0f,   10.0f,   1e4f,    3e9f,    1e12f,
-                               1e15f,   1e18f,  1e21f,   1e30f,  1e38f,   FLT_MAX, -FLT_MAX, INFINITY,
-                               -INFINITY, NAN,  0.7071f, -1e15f, 64.0f,   1e8f,    -1e-20f, 0.999999f};
+static unsigned rd_u8(rd_t *r) {
+  return r->i < r->n ? r->p[r->i++] : 0u;
+}
+static const float HARD[32] = {
+    0.0f,      -0.0f, 1.0f,    -1.0f,  0.5f,  1e-45f,  1e-40f,   1.17549435e-38f,
+    1e-20f,    1e-8f, 1e-3f,   2.0f,   10.0f, 1e4f,    3e9f,     1e12f,
+    1e15f,     1e18f, 1e21f,   1e30f,  1e38f, FLT_MAX, -FLT_MAX, INFINITY,
+    -INFINITY, NAN,   0.7071f, -1e15f, 64.0f, 1e8f,    -1e-20f,  0.999999f};
 static float rd_f(rd_t *r) {
   unsigned s = rd_u8(r);
   uint32_t b;
@@ -94,10 +99,18 @@ static int rd_n(rd_t *r) { /* band count: mostly 1..16, sometimes 0, negative, 1
   if (s < 215) return (int)(s % 70u);
   return -(int)(s % 4u);
 }
-static int finite3(const float v[3]) { return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]); }
-static int moderate(float v) { return isfinite(v) && fabsf(v) <= 1e15f; }
-static int moderate3(const float v[3]) { return moderate(v[0]) && moderate(v[1]) && moderate(v[2]); }
-static int nonzero3(const float v[3]) { return v[0] != 0.0f || v[1] != 0.0f || v[2] != 0.0f; }
+static int finite3(const float v[3]) {
+  return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
+}
+static int moderate(float v) {
+  return isfinite(v) && fabsf(v) <= 1e15f;
+}
+static int moderate3(const float v[3]) {
+  return moderate(v[0]) && moderate(v[1]) && moderate(v[2]);
+}
+static int nonzero3(const float v[3]) {
+  return v[0] != 0.0f || v[1] != 0.0f || v[2] != 0.0f;
+}
 
 static void ff_fail(int id, const char *what) {
   printf("FAIL fuzz_families: %s: %s\n", fuzz_fam_names[id], what);
@@ -143,7 +156,9 @@ static size_t nn_of(int n) {
   int c = n < 1 ? 0 : (n > SHLIGHT_MAX_BANDS ? SHLIGHT_MAX_BANDS : n);
   return (size_t)(c * c);
 }
-static size_t nb_of(int n) { return n < 1 ? 0 : (size_t)(n > SHLIGHT_MAX_BANDS ? SHLIGHT_MAX_BANDS : n); }
+static size_t nb_of(int n) {
+  return n < 1 ? 0 : (size_t)(n > SHLIGHT_MAX_BANDS ? SHLIGHT_MAX_BANDS : n);
+}
 /* an input array of count floats from the stream (values moderate when tame != 0) */
 static float *ibuf(rd_t *r, size_t count, int tame) {
   float *p = obuf(count);
@@ -227,7 +242,8 @@ static void fam_grid(rd_t *r) {
     if (rd_u8(r) & 1u) g.spacing[i] = 0.5f; /* mostly valid grids */
   if (rd_u8(r) & 1u) g.origin[0] = g.origin[1] = g.origin[2] = 0.0f;
   g.cull = (rd_u8(r) & 1u) ? 0.0f : rd_f(r);
-  nv = (size_t)(g.nx > 0 ? g.nx : 0) * (size_t)(g.ny > 0 ? g.ny : 0) * (size_t)(g.nz > 0 ? g.nz : 0);
+  nv =
+      (size_t)(g.nx > 0 ? g.nx : 0) * (size_t)(g.ny > 0 ? g.ny : 0) * (size_t)(g.nz > 0 ? g.nz : 0);
   nn = nn_of(n);
   sh = obuf(nv * nn);
   gr = obuf(3 * nv * nn);
@@ -235,7 +251,8 @@ static void fam_grid(rd_t *r) {
   rad = ibuf(r, (size_t)nl, 0);
   inten = ibuf(r, (size_t)nl, 1); /* moderate: a sum of 1e38-intensity lights overflows */
   CALL(grid_build);
-  rc = shl_grid_build(&g, (const float(*)[3])cen, rad, inten, nl, sh, (float(*)[3])gr, order, threads);
+  rc = shl_grid_build(&g, (const float(*)[3])cen, rad, inten, nl, sh, (float(*)[3])gr, order,
+                      threads);
   FF_CHECK(grid_build, canary_ok(sh, nv * nn) && canary_ok(gr, 3 * nv * nn), "canary");
   /* contract: lights with non-finite data add nothing, so a built grid is finite */
   FF_CHECK(grid_build, rc != SHLIGHT_OK || (all_finite(sh, nv * nn) && all_finite(gr, 3 * nv * nn)),
@@ -251,8 +268,8 @@ static void fam_grid(rd_t *r) {
     int tame = method == SHLIGHT_GRID_TRILINEAR;
     if (!tame) {
       size_t q;
-      tame = fabsf(g.spacing[0]) <= 1e3f && fabsf(g.spacing[1]) <= 1e3f &&
-             fabsf(g.spacing[2]) <= 1e3f;
+      tame =
+          fabsf(g.spacing[0]) <= 1e3f && fabsf(g.spacing[1]) <= 1e3f && fabsf(g.spacing[2]) <= 1e3f;
       for (q = 0; tame && q < 3 * nv * nn; ++q)
         tame = fabsf(gr[q]) <= 1e30f;
     }
@@ -293,7 +310,9 @@ static void fam_grid(rd_t *r) {
   free(inten);
 }
 
-static float tame_exp(float e) { return (isfinite(e) && fabsf(e) <= 1e9f) ? e : 10.0f; }
+static float tame_exp(float e) {
+  return (isfinite(e) && fabsf(e) <= 1e9f) ? e : 10.0f;
+}
 
 static void fam_edge(rd_t *r) {
   float v[8][3], nrm[3], view[3], a1[3], a2[3], e = tame_exp(rd_f(r)), al = rd_f(r), res;
@@ -342,8 +361,8 @@ static void fam_edge(rd_t *r) {
     CALL(lobe_product);
     mu = shl_lobe_product(a1, n1, a2, n2, rp, &np);
     FF_CHECK(lobe_product, mu >= 0.0f && mu <= 1.0f, "mu outside [0, 1]");
-    FF_CHECK(lobe_product, !(isfinite(n1) && isfinite(n2)) || (isfinite(np) && finite3(rp)) ||
-                               !finite3(a1),
+    FF_CHECK(lobe_product,
+             !(isfinite(n1) && isfinite(n2)) || (isfinite(np) && finite3(rp)) || !finite3(a1),
              "non-finite np / rp for finite input");
   }
 }
@@ -453,7 +472,8 @@ static void fam_hvl(rd_t *r) {
   res = shl_hvl_emission(n, fe, nx);
   FF_CHECK(hvl_emission, isfinite(res), "non-finite");
   CALL(hvl_radiance);
-  res = shl_hvl_radiance(n, fe, moderate(pw) ? pw : 1.0f, x, nx, y, ny, moderate(rad) ? rad : 1.0f, ex);
+  res = shl_hvl_radiance(n, fe, moderate(pw) ? pw : 1.0f, x, nx, y, ny, moderate(rad) ? rad : 1.0f,
+                         ex);
   /* finite where the exact value fits: G <= 1 / (pi r^2) with r >= 1e-6 here */
   FF_CHECK(hvl_radiance, !moderate3(x) || !moderate3(y) || !(rad >= 1e-6f) || isfinite(res),
            "non-finite");
@@ -461,7 +481,8 @@ static void fam_hvl(rd_t *r) {
   res = shl_hvl_contribution(n, moderate(pw) ? pw : 1.0f, fe, x, y, moderate(rad) ? rad : 1.0f);
   FF_CHECK(hvl_contribution, !moderate3(x) || !moderate3(y) || isfinite(res), "non-finite");
   CALL(hvl_contribution_zh);
-  res = shl_hvl_contribution_zh(n, moderate(pw) ? pw : 1.0f, fz, ny, x, y, moderate(rad) ? rad : 1.0f);
+  res = shl_hvl_contribution_zh(n, moderate(pw) ? pw : 1.0f, fz, ny, x, y,
+                                moderate(rad) ? rad : 1.0f);
   FF_CHECK(hvl_contribution_zh, !moderate3(x) || !moderate3(y) || isfinite(res), "non-finite");
   CALL(hvl_radius_neighbours);
   res = shl_hvl_radius_neighbours(cnt, x, d, (const float(*)[3])pn, dn, pw);
@@ -529,12 +550,24 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   fam = (int)(rd_u8(&r) % 6u);
 #endif
   switch (fam) {
-  case 0: fam_light(&r); break;
-  case 1: fam_grid(&r); break;
-  case 2: fam_edge(&r); break;
-  case 3: fam_brdf(&r); break;
-  case 4: fam_hvl(&r); break;
-  default: fam_ssf(&r); break;
+  case 0:
+    fam_light(&r);
+    break;
+  case 1:
+    fam_grid(&r);
+    break;
+  case 2:
+    fam_edge(&r);
+    break;
+  case 3:
+    fam_brdf(&r);
+    break;
+  case 4:
+    fam_hvl(&r);
+    break;
+  default:
+    fam_ssf(&r);
+    break;
   }
   return 0;
 }

@@ -26,7 +26,9 @@ static int g_assert_hits;
 #include <stdlib.h>
 #include <string.h>
 
-static int finite_f(float v) { return isfinite(v) != 0; }
+static int finite_f(float v) {
+  return isfinite(v) != 0;
+}
 
 /* ---- shl_lobe_product: float-normalised axes, huge exponents -------------------------- */
 static void test_lobe_product_float_axes_mu_le_1(void) {
@@ -35,8 +37,8 @@ static void test_lobe_product_float_axes_mu_le_1(void) {
   float r1[3] = {0.36f, 0.48f, 0.8f}, r2[3], rp[3], np;
   double worst = 0.0;
   int i, j, bad = 0;
-  float ns[] = {1.0f, 50.0f, 1e4f, 1e6f, 1e8f, 1e10f, 1e15f, 1e20f, 1e25f, 1e29f, 1e30f,
-                3e38f, INFINITY};
+  float ns[] = {1.0f,  50.0f, 1e4f,  1e6f,  1e8f,  1e10f,   1e15f,
+                1e20f, 1e25f, 1e29f, 1e30f, 3e38f, INFINITY};
   for (i = 0; i < 16; ++i) {
     /* r2: r1 turned by a tiny angle, normalised in float (a renderer's typical axis) */
     double a = 1e-4 * i, x = 0.36 + a, y = 0.48 - 0.5 * a, z = 0.8, l = sqrt(x * x + y * y + z * z);
@@ -67,8 +69,8 @@ static void test_lobe_product_mu_closed_form(void) {
   float r1[3] = {0.0f, 0.0f, 1.0f}, r2[3] = {0.6f, 0.0f, 0.8f}, rp[3], np;
   float n1 = 30.0f, n2 = 1e6f;
   float mu = shl_lobe_product(r1, n1, r2, n2, rp, &np);
-  long double l = sqrtl((long double)rp[0] * rp[0] + (long double)rp[1] * rp[1] +
-                        (long double)rp[2] * rp[2]);
+  long double l =
+      sqrtl((long double)rp[0] * rp[0] + (long double)rp[1] * rp[1] + (long double)rp[2] * rp[2]);
   long double c1 = rp[2] / l, c2 = (0.6L * rp[0] + 0.8L * rp[2]) / l;
   long double want = powl(c1, n1) * powl(c2, n2);
   /* rp is rounded to float (0.5 ulp ~ 6e-8 of angle), n2 = 1e6 turns that into ~6e-2 of mu
@@ -79,8 +81,8 @@ static void test_lobe_product_mu_closed_form(void) {
 static void test_lobe_product_degenerate_axes(void) {
   float z[3] = {0, 0, 0}, r[3] = {0, 0, 1}, nan3[3] = {NAN, 0, 0}, rp[3], np;
   float mu = shl_lobe_product(z, 10.0f, r, 10.0f, rp, &np); /* zero axis: +z */
-  TL_CHECK(fabsf(mu - 1.0f) <= 1e-6f && rp[2] == 1.0f, "zero r1 as +z: mu %g rp.z %g",
-           (double)mu, (double)rp[2]);
+  TL_CHECK(fabsf(mu - 1.0f) <= 1e-6f && rp[2] == 1.0f, "zero r1 as +z: mu %g rp.z %g", (double)mu,
+           (double)rp[2]);
   mu = shl_lobe_product(nan3, 10.0f, r, 10.0f, rp, &np);
   TL_CHECK(finite_f(mu) && mu >= 0.0f && mu <= 1.0f, "NaN r1: mu %g", (double)mu);
   mu = shl_lobe_product(r, NAN, r, 10.0f, rp, &np);
@@ -135,7 +137,8 @@ static void test_sh_window_lanczos_width_inf(void) {
     zh[i] = 1.0f;
   shl_sh_window(16, SHLIGHT_WINDOW_LANCZOS, 17.0f, zh);
   for (i = 1; i < 16; ++i) {
-    long double t = i / 17.0L, want = sinl(3.14159265358979323846L * t) / (3.14159265358979323846L * t);
+    long double t = i / 17.0L,
+                want = sinl(3.14159265358979323846L * t) / (3.14159265358979323846L * t);
     TL_CHECK(fabsl(zh[i] - want) <= 1e-7L, "Lanczos l=%d: %g vs %Lg", i, (double)zh[i], want);
   }
 }
@@ -192,8 +195,8 @@ static void test_triangle_solid_angle_1e15_1e21(void) {
     scaled_tri(sc[i], x, p0, p1, p2);
     om = shl_triangle_solid_angle(x, p0, p1, p2);
     want = solid_angle_ld(x, p0, p1, p2);
-    TL_CHECK(fabsl(om - want) <= 1e-6L * fabsl(want) + 1e-12L,
-             "scale %g: Omega %.9g vs %.9Lg", sc[i], (double)om, want);
+    TL_CHECK(fabsl(om - want) <= 1e-6L * fabsl(want) + 1e-12L, "scale %g: Omega %.9g vs %.9Lg",
+             sc[i], (double)om, want);
   }
 }
 
@@ -211,8 +214,8 @@ static void test_triangle_light_1e15_1e21(void) {
     shl_triangle_light(4, x, p0, p1, p2, sh);
     for (k = 0; k < 16; ++k)
       worst = fmax(worst, fabs((double)sh[k] - ref[k]));
-    TL_CHECK(worst <= 2e-6 && fabs((double)ref[0]) > 1e-3, "scale %g: max |SH - SH(1)| %.3g",
-             sc[i], worst);
+    TL_CHECK(worst <= 2e-6 && fabs((double)ref[0]) > 1e-3, "scale %g: max |SH - SH(1)| %.3g", sc[i],
+             worst);
     shl_triangle_light_grad(4, x, p0, p1, p2, sh, g);
     for (k = 0; k < 16; ++k) {
       int a;
@@ -314,8 +317,8 @@ static void test_stack_streamed_conv_zh_n46_64(void) {
     want = (double)shl_sh_dot(n, sh, rot);
     for (i = 0; i < n * n; ++i)
       scale += fabs((double)sh[i] * rot[i]);
-    TL_CHECK(fabs(c - want) <= 4e-7 * scale, "n=%d: conv_zh %.9g vs dot(rotate) %.9g (scale %g)",
-             n, (double)c, want, scale);
+    TL_CHECK(fabs(c - want) <= 4e-7 * scale, "n=%d: conv_zh %.9g vs dot(rotate) %.9g (scale %g)", n,
+             (double)c, want, scale);
   }
 }
 
