@@ -70,6 +70,15 @@
 #endif
 #define SHLIGHT_UNROLLED_BANDS 16
 #define SHLIGHT_MAX_COEFFS (SHLIGHT_MAX_BANDS * SHLIGHT_MAX_BANDS)
+/* Scratch of the kernels that evaluate Y once and contract it (shl_sh_conv_zh, the HVL
+   emission, shl_ssf_vpl_sh): n^2 <= SHLI_YBUF_COEFFS in a stack buffer (8 KB at most), more
+   bands (n > 45, C only) through shli_sh_ystream without a buffer: every public function stays
+   under 16 KB of stack. */
+#if SHLIGHT_MAX_COEFFS > 2048
+#define SHLI_YBUF_COEFFS 2048
+#else
+#define SHLI_YBUF_COEFFS SHLIGHT_MAX_COEFFS
+#endif
 
 #ifdef SHLIGHT_STATIC
 #if defined(__GNUC__) || defined(__clang__)
@@ -9775,9 +9784,14 @@ SHLIGHT_INLINE void shl_zh_cap_printed(int n, float r, float d, float *out_zh) {
 /* shl_zh_rotate: SH of a circularly symmetric function with ZH coefficients zh about the axis
    dir (seed 003 eq. 11): out_sh[l (l+1) + m] = sqrt(4 pi / (2l+1)) Y_l^m(dir) zh[l]. dir: any
    finite non-zero vector (normalised in shli_real); zero, NaN or infinite dir: the axis +z.
-   zh: n floats; out_sh: n * n floats. Cost: one shl_sh_eval plus n sqrt and n * n mul. */
+   zh: n floats, any finite values: |out_sh[l (l+1) + m]| <= |zh[l]| (Unsold's bound), so the
+   output is finite for finite zh up to FLT_MAX (no intermediate overflow; a value that float
+   rounding carries past FLT_MAX saturates to +-FLT_MAX). Not finite input: a NaN zh[l] gives
+   NaN in band l, an infinite one +-FLT_MAX or NaN (where Y = 0) in band l only. out_sh: n * n
+   floats. Cost: one shl_sh_eval plus n sqrt and n * n mul (two in a band with |zh| >= 1e30). */
 SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], float *out_sh) {
   shli_real g[8];
+  shli_real t;
   float k;
   int l;
   int m;
@@ -9789,10 +9803,27 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
   shli_cap_frame(SHLIGHT_REAL(dir[0]), SHLIGHT_REAL(dir[1]), SHLIGHT_REAL(dir[2]), 1.0, g);
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), out_sh);
   for (l = 0; l < n; ++l) {
-    k = SHLIGHT_FLOAT(SHLI_ZH_TAB[5 * l + 3]) * zh[l];
+    k = SHLIGHT_FLOAT(SHLI_ZH_TAB[5 * l + 3]);
     b = l * (l + 1);
-    for (m = -l; m <= l; ++m) {
-      out_sh[b + m] = k * out_sh[b + m];
+    if (!(SHLIGHT_ABSR(SHLIGHT_REAL(zh[l])) >= 1.0e30)) {
+      k = k * zh[l];
+      for (m = -l; m <= l; ++m) {
+        out_sh[b + m] = k * out_sh[b + m];
+      }
+    } else {
+      /* |sqrt(4 pi / (2l+1)) Y_l^m| <= 1 (Unsold): k Y first, so a zh[l] near FLT_MAX does
+         not overflow before the product that fits; the rounding of k Y (1 + 1e-7 for l = 0)
+         can still carry it past FLT_MAX: saturated */
+      for (m = -l; m <= l; ++m) {
+        t = SHLIGHT_REAL(k * out_sh[b + m]) * SHLIGHT_REAL(zh[l]);
+        if (t > SHLIGHT_REAL_MAX) {
+          t = SHLIGHT_REAL_MAX;
+        }
+        if (t < -SHLIGHT_REAL_MAX) {
+          t = -SHLIGHT_REAL_MAX;
+        }
+        out_sh[b + m] = SHLIGHT_FLOAT(t);
+      }
     }
   }
 }
@@ -10478,10 +10509,12 @@ SHLIGHT_INLINE void shli_tri_frame(const float x[3], const float p0[3], const fl
   shli_real bx = SHLIGHT_REAL(p2[0]) - SHLIGHT_REAL(p0[0]);
   shli_real by = SHLIGHT_REAL(p2[1]) - SHLIGHT_REAL(p0[1]);
   shli_real bz = SHLIGHT_REAL(p2[2]) - SHLIGHT_REAL(p0[2]);
-  shli_real nx = ay * bz - az * by;
-  shli_real ny = az * bx - ax * bz;
-  shli_real nz = ax * by - ay * bx;
-  shli_real ar = SHLIGHT_SQRTR(nx * nx + ny * ny + nz * nz);
+  shli_real mx = SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(ax), SHLIGHT_ABSR(ay)), SHLIGHT_ABSR(az));
+  shli_real sc = 1.0;
+  shli_real nx;
+  shli_real ny;
+  shli_real nz;
+  shli_real ar;
   shli_real rs = 0.0;
   shli_real cx =
       (SHLIGHT_REAL(p0[0]) - SHLIGHT_REAL(x[0]) + (SHLIGHT_REAL(p1[0]) - SHLIGHT_REAL(x[0])) +
@@ -10498,8 +10531,26 @@ SHLIGHT_INLINE void shli_tri_frame(const float x[3], const float p0[3], const fl
   out_nt[0] = 0.0;
   out_nt[1] = 0.0;
   out_nt[2] = 0.0;
+  mx = SHLIGHT_MAXR(
+      mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)), SHLIGHT_ABSR(bz)));
+  if ((mx > 1.0e9 || mx < 1.0e-8) && mx > 0.0 && mx <= SHLIGHT_REAL_MAX) {
+    /* large or tiny edges scaled to ~1: the area |e1 x e2| = sc^2 |e1/sc x e2/sc| neither
+       overflows nor underflows (it did above edges ~1.3e19 in C, float squares in GLSL) */
+    sc = mx;
+    mx = 1.0 / mx;
+    ax = ax * mx;
+    ay = ay * mx;
+    az = az * mx;
+    bx = bx * mx;
+    by = by * mx;
+    bz = bz * mx;
+  }
+  nx = ay * bz - az * by;
+  ny = az * bx - ax * bz;
+  nz = ax * by - ay * bx;
+  ar = SHLIGHT_SQRTR(nx * nx + ny * ny + nz * nz);
   if (ar > 0.0 && ar <= SHLIGHT_REAL_MAX) {
-    rs = SHLIGHT_SQRTR(ar * 0.15915494309189535);
+    rs = sc * SHLIGHT_SQRTR(ar * 0.15915494309189535);
     out_nt[0] = nx / ar;
     out_nt[1] = ny / ar;
     out_nt[2] = nz / ar;
@@ -10639,7 +10690,8 @@ SHLIGHT_INLINE shli_real shli_atan2r(shli_real y, shli_real x) {
    distance 1e4 (no unit-vector cancellation: the printed form loses 6e-2 there). Degenerate:
    zero-area triangle 0; x at a vertex 0; x in the triangle's plane: 0 outside the triangle,
    2 pi inside it (both sides' limits are +-2 pi), 0 or 2 pi on an edge; NaN or infinite input:
-   0. GLSL: |p_i - x| up to 1e12 (the triple product of lengths stays below FLT_MAX); in
+   0. Any finite scale: when the largest component of the p_i - x is above 1e9 or below 1e-8
+   they are scaled to 1 first (Omega is scale-invariant), from denormals to FLT_MAX. GLSL: in
    float the sum D cancels when two pairs of the R_i are nearly opposite (x near an edge, or
    near a vertex with the other two almost behind each other): the GLSL result is within
    2.5 u (|Omega| + 2 (|D| EN + |N| ED) / (N^2 + D^2)) of the exact one, EN = |R0||p1 - p0|
@@ -10663,12 +10715,42 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
   shli_real vx = SHLIGHT_REAL(p2[0]) - SHLIGHT_REAL(p0[0]);
   shli_real vy = SHLIGHT_REAL(p2[1]) - SHLIGHT_REAL(p0[1]);
   shli_real vz = SHLIGHT_REAL(p2[2]) - SHLIGHT_REAL(p0[2]);
-  shli_real la = SHLIGHT_SQRTR(ax * ax + ay * ay + az * az);
-  shli_real lb = SHLIGHT_SQRTR(bx * bx + by * by + bz * bz);
-  shli_real lc = SHLIGHT_SQRTR(cx * cx + cy * cy + cz * cz);
-  shli_real nm = ax * (uy * vz - uz * vy) + ay * (uz * vx - ux * vz) + az * (ux * vy - uy * vx);
-  shli_real dn = la * lb * lc + (ax * bx + ay * by + az * bz) * lc +
-                 (ax * cx + ay * cy + az * cz) * lb + (bx * cx + by * cy + bz * cz) * la;
+  shli_real mx = SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(ax), SHLIGHT_ABSR(ay)), SHLIGHT_ABSR(az));
+  shli_real la;
+  shli_real lb;
+  shli_real lc;
+  shli_real nm;
+  shli_real dn;
+  mx = SHLIGHT_MAXR(
+      mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)), SHLIGHT_ABSR(bz)));
+  mx = SHLIGHT_MAXR(
+      mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(cx), SHLIGHT_ABSR(cy)), SHLIGHT_ABSR(cz)));
+  if ((mx > 1.0e9 || mx < 1.0e-8) && mx > 0.0 && mx <= SHLIGHT_REAL_MAX) {
+    /* Omega is scale-invariant: far or tiny triangles are scaled to |R| ~ 1 first, so the
+       degree-3 products N and D neither overflow nor underflow (float in GLSL) */
+    mx = 1.0 / mx;
+    ax = ax * mx;
+    ay = ay * mx;
+    az = az * mx;
+    bx = bx * mx;
+    by = by * mx;
+    bz = bz * mx;
+    cx = cx * mx;
+    cy = cy * mx;
+    cz = cz * mx;
+    ux = ux * mx;
+    uy = uy * mx;
+    uz = uz * mx;
+    vx = vx * mx;
+    vy = vy * mx;
+    vz = vz * mx;
+  }
+  la = SHLIGHT_SQRTR(ax * ax + ay * ay + az * az);
+  lb = SHLIGHT_SQRTR(bx * bx + by * by + bz * bz);
+  lc = SHLIGHT_SQRTR(cx * cx + cy * cy + cz * cz);
+  nm = ax * (uy * vz - uz * vy) + ay * (uz * vx - ux * vz) + az * (ux * vy - uy * vx);
+  dn = la * lb * lc + (ax * bx + ay * by + az * bz) * lc + (ax * cx + ay * cy + az * cz) * lb +
+       (bx * cx + by * cy + bz * cz) * la;
   if (!(SHLIGHT_ABSR(nm) + SHLIGHT_ABSR(dn) <= SHLIGHT_REAL_MAX)) {
     return 0.0f;
   }
@@ -10938,8 +11020,9 @@ SHLIGHT_API shl_result shl_grid_build(const shl_grid *g, const float (*centres)[
    shl_grid_trilinear, shl_grid_taylor or shl_grid_hermite (method SHLIGHT_GRID_TRILINEAR,
    _TAYLOR, _HERMITE). grad may be NULL for trilinear only. out_sh: g->n^2 floats. Returns
    SHLIGHT_EINVAL for NULL g / sh / out_sh, invalid g (as shl_grid_build), an unknown method
-   or a NULL grad that the method needs; SHLIGHT_ENOMEM if n > 16 and the corner buffer
-   (8 n^2 x 4 floats, on the stack up to 16 bands) cannot be allocated. */
+   or a NULL grad that the method needs (nothing written then); otherwise SHLIGHT_OK (no
+   allocation: the corners are gathered in chunks of at most 64 coefficients, 8 KB of stack).
+   The output is finite wherever the grid's corner values (and gradients) are. */
 SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const float (*grad)[3],
                                        const float p[3], int method, float *out_sh);
 
@@ -12092,7 +12175,9 @@ SHLIGHT_INLINE shli_real shli_log1pr(shli_real x) {
    same half-maximum angle as the cosine lobe max(0, u.r)^n (seed 001 eq. 22, erratum E16):
    lambda = ln 2 / (1 - 2^(-1/n)), in the stable form ln 2 / -expm1(-ln 2 / n) (float: 3e-8
    relative at n = 1e7; the printed form is negative). n <= 0 or NaN: 0; lambda ~ n + ln 2 / 2
-   for large n. */
+   for large n: n >= 1e30 returns n itself (the relative difference is below float's
+   resolution), so n = +inf gives +inf (the delta-lobe limit, documented; finite n gives
+   a finite lambda). */
 SHLIGHT_INLINE float shl_lobe_to_sg(float n) {
   shli_real e = SHLIGHT_REAL(n);
   if (!(e > 0.0)) {
@@ -12105,7 +12190,9 @@ SHLIGHT_INLINE float shl_lobe_to_sg(float n) {
 }
 
 /* shl_sg_to_lobe: the inverse, n = -ln 2 / log1p(-ln 2 / lambda) (exact round trip); lambda <=
-   ln 2 has no cosine-lobe counterpart (the SG never falls to half): 0; NaN: 0. */
+   ln 2 has no cosine-lobe counterpart (the SG never falls to half): 0; NaN: 0. lambda >= 1e30
+   returns lambda (as shl_lobe_to_sg), so +inf gives +inf (the limit); finite lambda gives a
+   finite n. */
 SHLIGHT_INLINE float shl_sg_to_lobe(float lambda) {
   shli_real l = SHLIGHT_REAL(lambda);
   if (!(l > 0.69314718055994531)) {
@@ -12121,17 +12208,24 @@ SHLIGHT_INLINE float shl_sg_to_lobe(float lambda) {
    by one lobe mu max(0, u.rp)^np (seed 001 sec. 7.1): both mapped to SGs (shl_lobe_to_sg), the
    exact SG product (axis rp along lambda1 r1 + lambda2 r2, sharpness lambda_p = |lambda1 r1 +
    lambda2 r2|), mapped back (shl_sg_to_lobe), mu the true product at rp (clamped lobes,
-   MATH.md 7.3). r1, r2 unit; writes rp (unit) and returns mu, np in out_np[0]. Accuracy is
-   the paper's: good for aligned lobes, poor beyond ~60 degrees (README). Opposite lobes with
-   equal sharpness (no axis): mu = 0, rp = r1. */
+   MATH.md 7.3). r1, r2: any finite non-zero vectors, normalised here in shli_real (so a
+   float-normalised axis is exact enough for any exponent); zero, NaN or infinite: +z. Writes
+   rp (unit) and returns mu in [0, 1] (a product of two cosines <= 1 raised to n1, n2 >= 0),
+   np in out_np[0]. Accuracy is the paper's: good for aligned lobes, poor beyond ~60 degrees
+   (README); above n ~ 1e9 a lobe is narrower than the double rounding of the axes, and mu
+   (still in [0, 1]) loses accuracy. Opposite lobes with equal sharpness (no axis), n1 or n2
+   negative or NaN, or |lambda1 r1 + lambda2 r2| >= 1e30 (exponents ~1e30 and above, +inf):
+   mu = 0, np = 0, rp = r1. */
 SHLIGHT_INLINE float shl_lobe_product(const float r1[3], float n1, const float r2[3], float n2,
                                       float *out_rp, float *out_np) {
   shli_real l1 = SHLIGHT_REAL(shl_lobe_to_sg(n1));
   shli_real l2 = SHLIGHT_REAL(shl_lobe_to_sg(n2));
-  shli_real px = l1 * SHLIGHT_REAL(r1[0]) + l2 * SHLIGHT_REAL(r2[0]);
-  shli_real py = l1 * SHLIGHT_REAL(r1[1]) + l2 * SHLIGHT_REAL(r2[1]);
-  shli_real pz = l1 * SHLIGHT_REAL(r1[2]) + l2 * SHLIGHT_REAL(r2[2]);
-  shli_real lp = SHLIGHT_SQRTR(px * px + py * py + pz * pz);
+  shli_real a[8];
+  shli_real b[8];
+  shli_real px;
+  shli_real py;
+  shli_real pz;
+  shli_real lp;
   shli_real c1;
   shli_real c2;
   shli_real mu = 0.0;
@@ -12139,6 +12233,17 @@ SHLIGHT_INLINE float shl_lobe_product(const float r1[3], float n1, const float r
   out_rp[1] = r1[1];
   out_rp[2] = r1[2];
   out_np[0] = 0.0f;
+  if (!(n1 >= 0.0f) || !(n2 >= 0.0f)) {
+    return 0.0f;
+  }
+  /* the axes normalised in shli_real: a float-normalised axis (|r|^2 - 1 ~ 5e-8) raised to
+     n ~ 1e8 would move mu by e^2.4 */
+  shli_cap_frame(SHLIGHT_REAL(r1[0]), SHLIGHT_REAL(r1[1]), SHLIGHT_REAL(r1[2]), 1.0, a);
+  shli_cap_frame(SHLIGHT_REAL(r2[0]), SHLIGHT_REAL(r2[1]), SHLIGHT_REAL(r2[2]), 1.0, b);
+  px = l1 * a[0] + l2 * b[0];
+  py = l1 * a[1] + l2 * b[1];
+  pz = l1 * a[2] + l2 * b[2];
+  lp = SHLIGHT_SQRTR(px * px + py * py + pz * pz);
   if (!(lp > 1.0e-30) || !(lp < 1.0e30)) {
     return 0.0f;
   }
@@ -12149,8 +12254,12 @@ SHLIGHT_INLINE float shl_lobe_product(const float r1[3], float n1, const float r
   out_rp[1] = SHLIGHT_FLOAT(py);
   out_rp[2] = SHLIGHT_FLOAT(pz);
   out_np[0] = shl_sg_to_lobe(SHLIGHT_FLOAT(lp));
-  c1 = px * SHLIGHT_REAL(r1[0]) + py * SHLIGHT_REAL(r1[1]) + pz * SHLIGHT_REAL(r1[2]);
-  c2 = px * SHLIGHT_REAL(r2[0]) + py * SHLIGHT_REAL(r2[1]) + pz * SHLIGHT_REAL(r2[2]);
+  c1 = px * a[0] + py * a[1] + pz * a[2];
+  c2 = px * b[0] + py * b[1] + pz * b[2];
+  /* cosines of unit vectors: <= 1, so mu <= 1 for any exponents (rounding can give 1 + 1e-16,
+     which n ~ 1e30 would blow up) */
+  c1 = SHLIGHT_MINR(c1, 1.0);
+  c2 = SHLIGHT_MINR(c2, 1.0);
   if (c1 > 0.0 && c2 > 0.0) {
     mu = SHLIGHT_POWR(c1, SHLIGHT_REAL(n1)) * SHLIGHT_POWR(c2, SHLIGHT_REAL(n2));
   }
@@ -14218,14 +14327,84 @@ SHLIGHT_INLINE float shl_sh_dot(int n, const float *a, const float *b) {
   return SHLIGHT_FLOAT((s0 + s1) + (s2 + s3));
 }
 
+#if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
+/* C only, for n^2 > SHLI_YBUF_COEFFS: Y_i(d) of shli_sh_eval_xyz's portable path (the same
+   normalisation and recurrence as shli_sh_core_loop) consumed as it is produced, without an
+   n^2 buffer. io == NULL: returns sum_i a[i] w_l Y_i accumulated in double, w_l = float(
+   sqrt(4 pi / (2l+1)) zh[l]) (zh != NULL) or 1: the values and the rounding of the buffered
+   kernels (Y and w_l Y in float, the sum in double). io != NULL, returns 0: e != 0:
+   io[i stride] += e Y_i; e == 0: io[i stride] = Y_i. */
+SHLIGHT_CPU_INLINE shli_real shli_sh_ystream(int n, float dx, float dy, float dz, const float *a,
+                                             const float *zh, float e, float *io,
+                                             ptrdiff_t stride) {
+  shli_real x = SHLIGHT_REAL(dx), y = SHLIGHT_REAL(dy), z = SHLIGHT_REAL(dz);
+  shli_real r2 = x * x + y * y + z * z - 1.0, kk = 1.0 + r2 * (-0.5 + 0.375 * r2);
+  shli_real t, pc = 1.0, ps = 0.0, qc, xa, dd, s = 0.0;
+  float wl[SHLIGHT_MAX_BANDS], ec, es, oc, os, sw, sg, xf;
+  int m, l, j, b;
+  x = x * kk;
+  y = y * kk;
+  z = z * kk;
+  sg = SHLIGHT_SIGN1(z);
+  t = (x * x + y * y) / (1.0 + SHLIGHT_ABSR(z));
+  for (l = 0; l < n; ++l)
+    wl[l] = zh ? SHLIGHT_FLOAT(SHLI_ZH_TAB[5 * l + 3] * SHLIGHT_REAL(zh[l])) : 1.0f;
+  for (m = 0; m < n; ++m) {
+    if (m > 0) {
+      qc = x * pc - y * ps;
+      ps = x * ps + y * pc;
+      pc = qc;
+    }
+    ec = SHLIGHT_FLOAT(pc);
+    es = SHLIGHT_FLOAT(ps);
+    oc = sg * ec;
+    os = sg * es;
+    xa = SHLIGHT_REAL(SHLI_SH_DIAG[m]);
+    dd = 0.0;
+    for (l = m; l < n; ++l) {
+      if (l > m) {
+        j = 3 * ((l * (l - 1)) / 2 + m);
+        dd = SHLI_SH_TAB[j + 2] * dd - (SHLI_SH_TAB[j] * t) * xa;
+        xa = SHLI_SH_TAB[j + 1] * xa + dd;
+        sw = ec;
+        ec = oc;
+        oc = sw;
+        sw = es;
+        es = os;
+        os = sw;
+      }
+      xf = l > m ? SHLIGHT_FLOAT(xa) : SHLI_SH_DIAG[m];
+      b = l * (l + 1);
+      if (io && e != 0.0f) {
+        io[(b + m) * stride] = io[(b + m) * stride] + e * (xf * ec);
+        if (m > 0) io[(b - m) * stride] = io[(b - m) * stride] + e * (xf * es);
+      } else if (io) {
+        io[(b + m) * stride] = xf * ec;
+        if (m > 0) io[(b - m) * stride] = xf * es;
+      } else {
+        s = s + SHLIGHT_REAL(a[b + m]) * SHLIGHT_REAL(wl[l] * (xf * ec));
+        if (m > 0) s = s + SHLIGHT_REAL(a[b - m]) * SHLIGHT_REAL(wl[l] * (xf * es));
+      }
+    }
+  }
+  return s;
+}
+#endif
+
 /* shl_sh_conv_zh on a unit axis (ux, uy, uz) given in shli_real. */
 SHLIGHT_INLINE float shli_sh_conv_zh_xyz(int n, const float *sh, const float *zh, shli_real ux,
                                          shli_real uy, shli_real uz) {
-  float ysh[SHLIGHT_MAX_COEFFS];
+  float ysh[SHLI_YBUF_COEFFS];
   float k;
   int l;
   int m;
   int b;
+#if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
+  if (n * n > SHLI_YBUF_COEFFS) {
+    return SHLIGHT_FLOAT(shli_sh_ystream(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz),
+                                         sh, zh, 0.0f, 0, 1));
+  }
+#endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);
   /* the rotated lobe in place, then one dot (independent add chains, see shl_sh_dot) */
   for (l = 0; l < n; ++l) {
@@ -14400,7 +14579,8 @@ SHLIGHT_INLINE shli_real shli_sinpi(shli_real t) {
    ringing (Sloan, "Stupid SH tricks"; seed 000 sec. 4.2): kind SHLIGHT_WINDOW_HANNING (1):
    sigma_l = (1 + cos(pi l / width)) / 2; SHLIGHT_WINDOW_LANCZOS (2): sigma_l = sinc(l / width)
    = sin(pi l / width) / (pi l / width); both 0 for l >= width. width: the window's band count,
-   > 0 (typically n, or n + 1 to keep the last band); <= 0 or NaN: n. Another kind
+   > 0 (typically n, or n + 1 to keep the last band); <= 0 or NaN: n; +inf: sigma_l = 1 (the
+   limit; every band kept). Another kind
    (SHLIGHT_WINDOW_NONE): unchanged. For an SH vector multiply its band l by the sigma_l that
    this returns for a ZH of ones. Measured on a cap (half-angle 30 deg, n = 8; tests/test_brdf,
    bench/out/brdf.md): see README. Cost: O(n). */
@@ -14424,8 +14604,11 @@ SHLIGHT_INLINE void shl_sh_window(int n, int kind, float width, float *io_zh) {
         /* (1 + cos(pi t)) / 2 = 1 - sin(pi t / 2)^2 */
         sg = shli_sinpi(0.5 * t);
         sg = 1.0 - sg * sg;
-      } else {
+      } else if (t > 0.0) {
         sg = shli_sinpi(t) / (3.141592653589793 * t);
+      } else {
+        /* width = +inf: t = 0, sinc(0) = 1 (not 0 / 0) */
+        sg = 1.0;
       }
     }
     io_zh[l] = SHLIGHT_FLOAT(SHLIGHT_REAL(io_zh[l]) * sg);
@@ -14605,7 +14788,8 @@ SHLIGHT_INLINE float shl_hvl_horizon_smoothstep(const float nx[3], const float w
    (pi r^2), with H exact (exact != 0, shl_hvl_horizon) or the smoothstep variant (exact = 0).
    x, nx: shading point and its normal; y, ny: the HVL's centre and normal (normals: any
    non-zero vectors, normalised here). r <= 0 or NaN: 0 (no HVL). x == y: the direction +z
-   (then H is the hemisphere's). NaN or infinite positions: 0. Bounded by 1 / (pi r^2). Cost:
+   (then H is the hemisphere's). NaN or infinite positions: 0. Bounded by 1 / (pi r^2); a
+   value above FLT_MAX (possible for r < 3.1e-20 only) saturates to FLT_MAX, never inf. Cost:
    about 3 normalisations and one H. */
 SHLIGHT_INLINE float shl_hvl_geometric(const float x[3], const float nx[3], const float y[3],
                                        const float ny[3], float r, int exact) {
@@ -14650,16 +14834,27 @@ SHLIGHT_INLINE float shl_hvl_geometric(const float x[3], const float nx[3], cons
   } else {
     hh = SHLIGHT_REAL(shli_hvl_hs(cx, r, SHLIGHT_FLOAT(hh)));
   }
-  return SHLIGHT_FLOAT(cj * hh / (3.141592653589793 * rr * rr));
+  /* divided by r twice: no overflow of 1 / r^2 before the product (r down to denormals) */
+  hh = cj * hh / (3.141592653589793 * rr);
+  if (!(hh < SHLIGHT_REAL_MAX * rr)) {
+    return SHLIGHT_FLOAT(SHLIGHT_REAL_MAX);
+  }
+  return SHLIGHT_FLOAT(hh / rr);
 }
 
 /* F' . Y(u) for a unit u given in shli_real, n >= 1. */
 SHLIGHT_INLINE float shli_hvl_emission_xyz(int n, const float *femit, shli_real ux, shli_real uy,
                                            shli_real uz) {
-  float ysh[SHLIGHT_MAX_COEFFS];
+  float ysh[SHLI_YBUF_COEFFS];
   if (n == 1) {
     return SHLIGHT_FLOAT(0.28209479177387814 * SHLIGHT_REAL(femit[0]));
   }
+#if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
+  if (n * n > SHLI_YBUF_COEFFS) {
+    return SHLIGHT_FLOAT(shli_sh_ystream(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz),
+                                         femit, 0, 0.0f, 0, 1));
+  }
+#endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);
   return shl_sh_dot(n, femit, ysh);
 }
@@ -14805,7 +15000,8 @@ SHLIGHT_INLINE float shl_hvl_radius_neighbours(int count, const float p[3], floa
    the Taylor form of d tan(g) (fov: the RSM's field of view in radians, m the number of
    HVLs, d the HVL's distance to the light). Within 1 % absolute of tan for g <= 0.5786, i.e.
    fov / sqrt(m) <= 0.41 (erratum E9; the seed's 0.2 is wrong). m < 1: 1. d or fov NaN or
-   < 0: 0. Cost: 1 sqrt, 6 flops. */
+   < 0: 0. A result above FLT_MAX (d near FLT_MAX, or a huge fov) saturates to FLT_MAX, never
+   inf; +inf d or fov: FLT_MAX. Cost: 1 sqrt, 8 flops. */
 SHLIGHT_INLINE float shl_hvl_radius_fov(float d, float fov, int m) {
   shli_real dd = SHLIGHT_REAL(d);
   shli_real f = SHLIGHT_REAL(fov);
@@ -14817,11 +15013,22 @@ SHLIGHT_INLINE float shl_hvl_radius_fov(float d, float fov, int m) {
     return 0.0f;
   }
   g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(m)));
-  return SHLIGHT_FLOAT(dd * (g + g * g * g / 3.0));
+  /* d g (1 + g^2 / 3) with the overflow test before the product (float in GLSL) */
+  f = 1.0 + g * g / 3.0;
+  g = dd * g;
+  if (!(g <= SHLIGHT_REAL_MAX / f)) {
+    return SHLIGHT_FLOAT(SHLIGHT_REAL_MAX);
+  }
+  g = g * f;
+  if (g > SHLIGHT_REAL_MAX) {
+    g = SHLIGHT_REAL_MAX;
+  }
+  return SHLIGHT_FLOAT(g);
 }
 
 /* shl_hvl_radius_fov_tan: eq. 25 itself, r2 = d tan(g), g as shl_hvl_radius_fov, with the own
-   sine (no GLSL tan); g clamped to [0, 1.5707] (tan <= 1.3e4). Same degenerate inputs.
+   sine (no GLSL tan); g clamped to [0, 1.5707] (tan <= 1.3e4). Same degenerate inputs and
+   saturation at FLT_MAX.
    Cost: 1 sqrt, 2 short polynomials. */
 SHLIGHT_INLINE float shl_hvl_radius_fov_tan(float d, float fov, int m) {
   shli_real dd = SHLIGHT_REAL(d);
@@ -14839,7 +15046,15 @@ SHLIGHT_INLINE float shl_hvl_radius_fov_tan(float d, float fov, int m) {
   }
   /* tan g = sin(pi t) / sin(pi (1/2 - t)), t = g / pi in [0, 1/2] */
   g = g * 0.3183098861837907;
-  return SHLIGHT_FLOAT(dd * shli_sinpi(g) / shli_sinpi(0.5 - g));
+  g = shli_sinpi(g) / shli_sinpi(0.5 - g);
+  if (g > 1.0 && !(dd <= SHLIGHT_REAL_MAX / g)) {
+    return SHLIGHT_FLOAT(SHLIGHT_REAL_MAX);
+  }
+  g = dd * g;
+  if (g > SHLIGHT_REAL_MAX) {
+    g = SHLIGHT_REAL_MAX;
+  }
+  return SHLIGHT_FLOAT(g);
 }
 
 /* >>brdftab ---------------------------------------------------------------------------------
@@ -15121,7 +15336,7 @@ SHLIGHT_INLINE shli_real shli_ssf_vpl(const float x[3], const float nx[3], const
    stack) and n^2 FMA. */
 SHLIGHT_INLINE void shl_ssf_vpl_sh(int n, const float x[3], const float nx[3], const float y[3],
                                    const float ny[3], float flux, float dmin, float *io_sh) {
-  float ysh[SHLIGHT_MAX_COEFFS];
+  float ysh[SHLI_YBUF_COEFFS];
   shli_real g[8];
   float e;
   int nn;
@@ -15134,6 +15349,13 @@ SHLIGHT_INLINE void shl_ssf_vpl_sh(int n, const float x[3], const float nx[3], c
   if (!(e > 0.0f)) {
     return;
   }
+#if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
+  if (n * n > SHLI_YBUF_COEFFS) {
+    shli_sh_ystream(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), io_sh, 0, e,
+                    io_sh, 1);
+    return;
+  }
+#endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), ysh);
   nn = n * n;
   for (i = 0; i < nn; ++i) {
@@ -15905,9 +16127,16 @@ SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float
   int j;
   n = shli_bands(n);
   if (n < 1 || count <= 0) return;
-  if (count < SHLI_W) { /* too few for one vector: the scalar kernel, strided */
-    float tmp[SHLIGHT_MAX_COEFFS];
+  if (count < SHLI_W) {          /* too few for one vector: the scalar kernel, strided */
+    float tmp[SHLI_YBUF_COEFFS]; /* <= 8 KB; more bands streamed (16 KB stack rule) */
     int i;
+#if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
+    if (n * n > SHLI_YBUF_COEFFS) {
+      for (j = 0; j < count; ++j)
+        shli_sh_ystream(n, x[j], y[j], z[j], NULL, NULL, 0.0f, out_y + j, (ptrdiff_t)count);
+      return;
+    }
+#endif
     for (j = 0; j < count; ++j) {
       float d[3];
       d[0] = x[j];
@@ -16208,12 +16437,13 @@ SHLIGHT_API shl_result shl_grid_build(const shl_grid *g, const float (*centres)[
 
 SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const float (*grad)[3],
                                        const float p[3], int method, float *out_sh) {
-  float sbuf[8 * 256], gbuf[8 * 256][3], f[3];
-  float *c8 = sbuf;
-  float(*g8)[3] = gbuf;
-  void *heap = NULL;
-  int lo[3], hi[3], dims[3], k, c, n, nn;
-  shl_result res = SHLIGHT_OK;
+  /* the corners are gathered and reconstructed in chunks of s^2 coefficients (s <= 8: 8 KB
+     of stack for any n, no heap): each output coefficient depends only on its own corner
+     values and on weights that depend only on f and the spacing, so the chunks give the same
+     bits as one call on all n^2 coefficients */
+  float c8[8 * 64], g8[8 * 64][3], f[3];
+  int lo[3], hi[3], dims[3], k, c, n, nn, i0, s, ss, i;
+  size_t v[8];
   if (!shli_grid_valid(g) || !sh || !out_sh || !p ||
       (method != SHLIGHT_GRID_TRILINEAR && method != SHLIGHT_GRID_TAYLOR &&
        method != SHLIGHT_GRID_HERMITE) ||
@@ -16221,12 +16451,6 @@ SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const
     return SHLIGHT_EINVAL;
   n = g->n;
   nn = n * n;
-  if (nn > 256) {
-    heap = malloc(sizeof(float) * 32u * (size_t)nn);
-    if (!heap) return SHLIGHT_ENOMEM;
-    c8 = (float *)heap;
-    g8 = (float(*)[3])(void *)(c8 + 8 * nn);
-  }
   dims[0] = g->nx;
   dims[1] = g->ny;
   dims[2] = g->nz;
@@ -16244,25 +16468,33 @@ SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const
   }
   for (c = 0; c < 8; ++c) {
     int ix = (c & 1) ? hi[0] : lo[0], iy = (c & 2) ? hi[1] : lo[1], iz = (c & 4) ? hi[2] : lo[2];
-    size_t v = (size_t)ix + (size_t)g->nx * ((size_t)iy + (size_t)g->ny * (size_t)iz);
-    for (k = 0; k < nn; ++k) {
-      c8[c * nn + k] = sh[v * (size_t)nn + (size_t)k];
-      if (method != SHLIGHT_GRID_TRILINEAR) {
-        g8[c * nn + k][0] = grad[v * (size_t)nn + (size_t)k][0];
-        g8[c * nn + k][1] = grad[v * (size_t)nn + (size_t)k][1];
-        g8[c * nn + k][2] = grad[v * (size_t)nn + (size_t)k][2];
+    v[c] = (size_t)ix + (size_t)g->nx * ((size_t)iy + (size_t)g->ny * (size_t)iz);
+  }
+  for (i0 = 0; i0 < nn; i0 += ss) {
+    s = 8;
+    while (s * s > nn - i0)
+      --s;
+    ss = s * s;
+    for (c = 0; c < 8; ++c) {
+      for (i = 0; i < ss; ++i) {
+        size_t src = v[c] * (size_t)nn + (size_t)(i0 + i);
+        c8[c * ss + i] = sh[src];
+        if (method != SHLIGHT_GRID_TRILINEAR) {
+          g8[c * ss + i][0] = grad[src][0];
+          g8[c * ss + i][1] = grad[src][1];
+          g8[c * ss + i][2] = grad[src][2];
+        }
       }
     }
+    if (method == SHLIGHT_GRID_TRILINEAR) {
+      shl_grid_trilinear(s, c8, f, out_sh + i0);
+    } else if (method == SHLIGHT_GRID_TAYLOR) {
+      shl_grid_taylor(s, c8, (const float(*)[3])g8, f, g->spacing, out_sh + i0);
+    } else {
+      shl_grid_hermite(s, c8, (const float(*)[3])g8, f, g->spacing, out_sh + i0);
+    }
   }
-  if (method == SHLIGHT_GRID_TRILINEAR) {
-    shl_grid_trilinear(n, c8, f, out_sh);
-  } else if (method == SHLIGHT_GRID_TAYLOR) {
-    shl_grid_taylor(n, c8, (const float(*)[3])g8, f, g->spacing, out_sh);
-  } else {
-    shl_grid_hermite(n, c8, (const float(*)[3])g8, f, g->spacing, out_sh);
-  }
-  free(heap);
-  return res;
+  return SHLIGHT_OK;
 }
 
 /* ---- CPU-only part of >>brdftab: analytic BRDFs, table build, SHLT file, MERL loader ---- */

@@ -198,11 +198,17 @@ float shl_sh_dot(int n, float a[SHLIGHT_MAX_COEFFS], float b[SHLIGHT_MAX_COEFFS]
 
 float shli_sh_conv_zh_xyz(int n, float sh[SHLIGHT_MAX_COEFFS], float zh[SHLIGHT_MAX_BANDS],
                           shli_real ux, shli_real uy, shli_real uz) {
-  float ysh[SHLIGHT_MAX_COEFFS];
+  float ysh[SHLI_YBUF_COEFFS];
   float k;
   int l;
   int m;
   int b;
+#if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
+  if (n * n > SHLI_YBUF_COEFFS) {
+    return SHLIGHT_FLOAT(shli_sh_ystream(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy),
+                                         SHLIGHT_FLOAT(uz), sh, zh, 0.0f, 0, 1));
+  }
+#endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);
   /* the rotated lobe in place, then one dot (independent add chains, see shl_sh_dot) */
   for (l = 0; l < n; ++l) {
@@ -366,8 +372,11 @@ void shl_sh_window(int n, int kind, float width, inout float io_zh[SHLIGHT_MAX_B
         /* (1 + cos(pi t)) / 2 = 1 - sin(pi t / 2)^2 */
         sg = shli_sinpi(0.5 * t);
         sg = 1.0 - sg * sg;
-      } else {
+      } else if (t > 0.0) {
         sg = shli_sinpi(t) / (3.141592653589793 * t);
+      } else {
+        /* width = +inf: t = 0, sinc(0) = 1 (not 0 / 0) */
+        sg = 1.0;
       }
     }
     io_zh[l] = SHLIGHT_FLOAT(SHLIGHT_REAL(io_zh[l]) * sg);

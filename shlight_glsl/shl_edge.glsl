@@ -975,10 +975,12 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
                        out float out_np[1]) {
   shli_real l1 = SHLIGHT_REAL(shl_lobe_to_sg(n1));
   shli_real l2 = SHLIGHT_REAL(shl_lobe_to_sg(n2));
-  shli_real px = l1 * SHLIGHT_REAL(r1[0]) + l2 * SHLIGHT_REAL(r2[0]);
-  shli_real py = l1 * SHLIGHT_REAL(r1[1]) + l2 * SHLIGHT_REAL(r2[1]);
-  shli_real pz = l1 * SHLIGHT_REAL(r1[2]) + l2 * SHLIGHT_REAL(r2[2]);
-  shli_real lp = SHLIGHT_SQRTR(px * px + py * py + pz * pz);
+  shli_real a[8];
+  shli_real b[8];
+  shli_real px;
+  shli_real py;
+  shli_real pz;
+  shli_real lp;
   shli_real c1;
   shli_real c2;
   shli_real mu = 0.0;
@@ -986,6 +988,17 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
   out_rp[1] = r1[1];
   out_rp[2] = r1[2];
   out_np[0] = 0.0f;
+  if (!(n1 >= 0.0f) || !(n2 >= 0.0f)) {
+    return 0.0f;
+  }
+  /* the axes normalised in shli_real: a float-normalised axis (|r|^2 - 1 ~ 5e-8) raised to
+     n ~ 1e8 would move mu by e^2.4 */
+  shli_cap_frame(SHLIGHT_REAL(r1[0]), SHLIGHT_REAL(r1[1]), SHLIGHT_REAL(r1[2]), 1.0, a);
+  shli_cap_frame(SHLIGHT_REAL(r2[0]), SHLIGHT_REAL(r2[1]), SHLIGHT_REAL(r2[2]), 1.0, b);
+  px = l1 * a[0] + l2 * b[0];
+  py = l1 * a[1] + l2 * b[1];
+  pz = l1 * a[2] + l2 * b[2];
+  lp = SHLIGHT_SQRTR(px * px + py * py + pz * pz);
   if (!(lp > 1.0e-30) || !(lp < 1.0e30)) {
     return 0.0f;
   }
@@ -996,8 +1009,12 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
   out_rp[1] = SHLIGHT_FLOAT(py);
   out_rp[2] = SHLIGHT_FLOAT(pz);
   out_np[0] = shl_sg_to_lobe(SHLIGHT_FLOAT(lp));
-  c1 = px * SHLIGHT_REAL(r1[0]) + py * SHLIGHT_REAL(r1[1]) + pz * SHLIGHT_REAL(r1[2]);
-  c2 = px * SHLIGHT_REAL(r2[0]) + py * SHLIGHT_REAL(r2[1]) + pz * SHLIGHT_REAL(r2[2]);
+  c1 = px * a[0] + py * a[1] + pz * a[2];
+  c2 = px * b[0] + py * b[1] + pz * b[2];
+  /* cosines of unit vectors: <= 1, so mu <= 1 for any exponents (rounding can give 1 + 1e-16,
+     which n ~ 1e30 would blow up) */
+  c1 = SHLIGHT_MINR(c1, 1.0);
+  c2 = SHLIGHT_MINR(c2, 1.0);
   if (c1 > 0.0 && c2 > 0.0) {
     mu = SHLIGHT_POWR(c1, SHLIGHT_REAL(n1)) * SHLIGHT_POWR(c2, SHLIGHT_REAL(n2));
   }

@@ -137,15 +137,26 @@ float shl_hvl_geometric(vec3 x, vec3 nx, vec3 y, vec3 ny, float r, int exact) {
   } else {
     hh = SHLIGHT_REAL(shli_hvl_hs(cx, r, SHLIGHT_FLOAT(hh)));
   }
-  return SHLIGHT_FLOAT(cj * hh / (3.141592653589793 * rr * rr));
+  /* divided by r twice: no overflow of 1 / r^2 before the product (r down to denormals) */
+  hh = cj * hh / (3.141592653589793 * rr);
+  if (!(hh < SHLIGHT_REAL_MAX * rr)) {
+    return SHLIGHT_FLOAT(SHLIGHT_REAL_MAX);
+  }
+  return SHLIGHT_FLOAT(hh / rr);
 }
 
 float shli_hvl_emission_xyz(int n, float femit[SHLIGHT_MAX_COEFFS], shli_real ux, shli_real uy,
                             shli_real uz) {
-  float ysh[SHLIGHT_MAX_COEFFS];
+  float ysh[SHLI_YBUF_COEFFS];
   if (n == 1) {
     return SHLIGHT_FLOAT(0.28209479177387814 * SHLIGHT_REAL(femit[0]));
   }
+#if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
+  if (n * n > SHLI_YBUF_COEFFS) {
+    return SHLIGHT_FLOAT(shli_sh_ystream(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy),
+                                         SHLIGHT_FLOAT(uz), femit, 0, 0.0f, 0, 1));
+  }
+#endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);
   return shl_sh_dot(n, femit, ysh);
 }
@@ -268,7 +279,17 @@ float shl_hvl_radius_fov(float d, float fov, int m) {
     return 0.0f;
   }
   g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(m)));
-  return SHLIGHT_FLOAT(dd * (g + g * g * g / 3.0));
+  /* d g (1 + g^2 / 3) with the overflow test before the product (float in GLSL) */
+  f = 1.0 + g * g / 3.0;
+  g = dd * g;
+  if (!(g <= SHLIGHT_REAL_MAX / f)) {
+    return SHLIGHT_FLOAT(SHLIGHT_REAL_MAX);
+  }
+  g = g * f;
+  if (g > SHLIGHT_REAL_MAX) {
+    g = SHLIGHT_REAL_MAX;
+  }
+  return SHLIGHT_FLOAT(g);
 }
 
 float shl_hvl_radius_fov_tan(float d, float fov, int m) {
@@ -287,7 +308,15 @@ float shl_hvl_radius_fov_tan(float d, float fov, int m) {
   }
   /* tan g = sin(pi t) / sin(pi (1/2 - t)), t = g / pi in [0, 1/2] */
   g = g * 0.3183098861837907;
-  return SHLIGHT_FLOAT(dd * shli_sinpi(g) / shli_sinpi(0.5 - g));
+  g = shli_sinpi(g) / shli_sinpi(0.5 - g);
+  if (g > 1.0 && !(dd <= SHLIGHT_REAL_MAX / g)) {
+    return SHLIGHT_FLOAT(SHLIGHT_REAL_MAX);
+  }
+  g = dd * g;
+  if (g > SHLIGHT_REAL_MAX) {
+    g = SHLIGHT_REAL_MAX;
+  }
+  return SHLIGHT_FLOAT(g);
 }
 
 #endif

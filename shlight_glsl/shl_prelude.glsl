@@ -11,6 +11,7 @@
 #endif
 #define SHLIGHT_UNROLLED_BANDS 16
 #define SHLIGHT_MAX_COEFFS (SHLIGHT_MAX_BANDS * SHLIGHT_MAX_BANDS)
+#define SHLI_YBUF_COEFFS SHLIGHT_MAX_COEFFS
 #define shli_real float
 #define SHLIGHT_FLOAT(x) (x)
 #define SHLIGHT_REAL(x) (x)

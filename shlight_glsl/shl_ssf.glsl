@@ -42,7 +42,7 @@ shli_real shli_ssf_vpl(vec3 x, vec3 nx, vec3 y, vec3 ny, float flux, float dmin,
 
 void shl_ssf_vpl_sh(int n, vec3 x, vec3 nx, vec3 y, vec3 ny, float flux, float dmin,
                     inout float io_sh[SHLIGHT_MAX_COEFFS]) {
-  float ysh[SHLIGHT_MAX_COEFFS];
+  float ysh[SHLI_YBUF_COEFFS];
   shli_real g[8];
   float e;
   int nn;
@@ -55,6 +55,13 @@ void shl_ssf_vpl_sh(int n, vec3 x, vec3 nx, vec3 y, vec3 ny, float flux, float d
   if (!(e > 0.0f)) {
     return;
   }
+#if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
+  if (n * n > SHLI_YBUF_COEFFS) {
+    shli_sh_ystream(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), io_sh, 0,
+                    e, io_sh, 1);
+    return;
+  }
+#endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), ysh);
   nn = n * n;
   for (i = 0; i < nn; ++i) {

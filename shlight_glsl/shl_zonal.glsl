@@ -190,6 +190,7 @@ void shl_zh_cap_printed(int n, float r, float d, out float out_zh[SHLIGHT_MAX_BA
 void shl_zh_rotate(int n, float zh[SHLIGHT_MAX_BANDS], vec3 dir,
                    out float out_sh[SHLIGHT_MAX_COEFFS]) {
   shli_real g[8];
+  shli_real t;
   float k;
   int l;
   int m;
@@ -201,10 +202,27 @@ void shl_zh_rotate(int n, float zh[SHLIGHT_MAX_BANDS], vec3 dir,
   shli_cap_frame(SHLIGHT_REAL(dir[0]), SHLIGHT_REAL(dir[1]), SHLIGHT_REAL(dir[2]), 1.0, g);
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), out_sh);
   for (l = 0; l < n; ++l) {
-    k = SHLIGHT_FLOAT(SHLI_ZH_TAB[5 * l + 3]) * zh[l];
+    k = SHLIGHT_FLOAT(SHLI_ZH_TAB[5 * l + 3]);
     b = l * (l + 1);
-    for (m = -l; m <= l; ++m) {
-      out_sh[b + m] = k * out_sh[b + m];
+    if (!(SHLIGHT_ABSR(SHLIGHT_REAL(zh[l])) >= 1.0e30)) {
+      k = k * zh[l];
+      for (m = -l; m <= l; ++m) {
+        out_sh[b + m] = k * out_sh[b + m];
+      }
+    } else {
+      /* |sqrt(4 pi / (2l+1)) Y_l^m| <= 1 (Unsold): k Y first, so a zh[l] near FLT_MAX does
+         not overflow before the product that fits; the rounding of k Y (1 + 1e-7 for l = 0)
+         can still carry it past FLT_MAX: saturated */
+      for (m = -l; m <= l; ++m) {
+        t = SHLIGHT_REAL(k * out_sh[b + m]) * SHLIGHT_REAL(zh[l]);
+        if (t > SHLIGHT_REAL_MAX) {
+          t = SHLIGHT_REAL_MAX;
+        }
+        if (t < -SHLIGHT_REAL_MAX) {
+          t = -SHLIGHT_REAL_MAX;
+        }
+        out_sh[b + m] = SHLIGHT_FLOAT(t);
+      }
     }
   }
 }

@@ -53,7 +53,8 @@ asan_targets="build/tests/asan/test_basis build/tests/asan/test_glm build/tests/
   build/tests/asan/test_light build/tests/asan/test_grid build/tests/asan/test_edge \
   build/tests/asan/test_microfacet build/tests/asan/test_ggx build/tests/asan/test_brdf \
   build/tests/asan/test_gl_smoke build/tests/asan/test_brdftab build/tests/asan/fuzz_replay_brdftab \
-  build/tests/asan/test_ssf build/tests/asan/fuzz_replay_scene"
+  build/tests/asan/test_ssf build/tests/asan/fuzz_replay_scene \
+  build/tests/asan/test_contracts build/tests/asan/fuzz_replay_families"
 lane_step() { # NAME COMMAND...: run in the lane, keep its log, exit status and time
   local name=$1 s=$(date +%s) rc=0
   shift
@@ -80,6 +81,8 @@ lane() {
   lane_step asan-ubsan-brdf build/tests/asan/test_brdf
   lane_step asan-ubsan-ssf build/tests/asan/test_ssf
   lane_step asan-ubsan-fuzz-replay-scene build/tests/asan/fuzz_replay_scene tests/corpus/scene
+  lane_step asan-ubsan-contracts build/tests/asan/test_contracts
+  lane_step asan-ubsan-fuzz-replay-families build/tests/asan/fuzz_replay_families tests/corpus/families
   lane_step asan-ubsan-brdftab build/tests/asan/test_brdftab
   lane_step asan-ubsan-fuzz-replay-brdftab build/tests/asan/fuzz_replay_brdftab tests/corpus/brdftab
   lane_step asan-ubsan-gl $MAKE -s gl-test-asan
@@ -114,7 +117,8 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/tests/test_brdf build/tests/native/test_brdf build/tests/test_brdf_glsl \
   build/tests/test_brdftab build/tests/fuzz_replay_brdftab build/tests/test_brdftab_glsl \
   build/tests/test_ssf build/tests/test_ssf_glsl \
-  build/render/shlrender build/tests/fuzz_replay_scene build/tests/test_rd_core
+  build/render/shlrender build/tests/fuzz_replay_scene build/tests/test_rd_core \
+  build/tests/test_contracts build/tests/fuzz_random build/tests/fuzz_replay_families
 touch build/logs/lane/tests-built
 step test_basis build/tests/test_basis
 step test_simd_novl build/tests/native-novl/test_simd_novl
@@ -132,6 +136,15 @@ step fuzz-corpus-replay-scene build/tests/fuzz_replay_scene tests/corpus/scene
 step test_glm build/tests/test_glm
 step fuzz-corpus-replay build/tests/fuzz_replay tests/corpus/basis
 step test_brdftab build/tests/test_brdftab
+step test_contracts build/tests/test_contracts
+# the short bounded fuzz run of the other families (40000 random inputs each, ~25 s) and
+# their seed corpus (tests/corpus/families); `make fuzz-families-long` is the long run
+step fuzz-families build/tests/fuzz_random 40000 1
+step fuzz-corpus-replay-families build/tests/fuzz_replay_families tests/corpus/families
+# stack: every public function <= 16 KB (own frame + deepest static call chain, gcc
+# -fstack-usage / -fcallgraph-info); the two BRDF-table builders are allowed until the
+# table builder's restructuring lands (then drop --allow)
+step stack-usage $PY tools/stack_usage.py --allow shl_brdf_table_build,shl_brdf_table_build_merl
 # in the foreground: it balances the two lanes (both ~555 s)
 step lightref-selftest build/tests/selftest_lightref
 step fuzz-corpus-replay-brdftab build/tests/fuzz_replay_brdftab tests/corpus/brdftab
@@ -170,7 +183,7 @@ done
 if [ "${SHLIGHT_TEST_QUICK:-0}" != 1 ]; then
   for n in asan-ubsan-build asan-ubsan asan-ubsan-light asan-ubsan-grid asan-ubsan-edge \
     asan-ubsan-microfacet asan-ubsan-ggx asan-ubsan-brdf asan-ubsan-ssf \
-    asan-ubsan-fuzz-replay-scene asan-ubsan-brdftab asan-ubsan-fuzz-replay-brdftab asan-ubsan-gl; do
+    asan-ubsan-fuzz-replay-scene asan-ubsan-contracts asan-ubsan-fuzz-replay-families asan-ubsan-brdftab asan-ubsan-fuzz-replay-brdftab asan-ubsan-gl; do
     step "$n" lane_show "$n"
   done
 fi

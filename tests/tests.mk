@@ -213,3 +213,56 @@ $(TESTS_BUILD)/test_ssf: $(TESTS_SSF_DEPS)
 $(TESTS_BUILD)/asan/test_ssf: $(TESTS_SSF_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/test_ssf.c $(TESTS_QUADLIBS)
+
+# >>contracts: out-of-domain contracts of the zonal / light / grid / lobe / HVL / SSF functions
+# and the 16 KB stack restructurings (tests/test_contracts.c)
+TESTS_CONTRACTS_DEPS := tests/test_contracts.c tests/tl.h shlight.h
+$(TESTS_BUILD)/test_contracts: $(TESTS_CONTRACTS_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion -o $@ tests/test_contracts.c -lm
+$(TESTS_BUILD)/native/test_contracts: $(TESTS_CONTRACTS_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion -march=native -ffp-contract=fast -o $@ tests/test_contracts.c -lm
+$(TESTS_BUILD)/asan/test_contracts: $(TESTS_CONTRACTS_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion $(TESTS_ASAN) -fsanitize=float-cast-overflow -fno-sanitize-recover=all -o $@ tests/test_contracts.c -lm
+
+# fuzz targets of the other families (tests/fuzz_families.c): seeded random driver (any
+# compiler), corpus replay through tests/fuzz_replay.c (plain and ASan/UBSan with
+# float-cast-overflow, no recover), libFuzzer binary (clang), a longer opt-in run
+TESTS_FAM_DEPS := tests/fuzz_families.c shlight.h
+TESTS_FAM_FLAGS := -Wno-double-promotion -Wno-conversion
+FUZZ_FAM_CALLS ?= 400
+FUZZ_FAM_LONG_CALLS ?= 200000
+$(TESTS_BUILD)/fuzz_random: tests/fuzz_random.c $(TESTS_FAM_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_FAM_FLAGS) -o $@ tests/fuzz_random.c tests/fuzz_families.c -lm
+$(TESTS_BUILD)/fuzz_replay_families: tests/fuzz_replay.c $(TESTS_FAM_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_FAM_FLAGS) -o $@ tests/fuzz_replay.c tests/fuzz_families.c -lm
+$(TESTS_BUILD)/asan/fuzz_replay_families: tests/fuzz_replay.c $(TESTS_FAM_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_FAM_FLAGS) $(TESTS_ASAN) -fsanitize=float-cast-overflow \
+	    -fno-sanitize-recover=all -o $@ tests/fuzz_replay.c tests/fuzz_families.c -lm
+$(TESTS_BUILD)/asan/fuzz_random: tests/fuzz_random.c $(TESTS_FAM_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_FAM_FLAGS) $(TESTS_ASAN) -fsanitize=float-cast-overflow \
+	    -fno-sanitize-recover=all -o $@ tests/fuzz_random.c tests/fuzz_families.c -lm
+$(TESTS_BUILD)/fuzz_families: $(TESTS_FAM_DEPS)
+	@mkdir -p $(@D)
+	$(CLANG) -std=c99 -g -O1 -fsanitize=fuzzer,address,undefined,float-cast-overflow \
+	    -fno-sanitize-recover=all -o $@ tests/fuzz_families.c -lm
+
+.PHONY: fuzz-families fuzz-families-long
+# the short run CI does (in tests/run.sh): the random driver, FUZZ_FAM_CALLS inputs per family
+fuzz-families: $(TESTS_BUILD)/fuzz_random
+	$(TESTS_BUILD)/fuzz_random $(FUZZ_FAM_CALLS) 1
+# opt-in: the random driver under ASan/UBSan for FUZZ_FAM_LONG_CALLS inputs per family, then
+# libFuzzer (clang) for FUZZ_SECONDS on the seed corpus (its additions stay in build/)
+fuzz-families-long: $(TESTS_BUILD)/asan/fuzz_random
+	nice $(TESTS_BUILD)/asan/fuzz_random $(FUZZ_FAM_LONG_CALLS) 7
+	if command -v $(CLANG) >/dev/null; then $(MAKE) $(TESTS_BUILD)/fuzz_families && \
+	  mkdir -p $(TESTS_BUILD)/fuzz_corpus_families && \
+	  cp tests/corpus/families/* $(TESTS_BUILD)/fuzz_corpus_families/ && \
+	  nice $(TESTS_BUILD)/fuzz_families -max_len=512 -max_total_time=$(FUZZ_SECONDS) \
+	    -artifact_prefix=$(TESTS_BUILD)/ $(TESTS_BUILD)/fuzz_corpus_families; fi
