@@ -23,6 +23,14 @@
 
 #define PI 3.14159265358979323846
 
+/* theta_o of sample s of an nt-sample table, in double: the grid of >>brdftab solved by the
+   library's bisection (the grid itself is checked against its closed form in test_grid) and the
+   last sample's documented cos theta_o = SHLIGHT_BRDF_TABLE_GRAZING */
+static double tab_theta(int nt, int s) {
+  double d = shli_grid_d(nt, s);
+  return 0.5 * PI - (d < SHLIGHT_BRDF_TABLE_GRAZING ? SHLIGHT_BRDF_TABLE_GRAZING : d);
+}
+
 static float *falloc(size_t n) {
   float *p = (float *)calloc(n ? n : 1, sizeof(float));
   if (!p) abort();
@@ -147,7 +155,7 @@ static void times_z(int nb, const double *g, double *out) {
 static void test_phong_lambda(void) {
   const int n = 8, nt = 6;
   const double exps[2] = {200.0, 20.0};
-  const int last[2] = {3, 0}; /* samples 7.5 .. 52.5 deg (e = 200), 7.5 deg (e = 20) */
+  const int last[2] = {2, 0}; /* samples 0, 25.2, 50.0 deg (e = 200), 0 deg (e = 20) */
   float *d = falloc(shl_brdf_table_size(n, nt, 1));
   shl_brdf_table t;
   int k;
@@ -164,7 +172,7 @@ static void test_phong_lambda(void) {
     b.exponent = (float)exps[k];
     TL_CHECK(shl_brdf_table_build(&t, &b, 32, &est) == SHLIGHT_OK, "build");
     for (s = 0; s <= last[k]; ++s) {
-      double th = 0.5 * PI * (s + 0.5) / nt, r[3], fp[81], f[64];
+      double th = tab_theta(nt, s), r[3], fp[81], f[64];
       r[0] = -sin(th);
       r[1] = 0.0;
       r[2] = cos(th);
@@ -265,8 +273,8 @@ static void test_microfacet_bruteforce(void) {
     float est;
     double worst = 0.0, self = 0.0, scale = 0.0;
     TL_CHECK(shl_brdf_table_build(&t, &ms[k], 32, &est) == SHLIGHT_OK, "build");
-    for (s = 0; s < 3; ++s) { /* 11.25, 33.75, 56.25 deg */
-      double th = 0.5 * PI * (s + 0.5) / nt, wo[3], r1[50], r2[50];
+    for (s = 0; s < 3; ++s) { /* 0, 41.8, 80.7 deg */
+      double th = tab_theta(nt, s), wo[3], r1[50], r2[50];
       wo[0] = sin(th);
       wo[1] = 0.0;
       wo[2] = cos(th);
@@ -296,7 +304,7 @@ static void test_table_vs_zh_kernels(void) {
   float d[2 * 6 * 64], zh[8], sh[64], r[3];
   shl_brdf_table t;
   shl_brdf_params b = mk(SHLIGHT_BRDF_PHONG, 200.0f, 0, 0, 1);
-  double th = 0.5 * PI * 0.5 / nt, worst = 0.0;
+  double th = tab_theta(nt, 1), worst = 0.0;
   int i;
   t.n = n;
   t.n_theta = nt;
@@ -310,7 +318,8 @@ static void test_table_vs_zh_kernels(void) {
   shl_zh_phong(n, 200.0f, zh);
   shl_zh_rotate(n, zh, r, sh);
   for (i = 0; i < n * n; ++i)
-    if (fabs((double)(d[n * n + i] - sh[i])) > worst) worst = fabs((double)(d[n * n + i] - sh[i]));
+    if (fabs((double)(d[3 * n * n + i] - sh[i])) > worst)
+      worst = fabs((double)(d[3 * n * n + i] - sh[i]));
   printf("  Phong e = 200 table vs shl_zh_rotate(shl_zh_phong): %.2e\n", worst);
   /* float: the axis rounded to float moves Y by |grad Y| 6e-8 ~ 1e-6 at l = 7, plus roundings */
   TL_CHECK(worst <= 2e-6, "table and >>brdf ZH disagree by %g", worst);
@@ -362,9 +371,9 @@ static void test_reciprocity_albedo(void) {
           worst);
       if (ms[k].model == SHLIGHT_BRDF_BLINN_PHONG)
         /* documented: the Beckmann Lambda is only an approximation of this D's own Smith
-           Lambda (Walter et al. 2007), so G2 overshoots at low exponents: measured max albedo
-           1.054 at e = 10 (grazing), 1 + 1e-7 at e = 500 */
-        TL_CHECK(amax <= (ms[k].exponent < 100.0f ? 1.06 : 1.0 + 1e-6 + (double)est),
+           Lambda (Walter et al. 2007), so G2 overshoots at grazing w_o: measured max albedo
+           1.0684 at e = 10, 1.0015 at e = 500 (the last sample, cos theta_o = 1e-6) */
+        TL_CHECK(amax <= (ms[k].exponent < 100.0f ? 1.07 : 1.0016 + (double)est),
                  "model %d: albedo %.8f beyond the documented bound", k, amax);
       else
         TL_CHECK(amax <= 1.0 + 1e-6 + (double)est, "model %d: albedo %.8f > 1", k, amax);
@@ -412,7 +421,7 @@ static void test_aniso_rotation(void) {
   /* lookup at the sample directions: both tables give the same SH */
   worst = 0.0;
   for (p = 0; p < np; ++p) {
-    double ph = 2.0 * PI * p / np, th = 0.5 * PI * (3 + 0.5) / nt;
+    double ph = 2.0 * PI * p / np, th = tab_theta(nt, 3);
     float wo[3];
     wo[0] = (float)(sin(th) * cos(ph));
     wo[1] = (float)(sin(th) * sin(ph));
@@ -616,9 +625,9 @@ static void set32(unsigned char *p, unsigned long v) {
   p[3] = (unsigned char)(v >> 24);
 }
 static void fix_crc(unsigned char *f, size_t len) {
-  unsigned long c = crc_ref(f, 28, 0);
-  c = crc_ref(f + 32, len - 32, c);
-  set32(f + 28, c);
+  unsigned long c = crc_ref(f, 36, 0);
+  c = crc_ref(f + 40, len - 40, c);
+  set32(f + 36, c);
 }
 
 static void test_shlt_file(void) {
@@ -636,20 +645,20 @@ static void test_shlt_file(void) {
   t.flags = SHLIGHT_BRDF_TABLE_ANISO;
   t.data = d;
   TL_CHECK(shl_brdf_table_build(&t, &b, 8, NULL) == SHLIGHT_OK, "build");
-  TL_CHECK(shl_brdf_table_write(&t, NULL, 0, &len) == SHLIGHT_ESTORAGE && len == 32 + 4 * cnt,
+  TL_CHECK(shl_brdf_table_write(&t, NULL, 0, &len) == SHLIGHT_ESTORAGE && len == 40 + 4 * cnt,
            "size query");
   f = (unsigned char *)malloc(len + 8);
   g = (unsigned char *)malloc(len + 8);
   TL_CHECK(shl_brdf_table_write(&t, f, len - 1, &len2) == SHLIGHT_ESTORAGE, "short buffer");
   TL_CHECK(shl_brdf_table_write(&t, f, len + 8, &len2) == SHLIGHT_OK && len2 == len, "write");
-  TL_CHECK(memcmp(f, "SHLT", 4) == 0 && f[4] == 1 && f[8] == n && f[12] == nt && f[16] == np &&
-               f[20] == 1,
+  TL_CHECK(memcmp(f, "SHLT", 4) == 0 && f[4] == 2 && f[8] == n && f[12] == nt && f[16] == np &&
+               f[20] == 1 && f[28] == 1 && f[32] == 0,
            "header bytes");
-  TL_CHECK(crc_ref(f, 28, crc_ref(NULL, 0, 0)) == crc_ref(f, 28, 0), "crc chaining");
+  TL_CHECK(crc_ref(f, 36, crc_ref(NULL, 0, 0)) == crc_ref(f, 36, 0), "crc chaining");
   {
-    unsigned long c = crc_ref(f + 32, len - 32, crc_ref(f, 28, 0));
-    TL_CHECK((unsigned long)f[28] + ((unsigned long)f[29] << 8) + ((unsigned long)f[30] << 16) +
-                     ((unsigned long)f[31] << 24) ==
+    unsigned long c = crc_ref(f + 40, len - 40, crc_ref(f, 36, 0));
+    TL_CHECK((unsigned long)f[36] + ((unsigned long)f[37] << 8) + ((unsigned long)f[38] << 16) +
+                     ((unsigned long)f[39] << 24) ==
                  c,
              "stored CRC is zlib's crc32 of header and payload");
   }
@@ -664,7 +673,8 @@ static void test_shlt_file(void) {
   TL_CHECK(shl_brdf_table_read(&r, buf, l, back, cnt) == code, "%s: got %d, want %d", what,        \
            (int)shl_brdf_table_read(&r, buf, l, back, cnt), (int)code)
   EXPECT(f, 0, SHLIGHT_ELENGTH, "empty");
-  EXPECT(f, 31, SHLIGHT_ELENGTH, "header cut");
+  EXPECT(f, 7, SHLIGHT_ELENGTH, "cut before the version");
+  EXPECT(f, 39, SHLIGHT_ELENGTH, "header cut");
   EXPECT(f, len - 1, SHLIGHT_ELENGTH, "payload cut by one byte");
   EXPECT(f, len - 4, SHLIGHT_ELENGTH, "payload cut by one float");
   memcpy(g, f, len);
@@ -674,8 +684,8 @@ static void test_shlt_file(void) {
   g[3] = 'X';
   EXPECT(g, len, SHLIGHT_EMAGIC, "magic");
   memcpy(g, f, len);
-  g[4] = 2;
-  EXPECT(g, len, SHLIGHT_EVERSION, "version 2");
+  g[4] = 3;
+  EXPECT(g, len, SHLIGHT_EVERSION, "version 3");
   memcpy(g, f, len);
   g[7] = 0x80;
   EXPECT(g, len, SHLIGHT_EVERSION, "version huge");
@@ -708,26 +718,45 @@ static void test_shlt_file(void) {
   set32(g + 24, (unsigned long)shl_brdf_table_size(n, 6, np));
   EXPECT(g, len, SHLIGHT_ELENGTH, "dims larger than the payload");
   memcpy(g, f, len);
-  g[40] ^= 1;
+  set32(g + 28, 2);
+  EXPECT(g, len, SHLIGHT_EDIMS, "unknown grid 2");
+  memcpy(g, f, len);
+  set32(g + 32, 1);
+  EXPECT(g, len, SHLIGHT_EDIMS, "reserved word not 0");
+  memcpy(g, f, len);
+  g[44] ^= 1;
   EXPECT(g, len, SHLIGHT_ECHECKSUM, "payload bit flip");
   memcpy(g, f, len);
-  g[29] ^= 0x10;
+  g[37] ^= 0x10;
   EXPECT(g, len, SHLIGHT_ECHECKSUM, "CRC bit flip");
   memcpy(g, f, len);
-  set32(g + 32 + 4 * 7, 0x7fc00000ul); /* NaN, CRC fixed: the NaN check itself */
+  set32(g + 40 + 4 * 7, 0x7fc00000ul); /* NaN, CRC fixed: the NaN check itself */
   fix_crc(g, len);
   EXPECT(g, len, SHLIGHT_ENONFINITE, "NaN payload");
   memcpy(g, f, len);
-  set32(g + 32 + 4 * (cnt - 1), 0xff800000ul); /* -Inf, last float */
+  set32(g + 40 + 4 * (cnt - 1), 0xff800000ul); /* -Inf, last float */
   fix_crc(g, len);
   EXPECT(g, len, SHLIGHT_ENONFINITE, "-Inf payload");
+  { /* test_shlt_version1_rejected: a well-formed version 1 file (32-byte header, CRC at 28,
+       cell-centred grid) gives SHLIGHT_EVERSION, storage untouched */
+    size_t l1 = 32 + 4 * cnt;
+    unsigned long c;
+    memcpy(g, f, 28);
+    set32(g + 4, 1);
+    memcpy(g + 32, f + 40, 4 * cnt);
+    c = crc_ref(g + 32, 4 * cnt, crc_ref(g, 28, 0));
+    set32(g + 28, c);
+    back[0] = 7.0f;
+    EXPECT(g, l1, SHLIGHT_EVERSION, "version 1 file");
+    TL_CHECK(back[0] == 7.0f, "version 1: storage written");
+  }
   TL_CHECK(shl_brdf_table_read(NULL, f, len, back, cnt) == SHLIGHT_EINVAL, "NULL out");
   TL_CHECK(shl_brdf_table_read(&r, NULL, len, back, cnt) == SHLIGHT_EINVAL, "NULL buf");
   /* storage untouched on error */
   for (i = 0; i < cnt; ++i)
     back[i] = 7.0f;
   memcpy(g, f, len);
-  g[40] ^= 1;
+  g[44] ^= 1;
   shl_brdf_table_read(&r, g, len, back, cnt);
   TL_CHECK(back[0] == 7.0f && back[cnt - 1] == 7.0f, "storage written on error");
   /* write errors */
@@ -847,7 +876,7 @@ static void test_build_args(void) {
   TL_CHECK(shl_brdf_table_build(&t, &b, 8, NULL) == SHLIGHT_OK, "build");
   /* lookup: exactly at a sample, halfway, a zero and a downward w_o (clamped to the last) */
   {
-    double th = 0.5 * PI * 1.5 / 4;
+    double th = tab_theta(4, 1);
     float wo[3];
     int i;
     wo[0] = (float)sin(th);
@@ -857,7 +886,7 @@ static void test_build_args(void) {
     for (i = 0; i < 4; ++i)
       TL_CHECK(fabs((double)(o[i] - d[(2 * 1 + 1) * 4 + i])) <= 2e-6,
                "at sample 1, coef %d: %g vs %g", i, (double)o[i], (double)d[12 + i]);
-    th = 0.5 * PI * 2.0 / 4;
+    th = tab_theta(7, 3); /* u = 1/2: halfway between samples 1 and 2 of 4 in the grid variable */
     wo[0] = (float)sin(th);
     wo[2] = (float)cos(th);
     shl_brdf_table_lookup(2, 4, 1, 0, d, wo, o);
