@@ -29313,8 +29313,15 @@ SHLIGHT_API shl_result shl_merl_read(shl_merl *out, const void *buf, size_t len,
    phi_d folded to [0, pi) by reciprocity), index coordinates u_h = sqrt(theta_h / (pi/2)) n_theta_h
    (MERL's non-linear theta_h index), u_d = theta_d / (pi/2) n_theta_d, u_p = phi_d / pi n_phi_d,
    sample i at coordinate i (MERL's convention: the index is the floor of the coordinate),
-   trilinear between samples (clamped at the ends of theta_h and theta_d, periodic in phi_d);
-   negative samples count as 0. Invalid m or c: 0. Cost: ~100 flops, 2 acos, 2 atan2. */
+   trilinear between samples (clamped at the ends of theta_h and theta_d, periodic in phi_d).
+   Reconstruction (for grazing directions): the trilinear interpolant is of f cos(theta_h)
+   cos(theta_d) = f (cos_i + cos_o) / 2, divided by the query's factor (floored at 1e-6), so
+   that the 1 / (cos_i + cos_o) growth of f at grazing is carried by the factor; only valid
+   samples (> 0; MERL marks invalid ones negative) enter the sum, their weights renormalised
+   to 1; beyond the last theta_d sample, linear extrapolation from the last two layers when
+   their 8 samples are valid, else the last layer held; a cell without any valid sample takes
+   the nearest theta_d layer below that has one (held along theta_d); 0 if none.
+   Invalid m or c: 0. Cost: ~100 flops, 2 acos, 2 atan2. */
 SHLIGHT_API float shl_merl_eval(const shl_merl *m, int c, const float wo[3], const float wi[3]);
 
 /* shl_brdf_table_build_merl: shl_brdf_table_build for channel c of a measured BRDF (tables
@@ -42964,6 +42971,8 @@ static double shli_merl_f(const shl_merl *m, int c, const double wo[3], const do
   int a;
   int b;
   int e;
+  int extra = 0;
+  int bad = 0;
   if (!(wo[2] > 0.0) || !(wi[2] > 0.0)) {
     return 0.0;
   }
@@ -43013,25 +43022,76 @@ static double shli_merl_f(const shl_merl *m, int c, const double wo[3], const do
       i1[k] = k == 2 ? 0 : nd[k] - 1; /* periodic in phi_d, clamped in the thetas */
     }
   }
-  for (a = 0; a < 2; ++a) {
-    for (b = 0; b < 2; ++b) {
-      for (e = 0; e < 2; ++e) {
-        size_t ih = (size_t)(a ? i1[0] : i0[0]);
-        size_t id = (size_t)(b ? i1[1] : i0[1]);
-        size_t ip = (size_t)(e ? i1[2] : i0[2]);
-        double w =
-            (a ? fr[0] : 1.0 - fr[0]) * (b ? fr[1] : 1.0 - fr[1]) * (e ? fr[2] : 1.0 - fr[2]);
-        double s =
-            (double)
-                m->data[(((size_t)c * (size_t)nd[0] + ih) * (size_t)nd[1] + id) * (size_t)nd[2] +
-                        ip];
-        if (s > 0.0 && w != 0.0) {
-          v += w * s;
+  if (u[1] > (double)(nd[1] - 1) && nd[1] >= 2) {
+    /* beyond the last theta_d layer (MERL: 89 to 90 degrees): linear extrapolation from the
+       last two layers (of f cos theta_h cos theta_d, below), when all 8 samples are valid */
+    i0[1] = nd[1] - 2;
+    i1[1] = nd[1] - 1;
+    fr[1] = u[1] - (double)(nd[1] - 2);
+    if (fr[1] > 2.0) {
+      fr[1] = 2.0;
+    }
+    extra = 1;
+  }
+  /* trilinear in f cos(theta_h) cos(theta_d) = f (cos_i + cos_o) / 2, which stays smooth where
+     f of a rough surface grows like 1 / (cos_i + cos_o) at grazing, divided by the query's
+     factor (floored at 1e-6); over the valid (positive) samples only, the weights renormalised:
+     near the horizon the grid mixes valid samples with invalid ones (negative in MERL files, 0
+     where a direction of the sample lies below the surface), which would otherwise pull the value
+     towards 0; with no valid sample in the cell, the nearest theta_d layer below that has one
+     (extrapolation by holding along theta_d, where the sampled configurations end first) */
+  for (;;) {
+    double ws = 0.0;
+    double ch[2];
+    double cd[2];
+    double q = cos(th) * cos(td);
+    for (k = 0; k < 2; ++k) {
+      double sh = (double)(k ? i1[0] : i0[0]) / (double)nd[0];
+      ch[k] = cos(sh * sh * 0.5 * SHLI_PI);
+      cd[k] = cos((double)(k ? i1[1] : i0[1]) / (double)nd[1] * 0.5 * SHLI_PI);
+    }
+    if (q < 1e-6) {
+      q = 1e-6;
+    }
+    for (a = 0; a < 2; ++a) {
+      for (b = 0; b < 2; ++b) {
+        for (e = 0; e < 2; ++e) {
+          size_t ih = (size_t)(a ? i1[0] : i0[0]);
+          size_t id = (size_t)(b ? i1[1] : i0[1]);
+          size_t ip = (size_t)(e ? i1[2] : i0[2]);
+          double w =
+              (a ? fr[0] : 1.0 - fr[0]) * (b ? fr[1] : 1.0 - fr[1]) * (e ? fr[2] : 1.0 - fr[2]);
+          double s =
+              (double)
+                  m->data[(((size_t)c * (size_t)nd[0] + ih) * (size_t)nd[1] + id) * (size_t)nd[2] +
+                          ip];
+          if (s > 0.0 && w != 0.0) {
+            v += w * s * ch[a] * cd[b];
+            ws += w;
+          } else if (w != 0.0) {
+            bad = 1;
+          }
         }
       }
     }
+    if (extra && bad) { /* an invalid sample: hold the last layer instead */
+      extra = 0;
+      bad = 0;
+      v = 0.0;
+      i0[1] = nd[1] - 1;
+      fr[1] = 0.0;
+      continue;
+    }
+    if (ws > 0.0) {
+      return v / (ws * q);
+    }
+    if (i0[1] == 0) {
+      return 0.0;
+    }
+    i0[1] -= 1; /* one theta_d layer down, both corners on it */
+    i1[1] = i0[1];
+    fr[1] = 0.0;
   }
-  return v;
 }
 
 static int shli_merl_valid(const shl_merl *m) {

@@ -6,7 +6,8 @@
 #define SHL_BRDFTAB_GLSL
 
 shli_real shli_brdf_grid_u(shli_real d) {
-  return ((1.5707963267948966 - d) + 0.05 * SHLIGHT_LOGR(1.5707973267948966 / (d + 0.000001))) *
+  return ((1.5707963267948966 - d) +
+          0.05 * SHLIGHT_LOGR((1.5707963267948966 + 0.000001) / (d + 0.000001))) *
          0.4377994232697314;
 }
 
