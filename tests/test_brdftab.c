@@ -1026,7 +1026,6 @@ static void test_shading_cap(void) {
   free(d);
 }
 
-
 /* ---- contract findings: huge Phong exponents, int overflow in the cell, the grid's ends ---- */
 static void test_brdftab_phong_exponent_huge(void) {
   const int n = 3, nt = 4;
