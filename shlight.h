@@ -28675,14 +28675,13 @@ SHLIGHT_INLINE float shl_hvl_radius_fov_tan(float d, float fov, int m) {
    step is uniform in theta_o at normal incidence and uniform in ln(cos theta_o) towards
    grazing, where F' of a microfacet BRDF grows like ln(1 / cos theta_o) (linear in u there,
    so interpolated almost exactly) and where a sharp lobe is cut by the horizon. At 90 samples:
-   1.34 deg steps near 0 deg, 0.69 deg at 80 deg, cos theta_o stepping by a factor 1.66 from
-   89 deg on. The last sample holds F and F' at cos theta_o = d0 (F' diverges at exactly 90
-   degrees; shl_brdf_table_theta gives the sample angles). Sample p at phi_o = 2 pi p / n_phi
-   (p = 0: phi_o = 0). n_phi = 1: an
-   isotropic table, sampled at phi_o = 0 (seed 000 eq. 17-18); n_phi > 1: anisotropic, periodic
-   in phi_o. On a GPU the same flat float array is an SSBO (std430 float[]), or an RGBA32F
-   texture of n_theta * n_phi * 2 * n^2 / 4 texels read linearly (n^2 * 2 floats per sample:
-   whole texels for every n >= 2), in the same order.
+   1.43 deg steps at 0 deg, 1.14 deg at 80 deg, 0.38 deg at 89 deg, then cos theta_o stepping
+   by a factor 1.67 (0.05 deg steps at 89.9 deg). The last sample holds F and F' at cos theta_o = d0
+   (F' diverges at exactly 90 degrees; shl_brdf_table_theta gives the sample angles). Sample p at
+   phi_o = 2 pi p / n_phi (p = 0: phi_o = 0). n_phi = 1: an isotropic table, sampled at phi_o = 0
+   (seed 000 eq. 17-18); n_phi > 1: anisotropic, periodic in phi_o. On a GPU the same flat float
+   array is an SSBO (std430 float[]), or an RGBA32F texture of n_theta * n_phi * 2 * n^2 / 4 texels
+   read linearly (n^2 * 2 floats per sample: whole texels for every n >= 2), in the same order.
    Lookup (shl_brdf_table_cell, shl_brdf_table_lookup): d = atan2(w_z, |w_xy|) (own atan2, see
    >>light; w_z < 0 clamps to the horizon, w_xy = 0 is normal incidence), linear in u between
    the two bracketing samples over the whole range [0, 90] degrees; anisotropic tables also
