@@ -15066,21 +15066,35 @@ SHLIGHT_INLINE float shl_hvl_radius_fov_tan(float d, float fov, int m) {
    Table layout (the CPU struct shl_brdf_table, the file format and the GPU layout contract):
      data[((p * n_theta + t) * 2 + k) * n^2 + i]
    p < n_phi, t < n_theta, k = 0: F (with the cosine), k = 1: F' (without), i < n^2 the SH
-   index. Sample t is at theta_o = (t + 1/2) (pi/2) / n_theta (cell centres: 90 samples are
-   0.5, 1.5, ..., 89.5 degrees; the exact grazing direction, where F' of a microfacet BRDF
-   grows like log(1 / cos theta_o), is never a sample), sample p at phi_o = 2 pi p / n_phi
-   (p = 0: phi_o = 0). n_phi = 1: an
-   isotropic table, sampled at phi_o = 0 (seed 000 eq. 17-18); n_phi > 1: anisotropic, periodic
-   in phi_o. On a GPU the same flat float array is an SSBO (std430 float[]), or an RGBA32F
-   texture of n_theta * n_phi * 2 * n^2 / 4 texels read linearly (n^2 * 2 floats per sample:
-   whole texels for every n >= 2), in the same order.
-   Lookup (shl_brdf_table_cell, shl_brdf_table_lookup): theta_o = atan2(|w_xy|, w_z) (own
-   atan2, see >>light; w_z < 0 clamps to pi/2), linear in theta_o between the two bracketing
-   samples, constant beyond the first and the last sample centre; anisotropic tables also linear in
-   phi_o = atan2(w_y, w_x) (periodic). Isotropic tables are rotated about z by phi_o
+   index. Outgoing grid (SHLT grid 1, the only one): sample t at the theta_o where the grid
+   variable u(theta_o) = t / (n_theta - 1) (n_theta = 1: theta_o = 0), with
+     U(d) = (pi/2 - d) + c ln((pi/2 + d0) / (d + d0)),  u = U(d) / U(0),  d = pi/2 - theta_o,
+   c = 0.05, d0 = 1e-6 (shli_brdf_grid_u): the end samples are theta_o = 0 and 90 degrees; the
+   step is uniform in theta_o at normal incidence and uniform in ln(cos theta_o) towards
+   grazing, where F' of a microfacet BRDF grows like ln(1 / cos theta_o) (linear in u there,
+   so interpolated almost exactly) and where a sharp lobe is cut by the horizon. At 90 samples:
+   1.43 deg steps at 0 deg, 1.14 deg at 80 deg, 0.38 deg at 89 deg, then cos theta_o stepping
+   by a factor 1.67 (0.05 deg steps at 89.9 deg). The last sample holds F and F' at cos theta_o = d0
+   (F' diverges at exactly 90 degrees; shl_brdf_table_theta gives the sample angles). Sample p at
+   phi_o = 2 pi p / n_phi (p = 0: phi_o = 0). n_phi = 1: an isotropic table, sampled at phi_o = 0
+   (seed 000 eq. 17-18); n_phi > 1: anisotropic, periodic in phi_o. On a GPU the same flat float
+   array is an SSBO (std430 float[]), or an RGBA32F texture of n_theta * n_phi * 2 * n^2 / 4 texels
+   read linearly (n^2 * 2 floats per sample: whole texels for every n >= 2), in the same order.
+   Lookup (shl_brdf_table_cell, shl_brdf_table_lookup): d = atan2(w_z, |w_xy|) (own atan2, see
+   >>light; w_z < 0 clamps to the horizon, w_xy = 0 is normal incidence), linear in u between
+   the two bracketing samples over the whole range [0, 90] degrees; anisotropic tables also
+   linear in phi_o = atan2(w_y, w_x) (periodic). Isotropic tables are rotated about z by phi_o
    (shl_sh_rotate_z): the result is the SH of F in the local frame for that w_o, whatever its
-   azimuth. Error: the interpolation error of the tabulated function, O(h^2) in the sample step h
-   (README has measured numbers), plus float rounding. */
+   azimuth. Error: the interpolation error of the tabulated function, O(h^2) in the sample step
+   (docs/brdf-tables.md has it against theta_o for each model), plus float rounding. */
+
+/* shli_brdf_grid_u: the table grid variable u in [0, 1] (see >>brdftab) of d = pi/2 - theta_o
+   in [0, pi/2]: u(pi/2) = 0 (normal incidence), u(0) = 1 (grazing). */
+SHLIGHT_INLINE shli_real shli_brdf_grid_u(shli_real d) {
+  return ((1.5707963267948966 - d) +
+          0.05 * SHLIGHT_LOGR((1.5707963267948966 + 0.000001) / (d + 0.000001))) *
+         0.4377994232697314;
+}
 
 /* shl_sh_rotate_z: io_sh (n bands) becomes the SH of the function rotated by the angle phi
    about +z, given c1 = cos(phi) and s1 = sin(phi) (unit: c1^2 + s1^2 = 1): for m > 0,
@@ -15112,14 +15126,16 @@ SHLIGHT_INLINE void shl_sh_rotate_z(int n, float c1, float s1, float *io_sh) {
 }
 
 /* shl_brdf_table_cell: the samples and weights of the lookup at the outgoing direction wo
-   (local frame, any non-zero finite vector; zero gives theta_o = 0, phi_o = 0). out_idx[j] is a
-   sample index s = p * n_theta + t (the table's F of sample s starts at float 2 s n^2, F' at
-   (2 s + 1) n^2), out_w[j] its weight, j < 4: (t0, p0), (t0 + 1, p0), (t0, p1), (t0 + 1, p1)
-   with p1 = (p0 + 1) mod n_phi; the weights add up to 1. Isotropic tables (n_phi = 1) have
-   weight 0 at j = 2, 3 (indices repeat j = 0, 1); n_theta = 1 puts all weight on t = 0.
-   theta_o below the first sample centre or above the last one takes that sample (weight 1).
-   n_theta < 1 or n_phi < 1: all indices 0, all weights 0. Cost: one atan2 (two with n_phi > 1),
-   ~30 flops. */
+   (local frame, any finite vector; wo_x = wo_y = 0, zero included, is normal incidence,
+   theta_o = 0, phi_o = 0; wo_z < 0 counts as the horizon). out_idx[j] is a sample index
+   s = p * n_theta + t (the table's F of sample s starts at float 2 s n^2, F' at (2 s + 1) n^2),
+   out_w[j] its weight, j < 4: (t0, p0), (t0 + 1, p0), (t0, p1), (t0 + 1, p1) with
+   p1 = (p0 + 1) mod n_phi; the weights add up to 1. Isotropic tables (n_phi = 1) have weight 0
+   at j = 2, 3 (indices repeat j = 0, 1); n_theta = 1 puts all weight on t = 0. The samples
+   cover theta_o in [0, 90] degrees (grid of >>brdftab): no clamping at the ends.
+   n_theta or n_phi outside [1, 4096] (SHLIGHT_BRDF_TABLE_MAX_SAMPLES): all indices 0, all
+   weights 0 (so n_theta n_phi < 2^24 and no index overflows an int). Cost: one atan2 and one
+   log (a second atan2 with n_phi > 1), ~40 flops. */
 SHLIGHT_INLINE void shl_brdf_table_cell(int n_theta, int n_phi, const float wo[3], int *out_idx,
                                         float *out_w) {
   shli_real x = SHLIGHT_REAL(wo[0]);
@@ -15139,14 +15155,18 @@ SHLIGHT_INLINE void shl_brdf_table_cell(int n_theta, int n_phi, const float wo[3
     out_idx[j] = 0;
     out_w[j] = 0.0f;
   }
-  if (n_theta < 1 || n_phi < 1) {
+  if (n_theta < 1 || n_phi < 1 || n_theta > 4096 || n_phi > 4096) {
     return;
   }
   if (z < 0.0) {
     z = 0.0;
   }
   if (n_theta > 1) {
-    u = shli_atan2r(rho, z) * (SHLIGHT_REAL(SHLIGHT_ITOF(n_theta)) * 0.63661977236758134) - 0.5;
+    u = 1.5707963267948966;
+    if (rho > 0.0) {
+      u = shli_atan2r(z, rho);
+    }
+    u = shli_brdf_grid_u(u) * SHLIGHT_REAL(SHLIGHT_ITOF(n_theta - 1));
     if (!(u > 0.0)) {
       u = 0.0;
     }
@@ -15200,7 +15220,8 @@ SHLIGHT_INLINE void shl_brdf_table_cell(int n_theta, int n_phi, const float wo[3
    float[SHLIGHT_BRDF_TABLE_FLOATS] (the host defines it; shl_prelude.glsl defaults it to
    2 * 90 * SHLIGHT_MAX_COEFFS, one isotropic table of 90 samples); a shader that keeps the
    table in an SSBO calls shl_brdf_table_cell, sums the 4 weighted samples itself and then
-   shl_sh_rotate_z. which outside {0, 1} is taken as 0; invalid n_theta / n_phi give zeros.
+   shl_sh_rotate_z. which outside {0, 1} is taken as 0; n_theta or n_phi outside [1, 4096],
+   or a table of n_theta n_phi 2 n^2 >= 2^31 floats (beyond int indexing), give zeros.
    Cost: the cell, 4 FMA per coefficient, the rotation (4 flops per coefficient). */
 SHLIGHT_INLINE void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int which,
                                           const float *tab, const float wo[3], float *out_sh) {
@@ -15218,7 +15239,8 @@ SHLIGHT_INLINE void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int whi
     return;
   }
   nn = n * n;
-  if (n_theta < 1 || n_phi < 1) {
+  if (n_theta < 1 || n_phi < 1 || n_theta > 4096 || n_phi > 4096 ||
+      n_theta * n_phi > 1073741823 / nn) {
     for (i = 0; i < nn; ++i) {
       out_sh[i] = 0.0f;
     }
@@ -15536,7 +15558,7 @@ SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float
    mapping). All five are reciprocal. Phong, Beckmann and GGX keep albedo <= kd + ks
    (tests/test_brdftab: max 0.981 Phong e = 50, 0.997 GGX alpha 0.05, 1 + 1e-7 Beckmann alpha
    0.05, with ks = 1, f0 = 1); Blinn-Phong does not quite, since Beckmann's Lambda is not its
-   own: albedo up to 1.054 ks at e = 10, 1 + 1e-7 at e = 500. */
+   own: albedo up to 1.068 ks at e = 10, 1.0015 ks at e = 500 (at cos theta_o = 1e-6). */
 #define SHLIGHT_BRDF_LAMBERT 0
 #define SHLIGHT_BRDF_PHONG 1
 #define SHLIGHT_BRDF_BLINN_PHONG 2
@@ -15544,9 +15566,19 @@ SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float
 #define SHLIGHT_BRDF_GGX 4
 /* shl_brdf_table.flags: bit 0 set for an anisotropic table (n_phi > 1); other bits 0. */
 #define SHLIGHT_BRDF_TABLE_ANISO 1
-/* SHLT file: version written and the only one read; header bytes before the payload. */
-#define SHLIGHT_BRDF_TABLE_VERSION 1
-#define SHLIGHT_BRDF_TABLE_HEADER 32
+/* SHLT file: version written and the only one read (version 1 files, of the cell-centred grid
+   of earlier releases, give SHLIGHT_EVERSION: rebuild them); header bytes before the payload;
+   the outgoing grid id recorded in the header (1: the grid of >>brdftab, the only one). */
+#define SHLIGHT_BRDF_TABLE_VERSION 2
+#define SHLIGHT_BRDF_TABLE_HEADER 40
+#define SHLIGHT_BRDF_TABLE_GRID 1
+/* cos(theta_o) of the last (90 degree) sample's outgoing direction, in double (F' of the
+   microfacet models diverges like ln(1 / cos theta_o) at exactly 90 degrees) */
+#define SHLIGHT_BRDF_TABLE_GRAZING 1e-6
+/* shl_brdf_table_build's parameter domain: Phong / Blinn-Phong exponents up to
+   SHLIGHT_BRDF_MAX_EXPONENT, Beckmann / GGX alpha from SHLIGHT_BRDF_MIN_ALPHA to 4 */
+#define SHLIGHT_BRDF_MAX_EXPONENT 1e6f
+#define SHLIGHT_BRDF_MIN_ALPHA 1e-3f
 /* limits the loaders enforce (SHLIGHT_EDIMS beyond them) */
 #define SHLIGHT_BRDF_TABLE_MAX_SAMPLES 4096 /* n_theta, n_phi each */
 #define SHLIGHT_MERL_MAX_DIM 1024           /* each of the three MERL dimensions */
@@ -15555,8 +15587,8 @@ typedef struct shl_brdf_params {
   int model;      /* SHLIGHT_BRDF_* */
   float kd;       /* diffuse albedo, >= 0 */
   float ks;       /* specular scale, >= 0 */
-  float exponent; /* Phong / Blinn-Phong exponent e >= 0 */
-  float alpha_x;  /* Beckmann / GGX slope roughness along x, in (0, 4] (0.05 .. 1 tested) */
+  float exponent; /* Phong / Blinn-Phong exponent e in [0, SHLIGHT_BRDF_MAX_EXPONENT] */
+  float alpha_x;  /* Beckmann / GGX slope roughness along x, [SHLIGHT_BRDF_MIN_ALPHA, 4] */
   float alpha_y;  /* along y (= alpha_x: isotropic) */
   float f0;       /* Schlick reflectance at normal incidence, [0, 1] (1: no Fresnel) */
 } shl_brdf_params;
@@ -15611,15 +15643,20 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
      round a whole circle, else panels at 0, +-w/2, +-3w/2, +-9w/2 and graded towards the arc's
      ends (pm - L/4, /16, /64), quad_order Gauss-Legendre nodes each. Every panel's integrand is
      smooth, so the error falls geometrically with quad_order even for sharp lobes and grazing
-     w_o (README: GGX alpha 0.1, F' at theta_o = 85.5 deg: 5.6e-4 at 32, 6e-7 at 64).
-   Y by shl_sh_eval in float at the float-rounded node; the table rounds to float.
+     w_o (docs/brdf-tables.md has the error against quad_order).
+   Outgoing samples on the grid of >>brdftab (shl_brdf_table_theta), the last one at
+   cos theta_o = SHLIGHT_BRDF_TABLE_GRAZING. Y by shl_sh_eval in float at the float-rounded
+   node; the table rounds to float. Stack: about 12 KB deep (gcc -O2: 11.6 KB in the build
+   loop, the quadrature nodes are made on the fly, no per-arc scratch arrays).
    out_err_est (may be NULL; NULL also skips the second pass): max over the table of
    |T(quad_order) - T(quad_order / 2)|, absolute, in the table's units: the error of the
    half-order table, an upper estimate of the returned table's error when the quadrature
    converges (tests/test_brdftab checks it against closed forms). quad_order in [2, 256].
    Returns SHLIGHT_EINVAL (data untouched) for NULL t / data / brdf, n, n_theta, n_phi out of
    range (see shl_brdf_table_size), flags != (n_phi > 1 ? ANISO : 0), an unknown model,
-   negative or non-finite kd / ks / exponent, alpha outside (0, 4] for Beckmann / GGX, f0
+   negative or non-finite kd / ks, a Phong / Blinn-Phong exponent outside [0,
+   SHLIGHT_BRDF_MAX_EXPONENT] (larger ones, up to 1e27, used to give non-finite tables), alpha
+   outside [SHLIGHT_BRDF_MIN_ALPHA, 4] for Beckmann / GGX, f0
    outside [0, 1] (microfacet models), quad_order out of range; SHLIGHT_ENOMEM when n > 16 and
    the 2 n^2-double accumulator (on the stack up to 16 bands) cannot be allocated. Cost: per
    sample, up to ~12 panels x q x (2q .. 14q) nodes (x 1.25 with out_err_est), each one BRDF
@@ -15628,13 +15665,21 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
 SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_params *brdf,
                                             int quad_order, float *out_err_est);
 
+/* shl_brdf_table_theta: theta_o (radians) of sample t of an n_theta-sample table (the grid of
+   >>brdftab: 0 at t = 0, pi/2 at t = n_theta - 1; n_theta = 1: 0), float-rounded from a double
+   bisection of the grid variable. -1 for n_theta outside [1, SHLIGHT_BRDF_TABLE_MAX_SAMPLES] or
+   t outside [0, n_theta). Cost: ~60 iterations of one log. */
+SHLIGHT_API float shl_brdf_table_theta(int n_theta, int t);
+
 /* shl_brdf_table_write: the SHLT file of t into buf (capacity cap bytes); *out_len (may not be
-   NULL) = its length, 32 + 4 x shl_brdf_table_size bytes. Format (little-endian):
-     0  "SHLT"                4  uint32 version (1)       8  int32 bands n
+   NULL) = its length, 40 + 4 x shl_brdf_table_size bytes. Format version 2 (little-endian):
+     0  "SHLT"                4  uint32 version (2)       8  int32 bands n
      12 int32 n_theta         16 int32 n_phi              20 uint32 flags
-     24 uint32 payload floats (= n_phi n_theta 2 n^2)     28 uint32 CRC-32 (IEEE 802.3,
-        reflected, as zlib's crc32) of bytes 0..27 followed by the payload
-     32 payload: the table's data, float32 little-endian, in the >>brdftab layout.
+     24 uint32 payload floats (= n_phi n_theta 2 n^2)     28 uint32 grid (1: the outgoing
+        grid of >>brdftab)    32 uint32 reserved (0)      36 uint32 CRC-32 (IEEE 802.3,
+        reflected, as zlib's crc32) of bytes 0..35 followed by the payload
+     40 payload: the table's data, float32 little-endian, in the >>brdftab layout.
+   (Version 1, 32-byte header, no grid field, sampled theta_o at cell centres; not written.)
    Returns SHLIGHT_EINVAL for NULL t / t->data / out_len or an invalid table (dims, flags),
    SHLIGHT_ENONFINITE for a NaN / Inf in the data (nothing written), SHLIGHT_ESTORAGE (with
    *out_len set) when buf is NULL or cap too small. Cost: one pass over the data. */
@@ -15643,9 +15688,11 @@ SHLIGHT_API shl_result shl_brdf_table_write(const shl_brdf_table *t, void *buf, 
 
 /* shl_brdf_table_read: parses an SHLT file of len bytes at buf into *out, the payload copied to
    storage (storage_floats floats; out->data = storage). Checks, in this order, each with its
-   error: len < 32: SHLIGHT_ELENGTH; magic: SHLIGHT_EMAGIC; version: SHLIGHT_EVERSION; n,
-   n_theta, n_phi out of range, flags inconsistent with n_phi or with unknown bits, payload
-   floats != n_phi n_theta 2 n^2: SHLIGHT_EDIMS; len != 32 + 4 x payload floats:
+   error: len < 8: SHLIGHT_ELENGTH; magic: SHLIGHT_EMAGIC; version other than 2 (version 1
+   files hold the cell-centred grid of earlier releases, which the lookup no longer reads:
+   rebuild them): SHLIGHT_EVERSION; len < 40: SHLIGHT_ELENGTH; n, n_theta, n_phi out of
+   range, flags inconsistent with n_phi or with unknown bits, payload floats != n_phi n_theta
+   2 n^2, grid != 1 or reserved != 0: SHLIGHT_EDIMS; len != 40 + 4 x payload floats:
    SHLIGHT_ELENGTH (truncated, or trailing bytes); CRC: SHLIGHT_ECHECKSUM; a NaN / Inf payload
    float: SHLIGHT_ENONFINITE; storage NULL or storage_floats too small: SHLIGHT_ESTORAGE, with
    out->n, n_theta, n_phi, flags set and out->data NULL, so that a caller can call with (NULL, 0) to
@@ -15670,8 +15717,15 @@ SHLIGHT_API shl_result shl_merl_read(shl_merl *out, const void *buf, size_t len,
    phi_d folded to [0, pi) by reciprocity), index coordinates u_h = sqrt(theta_h / (pi/2)) n_theta_h
    (MERL's non-linear theta_h index), u_d = theta_d / (pi/2) n_theta_d, u_p = phi_d / pi n_phi_d,
    sample i at coordinate i (MERL's convention: the index is the floor of the coordinate),
-   trilinear between samples (clamped at the ends of theta_h and theta_d, periodic in phi_d);
-   negative samples count as 0. Invalid m or c: 0. Cost: ~100 flops, 2 acos, 2 atan2. */
+   trilinear between samples (clamped at the ends of theta_h and theta_d, periodic in phi_d).
+   Reconstruction (for grazing directions): the trilinear interpolant is of f cos(theta_h)
+   cos(theta_d) = f (cos_i + cos_o) / 2, divided by the query's factor (floored at 1e-6), so
+   that the 1 / (cos_i + cos_o) growth of f at grazing is carried by the factor; only valid
+   samples (> 0; MERL marks invalid ones negative) enter the sum, their weights renormalised
+   to 1; beyond the last theta_d sample, linear extrapolation from the last two layers when
+   their 8 samples are valid, else the last layer held; a cell without any valid sample takes
+   the nearest theta_d layer below that has one (held along theta_d); 0 if none.
+   Invalid m or c: 0. Cost: ~100 flops, 2 acos, 2 atan2. */
 SHLIGHT_API float shl_merl_eval(const shl_merl *m, int c, const float wo[3], const float wi[3]);
 
 /* shl_brdf_table_build_merl: shl_brdf_table_build for channel c of a measured BRDF (tables
@@ -16723,42 +16777,61 @@ static void shli_tab_diffuse(int n, double kd, double *acc, float *y) {
   }
 }
 
-/* the specular-frame quadrature (see shl_brdf_table_build) at order q */
+/* one node of the specular-frame quadrature: w_i = cos(g) r + sin(g) (cos(ps) e1 + sin(ps) e2),
+   weight wgt */
+static void shli_tab_arc(int n, const shli_tabsrc *src, const double wo[3], const double fr[9],
+                         double cg, double sg, double ps, double wgt, double *acc, float *y) {
+  double wi[3];
+  double cp = cos(ps);
+  double sp = sin(ps);
+  double f;
+  int k;
+  for (k = 0; k < 3; ++k) {
+    wi[k] = cg * fr[k] + sg * (cp * fr[3 + k] + sp * fr[6 + k]);
+  }
+  if (!(wi[2] > 0.0)) {
+    return;
+  }
+  f = shli_src_f(src, wo, wi);
+  if (f != 0.0) {
+    shli_tab_node(n, acc, y, wgt * f, wi);
+  }
+}
+
+/* the specular-frame quadrature (see shl_brdf_table_build) at order q; nodes generated on the
+   fly (no scratch arrays: the whole build stays within a few KB of stack) */
 static void shli_tab_spec(int n, const shli_tabsrc *src, const double wo[3], int q, double *acc,
-                          float *y, const double *xg, const double *wg, double *ps_, double *pw_) {
-  double r[3];
-  double e1[3];
-  double e2[3];
+                          float *y, const double *xg, const double *wg) {
+  double fr[9]; /* r, e1, e2 */
   double br[8];
   double st;
   double ct;
   double gmax;
   double gh;
   int nb = 0;
-  int na;
   int p;
   int i;
   int j;
   int k;
-  r[0] = -wo[0];
-  r[1] = -wo[1];
-  r[2] = wo[2];
-  ct = r[2];
-  st = sqrt(r[0] * r[0] + r[1] * r[1]);
+  fr[0] = -wo[0];
+  fr[1] = -wo[1];
+  fr[2] = wo[2];
+  ct = fr[2];
+  st = sqrt(fr[0] * fr[0] + fr[1] * fr[1]);
   if (st > 1e-300) {
-    e1[0] = -ct * r[0] / st; /* (z - ct r) / st */
-    e1[1] = -ct * r[1] / st;
-    e1[2] = st;
-    e2[0] = -r[1] / st; /* r x e1 */
-    e2[1] = r[0] / st;
-    e2[2] = 0.0;
+    fr[3] = -ct * fr[0] / st; /* (z - ct r) / st */
+    fr[4] = -ct * fr[1] / st;
+    fr[5] = st;
+    fr[6] = -fr[1] / st; /* r x e1 */
+    fr[7] = fr[0] / st;
+    fr[8] = 0.0;
   } else {
-    e1[0] = 1.0;
-    e1[1] = 0.0;
-    e1[2] = 0.0;
-    e2[0] = 0.0;
-    e2[1] = 1.0;
-    e2[2] = 0.0;
+    fr[3] = 1.0;
+    fr[4] = 0.0;
+    fr[5] = 0.0;
+    fr[6] = 0.0;
+    fr[7] = 1.0;
+    fr[8] = 0.0;
   }
   gh = 0.5 * SHLI_PI - atan2(st, ct);
   gmax = 0.5 * SHLI_PI + atan2(st, ct);
@@ -16802,7 +16875,6 @@ static void shli_tab_spec(int n, const shli_tabsrc *src, const double wo[3], int
       double wgi = 0.5 * wg[i] * (g1 - g0) * 6.0 * s * (1.0 - s) * sg;
       double cs; /* the arc above the horizon: cos(psi) > cs */
       double pm;
-      int full;
       if (st > 1e-300 && sg > 0.0) {
         cs = -cg * ct / (sg * st);
       } else {
@@ -16811,22 +16883,20 @@ static void shli_tab_spec(int n, const shli_tabsrc *src, const double wo[3], int
       if (cs >= 1.0) {
         continue;
       }
-      full = cs <= -1.0;
-      pm = full ? SHLI_PI : acos(cs);
       /* the arc: 2q uniform nodes round a full circle; a partial arc (-pm, pm) in panels at
          0, +-w/2, +-3w/2, +-9w/2 (the lobe of a grazing w_o is narrow in psi) and graded towards
          the ends, q nodes each */
-      na = 0;
-      if (full) {
+      if (cs <= -1.0) {
         for (j = 0; j < 2 * q; ++j) {
-          ps_[na] = 2.0 * SHLI_PI * ((double)j + 0.5) / (double)(2 * q);
-          pw_[na++] = 2.0 * SHLI_PI / (double)(2 * q);
+          shli_tab_arc(n, src, wo, fr, cg, sg, 2.0 * SHLI_PI * ((double)j + 0.5) / (double)(2 * q),
+                       wgi * 2.0 * SHLI_PI / (double)(2 * q), acc, y);
         }
       } else {
         double ab[8];
         double la;
         int nab = 0;
         int pa;
+        pm = acos(cs);
         ab[nab++] = 0.0;
         for (k = 0; k < 3; ++k) {
           double v = 0.5 * src->width * pow(3.0, (double)k);
@@ -16845,34 +16915,58 @@ static void shli_tab_spec(int n, const shli_tabsrc *src, const double wo[3], int
           double a1 = ab[pa + 1];
           for (j = 0; j < q; ++j) {
             double v = 0.5 * (a0 + a1) + 0.5 * (a1 - a0) * xg[j];
-            ps_[na] = v;
-            pw_[na++] = 0.5 * (a1 - a0) * wg[j];
-            ps_[na] = -v;
-            pw_[na++] = 0.5 * (a1 - a0) * wg[j];
+            double wj = wgi * 0.5 * (a1 - a0) * wg[j];
+            shli_tab_arc(n, src, wo, fr, cg, sg, v, wj, acc, y);
+            shli_tab_arc(n, src, wo, fr, cg, sg, -v, wj, acc, y);
           }
         }
       }
-      for (j = 0; j < na; ++j) {
-        double ps = ps_[j];
-        double wj = pw_[j];
-        double wi[3];
-        double cp;
-        double sp;
-        double f;
-        cp = cos(ps);
-        sp = sin(ps);
-        for (k = 0; k < 3; ++k) {
-          wi[k] = cg * r[k] + sg * (cp * e1[k] + sp * e2[k]);
-        }
-        if (!(wi[2] > 0.0)) {
-          continue;
-        }
-        f = shli_src_f(src, wo, wi);
-        if (f != 0.0) {
-          shli_tab_node(n, acc, y, wgi * wj * f, wi);
-        }
-      }
     }
+  }
+}
+
+/* theta_o of sample t of an n_theta-sample grid (see >>brdftab), in double: u(d) = t / (n - 1)
+   solved for d by bisection (u is monotone), d = pi/2 - theta_o */
+static double shli_grid_d(int n_theta, int t) {
+  double target;
+  double lo = 0.0;
+  double hi = 0.5 * SHLI_PI;
+  int it;
+  if (n_theta < 2 || t <= 0) {
+    return 0.5 * SHLI_PI;
+  }
+  if (t >= n_theta - 1) {
+    return 0.0;
+  }
+  target = (double)t / (double)(n_theta - 1);
+  for (it = 0; it < 200 && hi - lo > 1e-17; ++it) {
+    double mid = 0.5 * (lo + hi);
+    if (shli_brdf_grid_u(mid) > target) {
+      lo = mid; /* u decreases with d */
+    } else {
+      hi = mid;
+    }
+  }
+  return 0.5 * (lo + hi);
+}
+
+SHLIGHT_API float shl_brdf_table_theta(int n_theta, int t) {
+  if (n_theta < 1 || n_theta > SHLIGHT_BRDF_TABLE_MAX_SAMPLES || t < 0 || t >= n_theta) {
+    return -1.0f;
+  }
+  return (float)(0.5 * SHLI_PI - shli_grid_d(n_theta, t));
+}
+
+/* the SH of F and F' at one outgoing direction wo (unit, wo_z > 0) into acc (2 n^2 doubles):
+   the kd / pi term exactly, the rest by the specular-frame quadrature at order q */
+static void shli_tab_project(int n, const shli_tabsrc *src, double kd, int spec, const double wo[3],
+                             int q, const double *xg, const double *wg, double *acc, float *y) {
+  memset(acc, 0, (size_t)(2 * n * n) * sizeof(double));
+  if (kd != 0.0) {
+    shli_tab_diffuse(n, kd, acc, y);
+  }
+  if (spec) {
+    shli_tab_spec(n, src, wo, q, acc, y, xg, wg);
   }
 }
 
@@ -16882,8 +16976,6 @@ static shl_result shli_tab_build(shl_brdf_table *t, const shli_tabsrc *src, doub
   double wg[256];
   double xg2[128];
   double wg2[128];
-  double ps[14 * 256];
-  double pw[14 * 256];
   double acc_s[2 * 256];
   float y_s[256];
   double *acc = acc_s;
@@ -16911,29 +17003,22 @@ static shl_result shli_tab_build(shl_brdf_table *t, const shli_tabsrc *src, doub
   for (p = 0; p < t->n_phi; ++p) {
     double ph = 2.0 * SHLI_PI * (double)p / (double)t->n_phi;
     for (ti = 0; ti < t->n_theta; ++ti) {
-      double th = 0.5 * SHLI_PI * ((double)ti + 0.5) / (double)t->n_theta;
+      double d = shli_grid_d(t->n_theta, ti);
       double wo[3];
       float *out = t->data + (size_t)(p * t->n_theta + ti) * 2u * (size_t)nn;
-      wo[0] = sin(th) * cos(ph);
-      wo[1] = sin(th) * sin(ph);
-      wo[2] = cos(th);
-      memset(acc, 0, (size_t)(2 * nn) * sizeof(double));
-      if (kd != 0.0) {
-        shli_tab_diffuse(n, kd, acc, y);
+      if (d < SHLIGHT_BRDF_TABLE_GRAZING) {
+        d = SHLIGHT_BRDF_TABLE_GRAZING; /* the last sample: F' diverges at 90 degrees */
       }
+      wo[0] = cos(d) * cos(ph);
+      wo[1] = cos(d) * sin(ph);
+      wo[2] = sin(d);
       if (spec && out_err_est) {
-        shli_tab_spec(n, src, wo, q2, acc, y, xg2, wg2, ps, pw);
+        shli_tab_project(n, src, kd, spec, wo, q2, xg2, wg2, acc, y);
         for (i = 0; i < 2 * nn; ++i) {
           out[i] = (float)acc[i]; /* the half-order table, compared below */
         }
-        memset(acc, 0, (size_t)(2 * nn) * sizeof(double));
-        if (kd != 0.0) {
-          shli_tab_diffuse(n, kd, acc, y);
-        }
       }
-      if (spec) {
-        shli_tab_spec(n, src, wo, quad_order, acc, y, xg, wg, ps, pw);
-      }
+      shli_tab_project(n, src, kd, spec, wo, quad_order, xg, wg, acc, y);
       for (i = 0; i < 2 * nn; ++i) {
         if (spec && out_err_est) {
           double e = fabs(acc[i] - (double)out[i]);
@@ -16965,11 +17050,11 @@ SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_pa
   }
   micro = brdf->model == SHLIGHT_BRDF_BECKMANN || brdf->model == SHLIGHT_BRDF_GGX;
   if ((brdf->model == SHLIGHT_BRDF_PHONG || brdf->model == SHLIGHT_BRDF_BLINN_PHONG) &&
-      !(brdf->exponent >= 0.0f && brdf->exponent < 3.4e38f)) {
+      !(brdf->exponent >= 0.0f && brdf->exponent <= SHLIGHT_BRDF_MAX_EXPONENT)) {
     return SHLIGHT_EINVAL;
   }
-  if (micro && !(brdf->alpha_x > 0.0f && brdf->alpha_x <= 4.0f && brdf->alpha_y > 0.0f &&
-                 brdf->alpha_y <= 4.0f)) {
+  if (micro && !(brdf->alpha_x >= SHLIGHT_BRDF_MIN_ALPHA && brdf->alpha_x <= 4.0f &&
+                 brdf->alpha_y >= SHLIGHT_BRDF_MIN_ALPHA && brdf->alpha_y <= 4.0f)) {
     return SHLIGHT_EINVAL;
   }
   if (brdf->model >= SHLIGHT_BRDF_BLINN_PHONG && !(brdf->f0 >= 0.0f && brdf->f0 <= 1.0f)) {
@@ -17010,6 +17095,8 @@ static double shli_merl_f(const shl_merl *m, int c, const double wo[3], const do
   int a;
   int b;
   int e;
+  int extra = 0;
+  int bad = 0;
   if (!(wo[2] > 0.0) || !(wi[2] > 0.0)) {
     return 0.0;
   }
@@ -17059,25 +17146,76 @@ static double shli_merl_f(const shl_merl *m, int c, const double wo[3], const do
       i1[k] = k == 2 ? 0 : nd[k] - 1; /* periodic in phi_d, clamped in the thetas */
     }
   }
-  for (a = 0; a < 2; ++a) {
-    for (b = 0; b < 2; ++b) {
-      for (e = 0; e < 2; ++e) {
-        size_t ih = (size_t)(a ? i1[0] : i0[0]);
-        size_t id = (size_t)(b ? i1[1] : i0[1]);
-        size_t ip = (size_t)(e ? i1[2] : i0[2]);
-        double w =
-            (a ? fr[0] : 1.0 - fr[0]) * (b ? fr[1] : 1.0 - fr[1]) * (e ? fr[2] : 1.0 - fr[2]);
-        double s =
-            (double)
-                m->data[(((size_t)c * (size_t)nd[0] + ih) * (size_t)nd[1] + id) * (size_t)nd[2] +
-                        ip];
-        if (s > 0.0 && w != 0.0) {
-          v += w * s;
+  if (u[1] > (double)(nd[1] - 1) && nd[1] >= 2) {
+    /* beyond the last theta_d layer (MERL: 89 to 90 degrees): linear extrapolation from the
+       last two layers (of f cos theta_h cos theta_d, below), when all 8 samples are valid */
+    i0[1] = nd[1] - 2;
+    i1[1] = nd[1] - 1;
+    fr[1] = u[1] - (double)(nd[1] - 2);
+    if (fr[1] > 2.0) {
+      fr[1] = 2.0;
+    }
+    extra = 1;
+  }
+  /* trilinear in f cos(theta_h) cos(theta_d) = f (cos_i + cos_o) / 2, which stays smooth where
+     f of a rough surface grows like 1 / (cos_i + cos_o) at grazing, divided by the query's
+     factor (floored at 1e-6); over the valid (positive) samples only, the weights renormalised:
+     near the horizon the grid mixes valid samples with invalid ones (negative in MERL files, 0
+     where a direction of the sample lies below the surface), which would otherwise pull the value
+     towards 0; with no valid sample in the cell, the nearest theta_d layer below that has one
+     (extrapolation by holding along theta_d, where the sampled configurations end first) */
+  for (;;) {
+    double ws = 0.0;
+    double ch[2];
+    double cd[2];
+    double q = cos(th) * cos(td);
+    for (k = 0; k < 2; ++k) {
+      double sh = (double)(k ? i1[0] : i0[0]) / (double)nd[0];
+      ch[k] = cos(sh * sh * 0.5 * SHLI_PI);
+      cd[k] = cos((double)(k ? i1[1] : i0[1]) / (double)nd[1] * 0.5 * SHLI_PI);
+    }
+    if (q < 1e-6) {
+      q = 1e-6;
+    }
+    for (a = 0; a < 2; ++a) {
+      for (b = 0; b < 2; ++b) {
+        for (e = 0; e < 2; ++e) {
+          size_t ih = (size_t)(a ? i1[0] : i0[0]);
+          size_t id = (size_t)(b ? i1[1] : i0[1]);
+          size_t ip = (size_t)(e ? i1[2] : i0[2]);
+          double w =
+              (a ? fr[0] : 1.0 - fr[0]) * (b ? fr[1] : 1.0 - fr[1]) * (e ? fr[2] : 1.0 - fr[2]);
+          double s =
+              (double)
+                  m->data[(((size_t)c * (size_t)nd[0] + ih) * (size_t)nd[1] + id) * (size_t)nd[2] +
+                          ip];
+          if (s > 0.0 && w != 0.0) {
+            v += w * s * ch[a] * cd[b];
+            ws += w;
+          } else if (w != 0.0) {
+            bad = 1;
+          }
         }
       }
     }
+    if (extra && bad) { /* an invalid sample: hold the last layer instead */
+      extra = 0;
+      bad = 0;
+      v = 0.0;
+      i0[1] = nd[1] - 1;
+      fr[1] = 0.0;
+      continue;
+    }
+    if (ws > 0.0) {
+      return v / (ws * q);
+    }
+    if (i0[1] == 0) {
+      return 0.0;
+    }
+    i0[1] -= 1; /* one theta_d layer down, both corners on it */
+    i1[1] = i0[1];
+    fr[1] = 0.0;
   }
-  return v;
 }
 
 static int shli_merl_valid(const shl_merl *m) {
@@ -17207,14 +17345,16 @@ SHLIGHT_API shl_result shl_brdf_table_write(const shl_brdf_table *t, void *buf, 
   shli_wr32(b + 16, (unsigned long)t->n_phi);
   shli_wr32(b + 20, (unsigned long)t->flags);
   shli_wr32(b + 24, (unsigned long)count);
+  shli_wr32(b + 28, SHLIGHT_BRDF_TABLE_GRID);
+  shli_wr32(b + 32, 0);
   for (i = 0; i < count; ++i) {
     unsigned int u;
     memcpy(&u, t->data + i, sizeof u);
     shli_wr32(b + SHLIGHT_BRDF_TABLE_HEADER + 4u * i, (unsigned long)u);
   }
-  crc = shli_crc32(0xfffffffful, b, 28);
+  crc = shli_crc32(0xfffffffful, b, 36);
   crc = shli_crc32(crc, b + SHLIGHT_BRDF_TABLE_HEADER, 4u * count) ^ 0xfffffffful;
-  shli_wr32(b + 28, crc);
+  shli_wr32(b + 36, crc);
   return SHLIGHT_OK;
 }
 
@@ -17230,14 +17370,17 @@ SHLIGHT_API shl_result shl_brdf_table_read(shl_brdf_table *out, const void *buf,
   if (!out || !buf) {
     return SHLIGHT_EINVAL;
   }
-  if (len < SHLIGHT_BRDF_TABLE_HEADER) {
+  if (len < 8) {
     return SHLIGHT_ELENGTH;
   }
   if (memcmp(b, "SHLT", 4) != 0) {
     return SHLIGHT_EMAGIC;
   }
   if (shli_rd32(b + 4) != SHLIGHT_BRDF_TABLE_VERSION) {
-    return SHLIGHT_EVERSION;
+    return SHLIGHT_EVERSION; /* version 1: the old cell-centred grid */
+  }
+  if (len < SHLIGHT_BRDF_TABLE_HEADER) {
+    return SHLIGHT_ELENGTH;
   }
   t.n = shli_rdi32(b + 8);
   t.n_theta = shli_rdi32(b + 12);
@@ -17247,16 +17390,17 @@ SHLIGHT_API shl_result shl_brdf_table_read(shl_brdf_table *out, const void *buf,
   t.data = NULL;
   count = shli_rd32(b + 24);
   want = shl_brdf_table_size(t.n, t.n_theta, t.n_phi);
-  if (want == 0 || !shli_brdf_table_valid(&t) || (size_t)count != want) {
+  if (want == 0 || !shli_brdf_table_valid(&t) || (size_t)count != want ||
+      shli_rd32(b + 28) != SHLIGHT_BRDF_TABLE_GRID || shli_rd32(b + 32) != 0ul) {
     return SHLIGHT_EDIMS;
   }
   if ((len - SHLIGHT_BRDF_TABLE_HEADER) % 4u != 0 ||
       (len - SHLIGHT_BRDF_TABLE_HEADER) / 4u != want) {
     return SHLIGHT_ELENGTH;
   }
-  crc = shli_crc32(0xfffffffful, b, 28);
+  crc = shli_crc32(0xfffffffful, b, 36);
   crc = shli_crc32(crc, b + SHLIGHT_BRDF_TABLE_HEADER, 4u * want) ^ 0xfffffffful;
-  if (crc != shli_rd32(b + 28)) {
+  if (crc != shli_rd32(b + 36)) {
     return SHLIGHT_ECHECKSUM;
   }
   for (i = 0; i < want; ++i) {

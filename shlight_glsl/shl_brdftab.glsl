@@ -5,6 +5,12 @@
 #ifndef SHL_BRDFTAB_GLSL
 #define SHL_BRDFTAB_GLSL
 
+shli_real shli_brdf_grid_u(shli_real d) {
+  return ((1.5707963267948966 - d) +
+          0.05 * SHLIGHT_LOGR((1.5707963267948966 + 0.000001) / (d + 0.000001))) *
+         0.4377994232697314;
+}
+
 void shl_sh_rotate_z(int n, float c1, float s1, inout float io_sh[SHLIGHT_MAX_COEFFS]) {
   shli_real cm = 1.0;
   shli_real sm = 0.0;
@@ -47,14 +53,18 @@ void shl_brdf_table_cell(int n_theta, int n_phi, vec3 wo, out int out_idx[4], ou
     out_idx[j] = 0;
     out_w[j] = 0.0f;
   }
-  if (n_theta < 1 || n_phi < 1) {
+  if (n_theta < 1 || n_phi < 1 || n_theta > 4096 || n_phi > 4096) {
     return;
   }
   if (z < 0.0) {
     z = 0.0;
   }
   if (n_theta > 1) {
-    u = shli_atan2r(rho, z) * (SHLIGHT_REAL(SHLIGHT_ITOF(n_theta)) * 0.63661977236758134) - 0.5;
+    u = 1.5707963267948966;
+    if (rho > 0.0) {
+      u = shli_atan2r(z, rho);
+    }
+    u = shli_brdf_grid_u(u) * SHLIGHT_REAL(SHLIGHT_ITOF(n_theta - 1));
     if (!(u > 0.0)) {
       u = 0.0;
     }
@@ -117,7 +127,8 @@ void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int which,
     return;
   }
   nn = n * n;
-  if (n_theta < 1 || n_phi < 1) {
+  if (n_theta < 1 || n_phi < 1 || n_theta > 4096 || n_phi > 4096 ||
+      n_theta * n_phi > 1073741823 / nn) {
     for (i = 0; i < nn; ++i) {
       out_sh[i] = 0.0f;
     }

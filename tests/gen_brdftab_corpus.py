@@ -9,7 +9,8 @@ import zlib
 OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'corpus', 'brdftab')
 
 
-def shlt(n, nt, nphi, flags=None, version=1, magic=b'SHLT', count=None, vals=None, crc=None):
+def shlt(n, nt, nphi, flags=None, version=2, magic=b'SHLT', count=None, vals=None, crc=None,
+         grid=1, reserved=0):
     if flags is None:
         flags = 1 if nphi > 1 else 0
     c = nphi * nt * 2 * n * n
@@ -18,6 +19,8 @@ def shlt(n, nt, nphi, flags=None, version=1, magic=b'SHLT', count=None, vals=Non
     if vals is None:
         vals = [0.01 * ((i * 37) % 101 - 50) for i in range(c)]
     head = magic + struct.pack('<IiiiII', version, n, nt, nphi, flags, count)
+    if version != 1:  # version 2: grid id and a reserved word before the CRC
+        head += struct.pack('<II', grid, reserved)
     pay = struct.pack('<%df' % len(vals), *vals)
     if crc is None:
         crc = zlib.crc32(pay, zlib.crc32(head)) & 0xffffffff
@@ -40,11 +43,14 @@ def main():
     files['shlt_short_storage'] = b'\x02' + good
     files['shlt_no_storage'] = b'\x04' + good
     files['shlt_big_storage'] = b'\x06' + good
-    files['shlt_truncated_header'] = b'\x00' + good[:20]
+    files['shlt_truncated_header'] = b'\x00' + good[:36]
     files['shlt_truncated_payload'] = b'\x00' + good[:-3]
     files['shlt_trailing_byte'] = b'\x00' + good + b'\x00'
     files['shlt_bad_magic'] = b'\x00' + shlt(2, 3, 1, magic=b'SHLX')
-    files['shlt_bad_version'] = b'\x00' + shlt(2, 3, 1, version=2)
+    files['shlt_bad_version'] = b'\x00' + shlt(2, 3, 1, version=3)
+    files['shlt_version1'] = b'\x00' + shlt(2, 3, 1, version=1)
+    files['shlt_unknown_grid'] = b'\x00' + shlt(2, 3, 1, grid=2)
+    files['shlt_reserved_set'] = b'\x00' + shlt(2, 3, 1, reserved=1)
     files['shlt_zero_bands'] = b'\x00' + shlt(0, 3, 1, count=0, vals=[])
     files['shlt_huge_dims'] = b'\x00' + shlt(64, 4096, 4096, count=0, vals=[])
     files['shlt_negative_theta'] = b'\x00' + shlt(2, -3, 1, count=24, vals=[0.0] * 24)
