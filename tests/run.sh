@@ -109,6 +109,7 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/tests/test_ggx build/tests/test_ggx_glsl \
   build/tests/test_brdf build/tests/native/test_brdf build/tests/test_brdf_glsl \
   build/tests/test_brdftab build/tests/fuzz_replay_brdftab build/tests/test_brdftab_glsl \
+  build/tests/test_rotate build/tests/test_rotate_glsl \
   build/tests/test_ssf build/tests/test_ssf_glsl \
   build/render/shlrender build/tests/fuzz_replay_scene build/tests/test_rd_core
 touch build/logs/lane/tests-built
@@ -128,6 +129,7 @@ step fuzz-corpus-replay-scene build/tests/fuzz_replay_scene tests/corpus/scene
 step test_glm build/tests/test_glm
 step fuzz-corpus-replay build/tests/fuzz_replay tests/corpus/basis
 step test_brdftab build/tests/test_brdftab
+step test_rotate build/tests/test_rotate
 # in the foreground: it balances the two lanes (both ~555 s)
 step lightref-selftest build/tests/selftest_lightref
 step fuzz-corpus-replay-brdftab build/tests/fuzz_replay_brdftab tests/corpus/brdftab
@@ -153,6 +155,7 @@ for b in $backends; do
   [ -z "$sub" ] || rsc="cornell"
   step "render-$b" env SHLIGHT_RENDER_SCENES="$rsc" bash tests/test_render.sh $b
   step "glsl-brdftab-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_brdftab_glsl
+  step "glsl-rotate-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_rotate_glsl
 done
 # the second lane's steps, in its order (the -march=native variants run the same tests on this
 # machine's SIMD paths, AVX-512 / AVX2 kernels, with FMA contraction)

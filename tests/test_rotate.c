@@ -316,8 +316,8 @@ static double band_energy_err(int n, const float *a, const float *b) {
   for (l = 0; l < n; ++l) {
     double ea = 0.0, eb = 0.0;
     for (m = -l; m <= l; ++m) {
-      ea += (double)a[l * (l + 1) + m] * a[l * (l + 1) + m];
-      eb += (double)b[l * (l + 1) + m] * b[l * (l + 1) + m];
+      ea += (double)a[l * (l + 1) + m] * (double)a[l * (l + 1) + m];
+      eb += (double)b[l * (l + 1) + m] * (double)b[l * (l + 1) + m];
     }
     if (fabs(ea - eb) / ea > worst) {
       worst = fabs(ea - eb) / ea;
@@ -348,7 +348,7 @@ static double max_rel(int nc, const float *a, const float *b) {
   double e = 0.0, s = 0.0;
   int i;
   for (i = 0; i < nc; ++i) {
-    e = fabs((double)a[i] - b[i]) > e ? fabs((double)a[i] - b[i]) : e;
+    e = fabs((double)a[i] - (double)b[i]) > e ? fabs((double)a[i] - (double)b[i]) : e;
     s = fabs((double)b[i]) > s ? fabs((double)b[i]) : s;
   }
   return e / s;
@@ -368,7 +368,7 @@ static void test_composition(void) {
         for (j = 0; j < 3; ++j) {
           double s = 0.0;
           for (k = 0; k < 3; ++k) {
-            s += (double)A[3 * i + k] * B[3 * k + j];
+            s += (double)A[3 * i + k] * (double)B[3 * k + j];
           }
           C[3 * i + j] = (float)s;
         }
@@ -435,8 +435,8 @@ static void test_delta_direction(void) {
       d[0] *= s, d[1] *= s, d[2] *= s;
     }
     for (i = 0; i < 3; ++i) {
-      rd[i] = (float)((double)R[3 * i] * d[0] + (double)R[3 * i + 1] * d[1] +
-                      (double)R[3 * i + 2] * d[2]);
+      rd[i] = (float)((double)R[3 * i] * (double)d[0] + (double)R[3 * i + 1] * (double)d[1] +
+                      (double)R[3 * i + 2] * (double)d[2]);
     }
     shl_sh_eval_accurate(n, d, y);
     shl_sh_eval_accurate(n, rd, yr);
