@@ -222,6 +222,8 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
   shli_real v1[SHLIGHT_MAX_BANDS];
   shli_real v2[SHLIGHT_MAX_BANDS];
   shli_real q1[SHLIGHT_MAX_BANDS];
+  shli_real b2[SHLIGHT_MAX_BANDS];
+  shli_real bc;
   shli_real sb;
   shli_real cb;
   shli_real c1;
@@ -245,7 +247,6 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
   int m;
   int k;
   int q;
-  int sgn;
   n = shli_bands(n);
   if (n < 1) {
     return;
@@ -307,83 +308,86 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
     pc[k] = pc[k - 1] * c1;
     ps[k] = ps[k - 1] * s1;
   }
+  bc = 1.0;
   for (mp = 0; mp < n; ++mp) {
     fp = SHLIGHT_ITOR(mp);
+    /* b2[m] = C(2q, q + p), q = max(m, m'), p = min(m, m'), by ratios from C(2m', m') */
+    b2[0] = bc;
+    for (m = 0; m + 1 < n; ++m) {
+      fm = SHLIGHT_ITOR(m);
+      if (m < mp) {
+        b2[m + 1] = b2[m] * (fp - fm) / (fp + fm + 1.0);
+      } else {
+        b2[m + 1] =
+            b2[m] * (2.0 * fm + 2.0) * (2.0 * fm + 1.0) / ((fm + fp + 1.0) * (fm - fp + 1.0));
+      }
+    }
+    bc = bc * (2.0 * fp + 2.0) * (2.0 * fp + 1.0) / ((fp + 1.0) * (fp + 1.0));
     for (l = mp; l < n; ++l) {
       fl = SHLIGHT_ITOR(l);
       k = l * (l + 1);
-      yc = 0.0;
-      ys = 0.0;
-      for (m = 0; m <= l; ++m) {
+      /* carry the pairs started below band l: d^l = ((2l - 1) (l (l - 1) cos b -+ m m')
+         d^(l-1) - l S_(l-1) d^(l-2)) / ((l - 1) S_l), S_l = sqrt((l^2 - m^2)(l^2 - m'^2)) */
+      q = l;
+      if (l == mp) {
+        q = 0;
+      }
+      if (l == 1 && mp == 0) {
+        u2[0] = u1[0];
+        v2[0] = v1[0];
+        q1[0] = 1.0;
+        u1[0] = cb;
+        v1[0] = cb;
+        q = 1;
+      }
+      w = (2.0 * fl - 1.0) * fl * (fl - 1.0) * cb;
+      h = (2.0 * fl - 1.0) * fp;
+      for (m = 0; m < q && l > 1; ++m) {
         fm = SHLIGHT_ITOR(m);
-        q = m;
-        if (mp > m) {
-          q = mp;
-        }
-        if (l == q) {
-          /* start: p = min(m, m'), B = sqrt(C(2q, q + p)),
-             u = d^q_{m' m} = +-B c^(q+p) s^(q-p), v = (-1)^m d^q_{m',-m} = (-1)^m' B c^(q-p)
-             s^(q+p) */
-          bq = 1.0;
-          for (sgn = 0; sgn < q - mp - m + q; ++sgn) {
-            bq = bq * SHLIGHT_ITOR(q + q - sgn) / SHLIGHT_ITOR(q - mp - m + q - sgn);
-          }
-          bq = SHLIGHT_SQRTR(bq);
-          uq = bq * pc[mp + m] * ps[q + q - mp - m];
-          vq = bq * pc[q + q - mp - m] * ps[mp + m];
-          if (mp > m && (mp - m) % 2 == 1) {
-            uq = -uq;
-          }
-          if (mp % 2 == 1) {
-            vq = -vq;
-          }
-          u2[m] = 0.0;
-          v2[m] = 0.0;
-          q1[m] = 0.0;
-        } else if (l == 1) {
-          uq = cb;
-          vq = cb;
-          u2[m] = u1[m];
-          v2[m] = v1[m];
-          q1[m] = 1.0;
-        } else {
-          /* d^l = ((2l - 1) (l (l - 1) cos b -+ m m') d^(l-1) - l S_(l-1) d^(l-2)) / ((l - 1) S_l),
-             S_l = sqrt((l^2 - m^2)(l^2 - m'^2)) */
-          qq = SHLIGHT_SQRTR((fl * fl - fm * fm) * (fl * fl - fp * fp));
-          t = 1.0 / ((fl - 1.0) * qq);
-          w = (2.0 * fl - 1.0) * fl * (fl - 1.0) * cb;
-          h = (2.0 * fl - 1.0) * fm * fp;
-          uq = ((w - h) * u1[m] - fl * q1[m] * u2[m]) * t;
-          vq = ((w + h) * v1[m] - fl * q1[m] * v2[m]) * t;
-          u2[m] = u1[m];
-          v2[m] = v1[m];
-          q1[m] = qq;
-        }
+        qq = SHLIGHT_SQRTR((fl * fl - fm * fm) * (fl * fl - fp * fp));
+        t = 1.0 / ((fl - 1.0) * qq);
+        uq = ((w - h * fm) * u1[m] - fl * q1[m] * u2[m]) * t;
+        vq = ((w + h * fm) * v1[m] - fl * q1[m] * v2[m]) * t;
+        u2[m] = u1[m];
+        v2[m] = v1[m];
         u1[m] = uq;
         v1[m] = vq;
-        /* the input's z rotation (gamma) on the pair (m, -m) of band l */
-        ac = SHLIGHT_REAL(sh[k + m]);
-        as = 0.0;
-        if (m > 0) {
-          as = SHLIGHT_REAL(sh[k - m]);
-          t = ac * cg[m] - as * sg[m];
-          as = ac * sg[m] + as * cg[m];
-          ac = t;
-        }
-        /* real y rotation: cos block u + v (sqrt 2 u with m or m' = 0), sin block u - v */
-        if (m == 0 && mp == 0) {
-          yc = yc + uq * ac;
-        } else if (m == 0 || mp == 0) {
-          yc = yc + 1.4142135623730951 * uq * ac;
-        } else {
-          yc = yc + (uq + vq) * ac;
-          ys = ys + (uq - vq) * as;
-        }
+        q1[m] = qq;
       }
+      /* start the pairs whose band l = max(m, m') is this one:
+         u = d^q_{m' m} = +-B c^(q+p) s^(q-p), v = (-1)^m d^q_{m',-m} = (-1)^m' B c^(q-p) s^(q+p) */
+      for (m = q; m <= l; ++m) {
+        bq = SHLIGHT_SQRTR(b2[m]);
+        uq = bq * pc[mp + m] * ps[l + l - mp - m];
+        vq = bq * pc[l + l - mp - m] * ps[mp + m];
+        if (mp > m && (mp - m) % 2 == 1) {
+          uq = -uq;
+        }
+        if (mp % 2 == 1) {
+          vq = -vq;
+        }
+        u2[m] = 0.0;
+        v2[m] = 0.0;
+        q1[m] = 0.0;
+        u1[m] = uq;
+        v1[m] = vq;
+      }
+      /* row m' of band l's real y rotation (cos block u + v, sin block u - v; sqrt 2 u where m
+         or m' is 0) on the input after its z rotation by gamma */
+      yc = 0.0;
+      ys = 0.0;
+      for (m = 1; m <= l; ++m) {
+        ac = SHLIGHT_REAL(sh[k + m]);
+        as = SHLIGHT_REAL(sh[k - m]);
+        yc = yc + (u1[m] + v1[m]) * (ac * cg[m] - as * sg[m]);
+        ys = ys + (u1[m] - v1[m]) * (ac * sg[m] + as * cg[m]);
+      }
+      ac = u1[0] * SHLIGHT_REAL(sh[k]);
       /* the output's z rotation (alpha) */
       if (mp == 0) {
-        out_sh[k] = SHLIGHT_FLOAT(yc);
+        out_sh[k] = SHLIGHT_FLOAT(ac + 0.7071067811865476 * yc);
       } else {
+        yc = yc + 1.4142135623730951 * ac;
         out_sh[k + mp] = SHLIGHT_FLOAT(yc * ca[mp] - ys * sa[mp]);
         out_sh[k - mp] = SHLIGHT_FLOAT(yc * sa[mp] + ys * ca[mp]);
       }
