@@ -3,7 +3,10 @@
  * Every RD_LIGHT_SPHERE and RD_LIGHT_TRIANGLE of the scene (a triangle as the paper's sphere,
  * shl_triangle_light) is projected to SH (run->bands bands, RGB), convolved with the Lambert
  * lobe at the shading normal (unshadowed, like the seed) and shaded diffuse:
- *   L_o = kd / pi * E(n),  E(n) = pi * shl_sh_conv_zh(L_sh, shl_zh_lambert, n).
+ *   L_o = kd / pi * E(n),  E(n) = pi * shl_sh_conv_zh(L_sh, shl_zh_lambert, n);
+ * Phong and GGX materials add ks * S, S = sum_i (R L_sh)_i F_i: the light SH rotated into the
+ * pixel's local frame (shl_sh_rotate) dotted with the BRDF SH table's coefficients at w_o
+ * (run->brdf_bands bands, default 9; the product uses min(bands, brdf_bands); see gd_brdf).
  * Methods, each on "cpu" (C kernels) and "gl" (the GLSL twins in a full-screen pass):
  *   perpixel         the SH of every light at every pixel;
  *   trilinear        SH on a 3D grid (shl_grid_build, 2 threads), trilinear reconstruction;
@@ -19,7 +22,8 @@
  * intensity each: the RGB grid is built per distinct light colour (<= 3 colours) or per
  * channel; triangle lights are added by a local 2-thread loop over shl_triangle_light(_grad)
  * (the library's build has no triangle lights).
- * Ground truth ("gt"): the exact unshadowed irradiance of the real lights, in double: a sphere
+ * Ground truth ("gt"): the exact unshadowed irradiance of the real lights, in double (and for
+ * glossy materials the same BRDF integrated over each light, gd_spec_gt): a sphere
  * by the closed form of the horizon-clipped cap (Snyder 1996), checked against a
  * semi-analytic quadrature; a triangle by Lambert's polygon formula after clipping it to the
  * horizon. Not SH-truncated: the table shows each method's total error. */
@@ -893,7 +897,7 @@ static void gd_shade_gt(const gd_lights *L, const float xf[3], const float nf[3]
     out[c] = (float)((double)kd[c] / GD_PI * acc[c]);
 }
 
-/* Gauss-Legendre nodes / weights on [0, 1] (Newton, double), k <= 64 */
+/* Gauss-Legendre nodes / weights on [0, 1] (Newton, double), k <= 128 */
 static void gd_gauss01(int k, double *xs, double *ws) {
   int i, j, it;
   for (i = 0; i < k; i++) {
@@ -934,7 +938,7 @@ static double gd_fcos(const shl_brdf_params *P, const double t[3], const double 
    q = 12 (gt 1) or 40 (gt 2); the run prints the difference of the two on a pixel subset. */
 static void gd_spec_gt(const gd_lights *L, const shl_brdf_params *P, const float xf[3],
                        const float nf[3], const float eye[3], int q, float ks_out[3]) {
-  double x[3], z[3], t[3], b[3], xs[64], ws[64], acc[3] = {0.0, 0.0, 0.0}, v[3], vl;
+  double x[3], z[3], t[3], b[3], xs[128], ws[128], acc[3] = {0.0, 0.0, 0.0}, v[3], vl;
   float tf[3], bf[3], nz[3], wo[3];
   int j, k, c, a, e, np = 2 * q + 4;
   for (k = 0; k < 3; k++)
@@ -948,6 +952,7 @@ static void gd_spec_gt(const gd_lights *L, const shl_brdf_params *P, const float
     v[k] = (double)eye[k] - x[k];
   }
   vl = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if (q > 128) q = 128;
   wo[0] = (float)((t[0] * v[0] + t[1] * v[1] + t[2] * v[2]) / vl);
   wo[1] = (float)((b[0] * v[0] + b[1] * v[1] + b[2] * v[2]) / vl);
   wo[2] = (float)((z[0] * v[0] + z[1] * v[1] + z[2] * v[2]) / vl);
@@ -1350,6 +1355,25 @@ int rd_pass_grid(rd_run *run) {
       printf("grid gt check: sphere closed form vs quadrature (8 / 32 nodes per piece): max "
              "|diff| / (pi s^2) = %.2e / %.2e\n",
              e1, e4);
+      /* the specular quadrature: q against 2q nodes per dimension on the glossy pixels */
+      if (B.any) {
+        int q = run->gt >= 2 ? 40 : 12;
+        double dmax = 0.0, pk = 0.0;
+        for (i = 0; i < np; i += step) {
+          float a[3], b2[3];
+          int m = gb->mat[i];
+          if (m < 0 || B.off[m] < 0) continue;
+          gd_spec_gt(&L, &B.par[m], gb->pos + 3 * i, gb->nrm + 3 * i, gb->eye, q, a);
+          gd_spec_gt(&L, &B.par[m], gb->pos + 3 * i, gb->nrm + 3 * i, gb->eye, 2 * q, b2);
+          for (c = 0; c < 3; c++) {
+            dmax = fmax(dmax, fabs((double)a[c] - (double)b2[c]));
+            pk = fmax(pk, fabs((double)b2[c]));
+          }
+        }
+        printf("grid gt check: specular quadrature, %d vs %d nodes per dimension: max |diff| / "
+               "peak = %.2e (peak %.3g)\n",
+               q, 2 * q, pk > 0.0 ? dmax / pk : 0.0, pk);
+      }
       (void)emax;
     }
   }
