@@ -121,6 +121,11 @@ $(BUILD)/tests/test_brdftab_glsl: tests/test_brdftab_glsl.c shlight.h tests/tl.h
 	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
 	    -o $@ tests/test_brdftab_glsl.c $(GL_SRCS) $(GL_LIBS)
 
+$(BUILD)/tests/test_rotate_glsl: tests/test_rotate_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
+	    -o $@ tests/test_rotate_glsl.c $(GL_SRCS) $(GL_LIBS)
+
 # shlrender: the headless renderer (render/), on the tests' GL context (tests/gl/glctx.c)
 # (application code: double where it helps, so no -Wdouble-promotion)
 RENDER_SRCS := $(wildcard render/*.c)

@@ -112,6 +112,15 @@ bench-solid-float: build/bench/solid_angle_float
 	build/bench/solid_angle_float $(SOLID_N)
 .PHONY: bench-solid-float
 
+# shl_sh_rotate against re-projection and stored band matrices (build/bench/bench_%: the rule
+# above); DirectXMath's XMSHRotate joins with a C++ build, see docs/rotation.md
+bench-rotate: build/bench/bench_rotate
+	@mkdir -p bench/out
+	build/bench/bench_rotate
+
+bench: bench-rotate
+.PHONY: bench-rotate
+
 build/bench/bench_beckmann: tests/ref/arearef.h tests/ref/ggxcases.h
 $(eval $(call bench_area,beckmann))
 

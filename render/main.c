@@ -19,6 +19,8 @@ static void usage(FILE *f) {
              "  --backend NAME      osmesa (default) or egl; the GL context\n"
              "  --gt N              ground truth: 0 none, 1 quick, 2 full (default 1)\n"
              "  --bands N           SH bands of the SH passes (default: the scene's, 5)\n"
+             "  --brdf-bands N      bands of the BRDF SH tables of glossy materials in the grid\n"
+             "                      pass (default 9; the product uses min(bands, N) bands)\n"
              "  --reps N            timed repetitions (median reported; default 3)\n"
              "  --out DIR           write PNGs to DIR (created; default: none)\n"
              "  --exposure X        PNG exposure (default: per pass, from the reference)\n"
@@ -39,7 +41,8 @@ static int has(const char *list, const char *item) {
 int main(int argc, char **argv) {
   const char *scene = "cornell", *passes = "all", *paths = "gl,cpu", *backend = NULL,
              *outdir = NULL;
-  int w = 256, h = 192, gt = 1, bands = 0, reps = 3, check = 0, i, rc = 0, fails, bad = 0;
+  int w = 256, h = 192, gt = 1, bands = 0, brdf_bands = 9, reps = 3, check = 0, i, rc = 0, fails,
+      bad = 0;
   float exposure = 0;
   rd_scene s;
   rd_gbuf gb;
@@ -77,6 +80,8 @@ int main(int argc, char **argv) {
       bad = sscanf(v, "%d", &gt) != 1 || gt < 0 || gt > 2;
     else if (!strcmp(a, "--bands"))
       bad = sscanf(v, "%d", &bands) != 1 || bands < 1 || bands > 16;
+    else if (!strcmp(a, "--brdf-bands"))
+      bad = sscanf(v, "%d", &brdf_bands) != 1 || brdf_bands < 1 || brdf_bands > 16;
     else if (!strcmp(a, "--reps"))
       bad = sscanf(v, "%d", &reps) != 1 || reps < 1 || reps > 1000;
     else if (!strcmp(a, "--exposure"))
@@ -128,6 +133,7 @@ int main(int argc, char **argv) {
   run.use_cpu = has(paths, "cpu");
   run.gt = gt;
   run.bands = bands ? bands : s.bands;
+  run.brdf_bands = brdf_bands;
   run.reps = reps;
   run.outdir = outdir;
   run.exposure = exposure;

@@ -542,8 +542,8 @@ void shli_tri_frame(vec3 x, vec3 p0, vec3 p1, vec3 p2, out shli_real out_g[8],
   out_nt[0] = 0.0;
   out_nt[1] = 0.0;
   out_nt[2] = 0.0;
-  mx = SHLIGHT_MAXR(mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)),
-                                     SHLIGHT_ABSR(bz)));
+  mx = SHLIGHT_MAXR(
+      mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)), SHLIGHT_ABSR(bz)));
   if ((mx > 1.0e9 || mx < 1.0e-8) && mx > 0.0 && mx <= SHLIGHT_REAL_MAX) {
     /* large or tiny edges scaled to ~1: the area |e1 x e2| = sc^2 |e1/sc x e2/sc| neither
        overflows nor underflows (it did above edges ~1.3e19 in C, float squares in GLSL) */
@@ -691,10 +691,10 @@ float shl_triangle_solid_angle(vec3 x, vec3 p0, vec3 p1, vec3 p2) {
   shli_real lc;
   shli_real nm;
   shli_real dn;
-  mx = SHLIGHT_MAXR(mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)),
-                                     SHLIGHT_ABSR(bz)));
-  mx = SHLIGHT_MAXR(mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(cx), SHLIGHT_ABSR(cy)),
-                                     SHLIGHT_ABSR(cz)));
+  mx = SHLIGHT_MAXR(
+      mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)), SHLIGHT_ABSR(bz)));
+  mx = SHLIGHT_MAXR(
+      mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(cx), SHLIGHT_ABSR(cy)), SHLIGHT_ABSR(cz)));
   if ((mx > 1.0e9 || mx < 1.0e-8) && mx > 0.0 && mx <= SHLIGHT_REAL_MAX) {
     /* Omega is scale-invariant: far or tiny triangles are scaled to |R| ~ 1 first, so the
        degree-3 products N and D neither overflow nor underflow (float in GLSL) */

@@ -116,6 +116,7 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/tests/test_ggx build/tests/test_ggx_glsl \
   build/tests/test_brdf build/tests/native/test_brdf build/tests/test_brdf_glsl \
   build/tests/test_brdftab build/tests/fuzz_replay_brdftab build/tests/test_brdftab_glsl \
+  build/tests/test_rotate build/tests/test_rotate_glsl \
   build/tests/test_ssf build/tests/test_ssf_glsl \
   build/render/shlrender build/tests/fuzz_replay_scene build/tests/test_rd_core \
   build/tests/test_contracts build/tests/fuzz_random build/tests/fuzz_replay_families
@@ -142,9 +143,8 @@ step test_contracts build/tests/test_contracts
 step fuzz-families build/tests/fuzz_random 40000 1
 step fuzz-corpus-replay-families build/tests/fuzz_replay_families tests/corpus/families
 # stack: every public function <= 16 KB (own frame + deepest static call chain, gcc
-# -fstack-usage / -fcallgraph-info); the two BRDF-table builders are allowed until the
-# table builder's restructuring lands (then drop --allow)
-step stack-usage $PY tools/stack_usage.py --allow shl_brdf_table_build,shl_brdf_table_build_merl
+step stack-usage $PY tools/stack_usage.py
+step test_rotate build/tests/test_rotate
 # in the foreground: it balances the two lanes (both ~555 s)
 step lightref-selftest build/tests/selftest_lightref
 step fuzz-corpus-replay-brdftab build/tests/fuzz_replay_brdftab tests/corpus/brdftab
@@ -170,6 +170,7 @@ for b in $backends; do
   [ -z "$sub" ] || rsc="cornell"
   step "render-$b" env SHLIGHT_RENDER_SCENES="$rsc" bash tests/test_render.sh $b
   step "glsl-brdftab-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_brdftab_glsl
+  step "glsl-rotate-vs-c-$b" env SHLIGHT_GL_BACKEND=$b build/tests/test_rotate_glsl
 done
 # GLSL compile budgets (llvmpipe, compile + link + first draw, CPU s) at 2x, the one include
 step glsl-compile-budget bash bench/glsl_budget.sh --no-run --check 2 --one-include

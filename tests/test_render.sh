@@ -27,6 +27,7 @@ expect 2 "unknown scene" --scene nosuch --paths cpu
 expect 2 "unknown option" --frobnicate 1
 expect 2 "bad value for --size" --size 3x2
 expect 2 "bad value for --bands" --bands 0
+expect 2 "bad value for --brdf-bands" --brdf-bands 17
 expect 2 "unknown pass" --pass grid,nosuch
 expect 2 "cannot read" --scene "$t/missing.scene"
 printf 'material m kd 0.5 0.5 0.5\nsphere 0 0 0 1 mm\n' >"$t/bad1.scene"

@@ -744,6 +744,9 @@ def glsl_param(prm, fname):
     if m:
         qual = '' if m.group(1) else ('inout ' if m.group(2).startswith('io_') else 'out ')
         return '%svec3 %s[%s]' % (qual, m.group(2), ARRAY_SIZES.get(m.group(2), 'SHLIGHT_MAX_COEFFS'))
+    m = re.match(r'^const (float|shli_real|int) (\w+)\[(\d+)\]$', prm)
+    if m:
+        return '%s %s[%s]' % m.groups()
     m = re.match(r'^(const )?(float|shli_real|int) \*(\w+)$', prm)
     if m:
         const, typ, name = m.groups()
