@@ -9923,13 +9923,8 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
   } else {
     t = 1.0;
   }
-  if (n > 1) {
-    ca[1] = c1;
-    sa[1] = s1;
-    cg[1] = t;
-    sg[1] = w;
-  }
-  for (m = 2; m < n; ++m) {
+  /* no constant index above 0: GLSL rejects it at SHLIGHT_MAX_BANDS = 1 even where unreached */
+  for (m = 1; m < n; ++m) {
     ca[m] = ca[m - 1] * c1 - sa[m - 1] * s1;
     sa[m] = sa[m - 1] * c1 + ca[m - 1] * s1;
     cg[m] = cg[m - 1] * t - sg[m - 1] * w;

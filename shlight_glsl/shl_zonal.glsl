@@ -300,13 +300,8 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
   } else {
     t = 1.0;
   }
-  if (n > 1) {
-    ca[1] = c1;
-    sa[1] = s1;
-    cg[1] = t;
-    sg[1] = w;
-  }
-  for (m = 2; m < n; ++m) {
+  /* no constant index above 0: GLSL rejects it at SHLIGHT_MAX_BANDS = 1 even where unreached */
+  for (m = 1; m < n; ++m) {
     ca[m] = ca[m - 1] * c1 - sa[m - 1] * s1;
     sa[m] = sa[m - 1] * c1 + ca[m - 1] * s1;
     cg[m] = cg[m - 1] * t - sg[m - 1] * w;

@@ -4,8 +4,28 @@ of two shlrender PNGs of the same pass (same exposure), taken in linear light (s
 the difference scaled, sRGB encoded), written with zlib level 9. The 8-bit inputs limit it to
 about 0.4 % of the exposure's white per step before the gain."""
 import struct, sys, zlib
-sys.path.insert(0, __import__('os').path.dirname(__file__))
-from png_sheet import read
+
+
+def read(path):
+    """(w, h, rows) of an 8-bit RGB PNG with unfiltered rows (shlrender's), as png_sheet.py"""
+    b = open(path, 'rb').read()
+    i, idat, w, h = 8, b'', 0, 0
+    while i + 12 <= len(b):
+        n = struct.unpack('>I', b[i:i + 4])[0]
+        t, d = b[i + 4:i + 8], b[i + 8:i + 8 + n]
+        if t == b'IHDR':
+            w, h, depth, ctype = struct.unpack('>IIBB', d[:10])
+            assert depth == 8 and ctype == 2, path + ': not 8-bit RGB'
+        if t == b'IDAT':
+            idat += d
+        i += 12 + n
+    raw = zlib.decompress(idat)
+    rows = []
+    for y in range(h):
+        r = raw[y * (3 * w + 1):(y + 1) * (3 * w + 1)]
+        assert r[0] == 0, path + ': filtered rows are not supported'
+        rows.append(r[1:])
+    return w, h, rows
 
 
 def lin(v):
