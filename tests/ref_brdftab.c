@@ -53,7 +53,7 @@ static shl_brdf_params mkp(int model, double par) {
 }
 
 static void lookup_table(void) {
-  static const double degs[] = {0.05, 0.3, 1.0,  3.7,  20.0, 45.0, 70.0, 80.0,
+  static const double degs[] = {0.05, 0.3,  1.0,  3.7,  20.0, 45.0, 70.0, 80.0,
                                 85.0, 87.9, 88.5, 89.0, 89.5, 89.7, 89.9, 89.99};
   static const int models[4] = {SHLIGHT_BRDF_GGX, SHLIGHT_BRDF_GGX, SHLIGHT_BRDF_GGX,
                                 SHLIGHT_BRDF_PHONG};
@@ -73,7 +73,7 @@ static void lookup_table(void) {
   for (m = 0; m < 4; ++m) {
     shl_brdf_params b = mkp(models[m], pars[m]);
     for (k = 0; k < nd; ++k)
-      ref_at(models[m], pars[m], degs[k], 1e-13L, ref[k]);
+      ref_at(models[m], pars[m], degs[k], 1e-11L, ref[k]);
     for (j = 0; j < 2; ++j) {
       shl_brdf_table t;
       t.n = N;
@@ -132,7 +132,7 @@ static void quad_table(void) {
       double xg[256], wg[256], xh[128], wh[128], acc[2 * NN], acch[2 * NN];
       double th = degs[k] * 3.14159265358979323846 / 180.0, wo[3];
       float y[NN];
-      ref_at(models[m], pars[m], degs[k], 1e-13L, ref);
+      ref_at(models[m], pars[m], degs[k], 1e-11L, ref);
       src.brdf = &b;
       src.merl = NULL;
       src.channel = 0;

@@ -46,14 +46,26 @@ static void brdfref_gl(int q, long double *x, long double *w) {
   }
 }
 
+static long double brdfref_k[BRDFREF_MAXN][BRDFREF_MAXN];
+
 static void brdfref_init(void) {
+  int l, m, j;
   brdfref_gl(12, brdfref_x12, brdfref_w12);
   brdfref_gl(24, brdfref_x24, brdfref_w24);
+  for (l = 0; l < BRDFREF_MAXN; ++l)
+    for (m = 0; m <= l; ++m) {
+      long double f = 1.0L;
+      for (j = l - m + 1; j <= l + m; ++j)
+        f *= (long double)j; /* (l + m)! / (l - m)! */
+      brdfref_k[l][m] =
+          sqrtl((2.0L * l + 1.0L) / (4.0L * BRDFREF_PI) / f) * (m ? sqrtl(2.0L) : 1.0L);
+    }
 }
 
 /* real SH, n bands, at (theta, phi) */
 static void brdfref_sh(int n, long double ct, long double phi, long double *y) {
-  long double st = sqrtl(fmaxl(0.0L, 1.0L - ct * ct)), p[BRDFREF_MAXN][BRDFREF_MAXN];
+  long double st = sqrtl(fmaxl(0.0L, 1.0L - ct * ct)), p[BRDFREF_MAXN][BRDFREF_MAXN],
+              cm[BRDFREF_MAXN], sm[BRDFREF_MAXN];
   int l, m;
   p[0][0] = 1.0L;
   for (m = 1; m < n; ++m)
@@ -63,18 +75,17 @@ static void brdfref_sh(int n, long double ct, long double phi, long double *y) {
   for (m = 0; m < n; ++m)
     for (l = m + 2; l < n; ++l)
       p[l][m] = ((2.0L * l - 1.0L) * ct * p[l - 1][m] - (l + m - 1.0L) * p[l - 2][m]) / (l - m);
+  for (m = 0; m < n; ++m) {
+    cm[m] = cosl(m * phi);
+    sm[m] = sinl(m * phi);
+  }
   for (l = 0; l < n; ++l)
     for (m = 0; m <= l; ++m) {
-      long double k = (2.0L * l + 1.0L) / (4.0L * BRDFREF_PI), f = 1.0L;
-      int j;
-      for (j = l - m + 1; j <= l + m; ++j)
-        f *= (long double)j; /* (l + m)! / (l - m)! */
-      k = sqrtl(k / f);
       if (m == 0) {
-        y[l * (l + 1)] = k * p[l][0];
+        y[l * (l + 1)] = brdfref_k[l][0] * p[l][0];
       } else {
-        y[l * (l + 1) + m] = sqrtl(2.0L) * k * cosl(m * phi) * p[l][m];
-        y[l * (l + 1) - m] = sqrtl(2.0L) * k * sinl(m * phi) * p[l][m];
+        y[l * (l + 1) + m] = brdfref_k[l][m] * cm[m] * p[l][m];
+        y[l * (l + 1) - m] = brdfref_k[l][m] * sm[m] * p[l][m];
       }
     }
 }
@@ -106,7 +117,8 @@ static long double brdfref_f(const brdfref *r, const long double wi[3]) {
 /* inner: integral over phi in [a, b] at cos theta_i = ct (sin st) of f [ct Y, Y] */
 static void brdfref_phi_rule(const brdfref *r, long double ct, long double st, long double a,
                              long double b, int q, long double *out) {
-  const long double *x = q == 12 ? brdfref_x12 : brdfref_x24, *w = q == 12 ? brdfref_w12 : brdfref_w24;
+  const long double *x = q == 12 ? brdfref_x12 : brdfref_x24,
+                    *w = q == 12 ? brdfref_w12 : brdfref_w24;
   int nn = r->n * r->n, i, k;
   long double y[BRDFREF_MAXN * BRDFREF_MAXN];
   memset(out, 0, sizeof(long double) * 2 * nn);
@@ -146,7 +158,8 @@ static void brdfref_phi(const brdfref *r, long double ct, long double st, long d
 /* outer: integral over theta in [a, b] of sin(theta) (inner integral) */
 static void brdfref_theta_rule(const brdfref *r, long double a, long double b, int q,
                                long double *out) {
-  const long double *x = q == 12 ? brdfref_x12 : brdfref_x24, *w = q == 12 ? brdfref_w12 : brdfref_w24;
+  const long double *x = q == 12 ? brdfref_x12 : brdfref_x24,
+                    *w = q == 12 ? brdfref_w12 : brdfref_w24;
   int nn2 = 2 * r->n * r->n, i, k;
   long double in[2 * BRDFREF_MAXN * BRDFREF_MAXN];
   memset(out, 0, sizeof(long double) * nn2);
