@@ -15863,8 +15863,8 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
    outside [0, 1] (microfacet models), quad_order out of range; SHLIGHT_ENOMEM when n > 16 and
    the 2 n^2-double accumulator (on the stack up to 16 bands) cannot be allocated. Cost: per
    sample, up to ~12 panels x q x (2q .. 14q) nodes (x 1.25 with out_err_est), each one BRDF
-   evaluation, one shl_sh_eval and 2 n^2 FMA: 0.1-0.5 s for 90 samples at q = 32, n = 10
-   (README). */
+   evaluation, one shl_sh_eval and 2 n^2 FMA. Measured, 90 samples, n = 9, one core: q = 32
+   0.19 s (GGX 1) .. 0.69 s (GGX 0.05), q = 64 0.75 .. 2.7 s (Phong 1000: 0.55, 2.3 s). */
 SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_params *brdf,
                                             int quad_order, float *out_err_est);
 

@@ -24,7 +24,7 @@
 #define PI 3.14159265358979323846
 
 /* theta_o of sample s of an nt-sample table, in double: the grid of >>brdftab solved by the
-   library's bisection (the grid itself is checked against its closed form in test_grid) and the
+   library's bisection (checked against its closed form in test_brdftab_grid) and the
    last sample's documented cos theta_o = SHLIGHT_BRDF_TABLE_GRAZING */
 static double tab_theta(int nt, int s) {
   double d = shli_grid_d(nt, s);
@@ -1143,6 +1143,41 @@ static void test_brdftab_lookup_ends(void) {
   free(d);
 }
 
+/* the outgoing grid: shl_brdf_table_theta against the closed form of the grid variable in long
+   double (u(theta_t) = t / (n_theta - 1)), ends exactly 0 and pi/2, monotone, domain */
+static void test_brdftab_grid(void) {
+  const int nts[4] = {2, 7, 90, 4096};
+  const long double h = 1.5707963267948966192313216916397514L;
+  long double u0 = h + 0.05L * logl((h + 1e-6L) / 1e-6L);
+  double worst = 0.0;
+  int j, t, mono = 1;
+  for (j = 0; j < 4; ++j) {
+    float prev = -1.0f;
+    for (t = 0; t < nts[j]; ++t) {
+      float th = shl_brdf_table_theta(nts[j], t);
+      long double d = h - (long double)th;
+      long double u = ((h - d) + 0.05L * logl((h + 1e-6L) / (d + 1e-6L))) / u0;
+      /* d(theta) / du is at most 1 / U'(theta) <= pi/2: a float theta (ulp 1.2e-7) moves u by
+         < 2e-7; near 90 deg u'(theta) = 0.05 / (d + 1e-6) / U(0): compare in theta there */
+      double e = fabs((double)(u - (long double)t / (nts[j] - 1))) /
+                 (double)((1.0L + 0.05L / (d + 1e-6L)) / u0);
+      if (e > worst) worst = e;
+      if (!(th >= prev) || (t > 0 && !(shli_grid_d(nts[j], t) < shli_grid_d(nts[j], t - 1))))
+        mono = 0; /* float angles may repeat near 90 deg at 4096 samples, not the doubles */
+      prev = th;
+    }
+  }
+  printf("  grid: max |theta_t - closed form| = %.2e rad\n", worst);
+  TL_CHECK(worst <= 2e-7, "grid off its closed form by %g rad", worst);
+  TL_CHECK(mono, "grid not increasing");
+  TL_CHECK(shl_brdf_table_theta(90, 0) == 0.0f && shl_brdf_table_theta(90, 89) == 1.57079637f &&
+               shl_brdf_table_theta(1, 0) == 0.0f,
+           "ends");
+  TL_CHECK(shl_brdf_table_theta(90, 90) == -1.0f && shl_brdf_table_theta(90, -1) == -1.0f &&
+               shl_brdf_table_theta(0, 0) == -1.0f && shl_brdf_table_theta(4097, 0) == -1.0f,
+           "out of domain: -1");
+}
+
 int main(void) {
   setvbuf(stdout, NULL, _IOLBF, 0);
   TL_RUN(test_lambert_closed_form);
@@ -1159,5 +1194,6 @@ int main(void) {
   TL_RUN(test_brdftab_phong_exponent_huge);
   TL_RUN(test_brdftab_cell_overflow);
   TL_RUN(test_brdftab_lookup_ends);
+  TL_RUN(test_brdftab_grid);
   return tl_summary();
 }

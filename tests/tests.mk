@@ -214,6 +214,15 @@ fuzz-brdftab: $(TESTS_BUILD)/fuzz_brdftab
 	nice -n 19 $(TESTS_BUILD)/fuzz_brdftab -max_len=4096 -max_total_time=$(FUZZ_SECONDS) \
 	    -print_final_stats=1 -artifact_prefix=$(TESTS_BUILD)/ $(TESTS_BUILD)/fuzz_brdftab_corpus
 
+# opt-in (minutes): BRDF tables against the independent long-double reference tests/ref/brdfref.h,
+# lookup error against theta_o and quadrature error against quad_order (markdown on stdout)
+$(TESTS_BUILD)/ref_brdftab: tests/ref_brdftab.c tests/ref/brdfref.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_BRDFTAB_FLAGS) -o $@ tests/ref_brdftab.c -lm
+.PHONY: brdftab-ref
+brdftab-ref: $(TESTS_BUILD)/ref_brdftab
+	nice $(TESTS_BUILD)/ref_brdftab
+
 # >>ssf: VPL SH / irradiance, interleaving, filter weight against long double / binary128
 # references (tests/test_ssf.c)
 TESTS_SSF_DEPS := tests/test_ssf.c tests/ref/shref.h tests/tl.h shlight.h
