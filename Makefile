@@ -32,11 +32,16 @@ $(BUILD)/examples/hello_sh: examples/hello_sh.c shlight.h
 example: $(BUILD)/examples/hello_sh
 	$(BUILD)/examples/hello_sh
 
+# the implementation, compiled once for the GL tests (they include shlight.h without it)
+$(BUILD)/tests/impl_c.o: tests/impl_c.c shlight.h
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O2 -g1 -ffp-contract=off $(WARN) -c -o $@ tests/impl_c.c
+
 # GLSL twins against C on llvmpipe
-$(BUILD)/tests/test_glsl: tests/test_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
+$(BUILD)/tests/test_glsl: tests/test_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS) $(BUILD)/tests/impl_c.o
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Wconversion -Werror $(GL_CFLAGS) \
-	    -o $@ tests/test_glsl.c $(GL_SRCS) $(GL_LIBS)
+	    -o $@ tests/test_glsl.c $(GL_SRCS) $(BUILD)/tests/impl_c.o $(GL_LIBS)
 
 # compile matrix: C99/C11/C++98/11/17/20, gcc and clang, SHLIGHT_STATIC, two TUs linked
 MATRIX_DIR := $(BUILD)/matrix
@@ -91,40 +96,40 @@ test-glsl-full: $(BUILD)/tests/test_glsl
 clean:
 	rm -rf $(BUILD)
 
-$(BUILD)/tests/test_grid_glsl: tests/test_grid_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
+$(BUILD)/tests/test_grid_glsl: tests/test_grid_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS) $(BUILD)/tests/impl_c.o
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
-	    -o $@ tests/test_grid_glsl.c $(GL_SRCS) $(GL_LIBS)
+	    -o $@ tests/test_grid_glsl.c $(GL_SRCS) $(BUILD)/tests/impl_c.o $(GL_LIBS)
 
-$(BUILD)/tests/test_edge_glsl: tests/test_edge_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
+$(BUILD)/tests/test_edge_glsl: tests/test_edge_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS) $(BUILD)/tests/impl_c.o
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
-	    -o $@ tests/test_edge_glsl.c $(GL_SRCS) $(GL_LIBS) -lm
+	    -o $@ tests/test_edge_glsl.c $(GL_SRCS) $(BUILD)/tests/impl_c.o $(GL_LIBS) -lm
 
-$(BUILD)/tests/test_microfacet_glsl: tests/test_microfacet_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
+$(BUILD)/tests/test_microfacet_glsl: tests/test_microfacet_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS) $(BUILD)/tests/impl_c.o
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
-	    -o $@ tests/test_microfacet_glsl.c $(GL_SRCS) $(GL_LIBS) -lm
+	    -o $@ tests/test_microfacet_glsl.c $(GL_SRCS) $(BUILD)/tests/impl_c.o $(GL_LIBS) -lm
 
-$(BUILD)/tests/test_ggx_glsl: tests/test_ggx_glsl.c tests/ref/ggxcases.h shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
+$(BUILD)/tests/test_ggx_glsl: tests/test_ggx_glsl.c tests/ref/ggxcases.h shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS) $(BUILD)/tests/impl_c.o
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
-	    -o $@ tests/test_ggx_glsl.c $(GL_SRCS) $(GL_LIBS) -lm
+	    -o $@ tests/test_ggx_glsl.c $(GL_SRCS) $(BUILD)/tests/impl_c.o $(GL_LIBS) -lm
 
-$(BUILD)/tests/test_brdf_glsl: tests/test_brdf_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
+$(BUILD)/tests/test_brdf_glsl: tests/test_brdf_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS) $(BUILD)/tests/impl_c.o
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
-	    -o $@ tests/test_brdf_glsl.c $(GL_SRCS) $(GL_LIBS)
+	    -o $@ tests/test_brdf_glsl.c $(GL_SRCS) $(BUILD)/tests/impl_c.o $(GL_LIBS)
 
-$(BUILD)/tests/test_brdftab_glsl: tests/test_brdftab_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
+$(BUILD)/tests/test_brdftab_glsl: tests/test_brdftab_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS) $(BUILD)/tests/impl_c.o
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
-	    -o $@ tests/test_brdftab_glsl.c $(GL_SRCS) $(GL_LIBS)
+	    -o $@ tests/test_brdftab_glsl.c $(GL_SRCS) $(BUILD)/tests/impl_c.o $(GL_LIBS)
 
-$(BUILD)/tests/test_rotate_glsl: tests/test_rotate_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
+$(BUILD)/tests/test_rotate_glsl: tests/test_rotate_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS) $(BUILD)/tests/impl_c.o
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
-	    -o $@ tests/test_rotate_glsl.c $(GL_SRCS) $(GL_LIBS)
+	    -o $@ tests/test_rotate_glsl.c $(GL_SRCS) $(BUILD)/tests/impl_c.o $(GL_LIBS)
 
 # shlrender: the headless renderer (render/), on the tests' GL context (tests/gl/glctx.c)
 # (application code: double where it helps, so no -Wdouble-promotion)
@@ -160,10 +165,10 @@ fuzz-scene: $(BUILD)/tests/fuzz_scene
 	@mkdir -p $(BUILD)/fuzz/scene
 	nice $< -max_len=2048 -max_total_time=$(or $(FUZZ_SECONDS),60) $(BUILD)/fuzz/scene tests/corpus/scene
 
-$(BUILD)/tests/test_ssf_glsl: tests/test_ssf_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS)
+$(BUILD)/tests/test_ssf_glsl: tests/test_ssf_glsl.c shlight.h tests/tl.h $(GL_SRCS) $(GL_HDRS) $(BUILD)/tests/impl_c.o
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g1 -Wall -Wextra -Wpedantic -Werror $(GL_CFLAGS) \
-	    -o $@ tests/test_ssf_glsl.c $(GL_SRCS) $(GL_LIBS) -lm
+	    -o $@ tests/test_ssf_glsl.c $(GL_SRCS) $(BUILD)/tests/impl_c.o $(GL_LIBS) -lm
 
 # docs/renderer.md's first command: render the default scene (every pass, GL and CPU) to out/
 .PHONY: render-example render-results

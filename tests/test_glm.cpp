@@ -1,9 +1,11 @@
 // test_glm.cpp - rotation properties of shlight's SH basis, with rotations from GLM.
 //
 // C++11 TU: includes shlight.h WITHOUT SHLIGHT_IMPLEMENTATION, so it also checks that the
-// header (kernels only) compiles and works as C++.  Build (see tests/tests.mk):
+// header compiles and works as C++ and links against the implementation compiled as C
+// (tests/impl_c.c, through extern "C").  Build (see tests/tests.mk):
+//   gcc -std=c99 -O2 -c -o impl.o tests/impl_c.c
 //   g++ -std=c++11 -O2 -g -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wdouble-promotion
-//       -ffp-contract=off -o build/tests/test_glm tests/test_glm.cpp -lm
+//       -ffp-contract=off -o build/tests/test_glm tests/test_glm.cpp impl.o -lm
 //
 // Properties (n <= 10 bands), each independent of how Y is computed:
 //  1. Unsold: the band energy sum_m Y_lm(R d)^2 = (2l+1)/4pi for every direction and rotation.

@@ -27,7 +27,7 @@ TESTS_QUADLIBS ?= -lquadmath -lm
 FUZZ_SECONDS ?= 60
 
 TESTS_BASIS_DEPS := tests/test_basis.c tests/ref/shref.h tests/tl.h shlight.h
-TESTS_GLM_DEPS := tests/test_glm.cpp tests/tl.h shlight.h
+TESTS_GLM_DEPS := tests/test_glm.cpp tests/impl_c.c tests/tl.h shlight.h
 TESTS_FUZZ_DEPS := tests/fuzz_replay.c tests/fuzz_basis.c shlight.h
 
 $(TESTS_BUILD)/test_basis: $(TESTS_BASIS_DEPS)
@@ -36,7 +36,8 @@ $(TESTS_BUILD)/test_basis: $(TESTS_BASIS_DEPS)
 
 $(TESTS_BUILD)/test_glm: $(TESTS_GLM_DEPS)
 	@mkdir -p $(@D)
-	$(CXX) $(TESTS_CXXFLAGS) -o $@ tests/test_glm.cpp -lm
+	$(CC) $(TESTS_CFLAGS) -c -o $@-impl.o tests/impl_c.c
+	$(CXX) $(TESTS_CXXFLAGS) -o $@ tests/test_glm.cpp $@-impl.o -lm
 
 $(TESTS_BUILD)/fuzz_replay: $(TESTS_FUZZ_DEPS)
 	@mkdir -p $(@D)
@@ -49,7 +50,8 @@ $(TESTS_BUILD)/asan/test_basis: $(TESTS_BASIS_DEPS)
 
 $(TESTS_BUILD)/asan/test_glm: $(TESTS_GLM_DEPS)
 	@mkdir -p $(@D)
-	$(CXX) $(TESTS_CXXFLAGS) $(TESTS_ASAN) -o $@ tests/test_glm.cpp -lm
+	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -c -o $@-impl.o tests/impl_c.c
+	$(CXX) $(TESTS_CXXFLAGS) $(TESTS_ASAN) -o $@ tests/test_glm.cpp $@-impl.o -lm
 
 $(TESTS_BUILD)/asan/fuzz_replay: $(TESTS_FUZZ_DEPS)
 	@mkdir -p $(@D)
