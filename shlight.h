@@ -29241,15 +29241,18 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
      w_o (docs/brdf-tables.md has the error against quad_order).
    Outgoing samples on the grid of >>brdftab (shl_brdf_table_theta), the last one at
    cos theta_o = SHLIGHT_BRDF_TABLE_GRAZING. Y by shl_sh_eval in float at the float-rounded
-   node; the table rounds to float. Stack: about 12 KB deep (gcc -O2: 11.6 KB in the build
-   loop, the quadrature nodes are made on the fly, no per-arc scratch arrays).
+   node; the table rounds to float. Stack: about 13.5 KB deep (gcc -O2 -fstack-usage: 12.6 KB in
+   the build loop; the quadrature nodes are made on the fly, no per-arc scratch arrays).
    out_err_est (may be NULL; NULL also skips the extra passes): an estimate of the returned
    table's largest absolute error (table units) from the tables at quad_order / 4 and / 2: per
    sample, with e1 = max |T(q/2) - T(q/4)| and e2 = max |T(q) - T(q/2)|, e2^2.5 / e1^1.5 while
    e2 < e1 (geometric convergence), else e2; at least 2^-24 max |T| (the float rounding of the
    table); the max over the samples. Measured against an independent long-double projection
-   (GGX alpha 1e-3 .. 1, Phong 1e3 .. 1e6, theta_o 30 .. 89.5 deg, q 64 .. 128): within 6x
-   of the true error, above or below (docs/brdf-tables.md). quad_order in [2, 256].
+   (GGX alpha 0.05 .. 1, Phong 1000, theta_o 30 .. 89.5 deg, q 32 .. 128): 0.65 .. 5.5 times
+   the true error (docs/brdf-tables.md); not a guaranteed bound. Accuracy: Phong / Blinn-Phong
+   reach the float rounding floor at q = 32 up to e = 1e6, GGX / Beckmann alpha >= 0.05 at
+   q = 128 (q = 64: 2e-4 near grazing); alpha < 0.05 near grazing does not converge within
+   q = 256 (alpha 0.01 at 89.5 deg: 2.6e-2 at q = 128). quad_order in [2, 256].
    Returns SHLIGHT_EINVAL (data untouched) for NULL t / data / brdf, n, n_theta, n_phi out of
    range (see shl_brdf_table_size), flags != (n_phi > 1 ? ANISO : 0), an unknown model,
    negative or non-finite kd / ks, a Phong / Blinn-Phong exponent outside [0,
