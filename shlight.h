@@ -29220,7 +29220,8 @@ SHLIGHT_API float shl_brdf_eval(const shl_brdf_params *brdf, const float wo[3], 
 /* shl_brdf_table_size: floats of a table of n bands and n_theta x n_phi samples:
    n_phi n_theta 2 n^2; 0 for n outside [1, SHLIGHT_MAX_BANDS], n_theta or n_phi outside
    [1, SHLIGHT_BRDF_TABLE_MAX_SAMPLES], or a size whose SHLT file would not fit in size_t.
-   The kernels index tables with int: keep n_theta n_phi 2 n^2 below 2^31 for them. */
+   The kernels index tables with int: shl_brdf_table_lookup gives zeros for a table of
+   n_theta n_phi 2 n^2 >= 2^31 floats. */
 SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
 
 /* shl_brdf_table_build: fills t->data (t->n, n_theta, n_phi, flags set by the caller, data
