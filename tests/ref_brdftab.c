@@ -5,9 +5,9 @@
  *  2. quadrature error at single outgoing directions against quad_order (float floor?), down to
  *     alpha = SHLIGHT_BRDF_MIN_ALPHA and up to exponent SHLIGHT_BRDF_MAX_EXPONENT, and the
  *     error estimate beside the true error.
- * Opt-in (minutes): make brdftab-ref. Ends with "N passed, N failed" (checks: the issue's
- * bound 1e-3 of the norm at theta_o <= 89.9 deg for GGX alpha >= 0.05, Phong e <= 1000 at 128
- * samples). */
+ * Opt-in (minutes): make brdftab-ref. Ends with "N passed, N failed" (checks: the lookup
+ * within 1e-3 of the norm at theta_o <= 89.9 deg for GGX alpha >= 0.05 and Phong e <= 1000,
+ * 128 samples). */
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
 #include "ref/brdfref.h"
