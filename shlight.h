@@ -136,6 +136,9 @@ typedef double shli_real;
 #define SHLIGHT_REAL_MAX 3.4028234663852886e38
 #define SHLIGHT_REAL_WIDE 1 /* shli_real holds squares of any float: no input scaling needed */
 #define SHLIGHT_UNUSED(x) ((void)(x))
+/* 1 (GLSL): zeroing an output array by constant-trip per-band code, which shader compilers keep
+   in registers; 0 (C): the plain loop */
+#define SHLIGHT_BY_BANDS 0
 #define SHLIGHT_SET3(o, a, b, c)                                                                   \
   ((o)[0] = (a), (o)[1] = (b), (o)[2] = (c))         /* GLSL: o = vec3(a, b, c) */
 #define SHLIGHT_SIGN1(x) ((float)copysign(1.0, (x))) /* +-1 with the sign bit of x, branch-free */
@@ -8004,6 +8007,7 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_loop(int n, const float *y, float nx, float
 /* @generated begin gradient */
 SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir,
                                  float ib, float (*out_grad)[3]) {
+  float r[29];
   float lr;
   float q;
 #if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
@@ -8018,1214 +8022,1232 @@ SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, floa
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
     lr = 1.0f * ir;
+    r[0] = y[0] * ir;
     q = lr * y[1];
-    SHLIGHT_SET3(out_grad[1], -q * nx * ib, (-1.73205081f * (y[0] * ir) - q * ny) * ib,
-                 -q * nz * ib);
+    SHLIGHT_SET3(out_grad[1], -q * nx * ib, (-1.73205081f * r[0] - q * ny) * ib, -q * nz * ib);
     q = lr * y[2];
-    SHLIGHT_SET3(out_grad[2], -q * nx * ib, -q * ny * ib,
-                 (1.73205081f * (y[0] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[2], -q * nx * ib, -q * ny * ib, (1.73205081f * r[0] - q * nz) * ib);
     q = lr * y[3];
-    SHLIGHT_SET3(out_grad[3], (-1.73205081f * (y[0] * ir) - q * nx) * ib, -q * ny * ib,
-                 -q * nz * ib);
+    SHLIGHT_SET3(out_grad[3], (-1.73205081f * r[0] - q * nx) * ib, -q * ny * ib, -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 2
   if (n > 2) {
     lr = 2.0f * ir;
+    r[0] = y[1] * ir;
+    r[1] = y[2] * ir;
+    r[2] = y[3] * ir;
     q = lr * y[4];
-    SHLIGHT_SET3(out_grad[4], (-2.23606798f * (y[1] * ir) - q * nx) * ib,
-                 (-2.23606798f * (y[3] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[4], (-2.23606798f * r[0] - q * nx) * ib,
+                 (-2.23606798f * r[2] - q * ny) * ib, -q * nz * ib);
     q = lr * y[5];
-    SHLIGHT_SET3(out_grad[5], -q * nx * ib, (-2.23606798f * (y[2] * ir) - q * ny) * ib,
-                 (2.23606798f * (y[1] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[5], -q * nx * ib, (-2.23606798f * r[1] - q * ny) * ib,
+                 (2.23606798f * r[0] - q * nz) * ib);
     q = lr * y[6];
-    SHLIGHT_SET3(out_grad[6], (1.29099445f * (y[3] * ir) - q * nx) * ib,
-                 (1.29099445f * (y[1] * ir) - q * ny) * ib,
-                 (2.5819889f * (y[2] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[6], (1.29099445f * r[2] - q * nx) * ib,
+                 (1.29099445f * r[0] - q * ny) * ib, (2.5819889f * r[1] - q * nz) * ib);
     q = lr * y[7];
-    SHLIGHT_SET3(out_grad[7], (-2.23606798f * (y[2] * ir) - q * nx) * ib, -q * ny * ib,
-                 (2.23606798f * (y[3] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[7], (-2.23606798f * r[1] - q * nx) * ib, -q * ny * ib,
+                 (2.23606798f * r[2] - q * nz) * ib);
     q = lr * y[8];
-    SHLIGHT_SET3(out_grad[8], (-2.23606798f * (y[3] * ir) - q * nx) * ib,
-                 (2.23606798f * (y[1] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[8], (-2.23606798f * r[2] - q * nx) * ib,
+                 (2.23606798f * r[0] - q * ny) * ib, -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 3
   if (n > 3) {
     lr = 3.0f * ir;
+    r[0] = y[4] * ir;
+    r[1] = y[5] * ir;
+    r[2] = y[6] * ir;
+    r[3] = y[7] * ir;
+    r[4] = y[8] * ir;
     q = lr * y[9];
-    SHLIGHT_SET3(out_grad[9], (-3.24037035f * (y[4] * ir) - q * nx) * ib,
-                 (-3.24037035f * (y[8] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[9], (-3.24037035f * r[0] - q * nx) * ib,
+                 (-3.24037035f * r[4] - q * ny) * ib, -q * nz * ib);
     q = lr * y[10];
-    SHLIGHT_SET3(out_grad[10], (-2.64575131f * (y[5] * ir) - q * nx) * ib,
-                 (-2.64575131f * (y[7] * ir) - q * ny) * ib,
-                 (2.64575131f * (y[4] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[10], (-2.64575131f * r[1] - q * nx) * ib,
+                 (-2.64575131f * r[3] - q * ny) * ib, (2.64575131f * r[0] - q * nz) * ib);
     q = lr * y[11];
-    SHLIGHT_SET3(out_grad[11], (0.836660027f * (y[4] * ir) - q * nx) * ib,
-                 (-2.89827535f * (y[6] * ir) + -0.836660027f * (y[8] * ir) - q * ny) * ib,
-                 (3.34664011f * (y[5] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[11], (0.836660027f * r[0] - q * nx) * ib,
+                 (-2.89827535f * r[2] + -0.836660027f * r[4] - q * ny) * ib,
+                 (3.34664011f * r[1] - q * nz) * ib);
     q = lr * y[12];
-    SHLIGHT_SET3(out_grad[12], (2.04939015f * (y[7] * ir) - q * nx) * ib,
-                 (2.04939015f * (y[5] * ir) - q * ny) * ib,
-                 (3.54964787f * (y[6] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[12], (2.04939015f * r[3] - q * nx) * ib,
+                 (2.04939015f * r[1] - q * ny) * ib, (3.54964787f * r[2] - q * nz) * ib);
     q = lr * y[13];
-    SHLIGHT_SET3(
-        out_grad[13], (-2.89827535f * (y[6] * ir) + 0.836660027f * (y[8] * ir) - q * nx) * ib,
-        (0.836660027f * (y[4] * ir) - q * ny) * ib, (3.34664011f * (y[7] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[13], (-2.89827535f * r[2] + 0.836660027f * r[4] - q * nx) * ib,
+                 (0.836660027f * r[0] - q * ny) * ib, (3.34664011f * r[3] - q * nz) * ib);
     q = lr * y[14];
-    SHLIGHT_SET3(out_grad[14], (-2.64575131f * (y[7] * ir) - q * nx) * ib,
-                 (2.64575131f * (y[5] * ir) - q * ny) * ib,
-                 (2.64575131f * (y[8] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[14], (-2.64575131f * r[3] - q * nx) * ib,
+                 (2.64575131f * r[1] - q * ny) * ib, (2.64575131f * r[4] - q * nz) * ib);
     q = lr * y[15];
-    SHLIGHT_SET3(out_grad[15], (-3.24037035f * (y[8] * ir) - q * nx) * ib,
-                 (3.24037035f * (y[4] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[15], (-3.24037035f * r[4] - q * nx) * ib,
+                 (3.24037035f * r[0] - q * ny) * ib, -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 4
   if (n > 4) {
     lr = 4.0f * ir;
+    r[0] = y[9] * ir;
+    r[1] = y[10] * ir;
+    r[2] = y[11] * ir;
+    r[3] = y[12] * ir;
+    r[4] = y[13] * ir;
+    r[5] = y[14] * ir;
+    r[6] = y[15] * ir;
     q = lr * y[16];
-    SHLIGHT_SET3(out_grad[16], (-4.24264069f * (y[9] * ir) - q * nx) * ib,
-                 (-4.24264069f * (y[15] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[16], (-4.24264069f * r[0] - q * nx) * ib,
+                 (-4.24264069f * r[6] - q * ny) * ib, -q * nz * ib);
     q = lr * y[17];
-    SHLIGHT_SET3(out_grad[17], (-3.67423461f * (y[10] * ir) - q * nx) * ib,
-                 (-3.67423461f * (y[14] * ir) - q * ny) * ib, (3.0f * (y[9] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[17], (-3.67423461f * r[1] - q * nx) * ib,
+                 (-3.67423461f * r[5] - q * ny) * ib, (3.0f * r[0] - q * nz) * ib);
     q = lr * y[18];
-    SHLIGHT_SET3(out_grad[18],
-                 (-3.10529502f * (y[11] * ir) + 0.801783726f * (y[9] * ir) - q * nx) * ib,
-                 (-3.10529502f * (y[13] * ir) + -0.801783726f * (y[15] * ir) - q * ny) * ib,
-                 (3.92792202f * (y[10] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[18], (-3.10529502f * r[2] + 0.801783726f * r[0] - q * nx) * ib,
+                 (-3.10529502f * r[4] + -0.801783726f * r[6] - q * ny) * ib,
+                 (3.92792202f * r[1] - q * nz) * ib);
     q = lr * y[19];
-    SHLIGHT_SET3(out_grad[19], (1.38873015f * (y[10] * ir) - q * nx) * ib,
-                 (-3.58568583f * (y[12] * ir) + -1.38873015f * (y[14] * ir) - q * ny) * ib,
-                 (4.39155033f * (y[11] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[19], (1.38873015f * r[1] - q * nx) * ib,
+                 (-3.58568583f * r[3] + -1.38873015f * r[5] - q * ny) * ib,
+                 (4.39155033f * r[2] - q * nz) * ib);
     q = lr * y[20];
-    SHLIGHT_SET3(out_grad[20], (2.7774603f * (y[13] * ir) - q * nx) * ib,
-                 (2.7774603f * (y[11] * ir) - q * ny) * ib,
-                 (4.53557368f * (y[12] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[20], (2.7774603f * r[4] - q * nx) * ib, (2.7774603f * r[2] - q * ny) * ib,
+                 (4.53557368f * r[3] - q * nz) * ib);
     q = lr * y[21];
-    SHLIGHT_SET3(
-        out_grad[21], (-3.58568583f * (y[12] * ir) + 1.38873015f * (y[14] * ir) - q * nx) * ib,
-        (1.38873015f * (y[10] * ir) - q * ny) * ib, (4.39155033f * (y[13] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[21], (-3.58568583f * r[3] + 1.38873015f * r[5] - q * nx) * ib,
+                 (1.38873015f * r[1] - q * ny) * ib, (4.39155033f * r[4] - q * nz) * ib);
     q = lr * y[22];
-    SHLIGHT_SET3(out_grad[22],
-                 (-3.10529502f * (y[13] * ir) + 0.801783726f * (y[15] * ir) - q * nx) * ib,
-                 (3.10529502f * (y[11] * ir) + 0.801783726f * (y[9] * ir) - q * ny) * ib,
-                 (3.92792202f * (y[14] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[22], (-3.10529502f * r[4] + 0.801783726f * r[6] - q * nx) * ib,
+                 (3.10529502f * r[2] + 0.801783726f * r[0] - q * ny) * ib,
+                 (3.92792202f * r[5] - q * nz) * ib);
     q = lr * y[23];
-    SHLIGHT_SET3(out_grad[23], (-3.67423461f * (y[14] * ir) - q * nx) * ib,
-                 (3.67423461f * (y[10] * ir) - q * ny) * ib, (3.0f * (y[15] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[23], (-3.67423461f * r[5] - q * nx) * ib,
+                 (3.67423461f * r[1] - q * ny) * ib, (3.0f * r[6] - q * nz) * ib);
     q = lr * y[24];
-    SHLIGHT_SET3(out_grad[24], (-4.24264069f * (y[15] * ir) - q * nx) * ib,
-                 (4.24264069f * (y[9] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[24], (-4.24264069f * r[6] - q * nx) * ib,
+                 (4.24264069f * r[0] - q * ny) * ib, -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 5
   if (n > 5) {
     lr = 5.0f * ir;
+    r[0] = y[16] * ir;
+    r[1] = y[17] * ir;
+    r[2] = y[18] * ir;
+    r[3] = y[19] * ir;
+    r[4] = y[20] * ir;
+    r[5] = y[21] * ir;
+    r[6] = y[22] * ir;
+    r[7] = y[23] * ir;
+    r[8] = y[24] * ir;
     q = lr * y[25];
-    SHLIGHT_SET3(out_grad[25], (-5.24404424f * (y[16] * ir) - q * nx) * ib,
-                 (-5.24404424f * (y[24] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[25], (-5.24404424f * r[0] - q * nx) * ib,
+                 (-5.24404424f * r[8] - q * ny) * ib, -q * nz * ib);
     q = lr * y[26];
-    SHLIGHT_SET3(out_grad[26], (-4.69041576f * (y[17] * ir) - q * nx) * ib,
-                 (-4.69041576f * (y[23] * ir) - q * ny) * ib,
-                 (3.31662479f * (y[16] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[26], (-4.69041576f * r[1] - q * nx) * ib,
+                 (-4.69041576f * r[7] - q * ny) * ib, (3.31662479f * r[0] - q * nz) * ib);
     q = lr * y[27];
-    SHLIGHT_SET3(out_grad[27],
-                 (-4.13655788f * (y[18] * ir) + 0.78173596f * (y[16] * ir) - q * nx) * ib,
-                 (-4.13655788f * (y[22] * ir) + -0.78173596f * (y[24] * ir) - q * ny) * ib,
-                 (4.42216639f * (y[17] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[27], (-4.13655788f * r[2] + 0.78173596f * r[0] - q * nx) * ib,
+                 (-4.13655788f * r[6] + -0.78173596f * r[8] - q * ny) * ib,
+                 (4.42216639f * r[1] - q * nz) * ib);
     q = lr * y[28];
-    SHLIGHT_SET3(out_grad[28],
-                 (-3.58236421f * (y[19] * ir) + 1.3540064f * (y[17] * ir) - q * nx) * ib,
-                 (-3.58236421f * (y[21] * ir) + -1.3540064f * (y[23] * ir) - q * ny) * ib,
-                 (5.06622805f * (y[18] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[28], (-3.58236421f * r[3] + 1.3540064f * r[1] - q * nx) * ib,
+                 (-3.58236421f * r[5] + -1.3540064f * r[7] - q * ny) * ib,
+                 (5.06622805f * r[2] - q * nz) * ib);
     q = lr * y[29];
-    SHLIGHT_SET3(out_grad[29], (1.91485422f * (y[18] * ir) - q * nx) * ib,
-                 (-4.28174419f * (y[20] * ir) + -1.91485422f * (y[22] * ir) - q * ny) * ib,
-                 (5.4160256f * (y[19] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[29], (1.91485422f * r[2] - q * nx) * ib,
+                 (-4.28174419f * r[4] + -1.91485422f * r[6] - q * ny) * ib,
+                 (5.4160256f * r[3] - q * nz) * ib);
     q = lr * y[30];
-    SHLIGHT_SET3(out_grad[30], (3.49602949f * (y[21] * ir) - q * nx) * ib,
-                 (3.49602949f * (y[19] * ir) - q * ny) * ib,
-                 (5.52770798f * (y[20] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[30], (3.49602949f * r[5] - q * nx) * ib,
+                 (3.49602949f * r[3] - q * ny) * ib, (5.52770798f * r[4] - q * nz) * ib);
     q = lr * y[31];
-    SHLIGHT_SET3(
-        out_grad[31], (-4.28174419f * (y[20] * ir) + 1.91485422f * (y[22] * ir) - q * nx) * ib,
-        (1.91485422f * (y[18] * ir) - q * ny) * ib, (5.4160256f * (y[21] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[31], (-4.28174419f * r[4] + 1.91485422f * r[6] - q * nx) * ib,
+                 (1.91485422f * r[2] - q * ny) * ib, (5.4160256f * r[5] - q * nz) * ib);
     q = lr * y[32];
-    SHLIGHT_SET3(out_grad[32],
-                 (-3.58236421f * (y[21] * ir) + 1.3540064f * (y[23] * ir) - q * nx) * ib,
-                 (3.58236421f * (y[19] * ir) + 1.3540064f * (y[17] * ir) - q * ny) * ib,
-                 (5.06622805f * (y[22] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[32], (-3.58236421f * r[5] + 1.3540064f * r[7] - q * nx) * ib,
+                 (3.58236421f * r[3] + 1.3540064f * r[1] - q * ny) * ib,
+                 (5.06622805f * r[6] - q * nz) * ib);
     q = lr * y[33];
-    SHLIGHT_SET3(out_grad[33],
-                 (-4.13655788f * (y[22] * ir) + 0.78173596f * (y[24] * ir) - q * nx) * ib,
-                 (4.13655788f * (y[18] * ir) + 0.78173596f * (y[16] * ir) - q * ny) * ib,
-                 (4.42216639f * (y[23] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[33], (-4.13655788f * r[6] + 0.78173596f * r[8] - q * nx) * ib,
+                 (4.13655788f * r[2] + 0.78173596f * r[0] - q * ny) * ib,
+                 (4.42216639f * r[7] - q * nz) * ib);
     q = lr * y[34];
-    SHLIGHT_SET3(out_grad[34], (-4.69041576f * (y[23] * ir) - q * nx) * ib,
-                 (4.69041576f * (y[17] * ir) - q * ny) * ib,
-                 (3.31662479f * (y[24] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[34], (-4.69041576f * r[7] - q * nx) * ib,
+                 (4.69041576f * r[1] - q * ny) * ib, (3.31662479f * r[8] - q * nz) * ib);
     q = lr * y[35];
-    SHLIGHT_SET3(out_grad[35], (-5.24404424f * (y[24] * ir) - q * nx) * ib,
-                 (5.24404424f * (y[16] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[35], (-5.24404424f * r[8] - q * nx) * ib,
+                 (5.24404424f * r[0] - q * ny) * ib, -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 6
   if (n > 6) {
     lr = 6.0f * ir;
+    r[0] = y[25] * ir;
+    r[1] = y[26] * ir;
+    r[2] = y[27] * ir;
+    r[3] = y[28] * ir;
+    r[4] = y[29] * ir;
+    r[5] = y[30] * ir;
+    r[6] = y[31] * ir;
+    r[7] = y[32] * ir;
+    r[8] = y[33] * ir;
+    r[9] = y[34] * ir;
+    r[10] = y[35] * ir;
     q = lr * y[36];
-    SHLIGHT_SET3(out_grad[36], (-6.244998f * (y[25] * ir) - q * nx) * ib,
-                 (-6.244998f * (y[35] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[36], (-6.244998f * r[0] - q * nx) * ib,
+                 (-6.244998f * r[10] - q * ny) * ib, -q * nz * ib);
     q = lr * y[37];
-    SHLIGHT_SET3(out_grad[37], (-5.70087713f * (y[26] * ir) - q * nx) * ib,
-                 (-5.70087713f * (y[34] * ir) - q * ny) * ib,
-                 (3.60555128f * (y[25] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[37], (-5.70087713f * r[1] - q * nx) * ib,
+                 (-5.70087713f * r[9] - q * ny) * ib, (3.60555128f * r[0] - q * nz) * ib);
     q = lr * y[38];
-    SHLIGHT_SET3(out_grad[38],
-                 (-5.15663738f * (y[27] * ir) + 0.768706115f * (y[25] * ir) - q * nx) * ib,
-                 (-5.15663738f * (y[33] * ir) + -0.768706115f * (y[35] * ir) - q * ny) * ib,
-                 (4.86172435f * (y[26] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[38], (-5.15663738f * r[2] + 0.768706115f * r[0] - q * nx) * ib,
+                 (-5.15663738f * r[8] + -0.768706115f * r[10] - q * ny) * ib,
+                 (4.86172435f * r[1] - q * nz) * ib);
     q = lr * y[39];
-    SHLIGHT_SET3(out_grad[39],
-                 (-4.61223669f * (y[28] * ir) + 1.33143805f * (y[26] * ir) - q * nx) * ib,
-                 (-4.61223669f * (y[32] * ir) + -1.33143805f * (y[34] * ir) - q * ny) * ib,
-                 (5.64881323f * (y[27] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[39], (-4.61223669f * r[3] + 1.33143805f * r[1] - q * nx) * ib,
+                 (-4.61223669f * r[7] + -1.33143805f * r[9] - q * ny) * ib,
+                 (5.64881323f * r[2] - q * nz) * ib);
     q = lr * y[40];
-    SHLIGHT_SET3(out_grad[40],
-                 (-4.06761042f * (y[29] * ir) + 1.88293774f * (y[27] * ir) - q * nx) * ib,
-                 (-4.06761042f * (y[31] * ir) + -1.88293774f * (y[33] * ir) - q * ny) * ib,
-                 (6.14964892f * (y[28] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[40], (-4.06761042f * r[4] + 1.88293774f * r[2] - q * nx) * ib,
+                 (-4.06761042f * r[6] + -1.88293774f * r[8] - q * ny) * ib,
+                 (6.14964892f * r[3] - q * nz) * ib);
     q = lr * y[41];
-    SHLIGHT_SET3(out_grad[41], (2.43086217f * (y[28] * ir) - q * nx) * ib,
-                 (-4.981785f * (y[30] * ir) + -2.43086217f * (y[32] * ir) - q * ny) * ib,
-                 (6.43145678f * (y[29] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[41], (2.43086217f * r[3] - q * nx) * ib,
+                 (-4.981785f * r[5] + -2.43086217f * r[7] - q * ny) * ib,
+                 (6.43145678f * r[4] - q * nz) * ib);
     q = lr * y[42];
-    SHLIGHT_SET3(out_grad[42], (4.21037679f * (y[31] * ir) - q * nx) * ib,
-                 (4.21037679f * (y[29] * ir) - q * ny) * ib,
-                 (6.52268768f * (y[30] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[42], (4.21037679f * r[6] - q * nx) * ib,
+                 (4.21037679f * r[4] - q * ny) * ib, (6.52268768f * r[5] - q * nz) * ib);
     q = lr * y[43];
-    SHLIGHT_SET3(
-        out_grad[43], (-4.981785f * (y[30] * ir) + 2.43086217f * (y[32] * ir) - q * nx) * ib,
-        (2.43086217f * (y[28] * ir) - q * ny) * ib, (6.43145678f * (y[31] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[43], (-4.981785f * r[5] + 2.43086217f * r[7] - q * nx) * ib,
+                 (2.43086217f * r[3] - q * ny) * ib, (6.43145678f * r[6] - q * nz) * ib);
     q = lr * y[44];
-    SHLIGHT_SET3(out_grad[44],
-                 (-4.06761042f * (y[31] * ir) + 1.88293774f * (y[33] * ir) - q * nx) * ib,
-                 (4.06761042f * (y[29] * ir) + 1.88293774f * (y[27] * ir) - q * ny) * ib,
-                 (6.14964892f * (y[32] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[44], (-4.06761042f * r[6] + 1.88293774f * r[8] - q * nx) * ib,
+                 (4.06761042f * r[4] + 1.88293774f * r[2] - q * ny) * ib,
+                 (6.14964892f * r[7] - q * nz) * ib);
     q = lr * y[45];
-    SHLIGHT_SET3(out_grad[45],
-                 (-4.61223669f * (y[32] * ir) + 1.33143805f * (y[34] * ir) - q * nx) * ib,
-                 (4.61223669f * (y[28] * ir) + 1.33143805f * (y[26] * ir) - q * ny) * ib,
-                 (5.64881323f * (y[33] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[45], (-4.61223669f * r[7] + 1.33143805f * r[9] - q * nx) * ib,
+                 (4.61223669f * r[3] + 1.33143805f * r[1] - q * ny) * ib,
+                 (5.64881323f * r[8] - q * nz) * ib);
     q = lr * y[46];
-    SHLIGHT_SET3(out_grad[46],
-                 (-5.15663738f * (y[33] * ir) + 0.768706115f * (y[35] * ir) - q * nx) * ib,
-                 (5.15663738f * (y[27] * ir) + 0.768706115f * (y[25] * ir) - q * ny) * ib,
-                 (4.86172435f * (y[34] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[46], (-5.15663738f * r[8] + 0.768706115f * r[10] - q * nx) * ib,
+                 (5.15663738f * r[2] + 0.768706115f * r[0] - q * ny) * ib,
+                 (4.86172435f * r[9] - q * nz) * ib);
     q = lr * y[47];
-    SHLIGHT_SET3(out_grad[47], (-5.70087713f * (y[34] * ir) - q * nx) * ib,
-                 (5.70087713f * (y[26] * ir) - q * ny) * ib,
-                 (3.60555128f * (y[35] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[47], (-5.70087713f * r[9] - q * nx) * ib,
+                 (5.70087713f * r[1] - q * ny) * ib, (3.60555128f * r[10] - q * nz) * ib);
     q = lr * y[48];
-    SHLIGHT_SET3(out_grad[48], (-6.244998f * (y[35] * ir) - q * nx) * ib,
-                 (6.244998f * (y[25] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[48], (-6.244998f * r[10] - q * nx) * ib, (6.244998f * r[0] - q * ny) * ib,
+                 -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 7
   if (n > 7) {
     lr = 7.0f * ir;
+    r[0] = y[36] * ir;
+    r[1] = y[37] * ir;
+    r[2] = y[38] * ir;
+    r[3] = y[39] * ir;
+    r[4] = y[40] * ir;
+    r[5] = y[41] * ir;
+    r[6] = y[42] * ir;
+    r[7] = y[43] * ir;
+    r[8] = y[44] * ir;
+    r[9] = y[45] * ir;
+    r[10] = y[46] * ir;
+    r[11] = y[47] * ir;
+    r[12] = y[48] * ir;
     q = lr * y[49];
-    SHLIGHT_SET3(out_grad[49], (-7.24568837f * (y[36] * ir) - q * nx) * ib,
-                 (-7.24568837f * (y[48] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[49], (-7.24568837f * r[0] - q * nx) * ib,
+                 (-7.24568837f * r[12] - q * ny) * ib, -q * nz * ib);
     q = lr * y[50];
-    SHLIGHT_SET3(out_grad[50], (-6.70820393f * (y[37] * ir) - q * nx) * ib,
-                 (-6.70820393f * (y[47] * ir) - q * ny) * ib,
-                 (3.87298335f * (y[36] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[50], (-6.70820393f * r[1] - q * nx) * ib,
+                 (-6.70820393f * r[11] - q * ny) * ib, (3.87298335f * r[0] - q * nz) * ib);
     q = lr * y[51];
-    SHLIGHT_SET3(out_grad[51],
-                 (-6.17065013f * (y[38] * ir) + 0.759554525f * (y[36] * ir) - q * nx) * ib,
-                 (-6.17065013f * (y[46] * ir) + -0.759554525f * (y[48] * ir) - q * ny) * ib,
-                 (5.26234812f * (y[37] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[51], (-6.17065013f * r[2] + 0.759554525f * r[0] - q * nx) * ib,
+                 (-6.17065013f * r[10] + -0.759554525f * r[12] - q * ny) * ib,
+                 (5.26234812f * r[1] - q * nz) * ib);
     q = lr * y[52];
-    SHLIGHT_SET3(out_grad[52],
-                 (-5.63300712f * (y[39] * ir) + 1.31558703f * (y[37] * ir) - q * nx) * ib,
-                 (-5.63300712f * (y[45] * ir) + -1.31558703f * (y[47] * ir) - q * ny) * ib,
-                 (6.17065013f * (y[38] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[52], (-5.63300712f * r[3] + 1.31558703f * r[1] - q * nx) * ib,
+                 (-5.63300712f * r[9] + -1.31558703f * r[11] - q * ny) * ib,
+                 (6.17065013f * r[2] - q * nz) * ib);
     q = lr * y[53];
-    SHLIGHT_SET3(out_grad[53],
-                 (-5.09524665f * (y[40] * ir) + 1.86052102f * (y[38] * ir) - q * nx) * ib,
-                 (-5.09524665f * (y[44] * ir) + -1.86052102f * (y[46] * ir) - q * ny) * ib,
-                 (6.7936622f * (y[39] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[53], (-5.09524665f * r[4] + 1.86052102f * r[2] - q * nx) * ib,
+                 (-5.09524665f * r[8] + -1.86052102f * r[10] - q * ny) * ib,
+                 (6.7936622f * r[3] - q * nz) * ib);
     q = lr * y[54];
-    SHLIGHT_SET3(out_grad[54],
-                 (-4.55732715f * (y[41] * ir) + 2.40192231f * (y[39] * ir) - q * nx) * ib,
-                 (-4.55732715f * (y[43] * ir) + -2.40192231f * (y[45] * ir) - q * ny) * ib,
-                 (7.20576692f * (y[40] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[54], (-4.55732715f * r[5] + 2.40192231f * r[3] - q * nx) * ib,
+                 (-4.55732715f * r[7] + -2.40192231f * r[9] - q * ny) * ib,
+                 (7.20576692f * r[4] - q * nz) * ib);
     q = lr * y[55];
-    SHLIGHT_SET3(out_grad[55], (2.94174203f * (y[40] * ir) - q * nx) * ib,
-                 (-5.6839856f * (y[42] * ir) + -2.94174203f * (y[44] * ir) - q * ny) * ib,
-                 (7.44208408f * (y[41] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[55], (2.94174203f * r[4] - q * nx) * ib,
+                 (-5.6839856f * r[6] + -2.94174203f * r[8] - q * ny) * ib,
+                 (7.44208408f * r[5] - q * nz) * ib);
     q = lr * y[56];
-    SHLIGHT_SET3(out_grad[56], (4.92247592f * (y[43] * ir) - q * nx) * ib,
-                 (4.92247592f * (y[41] * ir) - q * ny) * ib,
-                 (7.51920618f * (y[42] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[56], (4.92247592f * r[7] - q * nx) * ib,
+                 (4.92247592f * r[5] - q * ny) * ib, (7.51920618f * r[6] - q * nz) * ib);
     q = lr * y[57];
-    SHLIGHT_SET3(
-        out_grad[57], (-5.6839856f * (y[42] * ir) + 2.94174203f * (y[44] * ir) - q * nx) * ib,
-        (2.94174203f * (y[40] * ir) - q * ny) * ib, (7.44208408f * (y[43] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[57], (-5.6839856f * r[6] + 2.94174203f * r[8] - q * nx) * ib,
+                 (2.94174203f * r[4] - q * ny) * ib, (7.44208408f * r[7] - q * nz) * ib);
     q = lr * y[58];
-    SHLIGHT_SET3(out_grad[58],
-                 (-4.55732715f * (y[43] * ir) + 2.40192231f * (y[45] * ir) - q * nx) * ib,
-                 (4.55732715f * (y[41] * ir) + 2.40192231f * (y[39] * ir) - q * ny) * ib,
-                 (7.20576692f * (y[44] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[58], (-4.55732715f * r[7] + 2.40192231f * r[9] - q * nx) * ib,
+                 (4.55732715f * r[5] + 2.40192231f * r[3] - q * ny) * ib,
+                 (7.20576692f * r[8] - q * nz) * ib);
     q = lr * y[59];
-    SHLIGHT_SET3(out_grad[59],
-                 (-5.09524665f * (y[44] * ir) + 1.86052102f * (y[46] * ir) - q * nx) * ib,
-                 (5.09524665f * (y[40] * ir) + 1.86052102f * (y[38] * ir) - q * ny) * ib,
-                 (6.7936622f * (y[45] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[59], (-5.09524665f * r[8] + 1.86052102f * r[10] - q * nx) * ib,
+                 (5.09524665f * r[4] + 1.86052102f * r[2] - q * ny) * ib,
+                 (6.7936622f * r[9] - q * nz) * ib);
     q = lr * y[60];
-    SHLIGHT_SET3(out_grad[60],
-                 (-5.63300712f * (y[45] * ir) + 1.31558703f * (y[47] * ir) - q * nx) * ib,
-                 (5.63300712f * (y[39] * ir) + 1.31558703f * (y[37] * ir) - q * ny) * ib,
-                 (6.17065013f * (y[46] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[60], (-5.63300712f * r[9] + 1.31558703f * r[11] - q * nx) * ib,
+                 (5.63300712f * r[3] + 1.31558703f * r[1] - q * ny) * ib,
+                 (6.17065013f * r[10] - q * nz) * ib);
     q = lr * y[61];
-    SHLIGHT_SET3(out_grad[61],
-                 (-6.17065013f * (y[46] * ir) + 0.759554525f * (y[48] * ir) - q * nx) * ib,
-                 (6.17065013f * (y[38] * ir) + 0.759554525f * (y[36] * ir) - q * ny) * ib,
-                 (5.26234812f * (y[47] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[61], (-6.17065013f * r[10] + 0.759554525f * r[12] - q * nx) * ib,
+                 (6.17065013f * r[2] + 0.759554525f * r[0] - q * ny) * ib,
+                 (5.26234812f * r[11] - q * nz) * ib);
     q = lr * y[62];
-    SHLIGHT_SET3(out_grad[62], (-6.70820393f * (y[47] * ir) - q * nx) * ib,
-                 (6.70820393f * (y[37] * ir) - q * ny) * ib,
-                 (3.87298335f * (y[48] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[62], (-6.70820393f * r[11] - q * nx) * ib,
+                 (6.70820393f * r[1] - q * ny) * ib, (3.87298335f * r[12] - q * nz) * ib);
     q = lr * y[63];
-    SHLIGHT_SET3(out_grad[63], (-7.24568837f * (y[48] * ir) - q * nx) * ib,
-                 (7.24568837f * (y[36] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[63], (-7.24568837f * r[12] - q * nx) * ib,
+                 (7.24568837f * r[0] - q * ny) * ib, -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 8
   if (n > 8) {
     lr = 8.0f * ir;
+    r[0] = y[49] * ir;
+    r[1] = y[50] * ir;
+    r[2] = y[51] * ir;
+    r[3] = y[52] * ir;
+    r[4] = y[53] * ir;
+    r[5] = y[54] * ir;
+    r[6] = y[55] * ir;
+    r[7] = y[56] * ir;
+    r[8] = y[57] * ir;
+    r[9] = y[58] * ir;
+    r[10] = y[59] * ir;
+    r[11] = y[60] * ir;
+    r[12] = y[61] * ir;
+    r[13] = y[62] * ir;
+    r[14] = y[63] * ir;
     q = lr * y[64];
-    SHLIGHT_SET3(out_grad[64], (-8.24621125f * (y[49] * ir) - q * nx) * ib,
-                 (-8.24621125f * (y[63] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[64], (-8.24621125f * r[0] - q * nx) * ib,
+                 (-8.24621125f * r[14] - q * ny) * ib, -q * nz * ib);
     q = lr * y[65];
-    SHLIGHT_SET3(out_grad[65], (-7.71362431f * (y[50] * ir) - q * nx) * ib,
-                 (-7.71362431f * (y[62] * ir) - q * ny) * ib,
-                 (4.12310563f * (y[49] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[65], (-7.71362431f * r[1] - q * nx) * ib,
+                 (-7.71362431f * r[13] - q * ny) * ib, (4.12310563f * r[0] - q * nz) * ib);
     q = lr * y[66];
-    SHLIGHT_SET3(out_grad[66],
-                 (-7.18099343f * (y[51] * ir) + 0.752772653f * (y[49] * ir) - q * nx) * ib,
-                 (-7.18099343f * (y[61] * ir) + -0.752772653f * (y[63] * ir) - q * ny) * ib,
-                 (5.63323471f * (y[50] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[66], (-7.18099343f * r[2] + 0.752772653f * r[0] - q * nx) * ib,
+                 (-7.18099343f * r[12] + -0.752772653f * r[14] - q * ny) * ib,
+                 (5.63323471f * r[1] - q * nz) * ib);
     q = lr * y[67];
-    SHLIGHT_SET3(out_grad[67],
-                 (-6.64830806f * (y[52] * ir) + 1.30384048f * (y[50] * ir) - q * nx) * ib,
-                 (-6.64830806f * (y[60] * ir) + -1.30384048f * (y[62] * ir) - q * ny) * ib,
-                 (6.64830806f * (y[51] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[67], (-6.64830806f * r[3] + 1.30384048f * r[1] - q * nx) * ib,
+                 (-6.64830806f * r[11] + -1.30384048f * r[13] - q * ny) * ib,
+                 (6.64830806f * r[2] - q * nz) * ib);
     q = lr * y[68];
-    SHLIGHT_SET3(out_grad[68],
-                 (-6.11555394f * (y[53] * ir) + 1.84390889f * (y[51] * ir) - q * nx) * ib,
-                 (-6.11555394f * (y[59] * ir) + -1.84390889f * (y[61] * ir) - q * ny) * ib,
-                 (7.37563557f * (y[52] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[68], (-6.11555394f * r[4] + 1.84390889f * r[2] - q * nx) * ib,
+                 (-6.11555394f * r[10] + -1.84390889f * r[12] - q * ny) * ib,
+                 (7.37563557f * r[3] - q * nz) * ib);
     q = lr * y[69];
-    SHLIGHT_SET3(out_grad[69],
-                 (-5.58271141f * (y[54] * ir) + 2.38047614f * (y[52] * ir) - q * nx) * ib,
-                 (-5.58271141f * (y[58] * ir) + -2.38047614f * (y[60] * ir) - q * ny) * ib,
-                 (7.89514619f * (y[53] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[69], (-5.58271141f * r[5] + 2.38047614f * r[3] - q * nx) * ib,
+                 (-5.58271141f * r[9] + -2.38047614f * r[11] - q * ny) * ib,
+                 (7.89514619f * r[4] - q * nz) * ib);
     q = lr * y[70];
-    SHLIGHT_SET3(out_grad[70],
-                 (-5.04975247f * (y[55] * ir) + 2.91547595f * (y[53] * ir) - q * nx) * ib,
-                 (-5.04975247f * (y[57] * ir) + -2.91547595f * (y[59] * ir) - q * ny) * ib,
-                 (8.24621125f * (y[54] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[70], (-5.04975247f * r[6] + 2.91547595f * r[4] - q * nx) * ib,
+                 (-5.04975247f * r[8] + -2.91547595f * r[10] - q * ny) * ib,
+                 (8.24621125f * r[5] - q * nz) * ib);
     q = lr * y[71];
-    SHLIGHT_SET3(out_grad[71], (3.44963766f * (y[54] * ir) - q * nx) * ib,
-                 (-6.38748777f * (y[56] * ir) + -3.44963766f * (y[58] * ir) - q * ny) * ib,
-                 (8.44985207f * (y[55] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[71], (3.44963766f * r[5] - q * nx) * ib,
+                 (-6.38748777f * r[7] + -3.44963766f * r[9] - q * ny) * ib,
+                 (8.44985207f * r[6] - q * nz) * ib);
     q = lr * y[72];
-    SHLIGHT_SET3(out_grad[72], (5.63323471f * (y[57] * ir) - q * nx) * ib,
-                 (5.63323471f * (y[55] * ir) - q * ny) * ib,
-                 (8.51665036f * (y[56] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[72], (5.63323471f * r[8] - q * nx) * ib,
+                 (5.63323471f * r[6] - q * ny) * ib, (8.51665036f * r[7] - q * nz) * ib);
     q = lr * y[73];
-    SHLIGHT_SET3(
-        out_grad[73], (-6.38748777f * (y[56] * ir) + 3.44963766f * (y[58] * ir) - q * nx) * ib,
-        (3.44963766f * (y[54] * ir) - q * ny) * ib, (8.44985207f * (y[57] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[73], (-6.38748777f * r[7] + 3.44963766f * r[9] - q * nx) * ib,
+                 (3.44963766f * r[5] - q * ny) * ib, (8.44985207f * r[8] - q * nz) * ib);
     q = lr * y[74];
-    SHLIGHT_SET3(out_grad[74],
-                 (-5.04975247f * (y[57] * ir) + 2.91547595f * (y[59] * ir) - q * nx) * ib,
-                 (5.04975247f * (y[55] * ir) + 2.91547595f * (y[53] * ir) - q * ny) * ib,
-                 (8.24621125f * (y[58] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[74], (-5.04975247f * r[8] + 2.91547595f * r[10] - q * nx) * ib,
+                 (5.04975247f * r[6] + 2.91547595f * r[4] - q * ny) * ib,
+                 (8.24621125f * r[9] - q * nz) * ib);
     q = lr * y[75];
-    SHLIGHT_SET3(out_grad[75],
-                 (-5.58271141f * (y[58] * ir) + 2.38047614f * (y[60] * ir) - q * nx) * ib,
-                 (5.58271141f * (y[54] * ir) + 2.38047614f * (y[52] * ir) - q * ny) * ib,
-                 (7.89514619f * (y[59] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[75], (-5.58271141f * r[9] + 2.38047614f * r[11] - q * nx) * ib,
+                 (5.58271141f * r[5] + 2.38047614f * r[3] - q * ny) * ib,
+                 (7.89514619f * r[10] - q * nz) * ib);
     q = lr * y[76];
-    SHLIGHT_SET3(out_grad[76],
-                 (-6.11555394f * (y[59] * ir) + 1.84390889f * (y[61] * ir) - q * nx) * ib,
-                 (6.11555394f * (y[53] * ir) + 1.84390889f * (y[51] * ir) - q * ny) * ib,
-                 (7.37563557f * (y[60] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[76], (-6.11555394f * r[10] + 1.84390889f * r[12] - q * nx) * ib,
+                 (6.11555394f * r[4] + 1.84390889f * r[2] - q * ny) * ib,
+                 (7.37563557f * r[11] - q * nz) * ib);
     q = lr * y[77];
-    SHLIGHT_SET3(out_grad[77],
-                 (-6.64830806f * (y[60] * ir) + 1.30384048f * (y[62] * ir) - q * nx) * ib,
-                 (6.64830806f * (y[52] * ir) + 1.30384048f * (y[50] * ir) - q * ny) * ib,
-                 (6.64830806f * (y[61] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[77], (-6.64830806f * r[11] + 1.30384048f * r[13] - q * nx) * ib,
+                 (6.64830806f * r[3] + 1.30384048f * r[1] - q * ny) * ib,
+                 (6.64830806f * r[12] - q * nz) * ib);
     q = lr * y[78];
-    SHLIGHT_SET3(out_grad[78],
-                 (-7.18099343f * (y[61] * ir) + 0.752772653f * (y[63] * ir) - q * nx) * ib,
-                 (7.18099343f * (y[51] * ir) + 0.752772653f * (y[49] * ir) - q * ny) * ib,
-                 (5.63323471f * (y[62] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[78], (-7.18099343f * r[12] + 0.752772653f * r[14] - q * nx) * ib,
+                 (7.18099343f * r[2] + 0.752772653f * r[0] - q * ny) * ib,
+                 (5.63323471f * r[13] - q * nz) * ib);
     q = lr * y[79];
-    SHLIGHT_SET3(out_grad[79], (-7.71362431f * (y[62] * ir) - q * nx) * ib,
-                 (7.71362431f * (y[50] * ir) - q * ny) * ib,
-                 (4.12310563f * (y[63] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[79], (-7.71362431f * r[13] - q * nx) * ib,
+                 (7.71362431f * r[1] - q * ny) * ib, (4.12310563f * r[14] - q * nz) * ib);
     q = lr * y[80];
-    SHLIGHT_SET3(out_grad[80], (-8.24621125f * (y[63] * ir) - q * nx) * ib,
-                 (8.24621125f * (y[49] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[80], (-8.24621125f * r[14] - q * nx) * ib,
+                 (8.24621125f * r[0] - q * ny) * ib, -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 9
   if (n > 9) {
     lr = 9.0f * ir;
+    r[0] = y[64] * ir;
+    r[1] = y[65] * ir;
+    r[2] = y[66] * ir;
+    r[3] = y[67] * ir;
+    r[4] = y[68] * ir;
+    r[5] = y[69] * ir;
+    r[6] = y[70] * ir;
+    r[7] = y[71] * ir;
+    r[8] = y[72] * ir;
+    r[9] = y[73] * ir;
+    r[10] = y[74] * ir;
+    r[11] = y[75] * ir;
+    r[12] = y[76] * ir;
+    r[13] = y[77] * ir;
+    r[14] = y[78] * ir;
+    r[15] = y[79] * ir;
+    r[16] = y[80] * ir;
     q = lr * y[81];
-    SHLIGHT_SET3(out_grad[81], (-9.246621f * (y[64] * ir) - q * nx) * ib,
-                 (-9.246621f * (y[80] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[81], (-9.246621f * r[0] - q * nx) * ib,
+                 (-9.246621f * r[16] - q * ny) * ib, -q * nz * ib);
     q = lr * y[82];
-    SHLIGHT_SET3(out_grad[82], (-8.71779789f * (y[65] * ir) - q * nx) * ib,
-                 (-8.71779789f * (y[79] * ir) - q * ny) * ib,
-                 (4.35889894f * (y[64] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[82], (-8.71779789f * r[1] - q * nx) * ib,
+                 (-8.71779789f * r[15] - q * ny) * ib, (4.35889894f * r[0] - q * nz) * ib);
     q = lr * y[83];
-    SHLIGHT_SET3(out_grad[83],
-                 (-8.1889452f * (y[66] * ir) + 0.747545002f * (y[64] * ir) - q * nx) * ib,
-                 (-8.1889452f * (y[78] * ir) + -0.747545002f * (y[80] * ir) - q * ny) * ib,
-                 (5.98036001f * (y[65] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[83], (-8.1889452f * r[2] + 0.747545002f * r[0] - q * nx) * ib,
+                 (-8.1889452f * r[14] + -0.747545002f * r[16] - q * ny) * ib,
+                 (5.98036001f * r[1] - q * nz) * ib);
     q = lr * y[84];
-    SHLIGHT_SET3(out_grad[84],
-                 (-7.66005683f * (y[67] * ir) + 1.29478592f * (y[65] * ir) - q * nx) * ib,
-                 (-7.66005683f * (y[77] * ir) + -1.29478592f * (y[79] * ir) - q * ny) * ib,
-                 (7.09183458f * (y[66] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[84], (-7.66005683f * r[3] + 1.29478592f * r[1] - q * nx) * ib,
+                 (-7.66005683f * r[13] + -1.29478592f * r[15] - q * ny) * ib,
+                 (7.09183458f * r[2] - q * nz) * ib);
     q = lr * y[85];
-    SHLIGHT_SET3(out_grad[85],
-                 (-7.13112482f * (y[68] * ir) + 1.83110381f * (y[66] * ir) - q * nx) * ib,
-                 (-7.13112482f * (y[76] * ir) + -1.83110381f * (y[78] * ir) - q * ny) * ib,
-                 (7.91127267f * (y[67] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[85], (-7.13112482f * r[4] + 1.83110381f * r[2] - q * nx) * ib,
+                 (-7.13112482f * r[12] + -1.83110381f * r[14] - q * ny) * ib,
+                 (7.91127267f * r[3] - q * nz) * ib);
     q = lr * y[86];
-    SHLIGHT_SET3(out_grad[86],
-                 (-6.60213869f * (y[69] * ir) + 2.36394486f * (y[67] * ir) - q * nx) * ib,
-                 (-6.60213869f * (y[75] * ir) + -2.36394486f * (y[77] * ir) - q * ny) * ib,
-                 (8.5233244f * (y[68] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[86], (-6.60213869f * r[5] + 2.36394486f * r[3] - q * nx) * ib,
+                 (-6.60213869f * r[11] + -2.36394486f * r[13] - q * ny) * ib,
+                 (8.5233244f * r[4] - q * nz) * ib);
     q = lr * y[87];
-    SHLIGHT_SET3(out_grad[87],
-                 (-6.0730843f * (y[70] * ir) + 2.89522934f * (y[68] * ir) - q * nx) * ib,
-                 (-6.0730843f * (y[74] * ir) + -2.89522934f * (y[76] * ir) - q * ny) * ib,
-                 (8.97054002f * (y[69] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[87], (-6.0730843f * r[6] + 2.89522934f * r[4] - q * nx) * ib,
+                 (-6.0730843f * r[10] + -2.89522934f * r[12] - q * ny) * ib,
+                 (8.97054002f * r[5] - q * nz) * ib);
     q = lr * y[88];
-    SHLIGHT_SET3(out_grad[88],
-                 (-5.54394211f * (y[71] * ir) + 3.42568156f * (y[69] * ir) - q * nx) * ib,
-                 (-5.54394211f * (y[73] * ir) + -3.42568156f * (y[75] * ir) - q * ny) * ib,
-                 (9.27678951f * (y[70] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[88], (-5.54394211f * r[7] + 3.42568156f * r[5] - q * nx) * ib,
+                 (-5.54394211f * r[9] + -3.42568156f * r[11] - q * ny) * ib,
+                 (9.27678951f * r[6] - q * nz) * ib);
     q = lr * y[89];
-    SHLIGHT_SET3(out_grad[89], (3.95563634f * (y[70] * ir) - q * nx) * ib,
-                 (-7.09183458f * (y[72] * ir) + -3.95563634f * (y[74] * ir) - q * ny) * ib,
-                 (9.45577943f * (y[71] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[89], (3.95563634f * r[6] - q * nx) * ib,
+                 (-7.09183458f * r[8] + -3.95563634f * r[10] - q * ny) * ib,
+                 (9.45577943f * r[7] - q * nz) * ib);
     q = lr * y[90];
-    SHLIGHT_SET3(out_grad[90], (6.34312968f * (y[73] * ir) - q * nx) * ib,
-                 (6.34312968f * (y[71] * ir) - q * ny) * ib,
-                 (9.51469452f * (y[72] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[90], (6.34312968f * r[9] - q * nx) * ib,
+                 (6.34312968f * r[7] - q * ny) * ib, (9.51469452f * r[8] - q * nz) * ib);
     q = lr * y[91];
-    SHLIGHT_SET3(
-        out_grad[91], (-7.09183458f * (y[72] * ir) + 3.95563634f * (y[74] * ir) - q * nx) * ib,
-        (3.95563634f * (y[70] * ir) - q * ny) * ib, (9.45577943f * (y[73] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[91], (-7.09183458f * r[8] + 3.95563634f * r[10] - q * nx) * ib,
+                 (3.95563634f * r[6] - q * ny) * ib, (9.45577943f * r[9] - q * nz) * ib);
     q = lr * y[92];
-    SHLIGHT_SET3(out_grad[92],
-                 (-5.54394211f * (y[73] * ir) + 3.42568156f * (y[75] * ir) - q * nx) * ib,
-                 (5.54394211f * (y[71] * ir) + 3.42568156f * (y[69] * ir) - q * ny) * ib,
-                 (9.27678951f * (y[74] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[92], (-5.54394211f * r[9] + 3.42568156f * r[11] - q * nx) * ib,
+                 (5.54394211f * r[7] + 3.42568156f * r[5] - q * ny) * ib,
+                 (9.27678951f * r[10] - q * nz) * ib);
     q = lr * y[93];
-    SHLIGHT_SET3(out_grad[93],
-                 (-6.0730843f * (y[74] * ir) + 2.89522934f * (y[76] * ir) - q * nx) * ib,
-                 (6.0730843f * (y[70] * ir) + 2.89522934f * (y[68] * ir) - q * ny) * ib,
-                 (8.97054002f * (y[75] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[93], (-6.0730843f * r[10] + 2.89522934f * r[12] - q * nx) * ib,
+                 (6.0730843f * r[6] + 2.89522934f * r[4] - q * ny) * ib,
+                 (8.97054002f * r[11] - q * nz) * ib);
     q = lr * y[94];
-    SHLIGHT_SET3(out_grad[94],
-                 (-6.60213869f * (y[75] * ir) + 2.36394486f * (y[77] * ir) - q * nx) * ib,
-                 (6.60213869f * (y[69] * ir) + 2.36394486f * (y[67] * ir) - q * ny) * ib,
-                 (8.5233244f * (y[76] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[94], (-6.60213869f * r[11] + 2.36394486f * r[13] - q * nx) * ib,
+                 (6.60213869f * r[5] + 2.36394486f * r[3] - q * ny) * ib,
+                 (8.5233244f * r[12] - q * nz) * ib);
     q = lr * y[95];
-    SHLIGHT_SET3(out_grad[95],
-                 (-7.13112482f * (y[76] * ir) + 1.83110381f * (y[78] * ir) - q * nx) * ib,
-                 (7.13112482f * (y[68] * ir) + 1.83110381f * (y[66] * ir) - q * ny) * ib,
-                 (7.91127267f * (y[77] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[95], (-7.13112482f * r[12] + 1.83110381f * r[14] - q * nx) * ib,
+                 (7.13112482f * r[4] + 1.83110381f * r[2] - q * ny) * ib,
+                 (7.91127267f * r[13] - q * nz) * ib);
     q = lr * y[96];
-    SHLIGHT_SET3(out_grad[96],
-                 (-7.66005683f * (y[77] * ir) + 1.29478592f * (y[79] * ir) - q * nx) * ib,
-                 (7.66005683f * (y[67] * ir) + 1.29478592f * (y[65] * ir) - q * ny) * ib,
-                 (7.09183458f * (y[78] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[96], (-7.66005683f * r[13] + 1.29478592f * r[15] - q * nx) * ib,
+                 (7.66005683f * r[3] + 1.29478592f * r[1] - q * ny) * ib,
+                 (7.09183458f * r[14] - q * nz) * ib);
     q = lr * y[97];
-    SHLIGHT_SET3(out_grad[97],
-                 (-8.1889452f * (y[78] * ir) + 0.747545002f * (y[80] * ir) - q * nx) * ib,
-                 (8.1889452f * (y[66] * ir) + 0.747545002f * (y[64] * ir) - q * ny) * ib,
-                 (5.98036001f * (y[79] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[97], (-8.1889452f * r[14] + 0.747545002f * r[16] - q * nx) * ib,
+                 (8.1889452f * r[2] + 0.747545002f * r[0] - q * ny) * ib,
+                 (5.98036001f * r[15] - q * nz) * ib);
     q = lr * y[98];
-    SHLIGHT_SET3(out_grad[98], (-8.71779789f * (y[79] * ir) - q * nx) * ib,
-                 (8.71779789f * (y[65] * ir) - q * ny) * ib,
-                 (4.35889894f * (y[80] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[98], (-8.71779789f * r[15] - q * nx) * ib,
+                 (8.71779789f * r[1] - q * ny) * ib, (4.35889894f * r[16] - q * nz) * ib);
     q = lr * y[99];
-    SHLIGHT_SET3(out_grad[99], (-9.246621f * (y[80] * ir) - q * nx) * ib,
-                 (9.246621f * (y[64] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[99], (-9.246621f * r[16] - q * nx) * ib, (9.246621f * r[0] - q * ny) * ib,
+                 -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 10
   if (n > 10) {
     lr = 10.0f * ir;
+    r[0] = y[81] * ir;
+    r[1] = y[82] * ir;
+    r[2] = y[83] * ir;
+    r[3] = y[84] * ir;
+    r[4] = y[85] * ir;
+    r[5] = y[86] * ir;
+    r[6] = y[87] * ir;
+    r[7] = y[88] * ir;
+    r[8] = y[89] * ir;
+    r[9] = y[90] * ir;
+    r[10] = y[91] * ir;
+    r[11] = y[92] * ir;
+    r[12] = y[93] * ir;
+    r[13] = y[94] * ir;
+    r[14] = y[95] * ir;
+    r[15] = y[96] * ir;
+    r[16] = y[97] * ir;
+    r[17] = y[98] * ir;
+    r[18] = y[99] * ir;
     q = lr * y[100];
-    SHLIGHT_SET3(out_grad[100], (-10.2469508f * (y[81] * ir) - q * nx) * ib,
-                 (-10.2469508f * (y[99] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[100], (-10.2469508f * r[0] - q * nx) * ib,
+                 (-10.2469508f * r[18] - q * ny) * ib, -q * nz * ib);
     q = lr * y[101];
-    SHLIGHT_SET3(out_grad[101], (-9.72111105f * (y[82] * ir) - q * nx) * ib,
-                 (-9.72111105f * (y[98] * ir) - q * ny) * ib,
-                 (4.58257569f * (y[81] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[101], (-9.72111105f * r[1] - q * nx) * ib,
+                 (-9.72111105f * r[17] - q * ny) * ib, (4.58257569f * r[0] - q * nz) * ib);
     q = lr * y[102];
-    SHLIGHT_SET3(out_grad[102],
-                 (-9.19525049f * (y[83] * ir) + 0.743391942f * (y[81] * ir) - q * nx) * ib,
-                 (-9.19525049f * (y[97] * ir) + -0.743391942f * (y[99] * ir) - q * ny) * ib,
-                 (6.3078898f * (y[82] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[102], (-9.19525049f * r[2] + 0.743391942f * r[0] - q * nx) * ib,
+                 (-9.19525049f * r[16] + -0.743391942f * r[18] - q * ny) * ib,
+                 (6.3078898f * r[1] - q * nz) * ib);
     q = lr * y[103];
-    SHLIGHT_SET3(out_grad[103],
-                 (-8.6693653f * (y[84] * ir) + 1.28759261f * (y[82] * ir) - q * nx) * ib,
-                 (-8.6693653f * (y[96] * ir) + -1.28759261f * (y[98] * ir) - q * ny) * ib,
-                 (7.50789059f * (y[83] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[103], (-8.6693653f * r[3] + 1.28759261f * r[1] - q * nx) * ib,
+                 (-8.6693653f * r[15] + -1.28759261f * r[17] - q * ny) * ib,
+                 (7.50789059f * r[2] - q * nz) * ib);
     q = lr * y[104];
-    SHLIGHT_SET3(out_grad[104],
-                 (-8.14345071f * (y[85] * ir) + 1.82093094f * (y[83] * ir) - q * nx) * ib,
-                 (-8.14345071f * (y[95] * ir) + -1.82093094f * (y[97] * ir) - q * ny) * ib,
-                 (8.41051973f * (y[84] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[104], (-8.14345071f * r[4] + 1.82093094f * r[2] - q * nx) * ib,
+                 (-8.14345071f * r[14] + -1.82093094f * r[16] - q * ny) * ib,
+                 (8.41051973f * r[3] - q * nz) * ib);
     q = lr * y[105];
-    SHLIGHT_SET3(out_grad[105],
-                 (-7.61750063f * (y[86] * ir) + 2.35081173f * (y[84] * ir) - q * nx) * ib,
-                 (-7.61750063f * (y[94] * ir) + -2.35081173f * (y[96] * ir) - q * ny) * ib,
-                 (9.10465468f * (y[85] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[105], (-7.61750063f * r[5] + 2.35081173f * r[3] - q * nx) * ib,
+                 (-7.61750063f * r[13] + -2.35081173f * r[15] - q * ny) * ib,
+                 (9.10465468f * r[4] - q * nz) * ib);
     q = lr * y[106];
-    SHLIGHT_SET3(out_grad[106],
-                 (-7.09150715f * (y[87] * ir) + 2.87914461f * (y[85] * ir) - q * nx) * ib,
-                 (-7.09150715f * (y[93] * ir) + -2.87914461f * (y[95] * ir) - q * ny) * ib,
-                 (9.63546082f * (y[86] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[106], (-7.09150715f * r[6] + 2.87914461f * r[4] - q * nx) * ib,
+                 (-7.09150715f * r[12] + -2.87914461f * r[14] - q * ny) * ib,
+                 (9.63546082f * r[5] - q * nz) * ib);
     q = lr * y[107];
-    SHLIGHT_SET3(out_grad[107],
-                 (-6.56545986f * (y[88] * ir) + 3.40664984f * (y[86] * ir) - q * nx) * ib,
-                 (-6.56545986f * (y[92] * ir) + -3.40664984f * (y[94] * ir) - q * ny) * ib,
-                 (10.0289056f * (y[87] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[107], (-6.56545986f * r[7] + 3.40664984f * r[5] - q * nx) * ib,
+                 (-6.56545986f * r[11] + -3.40664984f * r[13] - q * ny) * ib,
+                 (10.0289056f * r[6] - q * nz) * ib);
     q = lr * y[108];
-    SHLIGHT_SET3(out_grad[108],
-                 (-6.03934468f * (y[89] * ir) + 3.93366041f * (y[87] * ir) - q * nx) * ib,
-                 (-6.03934468f * (y[91] * ir) + -3.93366041f * (y[93] * ir) - q * ny) * ib,
-                 (10.3007409f * (y[88] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[108], (-6.03934468f * r[8] + 3.93366041f * r[6] - q * nx) * ib,
+                 (-6.03934468f * r[10] + -3.93366041f * r[12] - q * ny) * ib,
+                 (10.3007409f * r[7] - q * nz) * ib);
     q = lr * y[109];
-    SHLIGHT_SET3(out_grad[109], (4.46035165f * (y[88] * ir) - q * nx) * ib,
-                 (-7.79676046f * (y[90] * ir) + -4.46035165f * (y[92] * ir) - q * ny) * ib,
-                 (10.4604518f * (y[89] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[109], (4.46035165f * r[7] - q * nx) * ib,
+                 (-7.79676046f * r[9] + -4.46035165f * r[11] - q * ny) * ib,
+                 (10.4604518f * r[8] - q * nz) * ib);
     q = lr * y[110];
-    SHLIGHT_SET3(out_grad[110], (7.05243519f * (y[91] * ir) - q * nx) * ib,
-                 (7.05243519f * (y[89] * ir) - q * ny) * ib,
-                 (10.5131497f * (y[90] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[110], (7.05243519f * r[10] - q * nx) * ib,
+                 (7.05243519f * r[8] - q * ny) * ib, (10.5131497f * r[9] - q * nz) * ib);
     q = lr * y[111];
-    SHLIGHT_SET3(
-        out_grad[111], (-7.79676046f * (y[90] * ir) + 4.46035165f * (y[92] * ir) - q * nx) * ib,
-        (4.46035165f * (y[88] * ir) - q * ny) * ib, (10.4604518f * (y[91] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[111], (-7.79676046f * r[9] + 4.46035165f * r[11] - q * nx) * ib,
+                 (4.46035165f * r[7] - q * ny) * ib, (10.4604518f * r[10] - q * nz) * ib);
     q = lr * y[112];
-    SHLIGHT_SET3(out_grad[112],
-                 (-6.03934468f * (y[91] * ir) + 3.93366041f * (y[93] * ir) - q * nx) * ib,
-                 (6.03934468f * (y[89] * ir) + 3.93366041f * (y[87] * ir) - q * ny) * ib,
-                 (10.3007409f * (y[92] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[112], (-6.03934468f * r[10] + 3.93366041f * r[12] - q * nx) * ib,
+                 (6.03934468f * r[8] + 3.93366041f * r[6] - q * ny) * ib,
+                 (10.3007409f * r[11] - q * nz) * ib);
     q = lr * y[113];
-    SHLIGHT_SET3(out_grad[113],
-                 (-6.56545986f * (y[92] * ir) + 3.40664984f * (y[94] * ir) - q * nx) * ib,
-                 (6.56545986f * (y[88] * ir) + 3.40664984f * (y[86] * ir) - q * ny) * ib,
-                 (10.0289056f * (y[93] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[113], (-6.56545986f * r[11] + 3.40664984f * r[13] - q * nx) * ib,
+                 (6.56545986f * r[7] + 3.40664984f * r[5] - q * ny) * ib,
+                 (10.0289056f * r[12] - q * nz) * ib);
     q = lr * y[114];
-    SHLIGHT_SET3(out_grad[114],
-                 (-7.09150715f * (y[93] * ir) + 2.87914461f * (y[95] * ir) - q * nx) * ib,
-                 (7.09150715f * (y[87] * ir) + 2.87914461f * (y[85] * ir) - q * ny) * ib,
-                 (9.63546082f * (y[94] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[114], (-7.09150715f * r[12] + 2.87914461f * r[14] - q * nx) * ib,
+                 (7.09150715f * r[6] + 2.87914461f * r[4] - q * ny) * ib,
+                 (9.63546082f * r[13] - q * nz) * ib);
     q = lr * y[115];
-    SHLIGHT_SET3(out_grad[115],
-                 (-7.61750063f * (y[94] * ir) + 2.35081173f * (y[96] * ir) - q * nx) * ib,
-                 (7.61750063f * (y[86] * ir) + 2.35081173f * (y[84] * ir) - q * ny) * ib,
-                 (9.10465468f * (y[95] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[115], (-7.61750063f * r[13] + 2.35081173f * r[15] - q * nx) * ib,
+                 (7.61750063f * r[5] + 2.35081173f * r[3] - q * ny) * ib,
+                 (9.10465468f * r[14] - q * nz) * ib);
     q = lr * y[116];
-    SHLIGHT_SET3(out_grad[116],
-                 (-8.14345071f * (y[95] * ir) + 1.82093094f * (y[97] * ir) - q * nx) * ib,
-                 (8.14345071f * (y[85] * ir) + 1.82093094f * (y[83] * ir) - q * ny) * ib,
-                 (8.41051973f * (y[96] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[116], (-8.14345071f * r[14] + 1.82093094f * r[16] - q * nx) * ib,
+                 (8.14345071f * r[4] + 1.82093094f * r[2] - q * ny) * ib,
+                 (8.41051973f * r[15] - q * nz) * ib);
     q = lr * y[117];
-    SHLIGHT_SET3(out_grad[117],
-                 (-8.6693653f * (y[96] * ir) + 1.28759261f * (y[98] * ir) - q * nx) * ib,
-                 (8.6693653f * (y[84] * ir) + 1.28759261f * (y[82] * ir) - q * ny) * ib,
-                 (7.50789059f * (y[97] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[117], (-8.6693653f * r[15] + 1.28759261f * r[17] - q * nx) * ib,
+                 (8.6693653f * r[3] + 1.28759261f * r[1] - q * ny) * ib,
+                 (7.50789059f * r[16] - q * nz) * ib);
     q = lr * y[118];
-    SHLIGHT_SET3(out_grad[118],
-                 (-9.19525049f * (y[97] * ir) + 0.743391942f * (y[99] * ir) - q * nx) * ib,
-                 (9.19525049f * (y[83] * ir) + 0.743391942f * (y[81] * ir) - q * ny) * ib,
-                 (6.3078898f * (y[98] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[118], (-9.19525049f * r[16] + 0.743391942f * r[18] - q * nx) * ib,
+                 (9.19525049f * r[2] + 0.743391942f * r[0] - q * ny) * ib,
+                 (6.3078898f * r[17] - q * nz) * ib);
     q = lr * y[119];
-    SHLIGHT_SET3(out_grad[119], (-9.72111105f * (y[98] * ir) - q * nx) * ib,
-                 (9.72111105f * (y[82] * ir) - q * ny) * ib,
-                 (4.58257569f * (y[99] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[119], (-9.72111105f * r[17] - q * nx) * ib,
+                 (9.72111105f * r[1] - q * ny) * ib, (4.58257569f * r[18] - q * nz) * ib);
     q = lr * y[120];
-    SHLIGHT_SET3(out_grad[120], (-10.2469508f * (y[99] * ir) - q * nx) * ib,
-                 (10.2469508f * (y[81] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[120], (-10.2469508f * r[18] - q * nx) * ib,
+                 (10.2469508f * r[0] - q * ny) * ib, -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 11
   if (n > 11) {
     lr = 11.0f * ir;
+    r[0] = y[100] * ir;
+    r[1] = y[101] * ir;
+    r[2] = y[102] * ir;
+    r[3] = y[103] * ir;
+    r[4] = y[104] * ir;
+    r[5] = y[105] * ir;
+    r[6] = y[106] * ir;
+    r[7] = y[107] * ir;
+    r[8] = y[108] * ir;
+    r[9] = y[109] * ir;
+    r[10] = y[110] * ir;
+    r[11] = y[111] * ir;
+    r[12] = y[112] * ir;
+    r[13] = y[113] * ir;
+    r[14] = y[114] * ir;
+    r[15] = y[115] * ir;
+    r[16] = y[116] * ir;
+    r[17] = y[117] * ir;
+    r[18] = y[118] * ir;
+    r[19] = y[119] * ir;
+    r[20] = y[120] * ir;
     q = lr * y[121];
-    SHLIGHT_SET3(out_grad[121], (-11.2472219f * (y[100] * ir) - q * nx) * ib,
-                 (-11.2472219f * (y[120] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[121], (-11.2472219f * r[0] - q * nx) * ib,
+                 (-11.2472219f * r[20] - q * ny) * ib, -q * nz * ib);
     q = lr * y[122];
-    SHLIGHT_SET3(out_grad[122], (-10.7238053f * (y[101] * ir) - q * nx) * ib,
-                 (-10.7238053f * (y[119] * ir) - q * ny) * ib,
-                 (4.79583152f * (y[100] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[122], (-10.7238053f * r[1] - q * nx) * ib,
+                 (-10.7238053f * r[19] - q * ny) * ib, (4.79583152f * r[0] - q * nz) * ib);
     q = lr * y[123];
-    SHLIGHT_SET3(out_grad[123],
-                 (-10.2003735f * (y[102] * ir) + 0.74001287f * (y[100] * ir) - q * nx) * ib,
-                 (-10.2003735f * (y[118] * ir) + -0.74001287f * (y[120] * ir) - q * ny) * ib,
-                 (6.61887633f * (y[101] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[123], (-10.2003735f * r[2] + 0.74001287f * r[0] - q * nx) * ib,
+                 (-10.2003735f * r[18] + -0.74001287f * r[20] - q * ny) * ib,
+                 (6.61887633f * r[1] - q * nz) * ib);
     q = lr * y[124];
-    SHLIGHT_SET3(out_grad[124],
-                 (-9.67692395f * (y[103] * ir) + 1.28173989f * (y[101] * ir) - q * nx) * ib,
-                 (-9.67692395f * (y[117] * ir) + -1.28173989f * (y[119] * ir) - q * ny) * ib,
-                 (7.90117532f * (y[102] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[124], (-9.67692395f * r[3] + 1.28173989f * r[1] - q * nx) * ib,
+                 (-9.67692395f * r[17] + -1.28173989f * r[19] - q * ny) * ib,
+                 (7.90117532f * r[2] - q * nz) * ib);
     q = lr * y[125];
-    SHLIGHT_SET3(out_grad[125],
-                 (-9.15345368f * (y[104] * ir) + 1.81265393f * (y[102] * ir) - q * nx) * ib,
-                 (-9.15345368f * (y[116] * ir) + -1.81265393f * (y[118] * ir) - q * ny) * ib,
-                 (8.88015444f * (y[103] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[125], (-9.15345368f * r[4] + 1.81265393f * r[2] - q * nx) * ib,
+                 (-9.15345368f * r[16] + -1.81265393f * r[18] - q * ny) * ib,
+                 (8.88015444f * r[3] - q * nz) * ib);
     q = lr * y[126];
-    SHLIGHT_SET3(out_grad[126],
-                 (-8.62995889f * (y[105] * ir) + 2.34012617f * (y[103] * ir) - q * nx) * ib,
-                 (-8.62995889f * (y[115] * ir) + -2.34012617f * (y[117] * ir) - q * ny) * ib,
-                 (9.64858736f * (y[104] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[126], (-8.62995889f * r[5] + 2.34012617f * r[3] - q * nx) * ib,
+                 (-8.62995889f * r[15] + -2.34012617f * r[17] - q * ny) * ib,
+                 (9.64858736f * r[4] - q * nz) * ib);
     q = lr * y[127];
-    SHLIGHT_SET3(out_grad[127],
-                 (-8.10643483f * (y[106] * ir) + 2.86605752f * (y[104] * ir) - q * nx) * ib,
-                 (-8.10643483f * (y[114] * ir) + -2.86605752f * (y[116] * ir) - q * ny) * ib,
-                 (10.2539191f * (y[105] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[127], (-8.10643483f * r[6] + 2.86605752f * r[4] - q * nx) * ib,
+                 (-8.10643483f * r[14] + -2.86605752f * r[16] - q * ny) * ib,
+                 (10.2539191f * r[5] - q * nz) * ib);
     q = lr * y[128];
-    SHLIGHT_SET3(out_grad[128],
-                 (-7.58287544f * (y[107] * ir) + 3.39116499f * (y[105] * ir) - q * nx) * ib,
-                 (-7.58287544f * (y[113] * ir) + -3.39116499f * (y[115] * ir) - q * ny) * ib,
-                 (10.7238053f * (y[106] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[128], (-7.58287544f * r[7] + 3.39116499f * r[5] - q * nx) * ib,
+                 (-7.58287544f * r[13] + -3.39116499f * r[15] - q * ny) * ib,
+                 (10.7238053f * r[6] - q * nz) * ib);
     q = lr * y[129];
-    SHLIGHT_SET3(out_grad[129],
-                 (-7.05927286f * (y[108] * ir) + 3.91578004f * (y[106] * ir) - q * nx) * ib,
-                 (-7.05927286f * (y[112] * ir) + -3.91578004f * (y[114] * ir) - q * ny) * ib,
-                 (11.0754985f * (y[107] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[129], (-7.05927286f * r[8] + 3.91578004f * r[6] - q * nx) * ib,
+                 (-7.05927286f * r[12] + -3.91578004f * r[14] - q * ny) * ib,
+                 (11.0754985f * r[7] - q * nz) * ib);
     q = lr * y[130];
-    SHLIGHT_SET3(out_grad[130],
-                 (-6.5356167f * (y[109] * ir) + 4.44007722f * (y[107] * ir) - q * nx) * ib,
-                 (-6.5356167f * (y[111] * ir) + -4.44007722f * (y[113] * ir) - q * ny) * ib,
-                 (11.3200202f * (y[108] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[130], (-6.5356167f * r[9] + 4.44007722f * r[7] - q * nx) * ib,
+                 (-6.5356167f * r[11] + -4.44007722f * r[13] - q * ny) * ib,
+                 (11.3200202f * r[8] - q * nz) * ib);
     q = lr * y[131];
-    SHLIGHT_SET3(out_grad[131], (4.96415724f * (y[108] * ir) - q * nx) * ib,
-                 (-8.50210058f * (y[110] * ir) + -4.96415724f * (y[112] * ir) - q * ny) * ib,
-                 (11.4642301f * (y[109] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[131], (4.96415724f * r[8] - q * nx) * ib,
+                 (-8.50210058f * r[10] + -4.96415724f * r[12] - q * ny) * ib,
+                 (11.4642301f * r[9] - q * nz) * ib);
     q = lr * y[132];
-    SHLIGHT_SET3(out_grad[132], (7.76132046f * (y[111] * ir) - q * nx) * ib,
-                 (7.76132046f * (y[109] * ir) - q * ny) * ib,
-                 (11.5118986f * (y[110] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[132], (7.76132046f * r[11] - q * nx) * ib,
+                 (7.76132046f * r[9] - q * ny) * ib, (11.5118986f * r[10] - q * nz) * ib);
     q = lr * y[133];
-    SHLIGHT_SET3(
-        out_grad[133], (-8.50210058f * (y[110] * ir) + 4.96415724f * (y[112] * ir) - q * nx) * ib,
-        (4.96415724f * (y[108] * ir) - q * ny) * ib, (11.4642301f * (y[111] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[133], (-8.50210058f * r[10] + 4.96415724f * r[12] - q * nx) * ib,
+                 (4.96415724f * r[8] - q * ny) * ib, (11.4642301f * r[11] - q * nz) * ib);
     q = lr * y[134];
-    SHLIGHT_SET3(out_grad[134],
-                 (-6.5356167f * (y[111] * ir) + 4.44007722f * (y[113] * ir) - q * nx) * ib,
-                 (6.5356167f * (y[109] * ir) + 4.44007722f * (y[107] * ir) - q * ny) * ib,
-                 (11.3200202f * (y[112] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[134], (-6.5356167f * r[11] + 4.44007722f * r[13] - q * nx) * ib,
+                 (6.5356167f * r[9] + 4.44007722f * r[7] - q * ny) * ib,
+                 (11.3200202f * r[12] - q * nz) * ib);
     q = lr * y[135];
-    SHLIGHT_SET3(out_grad[135],
-                 (-7.05927286f * (y[112] * ir) + 3.91578004f * (y[114] * ir) - q * nx) * ib,
-                 (7.05927286f * (y[108] * ir) + 3.91578004f * (y[106] * ir) - q * ny) * ib,
-                 (11.0754985f * (y[113] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[135], (-7.05927286f * r[12] + 3.91578004f * r[14] - q * nx) * ib,
+                 (7.05927286f * r[8] + 3.91578004f * r[6] - q * ny) * ib,
+                 (11.0754985f * r[13] - q * nz) * ib);
     q = lr * y[136];
-    SHLIGHT_SET3(out_grad[136],
-                 (-7.58287544f * (y[113] * ir) + 3.39116499f * (y[115] * ir) - q * nx) * ib,
-                 (7.58287544f * (y[107] * ir) + 3.39116499f * (y[105] * ir) - q * ny) * ib,
-                 (10.7238053f * (y[114] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[136], (-7.58287544f * r[13] + 3.39116499f * r[15] - q * nx) * ib,
+                 (7.58287544f * r[7] + 3.39116499f * r[5] - q * ny) * ib,
+                 (10.7238053f * r[14] - q * nz) * ib);
     q = lr * y[137];
-    SHLIGHT_SET3(out_grad[137],
-                 (-8.10643483f * (y[114] * ir) + 2.86605752f * (y[116] * ir) - q * nx) * ib,
-                 (8.10643483f * (y[106] * ir) + 2.86605752f * (y[104] * ir) - q * ny) * ib,
-                 (10.2539191f * (y[115] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[137], (-8.10643483f * r[14] + 2.86605752f * r[16] - q * nx) * ib,
+                 (8.10643483f * r[6] + 2.86605752f * r[4] - q * ny) * ib,
+                 (10.2539191f * r[15] - q * nz) * ib);
     q = lr * y[138];
-    SHLIGHT_SET3(out_grad[138],
-                 (-8.62995889f * (y[115] * ir) + 2.34012617f * (y[117] * ir) - q * nx) * ib,
-                 (8.62995889f * (y[105] * ir) + 2.34012617f * (y[103] * ir) - q * ny) * ib,
-                 (9.64858736f * (y[116] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[138], (-8.62995889f * r[15] + 2.34012617f * r[17] - q * nx) * ib,
+                 (8.62995889f * r[5] + 2.34012617f * r[3] - q * ny) * ib,
+                 (9.64858736f * r[16] - q * nz) * ib);
     q = lr * y[139];
-    SHLIGHT_SET3(out_grad[139],
-                 (-9.15345368f * (y[116] * ir) + 1.81265393f * (y[118] * ir) - q * nx) * ib,
-                 (9.15345368f * (y[104] * ir) + 1.81265393f * (y[102] * ir) - q * ny) * ib,
-                 (8.88015444f * (y[117] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[139], (-9.15345368f * r[16] + 1.81265393f * r[18] - q * nx) * ib,
+                 (9.15345368f * r[4] + 1.81265393f * r[2] - q * ny) * ib,
+                 (8.88015444f * r[17] - q * nz) * ib);
     q = lr * y[140];
-    SHLIGHT_SET3(out_grad[140],
-                 (-9.67692395f * (y[117] * ir) + 1.28173989f * (y[119] * ir) - q * nx) * ib,
-                 (9.67692395f * (y[103] * ir) + 1.28173989f * (y[101] * ir) - q * ny) * ib,
-                 (7.90117532f * (y[118] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[140], (-9.67692395f * r[17] + 1.28173989f * r[19] - q * nx) * ib,
+                 (9.67692395f * r[3] + 1.28173989f * r[1] - q * ny) * ib,
+                 (7.90117532f * r[18] - q * nz) * ib);
     q = lr * y[141];
-    SHLIGHT_SET3(out_grad[141],
-                 (-10.2003735f * (y[118] * ir) + 0.74001287f * (y[120] * ir) - q * nx) * ib,
-                 (10.2003735f * (y[102] * ir) + 0.74001287f * (y[100] * ir) - q * ny) * ib,
-                 (6.61887633f * (y[119] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[141], (-10.2003735f * r[18] + 0.74001287f * r[20] - q * nx) * ib,
+                 (10.2003735f * r[2] + 0.74001287f * r[0] - q * ny) * ib,
+                 (6.61887633f * r[19] - q * nz) * ib);
     q = lr * y[142];
-    SHLIGHT_SET3(out_grad[142], (-10.7238053f * (y[119] * ir) - q * nx) * ib,
-                 (10.7238053f * (y[101] * ir) - q * ny) * ib,
-                 (4.79583152f * (y[120] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[142], (-10.7238053f * r[19] - q * nx) * ib,
+                 (10.7238053f * r[1] - q * ny) * ib, (4.79583152f * r[20] - q * nz) * ib);
     q = lr * y[143];
-    SHLIGHT_SET3(out_grad[143], (-11.2472219f * (y[120] * ir) - q * nx) * ib,
-                 (11.2472219f * (y[100] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[143], (-11.2472219f * r[20] - q * nx) * ib,
+                 (11.2472219f * r[0] - q * ny) * ib, -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 12
   if (n > 12) {
     lr = 12.0f * ir;
+    r[0] = y[121] * ir;
+    r[1] = y[122] * ir;
+    r[2] = y[123] * ir;
+    r[3] = y[124] * ir;
+    r[4] = y[125] * ir;
+    r[5] = y[126] * ir;
+    r[6] = y[127] * ir;
+    r[7] = y[128] * ir;
+    r[8] = y[129] * ir;
+    r[9] = y[130] * ir;
+    r[10] = y[131] * ir;
+    r[11] = y[132] * ir;
+    r[12] = y[133] * ir;
+    r[13] = y[134] * ir;
+    r[14] = y[135] * ir;
+    r[15] = y[136] * ir;
+    r[16] = y[137] * ir;
+    r[17] = y[138] * ir;
+    r[18] = y[139] * ir;
+    r[19] = y[140] * ir;
+    r[20] = y[141] * ir;
+    r[21] = y[142] * ir;
+    r[22] = y[143] * ir;
     q = lr * y[144];
-    SHLIGHT_SET3(out_grad[144], (-12.2474487f * (y[121] * ir) - q * nx) * ib,
-                 (-12.2474487f * (y[143] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[144], (-12.2474487f * r[0] - q * nx) * ib,
+                 (-12.2474487f * r[22] - q * ny) * ib, -q * nz * ib);
     q = lr * y[145];
-    SHLIGHT_SET3(out_grad[145], (-11.7260394f * (y[122] * ir) - q * nx) * ib,
-                 (-11.7260394f * (y[142] * ir) - q * ny) * ib,
-                 (5.0f * (y[121] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[145], (-11.7260394f * r[1] - q * nx) * ib,
+                 (-11.7260394f * r[21] - q * ny) * ib, (5.0f * r[0] - q * nz) * ib);
     q = lr * y[146];
-    SHLIGHT_SET3(out_grad[146],
-                 (-11.2046186f * (y[123] * ir) + 0.737209781f * (y[121] * ir) - q * nx) * ib,
-                 (-11.2046186f * (y[141] * ir) + -0.737209781f * (y[143] * ir) - q * ny) * ib,
-                 (6.91564075f * (y[122] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[146], (-11.2046186f * r[2] + 0.737209781f * r[0] - q * nx) * ib,
+                 (-11.2046186f * r[20] + -0.737209781f * r[22] - q * ny) * ib,
+                 (6.91564075f * r[1] - q * nz) * ib);
     q = lr * y[147];
-    SHLIGHT_SET3(out_grad[147],
-                 (-10.6831847f * (y[124] * ir) + 1.2768848f * (y[122] * ir) - q * nx) * ib,
-                 (-10.6831847f * (y[140] * ir) + -1.2768848f * (y[142] * ir) - q * ny) * ib,
-                 (8.27515927f * (y[123] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[147], (-10.6831847f * r[3] + 1.2768848f * r[1] - q * nx) * ib,
+                 (-10.6831847f * r[19] + -1.2768848f * r[21] - q * ny) * ib,
+                 (8.27515927f * r[2] - q * nz) * ib);
     q = lr * y[148];
-    SHLIGHT_SET3(out_grad[148],
-                 (-10.1617356f * (y[125] * ir) + 1.8057878f * (y[123] * ir) - q * nx) * ib,
-                 (-10.1617356f * (y[139] * ir) + -1.8057878f * (y[141] * ir) - q * ny) * ib,
-                 (9.32504808f * (y[124] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[148], (-10.1617356f * r[4] + 1.8057878f * r[2] - q * nx) * ib,
+                 (-10.1617356f * r[18] + -1.8057878f * r[20] - q * ny) * ib,
+                 (9.32504808f * r[3] - q * nz) * ib);
     q = lr * y[149];
-    SHLIGHT_SET3(out_grad[149],
-                 (-9.6402688f * (y[126] * ir) + 2.33126202f * (y[124] * ir) - q * nx) * ib,
-                 (-9.6402688f * (y[138] * ir) + -2.33126202f * (y[140] * ir) - q * ny) * ib,
-                 (10.1617356f * (y[125] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[149], (-9.6402688f * r[5] + 2.33126202f * r[3] - q * nx) * ib,
+                 (-9.6402688f * r[17] + -2.33126202f * r[19] - q * ny) * ib,
+                 (10.1617356f * r[4] - q * nz) * ib);
     q = lr * y[150];
-    SHLIGHT_SET3(out_grad[150],
-                 (-9.11878138f * (y[127] * ir) + 2.8552012f * (y[125] * ir) - q * nx) * ib,
-                 (-9.11878138f * (y[137] * ir) + -2.8552012f * (y[139] * ir) - q * ny) * ib,
-                 (10.8347268f * (y[126] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[150], (-9.11878138f * r[6] + 2.8552012f * r[4] - q * nx) * ib,
+                 (-9.11878138f * r[16] + -2.8552012f * r[18] - q * ny) * ib,
+                 (10.8347268f * r[5] - q * nz) * ib);
     q = lr * y[151];
-    SHLIGHT_SET3(out_grad[151],
-                 (-8.59726954f * (y[128] * ir) + 3.37831962f * (y[126] * ir) - q * nx) * ib,
-                 (-8.59726954f * (y[136] * ir) + -3.37831962f * (y[138] * ir) - q * ny) * ib,
-                 (11.3731186f * (y[127] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[151], (-8.59726954f * r[7] + 3.37831962f * r[5] - q * nx) * ib,
+                 (-8.59726954f * r[15] + -3.37831962f * r[17] - q * ny) * ib,
+                 (11.3731186f * r[6] - q * nz) * ib);
     q = lr * y[152];
-    SHLIGHT_SET3(out_grad[152],
-                 (-8.07572853f * (y[129] * ir) + 3.90094749f * (y[127] * ir) - q * nx) * ib,
-                 (-8.07572853f * (y[135] * ir) + -3.90094749f * (y[137] * ir) - q * ny) * ib,
-                 (11.7953565f * (y[128] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[152], (-8.07572853f * r[8] + 3.90094749f * r[6] - q * nx) * ib,
+                 (-8.07572853f * r[14] + -3.90094749f * r[16] - q * ny) * ib,
+                 (11.7953565f * r[7] - q * nz) * ib);
     q = lr * y[153];
-    SHLIGHT_SET3(out_grad[153],
-                 (-7.55415233f * (y[130] * ir) + 4.42325868f * (y[128] * ir) - q * nx) * ib,
-                 (-7.55415233f * (y[134] * ir) + -4.42325868f * (y[136] * ir) - q * ny) * ib,
-                 (12.1135928f * (y[129] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[153], (-7.55415233f * r[9] + 4.42325868f * r[7] - q * nx) * ib,
+                 (-7.55415233f * r[13] + -4.42325868f * r[15] - q * ny) * ib,
+                 (12.1135928f * r[8] - q * nz) * ib);
     q = lr * y[154];
-    SHLIGHT_SET3(out_grad[154],
-                 (-7.0325331f * (y[131] * ir) + 4.94535355f * (y[129] * ir) - q * nx) * ib,
-                 (-7.0325331f * (y[133] * ir) + -4.94535355f * (y[135] * ir) - q * ny) * ib,
-                 (12.3358791f * (y[130] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[154], (-7.0325331f * r[10] + 4.94535355f * r[8] - q * nx) * ib,
+                 (-7.0325331f * r[12] + -4.94535355f * r[14] - q * ny) * ib,
+                 (12.3358791f * r[9] - q * nz) * ib);
     q = lr * y[155];
-    SHLIGHT_SET3(out_grad[155], (5.46729406f * (y[130] * ir) - q * nx) * ib,
-                 (-9.20774721f * (y[132] * ir) + -5.46729406f * (y[134] * ir) - q * ny) * ib,
-                 (12.4673487f * (y[131] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[155], (5.46729406f * r[9] - q * nx) * ib,
+                 (-9.20774721f * r[11] + -5.46729406f * r[13] - q * ny) * ib,
+                 (12.4673487f * r[10] - q * nz) * ib);
     q = lr * y[156];
-    SHLIGHT_SET3(out_grad[156], (8.46989554f * (y[133] * ir) - q * nx) * ib,
-                 (8.46989554f * (y[131] * ir) - q * ny) * ib,
-                 (12.5108648f * (y[132] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[156], (8.46989554f * r[12] - q * nx) * ib,
+                 (8.46989554f * r[10] - q * ny) * ib, (12.5108648f * r[11] - q * nz) * ib);
     q = lr * y[157];
-    SHLIGHT_SET3(
-        out_grad[157], (-9.20774721f * (y[132] * ir) + 5.46729406f * (y[134] * ir) - q * nx) * ib,
-        (5.46729406f * (y[130] * ir) - q * ny) * ib, (12.4673487f * (y[133] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[157], (-9.20774721f * r[11] + 5.46729406f * r[13] - q * nx) * ib,
+                 (5.46729406f * r[9] - q * ny) * ib, (12.4673487f * r[12] - q * nz) * ib);
     q = lr * y[158];
-    SHLIGHT_SET3(out_grad[158],
-                 (-7.0325331f * (y[133] * ir) + 4.94535355f * (y[135] * ir) - q * nx) * ib,
-                 (7.0325331f * (y[131] * ir) + 4.94535355f * (y[129] * ir) - q * ny) * ib,
-                 (12.3358791f * (y[134] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[158], (-7.0325331f * r[12] + 4.94535355f * r[14] - q * nx) * ib,
+                 (7.0325331f * r[10] + 4.94535355f * r[8] - q * ny) * ib,
+                 (12.3358791f * r[13] - q * nz) * ib);
     q = lr * y[159];
-    SHLIGHT_SET3(out_grad[159],
-                 (-7.55415233f * (y[134] * ir) + 4.42325868f * (y[136] * ir) - q * nx) * ib,
-                 (7.55415233f * (y[130] * ir) + 4.42325868f * (y[128] * ir) - q * ny) * ib,
-                 (12.1135928f * (y[135] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[159], (-7.55415233f * r[13] + 4.42325868f * r[15] - q * nx) * ib,
+                 (7.55415233f * r[9] + 4.42325868f * r[7] - q * ny) * ib,
+                 (12.1135928f * r[14] - q * nz) * ib);
     q = lr * y[160];
-    SHLIGHT_SET3(out_grad[160],
-                 (-8.07572853f * (y[135] * ir) + 3.90094749f * (y[137] * ir) - q * nx) * ib,
-                 (8.07572853f * (y[129] * ir) + 3.90094749f * (y[127] * ir) - q * ny) * ib,
-                 (11.7953565f * (y[136] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[160], (-8.07572853f * r[14] + 3.90094749f * r[16] - q * nx) * ib,
+                 (8.07572853f * r[8] + 3.90094749f * r[6] - q * ny) * ib,
+                 (11.7953565f * r[15] - q * nz) * ib);
     q = lr * y[161];
-    SHLIGHT_SET3(out_grad[161],
-                 (-8.59726954f * (y[136] * ir) + 3.37831962f * (y[138] * ir) - q * nx) * ib,
-                 (8.59726954f * (y[128] * ir) + 3.37831962f * (y[126] * ir) - q * ny) * ib,
-                 (11.3731186f * (y[137] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[161], (-8.59726954f * r[15] + 3.37831962f * r[17] - q * nx) * ib,
+                 (8.59726954f * r[7] + 3.37831962f * r[5] - q * ny) * ib,
+                 (11.3731186f * r[16] - q * nz) * ib);
     q = lr * y[162];
-    SHLIGHT_SET3(out_grad[162],
-                 (-9.11878138f * (y[137] * ir) + 2.8552012f * (y[139] * ir) - q * nx) * ib,
-                 (9.11878138f * (y[127] * ir) + 2.8552012f * (y[125] * ir) - q * ny) * ib,
-                 (10.8347268f * (y[138] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[162], (-9.11878138f * r[16] + 2.8552012f * r[18] - q * nx) * ib,
+                 (9.11878138f * r[6] + 2.8552012f * r[4] - q * ny) * ib,
+                 (10.8347268f * r[17] - q * nz) * ib);
     q = lr * y[163];
-    SHLIGHT_SET3(out_grad[163],
-                 (-9.6402688f * (y[138] * ir) + 2.33126202f * (y[140] * ir) - q * nx) * ib,
-                 (9.6402688f * (y[126] * ir) + 2.33126202f * (y[124] * ir) - q * ny) * ib,
-                 (10.1617356f * (y[139] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[163], (-9.6402688f * r[17] + 2.33126202f * r[19] - q * nx) * ib,
+                 (9.6402688f * r[5] + 2.33126202f * r[3] - q * ny) * ib,
+                 (10.1617356f * r[18] - q * nz) * ib);
     q = lr * y[164];
-    SHLIGHT_SET3(out_grad[164],
-                 (-10.1617356f * (y[139] * ir) + 1.8057878f * (y[141] * ir) - q * nx) * ib,
-                 (10.1617356f * (y[125] * ir) + 1.8057878f * (y[123] * ir) - q * ny) * ib,
-                 (9.32504808f * (y[140] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[164], (-10.1617356f * r[18] + 1.8057878f * r[20] - q * nx) * ib,
+                 (10.1617356f * r[4] + 1.8057878f * r[2] - q * ny) * ib,
+                 (9.32504808f * r[19] - q * nz) * ib);
     q = lr * y[165];
-    SHLIGHT_SET3(out_grad[165],
-                 (-10.6831847f * (y[140] * ir) + 1.2768848f * (y[142] * ir) - q * nx) * ib,
-                 (10.6831847f * (y[124] * ir) + 1.2768848f * (y[122] * ir) - q * ny) * ib,
-                 (8.27515927f * (y[141] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[165], (-10.6831847f * r[19] + 1.2768848f * r[21] - q * nx) * ib,
+                 (10.6831847f * r[3] + 1.2768848f * r[1] - q * ny) * ib,
+                 (8.27515927f * r[20] - q * nz) * ib);
     q = lr * y[166];
-    SHLIGHT_SET3(out_grad[166],
-                 (-11.2046186f * (y[141] * ir) + 0.737209781f * (y[143] * ir) - q * nx) * ib,
-                 (11.2046186f * (y[123] * ir) + 0.737209781f * (y[121] * ir) - q * ny) * ib,
-                 (6.91564075f * (y[142] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[166], (-11.2046186f * r[20] + 0.737209781f * r[22] - q * nx) * ib,
+                 (11.2046186f * r[2] + 0.737209781f * r[0] - q * ny) * ib,
+                 (6.91564075f * r[21] - q * nz) * ib);
     q = lr * y[167];
-    SHLIGHT_SET3(out_grad[167], (-11.7260394f * (y[142] * ir) - q * nx) * ib,
-                 (11.7260394f * (y[122] * ir) - q * ny) * ib, (5.0f * (y[143] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[167], (-11.7260394f * r[21] - q * nx) * ib,
+                 (11.7260394f * r[1] - q * ny) * ib, (5.0f * r[22] - q * nz) * ib);
     q = lr * y[168];
-    SHLIGHT_SET3(out_grad[168], (-12.2474487f * (y[143] * ir) - q * nx) * ib,
-                 (12.2474487f * (y[121] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[168], (-12.2474487f * r[22] - q * nx) * ib,
+                 (12.2474487f * r[0] - q * ny) * ib, -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 13
   if (n > 13) {
     lr = 13.0f * ir;
+    r[0] = y[144] * ir;
+    r[1] = y[145] * ir;
+    r[2] = y[146] * ir;
+    r[3] = y[147] * ir;
+    r[4] = y[148] * ir;
+    r[5] = y[149] * ir;
+    r[6] = y[150] * ir;
+    r[7] = y[151] * ir;
+    r[8] = y[152] * ir;
+    r[9] = y[153] * ir;
+    r[10] = y[154] * ir;
+    r[11] = y[155] * ir;
+    r[12] = y[156] * ir;
+    r[13] = y[157] * ir;
+    r[14] = y[158] * ir;
+    r[15] = y[159] * ir;
+    r[16] = y[160] * ir;
+    r[17] = y[161] * ir;
+    r[18] = y[162] * ir;
+    r[19] = y[163] * ir;
+    r[20] = y[164] * ir;
+    r[21] = y[165] * ir;
+    r[22] = y[166] * ir;
+    r[23] = y[167] * ir;
+    r[24] = y[168] * ir;
     q = lr * y[169];
-    SHLIGHT_SET3(out_grad[169], (-13.2476413f * (y[144] * ir) - q * nx) * ib,
-                 (-13.2476413f * (y[168] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[169], (-13.2476413f * r[0] - q * nx) * ib,
+                 (-13.2476413f * r[24] - q * ny) * ib, -q * nz * ib);
     q = lr * y[170];
-    SHLIGHT_SET3(out_grad[170], (-12.7279221f * (y[145] * ir) - q * nx) * ib,
-                 (-12.7279221f * (y[167] * ir) - q * ny) * ib,
-                 (5.19615242f * (y[144] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[170], (-12.7279221f * r[1] - q * nx) * ib,
+                 (-12.7279221f * r[23] - q * ny) * ib, (5.19615242f * r[0] - q * nz) * ib);
     q = lr * y[171];
-    SHLIGHT_SET3(out_grad[171],
-                 (-12.208194f * (y[146] * ir) + 0.734846923f * (y[144] * ir) - q * nx) * ib,
-                 (-12.208194f * (y[166] * ir) + -0.734846923f * (y[168] * ir) - q * ny) * ib,
-                 (7.2f * (y[145] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[171], (-12.208194f * r[2] + 0.734846923f * r[0] - q * nx) * ib,
+                 (-12.208194f * r[22] + -0.734846923f * r[24] - q * ny) * ib,
+                 (7.2f * r[1] - q * nz) * ib);
     q = lr * y[172];
-    SHLIGHT_SET3(out_grad[172],
-                 (-11.6884558f * (y[147] * ir) + 1.27279221f * (y[145] * ir) - q * nx) * ib,
-                 (-11.6884558f * (y[165] * ir) + -1.27279221f * (y[167] * ir) - q * ny) * ib,
-                 (8.63249674f * (y[146] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[172], (-11.6884558f * r[3] + 1.27279221f * r[1] - q * nx) * ib,
+                 (-11.6884558f * r[21] + -1.27279221f * r[23] - q * ny) * ib,
+                 (8.63249674f * r[2] - q * nz) * ib);
     q = lr * y[173];
-    SHLIGHT_SET3(out_grad[173], (-11.1687063f * (y[148] * ir) + 1.8f * (y[146] * ir) - q * nx) * ib,
-                 (-11.1687063f * (y[164] * ir) + -1.8f * (y[166] * ir) - q * ny) * ib,
-                 (9.74884609f * (y[147] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[173], (-11.1687063f * r[4] + 1.8f * r[2] - q * nx) * ib,
+                 (-11.1687063f * r[20] + -1.8f * r[22] - q * ny) * ib,
+                 (9.74884609f * r[3] - q * nz) * ib);
     q = lr * y[174];
-    SHLIGHT_SET3(out_grad[174],
-                 (-10.6489436f * (y[149] * ir) + 2.32379001f * (y[147] * ir) - q * nx) * ib,
-                 (-10.6489436f * (y[163] * ir) + -2.32379001f * (y[165] * ir) - q * ny) * ib,
-                 (10.6489436f * (y[148] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[174], (-10.6489436f * r[5] + 2.32379001f * r[3] - q * nx) * ib,
+                 (-10.6489436f * r[19] + -2.32379001f * r[21] - q * ny) * ib,
+                 (10.6489436f * r[4] - q * nz) * ib);
     q = lr * y[175];
-    SHLIGHT_SET3(out_grad[175],
-                 (-10.1291658f * (y[150] * ir) + 2.84604989f * (y[148] * ir) - q * nx) * ib,
-                 (-10.1291658f * (y[162] * ir) + -2.84604989f * (y[164] * ir) - q * ny) * ib,
-                 (11.3841996f * (y[149] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[175], (-10.1291658f * r[6] + 2.84604989f * r[4] - q * nx) * ib,
+                 (-10.1291658f * r[18] + -2.84604989f * r[20] - q * ny) * ib,
+                 (11.3841996f * r[5] - q * nz) * ib);
     q = lr * y[176];
-    SHLIGHT_SET3(out_grad[176],
-                 (-9.60937043f * (y[151] * ir) + 3.36749165f * (y[149] * ir) - q * nx) * ib,
-                 (-9.60937043f * (y[161] * ir) + -3.36749165f * (y[163] * ir) - q * ny) * ib,
-                 (11.9849906f * (y[150] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[176], (-9.60937043f * r[7] + 3.36749165f * r[5] - q * nx) * ib,
+                 (-9.60937043f * r[17] + -3.36749165f * r[19] - q * ny) * ib,
+                 (11.9849906f * r[6] - q * nz) * ib);
     q = lr * y[177];
-    SHLIGHT_SET3(out_grad[177],
-                 (-9.08955444f * (y[152] * ir) + 3.88844442f * (y[150] * ir) - q * nx) * ib,
-                 (-9.08955444f * (y[160] * ir) + -3.88844442f * (y[162] * ir) - q * ny) * ib,
-                 (12.4707658f * (y[151] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[177], (-9.08955444f * r[8] + 3.88844442f * r[6] - q * nx) * ib,
+                 (-9.08955444f * r[16] + -3.88844442f * r[18] - q * ny) * ib,
+                 (12.4707658f * r[7] - q * nz) * ib);
     q = lr * y[178];
-    SHLIGHT_SET3(out_grad[178],
-                 (-8.56971411f * (y[153] * ir) + 4.40908154f * (y[151] * ir) - q * nx) * ib,
-                 (-8.56971411f * (y[159] * ir) + -4.40908154f * (y[161] * ir) - q * ny) * ib,
-                 (12.8545712f * (y[152] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[178], (-8.56971411f * r[9] + 4.40908154f * r[7] - q * nx) * ib,
+                 (-8.56971411f * r[15] + -4.40908154f * r[17] - q * ny) * ib,
+                 (12.8545712f * r[8] - q * nz) * ib);
     q = lr * y[179];
-    SHLIGHT_SET3(out_grad[179],
-                 (-8.04984472f * (y[154] * ir) + 4.92950302f * (y[152] * ir) - q * nx) * ib,
-                 (-8.04984472f * (y[158] * ir) + -4.92950302f * (y[160] * ir) - q * ny) * ib,
-                 (13.1453414f * (y[153] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[179], (-8.04984472f * r[10] + 4.92950302f * r[8] - q * nx) * ib,
+                 (-8.04984472f * r[14] + -4.92950302f * r[16] - q * ny) * ib,
+                 (13.1453414f * r[9] - q * nz) * ib);
     q = lr * y[180];
-    SHLIGHT_SET3(out_grad[180],
-                 (-7.52994024f * (y[155] * ir) + 5.44977064f * (y[153] * ir) - q * nx) * ib,
-                 (-7.52994024f * (y[157] * ir) + -5.44977064f * (y[159] * ir) - q * ny) * ib,
-                 (13.3491573f * (y[154] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[180], (-7.52994024f * r[11] + 5.44977064f * r[9] - q * nx) * ib,
+                 (-7.52994024f * r[13] + -5.44977064f * r[15] - q * ny) * ib,
+                 (13.3491573f * r[10] - q * nz) * ib);
     q = lr * y[181];
-    SHLIGHT_SET3(out_grad[181], (5.96992462f * (y[154] * ir) - q * nx) * ib,
-                 (-9.91362699f * (y[156] * ir) + -5.96992462f * (y[158] * ir) - q * ny) * ib,
-                 (13.4699666f * (y[155] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[181], (5.96992462f * r[10] - q * nx) * ib,
+                 (-9.91362699f * r[12] + -5.96992462f * r[14] - q * ny) * ib,
+                 (13.4699666f * r[11] - q * nz) * ib);
     q = lr * y[182];
-    SHLIGHT_SET3(out_grad[182], (9.17823512f * (y[157] * ir) - q * nx) * ib,
-                 (9.17823512f * (y[155] * ir) - q * ny) * ib,
-                 (13.5099963f * (y[156] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[182], (9.17823512f * r[13] - q * nx) * ib,
+                 (9.17823512f * r[11] - q * ny) * ib, (13.5099963f * r[12] - q * nz) * ib);
     q = lr * y[183];
-    SHLIGHT_SET3(
-        out_grad[183], (-9.91362699f * (y[156] * ir) + 5.96992462f * (y[158] * ir) - q * nx) * ib,
-        (5.96992462f * (y[154] * ir) - q * ny) * ib, (13.4699666f * (y[157] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[183], (-9.91362699f * r[12] + 5.96992462f * r[14] - q * nx) * ib,
+                 (5.96992462f * r[10] - q * ny) * ib, (13.4699666f * r[13] - q * nz) * ib);
     q = lr * y[184];
-    SHLIGHT_SET3(out_grad[184],
-                 (-7.52994024f * (y[157] * ir) + 5.44977064f * (y[159] * ir) - q * nx) * ib,
-                 (7.52994024f * (y[155] * ir) + 5.44977064f * (y[153] * ir) - q * ny) * ib,
-                 (13.3491573f * (y[158] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[184], (-7.52994024f * r[13] + 5.44977064f * r[15] - q * nx) * ib,
+                 (7.52994024f * r[11] + 5.44977064f * r[9] - q * ny) * ib,
+                 (13.3491573f * r[14] - q * nz) * ib);
     q = lr * y[185];
-    SHLIGHT_SET3(out_grad[185],
-                 (-8.04984472f * (y[158] * ir) + 4.92950302f * (y[160] * ir) - q * nx) * ib,
-                 (8.04984472f * (y[154] * ir) + 4.92950302f * (y[152] * ir) - q * ny) * ib,
-                 (13.1453414f * (y[159] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[185], (-8.04984472f * r[14] + 4.92950302f * r[16] - q * nx) * ib,
+                 (8.04984472f * r[10] + 4.92950302f * r[8] - q * ny) * ib,
+                 (13.1453414f * r[15] - q * nz) * ib);
     q = lr * y[186];
-    SHLIGHT_SET3(out_grad[186],
-                 (-8.56971411f * (y[159] * ir) + 4.40908154f * (y[161] * ir) - q * nx) * ib,
-                 (8.56971411f * (y[153] * ir) + 4.40908154f * (y[151] * ir) - q * ny) * ib,
-                 (12.8545712f * (y[160] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[186], (-8.56971411f * r[15] + 4.40908154f * r[17] - q * nx) * ib,
+                 (8.56971411f * r[9] + 4.40908154f * r[7] - q * ny) * ib,
+                 (12.8545712f * r[16] - q * nz) * ib);
     q = lr * y[187];
-    SHLIGHT_SET3(out_grad[187],
-                 (-9.08955444f * (y[160] * ir) + 3.88844442f * (y[162] * ir) - q * nx) * ib,
-                 (9.08955444f * (y[152] * ir) + 3.88844442f * (y[150] * ir) - q * ny) * ib,
-                 (12.4707658f * (y[161] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[187], (-9.08955444f * r[16] + 3.88844442f * r[18] - q * nx) * ib,
+                 (9.08955444f * r[8] + 3.88844442f * r[6] - q * ny) * ib,
+                 (12.4707658f * r[17] - q * nz) * ib);
     q = lr * y[188];
-    SHLIGHT_SET3(out_grad[188],
-                 (-9.60937043f * (y[161] * ir) + 3.36749165f * (y[163] * ir) - q * nx) * ib,
-                 (9.60937043f * (y[151] * ir) + 3.36749165f * (y[149] * ir) - q * ny) * ib,
-                 (11.9849906f * (y[162] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[188], (-9.60937043f * r[17] + 3.36749165f * r[19] - q * nx) * ib,
+                 (9.60937043f * r[7] + 3.36749165f * r[5] - q * ny) * ib,
+                 (11.9849906f * r[18] - q * nz) * ib);
     q = lr * y[189];
-    SHLIGHT_SET3(out_grad[189],
-                 (-10.1291658f * (y[162] * ir) + 2.84604989f * (y[164] * ir) - q * nx) * ib,
-                 (10.1291658f * (y[150] * ir) + 2.84604989f * (y[148] * ir) - q * ny) * ib,
-                 (11.3841996f * (y[163] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[189], (-10.1291658f * r[18] + 2.84604989f * r[20] - q * nx) * ib,
+                 (10.1291658f * r[6] + 2.84604989f * r[4] - q * ny) * ib,
+                 (11.3841996f * r[19] - q * nz) * ib);
     q = lr * y[190];
-    SHLIGHT_SET3(out_grad[190],
-                 (-10.6489436f * (y[163] * ir) + 2.32379001f * (y[165] * ir) - q * nx) * ib,
-                 (10.6489436f * (y[149] * ir) + 2.32379001f * (y[147] * ir) - q * ny) * ib,
-                 (10.6489436f * (y[164] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[190], (-10.6489436f * r[19] + 2.32379001f * r[21] - q * nx) * ib,
+                 (10.6489436f * r[5] + 2.32379001f * r[3] - q * ny) * ib,
+                 (10.6489436f * r[20] - q * nz) * ib);
     q = lr * y[191];
-    SHLIGHT_SET3(out_grad[191], (-11.1687063f * (y[164] * ir) + 1.8f * (y[166] * ir) - q * nx) * ib,
-                 (11.1687063f * (y[148] * ir) + 1.8f * (y[146] * ir) - q * ny) * ib,
-                 (9.74884609f * (y[165] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[191], (-11.1687063f * r[20] + 1.8f * r[22] - q * nx) * ib,
+                 (11.1687063f * r[4] + 1.8f * r[2] - q * ny) * ib,
+                 (9.74884609f * r[21] - q * nz) * ib);
     q = lr * y[192];
-    SHLIGHT_SET3(out_grad[192],
-                 (-11.6884558f * (y[165] * ir) + 1.27279221f * (y[167] * ir) - q * nx) * ib,
-                 (11.6884558f * (y[147] * ir) + 1.27279221f * (y[145] * ir) - q * ny) * ib,
-                 (8.63249674f * (y[166] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[192], (-11.6884558f * r[21] + 1.27279221f * r[23] - q * nx) * ib,
+                 (11.6884558f * r[3] + 1.27279221f * r[1] - q * ny) * ib,
+                 (8.63249674f * r[22] - q * nz) * ib);
     q = lr * y[193];
-    SHLIGHT_SET3(out_grad[193],
-                 (-12.208194f * (y[166] * ir) + 0.734846923f * (y[168] * ir) - q * nx) * ib,
-                 (12.208194f * (y[146] * ir) + 0.734846923f * (y[144] * ir) - q * ny) * ib,
-                 (7.2f * (y[167] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[193], (-12.208194f * r[22] + 0.734846923f * r[24] - q * nx) * ib,
+                 (12.208194f * r[2] + 0.734846923f * r[0] - q * ny) * ib,
+                 (7.2f * r[23] - q * nz) * ib);
     q = lr * y[194];
-    SHLIGHT_SET3(out_grad[194], (-12.7279221f * (y[167] * ir) - q * nx) * ib,
-                 (12.7279221f * (y[145] * ir) - q * ny) * ib,
-                 (5.19615242f * (y[168] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[194], (-12.7279221f * r[23] - q * nx) * ib,
+                 (12.7279221f * r[1] - q * ny) * ib, (5.19615242f * r[24] - q * nz) * ib);
     q = lr * y[195];
-    SHLIGHT_SET3(out_grad[195], (-13.2476413f * (y[168] * ir) - q * nx) * ib,
-                 (13.2476413f * (y[144] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[195], (-13.2476413f * r[24] - q * nx) * ib,
+                 (13.2476413f * r[0] - q * ny) * ib, -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 14
   if (n > 14) {
     lr = 14.0f * ir;
+    r[0] = y[169] * ir;
+    r[1] = y[170] * ir;
+    r[2] = y[171] * ir;
+    r[3] = y[172] * ir;
+    r[4] = y[173] * ir;
+    r[5] = y[174] * ir;
+    r[6] = y[175] * ir;
+    r[7] = y[176] * ir;
+    r[8] = y[177] * ir;
+    r[9] = y[178] * ir;
+    r[10] = y[179] * ir;
+    r[11] = y[180] * ir;
+    r[12] = y[181] * ir;
+    r[13] = y[182] * ir;
+    r[14] = y[183] * ir;
+    r[15] = y[184] * ir;
+    r[16] = y[185] * ir;
+    r[17] = y[186] * ir;
+    r[18] = y[187] * ir;
+    r[19] = y[188] * ir;
+    r[20] = y[189] * ir;
+    r[21] = y[190] * ir;
+    r[22] = y[191] * ir;
+    r[23] = y[192] * ir;
+    r[24] = y[193] * ir;
+    r[25] = y[194] * ir;
+    r[26] = y[195] * ir;
     q = lr * y[196];
-    SHLIGHT_SET3(out_grad[196], (-14.2478068f * (y[169] * ir) - q * nx) * ib,
-                 (-14.2478068f * (y[195] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[196], (-14.2478068f * r[0] - q * nx) * ib,
+                 (-14.2478068f * r[26] - q * ny) * ib, -q * nz * ib);
     q = lr * y[197];
-    SHLIGHT_SET3(out_grad[197], (-13.7295302f * (y[170] * ir) - q * nx) * ib,
-                 (-13.7295302f * (y[194] * ir) - q * ny) * ib,
-                 (5.38516481f * (y[169] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[197], (-13.7295302f * r[1] - q * nx) * ib,
+                 (-13.7295302f * r[25] - q * ny) * ib, (5.38516481f * r[0] - q * nz) * ib);
     q = lr * y[198];
-    SHLIGHT_SET3(out_grad[198],
-                 (-13.2112466f * (y[171] * ir) + 0.732828109f * (y[169] * ir) - q * nx) * ib,
-                 (-13.2112466f * (y[193] * ir) + -0.732828109f * (y[195] * ir) - q * ny) * ib,
-                 (7.47340965f * (y[170] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[198], (-13.2112466f * r[2] + 0.732828109f * r[0] - q * nx) * ib,
+                 (-13.2112466f * r[24] + -0.732828109f * r[26] - q * ny) * ib,
+                 (7.47340965f * r[1] - q * nz) * ib);
     q = lr * y[199];
-    SHLIGHT_SET3(out_grad[199],
-                 (-12.6929552f * (y[172] * ir) + 1.26929552f * (y[170] * ir) - q * nx) * ib,
-                 (-12.6929552f * (y[192] * ir) + -1.26929552f * (y[194] * ir) - q * ny) * ib,
-                 (8.97527468f * (y[171] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[199], (-12.6929552f * r[3] + 1.26929552f * r[1] - q * nx) * ib,
+                 (-12.6929552f * r[23] + -1.26929552f * r[25] - q * ny) * ib,
+                 (8.97527468f * r[2] - q * nz) * ib);
     q = lr * y[200];
-    SHLIGHT_SET3(out_grad[200],
-                 (-12.1746549f * (y[173] * ir) + 1.79505494f * (y[171] * ir) - q * nx) * ib,
-                 (-12.1746549f * (y[191] * ir) + -1.79505494f * (y[193] * ir) - q * ny) * ib,
-                 (10.1543641f * (y[172] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[200], (-12.1746549f * r[4] + 1.79505494f * r[2] - q * nx) * ib,
+                 (-12.1746549f * r[22] + -1.79505494f * r[24] - q * ny) * ib,
+                 (10.1543641f * r[3] - q * nz) * ib);
     q = lr * y[201];
-    SHLIGHT_SET3(out_grad[201],
-                 (-11.6563446f * (y[174] * ir) + 2.31740596f * (y[172] * ir) - q * nx) * ib,
-                 (-11.6563446f * (y[190] * ir) + -2.31740596f * (y[192] * ir) - q * ny) * ib,
-                 (11.1138885f * (y[173] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[201], (-11.6563446f * r[5] + 2.31740596f * r[3] - q * nx) * ib,
+                 (-11.6563446f * r[21] + -2.31740596f * r[23] - q * ny) * ib,
+                 (11.1138885f * r[4] - q * nz) * ib);
     q = lr * y[202];
-    SHLIGHT_SET3(out_grad[202],
-                 (-11.138023f * (y[175] * ir) + 2.83823106f * (y[173] * ir) - q * nx) * ib,
-                 (-11.138023f * (y[189] * ir) + -2.83823106f * (y[191] * ir) - q * ny) * ib,
-                 (11.9070474f * (y[174] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[202], (-11.138023f * r[6] + 2.83823106f * r[4] - q * nx) * ib,
+                 (-11.138023f * r[20] + -2.83823106f * r[22] - q * ny) * ib,
+                 (11.9070474f * r[5] - q * nz) * ib);
     q = lr * y[203];
-    SHLIGHT_SET3(out_grad[203],
-                 (-10.6196882f * (y[176] * ir) + 3.35824028f * (y[174] * ir) - q * nx) * ib,
-                 (-10.6196882f * (y[188] * ir) + -3.35824028f * (y[190] * ir) - q * ny) * ib,
-                 (12.5653845f * (y[175] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[203], (-10.6196882f * r[7] + 3.35824028f * r[5] - q * nx) * ib,
+                 (-10.6196882f * r[19] + -3.35824028f * r[21] - q * ny) * ib,
+                 (12.5653845f * r[6] - q * nz) * ib);
     q = lr * y[204];
-    SHLIGHT_SET3(out_grad[204],
-                 (-10.1013384f * (y[177] * ir) + 3.87776186f * (y[175] * ir) - q * nx) * ib,
-                 (-10.1013384f * (y[187] * ir) + -3.87776186f * (y[189] * ir) - q * ny) * ib,
-                 (13.1092277f * (y[176] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[204], (-10.1013384f * r[8] + 3.87776186f * r[6] - q * nx) * ib,
+                 (-10.1013384f * r[18] + -3.87776186f * r[20] - q * ny) * ib,
+                 (13.1092277f * r[7] - q * nz) * ib);
     q = lr * y[205];
-    SHLIGHT_SET3(out_grad[205],
-                 (-9.58297101f * (y[178] * ir) + 4.39696865f * (y[176] * ir) - q * nx) * ib,
-                 (-9.58297101f * (y[186] * ir) + -4.39696865f * (y[188] * ir) - q * ny) * ib,
-                 (13.5523676f * (y[177] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[205], (-9.58297101f * r[9] + 4.39696865f * r[7] - q * nx) * ib,
+                 (-9.58297101f * r[17] + -4.39696865f * r[19] - q * ny) * ib,
+                 (13.5523676f * r[8] - q * nz) * ib);
     q = lr * y[206];
-    SHLIGHT_SET3(out_grad[206],
-                 (-9.06458309f * (y[179] * ir) + 4.9159604f * (y[177] * ir) - q * nx) * ib,
-                 (-9.06458309f * (y[185] * ir) + -4.9159604f * (y[187] * ir) - q * ny) * ib,
-                 (13.9044357f * (y[178] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[206], (-9.06458309f * r[10] + 4.9159604f * r[8] - q * nx) * ib,
+                 (-9.06458309f * r[16] + -4.9159604f * r[18] - q * ny) * ib,
+                 (13.9044357f * r[9] - q * nz) * ib);
     q = lr * y[207];
-    SHLIGHT_SET3(out_grad[207],
-                 (-8.5461709f * (y[180] * ir) + 5.43479871f * (y[178] * ir) - q * nx) * ib,
-                 (-8.5461709f * (y[184] * ir) + -5.43479871f * (y[186] * ir) - q * ny) * ib,
-                 (14.1722211f * (y[179] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[207], (-8.5461709f * r[11] + 5.43479871f * r[9] - q * nx) * ib,
+                 (-8.5461709f * r[15] + -5.43479871f * r[17] - q * ny) * ib,
+                 (14.1722211f * r[10] - q * nz) * ib);
     q = lr * y[208];
-    SHLIGHT_SET3(out_grad[208],
-                 (-8.02772972f * (y[181] * ir) + 5.9535237f * (y[179] * ir) - q * nx) * ib,
-                 (-8.02772972f * (y[183] * ir) + -5.9535237f * (y[185] * ir) - q * ny) * ib,
-                 (14.3604395f * (y[180] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[208], (-8.02772972f * r[12] + 5.9535237f * r[10] - q * nx) * ib,
+                 (-8.02772972f * r[14] + -5.9535237f * r[16] - q * ny) * ib,
+                 (14.3604395f * r[11] - q * nz) * ib);
     q = lr * y[209];
-    SHLIGHT_SET3(out_grad[209], (6.47216261f * (y[180] * ir) - q * nx) * ib,
-                 (-10.6196882f * (y[182] * ir) + -6.47216261f * (y[184] * ir) - q * ny) * ib,
-                 (14.4721956f * (y[181] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[209], (6.47216261f * r[11] - q * nx) * ib,
+                 (-10.6196882f * r[13] + -6.47216261f * r[15] - q * ny) * ib,
+                 (14.4721956f * r[12] - q * nz) * ib);
     q = lr * y[210];
-    SHLIGHT_SET3(out_grad[210], (9.88639169f * (y[183] * ir) - q * nx) * ib,
-                 (9.88639169f * (y[181] * ir) - q * ny) * ib,
-                 (14.5092563f * (y[182] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[210], (9.88639169f * r[14] - q * nx) * ib,
+                 (9.88639169f * r[12] - q * ny) * ib, (14.5092563f * r[13] - q * nz) * ib);
     q = lr * y[211];
-    SHLIGHT_SET3(
-        out_grad[211], (-10.6196882f * (y[182] * ir) + 6.47216261f * (y[184] * ir) - q * nx) * ib,
-        (6.47216261f * (y[180] * ir) - q * ny) * ib, (14.4721956f * (y[183] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[211], (-10.6196882f * r[13] + 6.47216261f * r[15] - q * nx) * ib,
+                 (6.47216261f * r[11] - q * ny) * ib, (14.4721956f * r[14] - q * nz) * ib);
     q = lr * y[212];
-    SHLIGHT_SET3(out_grad[212],
-                 (-8.02772972f * (y[183] * ir) + 5.9535237f * (y[185] * ir) - q * nx) * ib,
-                 (8.02772972f * (y[181] * ir) + 5.9535237f * (y[179] * ir) - q * ny) * ib,
-                 (14.3604395f * (y[184] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[212], (-8.02772972f * r[14] + 5.9535237f * r[16] - q * nx) * ib,
+                 (8.02772972f * r[12] + 5.9535237f * r[10] - q * ny) * ib,
+                 (14.3604395f * r[15] - q * nz) * ib);
     q = lr * y[213];
-    SHLIGHT_SET3(out_grad[213],
-                 (-8.5461709f * (y[184] * ir) + 5.43479871f * (y[186] * ir) - q * nx) * ib,
-                 (8.5461709f * (y[180] * ir) + 5.43479871f * (y[178] * ir) - q * ny) * ib,
-                 (14.1722211f * (y[185] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[213], (-8.5461709f * r[15] + 5.43479871f * r[17] - q * nx) * ib,
+                 (8.5461709f * r[11] + 5.43479871f * r[9] - q * ny) * ib,
+                 (14.1722211f * r[16] - q * nz) * ib);
     q = lr * y[214];
-    SHLIGHT_SET3(out_grad[214],
-                 (-9.06458309f * (y[185] * ir) + 4.9159604f * (y[187] * ir) - q * nx) * ib,
-                 (9.06458309f * (y[179] * ir) + 4.9159604f * (y[177] * ir) - q * ny) * ib,
-                 (13.9044357f * (y[186] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[214], (-9.06458309f * r[16] + 4.9159604f * r[18] - q * nx) * ib,
+                 (9.06458309f * r[10] + 4.9159604f * r[8] - q * ny) * ib,
+                 (13.9044357f * r[17] - q * nz) * ib);
     q = lr * y[215];
-    SHLIGHT_SET3(out_grad[215],
-                 (-9.58297101f * (y[186] * ir) + 4.39696865f * (y[188] * ir) - q * nx) * ib,
-                 (9.58297101f * (y[178] * ir) + 4.39696865f * (y[176] * ir) - q * ny) * ib,
-                 (13.5523676f * (y[187] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[215], (-9.58297101f * r[17] + 4.39696865f * r[19] - q * nx) * ib,
+                 (9.58297101f * r[9] + 4.39696865f * r[7] - q * ny) * ib,
+                 (13.5523676f * r[18] - q * nz) * ib);
     q = lr * y[216];
-    SHLIGHT_SET3(out_grad[216],
-                 (-10.1013384f * (y[187] * ir) + 3.87776186f * (y[189] * ir) - q * nx) * ib,
-                 (10.1013384f * (y[177] * ir) + 3.87776186f * (y[175] * ir) - q * ny) * ib,
-                 (13.1092277f * (y[188] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[216], (-10.1013384f * r[18] + 3.87776186f * r[20] - q * nx) * ib,
+                 (10.1013384f * r[8] + 3.87776186f * r[6] - q * ny) * ib,
+                 (13.1092277f * r[19] - q * nz) * ib);
     q = lr * y[217];
-    SHLIGHT_SET3(out_grad[217],
-                 (-10.6196882f * (y[188] * ir) + 3.35824028f * (y[190] * ir) - q * nx) * ib,
-                 (10.6196882f * (y[176] * ir) + 3.35824028f * (y[174] * ir) - q * ny) * ib,
-                 (12.5653845f * (y[189] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[217], (-10.6196882f * r[19] + 3.35824028f * r[21] - q * nx) * ib,
+                 (10.6196882f * r[7] + 3.35824028f * r[5] - q * ny) * ib,
+                 (12.5653845f * r[20] - q * nz) * ib);
     q = lr * y[218];
-    SHLIGHT_SET3(out_grad[218],
-                 (-11.138023f * (y[189] * ir) + 2.83823106f * (y[191] * ir) - q * nx) * ib,
-                 (11.138023f * (y[175] * ir) + 2.83823106f * (y[173] * ir) - q * ny) * ib,
-                 (11.9070474f * (y[190] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[218], (-11.138023f * r[20] + 2.83823106f * r[22] - q * nx) * ib,
+                 (11.138023f * r[6] + 2.83823106f * r[4] - q * ny) * ib,
+                 (11.9070474f * r[21] - q * nz) * ib);
     q = lr * y[219];
-    SHLIGHT_SET3(out_grad[219],
-                 (-11.6563446f * (y[190] * ir) + 2.31740596f * (y[192] * ir) - q * nx) * ib,
-                 (11.6563446f * (y[174] * ir) + 2.31740596f * (y[172] * ir) - q * ny) * ib,
-                 (11.1138885f * (y[191] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[219], (-11.6563446f * r[21] + 2.31740596f * r[23] - q * nx) * ib,
+                 (11.6563446f * r[5] + 2.31740596f * r[3] - q * ny) * ib,
+                 (11.1138885f * r[22] - q * nz) * ib);
     q = lr * y[220];
-    SHLIGHT_SET3(out_grad[220],
-                 (-12.1746549f * (y[191] * ir) + 1.79505494f * (y[193] * ir) - q * nx) * ib,
-                 (12.1746549f * (y[173] * ir) + 1.79505494f * (y[171] * ir) - q * ny) * ib,
-                 (10.1543641f * (y[192] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[220], (-12.1746549f * r[22] + 1.79505494f * r[24] - q * nx) * ib,
+                 (12.1746549f * r[4] + 1.79505494f * r[2] - q * ny) * ib,
+                 (10.1543641f * r[23] - q * nz) * ib);
     q = lr * y[221];
-    SHLIGHT_SET3(out_grad[221],
-                 (-12.6929552f * (y[192] * ir) + 1.26929552f * (y[194] * ir) - q * nx) * ib,
-                 (12.6929552f * (y[172] * ir) + 1.26929552f * (y[170] * ir) - q * ny) * ib,
-                 (8.97527468f * (y[193] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[221], (-12.6929552f * r[23] + 1.26929552f * r[25] - q * nx) * ib,
+                 (12.6929552f * r[3] + 1.26929552f * r[1] - q * ny) * ib,
+                 (8.97527468f * r[24] - q * nz) * ib);
     q = lr * y[222];
-    SHLIGHT_SET3(out_grad[222],
-                 (-13.2112466f * (y[193] * ir) + 0.732828109f * (y[195] * ir) - q * nx) * ib,
-                 (13.2112466f * (y[171] * ir) + 0.732828109f * (y[169] * ir) - q * ny) * ib,
-                 (7.47340965f * (y[194] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[222], (-13.2112466f * r[24] + 0.732828109f * r[26] - q * nx) * ib,
+                 (13.2112466f * r[2] + 0.732828109f * r[0] - q * ny) * ib,
+                 (7.47340965f * r[25] - q * nz) * ib);
     q = lr * y[223];
-    SHLIGHT_SET3(out_grad[223], (-13.7295302f * (y[194] * ir) - q * nx) * ib,
-                 (13.7295302f * (y[170] * ir) - q * ny) * ib,
-                 (5.38516481f * (y[195] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[223], (-13.7295302f * r[25] - q * nx) * ib,
+                 (13.7295302f * r[1] - q * ny) * ib, (5.38516481f * r[26] - q * nz) * ib);
     q = lr * y[224];
-    SHLIGHT_SET3(out_grad[224], (-14.2478068f * (y[195] * ir) - q * nx) * ib,
-                 (14.2478068f * (y[169] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[224], (-14.2478068f * r[26] - q * nx) * ib,
+                 (14.2478068f * r[0] - q * ny) * ib, -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 15
   if (n > 15) {
     lr = 15.0f * ir;
+    r[0] = y[196] * ir;
+    r[1] = y[197] * ir;
+    r[2] = y[198] * ir;
+    r[3] = y[199] * ir;
+    r[4] = y[200] * ir;
+    r[5] = y[201] * ir;
+    r[6] = y[202] * ir;
+    r[7] = y[203] * ir;
+    r[8] = y[204] * ir;
+    r[9] = y[205] * ir;
+    r[10] = y[206] * ir;
+    r[11] = y[207] * ir;
+    r[12] = y[208] * ir;
+    r[13] = y[209] * ir;
+    r[14] = y[210] * ir;
+    r[15] = y[211] * ir;
+    r[16] = y[212] * ir;
+    r[17] = y[213] * ir;
+    r[18] = y[214] * ir;
+    r[19] = y[215] * ir;
+    r[20] = y[216] * ir;
+    r[21] = y[217] * ir;
+    r[22] = y[218] * ir;
+    r[23] = y[219] * ir;
+    r[24] = y[220] * ir;
+    r[25] = y[221] * ir;
+    r[26] = y[222] * ir;
+    r[27] = y[223] * ir;
+    r[28] = y[224] * ir;
     q = lr * y[225];
-    SHLIGHT_SET3(out_grad[225], (-15.2479507f * (y[196] * ir) - q * nx) * ib,
-                 (-15.2479507f * (y[224] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[225], (-15.2479507f * r[0] - q * nx) * ib,
+                 (-15.2479507f * r[28] - q * ny) * ib, -q * nz * ib);
     q = lr * y[226];
-    SHLIGHT_SET3(out_grad[226], (-14.7309199f * (y[197] * ir) - q * nx) * ib,
-                 (-14.7309199f * (y[223] * ir) - q * ny) * ib,
-                 (5.56776436f * (y[196] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[226], (-14.7309199f * r[1] - q * nx) * ib,
+                 (-14.7309199f * r[27] - q * ny) * ib, (5.56776436f * r[0] - q * nz) * ib);
     q = lr * y[227];
-    SHLIGHT_SET3(out_grad[227],
-                 (-14.2138835f * (y[198] * ir) + 0.731083277f * (y[196] * ir) - q * nx) * ib,
-                 (-14.2138835f * (y[222] * ir) + -0.731083277f * (y[224] * ir) - q * ny) * ib,
-                 (7.73705816f * (y[197] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[227], (-14.2138835f * r[2] + 0.731083277f * r[0] - q * nx) * ib,
+                 (-14.2138835f * r[26] + -0.731083277f * r[28] - q * ny) * ib,
+                 (7.73705816f * r[1] - q * nz) * ib);
     q = lr * y[228];
-    SHLIGHT_SET3(out_grad[228],
-                 (-13.6968408f * (y[199] * ir) + 1.26627338f * (y[197] * ir) - q * nx) * ib,
-                 (-13.6968408f * (y[221] * ir) + -1.26627338f * (y[223] * ir) - q * ny) * ib,
-                 (9.30517098f * (y[198] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[228], (-13.6968408f * r[3] + 1.26627338f * r[1] - q * nx) * ib,
+                 (-13.6968408f * r[25] + -1.26627338f * r[27] - q * ny) * ib,
+                 (9.30517098f * r[2] - q * nz) * ib);
     q = lr * y[229];
-    SHLIGHT_SET3(out_grad[229],
-                 (-13.1797912f * (y[200] * ir) + 1.79078099f * (y[198] * ir) - q * nx) * ib,
-                 (-13.1797912f * (y[220] * ir) + -1.79078099f * (y[222] * ir) - q * ny) * ib,
-                 (10.543833f * (y[199] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[229], (-13.1797912f * r[4] + 1.79078099f * r[2] - q * nx) * ib,
+                 (-13.1797912f * r[24] + -1.79078099f * r[26] - q * ny) * ib,
+                 (10.543833f * r[3] - q * nz) * ib);
     q = lr * y[230];
-    SHLIGHT_SET3(out_grad[230],
-                 (-12.6627338f * (y[201] * ir) + 2.31188832f * (y[199] * ir) - q * nx) * ib,
-                 (-12.6627338f * (y[219] * ir) + -2.31188832f * (y[221] * ir) - q * ny) * ib,
-                 (11.5594416f * (y[200] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[230], (-12.6627338f * r[5] + 2.31188832f * r[3] - q * nx) * ib,
+                 (-12.6627338f * r[23] + -2.31188832f * r[25] - q * ny) * ib,
+                 (11.5594416f * r[4] - q * nz) * ib);
     q = lr * y[231];
-    SHLIGHT_SET3(out_grad[231],
-                 (-12.1456676f * (y[202] * ir) + 2.83147336f * (y[200] * ir) - q * nx) * ib,
-                 (-12.1456676f * (y[218] * ir) + -2.83147336f * (y[220] * ir) - q * ny) * ib,
-                 (12.4068946f * (y[201] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[231], (-12.1456676f * r[6] + 2.83147336f * r[4] - q * nx) * ib,
+                 (-12.1456676f * r[22] + -2.83147336f * r[24] - q * ny) * ib,
+                 (12.4068946f * r[5] - q * nz) * ib);
     q = lr * y[232];
-    SHLIGHT_SET3(out_grad[232],
-                 (-11.6285914f * (y[203] * ir) + 3.35024446f * (y[201] * ir) - q * nx) * ib,
-                 (-11.6285914f * (y[217] * ir) + -3.35024446f * (y[219] * ir) - q * ny) * ib,
-                 (13.1188204f * (y[202] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[232], (-11.6285914f * r[7] + 3.35024446f * r[5] - q * nx) * ib,
+                 (-11.6285914f * r[21] + -3.35024446f * r[23] - q * ny) * ib,
+                 (13.1188204f * r[6] - q * nz) * ib);
     q = lr * y[233];
-    SHLIGHT_SET3(out_grad[233],
-                 (-11.1115038f * (y[204] * ir) + 3.86852908f * (y[202] * ir) - q * nx) * ib,
-                 (-11.1115038f * (y[216] * ir) + -3.86852908f * (y[218] * ir) - q * ny) * ib,
-                 (13.7163381f * (y[203] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[233], (-11.1115038f * r[8] + 3.86852908f * r[6] - q * nx) * ib,
+                 (-11.1115038f * r[20] + -3.86852908f * r[22] - q * ny) * ib,
+                 (13.7163381f * r[7] - q * nz) * ib);
     q = lr * y[234];
-    SHLIGHT_SET3(out_grad[234],
-                 (-10.5944032f * (y[205] * ir) + 4.38649966f * (y[203] * ir) - q * nx) * ib,
-                 (-10.5944032f * (y[215] * ir) + -4.38649966f * (y[217] * ir) - q * ny) * ib,
-                 (14.2138835f * (y[204] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[234], (-10.5944032f * r[9] + 4.38649966f * r[7] - q * nx) * ib,
+                 (-10.5944032f * r[19] + -4.38649966f * r[21] - q * ny) * ib,
+                 (14.2138835f * r[8] - q * nz) * ib);
     q = lr * y[235];
-    SHLIGHT_SET3(out_grad[235],
-                 (-10.0772875f * (y[206] * ir) + 4.90425572f * (y[204] * ir) - q * nx) * ib,
-                 (-10.0772875f * (y[214] * ir) + -4.90425572f * (y[216] * ir) - q * ny) * ib,
-                 (14.6216655f * (y[205] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[235], (-10.0772875f * r[10] + 4.90425572f * r[8] - q * nx) * ib,
+                 (-10.0772875f * r[18] + -4.90425572f * r[20] - q * ny) * ib,
+                 (14.6216655f * r[9] - q * nz) * ib);
     q = lr * y[236];
-    SHLIGHT_SET3(out_grad[236],
-                 (-9.56015438f * (y[207] * ir) + 5.4218587f * (y[205] * ir) - q * nx) * ib,
-                 (-9.56015438f * (y[213] * ir) + -5.4218587f * (y[215] * ir) - q * ny) * ib,
-                 (14.9470329f * (y[206] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[236], (-9.56015438f * r[11] + 5.4218587f * r[9] - q * nx) * ib,
+                 (-9.56015438f * r[17] + -5.4218587f * r[19] - q * ny) * ib,
+                 (14.9470329f * r[10] - q * nz) * ib);
     q = lr * y[237];
-    SHLIGHT_SET3(out_grad[237],
-                 (-9.04300072f * (y[208] * ir) + 5.93934862f * (y[206] * ir) - q * nx) * ib,
-                 (-9.04300072f * (y[212] * ir) + -5.93934862f * (y[214] * ir) - q * ny) * ib,
-                 (15.1952806f * (y[207] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[237], (-9.04300072f * r[12] + 5.93934862f * r[10] - q * nx) * ib,
+                 (-9.04300072f * r[16] + -5.93934862f * r[18] - q * ny) * ib,
+                 (15.1952806f * r[11] - q * nz) * ib);
     q = lr * y[238];
-    SHLIGHT_SET3(out_grad[238],
-                 (-8.52582284f * (y[209] * ir) + 6.45675268f * (y[207] * ir) - q * nx) * ib,
-                 (-8.52582284f * (y[211] * ir) + -6.45675268f * (y[213] * ir) - q * ny) * ib,
-                 (15.3701457f * (y[208] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[238], (-8.52582284f * r[13] + 6.45675268f * r[11] - q * nx) * ib,
+                 (-8.52582284f * r[15] + -6.45675268f * r[17] - q * ny) * ib,
+                 (15.3701457f * r[12] - q * nz) * ib);
     q = lr * y[239];
-    SHLIGHT_SET3(out_grad[239], (6.97408998f * (y[208] * ir) - q * nx) * ib,
-                 (-11.3258934f * (y[210] * ir) + -6.97408998f * (y[212] * ir) - q * ny) * ib,
-                 (15.4741163f * (y[209] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[239], (6.97408998f * r[12] - q * nx) * ib,
+                 (-11.3258934f * r[14] + -6.97408998f * r[16] - q * ny) * ib,
+                 (15.4741163f * r[13] - q * nz) * ib);
     q = lr * y[240];
-    SHLIGHT_SET3(out_grad[240], (10.5944032f * (y[211] * ir) - q * nx) * ib,
-                 (10.5944032f * (y[209] * ir) - q * ny) * ib,
-                 (15.5086183f * (y[210] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[240], (10.5944032f * r[15] - q * nx) * ib,
+                 (10.5944032f * r[13] - q * ny) * ib, (15.5086183f * r[14] - q * nz) * ib);
     q = lr * y[241];
-    SHLIGHT_SET3(
-        out_grad[241], (-11.3258934f * (y[210] * ir) + 6.97408998f * (y[212] * ir) - q * nx) * ib,
-        (6.97408998f * (y[208] * ir) - q * ny) * ib, (15.4741163f * (y[211] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[241], (-11.3258934f * r[14] + 6.97408998f * r[16] - q * nx) * ib,
+                 (6.97408998f * r[12] - q * ny) * ib, (15.4741163f * r[15] - q * nz) * ib);
     q = lr * y[242];
-    SHLIGHT_SET3(out_grad[242],
-                 (-8.52582284f * (y[211] * ir) + 6.45675268f * (y[213] * ir) - q * nx) * ib,
-                 (8.52582284f * (y[209] * ir) + 6.45675268f * (y[207] * ir) - q * ny) * ib,
-                 (15.3701457f * (y[212] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[242], (-8.52582284f * r[15] + 6.45675268f * r[17] - q * nx) * ib,
+                 (8.52582284f * r[13] + 6.45675268f * r[11] - q * ny) * ib,
+                 (15.3701457f * r[16] - q * nz) * ib);
     q = lr * y[243];
-    SHLIGHT_SET3(out_grad[243],
-                 (-9.04300072f * (y[212] * ir) + 5.93934862f * (y[214] * ir) - q * nx) * ib,
-                 (9.04300072f * (y[208] * ir) + 5.93934862f * (y[206] * ir) - q * ny) * ib,
-                 (15.1952806f * (y[213] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[243], (-9.04300072f * r[16] + 5.93934862f * r[18] - q * nx) * ib,
+                 (9.04300072f * r[12] + 5.93934862f * r[10] - q * ny) * ib,
+                 (15.1952806f * r[17] - q * nz) * ib);
     q = lr * y[244];
-    SHLIGHT_SET3(out_grad[244],
-                 (-9.56015438f * (y[213] * ir) + 5.4218587f * (y[215] * ir) - q * nx) * ib,
-                 (9.56015438f * (y[207] * ir) + 5.4218587f * (y[205] * ir) - q * ny) * ib,
-                 (14.9470329f * (y[214] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[244], (-9.56015438f * r[17] + 5.4218587f * r[19] - q * nx) * ib,
+                 (9.56015438f * r[11] + 5.4218587f * r[9] - q * ny) * ib,
+                 (14.9470329f * r[18] - q * nz) * ib);
     q = lr * y[245];
-    SHLIGHT_SET3(out_grad[245],
-                 (-10.0772875f * (y[214] * ir) + 4.90425572f * (y[216] * ir) - q * nx) * ib,
-                 (10.0772875f * (y[206] * ir) + 4.90425572f * (y[204] * ir) - q * ny) * ib,
-                 (14.6216655f * (y[215] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[245], (-10.0772875f * r[18] + 4.90425572f * r[20] - q * nx) * ib,
+                 (10.0772875f * r[10] + 4.90425572f * r[8] - q * ny) * ib,
+                 (14.6216655f * r[19] - q * nz) * ib);
     q = lr * y[246];
-    SHLIGHT_SET3(out_grad[246],
-                 (-10.5944032f * (y[215] * ir) + 4.38649966f * (y[217] * ir) - q * nx) * ib,
-                 (10.5944032f * (y[205] * ir) + 4.38649966f * (y[203] * ir) - q * ny) * ib,
-                 (14.2138835f * (y[216] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[246], (-10.5944032f * r[19] + 4.38649966f * r[21] - q * nx) * ib,
+                 (10.5944032f * r[9] + 4.38649966f * r[7] - q * ny) * ib,
+                 (14.2138835f * r[20] - q * nz) * ib);
     q = lr * y[247];
-    SHLIGHT_SET3(out_grad[247],
-                 (-11.1115038f * (y[216] * ir) + 3.86852908f * (y[218] * ir) - q * nx) * ib,
-                 (11.1115038f * (y[204] * ir) + 3.86852908f * (y[202] * ir) - q * ny) * ib,
-                 (13.7163381f * (y[217] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[247], (-11.1115038f * r[20] + 3.86852908f * r[22] - q * nx) * ib,
+                 (11.1115038f * r[8] + 3.86852908f * r[6] - q * ny) * ib,
+                 (13.7163381f * r[21] - q * nz) * ib);
     q = lr * y[248];
-    SHLIGHT_SET3(out_grad[248],
-                 (-11.6285914f * (y[217] * ir) + 3.35024446f * (y[219] * ir) - q * nx) * ib,
-                 (11.6285914f * (y[203] * ir) + 3.35024446f * (y[201] * ir) - q * ny) * ib,
-                 (13.1188204f * (y[218] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[248], (-11.6285914f * r[21] + 3.35024446f * r[23] - q * nx) * ib,
+                 (11.6285914f * r[7] + 3.35024446f * r[5] - q * ny) * ib,
+                 (13.1188204f * r[22] - q * nz) * ib);
     q = lr * y[249];
-    SHLIGHT_SET3(out_grad[249],
-                 (-12.1456676f * (y[218] * ir) + 2.83147336f * (y[220] * ir) - q * nx) * ib,
-                 (12.1456676f * (y[202] * ir) + 2.83147336f * (y[200] * ir) - q * ny) * ib,
-                 (12.4068946f * (y[219] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[249], (-12.1456676f * r[22] + 2.83147336f * r[24] - q * nx) * ib,
+                 (12.1456676f * r[6] + 2.83147336f * r[4] - q * ny) * ib,
+                 (12.4068946f * r[23] - q * nz) * ib);
     q = lr * y[250];
-    SHLIGHT_SET3(out_grad[250],
-                 (-12.6627338f * (y[219] * ir) + 2.31188832f * (y[221] * ir) - q * nx) * ib,
-                 (12.6627338f * (y[201] * ir) + 2.31188832f * (y[199] * ir) - q * ny) * ib,
-                 (11.5594416f * (y[220] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[250], (-12.6627338f * r[23] + 2.31188832f * r[25] - q * nx) * ib,
+                 (12.6627338f * r[5] + 2.31188832f * r[3] - q * ny) * ib,
+                 (11.5594416f * r[24] - q * nz) * ib);
     q = lr * y[251];
-    SHLIGHT_SET3(out_grad[251],
-                 (-13.1797912f * (y[220] * ir) + 1.79078099f * (y[222] * ir) - q * nx) * ib,
-                 (13.1797912f * (y[200] * ir) + 1.79078099f * (y[198] * ir) - q * ny) * ib,
-                 (10.543833f * (y[221] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[251], (-13.1797912f * r[24] + 1.79078099f * r[26] - q * nx) * ib,
+                 (13.1797912f * r[4] + 1.79078099f * r[2] - q * ny) * ib,
+                 (10.543833f * r[25] - q * nz) * ib);
     q = lr * y[252];
-    SHLIGHT_SET3(out_grad[252],
-                 (-13.6968408f * (y[221] * ir) + 1.26627338f * (y[223] * ir) - q * nx) * ib,
-                 (13.6968408f * (y[199] * ir) + 1.26627338f * (y[197] * ir) - q * ny) * ib,
-                 (9.30517098f * (y[222] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[252], (-13.6968408f * r[25] + 1.26627338f * r[27] - q * nx) * ib,
+                 (13.6968408f * r[3] + 1.26627338f * r[1] - q * ny) * ib,
+                 (9.30517098f * r[26] - q * nz) * ib);
     q = lr * y[253];
-    SHLIGHT_SET3(out_grad[253],
-                 (-14.2138835f * (y[222] * ir) + 0.731083277f * (y[224] * ir) - q * nx) * ib,
-                 (14.2138835f * (y[198] * ir) + 0.731083277f * (y[196] * ir) - q * ny) * ib,
-                 (7.73705816f * (y[223] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[253], (-14.2138835f * r[26] + 0.731083277f * r[28] - q * nx) * ib,
+                 (14.2138835f * r[2] + 0.731083277f * r[0] - q * ny) * ib,
+                 (7.73705816f * r[27] - q * nz) * ib);
     q = lr * y[254];
-    SHLIGHT_SET3(out_grad[254], (-14.7309199f * (y[223] * ir) - q * nx) * ib,
-                 (14.7309199f * (y[197] * ir) - q * ny) * ib,
-                 (5.56776436f * (y[224] * ir) - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[254], (-14.7309199f * r[27] - q * nx) * ib,
+                 (14.7309199f * r[1] - q * ny) * ib, (5.56776436f * r[28] - q * nz) * ib);
     q = lr * y[255];
-    SHLIGHT_SET3(out_grad[255], (-15.2479507f * (y[224] * ir) - q * nx) * ib,
-                 (15.2479507f * (y[196] * ir) - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[255], (-15.2479507f * r[28] - q * nx) * ib,
+                 (15.2479507f * r[0] - q * ny) * ib, -q * nz * ib);
   }
 #endif
 }
@@ -10083,9 +10105,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = l * l; i < (l + 1) * (l + 1); ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10093,9 +10115,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
   for (i = 0; i < 1; ++i) {
     y = io_sh[i];
     io_sh[i] = kv[l] * y;
-    SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                 kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                 kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+    io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+    io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+    io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
   }
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
@@ -10103,9 +10125,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 1; i < 4; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10115,9 +10137,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 4; i < 9; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10127,9 +10149,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 9; i < 16; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10139,9 +10161,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 16; i < 25; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10151,9 +10173,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 25; i < 36; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10163,9 +10185,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 36; i < 49; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10175,9 +10197,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 49; i < 64; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10187,9 +10209,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 64; i < 81; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10199,9 +10221,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 81; i < 100; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10211,9 +10233,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 100; i < 121; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10223,9 +10245,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 121; i < 144; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10235,9 +10257,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 144; i < 169; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10247,9 +10269,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 169; i < 196; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10259,9 +10281,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 196; i < 225; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
@@ -10271,144 +10293,592 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
     for (i = 225; i < 256; ++i) {
       y = io_sh[i];
       io_sh[i] = kv[l] * y;
-      SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,
-                   kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,
-                   kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);
+      io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;
+      io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;
+      io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;
     }
   }
 #endif
 }
 
 SHLIGHT_INLINE void shli_sh_zero_grad(int n, float *out_sh, float (*out_grad)[3]) {
-  int i;
 #if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
+  int i;
   for (i = SHLIGHT_UNROLLED_BANDS * SHLIGHT_UNROLLED_BANDS; i < n * n; ++i) {
     out_sh[i] = 0.0f;
     SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
   }
 #endif
-  for (i = 0; i < 1; ++i) {
-    out_sh[i] = 0.0f;
-    SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-  }
+  out_sh[0] = 0.0f;
+  SHLIGHT_SET3(out_grad[0], 0.0f, 0.0f, 0.0f);
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
-    for (i = 1; i < 4; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[1] = 0.0f;
+    SHLIGHT_SET3(out_grad[1], 0.0f, 0.0f, 0.0f);
+    out_sh[2] = 0.0f;
+    SHLIGHT_SET3(out_grad[2], 0.0f, 0.0f, 0.0f);
+    out_sh[3] = 0.0f;
+    SHLIGHT_SET3(out_grad[3], 0.0f, 0.0f, 0.0f);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 2
   if (n > 2) {
-    for (i = 4; i < 9; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[4] = 0.0f;
+    SHLIGHT_SET3(out_grad[4], 0.0f, 0.0f, 0.0f);
+    out_sh[5] = 0.0f;
+    SHLIGHT_SET3(out_grad[5], 0.0f, 0.0f, 0.0f);
+    out_sh[6] = 0.0f;
+    SHLIGHT_SET3(out_grad[6], 0.0f, 0.0f, 0.0f);
+    out_sh[7] = 0.0f;
+    SHLIGHT_SET3(out_grad[7], 0.0f, 0.0f, 0.0f);
+    out_sh[8] = 0.0f;
+    SHLIGHT_SET3(out_grad[8], 0.0f, 0.0f, 0.0f);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 3
   if (n > 3) {
-    for (i = 9; i < 16; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[9] = 0.0f;
+    SHLIGHT_SET3(out_grad[9], 0.0f, 0.0f, 0.0f);
+    out_sh[10] = 0.0f;
+    SHLIGHT_SET3(out_grad[10], 0.0f, 0.0f, 0.0f);
+    out_sh[11] = 0.0f;
+    SHLIGHT_SET3(out_grad[11], 0.0f, 0.0f, 0.0f);
+    out_sh[12] = 0.0f;
+    SHLIGHT_SET3(out_grad[12], 0.0f, 0.0f, 0.0f);
+    out_sh[13] = 0.0f;
+    SHLIGHT_SET3(out_grad[13], 0.0f, 0.0f, 0.0f);
+    out_sh[14] = 0.0f;
+    SHLIGHT_SET3(out_grad[14], 0.0f, 0.0f, 0.0f);
+    out_sh[15] = 0.0f;
+    SHLIGHT_SET3(out_grad[15], 0.0f, 0.0f, 0.0f);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 4
   if (n > 4) {
-    for (i = 16; i < 25; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[16] = 0.0f;
+    SHLIGHT_SET3(out_grad[16], 0.0f, 0.0f, 0.0f);
+    out_sh[17] = 0.0f;
+    SHLIGHT_SET3(out_grad[17], 0.0f, 0.0f, 0.0f);
+    out_sh[18] = 0.0f;
+    SHLIGHT_SET3(out_grad[18], 0.0f, 0.0f, 0.0f);
+    out_sh[19] = 0.0f;
+    SHLIGHT_SET3(out_grad[19], 0.0f, 0.0f, 0.0f);
+    out_sh[20] = 0.0f;
+    SHLIGHT_SET3(out_grad[20], 0.0f, 0.0f, 0.0f);
+    out_sh[21] = 0.0f;
+    SHLIGHT_SET3(out_grad[21], 0.0f, 0.0f, 0.0f);
+    out_sh[22] = 0.0f;
+    SHLIGHT_SET3(out_grad[22], 0.0f, 0.0f, 0.0f);
+    out_sh[23] = 0.0f;
+    SHLIGHT_SET3(out_grad[23], 0.0f, 0.0f, 0.0f);
+    out_sh[24] = 0.0f;
+    SHLIGHT_SET3(out_grad[24], 0.0f, 0.0f, 0.0f);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 5
   if (n > 5) {
-    for (i = 25; i < 36; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[25] = 0.0f;
+    SHLIGHT_SET3(out_grad[25], 0.0f, 0.0f, 0.0f);
+    out_sh[26] = 0.0f;
+    SHLIGHT_SET3(out_grad[26], 0.0f, 0.0f, 0.0f);
+    out_sh[27] = 0.0f;
+    SHLIGHT_SET3(out_grad[27], 0.0f, 0.0f, 0.0f);
+    out_sh[28] = 0.0f;
+    SHLIGHT_SET3(out_grad[28], 0.0f, 0.0f, 0.0f);
+    out_sh[29] = 0.0f;
+    SHLIGHT_SET3(out_grad[29], 0.0f, 0.0f, 0.0f);
+    out_sh[30] = 0.0f;
+    SHLIGHT_SET3(out_grad[30], 0.0f, 0.0f, 0.0f);
+    out_sh[31] = 0.0f;
+    SHLIGHT_SET3(out_grad[31], 0.0f, 0.0f, 0.0f);
+    out_sh[32] = 0.0f;
+    SHLIGHT_SET3(out_grad[32], 0.0f, 0.0f, 0.0f);
+    out_sh[33] = 0.0f;
+    SHLIGHT_SET3(out_grad[33], 0.0f, 0.0f, 0.0f);
+    out_sh[34] = 0.0f;
+    SHLIGHT_SET3(out_grad[34], 0.0f, 0.0f, 0.0f);
+    out_sh[35] = 0.0f;
+    SHLIGHT_SET3(out_grad[35], 0.0f, 0.0f, 0.0f);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 6
   if (n > 6) {
-    for (i = 36; i < 49; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[36] = 0.0f;
+    SHLIGHT_SET3(out_grad[36], 0.0f, 0.0f, 0.0f);
+    out_sh[37] = 0.0f;
+    SHLIGHT_SET3(out_grad[37], 0.0f, 0.0f, 0.0f);
+    out_sh[38] = 0.0f;
+    SHLIGHT_SET3(out_grad[38], 0.0f, 0.0f, 0.0f);
+    out_sh[39] = 0.0f;
+    SHLIGHT_SET3(out_grad[39], 0.0f, 0.0f, 0.0f);
+    out_sh[40] = 0.0f;
+    SHLIGHT_SET3(out_grad[40], 0.0f, 0.0f, 0.0f);
+    out_sh[41] = 0.0f;
+    SHLIGHT_SET3(out_grad[41], 0.0f, 0.0f, 0.0f);
+    out_sh[42] = 0.0f;
+    SHLIGHT_SET3(out_grad[42], 0.0f, 0.0f, 0.0f);
+    out_sh[43] = 0.0f;
+    SHLIGHT_SET3(out_grad[43], 0.0f, 0.0f, 0.0f);
+    out_sh[44] = 0.0f;
+    SHLIGHT_SET3(out_grad[44], 0.0f, 0.0f, 0.0f);
+    out_sh[45] = 0.0f;
+    SHLIGHT_SET3(out_grad[45], 0.0f, 0.0f, 0.0f);
+    out_sh[46] = 0.0f;
+    SHLIGHT_SET3(out_grad[46], 0.0f, 0.0f, 0.0f);
+    out_sh[47] = 0.0f;
+    SHLIGHT_SET3(out_grad[47], 0.0f, 0.0f, 0.0f);
+    out_sh[48] = 0.0f;
+    SHLIGHT_SET3(out_grad[48], 0.0f, 0.0f, 0.0f);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 7
   if (n > 7) {
-    for (i = 49; i < 64; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[49] = 0.0f;
+    SHLIGHT_SET3(out_grad[49], 0.0f, 0.0f, 0.0f);
+    out_sh[50] = 0.0f;
+    SHLIGHT_SET3(out_grad[50], 0.0f, 0.0f, 0.0f);
+    out_sh[51] = 0.0f;
+    SHLIGHT_SET3(out_grad[51], 0.0f, 0.0f, 0.0f);
+    out_sh[52] = 0.0f;
+    SHLIGHT_SET3(out_grad[52], 0.0f, 0.0f, 0.0f);
+    out_sh[53] = 0.0f;
+    SHLIGHT_SET3(out_grad[53], 0.0f, 0.0f, 0.0f);
+    out_sh[54] = 0.0f;
+    SHLIGHT_SET3(out_grad[54], 0.0f, 0.0f, 0.0f);
+    out_sh[55] = 0.0f;
+    SHLIGHT_SET3(out_grad[55], 0.0f, 0.0f, 0.0f);
+    out_sh[56] = 0.0f;
+    SHLIGHT_SET3(out_grad[56], 0.0f, 0.0f, 0.0f);
+    out_sh[57] = 0.0f;
+    SHLIGHT_SET3(out_grad[57], 0.0f, 0.0f, 0.0f);
+    out_sh[58] = 0.0f;
+    SHLIGHT_SET3(out_grad[58], 0.0f, 0.0f, 0.0f);
+    out_sh[59] = 0.0f;
+    SHLIGHT_SET3(out_grad[59], 0.0f, 0.0f, 0.0f);
+    out_sh[60] = 0.0f;
+    SHLIGHT_SET3(out_grad[60], 0.0f, 0.0f, 0.0f);
+    out_sh[61] = 0.0f;
+    SHLIGHT_SET3(out_grad[61], 0.0f, 0.0f, 0.0f);
+    out_sh[62] = 0.0f;
+    SHLIGHT_SET3(out_grad[62], 0.0f, 0.0f, 0.0f);
+    out_sh[63] = 0.0f;
+    SHLIGHT_SET3(out_grad[63], 0.0f, 0.0f, 0.0f);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 8
   if (n > 8) {
-    for (i = 64; i < 81; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[64] = 0.0f;
+    SHLIGHT_SET3(out_grad[64], 0.0f, 0.0f, 0.0f);
+    out_sh[65] = 0.0f;
+    SHLIGHT_SET3(out_grad[65], 0.0f, 0.0f, 0.0f);
+    out_sh[66] = 0.0f;
+    SHLIGHT_SET3(out_grad[66], 0.0f, 0.0f, 0.0f);
+    out_sh[67] = 0.0f;
+    SHLIGHT_SET3(out_grad[67], 0.0f, 0.0f, 0.0f);
+    out_sh[68] = 0.0f;
+    SHLIGHT_SET3(out_grad[68], 0.0f, 0.0f, 0.0f);
+    out_sh[69] = 0.0f;
+    SHLIGHT_SET3(out_grad[69], 0.0f, 0.0f, 0.0f);
+    out_sh[70] = 0.0f;
+    SHLIGHT_SET3(out_grad[70], 0.0f, 0.0f, 0.0f);
+    out_sh[71] = 0.0f;
+    SHLIGHT_SET3(out_grad[71], 0.0f, 0.0f, 0.0f);
+    out_sh[72] = 0.0f;
+    SHLIGHT_SET3(out_grad[72], 0.0f, 0.0f, 0.0f);
+    out_sh[73] = 0.0f;
+    SHLIGHT_SET3(out_grad[73], 0.0f, 0.0f, 0.0f);
+    out_sh[74] = 0.0f;
+    SHLIGHT_SET3(out_grad[74], 0.0f, 0.0f, 0.0f);
+    out_sh[75] = 0.0f;
+    SHLIGHT_SET3(out_grad[75], 0.0f, 0.0f, 0.0f);
+    out_sh[76] = 0.0f;
+    SHLIGHT_SET3(out_grad[76], 0.0f, 0.0f, 0.0f);
+    out_sh[77] = 0.0f;
+    SHLIGHT_SET3(out_grad[77], 0.0f, 0.0f, 0.0f);
+    out_sh[78] = 0.0f;
+    SHLIGHT_SET3(out_grad[78], 0.0f, 0.0f, 0.0f);
+    out_sh[79] = 0.0f;
+    SHLIGHT_SET3(out_grad[79], 0.0f, 0.0f, 0.0f);
+    out_sh[80] = 0.0f;
+    SHLIGHT_SET3(out_grad[80], 0.0f, 0.0f, 0.0f);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 9
   if (n > 9) {
-    for (i = 81; i < 100; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[81] = 0.0f;
+    SHLIGHT_SET3(out_grad[81], 0.0f, 0.0f, 0.0f);
+    out_sh[82] = 0.0f;
+    SHLIGHT_SET3(out_grad[82], 0.0f, 0.0f, 0.0f);
+    out_sh[83] = 0.0f;
+    SHLIGHT_SET3(out_grad[83], 0.0f, 0.0f, 0.0f);
+    out_sh[84] = 0.0f;
+    SHLIGHT_SET3(out_grad[84], 0.0f, 0.0f, 0.0f);
+    out_sh[85] = 0.0f;
+    SHLIGHT_SET3(out_grad[85], 0.0f, 0.0f, 0.0f);
+    out_sh[86] = 0.0f;
+    SHLIGHT_SET3(out_grad[86], 0.0f, 0.0f, 0.0f);
+    out_sh[87] = 0.0f;
+    SHLIGHT_SET3(out_grad[87], 0.0f, 0.0f, 0.0f);
+    out_sh[88] = 0.0f;
+    SHLIGHT_SET3(out_grad[88], 0.0f, 0.0f, 0.0f);
+    out_sh[89] = 0.0f;
+    SHLIGHT_SET3(out_grad[89], 0.0f, 0.0f, 0.0f);
+    out_sh[90] = 0.0f;
+    SHLIGHT_SET3(out_grad[90], 0.0f, 0.0f, 0.0f);
+    out_sh[91] = 0.0f;
+    SHLIGHT_SET3(out_grad[91], 0.0f, 0.0f, 0.0f);
+    out_sh[92] = 0.0f;
+    SHLIGHT_SET3(out_grad[92], 0.0f, 0.0f, 0.0f);
+    out_sh[93] = 0.0f;
+    SHLIGHT_SET3(out_grad[93], 0.0f, 0.0f, 0.0f);
+    out_sh[94] = 0.0f;
+    SHLIGHT_SET3(out_grad[94], 0.0f, 0.0f, 0.0f);
+    out_sh[95] = 0.0f;
+    SHLIGHT_SET3(out_grad[95], 0.0f, 0.0f, 0.0f);
+    out_sh[96] = 0.0f;
+    SHLIGHT_SET3(out_grad[96], 0.0f, 0.0f, 0.0f);
+    out_sh[97] = 0.0f;
+    SHLIGHT_SET3(out_grad[97], 0.0f, 0.0f, 0.0f);
+    out_sh[98] = 0.0f;
+    SHLIGHT_SET3(out_grad[98], 0.0f, 0.0f, 0.0f);
+    out_sh[99] = 0.0f;
+    SHLIGHT_SET3(out_grad[99], 0.0f, 0.0f, 0.0f);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 10
   if (n > 10) {
-    for (i = 100; i < 121; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[100] = 0.0f;
+    SHLIGHT_SET3(out_grad[100], 0.0f, 0.0f, 0.0f);
+    out_sh[101] = 0.0f;
+    SHLIGHT_SET3(out_grad[101], 0.0f, 0.0f, 0.0f);
+    out_sh[102] = 0.0f;
+    SHLIGHT_SET3(out_grad[102], 0.0f, 0.0f, 0.0f);
+    out_sh[103] = 0.0f;
+    SHLIGHT_SET3(out_grad[103], 0.0f, 0.0f, 0.0f);
+    out_sh[104] = 0.0f;
+    SHLIGHT_SET3(out_grad[104], 0.0f, 0.0f, 0.0f);
+    out_sh[105] = 0.0f;
+    SHLIGHT_SET3(out_grad[105], 0.0f, 0.0f, 0.0f);
+    out_sh[106] = 0.0f;
+    SHLIGHT_SET3(out_grad[106], 0.0f, 0.0f, 0.0f);
+    out_sh[107] = 0.0f;
+    SHLIGHT_SET3(out_grad[107], 0.0f, 0.0f, 0.0f);
+    out_sh[108] = 0.0f;
+    SHLIGHT_SET3(out_grad[108], 0.0f, 0.0f, 0.0f);
+    out_sh[109] = 0.0f;
+    SHLIGHT_SET3(out_grad[109], 0.0f, 0.0f, 0.0f);
+    out_sh[110] = 0.0f;
+    SHLIGHT_SET3(out_grad[110], 0.0f, 0.0f, 0.0f);
+    out_sh[111] = 0.0f;
+    SHLIGHT_SET3(out_grad[111], 0.0f, 0.0f, 0.0f);
+    out_sh[112] = 0.0f;
+    SHLIGHT_SET3(out_grad[112], 0.0f, 0.0f, 0.0f);
+    out_sh[113] = 0.0f;
+    SHLIGHT_SET3(out_grad[113], 0.0f, 0.0f, 0.0f);
+    out_sh[114] = 0.0f;
+    SHLIGHT_SET3(out_grad[114], 0.0f, 0.0f, 0.0f);
+    out_sh[115] = 0.0f;
+    SHLIGHT_SET3(out_grad[115], 0.0f, 0.0f, 0.0f);
+    out_sh[116] = 0.0f;
+    SHLIGHT_SET3(out_grad[116], 0.0f, 0.0f, 0.0f);
+    out_sh[117] = 0.0f;
+    SHLIGHT_SET3(out_grad[117], 0.0f, 0.0f, 0.0f);
+    out_sh[118] = 0.0f;
+    SHLIGHT_SET3(out_grad[118], 0.0f, 0.0f, 0.0f);
+    out_sh[119] = 0.0f;
+    SHLIGHT_SET3(out_grad[119], 0.0f, 0.0f, 0.0f);
+    out_sh[120] = 0.0f;
+    SHLIGHT_SET3(out_grad[120], 0.0f, 0.0f, 0.0f);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 11
   if (n > 11) {
-    for (i = 121; i < 144; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[121] = 0.0f;
+    SHLIGHT_SET3(out_grad[121], 0.0f, 0.0f, 0.0f);
+    out_sh[122] = 0.0f;
+    SHLIGHT_SET3(out_grad[122], 0.0f, 0.0f, 0.0f);
+    out_sh[123] = 0.0f;
+    SHLIGHT_SET3(out_grad[123], 0.0f, 0.0f, 0.0f);
+    out_sh[124] = 0.0f;
+    SHLIGHT_SET3(out_grad[124], 0.0f, 0.0f, 0.0f);
+    out_sh[125] = 0.0f;
+    SHLIGHT_SET3(out_grad[125], 0.0f, 0.0f, 0.0f);
+    out_sh[126] = 0.0f;
+    SHLIGHT_SET3(out_grad[126], 0.0f, 0.0f, 0.0f);
+    out_sh[127] = 0.0f;
+    SHLIGHT_SET3(out_grad[127], 0.0f, 0.0f, 0.0f);
+    out_sh[128] = 0.0f;
+    SHLIGHT_SET3(out_grad[128], 0.0f, 0.0f, 0.0f);
+    out_sh[129] = 0.0f;
+    SHLIGHT_SET3(out_grad[129], 0.0f, 0.0f, 0.0f);
+    out_sh[130] = 0.0f;
+    SHLIGHT_SET3(out_grad[130], 0.0f, 0.0f, 0.0f);
+    out_sh[131] = 0.0f;
+    SHLIGHT_SET3(out_grad[131], 0.0f, 0.0f, 0.0f);
+    out_sh[132] = 0.0f;
+    SHLIGHT_SET3(out_grad[132], 0.0f, 0.0f, 0.0f);
+    out_sh[133] = 0.0f;
+    SHLIGHT_SET3(out_grad[133], 0.0f, 0.0f, 0.0f);
+    out_sh[134] = 0.0f;
+    SHLIGHT_SET3(out_grad[134], 0.0f, 0.0f, 0.0f);
+    out_sh[135] = 0.0f;
+    SHLIGHT_SET3(out_grad[135], 0.0f, 0.0f, 0.0f);
+    out_sh[136] = 0.0f;
+    SHLIGHT_SET3(out_grad[136], 0.0f, 0.0f, 0.0f);
+    out_sh[137] = 0.0f;
+    SHLIGHT_SET3(out_grad[137], 0.0f, 0.0f, 0.0f);
+    out_sh[138] = 0.0f;
+    SHLIGHT_SET3(out_grad[138], 0.0f, 0.0f, 0.0f);
+    out_sh[139] = 0.0f;
+    SHLIGHT_SET3(out_grad[139], 0.0f, 0.0f, 0.0f);
+    out_sh[140] = 0.0f;
+    SHLIGHT_SET3(out_grad[140], 0.0f, 0.0f, 0.0f);
+    out_sh[141] = 0.0f;
+    SHLIGHT_SET3(out_grad[141], 0.0f, 0.0f, 0.0f);
+    out_sh[142] = 0.0f;
+    SHLIGHT_SET3(out_grad[142], 0.0f, 0.0f, 0.0f);
+    out_sh[143] = 0.0f;
+    SHLIGHT_SET3(out_grad[143], 0.0f, 0.0f, 0.0f);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 12
   if (n > 12) {
-    for (i = 144; i < 169; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[144] = 0.0f;
+    SHLIGHT_SET3(out_grad[144], 0.0f, 0.0f, 0.0f);
+    out_sh[145] = 0.0f;
+    SHLIGHT_SET3(out_grad[145], 0.0f, 0.0f, 0.0f);
+    out_sh[146] = 0.0f;
+    SHLIGHT_SET3(out_grad[146], 0.0f, 0.0f, 0.0f);
+    out_sh[147] = 0.0f;
+    SHLIGHT_SET3(out_grad[147], 0.0f, 0.0f, 0.0f);
+    out_sh[148] = 0.0f;
+    SHLIGHT_SET3(out_grad[148], 0.0f, 0.0f, 0.0f);
+    out_sh[149] = 0.0f;
+    SHLIGHT_SET3(out_grad[149], 0.0f, 0.0f, 0.0f);
+    out_sh[150] = 0.0f;
+    SHLIGHT_SET3(out_grad[150], 0.0f, 0.0f, 0.0f);
+    out_sh[151] = 0.0f;
+    SHLIGHT_SET3(out_grad[151], 0.0f, 0.0f, 0.0f);
+    out_sh[152] = 0.0f;
+    SHLIGHT_SET3(out_grad[152], 0.0f, 0.0f, 0.0f);
+    out_sh[153] = 0.0f;
+    SHLIGHT_SET3(out_grad[153], 0.0f, 0.0f, 0.0f);
+    out_sh[154] = 0.0f;
+    SHLIGHT_SET3(out_grad[154], 0.0f, 0.0f, 0.0f);
+    out_sh[155] = 0.0f;
+    SHLIGHT_SET3(out_grad[155], 0.0f, 0.0f, 0.0f);
+    out_sh[156] = 0.0f;
+    SHLIGHT_SET3(out_grad[156], 0.0f, 0.0f, 0.0f);
+    out_sh[157] = 0.0f;
+    SHLIGHT_SET3(out_grad[157], 0.0f, 0.0f, 0.0f);
+    out_sh[158] = 0.0f;
+    SHLIGHT_SET3(out_grad[158], 0.0f, 0.0f, 0.0f);
+    out_sh[159] = 0.0f;
+    SHLIGHT_SET3(out_grad[159], 0.0f, 0.0f, 0.0f);
+    out_sh[160] = 0.0f;
+    SHLIGHT_SET3(out_grad[160], 0.0f, 0.0f, 0.0f);
+    out_sh[161] = 0.0f;
+    SHLIGHT_SET3(out_grad[161], 0.0f, 0.0f, 0.0f);
+    out_sh[162] = 0.0f;
+    SHLIGHT_SET3(out_grad[162], 0.0f, 0.0f, 0.0f);
+    out_sh[163] = 0.0f;
+    SHLIGHT_SET3(out_grad[163], 0.0f, 0.0f, 0.0f);
+    out_sh[164] = 0.0f;
+    SHLIGHT_SET3(out_grad[164], 0.0f, 0.0f, 0.0f);
+    out_sh[165] = 0.0f;
+    SHLIGHT_SET3(out_grad[165], 0.0f, 0.0f, 0.0f);
+    out_sh[166] = 0.0f;
+    SHLIGHT_SET3(out_grad[166], 0.0f, 0.0f, 0.0f);
+    out_sh[167] = 0.0f;
+    SHLIGHT_SET3(out_grad[167], 0.0f, 0.0f, 0.0f);
+    out_sh[168] = 0.0f;
+    SHLIGHT_SET3(out_grad[168], 0.0f, 0.0f, 0.0f);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 13
   if (n > 13) {
-    for (i = 169; i < 196; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[169] = 0.0f;
+    SHLIGHT_SET3(out_grad[169], 0.0f, 0.0f, 0.0f);
+    out_sh[170] = 0.0f;
+    SHLIGHT_SET3(out_grad[170], 0.0f, 0.0f, 0.0f);
+    out_sh[171] = 0.0f;
+    SHLIGHT_SET3(out_grad[171], 0.0f, 0.0f, 0.0f);
+    out_sh[172] = 0.0f;
+    SHLIGHT_SET3(out_grad[172], 0.0f, 0.0f, 0.0f);
+    out_sh[173] = 0.0f;
+    SHLIGHT_SET3(out_grad[173], 0.0f, 0.0f, 0.0f);
+    out_sh[174] = 0.0f;
+    SHLIGHT_SET3(out_grad[174], 0.0f, 0.0f, 0.0f);
+    out_sh[175] = 0.0f;
+    SHLIGHT_SET3(out_grad[175], 0.0f, 0.0f, 0.0f);
+    out_sh[176] = 0.0f;
+    SHLIGHT_SET3(out_grad[176], 0.0f, 0.0f, 0.0f);
+    out_sh[177] = 0.0f;
+    SHLIGHT_SET3(out_grad[177], 0.0f, 0.0f, 0.0f);
+    out_sh[178] = 0.0f;
+    SHLIGHT_SET3(out_grad[178], 0.0f, 0.0f, 0.0f);
+    out_sh[179] = 0.0f;
+    SHLIGHT_SET3(out_grad[179], 0.0f, 0.0f, 0.0f);
+    out_sh[180] = 0.0f;
+    SHLIGHT_SET3(out_grad[180], 0.0f, 0.0f, 0.0f);
+    out_sh[181] = 0.0f;
+    SHLIGHT_SET3(out_grad[181], 0.0f, 0.0f, 0.0f);
+    out_sh[182] = 0.0f;
+    SHLIGHT_SET3(out_grad[182], 0.0f, 0.0f, 0.0f);
+    out_sh[183] = 0.0f;
+    SHLIGHT_SET3(out_grad[183], 0.0f, 0.0f, 0.0f);
+    out_sh[184] = 0.0f;
+    SHLIGHT_SET3(out_grad[184], 0.0f, 0.0f, 0.0f);
+    out_sh[185] = 0.0f;
+    SHLIGHT_SET3(out_grad[185], 0.0f, 0.0f, 0.0f);
+    out_sh[186] = 0.0f;
+    SHLIGHT_SET3(out_grad[186], 0.0f, 0.0f, 0.0f);
+    out_sh[187] = 0.0f;
+    SHLIGHT_SET3(out_grad[187], 0.0f, 0.0f, 0.0f);
+    out_sh[188] = 0.0f;
+    SHLIGHT_SET3(out_grad[188], 0.0f, 0.0f, 0.0f);
+    out_sh[189] = 0.0f;
+    SHLIGHT_SET3(out_grad[189], 0.0f, 0.0f, 0.0f);
+    out_sh[190] = 0.0f;
+    SHLIGHT_SET3(out_grad[190], 0.0f, 0.0f, 0.0f);
+    out_sh[191] = 0.0f;
+    SHLIGHT_SET3(out_grad[191], 0.0f, 0.0f, 0.0f);
+    out_sh[192] = 0.0f;
+    SHLIGHT_SET3(out_grad[192], 0.0f, 0.0f, 0.0f);
+    out_sh[193] = 0.0f;
+    SHLIGHT_SET3(out_grad[193], 0.0f, 0.0f, 0.0f);
+    out_sh[194] = 0.0f;
+    SHLIGHT_SET3(out_grad[194], 0.0f, 0.0f, 0.0f);
+    out_sh[195] = 0.0f;
+    SHLIGHT_SET3(out_grad[195], 0.0f, 0.0f, 0.0f);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 14
   if (n > 14) {
-    for (i = 196; i < 225; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[196] = 0.0f;
+    SHLIGHT_SET3(out_grad[196], 0.0f, 0.0f, 0.0f);
+    out_sh[197] = 0.0f;
+    SHLIGHT_SET3(out_grad[197], 0.0f, 0.0f, 0.0f);
+    out_sh[198] = 0.0f;
+    SHLIGHT_SET3(out_grad[198], 0.0f, 0.0f, 0.0f);
+    out_sh[199] = 0.0f;
+    SHLIGHT_SET3(out_grad[199], 0.0f, 0.0f, 0.0f);
+    out_sh[200] = 0.0f;
+    SHLIGHT_SET3(out_grad[200], 0.0f, 0.0f, 0.0f);
+    out_sh[201] = 0.0f;
+    SHLIGHT_SET3(out_grad[201], 0.0f, 0.0f, 0.0f);
+    out_sh[202] = 0.0f;
+    SHLIGHT_SET3(out_grad[202], 0.0f, 0.0f, 0.0f);
+    out_sh[203] = 0.0f;
+    SHLIGHT_SET3(out_grad[203], 0.0f, 0.0f, 0.0f);
+    out_sh[204] = 0.0f;
+    SHLIGHT_SET3(out_grad[204], 0.0f, 0.0f, 0.0f);
+    out_sh[205] = 0.0f;
+    SHLIGHT_SET3(out_grad[205], 0.0f, 0.0f, 0.0f);
+    out_sh[206] = 0.0f;
+    SHLIGHT_SET3(out_grad[206], 0.0f, 0.0f, 0.0f);
+    out_sh[207] = 0.0f;
+    SHLIGHT_SET3(out_grad[207], 0.0f, 0.0f, 0.0f);
+    out_sh[208] = 0.0f;
+    SHLIGHT_SET3(out_grad[208], 0.0f, 0.0f, 0.0f);
+    out_sh[209] = 0.0f;
+    SHLIGHT_SET3(out_grad[209], 0.0f, 0.0f, 0.0f);
+    out_sh[210] = 0.0f;
+    SHLIGHT_SET3(out_grad[210], 0.0f, 0.0f, 0.0f);
+    out_sh[211] = 0.0f;
+    SHLIGHT_SET3(out_grad[211], 0.0f, 0.0f, 0.0f);
+    out_sh[212] = 0.0f;
+    SHLIGHT_SET3(out_grad[212], 0.0f, 0.0f, 0.0f);
+    out_sh[213] = 0.0f;
+    SHLIGHT_SET3(out_grad[213], 0.0f, 0.0f, 0.0f);
+    out_sh[214] = 0.0f;
+    SHLIGHT_SET3(out_grad[214], 0.0f, 0.0f, 0.0f);
+    out_sh[215] = 0.0f;
+    SHLIGHT_SET3(out_grad[215], 0.0f, 0.0f, 0.0f);
+    out_sh[216] = 0.0f;
+    SHLIGHT_SET3(out_grad[216], 0.0f, 0.0f, 0.0f);
+    out_sh[217] = 0.0f;
+    SHLIGHT_SET3(out_grad[217], 0.0f, 0.0f, 0.0f);
+    out_sh[218] = 0.0f;
+    SHLIGHT_SET3(out_grad[218], 0.0f, 0.0f, 0.0f);
+    out_sh[219] = 0.0f;
+    SHLIGHT_SET3(out_grad[219], 0.0f, 0.0f, 0.0f);
+    out_sh[220] = 0.0f;
+    SHLIGHT_SET3(out_grad[220], 0.0f, 0.0f, 0.0f);
+    out_sh[221] = 0.0f;
+    SHLIGHT_SET3(out_grad[221], 0.0f, 0.0f, 0.0f);
+    out_sh[222] = 0.0f;
+    SHLIGHT_SET3(out_grad[222], 0.0f, 0.0f, 0.0f);
+    out_sh[223] = 0.0f;
+    SHLIGHT_SET3(out_grad[223], 0.0f, 0.0f, 0.0f);
+    out_sh[224] = 0.0f;
+    SHLIGHT_SET3(out_grad[224], 0.0f, 0.0f, 0.0f);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 15
   if (n > 15) {
-    for (i = 225; i < 256; ++i) {
-      out_sh[i] = 0.0f;
-      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
-    }
+    out_sh[225] = 0.0f;
+    SHLIGHT_SET3(out_grad[225], 0.0f, 0.0f, 0.0f);
+    out_sh[226] = 0.0f;
+    SHLIGHT_SET3(out_grad[226], 0.0f, 0.0f, 0.0f);
+    out_sh[227] = 0.0f;
+    SHLIGHT_SET3(out_grad[227], 0.0f, 0.0f, 0.0f);
+    out_sh[228] = 0.0f;
+    SHLIGHT_SET3(out_grad[228], 0.0f, 0.0f, 0.0f);
+    out_sh[229] = 0.0f;
+    SHLIGHT_SET3(out_grad[229], 0.0f, 0.0f, 0.0f);
+    out_sh[230] = 0.0f;
+    SHLIGHT_SET3(out_grad[230], 0.0f, 0.0f, 0.0f);
+    out_sh[231] = 0.0f;
+    SHLIGHT_SET3(out_grad[231], 0.0f, 0.0f, 0.0f);
+    out_sh[232] = 0.0f;
+    SHLIGHT_SET3(out_grad[232], 0.0f, 0.0f, 0.0f);
+    out_sh[233] = 0.0f;
+    SHLIGHT_SET3(out_grad[233], 0.0f, 0.0f, 0.0f);
+    out_sh[234] = 0.0f;
+    SHLIGHT_SET3(out_grad[234], 0.0f, 0.0f, 0.0f);
+    out_sh[235] = 0.0f;
+    SHLIGHT_SET3(out_grad[235], 0.0f, 0.0f, 0.0f);
+    out_sh[236] = 0.0f;
+    SHLIGHT_SET3(out_grad[236], 0.0f, 0.0f, 0.0f);
+    out_sh[237] = 0.0f;
+    SHLIGHT_SET3(out_grad[237], 0.0f, 0.0f, 0.0f);
+    out_sh[238] = 0.0f;
+    SHLIGHT_SET3(out_grad[238], 0.0f, 0.0f, 0.0f);
+    out_sh[239] = 0.0f;
+    SHLIGHT_SET3(out_grad[239], 0.0f, 0.0f, 0.0f);
+    out_sh[240] = 0.0f;
+    SHLIGHT_SET3(out_grad[240], 0.0f, 0.0f, 0.0f);
+    out_sh[241] = 0.0f;
+    SHLIGHT_SET3(out_grad[241], 0.0f, 0.0f, 0.0f);
+    out_sh[242] = 0.0f;
+    SHLIGHT_SET3(out_grad[242], 0.0f, 0.0f, 0.0f);
+    out_sh[243] = 0.0f;
+    SHLIGHT_SET3(out_grad[243], 0.0f, 0.0f, 0.0f);
+    out_sh[244] = 0.0f;
+    SHLIGHT_SET3(out_grad[244], 0.0f, 0.0f, 0.0f);
+    out_sh[245] = 0.0f;
+    SHLIGHT_SET3(out_grad[245], 0.0f, 0.0f, 0.0f);
+    out_sh[246] = 0.0f;
+    SHLIGHT_SET3(out_grad[246], 0.0f, 0.0f, 0.0f);
+    out_sh[247] = 0.0f;
+    SHLIGHT_SET3(out_grad[247], 0.0f, 0.0f, 0.0f);
+    out_sh[248] = 0.0f;
+    SHLIGHT_SET3(out_grad[248], 0.0f, 0.0f, 0.0f);
+    out_sh[249] = 0.0f;
+    SHLIGHT_SET3(out_grad[249], 0.0f, 0.0f, 0.0f);
+    out_sh[250] = 0.0f;
+    SHLIGHT_SET3(out_grad[250], 0.0f, 0.0f, 0.0f);
+    out_sh[251] = 0.0f;
+    SHLIGHT_SET3(out_grad[251], 0.0f, 0.0f, 0.0f);
+    out_sh[252] = 0.0f;
+    SHLIGHT_SET3(out_grad[252], 0.0f, 0.0f, 0.0f);
+    out_sh[253] = 0.0f;
+    SHLIGHT_SET3(out_grad[253], 0.0f, 0.0f, 0.0f);
+    out_sh[254] = 0.0f;
+    SHLIGHT_SET3(out_grad[254], 0.0f, 0.0f, 0.0f);
+    out_sh[255] = 0.0f;
+    SHLIGHT_SET3(out_grad[255], 0.0f, 0.0f, 0.0f);
   }
 #endif
 }
@@ -10680,6 +11150,7 @@ SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], 
 SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c[3], float r,
                                           float *out_sh, float (*out_grad)[3]) {
   shli_real g[8];
+  int i;
   n = shli_bands(n);
   if (n < 1) {
     return;
@@ -10687,7 +11158,16 @@ SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c
   shli_cap_frame(SHLIGHT_REAL(c[0]) - SHLIGHT_REAL(x[0]), SHLIGHT_REAL(c[1]) - SHLIGHT_REAL(x[1]),
                  SHLIGHT_REAL(c[2]) - SHLIGHT_REAL(x[2]), SHLIGHT_REAL(r), g);
   if (g[6] == 0.0) {
+#if SHLIGHT_BY_BANDS
     shli_sh_zero_grad(n, out_sh, out_grad);
+#else
+    for (i = 0; i < n * n; ++i) {
+      out_sh[i] = 0.0f;
+      out_grad[i][0] = 0.0f;
+      out_grad[i][1] = 0.0f;
+      out_grad[i][2] = 0.0f;
+    }
+#endif
     return;
   }
 #if SHLIGHT_SIMD_EVAL
@@ -10812,12 +11292,16 @@ SHLIGHT_INLINE void shl_triangle_light_grad(int n, const float x[3], const float
   }
   shli_tri_frame(x, p0, p1, p2, g, nt);
   if (g[6] == 0.0) {
+#if SHLIGHT_BY_BANDS
+    shli_sh_zero_grad(n, out_sh, out_grad);
+#else
     for (i = 0; i < n * n; ++i) {
       out_sh[i] = 0.0f;
       out_grad[i][0] = 0.0f;
       out_grad[i][1] = 0.0f;
       out_grad[i][2] = 0.0f;
     }
+#endif
     return;
   }
   /* cg = n_t . w = -cos gamma; grad_x |cg| = -sign(cg) (n_t - cg w) / d */

@@ -343,12 +343,14 @@ def gen_grad(n):
 def gen_grad_any(nmax):
     """shli_sh_grad(n, y, nx, ny, nz, ir, out_grad): any 1 <= n <= nmax in one body, band l
     under `if (n > l)` and `#if SHLIGHT_MAX_BANDS > l`; each output one SHLIGHT_SET3 (a vec3
-    store in GLSL, not three component writes), the products c (y_j ir) rounded as before, each
+    store in GLSL, not three component writes), band l-1 times ir in r (a local: no reloads
+    in C, where y may alias out_grad), so c (y_j ir) rounds as before, each
     output times ib (1: exact; shl_sh_eval_grad's second factor of 1 / |d| for tiny |d|)."""
     L = []
     w = L.append
     w('SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir,')
     w('                                 float ib, float (*out_grad)[3]) {')
+    w('  float r[%d];' % (2 * nmax - 3))
     w('  float lr;')
     w('  float q;')
     w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
@@ -364,12 +366,15 @@ def gen_grad_any(nmax):
         w('#if SHLIGHT_MAX_BANDS > %d' % l)
         w('  if (n > %d) {' % l)
         w('    lr = %s * ir;' % lit_f(float(l)))
+        p0 = (l - 1) * (l - 1)
+        for k in range(2 * l - 1):
+            w('    r[%d] = y[%d] * ir;' % (k, p0 + k))
         for m in range(-l, l + 1):
             i = idx(l, m)
             w('    q = lr * y[%d];' % i)
             ex = []
             for g, nk in zip(grad_terms(l, m), ('nx', 'ny', 'nz')):
-                expr = ' + '.join('%s * (y[%d] * ir)' % (lit_f(cf), j) for cf, j in g)
+                expr = ' + '.join('%s * r[%d]' % (lit_f(cf), j - p0) for cf, j in g)
                 ex.append(('(%s - q * %s) * ib' % (expr, nk)) if expr else ('-q * %s * ib' % nk))
             w('    SHLIGHT_SET3(out_grad[%d], %s, %s, %s);' % (i, ex[0], ex[1], ex[2]))
         w('  }')
@@ -624,8 +629,7 @@ def gen_band_weights(nmax):
     """>>light, mirrored: the per-band weights of a cap light applied to Y and its gradient,
     io_sh[i] = kv_l y, io_grad[i] = kg_l io_grad[i] + (ka_l wg[0..2] + kb_l wg[3..5]) y (y the
     old io_sh[i]), as one constant-trip loop per band (unrolled by shader compilers into
-    constant indices: a run-time loop over n * n outputs would send the arrays to memory);
-    and shli_sh_zero_grad, zeros the same way."""
+    constant indices: a run-time loop over n * n outputs would send the arrays to memory)."""
     L = []
     w = L.append
     w('SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg, const float *ka,')
@@ -639,9 +643,9 @@ def gen_band_weights(nmax):
     w('  for (l = SHLIGHT_UNROLLED_BANDS; l < n; ++l) {')
     w('    for (i = l * l; i < (l + 1) * (l + 1); ++i) {')
     body = ['y = io_sh[i];', 'io_sh[i] = kv[l] * y;',
-            'SHLIGHT_SET3(io_grad[i], kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y,',
-            '             kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y,',
-            '             kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y);']
+            'io_grad[i][0] = kg[l] * io_grad[i][0] + (ka[l] * wg[0] + kb[l] * wg[3]) * y;',
+            'io_grad[i][1] = kg[l] * io_grad[i][1] + (ka[l] * wg[1] + kb[l] * wg[4]) * y;',
+            'io_grad[i][2] = kg[l] * io_grad[i][2] + (ka[l] * wg[2] + kb[l] * wg[5]) * y;']
     for b in body:
         w('      ' + b)
     w('    }')
@@ -664,8 +668,8 @@ def gen_band_weights(nmax):
     w('}')
     w('')
     w('SHLIGHT_INLINE void shli_sh_zero_grad(int n, float *out_sh, float (*out_grad)[3]) {')
-    w('  int i;')
     w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
+    w('  int i;')
     w('  for (i = SHLIGHT_UNROLLED_BANDS * SHLIGHT_UNROLLED_BANDS; i < n * n; ++i) {')
     w('    out_sh[i] = 0.0f;')
     w('    SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);')
@@ -677,10 +681,9 @@ def gen_band_weights(nmax):
             w('#if SHLIGHT_MAX_BANDS > %d' % l)
             w('  if (n > %d) {' % l)
             ind = '    '
-        w(ind + 'for (i = %d; i < %d; ++i) {' % (l * l, (l + 1) * (l + 1)))
-        w(ind + '  out_sh[i] = 0.0f;')
-        w(ind + '  SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);')
-        w(ind + '}')
+        for i in range(l * l, (l + 1) * (l + 1)):
+            w(ind + 'out_sh[%d] = 0.0f;' % i)
+            w(ind + 'SHLIGHT_SET3(out_grad[%d], 0.0f, 0.0f, 0.0f);' % i)
         if l > 0:
             w('  }')
             w('#endif')
