@@ -30,6 +30,15 @@ bench: bench-basis
 
 .PHONY: bench bench-basis
 
+# shl_sh_eval_batch at any count (count 16 .. 65536, n = 3, 6, 10, 16); bench/baseline.sh runs it
+# against an older shlight.h in the same run
+bench-batch: build/bench/bench_batch
+	@mkdir -p bench/out
+	build/bench/bench_batch | tee bench/out/batch.md
+
+bench: bench-batch
+.PHONY: bench-batch
+
 # the bench programs that need only -lm (their extra headers are listed with each)
 build/bench/bench_%: bench/bench_%.c shlight.h bench/bench_util.h
 	@mkdir -p build/bench

@@ -400,7 +400,7 @@ def lit_fs(v):
     import struct
     f = struct.unpack('f', struct.pack('f', float(lit_f(v)[:-1])))[0]
     if f == 0.0:
-        return '0'
+        return '-0.0f' if math.copysign(1.0, f) < 0 else '0'
     for p in range(1, 10):
         s = '%.*g' % (p, f)
         if struct.unpack('f', struct.pack('f', float(s)))[0] == f:
@@ -544,12 +544,15 @@ MIRRORED_TABLES = {'SHLI_ZH_TAB': lambda: zh_table(UNROLLED)}
 
 
 def gen_lane_table():
-    """SHLI_SH_LANES[(c * (MAX_BANDS - 1) + l - 1) * 48 + {0, 16, 32} + j]: alpha, g, c of band l
-    for order m = 16 c + j in the across-m SIMD core; orders m >= l hold the identity step
-    (0, 1, 0). Chunk-major, so the bands of chunk 0 (n <= 16) are contiguous."""
-    vals = []
+    """SHLI_SH_LANES[(SHLI_SH_LANES_AT[c] + l) * 48 + {0, 16, 32} + j]: alpha, g, c of band l for
+    order m = 16 c + j in the across-m SIMD core of n > 16 bands, for the bands where chunk c has
+    started (l >= max(1, 16 c), l < MAX_BANDS; the only ones the core reads); orders m >= l hold
+    the identity step (0, 1, 0). Chunk-major. Returns (values, SHLI_SH_LANES_AT)."""
+    vals, at, rows = [], [], 0
     for ch in range(MAX_BANDS // 16):
-        for l in range(1, MAX_BANDS):
+        l0 = max(1, 16 * ch)
+        at.append(rows - l0)
+        for l in range(l0, MAX_BANDS):
             a_s, g_s, c_s = [], [], []
             for j in range(16):
                 m = 16 * ch + j
@@ -561,7 +564,8 @@ def gen_lane_table():
                 g_s.append(g)
                 c_s.append(c)
             vals += a_s + g_s + c_s
-    return vals
+            rows += 1
+    return vals, at
 
 
 def gen_lane_table_scaled():
@@ -712,12 +716,14 @@ def c_regions():
     ls = gen_lane_table_scaled()
     pco, ptap, podd = gen_poly_lanes()
     R['plane'] = (['#if SHLIGHT_SIMD_EVAL'] +
-                  fmt_table('float', 'SHLI_SH_PLANES', '%d' % len(pco), pco, lit_f, False) +
-                  fmt_table('int', 'SHLI_SH_PTAP', '%d' % len(ptap), ptap, str, False) +
-                  fmt_table('int', 'SHLI_SH_PODD', '5', podd, lambda v: '0x%02X' % v, False) +
+                  packed_table('float', 'SHLI_SH_PLANES', pco, lit_fs) +
+                  packed_table('int', 'SHLI_SH_PTAP', ptap, str) +
+                  packed_table('int', 'SHLI_SH_PODD', podd, lambda v: '0x%02X' % v) +
                   ['#endif'])
-    R['lanes'] = (['#if SHLIGHT_SIMD_EVAL'] + fmt_table('float', 'SHLI_SH_LANES', '%d' % len(lt), lt, lit_f, False) +
-                  fmt_table('float', 'SHLI_SH_LANES_S', '%d' % len(ls), ls, lit_f, False) + ['#endif'])
+    lt, lat = lt
+    R['lanes'] = (['#if SHLIGHT_SIMD_EVAL'] + packed_table('float', 'SHLI_SH_LANES', lt, lit_fs) +
+                  ['static const int SHLI_SH_LANES_AT[%d] = {%s};' % (len(lat), ', '.join('%d' % v for v in lat))] +
+                  packed_table('float', 'SHLI_SH_LANES_S', ls, lit_fs) + ['#endif'])
     return R
 
 

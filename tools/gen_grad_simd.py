@@ -69,6 +69,23 @@ def lit(v):
     return s + 'f'
 
 
+def lit_short(v):
+    """the shortest literal for the float that lit(v) gives (the same value, bit for bit)"""
+    import struct
+    f = struct.unpack('f', struct.pack('f', float(lit(v)[:-1])))[0]
+    if f == 0.0:
+        return '-0.0f' if math.copysign(1.0, f) < 0 else '0'
+    for p in range(1, 10):
+        s = '%.*g' % (p, f)
+        if struct.unpack('f', struct.pack('f', float(s)))[0] == f:
+            break
+    if 'e' not in s and abs(f) < 1e6 and float(s) == int(float(s)):
+        return '%d' % int(float(s))
+    if 'e' not in s and '.' not in s:
+        s += '.0'
+    return s + 'f'
+
+
 def fmt_rows(vals, per=8, ind='    '):
     rows = []
     for i in range(0, len(vals), per):
@@ -136,13 +153,20 @@ def main():
         L += fmt_rows([str(v) for v in t1], 16)
         L += fmt_rows([str(v) for v in t2], 16)
     w('};')
-    w('/* per chunk: coefficients of the two terms, 2 x 16 */')
+    w('/* per chunk (band l = 1..15, its chunks in turn): coefficients of the two terms, 2 x 16 */')
+    w('/* clang-format off */')
     w('SHLI_GRADV_ALIGN static const float SHLI_GRADV_COEF[SHLI_GRADV_CHUNKS * 32] = {')
-    for l, c, c1, c2 in coef:
-        w('    /* l = %d, chunk %d */' % (l, c))
-        L += fmt_rows([lit(v) for v in c1], 8)
-        L += fmt_rows([lit(v) for v in c2], 8)
+    vals = [lit_short(v) for l, c, c1, c2 in coef for v in list(c1) + list(c2)]
+    row = ''
+    for i, v in enumerate(vals):
+        item = v + (',' if i + 1 < len(vals) else '')
+        if row and len(row) + 1 + len(item) > 98:
+            L.append(row)
+            row = ''
+        row = (row + ' ' + item) if row else '    ' + item
+    L.append(row)
     w('};')
+    w('/* clang-format on */')
     return L
 
 
