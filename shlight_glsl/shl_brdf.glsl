@@ -205,8 +205,8 @@ float shli_sh_conv_zh_xyz(int n, float sh[SHLIGHT_MAX_COEFFS], float zh[SHLIGHT_
   int b;
 #if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
   if (n * n > SHLI_YBUF_COEFFS) {
-    return SHLIGHT_FLOAT(shli_sh_ystream(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy),
-                                         SHLIGHT_FLOAT(uz), sh, zh, 0.0f, 0, 1));
+    return SHLIGHT_FLOAT(shli_sh_ystream(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz),
+                                         sh, zh, 0.0f, 0, 1));
   }
 #endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);

@@ -153,8 +153,8 @@ float shli_hvl_emission_xyz(int n, float femit[SHLIGHT_MAX_COEFFS], shli_real ux
   }
 #if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
   if (n * n > SHLI_YBUF_COEFFS) {
-    return SHLIGHT_FLOAT(shli_sh_ystream(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy),
-                                         SHLIGHT_FLOAT(uz), femit, 0, 0.0f, 0, 1));
+    return SHLIGHT_FLOAT(shli_sh_ystream(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz),
+                                         femit, 0, 0.0f, 0, 1));
   }
 #endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);

@@ -57,8 +57,8 @@ void shl_ssf_vpl_sh(int n, vec3 x, vec3 nx, vec3 y, vec3 ny, float flux, float d
   }
 #if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
   if (n * n > SHLI_YBUF_COEFFS) {
-    shli_sh_ystream(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), io_sh, 0,
-                    e, io_sh, 1);
+    shli_sh_ystream(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), io_sh, 0, e,
+                    io_sh, 1);
     return;
   }
 #endif
