@@ -978,12 +978,12 @@ void shli_tri_frame(vec3 x, vec3 p0, vec3 p1, vec3 p2, out shli_real out_g[8],
   shli_real bx = SHLIGHT_REAL(p2[0]) - SHLIGHT_REAL(p0[0]);
   shli_real by = SHLIGHT_REAL(p2[1]) - SHLIGHT_REAL(p0[1]);
   shli_real bz = SHLIGHT_REAL(p2[2]) - SHLIGHT_REAL(p0[2]);
-  shli_real mx = SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(ax), SHLIGHT_ABSR(ay)), SHLIGHT_ABSR(az));
+  shli_real mx;
   shli_real sc = 1.0;
-  shli_real nx;
-  shli_real ny;
-  shli_real nz;
-  shli_real ar;
+  shli_real nx = ay * bz - az * by;
+  shli_real ny = az * bx - ax * bz;
+  shli_real nz = ax * by - ay * bx;
+  shli_real ar = SHLIGHT_SQRTR(nx * nx + ny * ny + nz * nz);
   shli_real rs = 0.0;
   shli_real cx =
       (SHLIGHT_REAL(p0[0]) - SHLIGHT_REAL(x[0]) + (SHLIGHT_REAL(p1[0]) - SHLIGHT_REAL(x[0])) +
@@ -1000,24 +1000,28 @@ void shli_tri_frame(vec3 x, vec3 p0, vec3 p1, vec3 p2, out shli_real out_g[8],
   out_nt[0] = 0.0;
   out_nt[1] = 0.0;
   out_nt[2] = 0.0;
-  mx = SHLIGHT_MAXR(
-      mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)), SHLIGHT_ABSR(bz)));
-  if ((mx > 1.0e9 || mx < 1.0e-8) && mx > 0.0 && mx <= SHLIGHT_REAL_MAX) {
-    /* large or tiny edges scaled to ~1: the area |e1 x e2| = sc^2 |e1/sc x e2/sc| neither
-       overflows nor underflows (it did above edges ~1.3e19 in C, float squares in GLSL) */
-    sc = mx;
-    mx = 1.0 / mx;
-    ax = ax * mx;
-    ay = ay * mx;
-    az = az * mx;
-    bx = bx * mx;
-    by = by * mx;
-    bz = bz * mx;
+  if (!(ar > 0.0 && ar <= SHLIGHT_REAL_MAX)) {
+    /* the area overflowed (edges above ~1.3e19 in C, ~4e9 with float squares in GLSL),
+       underflowed, or is 0 or NaN: again with the edges scaled to ~1, |e1 x e2| =
+       sc^2 |e1/sc x e2/sc| (a zero-area triangle stays 0) */
+    mx = SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(ax), SHLIGHT_ABSR(ay)), SHLIGHT_ABSR(az));
+    mx = SHLIGHT_MAXR(
+        mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)), SHLIGHT_ABSR(bz)));
+    if (mx > 0.0 && mx <= SHLIGHT_REAL_MAX) {
+      sc = mx;
+      mx = 1.0 / mx;
+      ax = ax * mx;
+      ay = ay * mx;
+      az = az * mx;
+      bx = bx * mx;
+      by = by * mx;
+      bz = bz * mx;
+      nx = ay * bz - az * by;
+      ny = az * bx - ax * bz;
+      nz = ax * by - ay * bx;
+      ar = SHLIGHT_SQRTR(nx * nx + ny * ny + nz * nz);
+    }
   }
-  nx = ay * bz - az * by;
-  ny = az * bx - ax * bz;
-  nz = ax * by - ay * bx;
-  ar = SHLIGHT_SQRTR(nx * nx + ny * ny + nz * nz);
   if (ar > 0.0 && ar <= SHLIGHT_REAL_MAX) {
     rs = sc * SHLIGHT_SQRTR(ar * 0.15915494309189535);
     out_nt[0] = nx / ar;
@@ -1147,19 +1151,26 @@ float shl_triangle_solid_angle(vec3 x, vec3 p0, vec3 p1, vec3 p2) {
   shli_real vx = SHLIGHT_REAL(p2[0]) - SHLIGHT_REAL(p0[0]);
   shli_real vy = SHLIGHT_REAL(p2[1]) - SHLIGHT_REAL(p0[1]);
   shli_real vz = SHLIGHT_REAL(p2[2]) - SHLIGHT_REAL(p0[2]);
-  shli_real mx = SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(ax), SHLIGHT_ABSR(ay)), SHLIGHT_ABSR(az));
-  shli_real la;
-  shli_real lb;
-  shli_real lc;
-  shli_real nm;
-  shli_real dn;
-  mx = SHLIGHT_MAXR(
-      mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)), SHLIGHT_ABSR(bz)));
-  mx = SHLIGHT_MAXR(
-      mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(cx), SHLIGHT_ABSR(cy)), SHLIGHT_ABSR(cz)));
-  if ((mx > 1.0e9 || mx < 1.0e-8) && mx > 0.0 && mx <= SHLIGHT_REAL_MAX) {
-    /* Omega is scale-invariant: far or tiny triangles are scaled to |R| ~ 1 first, so the
-       degree-3 products N and D neither overflow nor underflow (float in GLSL) */
+  shli_real mx;
+  shli_real la = SHLIGHT_SQRTR(ax * ax + ay * ay + az * az);
+  shli_real lb = SHLIGHT_SQRTR(bx * bx + by * by + bz * bz);
+  shli_real lc = SHLIGHT_SQRTR(cx * cx + cy * cy + cz * cz);
+  shli_real nm = ax * (uy * vz - uz * vy) + ay * (uz * vx - ux * vz) + az * (ux * vy - uy * vx);
+  shli_real dn = la * lb * lc + (ax * bx + ay * by + az * bz) * lc +
+                 (ax * cx + ay * cy + az * cz) * lb + (bx * cx + by * cy + bz * cz) * la;
+  mx = SHLIGHT_ABSR(nm) + SHLIGHT_ABSR(dn);
+  if (!(mx <= SHLIGHT_REAL_MAX) || !(mx >= 1.0e-30)) {
+    /* the degree-3 products overflowed (|p_i - x| above ~7e12 in C, ~1e12 in GLSL) or are
+       tiny, or NaN: Omega is scale-invariant, so again with everything scaled by the largest
+       component of the p_i - x */
+    mx = SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(ax), SHLIGHT_ABSR(ay)), SHLIGHT_ABSR(az));
+    mx = SHLIGHT_MAXR(
+        mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)), SHLIGHT_ABSR(bz)));
+    mx = SHLIGHT_MAXR(
+        mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(cx), SHLIGHT_ABSR(cy)), SHLIGHT_ABSR(cz)));
+    if (!(mx > 0.0 && mx <= SHLIGHT_REAL_MAX)) {
+      return 0.0f;
+    }
     mx = 1.0 / mx;
     ax = ax * mx;
     ay = ay * mx;
@@ -1176,15 +1187,15 @@ float shl_triangle_solid_angle(vec3 x, vec3 p0, vec3 p1, vec3 p2) {
     vx = vx * mx;
     vy = vy * mx;
     vz = vz * mx;
-  }
-  la = SHLIGHT_SQRTR(ax * ax + ay * ay + az * az);
-  lb = SHLIGHT_SQRTR(bx * bx + by * by + bz * bz);
-  lc = SHLIGHT_SQRTR(cx * cx + cy * cy + cz * cz);
-  nm = ax * (uy * vz - uz * vy) + ay * (uz * vx - ux * vz) + az * (ux * vy - uy * vx);
-  dn = la * lb * lc + (ax * bx + ay * by + az * bz) * lc + (ax * cx + ay * cy + az * cz) * lb +
-       (bx * cx + by * cy + bz * cz) * la;
-  if (!(SHLIGHT_ABSR(nm) + SHLIGHT_ABSR(dn) <= SHLIGHT_REAL_MAX)) {
-    return 0.0f;
+    la = SHLIGHT_SQRTR(ax * ax + ay * ay + az * az);
+    lb = SHLIGHT_SQRTR(bx * bx + by * by + bz * bz);
+    lc = SHLIGHT_SQRTR(cx * cx + cy * cy + cz * cz);
+    nm = ax * (uy * vz - uz * vy) + ay * (uz * vx - ux * vz) + az * (ux * vy - uy * vx);
+    dn = la * lb * lc + (ax * bx + ay * by + az * bz) * lc + (ax * cx + ay * cy + az * cz) * lb +
+         (bx * cx + by * cy + bz * cz) * la;
+    if (!(SHLIGHT_ABSR(nm) + SHLIGHT_ABSR(dn) <= SHLIGHT_REAL_MAX)) {
+      return 0.0f;
+    }
   }
   return SHLIGHT_FLOAT(2.0 * shli_atan2r(nm, dn));
 }

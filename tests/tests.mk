@@ -4,6 +4,9 @@
 #   make -f tests/tests.mk tests-basis-run     build and run them (each ends "N passed, N failed")
 #   make -f tests/tests.mk test-asan           the same three under -fsanitize=address,undefined
 #   make -f tests/tests.mk fuzz                libFuzzer run (clang) for FUZZ_SECONDS (default 60)
+#   make fuzz-families                          seeded random run of tests/fuzz_families.c (short)
+#   make fuzz-families-long                     the same under ASan/UBSan (200000 inputs per
+#                                               family), then libFuzzer for FUZZ_SECONDS
 # Programs:
 #   build/tests/test_basis    tests/test_basis.c vs tests/ref/shref.h (binary128, -lquadmath)
 #   build/tests/test_glm      tests/test_glm.cpp (C++11, GLM rotations, header without IMPL)
