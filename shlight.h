@@ -153,18 +153,22 @@ typedef double shli_real;
 #define SHLIGHT_FSQRT(x) shli_fsqrt(x)
 #define SHLIGHT_FLOG1P(x) shli_flog1p(x)
 #define SHLIGHT_FEXP(x) shli_fexp(x)
-/* edge-integral methods and polygon limits (shl_polygon_moment) */
-#define SHLIGHT_EDGE_EXACT 0
-#define SHLIGHT_EDGE_LORENTZ 1
-#define SHLIGHT_EDGE_LORENTZ_PEARSON 2
-#define SHLIGHT_EDGE_ELLIPSOID 3
-#define SHLIGHT_EDGE_AUTO 4
-#define SHLIGHT_EDGE_QUADRATURE 5
+/* edge-integral methods (shl_edge_method, shl_polygon_moment) and polygon limits. GLSL has no
+   enums: there the selectors are #defines of the same values and shl_edge_method is int. A
+   value outside the enumerators is accepted and documented at each function (AUTO, or EXACT
+   for shl_edge_integral). */
+typedef enum shl_edge_method {
+  SHLIGHT_EDGE_EXACT = 0,
+  SHLIGHT_EDGE_LORENTZ = 1,
+  SHLIGHT_EDGE_LORENTZ_PEARSON = 2,
+  SHLIGHT_EDGE_ELLIPSOID = 3,
+  SHLIGHT_EDGE_AUTO = 4,
+  SHLIGHT_EDGE_QUADRATURE = 5,
+  SHLIGHT_EDGE_FAST = 6
+} shl_edge_method;
 #define SHLIGHT_POLYGON_MAX 8 /* vertices of a polygon light in one piece (GLSL: at most) */
-#define SHLIGHT_POLYGON_ANY 1 /* C: any nv >= 3, in fan pieces; GLSL 0: nv above the max gives -1  \
-                               */
+#define SHLIGHT_POLYGON_ANY 1 /* C: any nv >= 3 (fan pieces); GLSL 0: above the max gives -1 */
 #define SHLIGHT_CLIP_MAX 20   /* after two plane clips of a non-convex 8-gon (<= 2.25 nv) */
-#define SHLIGHT_EDGE_FAST 6
 #define SHLIGHT_EDGE_STOKES_ADAPT 105 /* internal: EXACT's adaptive Stokes rule */
 #define SHLIGHT_ADAPT_LEVELS 7        /* its most halvings (128 panels of 5 nodes per half-arc) */
 #define SHLIGHT_ADAPT_TOL 1.0e-11     /* its stop: two successive results this close (GLSL 2e-6) */
@@ -24887,11 +24891,13 @@ SHLIGHT_CPU_INLINE float shli_fan_end(const shli_fan *f) {
 }
 
 SHLIGHT_CPU_INLINE float shli_fan_moment(const float (*v)[3], int nv, const float axis[3],
-                                         float exponent, int method);
+                                         float exponent, shl_edge_method method);
 SHLIGHT_CPU_INLINE float shli_fan_phong(const float (*v)[3], int nv, const float nrm[3],
-                                        const float view[3], float exponent, int method);
+                                        const float view[3], float exponent,
+                                        shl_edge_method method);
 SHLIGHT_CPU_INLINE float shli_fan_phong2(const float (*v)[3], int nv, const float nrm[3],
-                                         const float view[3], float exponent, int method);
+                                         const float view[3], float exponent,
+                                         shl_edge_method method);
 SHLIGHT_CPU_INLINE float shli_fan_ggx_ndf(const float (*v)[3], int nv, const float axis[3],
                                           float alpha);
 SHLIGHT_CPU_INLINE float shli_fan_ggx(const float (*v)[3], int nv, const float nrm[3],
@@ -25087,7 +25093,8 @@ SHLIGHT_INLINE shli_real shli_edge_fit(shli_real pa, shli_real pb, shli_real c, 
    (closed forms; the fits are 0/0 there). Degenerate: c clamped to [0, 1], Phi to [0, pi]; NaN
    input -> 0; n > 1.0e6 clamped. Accuracy: EXACT matches long double quadrature to 1.0e-12 relative
    to F(-pi/2, pi/2) in C (double inside); the fits' errors are in README "Area lights". */
-SHLIGHT_INLINE float shl_edge_integral(float phi, float c, float delta, float n, int method) {
+SHLIGHT_INLINE float shl_edge_integral(float phi, float c, float delta, float n,
+                                       shl_edge_method method) {
   shli_real cc = SHLIGHT_MINR(SHLIGHT_MAXR(SHLIGHT_REAL(c), 0.0), 1.0);
   shli_real p = SHLIGHT_MINR(SHLIGHT_MAXR(SHLIGHT_REAL(phi), 0.0), 3.1415926535897932);
   shli_real lo = -SHLIGHT_REAL(delta);
@@ -25880,7 +25887,7 @@ SHLIGHT_INLINE shli_real shli_polygon_moment_r(shli_real *io_px, shli_real *io_p
    moment); negative exponent: treated as 0. Result >= 0 (GLSL nv > SHLIGHT_POLYGON_MAX: -1).
    Accuracy and cost: docs/area-lights.md (measured against tests/ref/arearef.h). */
 SHLIGHT_INLINE float shl_polygon_moment(const float (*v)[3], int nv, const float axis[3],
-                                        float exponent, int method) {
+                                        float exponent, shl_edge_method method) {
   shli_real px[SHLIGHT_CLIP_MAX];
   shli_real py[SHLIGHT_CLIP_MAX];
   shli_real pz[SHLIGHT_CLIP_MAX];
@@ -26051,7 +26058,8 @@ SHLIGHT_INLINE shli_real shli_polygon_phong_r(const float (*v)[3], int nv, shli_
    incidence. view and nrm: unit, pointing away from the surface. Same methods and degenerate
    results as shl_polygon_moment; view below the horizon (nrm.view <= 0): 0. */
 SHLIGHT_INLINE float shl_polygon_phong(const float (*v)[3], int nv, const float nrm[3],
-                                       const float view[3], float exponent, int method) {
+                                       const float view[3], float exponent,
+                                       shl_edge_method method) {
   float fx[SHLIGHT_CLIP_MAX];
   float fy[SHLIGHT_CLIP_MAX];
   float fz[SHLIGHT_CLIP_MAX];
@@ -26189,7 +26197,8 @@ SHLIGHT_INLINE float shl_lobe_product(const float r1[3], float n1, const float r
    the single-axis value (relative error ~ 1 / e; the SG road loses its axis to float rounding
    above ~1e12). Error: docs/area-lights.md (the product approximation dominates). */
 SHLIGHT_INLINE float shl_polygon_phong2(const float (*v)[3], int nv, const float nrm[3],
-                                        const float view[3], float exponent, int method) {
+                                        const float view[3], float exponent,
+                                        shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -26288,7 +26297,7 @@ SHLIGHT_INLINE shli_real shli_ellipse_phong_r(shli_real cx, shli_real cy, shli_r
    Degenerate: as shl_polygon_phong; zero axes: 0. */
 SHLIGHT_INLINE float shl_ellipse_phong(const float c[3], const float a1[3], const float a2[3],
                                        const float nrm[3], const float view[3], float exponent,
-                                       int method) {
+                                       shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -26315,7 +26324,7 @@ SHLIGHT_INLINE float shl_ellipse_phong(const float c[3], const float a1[3], cons
    1e4 at distance 1 across the mirror direction (the r-hemisphere to 1e-4 rad). r <= 0, NaN
    or infinite input: 0. */
 SHLIGHT_INLINE float shl_sphere_phong(const float c[3], float r, const float nrm[3],
-                                      const float view[3], float exponent, int method) {
+                                      const float view[3], float exponent, shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -28059,15 +28068,17 @@ SHLIGHT_INLINE float shl_polygon_beckmann(const float (*v)[3], int nv, const flo
   return shli_fan_end(&f)
 #define SHLIGHT_FAN_P_ ((const float(*)[3])f.p)
 SHLIGHT_CPU_INLINE float shli_fan_moment(const float (*v)[3], int nv, const float axis[3],
-                                         float exponent, int method) {
+                                         float exponent, shl_edge_method method) {
   SHLIGHT_FAN_SUM_(shl_polygon_moment(SHLIGHT_FAN_P_, f.np, axis, exponent, method));
 }
 SHLIGHT_CPU_INLINE float shli_fan_phong(const float (*v)[3], int nv, const float nrm[3],
-                                        const float view[3], float exponent, int method) {
+                                        const float view[3], float exponent,
+                                        shl_edge_method method) {
   SHLIGHT_FAN_SUM_(shl_polygon_phong(SHLIGHT_FAN_P_, f.np, nrm, view, exponent, method));
 }
 SHLIGHT_CPU_INLINE float shli_fan_phong2(const float (*v)[3], int nv, const float nrm[3],
-                                         const float view[3], float exponent, int method) {
+                                         const float view[3], float exponent,
+                                         shl_edge_method method) {
   SHLIGHT_FAN_SUM_(shl_polygon_phong2(SHLIGHT_FAN_P_, f.np, nrm, view, exponent, method));
 }
 SHLIGHT_CPU_INLINE float shli_fan_ggx_ndf(const float (*v)[3], int nv, const float axis[3],

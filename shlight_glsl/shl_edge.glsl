@@ -160,7 +160,7 @@ shli_real shli_edge_fit(shli_real pa, shli_real pb, shli_real c, int nf, int met
   return fl;
 }
 
-float shl_edge_integral(float phi, float c, float delta, float n, int method) {
+float shl_edge_integral(float phi, float c, float delta, float n, shl_edge_method method) {
   shli_real cc = SHLIGHT_MINR(SHLIGHT_MAXR(SHLIGHT_REAL(c), 0.0), 1.0);
   shli_real p = SHLIGHT_MINR(SHLIGHT_MAXR(SHLIGHT_REAL(phi), 0.0), 3.1415926535897932);
   shli_real lo = -SHLIGHT_REAL(delta);
@@ -794,7 +794,7 @@ shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
 }
 
 float shl_polygon_moment(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float exponent,
-                         int method) {
+                         shl_edge_method method) {
   shli_real px[SHLIGHT_CLIP_MAX];
   shli_real py[SHLIGHT_CLIP_MAX];
   shli_real pz[SHLIGHT_CLIP_MAX];
@@ -956,7 +956,7 @@ shli_real shli_polygon_phong_r(vec3 v[SHLIGHT_POLYGON_MAX], int nv, shli_real nx
 }
 
 float shl_polygon_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float exponent,
-                        int method) {
+                        shl_edge_method method) {
   float fx[SHLIGHT_CLIP_MAX];
   float fy[SHLIGHT_CLIP_MAX];
   float fz[SHLIGHT_CLIP_MAX];
@@ -1072,7 +1072,7 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
 }
 
 float shl_polygon_phong2(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float exponent,
-                         int method) {
+                         shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -1156,7 +1156,7 @@ shli_real shli_ellipse_phong_r(shli_real cx, shli_real cy, shli_real cz, shli_re
   return 0.5 * sum;
 }
 
-float shl_ellipse_phong(vec3 c, vec3 a1, vec3 a2, vec3 nrm, vec3 view, float exponent, int method) {
+float shl_ellipse_phong(vec3 c, vec3 a1, vec3 a2, vec3 nrm, vec3 view, float exponent, shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -1175,7 +1175,7 @@ float shl_ellipse_phong(vec3 c, vec3 a1, vec3 a2, vec3 nrm, vec3 view, float exp
       SHLIGHT_REAL(a2[2]), nx, ny, nz, rx / l, ry / l, rz / l, SHLIGHT_REAL(exponent), method));
 }
 
-float shl_sphere_phong(vec3 c, float r, vec3 nrm, vec3 view, float exponent, int method) {
+float shl_sphere_phong(vec3 c, float r, vec3 nrm, vec3 view, float exponent, shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
