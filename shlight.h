@@ -164,7 +164,9 @@ typedef enum shl_edge_method {
   SHLIGHT_EDGE_ELLIPSOID = 3,
   SHLIGHT_EDGE_AUTO = 4,
   SHLIGHT_EDGE_QUADRATURE = 5,
-  SHLIGHT_EDGE_FAST = 6
+  SHLIGHT_EDGE_FAST = 6,
+  SHLIGHT_EDGE_INT_MIN_ = -2147483647 - 1 /* not a method: makes the type a signed int that
+                                             holds any int (no sign conversion in C++) */
 } shl_edge_method;
 #define SHLIGHT_POLYGON_MAX 8 /* vertices of a polygon light in one piece (GLSL: at most) */
 #define SHLIGHT_POLYGON_ANY 1 /* C: any nv >= 3 (fan pieces); GLSL 0: above the max gives -1 */
