@@ -160,7 +160,7 @@ shli_real shli_edge_fit(shli_real pa, shli_real pb, shli_real c, int nf, int met
   return fl;
 }
 
-float shl_edge_integral(float phi, float c, float delta, float n, int method) {
+float shl_edge_integral(float phi, float c, float delta, float n, shl_edge_method method) {
   shli_real cc = SHLIGHT_MINR(SHLIGHT_MAXR(SHLIGHT_REAL(c), 0.0), 1.0);
   shli_real p = SHLIGHT_MINR(SHLIGHT_MAXR(SHLIGHT_REAL(phi), 0.0), 3.1415926535897932);
   shli_real lo = -SHLIGHT_REAL(delta);
@@ -192,8 +192,8 @@ float shl_edge_integral(float phi, float c, float delta, float n, int method) {
   while (piece < 3 && hi > lo) {
     a = lo;
     b = SHLIGHT_MINR(hi, 1.5707963267948966);
-    if (nf <= 2 || cc < 1.0e-3 || method == SHLIGHT_EDGE_EXACT || method == SHLIGHT_EDGE_AUTO ||
-        method == SHLIGHT_EDGE_QUADRATURE || method == SHLIGHT_EDGE_FAST) {
+    if (nf <= 2 || cc < 1.0e-3 || method < SHLIGHT_EDGE_LORENTZ ||
+        method > SHLIGHT_EDGE_ELLIPSOID) {
       sum = sum + sg * shli_edge_exact(a, b, cc, nf);
     } else {
       sum = sum + sg * shli_edge_fit(a, b, cc, nf, method);
@@ -523,19 +523,10 @@ shli_real shli_stokes_node(shli_real s, shli_real beta, shli_real c2, shli_real 
   return g * 0.5 * beta * (es + 1.0 / es);
 }
 
-shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2, shli_real p,
-                           shli_real q, int kind) {
-  shli_real z0 = (1.5707963267948966 - hi) / beta;
-  shli_real z1 = (1.5707963267948966 - lo) / beta;
-  shli_real s0 = SHLIGHT_LOGR(z0 + SHLIGHT_SQRTR(z0 * z0 + 1.0));
-  shli_real s1 = SHLIGHT_LOGR(z1 + SHLIGHT_SQRTR(z1 * z1 + 1.0));
-  shli_real m = 0.5 * (s0 + s1);
-  shli_real r = 0.5 * (s1 - s0);
-  shli_real sum;
-  if (!(r > 0.0)) {
-    return 0.0;
-  }
-  sum = 0.56888888888888889 * shli_stokes_node(m, beta, c2, p, q, kind);
+/* r times the 5-node Gauss-Legendre sum of the kind's graded integrand on [m - r, m + r] in s */
+shli_real shli_stokes_gl5(shli_real m, shli_real r, shli_real beta, shli_real c2,
+                                         shli_real p, shli_real q, int kind) {
+  shli_real sum = 0.56888888888888889 * shli_stokes_node(m, beta, c2, p, q, kind);
   sum = sum +
         0.47862867049936647 * (shli_stokes_node(m - 0.53846931010568309 * r, beta, c2, p, q, kind) +
                                shli_stokes_node(m + 0.53846931010568309 * r, beta, c2, p, q, kind));
@@ -545,16 +536,63 @@ shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real
   return r * sum;
 }
 
-shli_real shli_stokes_arc(shli_real ta, shli_real tb, shli_real beta, shli_real c2, shli_real p,
-                          shli_real q, int kind) {
+/* integral of the kind's integrand over |theta| in [lo, hi] inside [0, pi/2]: 5-node
+   Gauss-Legendre in s, pi/2 - |theta| = beta sinh(s). lev > 0 (the adaptive rule of
+   SHLIGHT_EDGE_EXACT at non-integer exponents): the composite rule on 2, 4, ..., 2^lev equal
+   panels until two successive results differ by at most SHLIGHT_ADAPT_TOL (the error
+   estimate; the graded integrand is analytic in s, so each halving cuts the error of the
+   coarser result by ~2^10 and the accepted finer one is far inside the estimate). */
+shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2,
+                                          shli_real p, shli_real q, int kind, int lev) {
+  shli_real z0 = (1.5707963267948966 - hi) / beta;
+  shli_real z1 = (1.5707963267948966 - lo) / beta;
+  shli_real s0 = SHLIGHT_LOGR(z0 + SHLIGHT_SQRTR(z0 * z0 + 1.0));
+  shli_real s1 = SHLIGHT_LOGR(z1 + SHLIGHT_SQRTR(z1 * z1 + 1.0));
+  shli_real r = 0.5 * (s1 - s0);
+  shli_real cur;
+  shli_real prev;
+  shli_real h;
+  int np = 1;
+  int l;
+  int k;
+  if (!(r > 0.0)) {
+    return 0.0;
+  }
+  cur = shli_stokes_gl5(0.5 * (s0 + s1), r, beta, c2, p, q, kind);
+  for (l = 1; l <= lev; ++l) {
+    prev = cur;
+    np = 2 * np;
+    h = (s1 - s0) / SHLIGHT_ITOR(np);
+    cur = 0.0;
+    for (k = 1; k < np; ++k) {
+      cur = cur + shli_stokes_gl5(s0 + (SHLIGHT_ITOR(k) + 0.5) * h, 0.5 * h, beta, c2, p, q, kind);
+    }
+    /* the panel at s0 (theta = pi/2, where h has the branch point |cos|^(e+1) for non-integer
+       e) cut geometrically toward s0: l panels, ratio 0.15, then the rest */
+    for (k = 0; k < l; ++k) {
+      cur = cur + shli_stokes_gl5(s0 + 0.575 * h, 0.425 * h, beta, c2, p, q, kind);
+      h = 0.15 * h;
+    }
+    cur = cur + shli_stokes_gl5(s0 + 0.5 * h, 0.5 * h, beta, c2, p, q, kind);
+    if (SHLIGHT_ABSR(cur - prev) <= SHLIGHT_ADAPT_TOL) {
+      return cur;
+    }
+  }
+  return cur;
+}
+
+/* The arc theta in [ta, tb] of an edge: the halves on either side of theta = 0, each by
+   shli_stokes_half (the integrand is even in theta; lev as there). */
+shli_real shli_stokes_arc(shli_real ta, shli_real tb, shli_real beta, shli_real c2,
+                                         shli_real p, shli_real q, int kind, int lev) {
   if (ta < 0.0 && tb > 0.0) {
-    return shli_stokes_half(0.0, -ta, beta, c2, p, q, kind) +
-           shli_stokes_half(0.0, tb, beta, c2, p, q, kind);
+    return shli_stokes_half(0.0, -ta, beta, c2, p, q, kind, lev) +
+           shli_stokes_half(0.0, tb, beta, c2, p, q, kind, lev);
   }
   if (tb <= 0.0) {
-    return shli_stokes_half(-tb, -ta, beta, c2, p, q, kind);
+    return shli_stokes_half(-tb, -ta, beta, c2, p, q, kind, lev);
   }
-  return shli_stokes_half(ta, tb, beta, c2, p, q, kind);
+  return shli_stokes_half(ta, tb, beta, c2, p, q, kind, lev);
 }
 
 shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
@@ -583,8 +621,12 @@ shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx,
   shli_real pa;
   shli_real pb;
   int nf;
+  int lev = 0;
   if (!(sp > 1.0e-30)) {
     return 0.0;
+  }
+  if (method == SHLIGHT_EDGE_STOKES_ADAPT) {
+    lev = SHLIGHT_ADAPT_LEVELS;
   }
   xa = ax * rx + ay * ry + az * rz;
   xb = bx * rx + by * ry + bz * rz;
@@ -592,7 +634,7 @@ shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx,
     /* an edge on the clip circle u.r = 0 (made by the clip): its normal is +-r, c = 0; the
        end points' rounding would otherwise decide where its arc lies */
     w = SHLIGHT_REAL(SHLIGHT_SIGN1(nx * rx + ny * ry + nz * rz));
-    if (method != SHLIGHT_EDGE_QUADRATURE &&
+    if (method != SHLIGHT_EDGE_QUADRATURE && lev == 0 &&
         (!(e >= 1.0) || SHLIGHT_FTOI(e + 0.5) - 2 * (SHLIGHT_FTOI(e + 0.5) / 2) == 0)) {
       return 0.0;
     }
@@ -609,7 +651,7 @@ shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx,
   yb = bx * tx + by * ty + bz * tz;
   c2 = SHLIGHT_MAXR(1.0 - w * w, 0.0);
   aw = SHLIGHT_ABSR(w);
-  if (method == SHLIGHT_EDGE_QUADRATURE) {
+  if (method == SHLIGHT_EDGE_QUADRATURE || lev > 0) {
     if (!(aw > 0.0)) {
       return 0.0;
     }
@@ -626,7 +668,7 @@ shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx,
     tb = SHLIGHT_MINR(ta + shli_atan2r(aw * sp, cp - xa * xb), 1.5707963267948966);
     hm = 0.5 * (e + 1.0);
     beta = 0.5 * shli_atan2r(aw * SHLIGHT_SQRTR(e + 1.0), 1.0);
-    g = shli_stokes_arc(ta, tb, beta, c2, w * w, hm, 0);
+    g = shli_stokes_arc(ta, tb, beta, c2, w * w, hm, 0, lev);
     if (w < 0.0) {
       g = -g;
     }
@@ -730,7 +772,7 @@ shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
     by = io_py[j];
     bz = io_pz[j];
     sum = sum + shli_edge_term(ax, ay, az, bx, by, bz, rx, ry, rz, e, method);
-    if (method != SHLIGHT_EDGE_QUADRATURE && i > 0 && j > 0) {
+    if (method != SHLIGHT_EDGE_QUADRATURE && method != SHLIGHT_EDGE_STOKES_ADAPT && i > 0 && j > 0) {
       /* fan triangle (p0, a, b): 2 atan2(p0 . (a x b), 1 + p0.a + a.b + b.p0) */
       cx = ay * bz - az * by;
       cy = az * bx - ax * bz;
@@ -741,7 +783,7 @@ shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
                                             by * io_py[0] + bz * io_pz[0]);
     }
   }
-  if (method != SHLIGHT_EDGE_QUADRATURE &&
+  if (method != SHLIGHT_EDGE_QUADRATURE && method != SHLIGHT_EDGE_STOKES_ADAPT &&
       SHLIGHT_FTOI(e + 0.5) - 2 * (SHLIGHT_FTOI(e + 0.5) / 2) == 0) {
     sum = sum + omega;
   }
@@ -752,7 +794,7 @@ shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
 }
 
 float shl_polygon_moment(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float exponent,
-                         int method) {
+                         shl_edge_method method) {
   shli_real px[SHLIGHT_CLIP_MAX];
   shli_real py[SHLIGHT_CLIP_MAX];
   shli_real pz[SHLIGHT_CLIP_MAX];
@@ -766,6 +808,17 @@ float shl_polygon_moment(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float e
   shli_real e = SHLIGHT_REAL(exponent);
   int i;
   int mth = method;
+  if (mth < SHLIGHT_EDGE_EXACT || mth > SHLIGHT_EDGE_FAST) {
+    mth = SHLIGHT_EDGE_AUTO; /* an unknown method id */
+  }
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_moment(v, nv, axis, exponent, method);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) ||
       !(e < 1.0e30)) {
     return 0.0f;
@@ -800,18 +853,18 @@ float shl_polygon_moment(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float e
   }
 #endif
   if (mth == SHLIGHT_EDGE_AUTO) {
-    mth = SHLIGHT_EDGE_QUADRATURE;
+    mth = SHLIGHT_EDGE_STOKES_ADAPT;
     if (e <= 16.0 && e == SHLIGHT_ITOR(SHLIGHT_FTOI(e))) {
       mth = SHLIGHT_EDGE_EXACT;
     }
   }
-  if (mth == SHLIGHT_EDGE_EXACT && e > 65536.0) {
+  if (mth == SHLIGHT_EDGE_EXACT && (e > 65536.0 || e != SHLIGHT_ITOR(SHLIGHT_FTOI(e)))) {
+    mth = SHLIGHT_EDGE_STOKES_ADAPT;
+  }
+  if (mth != SHLIGHT_EDGE_QUADRATURE && mth != SHLIGHT_EDGE_STOKES_ADAPT && e > 65536.0) {
     mth = SHLIGHT_EDGE_QUADRATURE;
   }
-  if (mth == SHLIGHT_EDGE_EXACT && e != SHLIGHT_ITOR(SHLIGHT_FTOI(e))) {
-    mth = SHLIGHT_EDGE_QUADRATURE;
-  }
-  if (mth != SHLIGHT_EDGE_QUADRATURE) {
+  if (mth != SHLIGHT_EDGE_QUADRATURE && mth != SHLIGHT_EDGE_STOKES_ADAPT) {
     e = SHLIGHT_ITOR(SHLIGHT_FTOI(e + 0.5));
   }
   return SHLIGHT_FLOAT(shli_polygon_moment_r(px, py, pz, nv, rx, ry, rz, e, mth));
@@ -829,6 +882,9 @@ shli_real shli_phong_arrays(inout shli_real io_px[SHLIGHT_CLIP_MAX],
   int i;
   int nc;
   int mth = method;
+  if (mth < SHLIGHT_EDGE_EXACT || mth > SHLIGHT_EDGE_FAST) {
+    mth = SHLIGHT_EDGE_AUTO; /* an unknown method id */
+  }
 #if SHLIGHT_EDGE_FAST_ON
   if (mth == SHLIGHT_EDGE_FAST && nv >= 3 && nv <= SHLIGHT_POLYGON_MAX) {
     for (i = 0; i < nv; ++i) {
@@ -863,15 +919,18 @@ shli_real shli_phong_arrays(inout shli_real io_px[SHLIGHT_CLIP_MAX],
     return 0.0;
   }
   if (mth == SHLIGHT_EDGE_AUTO) {
-    mth = SHLIGHT_EDGE_QUADRATURE;
+    mth = SHLIGHT_EDGE_STOKES_ADAPT;
     if (e <= 16.0 && e == SHLIGHT_ITOR(SHLIGHT_FTOI(e))) {
       mth = SHLIGHT_EDGE_EXACT;
     }
   }
   if (mth == SHLIGHT_EDGE_EXACT && (e > 65536.0 || e != SHLIGHT_ITOR(SHLIGHT_FTOI(e)))) {
+    mth = SHLIGHT_EDGE_STOKES_ADAPT;
+  }
+  if (mth != SHLIGHT_EDGE_QUADRATURE && mth != SHLIGHT_EDGE_STOKES_ADAPT && e > 65536.0) {
     mth = SHLIGHT_EDGE_QUADRATURE;
   }
-  if (mth != SHLIGHT_EDGE_QUADRATURE) {
+  if (mth != SHLIGHT_EDGE_QUADRATURE && mth != SHLIGHT_EDGE_STOKES_ADAPT) {
     e = SHLIGHT_ITOR(SHLIGHT_FTOI(e + 0.5));
   }
   return (e + 1.0) * 0.15915494309189534 *
@@ -897,7 +956,7 @@ shli_real shli_polygon_phong_r(vec3 v[SHLIGHT_POLYGON_MAX], int nv, shli_real nx
 }
 
 float shl_polygon_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float exponent,
-                        int method) {
+                        shl_edge_method method) {
   float fx[SHLIGHT_CLIP_MAX];
   float fy[SHLIGHT_CLIP_MAX];
   float fz[SHLIGHT_CLIP_MAX];
@@ -911,6 +970,14 @@ float shl_polygon_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view
   shli_real rz = 2.0 * dv * nz - SHLIGHT_REAL(view[2]);
   shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
   int i;
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_phong(v, nv, nrm, view, exponent, method);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   if (!(dv > 0.0) || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX)) {
     return 0.0f;
   }
@@ -1022,7 +1089,7 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
 }
 
 float shl_polygon_phong2(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float exponent,
-                         int method) {
+                         shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -1042,12 +1109,26 @@ float shl_polygon_phong2(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 vie
   shli_real px;
   shli_real py;
   shli_real pz;
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_phong2(v, nv, nrm, view, exponent, method);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   if (!(dv > 0.0) || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) || !(e >= 0.0) || !(e < 1.0e30)) {
     return 0.0f;
   }
   rx = rx / l;
   ry = ry / l;
   rz = rz / l;
+  if (e > 1.0e6) {
+    /* the product's limit (relative error ~ 1 / e): the cosine held at the mirror direction;
+       the SG road loses the axis to float rounding of lambda above ~1e12 */
+    c2 = SHLIGHT_MAXR(rx * nx + ry * ny + rz * nz, 0.0);
+    return SHLIGHT_FLOAT(c2 * shli_polygon_phong_r(v, nv, nx, ny, nz, rx, ry, rz, e, method));
+  }
   l1 = SHLIGHT_REAL(shl_lobe_to_sg(exponent));
   px = l1 * rx + l2 * nx;
   py = l1 * ry + l2 * ny;
@@ -1092,7 +1173,7 @@ shli_real shli_ellipse_phong_r(shli_real cx, shli_real cy, shli_real cz, shli_re
   return 0.5 * sum;
 }
 
-float shl_ellipse_phong(vec3 c, vec3 a1, vec3 a2, vec3 nrm, vec3 view, float exponent, int method) {
+float shl_ellipse_phong(vec3 c, vec3 a1, vec3 a2, vec3 nrm, vec3 view, float exponent, shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -1111,7 +1192,7 @@ float shl_ellipse_phong(vec3 c, vec3 a1, vec3 a2, vec3 nrm, vec3 view, float exp
       SHLIGHT_REAL(a2[2]), nx, ny, nz, rx / l, ry / l, rz / l, SHLIGHT_REAL(exponent), method));
 }
 
-float shl_sphere_phong(vec3 c, float r, vec3 nrm, vec3 view, float exponent, int method) {
+float shl_sphere_phong(vec3 c, float r, vec3 nrm, vec3 view, float exponent, shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -1221,6 +1302,14 @@ float shl_polygon_ggx_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float 
   int i;
   int j;
   int nc = shli_poly_load_clip(v, nv, axis, alpha, px, py, pz, par);
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_ggx_ndf(v, nv, axis, alpha);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   if (nc == 0) {
     return 0.0f;
   }
@@ -1262,7 +1351,7 @@ shli_real shli_beckmann_lambda(shli_real c, shli_real alpha) {
   if (!(s2 > 0.0)) {
     return 0.0;
   }
-  a = SHLIGHT_MAXR(c / (alpha * SHLIGHT_SQRTR(s2)), 1.0e-6);
+  a = SHLIGHT_MAXR(c / (alpha * SHLIGHT_SQRTR(s2)), 1.0e-30);
   t = 1.0 / (1.0 + 0.3275911 * a);
   p = t *
       (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
@@ -1938,11 +2027,27 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
 }
 
 float shl_polygon_ggx(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha) {
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_ggx(v, nv, nrm, view, alpha);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   return shli_mf_taylor(v, nv, nrm, view, alpha, 0);
 }
 
 float shl_polygon_beckmann_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view,
                                   float alpha) {
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_beckmann_taylor(v, nv, nrm, view, alpha);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   return shli_mf_taylor(v, nv, nrm, view, alpha, 1);
 }
 
@@ -1998,7 +2103,7 @@ shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_real az, shli_real
     tb = SHLIGHT_MINR(ta + shli_atan2r(aw * sp, cp - xa * xb), 1.5707963267948966);
     b = w * w / (alpha * alpha);
     beta = 0.5 * shli_atan2r(aw * 1.4142135623730951, alpha);
-    g = shli_stokes_arc(ta, tb, beta, c2, b, sa, 1);
+    g = shli_stokes_arc(ta, tb, beta, c2, b, sa, 1, 0);
   }
   if (w < 0.0) {
     g = -g;
@@ -2015,6 +2120,14 @@ float shl_polygon_beckmann_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, f
   int i;
   int j;
   int nc = shli_poly_load_clip(v, nv, axis, alpha, px, py, pz, par);
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_beckmann_ndf(v, nv, axis, alpha);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   if (nc == 0) {
     return 0.0f;
   }
@@ -2466,6 +2579,9 @@ shli_real shli_half_light(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 vi
     sg = -1;
   }
   k = subedges;
+  if (k < -SHLIGHT_HALF_K) { /* clamped before the sign is taken: no -INT_MIN */
+    k = -SHLIGHT_HALF_K;
+  }
   if (k < 0) {
     k = -k;
   } else {
@@ -2550,6 +2666,14 @@ shli_real shli_half_light(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 vi
 float shl_polygon_blinn_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view,
                               float exponent, int subedges) {
   shli_real e = SHLIGHT_REAL(exponent);
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_blinn_phong(v, nv, nrm, view, exponent, subedges);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   if (!(e == e)) {
     return 0.0f;
   }
@@ -2560,6 +2684,14 @@ float shl_polygon_blinn_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec
 float shl_polygon_beckmann(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha,
                            int subedges) {
   shli_real al = SHLIGHT_REAL(alpha);
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_beckmann(v, nv, nrm, view, alpha, subedges);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   if (!(al == al)) {
     return 0.0f;
   }
