@@ -523,9 +523,8 @@ shli_real shli_stokes_node(shli_real s, shli_real beta, shli_real c2, shli_real 
   return g * 0.5 * beta * (es + 1.0 / es);
 }
 
-/* r times the 5-node Gauss-Legendre sum of the kind's graded integrand on [m - r, m + r] in s */
-shli_real shli_stokes_gl5(shli_real m, shli_real r, shli_real beta, shli_real c2,
-                                         shli_real p, shli_real q, int kind) {
+shli_real shli_stokes_gl5(shli_real m, shli_real r, shli_real beta, shli_real c2, shli_real p,
+                          shli_real q, int kind) {
   shli_real sum = 0.56888888888888889 * shli_stokes_node(m, beta, c2, p, q, kind);
   sum = sum +
         0.47862867049936647 * (shli_stokes_node(m - 0.53846931010568309 * r, beta, c2, p, q, kind) +
@@ -536,14 +535,8 @@ shli_real shli_stokes_gl5(shli_real m, shli_real r, shli_real beta, shli_real c2
   return r * sum;
 }
 
-/* integral of the kind's integrand over |theta| in [lo, hi] inside [0, pi/2]: 5-node
-   Gauss-Legendre in s, pi/2 - |theta| = beta sinh(s). lev > 0 (the adaptive rule of
-   SHLIGHT_EDGE_EXACT at non-integer exponents): the composite rule on 2, 4, ..., 2^lev equal
-   panels until two successive results differ by at most SHLIGHT_ADAPT_TOL (the error
-   estimate; the graded integrand is analytic in s, so each halving cuts the error of the
-   coarser result by ~2^10 and the accepted finer one is far inside the estimate). */
-shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2,
-                                          shli_real p, shli_real q, int kind, int lev) {
+shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2, shli_real p,
+                           shli_real q, int kind, int lev) {
   shli_real z0 = (1.5707963267948966 - hi) / beta;
   shli_real z1 = (1.5707963267948966 - lo) / beta;
   shli_real s0 = SHLIGHT_LOGR(z0 + SHLIGHT_SQRTR(z0 * z0 + 1.0));
@@ -581,10 +574,8 @@ shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real
   return cur;
 }
 
-/* The arc theta in [ta, tb] of an edge: the halves on either side of theta = 0, each by
-   shli_stokes_half (the integrand is even in theta; lev as there). */
-shli_real shli_stokes_arc(shli_real ta, shli_real tb, shli_real beta, shli_real c2,
-                                         shli_real p, shli_real q, int kind, int lev) {
+shli_real shli_stokes_arc(shli_real ta, shli_real tb, shli_real beta, shli_real c2, shli_real p,
+                          shli_real q, int kind, int lev) {
   if (ta < 0.0 && tb > 0.0) {
     return shli_stokes_half(0.0, -ta, beta, c2, p, q, kind, lev) +
            shli_stokes_half(0.0, tb, beta, c2, p, q, kind, lev);
@@ -772,7 +763,8 @@ shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
     by = io_py[j];
     bz = io_pz[j];
     sum = sum + shli_edge_term(ax, ay, az, bx, by, bz, rx, ry, rz, e, method);
-    if (method != SHLIGHT_EDGE_QUADRATURE && method != SHLIGHT_EDGE_STOKES_ADAPT && i > 0 && j > 0) {
+    if (method != SHLIGHT_EDGE_QUADRATURE && method != SHLIGHT_EDGE_STOKES_ADAPT && i > 0 &&
+        j > 0) {
       /* fan triangle (p0, a, b): 2 atan2(p0 . (a x b), 1 + p0.a + a.b + b.p0) */
       cx = ay * bz - az * by;
       cy = az * bx - ax * bz;
@@ -1173,7 +1165,8 @@ shli_real shli_ellipse_phong_r(shli_real cx, shli_real cy, shli_real cz, shli_re
   return 0.5 * sum;
 }
 
-float shl_ellipse_phong(vec3 c, vec3 a1, vec3 a2, vec3 nrm, vec3 view, float exponent, shl_edge_method method) {
+float shl_ellipse_phong(vec3 c, vec3 a1, vec3 a2, vec3 nrm, vec3 view, float exponent,
+                        shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -1192,7 +1185,8 @@ float shl_ellipse_phong(vec3 c, vec3 a1, vec3 a2, vec3 nrm, vec3 view, float exp
       SHLIGHT_REAL(a2[2]), nx, ny, nz, rx / l, ry / l, rz / l, SHLIGHT_REAL(exponent), method));
 }
 
-float shl_sphere_phong(vec3 c, float r, vec3 nrm, vec3 view, float exponent, shl_edge_method method) {
+float shl_sphere_phong(vec3 c, float r, vec3 nrm, vec3 view, float exponent,
+                       shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);

@@ -142,6 +142,7 @@ precision highp int;
 #endif
 #define SHLIGHT_UNROLLED_BANDS 16
 #define SHLIGHT_MAX_COEFFS (SHLIGHT_MAX_BANDS * SHLIGHT_MAX_BANDS)
+#define SHLI_YBUF_COEFFS SHLIGHT_MAX_COEFFS
 #define shli_real float
 #define SHLIGHT_FLOAT(x) (x)
 #define SHLIGHT_REAL(x) (x)
@@ -158,6 +159,7 @@ precision highp int;
 #endif
 #define SHLIGHT_SIGN1(x) ((x) < 0.0 ? -1.0 : 1.0)
 #define SHLIGHT_SIMD_EVAL 0
+#define SHLIGHT_OUTLINE_EVAL 0 /* C: the large band counts run out of line, in the implementation */
 #define SHLIGHT_FTOI(x) int(x)
 #define SHLIGHT_ITOR(i) float(i)
 #define SHLIGHT_MAXR(a, b) max((a), (b))
@@ -181,15 +183,19 @@ precision highp int;
 #define SHLIGHT_EDGE_AUTO 4
 #define SHLIGHT_EDGE_QUADRATURE 5
 #define SHLIGHT_POLYGON_MAX 8
+#define SHLIGHT_POLYGON_ANY 0
+#define shl_edge_method int
 #define SHLIGHT_CLIP_MAX 20
 #define SHLIGHT_EDGE_FAST 6
+#define SHLIGHT_EDGE_STOKES_ADAPT 105
+#define SHLIGHT_ADAPT_LEVELS 7
+#define SHLIGHT_ADAPT_TOL 2.0e-6
 #ifndef SHLIGHT_EDGE_FAST_ON
 #define SHLIGHT_EDGE_FAST_ON 0
 #endif
 #define SHLIGHT_LANES 1
 #define SHLIGHT_FAST_PAD (SHLIGHT_CLIP_MAX + SHLIGHT_LANES)
 #define SHLIGHT_HALF_K 8
-#define SHLIGHT_ASSERT(x)
 #endif
 
 #ifdef SHLIGHT_GLSL_BASIS
@@ -200,7 +206,6 @@ precision highp int;
 #define SHL_BASIS_GLSL
 
 int shli_bands(int n) {
-  SHLIGHT_ASSERT(n >= 1 && n <= SHLIGHT_MAX_BANDS);
   if (n > SHLIGHT_MAX_BANDS) {
     return SHLIGHT_MAX_BANDS;
   }
@@ -1666,7 +1671,7 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
 #endif
 }
 
-void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_eval_big(int n, float dx, float dy, float dz, out float out_y[SHLIGHT_MAX_COEFFS]) {
   shli_real x = SHLIGHT_REAL(dx);
   shli_real y = SHLIGHT_REAL(dy);
   shli_real z = SHLIGHT_REAL(dz);
@@ -1674,10 +1679,29 @@ void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIG
   shli_real k;
   shli_real az;
   float sg;
-  n = shli_bands(n);
-  if (n < 1) {
-    return;
+#if SHLIGHT_SIMD_EVAL
+  if (n <= SHLIGHT_UNROLLED_BANDS) {
+#ifdef __AVX512VL__
+    shli_sh_eval_avx512_16y(n, dx, dy, dz, out_y);
+#else
+    shli_sh_eval_avx512_16(n, dx, dy, dz, out_y);
+#endif
+  } else {
+    shli_sh_eval_avx512(n, dx, dy, dz, out_y);
   }
+  return;
+#endif
+  e = x * x + y * y + z * z - 1.0;
+  k = 1.0 + e * (-0.5 + 0.375 * e);
+  x = x * k;
+  y = y * k;
+  z = z * k;
+  az = SHLIGHT_ABSR(z);
+  sg = SHLIGHT_SIGN1(z);
+  shli_sh_core(n, x, y, z, (x * x + y * y) / (1.0 + az), sg, out_y);
+}
+
+void shli_sh_eval_small(int n, float dx, float dy, float dz, out float out_y[SHLIGHT_MAX_COEFFS]) {
 #if SHLIGHT_SIMD_EVAL
 #ifdef __AVX512VL__
   if (n >= 4 && n <= 6) {
@@ -1722,26 +1746,57 @@ void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIG
   default:
     break;
   }
-#if SHLIGHT_SIMD_EVAL
-  if (n <= SHLIGHT_UNROLLED_BANDS) {
-#ifdef __AVX512VL__
-    shli_sh_eval_avx512_16y(n, dx, dy, dz, out_y);
-#else
-    shli_sh_eval_avx512_16(n, dx, dy, dz, out_y);
-#endif
-  } else {
-    shli_sh_eval_avx512(n, dx, dy, dz, out_y);
+}
+
+void shli_sh_eval_any(int n, float dx, float dy, float dz, out float out_y[SHLIGHT_MAX_COEFFS]) {
+  float q = dx * dx + dy * dy + dz * dz;
+  shli_real x;
+  shli_real y;
+  shli_real z;
+  shli_real r;
+  if (!(SHLIGHT_ABSF(q - 1.0f) <= 1.0e-6f)) {
+    /* not unit to float precision (|d|^2 of a float-normalised d is within 4e-7 of 1): zero,
+       NaN or infinite d becomes (0, 0, 1), any other d is normalised (scaled by its largest
+       component first, so denormal and huge d work) */
+    x = SHLIGHT_ABSR(SHLIGHT_REAL(dx));
+    y = SHLIGHT_ABSR(SHLIGHT_REAL(dy));
+    z = SHLIGHT_ABSR(SHLIGHT_REAL(dz));
+    r = SHLIGHT_MAXR(x, SHLIGHT_MAXR(y, z));
+    if (!(x + y + z > 0.0 && r <= SHLIGHT_REAL_MAX)) {
+      dx = 0.0f;
+      dy = 0.0f;
+      dz = 1.0f;
+    } else {
+      x = SHLIGHT_REAL(dx) / r;
+      y = SHLIGHT_REAL(dy) / r;
+      z = SHLIGHT_REAL(dz) / r;
+      r = SHLIGHT_SQRTR(x * x + y * y + z * z);
+      dx = SHLIGHT_FLOAT(x / r);
+      dy = SHLIGHT_FLOAT(y / r);
+      dz = SHLIGHT_FLOAT(z / r);
+    }
   }
-  return;
+  if (n <= 6) {
+    shli_sh_eval_small(n, dx, dy, dz, out_y);
+  } else {
+    shli_sh_eval_big(n, dx, dy, dz, out_y);
+  }
+}
+
+void shli_sh_eval_xyz(int n, float dx, float dy, float dz, out float out_y[SHLIGHT_MAX_COEFFS]) {
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
+#if SHLIGHT_OUTLINE_EVAL
+  if (n <= 6 && SHLIGHT_ABSF(dx * dx + dy * dy + dz * dz - 1.0f) <= 1.0e-6f) {
+    shli_sh_eval_small(n, dx, dy, dz, out_y);
+    return;
+  }
+  shli_sh_eval_outline(n, dx, dy, dz, out_y);
+#else
+  shli_sh_eval_any(n, dx, dy, dz, out_y);
 #endif
-  e = x * x + y * y + z * z - 1.0;
-  k = 1.0 + e * (-0.5 + 0.375 * e);
-  x = x * k;
-  y = y * k;
-  z = z * k;
-  az = SHLIGHT_ABSR(z);
-  sg = SHLIGHT_SIGN1(z);
-  shli_sh_core(n, x, y, z, (x * x + y * y) / (1.0 + az), sg, out_y);
 }
 
 void shl_sh_eval(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
@@ -3424,6 +3479,7 @@ void shl_zh_cap_printed(int n, float r, float d, out float out_zh[SHLIGHT_MAX_BA
 void shl_zh_rotate(int n, float zh[SHLIGHT_MAX_BANDS], vec3 dir,
                    out float out_sh[SHLIGHT_MAX_COEFFS]) {
   shli_real g[8];
+  shli_real t;
   float k;
   int l;
   int m;
@@ -3435,10 +3491,208 @@ void shl_zh_rotate(int n, float zh[SHLIGHT_MAX_BANDS], vec3 dir,
   shli_cap_frame(SHLIGHT_REAL(dir[0]), SHLIGHT_REAL(dir[1]), SHLIGHT_REAL(dir[2]), 1.0, g);
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), out_sh);
   for (l = 0; l < n; ++l) {
-    k = SHLIGHT_FLOAT(SHLI_ZH_TAB[5 * l + 3]) * zh[l];
+    k = SHLIGHT_FLOAT(SHLI_ZH_TAB[5 * l + 3]);
     b = l * (l + 1);
-    for (m = -l; m <= l; ++m) {
-      out_sh[b + m] = k * out_sh[b + m];
+    if (!(SHLIGHT_ABSR(SHLIGHT_REAL(zh[l])) >= 1.0e30)) {
+      k = k * zh[l];
+      for (m = -l; m <= l; ++m) {
+        out_sh[b + m] = k * out_sh[b + m];
+      }
+    } else {
+      /* |sqrt(4 pi / (2l+1)) Y_l^m| <= 1 (Unsold): k Y first, so a zh[l] near FLT_MAX does
+         not overflow before the product that fits; the rounding of k Y (1 + 1e-7 for l = 0)
+         can still carry it past FLT_MAX: saturated */
+      for (m = -l; m <= l; ++m) {
+        t = SHLIGHT_REAL(k * out_sh[b + m]) * SHLIGHT_REAL(zh[l]);
+        if (t > SHLIGHT_REAL_MAX) {
+          t = SHLIGHT_REAL_MAX;
+        }
+        if (t < -SHLIGHT_REAL_MAX) {
+          t = -SHLIGHT_REAL_MAX;
+        }
+        out_sh[b + m] = SHLIGHT_FLOAT(t);
+      }
+    }
+  }
+}
+
+void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
+                   out float out_sh[SHLIGHT_MAX_COEFFS]) {
+  shli_real pc[2 * SHLIGHT_MAX_BANDS];
+  shli_real ps[2 * SHLIGHT_MAX_BANDS];
+  shli_real ca[SHLIGHT_MAX_BANDS];
+  shli_real sa[SHLIGHT_MAX_BANDS];
+  shli_real cg[SHLIGHT_MAX_BANDS];
+  shli_real sg[SHLIGHT_MAX_BANDS];
+  shli_real u1[SHLIGHT_MAX_BANDS];
+  shli_real u2[SHLIGHT_MAX_BANDS];
+  shli_real v1[SHLIGHT_MAX_BANDS];
+  shli_real v2[SHLIGHT_MAX_BANDS];
+  shli_real q1[SHLIGHT_MAX_BANDS];
+  shli_real b2[SHLIGHT_MAX_BANDS];
+  shli_real bc;
+  shli_real sb;
+  shli_real cb;
+  shli_real c1;
+  shli_real s1;
+  shli_real t;
+  shli_real h;
+  shli_real bq;
+  shli_real uq;
+  shli_real vq;
+  shli_real qq;
+  shli_real w;
+  shli_real ac;
+  shli_real as;
+  shli_real yc;
+  shli_real ys;
+  shli_real fl;
+  shli_real fm;
+  shli_real fp;
+  int mp;
+  int l;
+  int m;
+  int k;
+  int q;
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
+  /* beta: sin from R's third column (accurate near 0 and pi), cos = R_22 */
+  sb = SHLIGHT_SQRTR(SHLIGHT_REAL(R[2]) * SHLIGHT_REAL(R[2]) +
+                     SHLIGHT_REAL(R[5]) * SHLIGHT_REAL(R[5]));
+  cb = SHLIGHT_REAL(R[8]);
+  h = SHLIGHT_SQRTR(sb * sb + cb * cb);
+  c1 = 1.0;
+  s1 = 0.0;
+  if (sb > 0.0) {
+    c1 = SHLIGHT_REAL(R[2]) / sb;
+    s1 = SHLIGHT_REAL(R[5]) / sb;
+  }
+  if (h > 0.0) {
+    sb = sb / h;
+    cb = cb / h;
+  } else {
+    cb = 1.0;
+  }
+  /* alpha's cos, sin: c1, s1; gamma's: the second row of Rz(-alpha) R = (sin g, cos g, 0) */
+  ca[0] = 1.0;
+  sa[0] = 0.0;
+  t = SHLIGHT_REAL(R[1]) * (-s1) + SHLIGHT_REAL(R[4]) * c1;
+  w = SHLIGHT_REAL(R[0]) * (-s1) + SHLIGHT_REAL(R[3]) * c1;
+  h = SHLIGHT_SQRTR(t * t + w * w);
+  cg[0] = 1.0;
+  sg[0] = 0.0;
+  if (h > 0.0) {
+    t = t / h;
+    w = w / h;
+  } else {
+    t = 1.0;
+  }
+  /* no constant index above 0: GLSL rejects it at SHLIGHT_MAX_BANDS = 1 even where unreached */
+  for (m = 1; m < n; ++m) {
+    ca[m] = ca[m - 1] * c1 - sa[m - 1] * s1;
+    sa[m] = sa[m - 1] * c1 + ca[m - 1] * s1;
+    cg[m] = cg[m - 1] * t - sg[m - 1] * w;
+    sg[m] = sg[m - 1] * t + cg[m - 1] * w;
+  }
+  /* half angles: cos(beta / 2), sin(beta / 2), each from the better-conditioned side */
+  if (cb >= 0.0) {
+    c1 = SHLIGHT_SQRTR(0.5 * (1.0 + cb));
+    s1 = 0.5 * sb / c1;
+  } else {
+    s1 = SHLIGHT_SQRTR(0.5 * (1.0 - cb));
+    c1 = 0.5 * sb / s1;
+  }
+  pc[0] = 1.0;
+  ps[0] = 1.0;
+  for (k = 1; k < 2 * n - 1; ++k) {
+    pc[k] = pc[k - 1] * c1;
+    ps[k] = ps[k - 1] * s1;
+  }
+  bc = 1.0;
+  for (mp = 0; mp < n; ++mp) {
+    fp = SHLIGHT_ITOR(mp);
+    /* b2[m] = C(2q, q + p), q = max(m, m'), p = min(m, m'), by ratios from C(2m', m') */
+    b2[0] = bc;
+    for (m = 0; m + 1 < n; ++m) {
+      fm = SHLIGHT_ITOR(m);
+      if (m < mp) {
+        b2[m + 1] = b2[m] * (fp - fm) / (fp + fm + 1.0);
+      } else {
+        b2[m + 1] =
+            b2[m] * (2.0 * fm + 2.0) * (2.0 * fm + 1.0) / ((fm + fp + 1.0) * (fm - fp + 1.0));
+      }
+    }
+    bc = bc * (2.0 * fp + 2.0) * (2.0 * fp + 1.0) / ((fp + 1.0) * (fp + 1.0));
+    for (l = mp; l < n; ++l) {
+      fl = SHLIGHT_ITOR(l);
+      k = l * (l + 1);
+      /* carry the pairs started below band l: d^l = ((2l - 1) (l (l - 1) cos b -+ m m')
+         d^(l-1) - l S_(l-1) d^(l-2)) / ((l - 1) S_l), S_l = sqrt((l^2 - m^2)(l^2 - m'^2)) */
+      q = l;
+      if (l == mp) {
+        q = 0;
+      }
+      if (l == 1 && mp == 0) {
+        u2[0] = u1[0];
+        v2[0] = v1[0];
+        q1[0] = 1.0;
+        u1[0] = cb;
+        v1[0] = cb;
+        q = 1;
+      }
+      w = (2.0 * fl - 1.0) * fl * (fl - 1.0) * cb;
+      h = (2.0 * fl - 1.0) * fp;
+      for (m = 0; m < q && l > 1; ++m) {
+        fm = SHLIGHT_ITOR(m);
+        qq = SHLIGHT_SQRTR((fl * fl - fm * fm) * (fl * fl - fp * fp));
+        t = 1.0 / ((fl - 1.0) * qq);
+        uq = ((w - h * fm) * u1[m] - fl * q1[m] * u2[m]) * t;
+        vq = ((w + h * fm) * v1[m] - fl * q1[m] * v2[m]) * t;
+        u2[m] = u1[m];
+        v2[m] = v1[m];
+        u1[m] = uq;
+        v1[m] = vq;
+        q1[m] = qq;
+      }
+      /* start the pairs whose band l = max(m, m') is this one:
+         u = d^q_{m' m} = +-B c^(q+p) s^(q-p), v = (-1)^m d^q_{m',-m} = (-1)^m' B c^(q-p) s^(q+p) */
+      for (m = q; m <= l; ++m) {
+        bq = SHLIGHT_SQRTR(b2[m]);
+        uq = bq * pc[mp + m] * ps[l + l - mp - m];
+        vq = bq * pc[l + l - mp - m] * ps[mp + m];
+        if (mp > m && (mp - m) % 2 == 1) {
+          uq = -uq;
+        }
+        if (mp % 2 == 1) {
+          vq = -vq;
+        }
+        u2[m] = 0.0;
+        v2[m] = 0.0;
+        q1[m] = 0.0;
+        u1[m] = uq;
+        v1[m] = vq;
+      }
+      /* row m' of band l's real y rotation (cos block u + v, sin block u - v; sqrt 2 u where m
+         or m' is 0) on the input after its z rotation by gamma */
+      yc = 0.0;
+      ys = 0.0;
+      for (m = 1; m <= l; ++m) {
+        ac = SHLIGHT_REAL(sh[k + m]);
+        as = SHLIGHT_REAL(sh[k - m]);
+        yc = yc + (u1[m] + v1[m]) * (ac * cg[m] - as * sg[m]);
+        ys = ys + (u1[m] - v1[m]) * (ac * sg[m] + as * cg[m]);
+      }
+      ac = u1[0] * SHLIGHT_REAL(sh[k]);
+      /* the output's z rotation (alpha) */
+      if (mp == 0) {
+        out_sh[k] = SHLIGHT_FLOAT(ac + 0.7071067811865476 * yc);
+      } else {
+        yc = yc + 1.4142135623730951 * ac;
+        out_sh[k + mp] = SHLIGHT_FLOAT(yc * ca[mp] - ys * sa[mp]);
+        out_sh[k - mp] = SHLIGHT_FLOAT(yc * sa[mp] + ys * ca[mp]);
+      }
     }
   }
 }
@@ -4427,6 +4681,8 @@ void shli_tri_frame(vec3 x, vec3 p0, vec3 p1, vec3 p2, out shli_real out_g[8],
   shli_real bx = SHLIGHT_REAL(p2[0]) - SHLIGHT_REAL(p0[0]);
   shli_real by = SHLIGHT_REAL(p2[1]) - SHLIGHT_REAL(p0[1]);
   shli_real bz = SHLIGHT_REAL(p2[2]) - SHLIGHT_REAL(p0[2]);
+  shli_real mx;
+  shli_real sc = 1.0;
   shli_real nx = ay * bz - az * by;
   shli_real ny = az * bx - ax * bz;
   shli_real nz = ax * by - ay * bx;
@@ -4447,8 +4703,30 @@ void shli_tri_frame(vec3 x, vec3 p0, vec3 p1, vec3 p2, out shli_real out_g[8],
   out_nt[0] = 0.0;
   out_nt[1] = 0.0;
   out_nt[2] = 0.0;
+  if (!(ar > 0.0 && ar <= SHLIGHT_REAL_MAX)) {
+    /* the area overflowed (edges above ~1.3e19 in C, ~4e9 with float squares in GLSL),
+       underflowed, or is 0 or NaN: again with the edges scaled to ~1, |e1 x e2| =
+       sc^2 |e1/sc x e2/sc| (a zero-area triangle stays 0) */
+    mx = SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(ax), SHLIGHT_ABSR(ay)), SHLIGHT_ABSR(az));
+    mx = SHLIGHT_MAXR(
+        mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)), SHLIGHT_ABSR(bz)));
+    if (mx > 0.0 && mx <= SHLIGHT_REAL_MAX) {
+      sc = mx;
+      mx = 1.0 / mx;
+      ax = ax * mx;
+      ay = ay * mx;
+      az = az * mx;
+      bx = bx * mx;
+      by = by * mx;
+      bz = bz * mx;
+      nx = ay * bz - az * by;
+      ny = az * bx - ax * bz;
+      nz = ax * by - ay * bx;
+      ar = SHLIGHT_SQRTR(nx * nx + ny * ny + nz * nz);
+    }
+  }
   if (ar > 0.0 && ar <= SHLIGHT_REAL_MAX) {
-    rs = SHLIGHT_SQRTR(ar * 0.15915494309189535);
+    rs = sc * SHLIGHT_SQRTR(ar * 0.15915494309189535);
     out_nt[0] = nx / ar;
     out_nt[1] = ny / ar;
     out_nt[2] = nz / ar;
@@ -4576,14 +4854,51 @@ float shl_triangle_solid_angle(vec3 x, vec3 p0, vec3 p1, vec3 p2) {
   shli_real vx = SHLIGHT_REAL(p2[0]) - SHLIGHT_REAL(p0[0]);
   shli_real vy = SHLIGHT_REAL(p2[1]) - SHLIGHT_REAL(p0[1]);
   shli_real vz = SHLIGHT_REAL(p2[2]) - SHLIGHT_REAL(p0[2]);
+  shli_real mx;
   shli_real la = SHLIGHT_SQRTR(ax * ax + ay * ay + az * az);
   shli_real lb = SHLIGHT_SQRTR(bx * bx + by * by + bz * bz);
   shli_real lc = SHLIGHT_SQRTR(cx * cx + cy * cy + cz * cz);
   shli_real nm = ax * (uy * vz - uz * vy) + ay * (uz * vx - ux * vz) + az * (ux * vy - uy * vx);
   shli_real dn = la * lb * lc + (ax * bx + ay * by + az * bz) * lc +
                  (ax * cx + ay * cy + az * cz) * lb + (bx * cx + by * cy + bz * cz) * la;
-  if (!(SHLIGHT_ABSR(nm) + SHLIGHT_ABSR(dn) <= SHLIGHT_REAL_MAX)) {
-    return 0.0f;
+  mx = SHLIGHT_ABSR(nm) + SHLIGHT_ABSR(dn);
+  if (!(mx <= SHLIGHT_REAL_MAX) || !(mx >= 1.0e-30)) {
+    /* the degree-3 products overflowed (|p_i - x| above ~7e12 in C, ~1e12 in GLSL) or are
+       tiny, or NaN: Omega is scale-invariant, so again with everything scaled by the largest
+       component of the p_i - x */
+    mx = SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(ax), SHLIGHT_ABSR(ay)), SHLIGHT_ABSR(az));
+    mx = SHLIGHT_MAXR(
+        mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(bx), SHLIGHT_ABSR(by)), SHLIGHT_ABSR(bz)));
+    mx = SHLIGHT_MAXR(
+        mx, SHLIGHT_MAXR(SHLIGHT_MAXR(SHLIGHT_ABSR(cx), SHLIGHT_ABSR(cy)), SHLIGHT_ABSR(cz)));
+    if (!(mx > 0.0 && mx <= SHLIGHT_REAL_MAX)) {
+      return 0.0f;
+    }
+    mx = 1.0 / mx;
+    ax = ax * mx;
+    ay = ay * mx;
+    az = az * mx;
+    bx = bx * mx;
+    by = by * mx;
+    bz = bz * mx;
+    cx = cx * mx;
+    cy = cy * mx;
+    cz = cz * mx;
+    ux = ux * mx;
+    uy = uy * mx;
+    uz = uz * mx;
+    vx = vx * mx;
+    vy = vy * mx;
+    vz = vz * mx;
+    la = SHLIGHT_SQRTR(ax * ax + ay * ay + az * az);
+    lb = SHLIGHT_SQRTR(bx * bx + by * by + bz * bz);
+    lc = SHLIGHT_SQRTR(cx * cx + cy * cy + cz * cz);
+    nm = ax * (uy * vz - uz * vy) + ay * (uz * vx - ux * vz) + az * (ux * vy - uy * vx);
+    dn = la * lb * lc + (ax * bx + ay * by + az * bz) * lc + (ax * cx + ay * cy + az * cz) * lb +
+         (bx * cx + by * cy + bz * cz) * la;
+    if (!(SHLIGHT_ABSR(nm) + SHLIGHT_ABSR(dn) <= SHLIGHT_REAL_MAX)) {
+      return 0.0f;
+    }
   }
   return SHLIGHT_FLOAT(2.0 * shli_atan2r(nm, dn));
 }
@@ -4907,7 +5222,7 @@ shli_real shli_edge_fit(shli_real pa, shli_real pb, shli_real c, int nf, int met
   return fl;
 }
 
-float shl_edge_integral(float phi, float c, float delta, float n, int method) {
+float shl_edge_integral(float phi, float c, float delta, float n, shl_edge_method method) {
   shli_real cc = SHLIGHT_MINR(SHLIGHT_MAXR(SHLIGHT_REAL(c), 0.0), 1.0);
   shli_real p = SHLIGHT_MINR(SHLIGHT_MAXR(SHLIGHT_REAL(phi), 0.0), 3.1415926535897932);
   shli_real lo = -SHLIGHT_REAL(delta);
@@ -4939,8 +5254,8 @@ float shl_edge_integral(float phi, float c, float delta, float n, int method) {
   while (piece < 3 && hi > lo) {
     a = lo;
     b = SHLIGHT_MINR(hi, 1.5707963267948966);
-    if (nf <= 2 || cc < 1.0e-3 || method == SHLIGHT_EDGE_EXACT || method == SHLIGHT_EDGE_AUTO ||
-        method == SHLIGHT_EDGE_QUADRATURE || method == SHLIGHT_EDGE_FAST) {
+    if (nf <= 2 || cc < 1.0e-3 || method < SHLIGHT_EDGE_LORENTZ ||
+        method > SHLIGHT_EDGE_ELLIPSOID) {
       sum = sum + sg * shli_edge_exact(a, b, cc, nf);
     } else {
       sum = sum + sg * shli_edge_fit(a, b, cc, nf, method);
@@ -5270,19 +5585,9 @@ shli_real shli_stokes_node(shli_real s, shli_real beta, shli_real c2, shli_real 
   return g * 0.5 * beta * (es + 1.0 / es);
 }
 
-shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2, shli_real p,
-                           shli_real q, int kind) {
-  shli_real z0 = (1.5707963267948966 - hi) / beta;
-  shli_real z1 = (1.5707963267948966 - lo) / beta;
-  shli_real s0 = SHLIGHT_LOGR(z0 + SHLIGHT_SQRTR(z0 * z0 + 1.0));
-  shli_real s1 = SHLIGHT_LOGR(z1 + SHLIGHT_SQRTR(z1 * z1 + 1.0));
-  shli_real m = 0.5 * (s0 + s1);
-  shli_real r = 0.5 * (s1 - s0);
-  shli_real sum;
-  if (!(r > 0.0)) {
-    return 0.0;
-  }
-  sum = 0.56888888888888889 * shli_stokes_node(m, beta, c2, p, q, kind);
+shli_real shli_stokes_gl5(shli_real m, shli_real r, shli_real beta, shli_real c2, shli_real p,
+                          shli_real q, int kind) {
+  shli_real sum = 0.56888888888888889 * shli_stokes_node(m, beta, c2, p, q, kind);
   sum = sum +
         0.47862867049936647 * (shli_stokes_node(m - 0.53846931010568309 * r, beta, c2, p, q, kind) +
                                shli_stokes_node(m + 0.53846931010568309 * r, beta, c2, p, q, kind));
@@ -5292,16 +5597,55 @@ shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real
   return r * sum;
 }
 
+shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2, shli_real p,
+                           shli_real q, int kind, int lev) {
+  shli_real z0 = (1.5707963267948966 - hi) / beta;
+  shli_real z1 = (1.5707963267948966 - lo) / beta;
+  shli_real s0 = SHLIGHT_LOGR(z0 + SHLIGHT_SQRTR(z0 * z0 + 1.0));
+  shli_real s1 = SHLIGHT_LOGR(z1 + SHLIGHT_SQRTR(z1 * z1 + 1.0));
+  shli_real r = 0.5 * (s1 - s0);
+  shli_real cur;
+  shli_real prev;
+  shli_real h;
+  int np = 1;
+  int l;
+  int k;
+  if (!(r > 0.0)) {
+    return 0.0;
+  }
+  cur = shli_stokes_gl5(0.5 * (s0 + s1), r, beta, c2, p, q, kind);
+  for (l = 1; l <= lev; ++l) {
+    prev = cur;
+    np = 2 * np;
+    h = (s1 - s0) / SHLIGHT_ITOR(np);
+    cur = 0.0;
+    for (k = 1; k < np; ++k) {
+      cur = cur + shli_stokes_gl5(s0 + (SHLIGHT_ITOR(k) + 0.5) * h, 0.5 * h, beta, c2, p, q, kind);
+    }
+    /* the panel at s0 (theta = pi/2, where h has the branch point |cos|^(e+1) for non-integer
+       e) cut geometrically toward s0: l panels, ratio 0.15, then the rest */
+    for (k = 0; k < l; ++k) {
+      cur = cur + shli_stokes_gl5(s0 + 0.575 * h, 0.425 * h, beta, c2, p, q, kind);
+      h = 0.15 * h;
+    }
+    cur = cur + shli_stokes_gl5(s0 + 0.5 * h, 0.5 * h, beta, c2, p, q, kind);
+    if (SHLIGHT_ABSR(cur - prev) <= SHLIGHT_ADAPT_TOL) {
+      return cur;
+    }
+  }
+  return cur;
+}
+
 shli_real shli_stokes_arc(shli_real ta, shli_real tb, shli_real beta, shli_real c2, shli_real p,
-                          shli_real q, int kind) {
+                          shli_real q, int kind, int lev) {
   if (ta < 0.0 && tb > 0.0) {
-    return shli_stokes_half(0.0, -ta, beta, c2, p, q, kind) +
-           shli_stokes_half(0.0, tb, beta, c2, p, q, kind);
+    return shli_stokes_half(0.0, -ta, beta, c2, p, q, kind, lev) +
+           shli_stokes_half(0.0, tb, beta, c2, p, q, kind, lev);
   }
   if (tb <= 0.0) {
-    return shli_stokes_half(-tb, -ta, beta, c2, p, q, kind);
+    return shli_stokes_half(-tb, -ta, beta, c2, p, q, kind, lev);
   }
-  return shli_stokes_half(ta, tb, beta, c2, p, q, kind);
+  return shli_stokes_half(ta, tb, beta, c2, p, q, kind, lev);
 }
 
 shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
@@ -5330,8 +5674,12 @@ shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx,
   shli_real pa;
   shli_real pb;
   int nf;
+  int lev = 0;
   if (!(sp > 1.0e-30)) {
     return 0.0;
+  }
+  if (method == SHLIGHT_EDGE_STOKES_ADAPT) {
+    lev = SHLIGHT_ADAPT_LEVELS;
   }
   xa = ax * rx + ay * ry + az * rz;
   xb = bx * rx + by * ry + bz * rz;
@@ -5339,7 +5687,7 @@ shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx,
     /* an edge on the clip circle u.r = 0 (made by the clip): its normal is +-r, c = 0; the
        end points' rounding would otherwise decide where its arc lies */
     w = SHLIGHT_REAL(SHLIGHT_SIGN1(nx * rx + ny * ry + nz * rz));
-    if (method != SHLIGHT_EDGE_QUADRATURE &&
+    if (method != SHLIGHT_EDGE_QUADRATURE && lev == 0 &&
         (!(e >= 1.0) || SHLIGHT_FTOI(e + 0.5) - 2 * (SHLIGHT_FTOI(e + 0.5) / 2) == 0)) {
       return 0.0;
     }
@@ -5356,7 +5704,7 @@ shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx,
   yb = bx * tx + by * ty + bz * tz;
   c2 = SHLIGHT_MAXR(1.0 - w * w, 0.0);
   aw = SHLIGHT_ABSR(w);
-  if (method == SHLIGHT_EDGE_QUADRATURE) {
+  if (method == SHLIGHT_EDGE_QUADRATURE || lev > 0) {
     if (!(aw > 0.0)) {
       return 0.0;
     }
@@ -5373,7 +5721,7 @@ shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx,
     tb = SHLIGHT_MINR(ta + shli_atan2r(aw * sp, cp - xa * xb), 1.5707963267948966);
     hm = 0.5 * (e + 1.0);
     beta = 0.5 * shli_atan2r(aw * SHLIGHT_SQRTR(e + 1.0), 1.0);
-    g = shli_stokes_arc(ta, tb, beta, c2, w * w, hm, 0);
+    g = shli_stokes_arc(ta, tb, beta, c2, w * w, hm, 0, lev);
     if (w < 0.0) {
       g = -g;
     }
@@ -5477,7 +5825,8 @@ shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
     by = io_py[j];
     bz = io_pz[j];
     sum = sum + shli_edge_term(ax, ay, az, bx, by, bz, rx, ry, rz, e, method);
-    if (method != SHLIGHT_EDGE_QUADRATURE && i > 0 && j > 0) {
+    if (method != SHLIGHT_EDGE_QUADRATURE && method != SHLIGHT_EDGE_STOKES_ADAPT && i > 0 &&
+        j > 0) {
       /* fan triangle (p0, a, b): 2 atan2(p0 . (a x b), 1 + p0.a + a.b + b.p0) */
       cx = ay * bz - az * by;
       cy = az * bx - ax * bz;
@@ -5488,7 +5837,7 @@ shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
                                             by * io_py[0] + bz * io_pz[0]);
     }
   }
-  if (method != SHLIGHT_EDGE_QUADRATURE &&
+  if (method != SHLIGHT_EDGE_QUADRATURE && method != SHLIGHT_EDGE_STOKES_ADAPT &&
       SHLIGHT_FTOI(e + 0.5) - 2 * (SHLIGHT_FTOI(e + 0.5) / 2) == 0) {
     sum = sum + omega;
   }
@@ -5499,7 +5848,7 @@ shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
 }
 
 float shl_polygon_moment(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float exponent,
-                         int method) {
+                         shl_edge_method method) {
   shli_real px[SHLIGHT_CLIP_MAX];
   shli_real py[SHLIGHT_CLIP_MAX];
   shli_real pz[SHLIGHT_CLIP_MAX];
@@ -5513,6 +5862,17 @@ float shl_polygon_moment(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float e
   shli_real e = SHLIGHT_REAL(exponent);
   int i;
   int mth = method;
+  if (mth < SHLIGHT_EDGE_EXACT || mth > SHLIGHT_EDGE_FAST) {
+    mth = SHLIGHT_EDGE_AUTO; /* an unknown method id */
+  }
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_moment(v, nv, axis, exponent, method);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   if (nv < 3 || nv > SHLIGHT_POLYGON_MAX || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) ||
       !(e < 1.0e30)) {
     return 0.0f;
@@ -5547,18 +5907,18 @@ float shl_polygon_moment(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float e
   }
 #endif
   if (mth == SHLIGHT_EDGE_AUTO) {
-    mth = SHLIGHT_EDGE_QUADRATURE;
+    mth = SHLIGHT_EDGE_STOKES_ADAPT;
     if (e <= 16.0 && e == SHLIGHT_ITOR(SHLIGHT_FTOI(e))) {
       mth = SHLIGHT_EDGE_EXACT;
     }
   }
-  if (mth == SHLIGHT_EDGE_EXACT && e > 65536.0) {
+  if (mth == SHLIGHT_EDGE_EXACT && (e > 65536.0 || e != SHLIGHT_ITOR(SHLIGHT_FTOI(e)))) {
+    mth = SHLIGHT_EDGE_STOKES_ADAPT;
+  }
+  if (mth != SHLIGHT_EDGE_QUADRATURE && mth != SHLIGHT_EDGE_STOKES_ADAPT && e > 65536.0) {
     mth = SHLIGHT_EDGE_QUADRATURE;
   }
-  if (mth == SHLIGHT_EDGE_EXACT && e != SHLIGHT_ITOR(SHLIGHT_FTOI(e))) {
-    mth = SHLIGHT_EDGE_QUADRATURE;
-  }
-  if (mth != SHLIGHT_EDGE_QUADRATURE) {
+  if (mth != SHLIGHT_EDGE_QUADRATURE && mth != SHLIGHT_EDGE_STOKES_ADAPT) {
     e = SHLIGHT_ITOR(SHLIGHT_FTOI(e + 0.5));
   }
   return SHLIGHT_FLOAT(shli_polygon_moment_r(px, py, pz, nv, rx, ry, rz, e, mth));
@@ -5576,6 +5936,9 @@ shli_real shli_phong_arrays(inout shli_real io_px[SHLIGHT_CLIP_MAX],
   int i;
   int nc;
   int mth = method;
+  if (mth < SHLIGHT_EDGE_EXACT || mth > SHLIGHT_EDGE_FAST) {
+    mth = SHLIGHT_EDGE_AUTO; /* an unknown method id */
+  }
 #if SHLIGHT_EDGE_FAST_ON
   if (mth == SHLIGHT_EDGE_FAST && nv >= 3 && nv <= SHLIGHT_POLYGON_MAX) {
     for (i = 0; i < nv; ++i) {
@@ -5610,15 +5973,18 @@ shli_real shli_phong_arrays(inout shli_real io_px[SHLIGHT_CLIP_MAX],
     return 0.0;
   }
   if (mth == SHLIGHT_EDGE_AUTO) {
-    mth = SHLIGHT_EDGE_QUADRATURE;
+    mth = SHLIGHT_EDGE_STOKES_ADAPT;
     if (e <= 16.0 && e == SHLIGHT_ITOR(SHLIGHT_FTOI(e))) {
       mth = SHLIGHT_EDGE_EXACT;
     }
   }
   if (mth == SHLIGHT_EDGE_EXACT && (e > 65536.0 || e != SHLIGHT_ITOR(SHLIGHT_FTOI(e)))) {
+    mth = SHLIGHT_EDGE_STOKES_ADAPT;
+  }
+  if (mth != SHLIGHT_EDGE_QUADRATURE && mth != SHLIGHT_EDGE_STOKES_ADAPT && e > 65536.0) {
     mth = SHLIGHT_EDGE_QUADRATURE;
   }
-  if (mth != SHLIGHT_EDGE_QUADRATURE) {
+  if (mth != SHLIGHT_EDGE_QUADRATURE && mth != SHLIGHT_EDGE_STOKES_ADAPT) {
     e = SHLIGHT_ITOR(SHLIGHT_FTOI(e + 0.5));
   }
   return (e + 1.0) * 0.15915494309189534 *
@@ -5644,7 +6010,7 @@ shli_real shli_polygon_phong_r(vec3 v[SHLIGHT_POLYGON_MAX], int nv, shli_real nx
 }
 
 float shl_polygon_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float exponent,
-                        int method) {
+                        shl_edge_method method) {
   float fx[SHLIGHT_CLIP_MAX];
   float fy[SHLIGHT_CLIP_MAX];
   float fz[SHLIGHT_CLIP_MAX];
@@ -5658,6 +6024,14 @@ float shl_polygon_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view
   shli_real rz = 2.0 * dv * nz - SHLIGHT_REAL(view[2]);
   shli_real l = SHLIGHT_SQRTR(rx * rx + ry * ry + rz * rz);
   int i;
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_phong(v, nv, nrm, view, exponent, method);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   if (!(dv > 0.0) || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX)) {
     return 0.0f;
   }
@@ -5722,10 +6096,12 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
                        out float out_np[1]) {
   shli_real l1 = SHLIGHT_REAL(shl_lobe_to_sg(n1));
   shli_real l2 = SHLIGHT_REAL(shl_lobe_to_sg(n2));
-  shli_real px = l1 * SHLIGHT_REAL(r1[0]) + l2 * SHLIGHT_REAL(r2[0]);
-  shli_real py = l1 * SHLIGHT_REAL(r1[1]) + l2 * SHLIGHT_REAL(r2[1]);
-  shli_real pz = l1 * SHLIGHT_REAL(r1[2]) + l2 * SHLIGHT_REAL(r2[2]);
-  shli_real lp = SHLIGHT_SQRTR(px * px + py * py + pz * pz);
+  shli_real a[8];
+  shli_real b[8];
+  shli_real px;
+  shli_real py;
+  shli_real pz;
+  shli_real lp;
   shli_real c1;
   shli_real c2;
   shli_real mu = 0.0;
@@ -5733,6 +6109,17 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
   out_rp[1] = r1[1];
   out_rp[2] = r1[2];
   out_np[0] = 0.0f;
+  if (!(n1 >= 0.0f) || !(n2 >= 0.0f)) {
+    return 0.0f;
+  }
+  /* the axes normalised in shli_real: a float-normalised axis (|r|^2 - 1 ~ 5e-8) raised to
+     n ~ 1e8 would move mu by e^2.4 */
+  shli_cap_frame(SHLIGHT_REAL(r1[0]), SHLIGHT_REAL(r1[1]), SHLIGHT_REAL(r1[2]), 1.0, a);
+  shli_cap_frame(SHLIGHT_REAL(r2[0]), SHLIGHT_REAL(r2[1]), SHLIGHT_REAL(r2[2]), 1.0, b);
+  px = l1 * a[0] + l2 * b[0];
+  py = l1 * a[1] + l2 * b[1];
+  pz = l1 * a[2] + l2 * b[2];
+  lp = SHLIGHT_SQRTR(px * px + py * py + pz * pz);
   if (!(lp > 1.0e-30) || !(lp < 1.0e30)) {
     return 0.0f;
   }
@@ -5743,8 +6130,12 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
   out_rp[1] = SHLIGHT_FLOAT(py);
   out_rp[2] = SHLIGHT_FLOAT(pz);
   out_np[0] = shl_sg_to_lobe(SHLIGHT_FLOAT(lp));
-  c1 = px * SHLIGHT_REAL(r1[0]) + py * SHLIGHT_REAL(r1[1]) + pz * SHLIGHT_REAL(r1[2]);
-  c2 = px * SHLIGHT_REAL(r2[0]) + py * SHLIGHT_REAL(r2[1]) + pz * SHLIGHT_REAL(r2[2]);
+  c1 = px * a[0] + py * a[1] + pz * a[2];
+  c2 = px * b[0] + py * b[1] + pz * b[2];
+  /* cosines of unit vectors: <= 1, so mu <= 1 for any exponents (rounding can give 1 + 1e-16,
+     which n ~ 1e30 would blow up) */
+  c1 = SHLIGHT_MINR(c1, 1.0);
+  c2 = SHLIGHT_MINR(c2, 1.0);
   if (c1 > 0.0 && c2 > 0.0) {
     mu = SHLIGHT_POWR(c1, SHLIGHT_REAL(n1)) * SHLIGHT_POWR(c2, SHLIGHT_REAL(n2));
   }
@@ -5752,7 +6143,7 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
 }
 
 float shl_polygon_phong2(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float exponent,
-                         int method) {
+                         shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -5772,12 +6163,26 @@ float shl_polygon_phong2(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 vie
   shli_real px;
   shli_real py;
   shli_real pz;
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_phong2(v, nv, nrm, view, exponent, method);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   if (!(dv > 0.0) || !(l > 0.0) || !(l < SHLIGHT_REAL_MAX) || !(e >= 0.0) || !(e < 1.0e30)) {
     return 0.0f;
   }
   rx = rx / l;
   ry = ry / l;
   rz = rz / l;
+  if (e > 1.0e6) {
+    /* the product's limit (relative error ~ 1 / e): the cosine held at the mirror direction;
+       the SG road loses the axis to float rounding of lambda above ~1e12 */
+    c2 = SHLIGHT_MAXR(rx * nx + ry * ny + rz * nz, 0.0);
+    return SHLIGHT_FLOAT(c2 * shli_polygon_phong_r(v, nv, nx, ny, nz, rx, ry, rz, e, method));
+  }
   l1 = SHLIGHT_REAL(shl_lobe_to_sg(exponent));
   px = l1 * rx + l2 * nx;
   py = l1 * ry + l2 * ny;
@@ -5822,7 +6227,8 @@ shli_real shli_ellipse_phong_r(shli_real cx, shli_real cy, shli_real cz, shli_re
   return 0.5 * sum;
 }
 
-float shl_ellipse_phong(vec3 c, vec3 a1, vec3 a2, vec3 nrm, vec3 view, float exponent, int method) {
+float shl_ellipse_phong(vec3 c, vec3 a1, vec3 a2, vec3 nrm, vec3 view, float exponent,
+                        shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -5841,7 +6247,8 @@ float shl_ellipse_phong(vec3 c, vec3 a1, vec3 a2, vec3 nrm, vec3 view, float exp
       SHLIGHT_REAL(a2[2]), nx, ny, nz, rx / l, ry / l, rz / l, SHLIGHT_REAL(exponent), method));
 }
 
-float shl_sphere_phong(vec3 c, float r, vec3 nrm, vec3 view, float exponent, int method) {
+float shl_sphere_phong(vec3 c, float r, vec3 nrm, vec3 view, float exponent,
+                       shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -5951,6 +6358,14 @@ float shl_polygon_ggx_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float 
   int i;
   int j;
   int nc = shli_poly_load_clip(v, nv, axis, alpha, px, py, pz, par);
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_ggx_ndf(v, nv, axis, alpha);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   if (nc == 0) {
     return 0.0f;
   }
@@ -5992,7 +6407,7 @@ shli_real shli_beckmann_lambda(shli_real c, shli_real alpha) {
   if (!(s2 > 0.0)) {
     return 0.0;
   }
-  a = SHLIGHT_MAXR(c / (alpha * SHLIGHT_SQRTR(s2)), 1.0e-6);
+  a = SHLIGHT_MAXR(c / (alpha * SHLIGHT_SQRTR(s2)), 1.0e-30);
   t = 1.0 / (1.0 + 0.3275911 * a);
   p = t *
       (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
@@ -6668,11 +7083,27 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
 }
 
 float shl_polygon_ggx(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha) {
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_ggx(v, nv, nrm, view, alpha);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   return shli_mf_taylor(v, nv, nrm, view, alpha, 0);
 }
 
 float shl_polygon_beckmann_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view,
                                   float alpha) {
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_beckmann_taylor(v, nv, nrm, view, alpha);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   return shli_mf_taylor(v, nv, nrm, view, alpha, 1);
 }
 
@@ -6728,7 +7159,7 @@ shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_real az, shli_real
     tb = SHLIGHT_MINR(ta + shli_atan2r(aw * sp, cp - xa * xb), 1.5707963267948966);
     b = w * w / (alpha * alpha);
     beta = 0.5 * shli_atan2r(aw * 1.4142135623730951, alpha);
-    g = shli_stokes_arc(ta, tb, beta, c2, b, sa, 1);
+    g = shli_stokes_arc(ta, tb, beta, c2, b, sa, 1, 0);
   }
   if (w < 0.0) {
     g = -g;
@@ -6745,6 +7176,14 @@ float shl_polygon_beckmann_ndf(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, f
   int i;
   int j;
   int nc = shli_poly_load_clip(v, nv, axis, alpha, px, py, pz, par);
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_beckmann_ndf(v, nv, axis, alpha);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   if (nc == 0) {
     return 0.0f;
   }
@@ -7196,6 +7635,9 @@ shli_real shli_half_light(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 vi
     sg = -1;
   }
   k = subedges;
+  if (k < -SHLIGHT_HALF_K) { /* clamped before the sign is taken: no -INT_MIN */
+    k = -SHLIGHT_HALF_K;
+  }
   if (k < 0) {
     k = -k;
   } else {
@@ -7280,6 +7722,14 @@ shli_real shli_half_light(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 vi
 float shl_polygon_blinn_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view,
                               float exponent, int subedges) {
   shli_real e = SHLIGHT_REAL(exponent);
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_blinn_phong(v, nv, nrm, view, exponent, subedges);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   if (!(e == e)) {
     return 0.0f;
   }
@@ -7290,6 +7740,14 @@ float shl_polygon_blinn_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec
 float shl_polygon_beckmann(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha,
                            int subedges) {
   shli_real al = SHLIGHT_REAL(alpha);
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_beckmann(v, nv, nrm, view, alpha, subedges);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
   if (!(al == al)) {
     return 0.0f;
   }
@@ -7501,11 +7959,17 @@ float shl_sh_dot(int n, float a[SHLIGHT_MAX_COEFFS], float b[SHLIGHT_MAX_COEFFS]
 
 float shli_sh_conv_zh_xyz(int n, float sh[SHLIGHT_MAX_COEFFS], float zh[SHLIGHT_MAX_BANDS],
                           shli_real ux, shli_real uy, shli_real uz) {
-  float ysh[SHLIGHT_MAX_COEFFS];
+  float ysh[SHLI_YBUF_COEFFS];
   float k;
   int l;
   int m;
   int b;
+#if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
+  if (n * n > SHLI_YBUF_COEFFS) {
+    return SHLIGHT_FLOAT(shli_sh_ystream(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz),
+                                         sh, zh, 0.0f, 0, 1));
+  }
+#endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);
   /* the rotated lobe in place, then one dot (independent add chains, see shl_sh_dot) */
   for (l = 0; l < n; ++l) {
@@ -7669,8 +8133,11 @@ void shl_sh_window(int n, int kind, float width, inout float io_zh[SHLIGHT_MAX_B
         /* (1 + cos(pi t)) / 2 = 1 - sin(pi t / 2)^2 */
         sg = shli_sinpi(0.5 * t);
         sg = 1.0 - sg * sg;
-      } else {
+      } else if (t > 0.0) {
         sg = shli_sinpi(t) / (3.141592653589793 * t);
+      } else {
+        /* width = +inf: t = 0, sinc(0) = 1 (not 0 / 0) */
+        sg = 1.0;
       }
     }
     io_zh[l] = SHLIGHT_FLOAT(SHLIGHT_REAL(io_zh[l]) * sg);
@@ -7854,15 +8321,26 @@ float shl_hvl_geometric(vec3 x, vec3 nx, vec3 y, vec3 ny, float r, int exact) {
   } else {
     hh = SHLIGHT_REAL(shli_hvl_hs(cx, r, SHLIGHT_FLOAT(hh)));
   }
-  return SHLIGHT_FLOAT(cj * hh / (3.141592653589793 * rr * rr));
+  /* divided by r twice: no overflow of 1 / r^2 before the product (r down to denormals) */
+  hh = cj * hh / (3.141592653589793 * rr);
+  if (!(hh < SHLIGHT_REAL_MAX * rr)) {
+    return SHLIGHT_FLOAT(SHLIGHT_REAL_MAX);
+  }
+  return SHLIGHT_FLOAT(hh / rr);
 }
 
 float shli_hvl_emission_xyz(int n, float femit[SHLIGHT_MAX_COEFFS], shli_real ux, shli_real uy,
                             shli_real uz) {
-  float ysh[SHLIGHT_MAX_COEFFS];
+  float ysh[SHLI_YBUF_COEFFS];
   if (n == 1) {
     return SHLIGHT_FLOAT(0.28209479177387814 * SHLIGHT_REAL(femit[0]));
   }
+#if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
+  if (n * n > SHLI_YBUF_COEFFS) {
+    return SHLIGHT_FLOAT(shli_sh_ystream(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz),
+                                         femit, 0, 0.0f, 0, 1));
+  }
+#endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(ux), SHLIGHT_FLOAT(uy), SHLIGHT_FLOAT(uz), ysh);
   return shl_sh_dot(n, femit, ysh);
 }
@@ -7985,7 +8463,17 @@ float shl_hvl_radius_fov(float d, float fov, int m) {
     return 0.0f;
   }
   g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(m)));
-  return SHLIGHT_FLOAT(dd * (g + g * g * g / 3.0));
+  /* d g (1 + g^2 / 3) with the overflow test before the product (float in GLSL) */
+  f = 1.0 + g * g / 3.0;
+  g = dd * g;
+  if (!(g <= SHLIGHT_REAL_MAX / f)) {
+    return SHLIGHT_FLOAT(SHLIGHT_REAL_MAX);
+  }
+  g = g * f;
+  if (g > SHLIGHT_REAL_MAX) {
+    g = SHLIGHT_REAL_MAX;
+  }
+  return SHLIGHT_FLOAT(g);
 }
 
 float shl_hvl_radius_fov_tan(float d, float fov, int m) {
@@ -8004,7 +8492,15 @@ float shl_hvl_radius_fov_tan(float d, float fov, int m) {
   }
   /* tan g = sin(pi t) / sin(pi (1/2 - t)), t = g / pi in [0, 1/2] */
   g = g * 0.3183098861837907;
-  return SHLIGHT_FLOAT(dd * shli_sinpi(g) / shli_sinpi(0.5 - g));
+  g = shli_sinpi(g) / shli_sinpi(0.5 - g);
+  if (g > 1.0 && !(dd <= SHLIGHT_REAL_MAX / g)) {
+    return SHLIGHT_FLOAT(SHLIGHT_REAL_MAX);
+  }
+  g = dd * g;
+  if (g > SHLIGHT_REAL_MAX) {
+    g = SHLIGHT_REAL_MAX;
+  }
+  return SHLIGHT_FLOAT(g);
 }
 
 #endif
@@ -8017,6 +8513,12 @@ float shl_hvl_radius_fov_tan(float d, float fov, int m) {
 // shl_light.glsl. The host defines SHLIGHT_MAX_BANDS.
 #ifndef SHL_BRDFTAB_GLSL
 #define SHL_BRDFTAB_GLSL
+
+shli_real shli_brdf_grid_u(shli_real d) {
+  return ((1.5707963267948966 - d) +
+          0.05 * SHLIGHT_LOGR((1.5707963267948966 + 0.000001) / (d + 0.000001))) *
+         0.4377994232697314;
+}
 
 void shl_sh_rotate_z(int n, float c1, float s1, inout float io_sh[SHLIGHT_MAX_COEFFS]) {
   shli_real cm = 1.0;
@@ -8060,14 +8562,18 @@ void shl_brdf_table_cell(int n_theta, int n_phi, vec3 wo, out int out_idx[4], ou
     out_idx[j] = 0;
     out_w[j] = 0.0f;
   }
-  if (n_theta < 1 || n_phi < 1) {
+  if (n_theta < 1 || n_phi < 1 || n_theta > 4096 || n_phi > 4096) {
     return;
   }
   if (z < 0.0) {
     z = 0.0;
   }
   if (n_theta > 1) {
-    u = shli_atan2r(rho, z) * (SHLIGHT_REAL(SHLIGHT_ITOF(n_theta)) * 0.63661977236758134) - 0.5;
+    u = 1.5707963267948966;
+    if (rho > 0.0) {
+      u = shli_atan2r(z, rho);
+    }
+    u = shli_brdf_grid_u(u) * SHLIGHT_REAL(SHLIGHT_ITOF(n_theta - 1));
     if (!(u > 0.0)) {
       u = 0.0;
     }
@@ -8130,7 +8636,8 @@ void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int which,
     return;
   }
   nn = n * n;
-  if (n_theta < 1 || n_phi < 1) {
+  if (n_theta < 1 || n_phi < 1 || n_theta > 4096 || n_phi > 4096 ||
+      n_theta * n_phi > 1073741823 / nn) {
     for (i = 0; i < nn; ++i) {
       out_sh[i] = 0.0f;
     }
@@ -8205,7 +8712,7 @@ shli_real shli_ssf_vpl(vec3 x, vec3 nx, vec3 y, vec3 ny, float flux, float dmin,
 
 void shl_ssf_vpl_sh(int n, vec3 x, vec3 nx, vec3 y, vec3 ny, float flux, float dmin,
                     inout float io_sh[SHLIGHT_MAX_COEFFS]) {
-  float ysh[SHLIGHT_MAX_COEFFS];
+  float ysh[SHLI_YBUF_COEFFS];
   shli_real g[8];
   float e;
   int nn;
@@ -8218,6 +8725,13 @@ void shl_ssf_vpl_sh(int n, vec3 x, vec3 nx, vec3 y, vec3 ny, float flux, float d
   if (!(e > 0.0f)) {
     return;
   }
+#if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
+  if (n * n > SHLI_YBUF_COEFFS) {
+    shli_sh_ystream(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), io_sh, 0, e,
+                    io_sh, 1);
+    return;
+  }
+#endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), ysh);
   nn = n * n;
   for (i = 0; i < nn; ++i) {

@@ -761,8 +761,8 @@ def glsl_param(prm, fname):
         const, typ, name = m.groups()
         qual = '' if const else ('inout ' if name.startswith('io_') else 'out ')
         return '%s%s %s[%s]' % (qual, typ, name, ARRAY_SIZES.get(name, 'SHLIGHT_MAX_COEFFS'))
-    if re.match(r'^(int|float|shli_real) (\w+)$', prm):
-        return prm
+    if re.match(r'^(int|float|shli_real|shl_[a-z_]+) (\w+)$', prm):
+        return prm  # shl_* enum types: #defined as int in shl_prelude.glsl
     raise SystemExit('gen_basis: no GLSL mapping for parameter "%s" of %s' % (prm, fname))
 
 
@@ -781,10 +781,17 @@ def split_items(lines):
     i = 0
     while i < len(lines):
         ln = lines[i]
-        if ln.startswith('SHLIGHT_INLINE '):
+        if ln.startswith('SHLIGHT_INLINE ') or ln.startswith('SHLIGHT_CPU_INLINE '):
             j = i
-            while not lines[j].rstrip().endswith('{'):
+            while not lines[j].rstrip().endswith(('{', ';')):
                 j += 1
+            if lines[j].rstrip().endswith(';') or ln.startswith('SHLIGHT_CPU_INLINE '):
+                # a prototype, or a C-only function (the run-time loops): no GLSL twin
+                if lines[j].rstrip().endswith('{'):
+                    while lines[j] != '}':
+                        j += 1
+                i = j + 1
+                continue
             name, sig = glsl_signature(' '.join(lines[i:j + 1]))
             k = j + 1
             while lines[k] != '}':
