@@ -14,7 +14,10 @@
  * tilted shading normals from sending light between points of the same plane, an unphysical
  * transfer whose integral diverges (log) at the receiver and kept the ground truth from
  * converging (max error 0.125 of peak between N = 256 and 512 without it, 0.005 with it).
- * Non-Lambert materials contribute their diffuse part kd only (bounce and receiver).
+ * Bounce surfaces reflect their diffuse part kd only (the RSM's flux). Receivers: Lambert ones
+ * kd / pi; Phong and GGX ones (ks > 0) kd / pi + ks f_s, and a measured BRDF (--brdf FILE,
+ * shl_merl_read) replaces a material's BRDF altogether: the BRDF part is shaded through BRDF SH
+ * tables on every path (see "receiver BRDFs" below), the ground truth uses the real BRDF.
  *
  * The light set (rsm_lights). The RSM is rd_gbuffer_view from the spot (eye c, axis n, fov_y =
  * 2 * angle) of m = w x h texels (16 x 16 = 256 by default; SHLIGHT_HVL_RSM=N for N x N); the
