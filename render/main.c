@@ -22,6 +22,7 @@ static void usage(FILE *f) {
              "  --bands N           SH bands of the SH passes (default: the scene's, 5)\n"
              "  --brdf-bands N      bands of the BRDF SH tables of glossy materials in the grid\n"
              "                      pass (default 9; the product uses min(bands, N) bands)\n"
+             "                      and the hvl pass (all N bands)\n"
              "  --brdf FILE[:MAT]   a measured BRDF in MERL's binary format (shl_merl_read) for\n"
              "                      the hvl pass's receivers of material MAT (default: every\n"
              "                      Phong / GGX material of the scene), through BRDF SH tables\n"

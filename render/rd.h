@@ -152,18 +152,19 @@ void rd_progress(const char *label, long done, long total);
 typedef struct rd_result rd_result;
 typedef struct {
   const rd_scene *scene;
-  const rd_gbuf *gb; /* camera G-buffer */
-  int use_gl;        /* run the GLSL paths */
-  int use_cpu;       /* run the CPU paths */
-  int gt;            /* ground truth: 0 none, 1 quick (CI: few samples), 2 full (README) */
-  int bands;         /* SH bands (scene default unless overridden on the command line) */
-  int brdf_bands;    /* bands of the grid pass's BRDF SH tables (glossy materials; 0: 9) */
-  const struct shl_merl *merl; /* --brdf FILE: a measured BRDF (shl_merl_read) for the HVL
-                                  pass's receivers; NULL: none */
-  const char *merl_mat;        /* the material it replaces (NULL: every Phong / GGX one) */
+  const rd_gbuf *gb;  /* camera G-buffer */
+  int use_gl;         /* run the GLSL paths */
+  int use_cpu;        /* run the CPU paths */
+  int gt;             /* ground truth: 0 none, 1 quick (CI: few samples), 2 full (README) */
+  int bands;          /* SH bands (scene default unless overridden on the command line) */
+  int brdf_bands;     /* bands of the grid / hvl passes' BRDF SH tables (glossy; 0: 9) */
   int reps;           /* timed repetitions of each GL draw / CPU pass; the median is reported */
   const char *outdir; /* PNGs go to outdir/<scene>_<pass>_<method>_<path>.png; NULL: none */
   float exposure;     /* PNG exposure */
+  /* --brdf FILE[:MAT]: a measured BRDF (shl_merl_read) for the hvl pass's receivers (NULL:
+     none), and the material it replaces (NULL: every Phong / GGX material) */
+  const struct shl_merl *merl;
+  const char *merl_mat;
   /* results, filled by rd_emit */
   rd_result *res;
   int nres, capres;
