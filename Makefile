@@ -146,6 +146,11 @@ $(BUILD)/render/glctx.o: tests/gl/glctx.c tests/gl/glctx.h
 $(BUILD)/render/shlrender: $(RENDER_OBJS) $(BUILD)/render/glctx.o
 	$(CC) -o $@ $^ $(GL_LIBS) -lpthread
 
+# merl_write: a MERL-format BRDF file from an analytic model (shlrender --brdf; tests/test_render.sh)
+$(BUILD)/tools/merl_write: tools/merl_write.c shlight.h
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O2 -g1 $(RENDER_WARN) -o $@ tools/merl_write.c -lm
+
 # the scene parser's fuzz target: replay (CI, plain and ASan/UBSan) and libFuzzer (make fuzz-scene)
 FUZZ_SCENE_DEPS := tests/fuzz_scene.c tests/fuzz_replay.c render/rd_scene.c render/rd.h
 $(BUILD)/tests/fuzz_replay_scene: $(FUZZ_SCENE_DEPS)

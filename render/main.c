@@ -2,6 +2,7 @@
  * check failed (--check), 2 bad usage or scene file, 3 no GL context (GL paths requested),
  * 4 a pass failed. */
 #include "rd.h"
+#include "../shlight.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,6 +22,10 @@ static void usage(FILE *f) {
              "  --bands N           SH bands of the SH passes (default: the scene's, 5)\n"
              "  --brdf-bands N      bands of the BRDF SH tables of glossy materials in the grid\n"
              "                      pass (default 9; the product uses min(bands, N) bands)\n"
+             "                      and the hvl pass (all N bands)\n"
+             "  --brdf FILE[:MAT]   a measured BRDF in MERL's binary format (shl_merl_read) for\n"
+             "                      the hvl pass's receivers of material MAT (default: every\n"
+             "                      Phong / GGX material of the scene), through BRDF SH tables\n"
              "  --reps N            timed repetitions (median reported; default 3)\n"
              "  --out DIR           write PNGs to DIR (created; default: none)\n"
              "  --exposure X        PNG exposure (default: per pass, from the reference)\n"
@@ -40,10 +45,13 @@ static int has(const char *list, const char *item) {
 
 int main(int argc, char **argv) {
   const char *scene = "cornell", *passes = "all", *paths = "gl,cpu", *backend = NULL,
-             *outdir = NULL;
+             *outdir = NULL, *brdf = NULL;
   int w = 256, h = 192, gt = 1, bands = 0, brdf_bands = 9, reps = 3, check = 0, i, rc = 0, fails,
       bad = 0;
   float exposure = 0;
+  shl_merl merl;
+  float *merl_data = NULL;
+  char merl_path[1024], *merl_mat = NULL;
   rd_scene s;
   rd_gbuf gb;
   rd_run run;
@@ -82,6 +90,8 @@ int main(int argc, char **argv) {
       bad = sscanf(v, "%d", &bands) != 1 || bands < 1 || bands > 16;
     else if (!strcmp(a, "--brdf-bands"))
       bad = sscanf(v, "%d", &brdf_bands) != 1 || brdf_bands < 1 || brdf_bands > 16;
+    else if (!strcmp(a, "--brdf"))
+      brdf = v;
     else if (!strcmp(a, "--reps"))
       bad = sscanf(v, "%d", &reps) != 1 || reps < 1 || reps > 1000;
     else if (!strcmp(a, "--exposure"))
@@ -105,6 +115,41 @@ int main(int argc, char **argv) {
         fprintf(stderr, "shlrender: unknown pass '%s' (grid, area, hvl, ssf, preview, all)\n", tk);
         return 2;
       }
+  }
+  memset(&merl, 0, sizeof merl);
+  if (brdf) {
+    /* FILE[:MAT]: the last ':' splits off a material name when what follows has no '/' */
+    FILE *f;
+    unsigned char *buf = NULL;
+    long len = -1;
+    shl_result r = SHLIGHT_EINVAL;
+    char *col;
+    snprintf(merl_path, sizeof merl_path, "%s", brdf);
+    col = strrchr(merl_path, ':');
+    if (col && !strchr(col, '/')) {
+      *col = 0;
+      merl_mat = col + 1;
+    }
+    f = fopen(merl_path, "rb");
+    if (f && fseek(f, 0, SEEK_END) == 0) len = ftell(f);
+    if (f && len > 0 && fseek(f, 0, SEEK_SET) == 0) buf = (unsigned char *)malloc((size_t)len);
+    if (buf && fread(buf, 1, (size_t)len, f) == (size_t)len) {
+      r = shl_merl_read(&merl, buf, (size_t)len, NULL, 0);
+      if (r == SHLIGHT_ESTORAGE) {
+        size_t nf = 3 * (size_t)merl.n_theta_h * (size_t)merl.n_theta_d * (size_t)merl.n_phi_d;
+        merl_data = (float *)malloc(nf * sizeof(float));
+        r = merl_data ? shl_merl_read(&merl, buf, (size_t)len, merl_data, nf) : SHLIGHT_ENOMEM;
+      }
+    }
+    if (f) fclose(f);
+    if (r != SHLIGHT_OK) {
+      fprintf(stderr, "shlrender: cannot read the MERL BRDF %s (%s)\n", merl_path,
+              buf == NULL ? "cannot read the file" : "shl_merl_read failed");
+      free(buf);
+      free(merl_data);
+      return 2;
+    }
+    free(buf);
   }
   if (rd_scene_builtin(scene, &s) != 0) {
     if (!strchr(scene, '.') && !strchr(scene, '/')) {
@@ -134,6 +179,8 @@ int main(int argc, char **argv) {
   run.gt = gt;
   run.bands = bands ? bands : s.bands;
   run.brdf_bands = brdf_bands;
+  run.merl = brdf ? &merl : NULL;
+  run.merl_mat = merl_mat;
   run.reps = reps;
   run.outdir = outdir;
   run.exposure = exposure;
@@ -167,6 +214,7 @@ int main(int argc, char **argv) {
   rd_run_free(&run);
   rd_gbuf_free(&gb);
   rd_scene_free(&s);
+  free(merl_data);
   if (run.use_gl) rd_gl_close();
   return rc;
 }

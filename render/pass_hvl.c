@@ -14,7 +14,10 @@
  * tilted shading normals from sending light between points of the same plane, an unphysical
  * transfer whose integral diverges (log) at the receiver and kept the ground truth from
  * converging (max error 0.125 of peak between N = 256 and 512 without it, 0.005 with it).
- * Non-Lambert materials contribute their diffuse part kd only (bounce and receiver).
+ * Bounce surfaces reflect their diffuse part kd only (the RSM's flux). Receivers: Lambert ones
+ * kd / pi; Phong and GGX ones (ks > 0) kd / pi + ks f_s, and a measured BRDF (--brdf FILE,
+ * shl_merl_read) replaces a material's BRDF altogether: the BRDF part is shaded through BRDF SH
+ * tables on every path (see "receiver BRDFs" below), the ground truth uses the real BRDF.
  *
  * The light set (rsm_lights). The RSM is rd_gbuffer_view from the spot (eye c, axis n, fov_y =
  * 2 * angle) of m = w x h texels (16 x 16 = 256 by default; SHLIGHT_HVL_RSM=N for N x N); the
@@ -90,6 +93,11 @@ static const int method_stride[M_COUNT] = {12, 13, 13, 13};
    typically 2e-7..3e-6: the kernels' shli_real is double in C and float in GLSL, and the exact
    H has slope 1/s in the cosine for a cap of sine s) */
 static const double method_tol[M_COUNT] = {5e-7, 5e-7, 3e-5, 3e-5};
+/* the same on the pixels of BRDF-table materials (Phong, GGX, --brdf), VPL: the table lookup,
+   its rotation about z and the SH evaluation at w_i, float on both sides; worst measured on
+   llvmpipe 4.0e-7 (hvl_glossy with a measured back wall and room, 64x48); HVL: its Lambert
+   part's tolerance (the table term measured at 3.0e-7, same runs) */
+static const double method_tol_brdf[M_COUNT] = {2e-6, 2e-6, 3e-5, 3e-5};
 
 /* ---- the spot and its RSM frame ----------------------------------------------------------- */
 typedef struct {
@@ -293,31 +301,219 @@ static float *method_buffer(const light_set *ls, int method) {
   return b;
 }
 
+/* ---- receiver BRDFs: SH tables (glossy and measured materials) --------------------------- */
+/* A receiver of kind HV_ANALYTIC (Phong / GGX, ks > 0) reflects kd / pi (the Lambert term
+   above) plus ks f_s; one of kind HV_MEASURED (--brdf FILE) reflects the measured f (three
+   channels) and has no Lambert term. f_s (kd = 0, ks = 1, f0 = 1: Phong (e + 1) / (2 pi) cos^e
+   of the mirror angle, GGX D G2 / (4 cos_i cos_o), as the grid and area passes) and the
+   measured f are tabulated once per material and channel by shl_brdf_table_build(_merl):
+   HV_NT theta_o samples, isotropic, nb = run->brdf_bands bands, in the local frame (t, b, nrm)
+   of gd_frame. Per pixel the table is looked up at w_o (the eye direction in that frame):
+     HVL:  F  = SH of f cos(theta_i); light j adds Phi_j shl_hvl_contribution(nb, lj, F, 0,
+           R (y_j - x), r_j): the cap is taken in the local frame (R: rows t, b, nrm), so no
+           SH rotation is needed; the cap's SH is exact at any band count, so the product has
+           nb bands (not run->bands);
+     VPL:  F' = SH of f (without the cosine); light j adds Phi_j (F' . Y(w_i)) cos_y cos_x /
+           (pi d^2), w_i = R (y_j - x) / d: the same table, so every method shares the BRDF's
+           SH truncation, and the ground truth uses the real BRDF (shl_brdf_eval /
+           shl_merl_eval) with none. */
+#define HV_NT 90
+#define HV_QUAD 32 /* shl_brdf_table_build quad_order (analytic) */
+#define HV_QUAD_MERL 16
+#define HV_HDR 4 /* floats per material in the buffer: kind, offsets of the r, g, b tables */
+enum { HV_LAMBERT = 0, HV_ANALYTIC = 1, HV_MEASURED = 2 };
+typedef struct {
+  int nb, nmats, any;
+  float *gpu;           /* HV_HDR per material (kind, 3 table offsets), then the tables */
+  size_t floats;        /* of gpu */
+  shl_brdf_params *par; /* per material (kd = 0, ks = 1, f0 = 1), analytic kinds */
+  const shl_merl *merl;
+} hv_brdf;
+
+static int hv_kind(const hv_brdf *B, int m) {
+  return B->any && m >= 0 && m < B->nmats ? (int)B->gpu[HV_HDR * m] : HV_LAMBERT;
+}
+
+static void hv_brdf_free(hv_brdf *B) {
+  free(B->gpu);
+  free(B->par);
+  memset(B, 0, sizeof *B);
+}
+
+static int hv_brdf_build(const rd_run *run, hv_brdf *B) {
+  const rd_scene *s = run->scene;
+  int nb = run->brdf_bands > 0 ? run->brdf_bands : 9, m, c, tables = 0, named = -1;
+  size_t one = shl_brdf_table_size(nb, HV_NT, 1), at;
+  int *kind = (int *)calloc((size_t)(s->nmats > 0 ? s->nmats : 1), sizeof(int));
+  memset(B, 0, sizeof *B);
+  B->nb = nb;
+  B->nmats = s->nmats;
+  B->merl = run->merl;
+  B->par = (shl_brdf_params *)calloc((size_t)(s->nmats > 0 ? s->nmats : 1), sizeof *B->par);
+  if (!kind || !B->par || !one) {
+    free(kind);
+    return -1;
+  }
+  if (run->merl && run->merl_mat) {
+    for (m = 0; m < s->nmats; m++)
+      if (!strcmp(s->mats[m].name, run->merl_mat)) named = m;
+    if (named < 0) {
+      fprintf(stderr, "hvl: --brdf: no material '%s' in the scene\n", run->merl_mat);
+      free(kind);
+      return -1;
+    }
+  }
+  for (m = 0; m < s->nmats; m++) {
+    const rd_material *mt = &s->mats[m];
+    int glossy = (mt->brdf == RD_BRDF_PHONG || mt->brdf == RD_BRDF_GGX) &&
+                 (mt->ks[0] > 0.0f || mt->ks[1] > 0.0f || mt->ks[2] > 0.0f);
+    if (mt->brdf == RD_BRDF_GGX &&
+        !(mt->roughness >= SHLIGHT_BRDF_MIN_ALPHA && mt->roughness <= 4.0f))
+      glossy = 0;
+    if (run->merl && (named >= 0 ? m == named : mt->brdf != RD_BRDF_LAMBERT))
+      kind[m] = HV_MEASURED;
+    else if (glossy)
+      kind[m] = HV_ANALYTIC;
+    tables += kind[m] == HV_MEASURED ? 3 : kind[m] == HV_ANALYTIC ? 1 : 0;
+  }
+  if (run->merl && named < 0) {
+    int k = 0;
+    for (m = 0; m < s->nmats; m++)
+      k += kind[m] == HV_MEASURED;
+    if (!k) {
+      fprintf(stderr, "hvl: --brdf: the scene has no Phong / GGX material to replace; name one "
+                      "as --brdf FILE:MATERIAL\n");
+      free(kind);
+      return -1;
+    }
+  }
+  B->any = tables > 0;
+  B->floats = (size_t)HV_HDR * (size_t)s->nmats + (size_t)tables * one;
+  B->gpu = (float *)calloc(B->floats ? B->floats : 1, sizeof(float));
+  if (!B->gpu) {
+    free(kind);
+    return -1;
+  }
+  at = (size_t)HV_HDR * (size_t)s->nmats;
+  for (m = 0; m < s->nmats; m++) {
+    const rd_material *mt = &s->mats[m];
+    float *h = B->gpu + HV_HDR * m;
+    h[0] = (float)kind[m];
+    for (c = 0; c < 3; c++)
+      h[1 + c] = -1.0f;
+    if (kind[m] == HV_LAMBERT) continue;
+    B->par[m].model = mt->brdf == RD_BRDF_PHONG ? SHLIGHT_BRDF_PHONG : SHLIGHT_BRDF_GGX;
+    B->par[m].kd = 0.0f;
+    B->par[m].ks = 1.0f;
+    B->par[m].exponent = mt->exponent;
+    B->par[m].alpha_x = B->par[m].alpha_y = mt->roughness;
+    B->par[m].f0 = 1.0f;
+    for (c = 0; c < (kind[m] == HV_MEASURED ? 3 : 1); c++) {
+      shl_brdf_table t;
+      shl_result r;
+      float est = 0.0f;
+      double t0 = rd_cpu_ms();
+      t.n = nb;
+      t.n_theta = HV_NT;
+      t.n_phi = 1;
+      t.flags = 0;
+      t.data = B->gpu + at;
+      r = kind[m] == HV_MEASURED ? shl_brdf_table_build_merl(&t, run->merl, c, HV_QUAD_MERL, &est)
+                                 : shl_brdf_table_build(&t, &B->par[m], HV_QUAD, &est);
+      if (r != SHLIGHT_OK) {
+        fprintf(stderr, "hvl: BRDF table of material %s failed (%d)\n", mt->name, (int)r);
+        free(kind);
+        return -1;
+      }
+      printf("hvl: BRDF table %s (%s%s), %d bands, %d theta_o samples, %.0f ms; quadrature "
+             "error estimate %.2e\n",
+             mt->name,
+             kind[m] == HV_MEASURED      ? "measured, channel "
+             : mt->brdf == RD_BRDF_PHONG ? "Phong"
+                                         : "GGX",
+             kind[m] == HV_MEASURED ? (c == 0   ? "r"
+                                       : c == 1 ? "g"
+                                                : "b")
+                                    : "",
+             nb, HV_NT, rd_cpu_ms() - t0, (double)est);
+      h[1 + c] = (float)at;
+      at += one;
+    }
+    if (kind[m] == HV_ANALYTIC) h[2] = h[3] = h[1];
+  }
+  free(kind);
+  return 0;
+}
+
+/* orthonormal frame (t, b) about the unit normal z (Duff et al. 2017, "Building an orthonormal
+   basis, revisited"), in float, the same operations as the GLSL twin hv_frame */
+static void hv_frame(const float z[3], float t[3], float b[3]) {
+  float sg = z[2] >= 0.0f ? 1.0f : -1.0f, a = -1.0f / (sg + z[2]), c = z[0] * z[1] * a;
+  t[0] = 1.0f + sg * z[0] * z[0] * a;
+  t[1] = sg * c;
+  t[2] = -sg * z[0];
+  b[0] = c;
+  b[1] = sg + z[1] * z[1] * a;
+  b[2] = -z[1];
+}
+
+/* the pixel's local frame R (rows t, b, nrm) and w_o (the eye direction in it) */
+static void hv_local(const float x[3], const float nz[3], const float eye[3], float R[9],
+                     float wo[3]) {
+  float t[3], b[3], v[3], vl;
+  int k;
+  hv_frame(nz, t, b);
+  for (k = 0; k < 3; k++)
+    v[k] = eye[k] - x[k];
+  vl = 1.0f / sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  for (k = 0; k < 3; k++)
+    v[k] = v[k] * vl;
+  for (k = 0; k < 3; k++) {
+    R[k] = t[k];
+    R[3 + k] = b[k];
+    R[6 + k] = nz[k];
+  }
+  wo[0] = t[0] * v[0] + t[1] * v[1] + t[2] * v[2];
+  wo[1] = b[0] * v[0] + b[1] * v[1] + b[2] * v[2];
+  wo[2] = nz[0] * v[0] + nz[1] * v[1] + nz[2] * v[2];
+}
+
 /* ---- CPU shading ---------------------------------------------------------------------------- */
-static void shade_cpu(const rd_run *run, int method, const float *b, int nl, float eps,
-                      float *rgb) {
+static void shade_cpu(const rd_run *run, const hv_brdf *B, int method, const float *b, int nl,
+                      float eps, float *rgb) {
   const rd_gbuf *gb = run->gb;
   const rd_scene *s = run->scene;
-  int st = method_stride[method], bands = run->bands, px, j;
+  int st = method_stride[method], bands = run->bands, px, j, c, nb = B->nb;
   int npx = gb->w * gb->h;
   float fzh[SHLIGHT_MAX_BANDS], femit[1];
   femit[0] = 1.1283791670955126f; /* 2 / sqrt(pi): F' . Y = femit[0] Y_0^0 = 1 / pi */
   shl_zh_lambert(bands, fzh);
   for (px = 0; px < npx; px++) {
     const float *x = gb->pos + 3 * px, *nx = gb->nrm + 3 * px, *gx = gb->gnrm + 3 * px;
-    int m = gb->mat[px];
-    float acc[3] = {0.0f, 0.0f, 0.0f};
+    int m = gb->mat[px], kind = hv_kind(B, m), nch = kind == HV_MEASURED ? 3 : 1;
+    float acc[3] = {0.0f, 0.0f, 0.0f}, spec[3] = {0.0f, 0.0f, 0.0f};
+    float R[9], wo[3], F[3][SHLIGHT_MAX_COEFFS], ysh[SHLIGHT_MAX_COEFFS];
+    const float zero[3] = {0.0f, 0.0f, 0.0f};
     if (m < 0 || m >= s->nmats) {
       rgb[3 * px] = rgb[3 * px + 1] = rgb[3 * px + 2] = 0.0f;
       continue;
     }
+    if (kind != HV_LAMBERT) {
+      hv_local(x, nx, gb->eye, R, wo);
+      for (c = 0; c < nch; c++)
+        shl_brdf_table_lookup(nb, HV_NT, 1, method <= M_VPL_CLAMP ? 1 : 0,
+                              B->gpu + (int)B->gpu[HV_HDR * m + 1 + c], wo, F[c]);
+    }
     for (j = 0; j < nl; j++) {
       const float *y = b + j * st, *ny = y + 3, *phi = y + 6, *gy = y + 9;
-      float dv[3] = {y[0] - x[0], y[1] - x[1], y[2] - x[2]};
+      float dv[3] = {y[0] - x[0], y[1] - x[1], y[2] - x[2]}, yl[3];
       /* each point strictly in front of the other's geometric plane (see the header) */
       if (!(-(gy[0] * dv[0] + gy[1] * dv[1] + gy[2] * dv[2]) > eps) ||
           !(gx[0] * dv[0] + gx[1] * dv[1] + gx[2] * dv[2] > eps))
         continue;
+      if (kind != HV_LAMBERT)
+        for (c = 0; c < 3; c++)
+          yl[c] = R[3 * c] * dv[0] + R[3 * c + 1] * dv[1] + R[3 * c + 2] * dv[2];
       if (method <= M_VPL_CLAMP) {
         float d2 = dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2], d, cy, cx, gf;
         if (!(d2 > 0.0f)) continue;
@@ -330,6 +526,12 @@ static void shade_cpu(const rd_run *run, int method, const float *b, int nl, flo
         acc[0] += phi[0] * gf;
         acc[1] += phi[1] * gf;
         acc[2] += phi[2] * gf;
+        if (kind != HV_LAMBERT) {
+          float wi[3] = {yl[0] / d, yl[1] / d, yl[2] / d};
+          shl_sh_eval(nb, wi, ysh);
+          for (c = 0; c < 3; c++)
+            spec[c] += phi[c] * gf * shl_sh_dot(nb, F[nch == 3 ? c : 0], ysh);
+        }
       } else {
         float r = y[12], lj, cc;
         lj = shl_hvl_radiance(1, femit, 1.0f, x, nx, y, ny, r, 1);
@@ -338,17 +540,77 @@ static void shade_cpu(const rd_run *run, int method, const float *b, int nl, flo
         acc[0] += phi[0] * cc;
         acc[1] += phi[1] * cc;
         acc[2] += phi[2] * cc;
+        for (c = 0; c < nch && kind != HV_LAMBERT; c++) {
+          float cs = shl_hvl_contribution(nb, lj, F[c], zero, yl, r);
+          if (nch == 3)
+            spec[c] += phi[c] * cs;
+          else {
+            spec[0] += phi[0] * cs;
+            spec[1] += phi[1] * cs;
+            spec[2] += phi[2] * cs;
+          }
+        }
       }
     }
     for (j = 0; j < 3; j++) {
       float kd = s->mats[m].kd[j];
-      rgb[3 * px + j] = method <= M_VPL_CLAMP ? kd * acc[j] * 0.318309886f : kd * acc[j];
+      float dif = method <= M_VPL_CLAMP ? kd * acc[j] * 0.318309886f : kd * acc[j];
+      rgb[3 * px + j] = kind == HV_MEASURED   ? spec[j]
+                        : kind == HV_ANALYTIC ? dif + s->mats[m].ks[j] * spec[j]
+                                              : dif;
     }
     if ((px + 1) % gb->w == 0) rd_progress(method_name[method], px + 1, npx);
   }
 }
 
 /* ---- GL shading ----------------------------------------------------------------------------- */
+/* GLSL twin of hv_frame, hv_local and the table lookup (shl_brdf_table_lookup's sums, done
+   on the table in rd_buf2: HV_HDR floats per material, then the tables) */
+static const char *const gl_spec =
+    "#if HVL_SPEC\n"
+    "float hv_F[3][SHLIGHT_MAX_COEFFS];\n"
+    "float hv_R[9];\n"
+    "void hv_frame(vec3 z, out vec3 t, out vec3 b) {\n"
+    "  float sg = z.z >= 0.0 ? 1.0 : -1.0;\n"
+    "  float a = -1.0 / (sg + z.z);\n"
+    "  float c = z.x * z.y * a;\n"
+    "  t = vec3(1.0 + sg * z.x * z.x * a, sg * c, -sg * z.x);\n"
+    "  b = vec3(c, sg + z.y * z.y * a, -z.y);\n"
+    "}\n"
+    "void hv_setup(int mi, int nch, vec3 x, vec3 nz) {\n"
+    "  vec3 t;\n"
+    "  vec3 b;\n"
+    "  hv_frame(nz, t, b);\n"
+    "  vec3 v = rd_eye - x;\n"
+    "  float vl = 1.0 / sqrt(v.x * v.x + v.y * v.y + v.z * v.z);\n"
+    "  v = v * vl;\n"
+    "  for (int k = 0; k < 3; ++k) {\n"
+    "    hv_R[k] = t[k];\n"
+    "    hv_R[3 + k] = b[k];\n"
+    "    hv_R[6 + k] = nz[k];\n"
+    "  }\n"
+    "  vec3 wo = vec3(t.x * v.x + t.y * v.y + t.z * v.z, b.x * v.x + b.y * v.y + b.z * v.z,\n"
+    "                 nz.x * v.x + nz.y * v.y + nz.z * v.z);\n"
+    "  int idx[4];\n"
+    "  float w[4];\n"
+    "  shl_brdf_table_cell(HVL_NT, 1, wo, idx, w);\n"
+    "  float rho = sqrt(wo.x * wo.x + wo.y * wo.y);\n"
+    "  for (int c = 0; c < nch; ++c) {\n"
+    "    int off = int(rd_buf2[4 * mi + 1 + c] + 0.5);\n"
+    "    float F[SHLIGHT_MAX_COEFFS];\n"
+    "    for (int i = 0; i < SHLIGHT_MAX_COEFFS; ++i) F[i] = 0.0;\n"
+    "    for (int i = 0; i < HVL_NBB; ++i) {\n"
+    "      F[i] = (w[0] * rd_buf2[off + (2 * idx[0] + HVL_WHICH) * HVL_NBB + i] +\n"
+    "              w[1] * rd_buf2[off + (2 * idx[1] + HVL_WHICH) * HVL_NBB + i]) +\n"
+    "             (w[2] * rd_buf2[off + (2 * idx[2] + HVL_WHICH) * HVL_NBB + i] +\n"
+    "              w[3] * rd_buf2[off + (2 * idx[3] + HVL_WHICH) * HVL_NBB + i]);\n"
+    "    }\n"
+    "    if (rho > 0.0) shl_sh_rotate_z(HVL_NB, wo.x / rho, wo.y / rho, F);\n"
+    "    hv_F[c] = F;\n"
+    "  }\n"
+    "}\n"
+    "#endif\n";
+
 static const char *const gl_body =
     "void main() {\n"
     "  ivec2 px = rd_pixel();\n"
@@ -361,6 +623,13 @@ static const char *const gl_body =
     "    vec3 x = P.xyz;\n"
     "    vec3 nx = N.xyz;\n"
     "    vec3 gx = texelFetch(rd_gnrm, px, 0).xyz;\n"
+    "    vec3 spec = vec3(0.0);\n"
+    "#if HVL_SPEC\n"
+    "    int kind = int(rd_buf2[4 * mi] + 0.5);\n"
+    "    int nch = kind == 2 ? 3 : 1;\n"
+    "    float ysh[SHLIGHT_MAX_COEFFS];\n"
+    "    if (kind != 0) hv_setup(mi, nch, x, nx);\n"
+    "#endif\n"
     "#if HVL_METHOD >= 2\n"
     "    float fzh[SHLIGHT_MAX_BANDS];\n"
     "    float femit[SHLIGHT_MAX_COEFFS];\n"
@@ -377,6 +646,14 @@ static const char *const gl_body =
     "      vec3 dv = y - x;\n"
     "      if (!(-(gy.x * dv.x + gy.y * dv.y + gy.z * dv.z) > HVL_EPS) ||\n"
     "          !(gx.x * dv.x + gx.y * dv.y + gx.z * dv.z > HVL_EPS)) continue;\n"
+    "#if HVL_SPEC\n"
+    "      vec3 yl = vec3(0.0);\n"
+    "      if (kind != 0) {\n"
+    "        yl = vec3(hv_R[0] * dv.x + hv_R[1] * dv.y + hv_R[2] * dv.z,\n"
+    "                  hv_R[3] * dv.x + hv_R[4] * dv.y + hv_R[5] * dv.z,\n"
+    "                  hv_R[6] * dv.x + hv_R[7] * dv.y + hv_R[8] * dv.z);\n"
+    "      }\n"
+    "#endif\n"
     "#if HVL_METHOD < 2\n"
     "      float d2 = dv.x * dv.x + dv.y * dv.y + dv.z * dv.z;\n"
     "      if (!(d2 > 0.0)) continue;\n"
@@ -388,12 +665,29 @@ static const char *const gl_body =
     "      float rc = rd_buf1[b + 12];\n"
     "      if (d2 < rc * rc) d2 = rc * rc;\n"
     "#endif\n"
-    "      acc += phi * (cy * cx / (3.14159265 * d2));\n"
+    "      float gf = cy * cx / (3.14159265 * d2);\n"
+    "      acc += phi * gf;\n"
+    "#if HVL_SPEC\n"
+    "      if (kind != 0) {\n"
+    "        shl_sh_eval(HVL_NB, vec3(yl.x / d, yl.y / d, yl.z / d), ysh);\n"
+    "        for (int c = 0; c < 3; ++c)\n"
+    "          spec[c] += phi[c] * gf * shl_sh_dot(HVL_NB, hv_F[nch == 3 ? c : 0], ysh);\n"
+    "      }\n"
+    "#endif\n"
     "#else\n"
     "      float r = rd_buf1[b + 12];\n"
     "      float lj = shl_hvl_radiance(1, femit, 1.0, x, nx, y, ny, r, 1);\n"
     "      if (!(lj > 0.0)) continue;\n"
     "      acc += phi * shl_hvl_contribution_zh(HVL_BANDS, lj, fzh, nx, x, y, r);\n"
+    "#if HVL_SPEC\n"
+    "      for (int c = 0; c < nch && kind != 0; ++c) {\n"
+    "        float cs = shl_hvl_contribution(HVL_NB, lj, hv_F[c], vec3(0.0), yl, r);\n"
+    "        if (nch == 3)\n"
+    "          spec[c] += phi[c] * cs;\n"
+    "        else\n"
+    "          spec += phi * cs;\n"
+    "      }\n"
+    "#endif\n"
     "#endif\n"
     "    }\n"
     "#if HVL_METHOD < 2\n"
@@ -401,39 +695,56 @@ static const char *const gl_body =
     "#else\n"
     "    acc = kd * acc;\n"
     "#endif\n"
+    "#if HVL_SPEC\n"
+    "    vec3 ks = vec3(rd_mats[12 * mi + 3], rd_mats[12 * mi + 4], rd_mats[12 * mi + 5]);\n"
+    "    if (kind == 2) acc = spec;\n"
+    "    if (kind == 1) acc = acc + ks * spec;\n"
+    "#endif\n"
     "  }\n"
     "  rd_out0 = vec4(acc, 1.0);\n"
     "}\n";
 
-static int shade_gl(const rd_run *run, int method, const float *b, int nl, float eps, float *rgb,
-                    double *ms) {
-  static const char *const inc_hvl[7] = {"shl_prelude.glsl", "shl_basis.glsl", "shl_gradient.glsl",
+static int shade_gl(const rd_run *run, const hv_brdf *B, int method, const float *b, int nl,
+                    float eps, float *rgb, double *ms) {
+  static const char *const inc_hvl[8] = {"shl_prelude.glsl", "shl_basis.glsl", "shl_gradient.glsl",
                                          "shl_zonal.glsl",   "shl_light.glsl", "shl_brdf.glsl",
-                                         "shl_hvl.glsl"};
+                                         "shl_brdftab.glsl", "shl_hvl.glsl"};
   static const char *const inc_vpl[1] = {"shl_prelude.glsl"};
   const rd_gbuf *gb = run->gb;
-  char defs[256];
-  size_t npx = (size_t)gb->w * (size_t)gb->h, k, nf;
+  char defs[512], *body;
+  size_t npx = (size_t)gb->w * (size_t)gb->h, k, nf[2];
   float *out4 = (float *)malloc(npx * 4 * sizeof(float));
   float *outs[1];
-  const float *bufs[1];
+  const float *bufs[2];
   rd_gl_pass p;
-  int rc;
-  if (!out4) return -1;
+  int rc, spec = B->any, mb = run->bands > B->nb || !spec ? run->bands : B->nb;
+  size_t lb = strlen(gl_spec) + strlen(gl_body) + 1;
+  body = (char *)malloc(lb);
+  if (!out4 || !body) {
+    free(out4);
+    free(body);
+    return -1;
+  }
+  snprintf(body, lb, "%s%s", gl_spec, gl_body);
   snprintf(defs, sizeof defs,
            "#define SHLIGHT_MAX_BANDS %d\n#define HVL_BANDS %d\n#define HVL_NL %d\n"
-           "#define HVL_ST %d\n#define HVL_METHOD %d\n#define HVL_EPS %.9e\n",
-           run->bands, run->bands, nl, method_stride[method], method, (double)eps);
+           "#define HVL_ST %d\n#define HVL_METHOD %d\n#define HVL_EPS %.9e\n"
+           "#define HVL_SPEC %d\n#define HVL_NB %d\n#define HVL_NBB %d\n#define HVL_NT %d\n"
+           "#define HVL_WHICH %d\n",
+           mb, run->bands, nl, method_stride[method], method, (double)eps, spec, B->nb,
+           B->nb * B->nb, HV_NT, method <= M_VPL_CLAMP ? 1 : 0);
   memset(&p, 0, sizeof p);
   p.defines = defs;
-  p.includes = method <= M_VPL_CLAMP ? inc_vpl : inc_hvl;
-  p.ninclude = method <= M_VPL_CLAMP ? 1 : 7;
-  p.body = gl_body;
+  p.includes = method <= M_VPL_CLAMP && !spec ? inc_vpl : inc_hvl;
+  p.ninclude = method <= M_VPL_CLAMP && !spec ? 1 : 8;
+  p.body = body;
   bufs[0] = b;
-  nf = (size_t)nl * (size_t)method_stride[method];
+  bufs[1] = B->gpu;
+  nf[0] = (size_t)nl * (size_t)method_stride[method];
+  nf[1] = B->floats;
   p.bufs = bufs;
-  p.buf_floats = &nf;
-  p.nbuf = 1;
+  p.buf_floats = nf;
+  p.nbuf = spec ? 2 : 1;
   p.nout = 1;
   outs[0] = out4;
   rc = rd_gl_run(run->scene, gb, &p, outs, run->reps, ms);
@@ -444,6 +755,7 @@ static int shade_gl(const rd_run *run, int method, const float *b, int nl, float
       rgb[3 * k + 2] = out4[4 * k + 2];
     }
   free(out4);
+  free(body);
   return rc;
 }
 
@@ -698,15 +1010,56 @@ static int gt_build(const rd_run *run, const spot_view *sv, int N, gt_patches *g
   return rc;
 }
 
-/* indirect radiance kd(x)/pi E(x) of the patches at every camera pixel */
-static void gt_shade(const rd_run *run, const gt_patches *gp, double eps, const char *label,
-                     float *rgb) {
+/* the real BRDF of a table material (no SH): channel c of f_s (analytic, kd = 0, ks = 1) or
+   of the measured f, at the local directions wo, wi */
+static double gt_brdf(const hv_brdf *B, int m, int kind, int c, const float wo[3],
+                      const float wi[3]) {
+  return kind == HV_MEASURED ? (double)shl_merl_eval(B->merl, c, wo, wi)
+                             : (double)shl_brdf_eval(&B->par[m], wo, wi);
+}
+
+/* the BRDF term of one emitting point p (world, normal ns, flux / pi phi[3] times weight wt)
+   at x (normal nx, frame R, w_o wo): sum_c phi_c wt cos_y cos_x / d^2 f_c(wo, wi) into e */
+static void gt_spec_point(const hv_brdf *B, int m, int kind, const double x[3], const double nx[3],
+                          const float R[9], const float wo[3], const double p[3],
+                          const double ns[3], const double *phi, double wt, double e[3]) {
+  double dv[3] = {p[0] - x[0], p[1] - x[1], p[2] - x[2]}, d2, d, cy, cx, g;
+  float wi[3];
+  int c;
+  d2 = dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2];
+  if (!(d2 > 0)) return;
+  d = sqrt(d2);
+  cy = -(ns[0] * dv[0] + ns[1] * dv[1] + ns[2] * dv[2]) / d;
+  cx = (nx[0] * dv[0] + nx[1] * dv[1] + nx[2] * dv[2]) / d;
+  if (!(cy > 0) || !(cx > 0)) return;
+  g = wt * cy * cx / d2;
+  for (c = 0; c < 3; c++)
+    wi[c] = (float)(((double)R[3 * c] * dv[0] + (double)R[3 * c + 1] * dv[1] +
+                     (double)R[3 * c + 2] * dv[2]) /
+                    d);
+  if (kind == HV_MEASURED)
+    for (c = 0; c < 3; c++)
+      e[c] += phi[c] * g * gt_brdf(B, m, kind, c, wo, wi);
+  else {
+    double f = gt_brdf(B, m, kind, 0, wo, wi);
+    for (c = 0; c < 3; c++)
+      e[c] += phi[c] * g * f;
+  }
+}
+
+/* indirect radiance at every camera pixel: kd(x)/pi E(x) (Lambert), plus the table materials'
+   f_s (analytic: ks f_s; measured: f, no Lambert term) with the real BRDF. Near a patch
+   (d^2 < near2) the Lambert part is the exact polygon form factor and the BRDF part the
+   point formula at the centres of 4 x 4 bilinear sub-quads (equal weights) */
+static void gt_shade(const rd_run *run, const hv_brdf *B, const gt_patches *gp, double eps,
+                     const char *label, float *rgb) {
   const rd_gbuf *gb = run->gb;
   const rd_scene *s = run->scene;
   int npx = gb->w * gb->h, px, j, c;
   for (px = 0; px < npx; px++) {
-    double x[3], nx[3], gx[3], e[3] = {0, 0, 0};
-    int m = gb->mat[px];
+    double x[3], nx[3], gx[3], e[3] = {0, 0, 0}, es[3] = {0, 0, 0};
+    float R[9], wo[3];
+    int m = gb->mat[px], kind = hv_kind(B, m);
     if (m < 0 || m >= s->nmats) {
       rgb[3 * px] = rgb[3 * px + 1] = rgb[3 * px + 2] = 0.0f;
       continue;
@@ -716,6 +1069,7 @@ static void gt_shade(const rd_run *run, const gt_patches *gp, double eps, const 
       nx[c] = (double)gb->nrm[3 * px + c];
       gx[c] = (double)gb->gnrm[3 * px + c];
     }
+    if (kind != HV_LAMBERT) hv_local(gb->pos + 3 * px, gb->nrm + 3 * px, gb->eye, R, wo);
     for (j = 0; j < gp->n; j++) {
       const double *p = gp->p + 3 * j, *ns = gp->ns + 3 * j, *phi = gp->phi + 3 * j;
       const double *ng = gp->ng + 3 * j;
@@ -738,8 +1092,20 @@ static void gt_shade(const rd_run *run, const gt_patches *gp, double eps, const 
         ps = poly_projected((const double(*)[3])v, 4, nx) / q->a; /* pi * radiance / flux */
         for (c = 0; c < 3; c++)
           e[c] += phi[c] * ps;
+        if (kind != HV_LAMBERT) {
+          int a, bb;
+          for (bb = 0; bb < 4; bb++)
+            for (a = 0; a < 4; a++) {
+              double u = ((double)a + 0.5) / 4.0, w = ((double)bb + 0.5) / 4.0, pt[3];
+              for (k = 0; k < 3; k++)
+                pt[k] = (1 - u) * (1 - w) * q->q[0][k] + u * (1 - w) * q->q[1][k] +
+                        u * w * q->q[2][k] + (1 - u) * w * q->q[3][k];
+              gt_spec_point(B, m, kind, x, nx, R, wo, pt, ns, phi, 1.0 / 16.0, es);
+            }
+        }
         continue;
       }
+      if (kind != HV_LAMBERT) gt_spec_point(B, m, kind, x, nx, R, wo, p, ns, phi, 1.0, es);
       cy = -(ns[0] * dx + ns[1] * dy + ns[2] * dz);
       cx = nx[0] * dx + nx[1] * dy + nx[2] * dz;
       if (!(cy > 0) || !(cx > 0) || !(d2 > 0)) continue;
@@ -748,19 +1114,23 @@ static void gt_shade(const rd_run *run, const gt_patches *gp, double eps, const 
       e[1] += phi[1] * gf;
       e[2] += phi[2] * gf;
     }
-    for (c = 0; c < 3; c++)
-      rgb[3 * px + c] = (float)((double)s->mats[m].kd[c] / HVL_PI * e[c]);
+    for (c = 0; c < 3; c++) {
+      double dif = (double)s->mats[m].kd[c] / HVL_PI * e[c];
+      rgb[3 * px + c] = (float)(kind == HV_MEASURED   ? es[c]
+                                : kind == HV_ANALYTIC ? dif + (double)s->mats[m].ks[c] * es[c]
+                                                      : dif);
+    }
     if ((px + 1) % gb->w == 0) rd_progress(label, px + 1, npx);
   }
 }
 
-static int gt_image(const rd_run *run, const spot_view *sv, int N, double eps, float *rgb,
-                    int *npatch) {
+static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, int N, double eps,
+                    float *rgb, int *npatch) {
   gt_patches gp;
   char label[32];
   if (gt_build(run, sv, N, &gp)) return -1;
   snprintf(label, sizeof label, "hvl gt %d", N);
-  gt_shade(run, &gp, eps, label, rgb);
+  gt_shade(run, B, &gp, eps, label, rgb);
   if (npatch) *npatch = gp.n;
   gt_free(&gp);
   return 0;
@@ -830,6 +1200,8 @@ int rd_pass_hvl(rd_run *run) {
   const rd_light *l = NULL;
   spot_view sv;
   light_set ls;
+  hv_brdf B;
+  int *sel = NULL;
   size_t npx, nb;
   float eps;
   float *gt = NULL;
@@ -857,6 +1229,22 @@ int rd_pass_hvl(rd_run *run) {
     fprintf(stderr, "hvl: cannot build the RSM\n");
     return -1;
   }
+  if (hv_brdf_build(run, &B)) {
+    fprintf(stderr, "hvl: cannot build the BRDF tables\n");
+    hv_brdf_free(&B);
+    free(ls.buf);
+    return -1;
+  }
+  if (B.any) {
+    sel = (int *)calloc((size_t)(s->nmats > 0 ? s->nmats : 1), sizeof(int));
+    if (!sel) {
+      hv_brdf_free(&B);
+      free(ls.buf);
+      return -1;
+    }
+    for (i = 0; i < s->nmats; i++)
+      sel[i] = hv_kind(&B, i) != HV_LAMBERT;
+  }
   {
     double r1 = 0, r2 = 0;
     for (i = 0; i < ls.count; i++) {
@@ -875,15 +1263,17 @@ int rd_pass_hvl(rd_run *run) {
     float *half = (float *)malloc(nb);
     double t0 = rd_cpu_ms(), t1, p99, mx, rmse;
     gt = (float *)malloc(nb);
-    if (!gt || !half || gt_image(run, &sv, n1, (double)eps, gt, &np1)) {
+    if (!gt || !half || gt_image(run, &B, &sv, n1, (double)eps, gt, &np1)) {
       free(half);
       free(gt);
       free(ls.buf);
+      free(sel);
+      hv_brdf_free(&B);
       fprintf(stderr, "hvl: ground truth failed\n");
       return -1;
     }
     t1 = rd_cpu_ms();
-    if (gt_image(run, &sv, n1 / 2, (double)eps, half, &np2) == 0) {
+    if (gt_image(run, &B, &sv, n1 / 2, (double)eps, half, &np2) == 0) {
       err_stats(gb, half, gt, &p99, &mx, &rmse);
       printf("hvl gt convergence: RSM %dx%d (%d patches) vs %dx%d (%d patches): "
              "rmse/peak %.3g, p99 %.3g, max %.3g (the error of the coarse one; second order)\n",
@@ -917,7 +1307,7 @@ int rd_pass_hvl(rd_run *run) {
       }
       for (r = 0; r < reps; r++) {
         double t0 = rd_cpu_ms();
-        shade_cpu(run, method, b, ls.count, eps, im.rgb);
+        shade_cpu(run, &B, method, b, ls.count, eps, im.rgb);
         t[r] = rd_cpu_ms() - t0;
         if (t[r] > 2000.0) { /* slow: one timing is enough */
           reps = r + 1;
@@ -943,7 +1333,7 @@ int rd_pass_hvl(rd_run *run) {
         if (run->bands > 16)
           fprintf(stderr, "hvl: GLSL kernels take at most 16 bands; no gl path\n");
         rd_image_free(&im);
-      } else if (shade_gl(run, method, b, ls.count, eps, im.rgb, &ms)) {
+      } else if (shade_gl(run, &B, method, b, ls.count, eps, im.rgb, &ms)) {
         fprintf(stderr, "hvl: %s: GL pass failed\n", method_name[method]);
         rd_image_free(&im);
         rc = -1;
@@ -959,7 +1349,11 @@ int rd_pass_hvl(rd_run *run) {
           err_stats(gb, im.rgb, cpu, &p99, &mx, &rmse);
           printf("hvl %-15s gl vs cpu: max/peak %.3g\n", method_name[method], mx);
         }
-        rd_emit(run, "hvl", method_name[method], "gl", im, ms, mem, method_tol[method]);
+        if (sel)
+          rd_emit_sel(run, "hvl", method_name[method], "gl", im, ms, mem, method_tol[method], sel,
+                      s->nmats, method_tol_brdf[method], "brdf-table");
+        else
+          rd_emit(run, "hvl", method_name[method], "gl", im, ms, mem, method_tol[method]);
       }
     }
     free(cpu);
@@ -967,5 +1361,7 @@ int rd_pass_hvl(rd_run *run) {
   }
   free(gt);
   free(ls.buf);
+  free(sel);
+  hv_brdf_free(&B);
   return rc;
 }

@@ -157,10 +157,14 @@ typedef struct {
   int use_cpu;        /* run the CPU paths */
   int gt;             /* ground truth: 0 none, 1 quick (CI: few samples), 2 full (README) */
   int bands;          /* SH bands (scene default unless overridden on the command line) */
-  int brdf_bands;     /* bands of the grid pass's BRDF SH tables (glossy materials; 0: 9) */
+  int brdf_bands;     /* bands of the grid / hvl passes' BRDF SH tables (glossy; 0: 9) */
   int reps;           /* timed repetitions of each GL draw / CPU pass; the median is reported */
   const char *outdir; /* PNGs go to outdir/<scene>_<pass>_<method>_<path>.png; NULL: none */
   float exposure;     /* PNG exposure */
+  /* --brdf FILE[:MAT]: a measured BRDF (shl_merl_read) for the hvl pass's receivers (NULL:
+     none), and the material it replaces (NULL: every Phong / GGX material) */
+  const struct shl_merl *merl;
+  const char *merl_mat;
   /* results, filled by rd_emit */
   rd_result *res;
   int nres, capres;

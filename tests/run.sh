@@ -118,7 +118,7 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/tests/test_brdftab build/tests/fuzz_replay_brdftab build/tests/test_brdftab_glsl \
   build/tests/test_rotate build/tests/test_rotate_glsl \
   build/tests/test_ssf build/tests/test_ssf_glsl \
-  build/render/shlrender build/tests/fuzz_replay_scene build/tests/test_rd_core \
+  build/render/shlrender build/tools/merl_write build/tests/fuzz_replay_scene build/tests/test_rd_core \
   build/tests/test_contracts build/tests/fuzz_random build/tests/fuzz_replay_families
 touch build/logs/lane/tests-built
 step test_basis build/tests/test_basis

@@ -39,6 +39,9 @@ expect 2 "bad3.scene:2: cannot read obj file" --scene "$t/bad3.scene" --paths cp
 printf 'v 0 0 0\nv 1 0 0\nf 1 2 3\n' >"$t/bad.obj"
 printf 'material m kd 0.5 0.5 0.5\nobj bad.obj m\n' >"$t/bad4.scene"
 expect 2 "bad.obj:3: bad vertex index" --scene "$t/bad4.scene" --paths cpu
+expect 2 "cannot read the MERL BRDF" --brdf "$t/missing.binary" --paths cpu
+printf 'MERL' >"$t/short.binary"
+expect 2 "shl_merl_read failed" --brdf "$t/short.binary" --paths cpu
 if "$R" --help | grep -q "usage: shlrender"; then ok; else ko "--help"; fi
 # a CPU-only render of the example scene writes PNGs
 if "$R" --scene examples/scenes/room.scene --pass preview --paths cpu --size 32x24 --out "$t/png" \
@@ -61,5 +64,32 @@ for s in ${SHLIGHT_RENDER_SCENES:-cornell spheres manylights glossy examples/sce
     fail=$((fail + f))
   fi
 done
+# glossy and measured receivers in the hvl pass (first backend only, ~6 s CPU): GGX floor and
+# Phong ball (BRDF SH tables of the analytic models), the back wall measured: a MERL file that
+# tools/merl_write writes from GGX alpha 0.3 + Lambert (32x32x64 samples: a small file),
+# read back through shl_merl_read. --check holds GL to CPU on the BRDF-table pixels (tolerance
+# in render/pass_hvl.c); the ground truth's convergence and each method's error are printed.
+if [ -z "${SHLIGHT_RENDER_SCENES:-}" ]; then
+  M=build/tools/merl_write
+  if "$M" "$t/g.binary" 32 32 64 >"$t/mlog" 2>&1; then ok; else
+    ko "merl_write"
+    cat "$t/mlog"
+  fi
+  cat "$t/mlog"
+  expect 4 "no material 'nosuch'" --scene examples/scenes/hvl_glossy.scene --pass hvl \
+    --paths cpu --gt 0 --size 16x12 --brdf "$t/g.binary:nosuch"
+  SHLIGHT_GL_BACKEND=$backend SHLIGHT_HVL_GT=64 "$R" --scene examples/scenes/hvl_glossy.scene \
+    --pass hvl --size 64x48 --gt 1 --reps 1 --check --brdf "$t/g.binary:back" >"$t/log" 2>&1
+  rc=$?
+  grep -E '^(check|hvl gt convergence|hvl .* cpu:)' "$t/log"
+  line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$t/log" | tail -1)
+  if [ -z "$line" ] || [ "$rc" -ne 0 ] || ! grep -q "measured, channel b" "$t/log" ||
+    ! grep -q "table floor (GGX)" "$t/log" || ! grep -q "table ball (Phong)" "$t/log"; then
+    ko "hvl glossy / measured (exit $rc)"
+    tail -5 "$t/log"
+  fi
+  [ -n "$line" ] && pass=$((pass + $(echo "$line" | sed -E 's/ passed.*//'))) &&
+    fail=$((fail + $(echo "$line" | sed -E 's/.* passed, ([0-9]+) failed/\1/')))
+fi
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
