@@ -1,57 +1,72 @@
-/* shlight.h - v0.1.0 - analytic spherical-harmonics lighting - public domain / MIT (see end)
+/* shlight.h - v0.2.0 - analytic spherical-harmonics lighting - MIT or public domain (see end)
 
-   One C99 header (C++ clean) for the math of spherical-harmonics (SH) lighting: the SH basis
-   and its gradient for any band count, with GLSL twins in shlight_glsl/ that run the same
-   bodies token for token.
+   One C99 header (C++ clean, no dependency but libm) for the math of spherical-harmonics (SH)
+   lighting, with GLSL twins in shlight_glsl/ that run the same function bodies. Every function
+   documents its domain, what bad input gives, its measured accuracy and its cost; no function
+   allocates or keeps state (reentrant, thread safe).
 
    USAGE
-     #include "shlight.h"              the kernels (static inline) in every file that uses them
-     #define SHLIGHT_IMPLEMENTATION    in ONE C or C++ file, before the #include, for the
-     #include "shlight.h"              CPU-only functions (accurate and batch evaluation)
+     #define SHLIGHT_IMPLEMENTATION    in exactly ONE C or C++ file, before the #include
+     #include "shlight.h"              in every file that calls it (the kernels are inline;
+                                       large band counts and the CPU-only functions are
+                                       compiled in the implementation file)
+     cc -std=c99 ... -lm               (and -pthread for the 2-thread grid build on old glibc)
+
+   THE IMPORTANT PARTS: shading a point x with normal nrm
+     float light[16], lobe[4], grad[16][3];
+     shl_sphere_light(4, x, centre, radius, light);   1. a light's SH seen from x (or
+                                                         shl_sphere_light_grad for the gradient)
+     shl_zh_cosine_power(4, 1.0f, lobe);              2. a lobe's ZH (clamped cosine; Phong,
+                                                         GGX, Beckmann: shl_zh_phong, _ggx, ...)
+     e = shl_sh_conv_zh(4, light, lobe, nrm);         3. convolution: irradiance at nrm
+     e = shl_zh_dot_zh(4, cap, axis, lobe, nrm);      3'. the same, O(n), for one cap's ZH
+     L = albedo / pi * e;                             4. shade
+   Area lights take no SH at all:
+     shl_polygon_moment(quad, 4, nrm, 1.0f, SHLIGHT_EDGE_AUTO) / pi   Lambert from a quad
+     shl_polygon_ggx(quad, 4, nrm, view, alpha)                      GGX specular, no table
+   Other calls most users need: shl_sh_eval (basis), shl_sh_eval_grad (basis + gradient),
+   shl_sh_eval_batch (many directions), shl_sh_rotate (rotate SH), shl_grid_build and
+   shl_grid_sample (light grids), shl_brdf_table_build / _lookup (any BRDF as SH tables).
+
+   OPTIONS (define before including; each is #ifndef-guarded)
+     SHLIGHT_MAX_BANDS       largest band count accepted (default and maximum 64)
+     SHLIGHT_NO_SIMD         no SSE2 / AVX2 / AVX-512 intrinsics (the portable kernels only)
+     SHLIGHT_NO_THREADS      shl_grid_build runs on the calling thread only (no pthreads)
+     SHLIGHT_STATIC          the implementation's functions become static (one file only)
+     SHLIGHT_REFERENCE_FORMS the published forms kept for comparison (tests, benchmarks):
+                             shl_zh_cap_printed, shl_sh_eval_grad_spherical,
+                             shl_sh_grad_from_spherical, shl_hvl_horizon_smoothstep
 
    CONTENTS (grep for the anchors)
-     >>options    compile-time options
-     >>numerics   domains, degenerate inputs, measured accuracy
+     >>options    the option macros
+     >>api        EVERY public type, constant and function with its contract: read this part
+     ------------ end of the API; the implementation follows ------------
+     >>numerics   domains and degenerate inputs in general
      >>prelude    math shims shared with shlight_glsl/shl_prelude.glsl
-     >>basis      SH basis Y_i(d): shl_sh_eval, shl_sh_eval_accurate, shl_sh_eval_batch
-     >>gradient   Cartesian gradient of Y(d/|d|): shl_sh_eval_grad; the paper's spherical
-                  partials: shl_sh_eval_grad_spherical, shl_sh_grad_from_spherical
-     >>zonal      ZH of a uniform spherical cap (stable), its half-angle derivative, ZH -> SH
-     >>light      sphere and triangle lights (SH and gradient w.r.t. the shading point),
-                  exact signed triangle solid angle
-     >>grid       light grid: build (values + gradients, culling, 2 threads) and cell sampling
-                  (trilinear, first-order Taylor, Hermite)
-     >>edge       area lights without tables: Arvo edge integral (exact, the paper's O(1)
-                  fits), polygon axial moments with horizon clipping (exact, constant-cost
-                  quadrature), Phong (single / double axis), cosine lobe <-> SG, ellipse /
-                  disc / sphere lights, Blinn-Phong and Beckmann polygon lights in half-vector
-                  space: shl_polygon_moment, shl_polygon_phong, shl_polygon_blinn_phong
-     >>brdf       ZH of Lambert / Phong / Blinn-Phong / GGX / Beckmann lobes; convolution
-                  (SH.SH, SH.ZH, ZH.ZH), irradiance from ZH, windowing, band selection
-     >>hvl        Harmonics Virtual Lights: emission, geometric factor with the exact horizon
-                  fraction, contribution, radius heuristics
-     >>brdftab    BRDF SH tables (Kautz-style): lookup kernels; CPU: analytic BRDFs, table build
-                  by quadrature, SHLT table files, MERL measured-BRDF loader
-     >>ssf        screen-space SH filter for VPLs (seed 004): VPL SH and irradiance, n x m
-                  interleaved sampling, discontinuity weight, irradiance from filtered SH
-
-   THE IMPORTANT PARTS
-     float y[16];                         4 bands = 16 coefficients
-     float g[16][3];
-     const float d[3] = {0.f, 0.f, 1.f};  unit direction
-     shl_sh_eval(4, d, y);                fast path, d unit
-     shl_sh_eval_grad(4, d, y, g);        values and gradient with respect to d, any d != 0
-     shl_sh_eval_accurate(4, d, y);       renormalises in double: at the float rounding floor
-     shl_sh_eval_batch(4, count, xs, ys, zs, out);   SoA, SIMD across directions
-     shl_polygon_phong(quad, 4, nrm, view, e, SHLIGHT_EDGE_AUTO);   Phong from a quad light
+     >>basis      SH basis: shl_sh_eval, shl_sh_eval_accurate, shl_sh_eval_batch
+     >>gradient   Cartesian gradient: shl_sh_eval_grad
+     >>zonal      ZH of a uniform spherical cap, its derivative, ZH -> SH
+     >>light      sphere and triangle lights (with gradients), triangle solid angle
+     >>grid       light grids: build and sampling (trilinear, Taylor, Hermite)
+     >>edge       area lights without tables: edge integrals, polygon moments, Phong, GGX,
+                  Beckmann, Blinn-Phong polygon / disc / sphere lights
+     >>brdf       ZH of BRDF lobes, convolution, irradiance, windowing, band selection
+     >>hvl        Harmonics Virtual Lights
+     >>brdftab    BRDF SH tables: lookup; CPU: analytic BRDFs, build, files, MERL loader
+     >>ssf        screen-space SH filter for virtual point lights
+     >>rotate     SH rotation
 
    CONVENTIONS
      Real SH with the Condon-Shortley phase (Sloan / D3DX / DirectXMath):
        Y_1^-1 = -K y, Y_1^0 = K z, Y_1^1 = -K x, K = sqrt(3 / 4pi); orthonormal on the sphere.
      Index i = l * (l + 1) + m; m < 0 are the sin(|m| phi) functions.
-     n = number of BANDS: orders l = 0 .. n-1, n * n coefficients ("bands", never "order").
+     n = number of BANDS, always: orders l = 0 .. n-1, n * n coefficients, a ZH has n floats.
      Directions right-handed, theta from +z. Gradients are Cartesian, 3 floats per
-     coefficient: out_grad[i][k] = d Y_i / d d_k.
+     coefficient: out_grad[i][k] = d coef_i / d x_k. nrm: the shading normal; exponent: a
+     Phong exponent; alpha: GGX / Beckmann roughness (perceptual roughness squared). Outputs
+     come last and are named out_* (io_*: read and written). Kernels never fail: bad input
+     gives the documented value. The CPU functions that can fail return shl_result.
+     Derivations: docs/math.md; measured accuracy and speed: docs/accuracy.md, docs/speed.md.
 */
 #ifndef SHLIGHT_H
 #define SHLIGHT_H
@@ -110,6 +125,1038 @@
 #endif
 #define SHLIGHT_CPU_INLINE SHLIGHT_INLINE
 
+/* >>api -------------------------------------------------------------------------------------
+   Every public type, constant and function, grouped by module, each with its contract. */
+#include <stddef.h>
+
+/* ---- prelude ------------------------------------------------------------------------------- */
+/* edge-integral methods (shl_edge_method, shl_polygon_moment) and polygon limits. GLSL has no
+   enums: there the selectors are #defines of the same values and shl_edge_method is int. A
+   value outside the enumerators is accepted and documented at each function (AUTO, or EXACT
+   for shl_edge_integral). */
+typedef enum shl_edge_method {
+  SHLIGHT_EDGE_EXACT = 0,
+  SHLIGHT_EDGE_LORENTZ = 1,
+  SHLIGHT_EDGE_LORENTZ_PEARSON = 2,
+  SHLIGHT_EDGE_ELLIPSOID = 3,
+  SHLIGHT_EDGE_AUTO = 4,
+  SHLIGHT_EDGE_QUADRATURE = 5,
+  SHLIGHT_EDGE_FAST = 6,
+  SHLIGHT_EDGE_INT_MIN_ = -2147483647 - 1 /* not a method: makes the type a signed int that
+                                             holds any int (no sign conversion in C++) */
+} shl_edge_method;
+
+#define SHLIGHT_POLYGON_MAX 8 /* vertices of a polygon light in one piece (GLSL: at most) */
+
+/* ---- basis --------------------------------------------------------------------------------- */
+/* shl_sh_eval: the real SH basis Y_i(d), i < n * n, of n bands at the direction d.
+   d: a unit vector to float precision (| |d|^2 - 1 | <= 1e-6, which every float-normalised
+   vector meets) is evaluated as given; any other finite non-zero d is normalised first (in
+   double, scaled by its largest component: denormal and huge d work; about 10 ns more); a
+   zero, NaN or infinite d gives Y(0, 0, 1). n: bands, 1..SHLIGHT_MAX_BANDS; n > max is taken
+   as max, n < 1 writes nothing (debug and release alike). out_y: n * n floats.
+   Accuracy: max abs error 3e-7 (n <= 4), 2e-6 (n <= 16), 1e-5 (n <= 32) against binary128.
+   Cost: 1 ns (n = 2) to 32 ns (n = 16) on Zen 4, see docs/speed.md; in C, n > 6 runs out of
+   line in the implementation (define SHLIGHT_IMPLEMENTATION in one file). */
+SHLIGHT_INLINE void shl_sh_eval(int n, const float d[3], float *out_y);
+
+/* ---- gradient ------------------------------------------------------------------------------ */
+/* shl_sh_eval_grad: Y_i(d / |d|) and its gradient with respect to d, out_grad[i][k] =
+   dY_i / dd_k, for any finite d != 0 (scaled by its largest component first, so denormal and
+   huge inputs work). Zero, NaN or infinite d: the values at (0,0,1) and a zero gradient.
+   Finite at the poles. The gradient scales like l / |d|: below |d| ~ 1e-38 the entries whose
+   exact value exceeds FLT_MAX are +-inf (IEEE overflow, correct sign); every entry that fits in
+   a float is within the stated accuracy. n as shl_sh_eval. out_y: n * n floats, out_grad:
+   n * n float[3]. Accuracy: values as shl_sh_eval, gradient 1.3e-6 of max |grad| at n = 16.
+   Cost: about 4x shl_sh_eval (docs/speed.md). */
+SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, float (*out_grad)[3]);
+
+#ifdef SHLIGHT_REFERENCE_FORMS
+/* shl_sh_eval_grad_spherical: the paper's form ([GRAD] sections 3-4, corrections E1-E3 of
+   docs/math.md fixed): Y_i(d / |d|), dY_i / dtheta and dY_i / dphi, by Sloan's recurrence for X
+   and the normalised T recurrence Z_l = alpha (cos Z_{l-1} - sin X_{l-1}) - beta Z_{l-2}.
+   Any finite d != 0; zero / NaN / Inf d: as (0,0,1). At an exact pole phi is taken as 0.
+   Kept as the comparison point of shl_sh_eval_grad in tests and bench. */
+SHLIGHT_INLINE void shl_sh_eval_grad_spherical(int n, const float d[3], float *out_y,
+                                               float *out_dtheta, float *out_dphi);
+#endif
+
+#ifdef SHLIGHT_REFERENCE_FORMS
+/* shl_sh_grad_from_spherical: Cartesian gradient from the spherical partials ([GRAD]
+   eq. 23): grad Y = dY/dtheta grad(theta) + dY/dphi grad(phi). Singular at the poles; at an
+   exact pole (x = y = 0) or for d = 0 every entry is 0. Comparison point only: use
+   shl_sh_eval_grad. */
+SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const float *dtheta,
+                                               const float *dphi, float (*out_grad)[3]);
+#endif
+
+/* ---- zonal --------------------------------------------------------------------------------- */
+/* shl_zh_cap: ZH coefficients L_l, l < n, of the unit-radiance cap that a sphere of radius r
+   subtends at distance d (its centre on +z): out_zh[l] = int_cap Y_l^0. Stable s^2 P'_l form
+   (see >>zonal), any s from 1e-30 to 1: relative error at the float rounding floor in C.
+   Small caps: L_l -> pi s^2 K_l (a point light). r <= 0, NaN r or d, infinite d: zeros;
+   d <= r: the hemisphere. out_zh: n floats. Cost: O(n), one sqrt and 2 divisions per band. */
+SHLIGHT_INLINE void shl_zh_cap(int n, float r, float d, float *out_zh);
+
+/* shl_zh_cap_derivative: derivative of shl_zh_cap with respect to the half-angle a,
+   out_dzh[l] = dL_l / da = sqrt(pi (2l+1)) P_l(alpha) s (docs/math.md section 2: the paper's eq. 16
+   is O'_l = -(2l+1) P_l, no division by alpha^2 - 1). Chain with da/dd = -s / (d alpha), or use
+   shl_sphere_light_grad, which does it for the full SH. Same domain as shl_zh_cap; d <= r: the
+   value at a = pi/2 (s = 1, alpha = 0). out_dzh: n floats. Cost: O(n), one sqrt per band. */
+SHLIGHT_INLINE void shl_zh_cap_derivative(int n, float r, float d, float *out_dzh);
+
+#ifdef SHLIGHT_REFERENCE_FORMS
+/* shl_zh_cap_printed: the printed form of [GRAD] eq. 9 / [HVL] eq. 14, as a shader would
+   write it, all in float: alpha = sqrt(1 - s^2) (= cos(asin(s))), L_0 = sqrt(pi)(1 - alpha),
+   L_l = sqrt(pi / (2l+1)) (P_{l-1}(alpha) - P_{l+1}(alpha)). Comparison point for tests and
+   bench only (correction E4 (docs/math.md section 12)): relative error 1.4e-4 at s = 1e-2, 4.6e-2
+   at s = 1e-3, and every L_l is 0 for s < 2.4e-4. Use shl_zh_cap. Same domain and degenerate
+   results as shl_zh_cap. out_zh: n floats. Cost: O(n). */
+SHLIGHT_INLINE void shl_zh_cap_printed(int n, float r, float d, float *out_zh);
+#endif
+
+/* shl_zh_rotate: SH of a circularly symmetric function with ZH coefficients zh about the axis
+   dir ([GRAD] eq. 11): out_sh[l (l+1) + m] = sqrt(4 pi / (2l+1)) Y_l^m(dir) zh[l]. dir: any
+   finite non-zero vector (normalised in shli_real); zero, NaN or infinite dir: the axis +z.
+   zh: n floats, any finite values: |out_sh[l (l+1) + m]| <= |zh[l]| (Unsold's bound), so the
+   output is finite for finite zh up to FLT_MAX (no intermediate overflow; a value that float
+   rounding carries past FLT_MAX saturates to +-FLT_MAX). Not finite input: a NaN zh[l] gives
+   NaN in band l, an infinite one +-FLT_MAX or NaN (where Y = 0) in band l only. out_sh: n * n
+   floats. Cost: one shl_sh_eval plus n sqrt and n * n mul (two in a band with |zh| >= 1e30). */
+SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], float *out_sh);
+
+/* shl_sh_rotate: out_sh (n * n floats) = the SH of the function sh (n * n floats) rotated by
+   the rotation matrix R (row-major, R[3 i + j] = R_ij): g(w) = f(R^T w), so sh = Y(d) gives
+   out_sh = Y(R d). n: bands, 1..SHLIGHT_MAX_BANDS (64 in C; GLSL: written for n <= 16, see
+   accuracy); n < 1 writes nothing, n > max asserts in debug and is clamped in release.
+   Method: R = Rz(alpha) Ry(beta) Rz(gamma) (zyz Euler angles, found without inverse
+   trigonometry: beta from R's third column, alpha from its first two entries, gamma from the
+   second row of Rz(-alpha) R); the z rotations act on each (m, -m) pair; the y rotation is the
+   real-basis form of Wigner's d^l_{m'm}(beta), each entry carried up the bands by the
+   three-term recurrence in l of its Jacobi polynomial (start at l = max(|m|, |m'|) from the
+   closed form sqrt(C(2q, q+p)) cos(beta/2)^a sin(beta/2)^b), one row m' at a time, so the
+   work space is O(n) and no matrix of a band is ever stored.
+   R must be a rotation (orthonormal, det +1; float rounding of one is fine: the kernel uses
+   the exact rotation with R's third column, R_00, R_01, R_10, R_11 as above, within 1e-7 of a
+   float-rounded R); any other finite matrix gives the rotation that decomposition yields (an
+   all-zero R: the identity); NaN in R gives NaN out. sh and out_sh must not overlap.
+   Accuracy (C, double inside; against a long-double re-projection by Gauss quadrature,
+   tests/test_rotate.c): per band, |error| / |input band| <= 4.3e-8 for every n = 1..64 and
+   for beta = 0, 1e-6, pi / 2, pi - 1e-6, pi (the float rounding of the output); band energy
+   kept to 1e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16 (llvmpipe).
+   Cost: about n^3 / 3 steps of the two recurrences (one sqrt and one division each) and
+   n^3 / 3 of the row dot products: 0.6 us at n = 6, 8.7 us at n = 16, 0.47 ms at n = 64 (gcc
+   -O3 -march=native; docs/rotation.md has the table; DirectXMath's XMSHRotate, n <= 6, is
+   faster at small n). Stack: about 7 KB at SHLIGHT_MAX_BANDS = 64. */
+SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh);
+
+/* ---- light --------------------------------------------------------------------------------- */
+/* shl_sphere_light: SH of the unit-radiance sphere light (centre c, radius r) seen from x:
+   out_sh[l (l+1) + m] = 2 pi s^2 q_l Y_l^m(w) (see >>light). Accuracy: the cap factors in
+   shli_real by the stable s^2 P'_l form for every s from 1e-30 to 1 (float rounding floor in
+   C); Y at the float-rounded axis. Degenerate inputs (see >>light): r <= 0 / NaN, NaN or
+   infinite positions: zeros; x on or inside the sphere: the hemisphere about c - x (its
+   value at the surface); x == c: the hemisphere about +z. out_sh: n * n floats. Cost: one
+   shl_sh_eval, n * n mul (AVX-512, 3 <= n <= 16: one permute and one multiply per 16
+   coefficients), the O(n) double recurrence, 2 sqrt and 2 divisions; 11 / 36 / 77 ns at
+   n = 2 / 8 / 16 (bench/out/light.md, Zen 4). */
+SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], float r,
+                                     float *out_sh);
+
+/* shl_sphere_light_grad: shl_sphere_light and its gradient with respect to the shading point
+   x, out_grad[i][k] = d out_sh[i] / d x_k: the rotational term through the pole-free
+   Cartesian gradient of Y (finite for a probe exactly below or above the light) plus the
+   radial term 2 pi s^2 P_l(alpha) / (d alpha) Y w (docs/math.md section 3). Singular only as
+   d -> r+ (1 / alpha: exact, large, finite); on or inside the sphere the radial term is 0
+   (the hemisphere extension is constant along rays from c); x == c, r <= 0 / NaN, NaN or
+   infinite positions: zero gradient (values as shl_sphere_light). out_sh: n * n floats,
+   out_grad: n * n float[3]. Cost: the basis values at the unit axis, the O(n) recurrence with
+   4 weights per band, and the basis gradient pass with those weights folded in (AVX-512,
+   n <= 16; otherwise the scalar gradient and 7 flops per coefficient): 2.4 / 2.5 / 2.7 times
+   shl_sphere_light at n = 2 / 8 / 16 (1.95 at n = 3), 8.3 / 9.9 at n = 32 / 64 (the scalar
+   gradient loop; bench/out/light.md, Zen 4). */
+SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c[3], float r,
+                                          float *out_sh, float (*out_grad)[3]);
+
+/* shl_triangle_light: SH of the unit-radiance two-sided triangle light (p0, p1, p2) seen
+   from x, approximated by the paper's sphere ([GRAD] eq. 24-26): the sphere light at the
+   centroid with r_s = sqrt(area / pi), times |cos gamma|, gamma the angle between the
+   triangle's normal and the direction from x to the centroid. A model, not the exact
+   projection: its error is set by distance / sqrt(area) (docs/math.md section 4: L_0 within 1e-3 at
+   20, 3e-5 at 100 for well-shaped triangles; slivers are worse). x closer to the centroid than
+   r_s: the hemisphere (as shl_sphere_light) times |cos gamma|; x == centroid: axis +z.
+   Zero-area triangle, NaN or infinite input: zeros. out_sh: n * n floats. Cost: one
+   shl_sphere_light plus a cross product. */
+SHLIGHT_INLINE void shl_triangle_light(int n, const float x[3], const float p0[3],
+                                       const float p1[3], const float p2[3], float *out_sh);
+
+/* shl_triangle_light_grad: shl_triangle_light and its gradient with respect to x ([GRAD]
+   eq. 27-28): |cos gamma| grad S + S grad |cos gamma|, grad_x |cos gamma| =
+   sign(cos gamma) (n_t - (n_t . w) w) / d. Edge-on (cos gamma = 0, the kink of |.|): the
+   gradient of |cos gamma| is taken as 0 (the mean of the one-sided limits). Other degenerate
+   inputs as shl_triangle_light (zeros) and shl_sphere_light_grad (inside the sphere: radial
+   term 0). out_sh: n * n floats, out_grad: n * n float[3]. Cost: one shl_sphere_light_grad
+   plus a cross product. */
+SHLIGHT_INLINE void shl_triangle_light_grad(int n, const float x[3], const float p0[3],
+                                            const float p1[3], const float p2[3], float *out_sh,
+                                            float (*out_grad)[3]);
+
+/* shl_triangle_solid_angle: signed solid angle of the triangle (p0, p1, p2) seen from x, by
+   van Oosterom-Strackee in the edge form with atan2 (docs/math.md section 4, correction E6
+   (docs/math.md section 12)): Omega = 2 atan2(N, D), R_i = p_i - x, N = R_0 . ((p1 - p0) x (p2 -
+   p0)), D = |R0||R1||R2| + (R0.R1)|R2| + (R0.R2)|R1| + (R1.R2)|R0|, in shli_real. Positive when x
+   is behind the triangle, i.e. on the side opposite to n = (p1 - p0) x (p2 - p0) (p0, p1, p2
+   clockwise as seen from x); |Omega| for a two-sided light. Range [-2 pi, 2 pi]; Omega > pi (D < 0)
+   for points close to the triangle. Accuracy (float inputs): relative 1e-7 at distance 1e4 (no
+   unit-vector cancellation: the printed form loses 6e-2 there). Degenerate: zero-area triangle 0; x
+   at a vertex 0; x in the triangle's plane: 0 outside the triangle, 2 pi inside it (both sides'
+   limits are +-2 pi), 0 or 2 pi on an edge; NaN or infinite input: 0. Any finite scale, from
+   denormals to FLT_MAX: when N and D overflow (|p_i - x| above ~7e12 in C, 1e12 in GLSL) or fall
+   below 1e-30 they are recomputed with everything divided by the largest component of the p_i - x
+   (Omega is scale-invariant). GLSL: in float the sum D cancels when two pairs of the R_i are nearly
+   opposite (x near an edge, or near a vertex with the other two almost behind each other): the GLSL
+   result is within 2.5 u (|Omega| + 2 (|D| EN + |N| ED) / (N^2 + D^2)) of the exact one, EN =
+   |R0||p1 - p0| |p2 - p0| and ED the sum of the magnitudes of D's terms (up to 1.2e-2 of the
+   face-on solid angle area / d^2 there; bench/solid_angle_float.c, tests/test_glsl). Cost: 3 sqrt,
+   ~40 flops and the own atan2 (2 sqrt, 8-term polynomial). */
+SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3],
+                                              const float p1[3], const float p2[3]);
+
+/* ---- grid ---------------------------------------------------------------------------------- */
+/* the order in which shl_grid_build sums the lights (the same bits either way) */
+typedef enum shl_grid_order { SHLIGHT_GRID_FORWARD = 0, SHLIGHT_GRID_REVERSED = 1 } shl_grid_order;
+
+/* reconstruction of shl_grid_sample */
+typedef enum shl_grid_method {
+  SHLIGHT_GRID_TRILINEAR = 0,
+  SHLIGHT_GRID_TAYLOR = 1,
+  SHLIGHT_GRID_HERMITE = 2
+} shl_grid_method;
+
+#ifndef SHLIGHT_RESULT_DEFINED
+#define SHLIGHT_RESULT_DEFINED
+/* Status of the CPU functions that can fail. */
+typedef enum shl_result {
+  SHLIGHT_OK = 0,
+  SHLIGHT_EINVAL = -1,     /* an invalid argument */
+  SHLIGHT_ENOMEM = -2,     /* an allocation failed */
+  SHLIGHT_ELENGTH = -3,    /* loaders: input truncated, or longer than its header says */
+  SHLIGHT_EMAGIC = -4,     /* loaders: not the expected file type (magic bytes) */
+  SHLIGHT_EVERSION = -5,   /* loaders: unsupported format version */
+  SHLIGHT_EDIMS = -6,      /* loaders: zero, negative, oversized or inconsistent dimensions */
+  SHLIGHT_ENONFINITE = -7, /* NaN or infinity in the data */
+  SHLIGHT_ECHECKSUM = -8,  /* loaders: checksum mismatch */
+  SHLIGHT_ESTORAGE = -9    /* the caller's buffer is missing or too small (size reported) */
+} shl_result;
+#endif
+
+/* shl_grid: plain data (no pointers), the same fields in GLSL. spacing: the cell size per
+   axis (> 0 and finite where the dims > 1; ignored where dims = 1). n: bands of the stored
+   SH. cull: the culling tolerance eps (>= 0, see >>grid). */
+typedef struct shl_grid {
+  float origin[3];
+  float spacing[3];
+  int dims[3]; /* vertices along x, y, z (>= 1 each) */
+  int n;
+  float cull;
+} shl_grid;
+
+#define SHLIGHT_GRID_FORWARD 0
+
+#define SHLIGHT_GRID_TRILINEAR 0
+
+/* shl_result_string: a constant string naming r and what it means ("SHLIGHT_EINVAL: an
+   invalid argument"); any value that is not a shl_result gives "unknown shl_result".
+   Never NULL. Cost: a switch. */
+SHLIGHT_API const char *shl_result_string(shl_result r);
+
+/* shl_grid_trilinear: out_sh[i] = sum_k w_k c8[k n^2 + i], w the trilinear weights of the
+   fraction f (in [0, 1]^3; outside: linear extrapolation). out_sh: n * n floats. Cost: 7 FMA
+   per coefficient. */
+SHLIGHT_INLINE void shl_grid_trilinear(int n, const float *c8, const float f[3], float *out_sh);
+
+/* shl_grid_taylor: first-order Taylor expansion from the nearest corner k (cx = f[0] >= 0.5,
+   ...): out_sh[i] = c8[k n^2 + i] + g8[k n^2 + i] . ((f - corner) * cell), cell the cell size
+   (shl_grid.spacing). out_sh: n * n floats. Cost: 3 FMA per coefficient. */
+SHLIGHT_INLINE void shl_grid_taylor(int n, const float *c8, const float (*g8)[3], const float f[3],
+                                    const float cell[3], float *out_sh);
+
+/* shl_grid_hermite: tricubic Hermite from the corner values and gradients, mixed
+   derivatives estimated in the cell (see >>grid): out_sh[i] = sum_k (wv_k c8[k n^2 + i] +
+   wx_k g8[..][0] + wy_k g8[..][1] + wz_k g8[..][2]). f in [0, 1]^3, cell the cell size.
+   out_sh: n * n floats. Cost: ~150 flops for the weights, 32 FMA per coefficient. */
+SHLIGHT_INLINE void shl_grid_hermite(int n, const float *c8, const float (*g8)[3], const float f[3],
+                                     const float cell[3], float *out_sh);
+
+/* shl_grid_build: out_sh[v n^2 + i] = sum_j I_j shl_sphere_light(n, p_v, c_j, r_j)[i] over
+   the lights that reach vertex v (culling, see >>grid), out_grad likewise with
+   shl_sphere_light_grad (out_grad NULL: no gradients, values by shl_sphere_light). With
+   cull = 0 each vertex holds exactly the per-point sum (same bits as a caller's loop
+   out += I * shl_sphere_light(_grad) in light order). intensity NULL: all 1. order
+   SHLIGHT_GRID_FORWARD or SHLIGHT_GRID_REVERSED, threads 1 or 2 (more: 2): the same bits.
+   Lights with r <= 0 / NaN, non-finite centres or a non-finite intensity add nothing. Returns
+   SHLIGHT_EINVAL (and writes nothing) for: g or out_sh NULL, n outside [1, SHLIGHT_MAX_BANDS], a
+   dim < 1, a spacing <= 0 or non-finite on an axis with dims > 1, non-finite origin, cull < 0 or
+   NaN, nlights < 0, centres or radii NULL with nlights > 0, an unknown order, threads < 1. Cost:
+   (vertices) x (lights reaching them) shl_sphere_light_grad calls. */
+SHLIGHT_API shl_result shl_grid_build(const shl_grid *g, const float (*centres)[3],
+                                      const float *radii, const float *intensity, int nlights,
+                                      int sum_order, int threads, float *out_sh,
+                                      float (*out_grad)[3]);
+
+/* shl_grid_sample: reconstruction at p from a grid built by shl_grid_build: clamps p to the
+   grid's box (NaN components: the origin's), gathers the 8 corners of its cell and calls
+   shl_grid_trilinear, shl_grid_taylor or shl_grid_hermite (method SHLIGHT_GRID_TRILINEAR,
+   _TAYLOR, _HERMITE). grad may be NULL for trilinear only. out_sh: g->n^2 floats. Returns
+   SHLIGHT_EINVAL for NULL g / sh / out_sh, invalid g (as shl_grid_build), an unknown method
+   or a NULL grad that the method needs (nothing written then); otherwise SHLIGHT_OK (no
+   allocation: the corners are gathered in chunks of at most 64 coefficients, 8 KB of stack).
+   The output is finite wherever the grid's corner values (and gradients) are. */
+SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const float (*grad)[3],
+                                       const float p[3], shl_grid_method method, float *out_sh);
+
+/* ---- edge ---------------------------------------------------------------------------------- */
+/* shl_edge_integral: the edge integral of [AREA] eq. 3,
+   F(Phi, c, delta, n) = sum over k = n, n - 2, ..., >= 0 of c^k integral from -delta to
+   Phi - delta of cos^k, for Phi in [0, pi], c in [0, 1], any delta, n >= 0 (rounded to the
+   nearest integer), by `method`: SHLIGHT_EDGE_EXACT (the O(n) recurrence, in shli_real) or one
+   of the O(1) fits SHLIGHT_EDGE_LORENTZ / _LORENTZ_PEARSON / _ELLIPSOID (AUTO, QUADRATURE,
+   FAST and any unknown method id mean EXACT here). The arc is split at +-pi/2 and reduced with I(p
+   + pi) = (-1)^n I(p) (docs/math.md section 7.2); orders n <= 2 and c < 1.0e-3 always take the
+   exact path (closed forms; the fits are 0/0 there). Degenerate: c clamped to [0, 1], Phi to [0,
+   pi]; NaN input -> 0; n > 1.0e6 clamped. Accuracy: EXACT matches long double quadrature to 1.0e-12
+   relative to F(-pi/2, pi/2) in C (double inside); the fits' errors are in docs/area-lights.md. */
+SHLIGHT_INLINE float shl_edge_integral(float phi, float c, float delta, float exponent,
+                                       shl_edge_method method);
+
+/* shl_polygon_moment: the axial moment of [AREA] eq. 1, integral over the solid angle of the
+   polygon v[0..nv-1] (vertices relative to the shading point, any winding, two-sided), clipped
+   to the hemisphere u.axis > 0, of (u.axis)^exponent. nv >= 3, any count in C (above
+   SHLIGHT_POLYGON_MAX = 8 the polygon is summed in fan pieces of at most 8 vertices, see the
+   start of >>edge; GLSL: at most SHLIGHT_POLYGON_MAX, above it -1). A non-convex or
+   self-overlapping (planar) polygon is integrated with its winding number relative to its net
+   orientation (a region wound twice counts twice). axis any non-zero vector (normalised
+   inside); exponent >= 0 real. method:
+   - SHLIGHT_EDGE_EXACT: exact at every real exponent. Integer exponents up to 65536: Arvo's
+     form with the O(e) recurrence (double inside in C); any other exponent: the Stokes form
+     (see >>edge) with an adaptive rule and an error estimate (shli_stokes_half, lev > 0:
+     composite 5-node Gauss-Legendre, 2^l panels with the panel at the clip circle cut
+     geometrically, until two levels agree to 1e-9), within 1e-5 of the normalised lobe
+     (measured: 5.5e-8 against cubature for exponents 0.3..9999.5, the float output's rounding;
+     3.2e-10 against its own 14-level refinement; 9e-11 against the recurrence at integer
+     exponents). Cost: ~61k x86 instructions per doubly clipped quad at e = 777.7 (callgrind,
+     GCC -O3 -march=x86-64-v3; QUADRATURE 10k).
+   - SHLIGHT_EDGE_LORENTZ / _LORENTZ_PEARSON / _ELLIPSOID: Arvo's form with the paper's O(1)
+     fits of F (errata fixed), exponent rounded to the nearest integer; above 65536 they take
+     QUADRATURE (no float-to-int conversion of huge exponents).
+   - SHLIGHT_EDGE_QUADRATURE: the Stokes form (see >>edge), O(1), any real exponent.
+   - SHLIGHT_EDGE_AUTO: the recurrence for integer exponents <= 16, EXACT's adaptive rule
+     above: exact everywhere, so its switch point is continuous (jump < 1e-7 relative at 16
+     and the next float, measured). Cost: 2.5k instructions per quad at e = 10, 64k at 100
+     (was QUADRATURE's 10k: exactness costs 6x; FAST is the constant-time road).
+   - SHLIGHT_EDGE_FAST: the Stokes form in float with a 4-node rational-graded rule per
+     half-arc and polynomial transcendentals, SIMD over 8 edges in C: O(1), any real exponent
+     (finite to 1e30), ~1.3k x86 instructions per doubly clipped quad (GCC -O3
+     -march=x86-64-v3), p95 1e-4 and max 1.5e-3 of the normalised lobe (docs/accuracy.md). GLSL:
+   only with SHLIGHT_EDGE_FAST_ON 1 defined by the host, else it means QUADRATURE.
+   - any other value (an unknown method id): SHLIGHT_EDGE_AUTO.
+   Degenerate: nv < 3, zero axis, NaN anywhere, a polygon through the shading point or reduced
+   to < 3 vertices by the clip: 0; NaN exponent or exponent >= 1e30: 0 (the limit of the
+   moment); negative exponent: treated as 0. Result >= 0 (GLSL nv > SHLIGHT_POLYGON_MAX: -1).
+   Accuracy and cost: docs/area-lights.md (measured against tests/ref/arearef.h). */
+SHLIGHT_INLINE float shl_polygon_moment(const float (*v)[3], int nv, const float axis[3],
+                                        float exponent, shl_edge_method method);
+
+/* shl_polygon_phong: single-axis Phong shading from a polygon light ([AREA] eq. 10):
+   (e+1)/(2 pi) M^e(P, r) with r the mirror direction of `view` about `nrm`, the polygon first
+   clipped to the horizon u.nrm >= 0 (then to u.r >= 0 by the moment). Unit-radiance light,
+   rho_s = 1: a light covering the whole r-hemisphere above the horizon gives 1 at normal
+   incidence. view and nrm: unit, pointing away from the surface. Same methods and degenerate
+   results as shl_polygon_moment; view below the horizon (nrm.view <= 0): 0. */
+SHLIGHT_INLINE float shl_polygon_phong(const float (*v)[3], int nv, const float nrm[3],
+                                       const float view[3], float exponent, shl_edge_method method);
+
+/* shl_lobe_to_sg: the sharpness lambda of the spherical Gaussian exp(lambda (u.r - 1)) with the
+   same half-maximum angle as the cosine lobe max(0, u.r)^n ([AREA] eq. 22, correction E16
+   (docs/math.md section 12)): lambda = ln 2 / (1 - 2^(-1/n)), in the stable form ln 2 / -expm1(-ln
+   2 / n) (float: 3e-8 relative at n = 1e7; the printed form is negative). n <= 0 or NaN: 0; lambda
+   ~ n + ln 2 / 2 for large n: n >= 1e30 returns n itself (the relative difference is below float's
+   resolution), so n = +inf gives +inf (the delta-lobe limit, documented; finite n gives
+   a finite lambda). */
+SHLIGHT_INLINE float shl_lobe_to_sg(float exponent);
+
+/* shl_sg_to_lobe: the inverse, n = -ln 2 / log1p(-ln 2 / lambda) (exact round trip); lambda <=
+   ln 2 has no cosine-lobe counterpart (the SG never falls to half): 0; NaN: 0. lambda >= 1e30
+   returns lambda (as shl_lobe_to_sg), so +inf gives +inf (the limit); finite lambda gives a
+   finite n. */
+SHLIGHT_INLINE float shl_sg_to_lobe(float lambda);
+
+/* shl_lobe_product: the product of two cosine lobes max(0, u.r1)^n1 max(0, u.r2)^n2 approximated
+   by one lobe mu max(0, u.rp)^np ([AREA] sec. 7.1): both mapped to SGs (shl_lobe_to_sg), the
+   exact SG product (axis rp along lambda1 r1 + lambda2 r2, sharpness lambda_p = |lambda1 r1 +
+   lambda2 r2|), mapped back (shl_sg_to_lobe), mu the true product at rp (clamped lobes,
+   docs/math.md 7.3). r1, r2: any finite non-zero vectors, normalised here in shli_real (so a
+   float-normalised axis is exact enough for any exponent); zero, NaN or infinite: +z. Writes
+   rp (unit) and returns mu in [0, 1] (a product of two cosines <= 1 raised to n1, n2 >= 0),
+   np in out_np[0]. Accuracy is the paper's: good for aligned lobes, poor beyond ~60 degrees
+   (docs/accuracy.md); above n ~ 1e9 a lobe is narrower than the double rounding of the axes, and mu
+   (still in [0, 1]) loses accuracy. Opposite lobes with equal sharpness (no axis), n1 or n2
+   negative or NaN, or |lambda1 r1 + lambda2 r2| >= 1e30 (exponents ~1e30 and above, +inf):
+   mu = 0, np = 0, rp = r1. */
+SHLIGHT_INLINE float shl_lobe_product(const float r1[3], float exponent1, const float r2[3],
+                                      float exponent2, float *out_axis, float *out_exponent);
+
+/* shl_polygon_phong_double_axis: double-axis Phong, (e+1)/(2 pi) times the integral over the
+   polygon (clipped to the horizon) of max(0, u.r)^e max(0, u.nrm), by the lobe product of
+   shl_lobe_product (n2 = 1: the cosine) and one moment about its axis ([AREA] sec. 7.1). Inputs and
+   degenerate results as shl_polygon_phong. Exponents above 1e6: the product's limit, max(0, nrm.r)
+   times the single-axis value (relative error ~ 1 / e; the SG road loses its axis to float rounding
+   above ~1e12). Error: docs/area-lights.md (the product approximation dominates). */
+SHLIGHT_INLINE float shl_polygon_phong_double_axis(const float (*v)[3], int nv, const float nrm[3],
+                                                   const float view[3], float exponent,
+                                                   shl_edge_method method);
+
+/* shl_ellipse_phong: single-axis Phong (as shl_polygon_phong) from a planar ellipse light with
+   centre c (relative to the shading point) and orthogonal semi-axis vectors a1, a2 (a disc when
+   |a1| = |a2|), by the polygon road of [AREA] sec. 9 with two changes. The polygons are fixed
+   to the light, never re-oriented per shading point, so the result is continuous in the shading
+   point (the paper's arg-max orientation is what makes its Figure 17 jump); and two regular
+   octagons rotated by pi/8 are averaged (vertices c + k (a1 cos t + a2 sin t), t = j pi/4 and
+   j pi/4 + pi/8, k = sqrt(pi / (2 sqrt 2)): each has the ellipse's area), which cancels the
+   octagon's leading rim error: 1.5e-3 instead of 1.4e-2 of the normalised lobe at e = 1000
+   (tests/test_edge). Cost: two octagon moments. Non-uniform scale maps the outline exactly.
+   Degenerate: as shl_polygon_phong; zero axes: 0. */
+SHLIGHT_INLINE float shl_ellipse_phong(const float c[3], const float a1[3], const float a2[3],
+                                       const float nrm[3], const float view[3], float exponent,
+                                       shl_edge_method method);
+
+/* shl_sphere_phong: single-axis Phong from a uniform sphere light (centre c relative to the
+   shading point, radius r): the disc through c facing the point with radius r d / sqrt(d^2 -
+   r^2) subtends the sphere's cap exactly; it is drawn as shl_ellipse_phong's octagons in the
+   frame of Duff et al. (2017) about c / d (continuous in c except at c / d = -z). Shading point
+   inside the sphere (d <= r): the light fills every direction, taken as an octagon of radius
+   1e4 at distance 1 across the mirror direction (the r-hemisphere to 1e-4 rad). r <= 0, NaN
+   or infinite input: 0. */
+SHLIGHT_INLINE float shl_sphere_phong(const float c[3], float r, const float nrm[3],
+                                      const float view[3], float exponent, shl_edge_method method);
+
+/* shl_polygon_ggx_ndf: the integral over the polygon v[0..nv-1] (as shl_polygon_moment: any
+   winding, two-sided, clipped to u.axis > 0) of D(u) (u.axis), D the isotropic GGX normal
+   distribution about `axis` with roughness alpha (D(t) = alpha^2 / (pi (t^2 (alpha^2 - 1) +
+   1)^2), normalised: the whole hemisphere gives 1). Closed form, one atan2 per edge, derived
+   for shlight by the Stokes form of >>edge: the antiderivative of D(t) t is
+   -(1 - t^2) / (2 pi (1 - (1 - alpha^2) t^2)), which along an edge's arc becomes
+   w^2 / (2 pi (w^2 + alpha^2 c^2 cos^2 theta)) and integrates to
+   (|w| / q) atan2(q sin Phi, cos Phi - (1 - alpha^2) x_A x_B) / (2 pi), q^2 = w^2 + alpha^2 c^2.
+   alpha = 1 gives the cosine moment / pi (Lambert). It is the half-vector-space core of a GGX
+   polygon light (the map from light to half vectors is not in this function). alpha clamped
+   to [1e-4, 1]; degenerate inputs as shl_polygon_moment. */
+SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const float axis[3],
+                                         float alpha);
+
+/* shl_polygon_ggx: a GGX polygon light, the integral over the polygon v[0..nv-1] (vertices
+   relative to the shading point, any winding, two-sided), clipped to the shading hemisphere
+   nrm.l > 0, of f(view, l) (nrm.l) dl with f = D G2 / (4 (n.l)(n.v)) the GGX microfacet BRDF
+   without Fresnel (F = 1), D the GGX normal distribution of roughness alpha (= perceptual
+   roughness squared), G2 the height-correlated Smith masking-shadowing; multiply by the
+   light's radiance (and a Fresnel or specular colour) outside. No table. Method: the half-vector
+   NDF integral and its first moment by Stokes along the edges' images, a first-order Taylor model
+   of the rest of the BRDF and a 7-point cubature of its remainder (derivation above;
+   docs/accuracy.md "GGX polygon lights"). nrm and view any non-zero vectors (normalised inside), nv
+   >= 3 (C: any count, fan pieces above SHLIGHT_POLYGON_MAX; GLSL: above it -1), alpha clamped to
+   [1e-4, 1]. Degenerate inputs give 0: nv < 3, NaN or infinite input, zero normal or view, view at
+   or below the horizon (nrm.view <= 0), NaN alpha, a light entirely below the horizon (exactly 0:
+   the polygon is clipped first, so no light comes from below), a polygon through the shading point.
+   Result >= 0. Accuracy against long double cubature (tests/ref/arearef.h) on the LTC comparison's
+   sampler (docs/area-lights.md, bench/bench_ggx.c): median relative error 1e-6 to 5e-5 at
+   roughness 0.05 to 1 (LTC: 7e-5 to 0.11), p95 below 0.9 %; weakest at grazing views with very
+   large lights (up to 16 % for a light filling the hemisphere at alpha 0.04, view 85 deg).
+   Cost: 18k x86 instructions per quad (10 Gauss nodes per edge with exp, sincos, log; 7 or 28
+   cubature nodes per fan triangle), about 16x shl_polygon_phong FAST. */
+SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
+                                     const float view[3], float alpha);
+
+/* shl_polygon_beckmann: the Beckmann microfacet specular from a unit-radiance polygon
+   light, the integral over the polygon (vertices relative to the shading point, any winding,
+   two-sided) clipped to nrm.l > 0 of D_B(h) G2(l, v) / (4 (n.v)) dl, the same integrand as
+   shl_polygon_beckmann_subedges (D_B(h) = exp(-tan^2 t / alpha^2) / (pi alpha^2 cos^4 t), t the
+   angle of h from nrm; G2 the height-correlated Smith 1 / (1 + Lambda(v) + Lambda(l)) with
+   Beckmann's Lambda, shli_beckmann_lambda; Fresnel 1), by shl_polygon_ggx's method with the
+   Beckmann NDF: A and M1 by Stokes (the cap CDF 1 - exp(-tan^2 / alpha^2); the first moment's
+   radial antiderivative by erfc, shli_beck_i), the first-order Taylor model of G2 (h.v) /
+   ((n.v)(h.n)) and the 7-point cubature of its remainder (derivation at "GGX polygon lights"). No
+   table; the recommended Beckmann light (shl_polygon_beckmann_subedges holds G2 at one direction).
+   nrm and view any non-zero vectors, nv >= 3 (C: any count; GLSL: at most SHLIGHT_POLYGON_MAX,
+   above it -1), alpha clamped to [1e-4, 1]. Degenerate inputs give 0 as shl_polygon_ggx (nv < 3,
+   NaN / Inf input, zero normal or view, view at or below the horizon, NaN alpha, a light wholly
+   below the horizon, a polygon through the shading point). Result >= 0. Accuracy against long
+   double cubature (tests/ref/arearef.h) on bench_ggx's sampler (bench/bench_beckmann.c,
+   docs/area-lights.md): median relative error 3e-6 to 1e-4 at roughness 0.05 to 1, p95 below 0.7 %,
+   max error / albedo
+   <= 4.9e-2 (grazing views, lights straddling the horizon; up to 6.7e-2 in test_microfacet's
+   grazing set). Cost: 33k x86 instructions per quad (shl_polygon_beckmann_subedges k = 8: ~220k).
+ */
+SHLIGHT_INLINE float shl_polygon_beckmann(const float (*v)[3], int nv, const float nrm[3],
+                                          const float view[3], float alpha);
+
+/* shl_polygon_beckmann_ndf: the integral over the polygon v[0..nv-1] (as shl_polygon_moment:
+   any winding, two-sided, clipped to u.axis > 0) of D(u) (u.axis), D the isotropic Beckmann
+   normal distribution about `axis`, D(t) = exp(-(1 - t^2) / (t^2 alpha^2)) / (pi alpha^2 t^4)
+   (normalised: the whole hemisphere gives 1). Stokes form of >>edge with the closed-form
+   radial CDF 1 - exp(-tan^2(T) / alpha^2) of a cap of half-angle T: along an edge's arc the
+   CDF is 1 - exp(-w^2 / (alpha^2 c^2 cos^2 theta)) (no elementary antiderivative: an Owen's T
+   function), integrated with the graded 5+5-node Gauss-Legendre rule of QUADRATURE. Error
+   (tests/test_microfacet, against long double cubature): max 1.0e-4 of the normalised lobe
+   for alpha in [1e-3, 1] (as QUADRATURE moments). Cost: one QUADRATURE moment (20 exp + 20 sin per
+   edge). The half-vector-space core of a Beckmann polygon light (shl_polygon_beckmann_subedges adds
+   the map). alpha clamped to [1e-4, 1]; NaN alpha and the degenerate inputs of shl_polygon_moment:
+   0.
+ */
+SHLIGHT_INLINE float shl_polygon_beckmann_ndf(const float (*v)[3], int nv, const float axis[3],
+                                              float alpha);
+
+/* shl_polygon_blinn_phong: the normalised Blinn-Phong microfacet specular from a unit-radiance
+   polygon light, integral over the polygon v[0..nv-1] (vertices relative to the shading point,
+   any winding, two-sided), clipped to the horizon u.nrm > 0, of f (nrm.l) dl with
+   f = D(h) / 4, D(h) = (e+2)/(2 pi) (nrm.h)^e, h = normalise(l + view): the microfacet BRDF
+   D G / (4 (n.l)(n.v)) with the implicit G = (n.l)(n.v), Fresnel 1. The usual engine form
+   (e+8)/(8 pi) (n.h)^e is this times (e+8)/(e+2). Computed in half-vector space ([AREA] sec.
+   8) over the light's image H(P), H's curved edges replaced by great arcs between the images
+   of k sub-edges per light edge (shli_half_splits); the integrand there, t^e (n.l)(h.v), is
+   integrated without a held factor (shli_half_image: two QUADRATURE moments and two line
+   integrals per arc). subedges = k in [1, SHLIGHT_HALF_K] (clamped): 1 = the vertices only,
+   2 = the paper's single split with its balancing heuristic, >= 3 = split at p plus graded
+   splits; -k = the same without the balancing heuristic. Error (of the albedo, docs/accuracy.md
+   "Microfacet polygon lights", 96 random quads x e = 1..1e4): worst case k = 2: 0.15, k = 4:
+   3.0e-2, k = 8: 8.3e-3. Cost: ~90k / 220k / 420k x86 instructions per quad at k = 2 / 4 / 8
+   (Phong QUADRATURE: 9.3k). view, nrm: any length (normalised inside). Degenerate: nv < 3, NaN /
+   Inf input, zero nrm or view, view at or below the horizon (nrm.view <= 0), light wholly below the
+   horizon, NaN exponent: 0; exponent clamped to [0, 1e6]. */
+SHLIGHT_INLINE float shl_polygon_blinn_phong(const float (*v)[3], int nv, const float nrm[3],
+                                             const float view[3], float exponent, int subedges);
+
+/* shl_polygon_beckmann_subedges: the Beckmann microfacet specular from a unit-radiance polygon
+   light (as shl_polygon_blinn_phong): integral over the polygon clipped to the horizon of D_B(h)
+   G2(l, v) / (4 (n.v)) dl, D_B as in shl_polygon_beckmann_ndf about nrm, G2 the height-correlated
+   Smith masking-shadowing 1 / (1 + Lambda(v) + Lambda(l)) with Beckmann's Lambda
+   (shli_beckmann_lambda), Fresnel 1. In half-vector space: the integral of D_B (h.v) over the
+   sub-edge image polygon without approximation beyond the split (shli_half_image), times G2 / (n.v)
+   with G2 held at the light point nearest the mirror direction. subedges as shl_polygon_blinn_phong
+   (the balancing uses m = alpha). Error (of the albedo, docs/accuracy.md): worst case 0.41 / 0.35 /
+   0.36 at k = 2 / 4 / 8 (alpha = 0.4, lights straddling the horizon, grazing views, large lights:
+   the held G2; without G2 k = 8 is within 1.1e-2); slivers 1.8e-3 at k = 8. Cost: ~48k / 115k /
+   220k instructions per quad at k = 2 / 4 / 8. alpha clamped to [1e-4, 1]; NaN alpha and the
+   degenerate inputs of shl_polygon_blinn_phong: 0. shl_polygon_beckmann computes the same integral
+   with G2 not held (worst 4.9e-2 of the albedo on bench_ggx's sampler, 33k instructions): prefer
+   it. */
+SHLIGHT_INLINE float shl_polygon_beckmann_subedges(const float (*v)[3], int nv, const float nrm[3],
+                                                   const float view[3], float alpha, int subedges);
+
+/* ---- brdf ---------------------------------------------------------------------------------- */
+/* windows of shl_sh_window */
+typedef enum shl_window_kind {
+  SHLIGHT_WINDOW_NONE = 0,
+  SHLIGHT_WINDOW_HANNING = 1,
+  SHLIGHT_WINDOW_LANCZOS = 2
+} shl_window_kind;
+
+#define SHLIGHT_WINDOW_NONE 0
+
+/* shl_zh_phong: ZH of the normalised Phong lobe (e+1)/(2 pi) max(0, cos t)^e about its axis:
+   out_zh[l] = K_l Lambda_l(e) (docs/math.md section 5; the printed products of [SSF] sec. 3.3.2).
+   exponent: any real >= 0 (non-integer too); NaN or negative: 0 (the uniform hemisphere
+   1/(2 pi)); above 1e30: 1e30, where every Lambda_l rounds to 1 (the Dirac limit, out_zh[l] =
+   K_l). out_zh[0] = K_0 = 0.2820948 always (unit integral). Accuracy: within one float rounding
+   of the exact value (binary128 quadrature) for e in [0, 1e4], n <= 64. out_zh: n floats.
+   Cost: O(n), one division per band. */
+SHLIGHT_INLINE void shl_zh_phong(int n, float exponent, float *out_zh);
+
+/* shl_zh_cosine_power: ZH of the unnormalised clamped cosine power max(0, cos t)^e:
+   out_zh[l] = 2 pi K_l Lambda_l(e) / (e+1) = sqrt(pi (2l+1)) int_0^1 x^e P_l(x) dx. Same
+   exponent domain and accuracy as shl_zh_phong (e = 0: the hemisphere indicator, out_zh[0] =
+   sqrt(pi); e = 1: the clamped cosine, out_zh = A_l K_l of docs/math.md section 6; above 1e30:
+   1e30, every coefficient about 2 pi K_l 1e-30). out_zh: n floats. Cost: O(n). */
+SHLIGHT_INLINE void shl_zh_cosine_power(int n, float exponent, float *out_zh);
+
+/* shl_zh_lambert: ZH of the Lambert lobe max(0, cos t) / pi (k_d = 1; the BRDF times the
+   cosine) about the normal: out_zh[l] = K_l Lambda_l(1) = (1/pi) K_l A_l with the
+   Ramamoorthi-Hanrahan A_l (correction E7 (docs/math.md section 12): [SSF] even-l formula is off by
+   2, 16, 192, ...): 0.2820948, 0.3257350, 0.1576958, 0, -0.0352618, 0, 0.0158923, ... Multiply by
+   pi for the clamped cosine (irradiance). Accuracy: one float rounding. out_zh: n floats. Cost:
+   O(n). */
+SHLIGHT_INLINE void shl_zh_lambert(int n, float *out_zh);
+
+/* shl_zh_blinn_phong: ZH of the normalised Blinn-Phong NDF times the cosine, D(h) (n . h) with
+   D = (e+2)/(2 pi) (n . h)^e, about the normal n (unit integral over the hemisphere of h):
+   the Phong lobe of exponent e + 1, exactly (a lobe over half vectors h; turning it into a
+   lobe over light directions is the BRDF tables' business). exponent: NaN or < 0: 0, then as
+   shl_zh_phong. out_zh: n floats. Cost: O(n). */
+SHLIGHT_INLINE void shl_zh_blinn_phong(int n, float exponent, float *out_zh);
+
+/* shl_zh_ggx: ZH of the GGX (Trowbridge-Reitz) NDF times the cosine about the normal,
+   D(h)(n . h) with D = alpha^2 / (pi ((n.h)^2 (alpha^2 - 1) + 1)^2) (unit integral:
+   out_zh[0] = K_0). alpha: the roughness (GGX alpha, not its square root); alpha < 1e-6, 0,
+   negative or NaN: the Dirac limit out_zh[l] = K_l (off by < 1e-7 K_l at alpha = 1e-6, l < 64);
+   alpha > 1e4: 1e4. Measured max |error| / K_l against a long double quadrature in t: 5.4e-8
+   (the float rounding of the output) for alpha in [1e-4, 1e2] and n in {1, 4, 8, 16, 32, 64}
+   (tests/test_brdf; the rule itself is good to ~1e-9 K_l). out_zh: n floats. Cost:
+   (36 + 2 ln(1/min(alpha, 1))) / h nodes, h = min(0.35, 6 / (n+1)), each one exp, one sqrt
+   and n Legendre steps: 116 nodes at n = 4 and 223 at n = 32 for alpha = 0.1. */
+SHLIGHT_INLINE void shl_zh_ggx(int n, float alpha, float *out_zh);
+
+/* shl_zh_beckmann: ZH of the Beckmann NDF times the cosine about the normal, D(h)(n . h) with
+   D = exp(-tan^2 t / alpha^2) / (pi alpha^2 cos^4 t). alpha: the Beckmann roughness (RMS
+   slope); degenerate alpha as shl_zh_ggx. Accuracy as shl_zh_ggx (max 7e-8 K_l). out_zh: n
+   floats. Cost: about 22 / h nodes (alpha-independent: 63 at n = 4, 121 at n = 32), each two
+   exp, one sqrt and n Legendre steps. */
+SHLIGHT_INLINE void shl_zh_beckmann(int n, float alpha, float *out_zh);
+
+/* shl_sh_dot: sum_i a[i] b[i], i < n^2: the integral over the sphere of the product of two
+   functions given by their SH ([HVL] eq. 4), accumulated in shli_real in four interleaved
+   partial sums (i mod 4: independent add chains, so the loop is not bound by the add
+   latency; the result does not depend on the compiler's reassociation). a, b: n^2 floats.
+   n < 1: 0. Cost: n^2 FMA. */
+SHLIGHT_INLINE float shl_sh_dot(int n, const float *a, const float *b);
+
+/* shl_sh_conv_zh: the integral of the SH function sh (n^2 coefficients) times the lobe with
+   ZH coefficients zh (n floats) turned to the axis w: sum_l sqrt(4 pi/(2l+1)) zh[l] sum_m
+   sh[l(l+1)+m] Y_lm(w) = shl_sh_dot(sh, shl_zh_rotate(zh, w)) without the rotated copy. w: any
+   finite non-zero vector (normalised in shli_real); zero, NaN or infinite: +z. n < 1: 0.
+   Cost: one SH evaluation (n^2 values, a float[SHLIGHT_MAX_COEFFS] on the stack) and n^2 FMA. */
+SHLIGHT_INLINE float shl_sh_conv_zh(int n, const float *sh, const float *zh, const float w[3]);
+
+/* shl_zh_dot_zh: the integral over the sphere of the product of two circularly symmetric
+   functions, ZH zh_a about the axis u and ZH zh_b about the axis v (n floats each):
+   sum_l zh_a[l] zh_b[l] P_l(u . v) (see >>brdf; equal to shl_sh_dot of the two rotated SH).
+   Use it when the lobe is circularly symmetric about its own axis (Phong about the mirror
+   direction, a microfacet lobe about the normal) and the radiance is a ZH (a sphere light's
+   cap, an HVL). u, v: any finite non-zero vectors; zero, NaN or infinite: +z. n < 1: 0.
+   Cost: O(n): two normalisations, n Legendre steps, 3n flops. */
+SHLIGHT_INLINE float shl_zh_dot_zh(int n, const float *zh_a, const float u[3], const float *zh_b,
+                                   const float v[3]);
+
+/* shl_zh_irradiance_quadratic: irradiance E = int L(w) max(0, n . w) dw of a 3-band ZH radiance
+   zh3 = (L_0, L_1, L_2) about an axis w_l, at a normal with z = w_l . n: [HVL] Appendix B,
+   E = sigma^T M sigma, sigma = (z, 1), M = ((c3 L2, c2 L1), (c2 L1, c4 L0 - c5 L2)), i.e.
+   c3 L2 z^2 + 2 c2 L1 z + c4 L0 - c5 L2 with the exact constants c2 = sqrt(3 pi)/6,
+   c3 = 3 sqrt(5 pi)/16, c4 = sqrt(pi)/2, c5 = sqrt(5 pi)/16 (the printed 6-digit values
+   differ by <= 1.1e-6). z outside [-1, 1]: clamped; NaN: 0. Cost: 5 flops. */
+SHLIGHT_INLINE float shl_zh_irradiance_quadratic(const float *zh3, float z);
+
+/* shl_zh_irradiance: the same for n bands, E(z) = sum_l A_l K_l L_l P_l(z), A_l = pi
+   Lambda_l(1) (docs/math.md section 6): the exact irradiance of the band-limited radiance (its
+   bands
+   >= n are zero, so the clamped cosine's are not needed). zh: n floats; z as
+   shl_zh_irradiance_quadratic. n < 1: 0. Cost: O(n). */
+SHLIGHT_INLINE float shl_zh_irradiance(int n, const float *zh, float z);
+
+/* shl_sh_window: multiplies band l of a ZH (io_zh, n floats) by a window sigma_l against
+   ringing (Sloan, "Stupid SH tricks"; [HVL] sec. 4.2): kind SHLIGHT_WINDOW_HANNING (1):
+   sigma_l = (1 + cos(pi l / width)) / 2; SHLIGHT_WINDOW_LANCZOS (2): sigma_l = sinc(l / width)
+   = sin(pi l / width) / (pi l / width); both 0 for l >= width. width: the window's band count,
+   > 0 (typically n, or n + 1 to keep the last band); <= 0 or NaN: n; +inf: sigma_l = 1 (the
+   limit; every band kept). Another kind
+   (SHLIGHT_WINDOW_NONE): unchanged. For an SH vector multiply its band l by the sigma_l that
+   this returns for a ZH of ones. Measured on a cap (half-angle 30 deg, n = 8; tests/test_brdf,
+   bench/out/brdf.md): see docs/accuracy.md. Cost: O(n). */
+SHLIGHT_INLINE void shl_sh_window(int n, shl_window_kind kind, float width, float *io_zh);
+
+/* shl_zh_bands_for: the smallest band count m in [1, n] whose truncation of the lobe zh (n
+   floats, n = the largest band count considered) has relative squared L2 error
+     sum_{m <= l < n} zh[l]^2 / sum_{l < n} zh[l]^2 <= target,
+   i.e. the fraction of the lobe's energy (over the sphere, within the first n bands) that the
+   dropped bands carry. (The bands >= n are not seen: pass a large n, e.g. 64, to measure
+   against the full lobe.) For an L2 error target eps relative to the lobe's norm, pass eps^2.
+   target NaN or < 0: n; a zero lobe: 1. Cost: O(n). */
+SHLIGHT_INLINE int shl_zh_bands_for(int n, const float *zh, float target);
+
+/* ---- hvl ----------------------------------------------------------------------------------- */
+/* shl_hvl_horizon: exact fraction H in [0, 1] of the cap of a sphere of radius r at distance
+   d in the direction w that lies above the plane of the normal nx (see >>hvl). nx, w: any
+   finite non-zero vectors (normalised in shli_real; zero, NaN or infinite: +z). d <= r (x on
+   or inside the sphere): the cap is the hemisphere about w (s = 1). r <= 0 or NaN, d NaN, or
+   a cap too small for float (s = 0): the point limit, 1 if nx . w > 0, 0 if < 0, 1/2 if 0.
+   Accuracy: max |error| 3.0e-8 (the float rounding of the output) against a long double
+   ring-by-ring quadrature of the cap, s from 1e-6 to 1, all crossing angles (tests/test_brdf).
+   Cost: 2 normalisations, ~8 sqrt, 2 own atan2. */
+SHLIGHT_INLINE float shl_hvl_horizon(const float nrm[3], const float w[3], float r, float d);
+
+#ifdef SHLIGHT_REFERENCE_FORMS
+/* shl_hvl_horizon_smoothstep: [HVL] eq. 22 with correction E8 (docs/math.md section 12) fixed: H =
+   S((a + pi/2 - clamp(beta, pi/2 - a, pi/2 + a)) / (2a)), S(x) = 3x^2 - 2x^3 on x clamped to [0,
+   1]. Same arguments and degenerate results as shl_hvl_horizon (a = 0: the point limit). Max abs
+   error against the exact H: 0.039 (a = 0.01) to 0.089 (a = 1.5) (docs/math.md section 6;
+   remeasured in tests/test_brdf). Cost: 2 normalisations, 2 own atan2. */
+SHLIGHT_INLINE float shl_hvl_horizon_smoothstep(const float nrm[3], const float w[3], float r,
+                                                float d);
+#endif
+
+/* shl_hvl_geometric: [HVL] eq. 21, G_j = max(0, n_j . (x - y)/|x - y|) H(n_x, w_j) /
+   (pi r^2), with H exact (exact != 0, shl_hvl_horizon) or the smoothstep variant (exact = 0).
+   x, nx: shading point and its normal; y, ny: the HVL's centre and normal (normals: any
+   non-zero vectors, normalised here). r <= 0 or NaN: 0 (no HVL). x == y: the direction +z
+   (then H is the hemisphere's). NaN or infinite positions: 0. Bounded by 1 / (pi r^2); a
+   value above FLT_MAX (possible for r < 3.1e-20 only) saturates to FLT_MAX, never inf. Cost:
+   about 3 normalisations and one H. */
+SHLIGHT_INLINE float shl_hvl_geometric(const float x[3], const float nrm[3], const float y[3],
+                                       const float light_nrm[3], float r, int exact);
+
+/* shl_hvl_emission: the reconstruction F' . Y(dir) of an SH emission function femit (n^2
+   floats) in the direction dir ([HVL] eq. 20 with dir = -w_j, from the HVL to x; any
+   finite non-zero vector, normalised; zero, NaN or infinite: +z). n = 1 (isotropic HVL):
+   femit[0] Y_0^0, no SH evaluation. Not clamped: a band-limited emission can be negative.
+   n < 1: 0. Cost: one SH evaluation (a float[SHLIGHT_MAX_COEFFS] on the stack) and n^2 FMA. */
+SHLIGHT_INLINE float shl_hvl_emission(int n, const float *femit, const float dir[3]);
+
+/* shl_hvl_radiance: [HVL] eq. 20, L_j = power (F' . Y(-w_j)) G_j(-w_j): the radiance that
+   HVL j (centre y, normal ny, radius r, emission femit: n^2 floats of SH in world axes) sends
+   to the shading point x with normal nx; exact selects H as in shl_hvl_geometric. Degenerate
+   inputs: those of shl_hvl_geometric give 0. Cost: shl_hvl_emission + shl_hvl_geometric. */
+SHLIGHT_INLINE float shl_hvl_radiance(int n, const float *femit, float power, const float x[3],
+                                      const float nrm[3], const float y[3],
+                                      const float light_nrm[3], float r, int exact);
+
+/* shl_hvl_contribution: [HVL] eq. 19, lj (L . F): the light that HVL j (centre y, radius
+   r, radiance lj from shl_hvl_radiance) reflects at x through a lobe F given by its SH fsh
+   (n^2 floats, world axes; e.g. the BRDF with the cosine for the outgoing direction),
+   L = the SH of the sphere's unit cap at x (shl_zh_cap about w_j). x inside the sphere: the
+   hemisphere about w_j; r <= 0, NaN or infinite: 0. Cost: shl_zh_cap + shl_sh_conv_zh. */
+SHLIGHT_INLINE float shl_hvl_contribution(int n, float lj, const float *fsh, const float x[3],
+                                          const float y[3], float r);
+
+/* shl_hvl_contribution_zh: the same with a circularly symmetric lobe, ZH fzh (n floats) about
+   the axis faxis ([HVL] sec. 6.3: Phong about the mirror direction, a microfacet lobe
+   about the normal): lj shl_zh_dot_zh(cap about w_j, fzh about faxis). Degenerate inputs as
+   shl_hvl_contribution (faxis zero, NaN or infinite: +z). Cost: shl_zh_cap + O(n). */
+SHLIGHT_INLINE float shl_hvl_contribution_zh(int n, float lj, const float *fzh,
+                                             const float faxis[3], const float x[3],
+                                             const float y[3], float r);
+
+/* shl_hvl_radius_neighbours: [HVL] eq. 23, r1 = sum w_i |p - pn_i| / sum w_i with
+   w_i = 1 / (|dist - dn_i| + eps): the HVL at p (distance dist to its primary light) and up
+   to 8 neighbours pn_i (distances dn_i) from the RSM. count: clamped to [0, 8]. eps: NaN or
+   below 1e-20: 1e-20. Neighbours with a non-finite position or distance are skipped; none
+   left: 0. Cost: count sqrt and divisions. */
+SHLIGHT_INLINE float shl_hvl_radius_neighbours(int count, const float p[3], float dist,
+                                               const float (*pn)[3], const float *dn, float eps);
+
+/* shl_hvl_radius_fov: [HVL] eq. 24-26, r2 = d (g + g^3 / 3), g = sqrt(2) fov / sqrt(m),
+   the Taylor form of d tan(g) (fov: the RSM's field of view in radians, m the number of
+   HVLs, d the HVL's distance to the light). Within 1 % absolute of tan for g <= 0.5786, i.e.
+   fov / sqrt(m) <= 0.41 (correction E9 (docs/math.md section 12); the paper's 0.2 is wrong). m <
+   1: 1. d or fov NaN or < 0: 0. A result above FLT_MAX (d near FLT_MAX, or a huge fov) saturates to
+   FLT_MAX, never inf; +inf d or fov: FLT_MAX. Cost: 1 sqrt, 8 flops. */
+SHLIGHT_INLINE float shl_hvl_radius_fov(float d, float fov, int hvl_count);
+
+/* shl_hvl_radius_fov_tan: eq. 25 itself, r2 = d tan(g), g as shl_hvl_radius_fov, with the own
+   sine (no GLSL tan); g clamped to [0, 1.5707] (tan <= 1.3e4). Same degenerate inputs and
+   saturation at FLT_MAX.
+   Cost: 1 sqrt, 2 short polynomials. */
+SHLIGHT_INLINE float shl_hvl_radius_fov_tan(float d, float fov, int hvl_count);
+
+/* ---- brdftab ------------------------------------------------------------------------------- */
+/* shl_sh_rotate_z: io_sh (n bands) becomes the SH of the function rotated by the angle phi
+   about +z, given c1 = cos(phi) and s1 = sin(phi) (unit: c1^2 + s1^2 = 1): for m > 0,
+   (a, b) = (io_sh[l(l+1)+m], io_sh[l(l+1)-m]) -> (a cos(m phi) - b sin(m phi),
+   a sin(m phi) + b cos(m phi)); m = 0 unchanged. cos(m phi), sin(m phi) by the angle-addition
+   recurrence in shli_real. Cost: 4 flops per coefficient. */
+SHLIGHT_INLINE void shl_sh_rotate_z(int n, float c1, float s1, float *io_sh);
+
+/* shl_brdf_table_cell: the samples and weights of the lookup at the outgoing direction wo
+   (local frame, any finite vector; wo_x = wo_y = 0, zero included, is normal incidence,
+   theta_o = 0, phi_o = 0; wo_z < 0 counts as the horizon). out_idx[j] is a sample index
+   s = p * n_theta + t (the table's F of sample s starts at float 2 s n^2, F' at (2 s + 1) n^2),
+   out_w[j] its weight, j < 4: (t0, p0), (t0 + 1, p0), (t0, p1), (t0 + 1, p1) with
+   p1 = (p0 + 1) mod n_phi; the weights add up to 1. Isotropic tables (n_phi = 1) have weight 0
+   at j = 2, 3 (indices repeat j = 0, 1); n_theta = 1 puts all weight on t = 0. The samples
+   cover theta_o in [0, 90] degrees (grid of >>brdftab): no clamping at the ends.
+   n_theta or n_phi outside [1, 4096] (SHLIGHT_BRDF_TABLE_MAX_SAMPLES): all indices 0, all
+   weights 0 (so n_theta n_phi < 2^24 and no index overflows an int). Cost: one atan2 and one
+   log (a second atan2 with n_phi > 1), ~40 flops. */
+SHLIGHT_INLINE void shl_brdf_table_cell(int n_theta, int n_phi, const float wo[3], int *out_idx,
+                                        float *out_w);
+
+/* shl_brdf_table_lookup: the SH (n bands) of F (which = 0) or F' (which = 1) at the outgoing
+   direction wo (local frame, see shl_brdf_table_cell), interpolated from the table tab (layout
+   of >>brdftab: n_theta * n_phi * 2 * n^2 floats) and, for an isotropic table (n_phi = 1),
+   rotated about z to wo's azimuth (shl_sh_rotate_z with cos, sin of atan2(wo_y, wo_x); no
+   rotation when wo_x = wo_y = 0). out_sh: n * n floats. GLSL: tab is
+   float[SHLIGHT_BRDF_TABLE_FLOATS] (the host defines it; shl_prelude.glsl defaults it to
+   2 * 90 * SHLIGHT_MAX_COEFFS, one isotropic table of 90 samples); a shader that keeps the
+   table in an SSBO calls shl_brdf_table_cell, sums the 4 weighted samples itself and then
+   shl_sh_rotate_z. which outside {0, 1} is taken as 0; n_theta or n_phi outside [1, 4096],
+   or a table of n_theta n_phi 2 n^2 >= 2^31 floats (beyond int indexing), give zeros.
+   Cost: the cell, 4 FMA per coefficient, the rotation (4 flops per coefficient). */
+SHLIGHT_INLINE void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int which,
+                                          const float *tab, const float wo[3], float *out_sh);
+
+/* ---- ssf ----------------------------------------------------------------------------------- */
+/* the analytic BRDFs (shl_brdf_params.model) */
+typedef enum shl_brdf_model {
+  SHLIGHT_BRDF_LAMBERT = 0,
+  SHLIGHT_BRDF_PHONG = 1,
+  SHLIGHT_BRDF_BLINN_PHONG = 2,
+  SHLIGHT_BRDF_BECKMANN = 3,
+  SHLIGHT_BRDF_GGX = 4
+} shl_brdf_model;
+
+typedef struct shl_brdf_params {
+  shl_brdf_model model; /* SHLIGHT_BRDF_* */
+  float kd;             /* diffuse albedo, >= 0 */
+  float ks;             /* specular scale, >= 0 */
+  float exponent;       /* Phong / Blinn-Phong exponent e in [0, SHLIGHT_BRDF_MAX_EXPONENT] */
+  float alpha_x;        /* Beckmann / GGX slope roughness along x, [SHLIGHT_BRDF_MIN_ALPHA, 4] */
+  float alpha_y;        /* along y (= alpha_x: isotropic) */
+  float f0;             /* Schlick reflectance at normal incidence, [0, 1] (1: no Fresnel) */
+} shl_brdf_params;
+
+/* shl_brdf_table: n bands, n_theta x n_phi outgoing samples, flags (SHLIGHT_BRDF_TABLE_ANISO
+   iff n_phi > 1), data: shl_brdf_table_size(n, n_theta, n_phi) floats owned by the caller, in
+   the layout of >>brdftab: data[((p * n_theta + t) * 2 + k) * n^2 + i]. */
+typedef struct shl_brdf_table {
+  int n;
+  int n_theta;
+  int n_phi;
+  int flags;
+  float *data;
+} shl_brdf_table;
+
+/* shl_merl: a measured isotropic BRDF in MERL's half-diff parametrisation [MPBM03]: dims
+   (n_theta_h, n_theta_d, n_phi_d), 90 x 90 x 180 in the MERL files; data: 3 * the product of
+   the dims floats owned by the caller, data[((c * n_theta_h + ih) * n_theta_d + id) * n_phi_d
+   + ip], channel c = 0 red, 1 green, 2 blue, the MERL scale factors (1, 1.15, 1.66) / 1500
+   applied, negative (invalid) samples kept as stored. */
+typedef struct shl_merl {
+  int n_theta_h;
+  int n_theta_d;
+  int n_phi_d;
+  float *data;
+} shl_merl;
+
+#define SHLIGHT_BRDF_LAMBERT 0
+/* shl_brdf_table.flags: bit 0 set for an anisotropic table (n_phi > 1); other bits 0. */
+#define SHLIGHT_BRDF_TABLE_ANISO 1
+
+#define SHLIGHT_BRDF_TABLE_VERSION 2
+#define SHLIGHT_BRDF_TABLE_HEADER 40
+#define SHLIGHT_BRDF_TABLE_GRID 1
+
+#define SHLIGHT_BRDF_TABLE_GRAZING 1e-6
+
+#define SHLIGHT_BRDF_MAX_EXPONENT 1e6f
+#define SHLIGHT_BRDF_MIN_ALPHA 1e-3f
+/* limits the loaders enforce (SHLIGHT_EDIMS beyond them) */
+#define SHLIGHT_BRDF_TABLE_MAX_SAMPLES 4096 /* n_theta, n_phi each */
+#define SHLIGHT_MERL_MAX_DIM 1024           /* each of the three MERL dimensions */
+
+/* shl_ssf_vpl_sh: adds to io_sh (n * n floats, n bands) the SH of the incoming radiance at the
+   receiver x due to one VPL at y with normal ny and flux `flux`: io_sh[i] += e Y_i(w), with
+   w = (y - x) / |y - x| and e = flux max(0, ny . -w) / (pi max(|y - x|^2, dmin^2)) (see >>ssf
+   for the constant). nx: the receiver's geometric normal, any length: a VPL strictly below its
+   plane (nx . w < 0) adds nothing (a normal-mapped shading normal must not see light through the
+   surface); nx = 0 turns the test off. ny: any finite non-zero vector (normalised; zero, NaN or
+   infinite: +z, the library's convention). dmin: the clamp distance (<= 0 or NaN: no clamp);
+   |y - x| is taken as at least 1e-18. Nothing is added when flux <= 0, NaN or infinite, x == y
+   (no direction), x or y NaN or infinite, or the VPL faces away (ny . -w <= 0). n < 1: nothing;
+   n > SHLIGHT_MAX_BANDS: see shli_bands. Accuracy: e to a few float roundings, times Y of
+   >>basis. Cost: 2 normalisations, one SH evaluation (a float[SHLIGHT_MAX_COEFFS] on the
+   stack) and n^2 FMA. */
+SHLIGHT_INLINE void shl_ssf_vpl_sh(int n, const float x[3], const float nrm[3], const float y[3],
+                                   const float light_nrm[3], float flux, float dmin, float *io_sh);
+
+/* shl_ssf_vpl_irradiance: the irradiance at x with the shading normal ns due to the same VPL,
+   e max(0, ns . w) with e and w as in shl_ssf_vpl_sh (the exact value that shl_ssf_irradiance
+   of the accumulated SH approaches as the band count grows). ns: any finite non-zero vector
+   (normalised; zero, NaN or infinite: +z). Degenerate inputs as shl_ssf_vpl_sh: 0. Cost: 3
+   normalisations, ~30 flops. */
+SHLIGHT_INLINE float shl_ssf_vpl_irradiance(const float x[3], const float nx[3], const float ns[3],
+                                            const float y[3], const float ny[3], float flux,
+                                            float dmin);
+
+/* shl_ssf_interleave: the VPL set of pixel (px, py) under n_int x m_int interleaved sampling of
+   nvpl VPLs (see >>ssf): out_range[0] = the first VPL s = (py mod m_int) n_int + (px mod
+   n_int), out_range[1] = the stride n_int m_int; the set is s, s + stride, ... below nvpl, and
+   the return value is its size, ceil((nvpl - s) / stride) (0 when s >= nvpl). Every
+   n_int x m_int tile of pixels uses every VPL exactly once. px, py: any int (negative ones
+   continue the pattern periodically). n_int, m_int: clamped to [1, 256]; nvpl < 0: 0.
+   out_range: 2 ints. Cost: a few integer operations. */
+SHLIGHT_INLINE int shl_ssf_interleave(int px, int py, int tile_x, int tile_y, int nvpl,
+                                      int *out_range);
+
+/* shl_ssf_weight: the discontinuity-aware filter weight ([SSF] sec. 2.3; IGI) between a
+   pixel's surface point p with geometric normal np and a neighbour's q with nq: 1 when both lie
+   on one smooth surface, else 0. The test: the normals (normalised) agree, np . nq >= min_cos,
+   and each point lies within max_dist of the other's tangent plane, |np . (q - p)| <= max_dist
+   and |nq . (p - q)| <= max_dist (symmetric in the two pixels; a plane distance, so a slanted
+   plane passes at any depth, a depth step or a silhouette does not). Give it the geometric
+   (interpolated) normals, not the normal-mapped ones, and a max_dist that scales with the
+   pixel's footprint, e.g. 0.02 times the eye distance. max_dist < 0 or NaN: 0 for every pair;
+   +infinity: no plane test. min_cos <= -1: no normal test; NaN: 0. p == q and np == nq: 1 for
+   max_dist >= 0 and min_cos <= 1. Normals zero: +z; NaN or infinite: 0; NaN or infinite
+   positions: 0. Cost: 2 normalisations, ~20 flops. */
+SHLIGHT_INLINE float shl_ssf_weight(const float p[3], const float p_nrm[3], const float q[3],
+                                    const float q_nrm[3], float max_dist, float min_cos);
+
+/* shl_ssf_irradiance: the irradiance E = int L(w) max(0, nrm . w) dw of the radiance with SH sh
+   (n * n floats, e.g. the filtered sum of shl_ssf_vpl_sh) at the normal nrm: sh convolved with
+   the clamped cosine turned to nrm, shl_sh_conv_zh(sh, shl_zh_cosine_power(n, 1)). A
+   Lambertian surface of albedo kd reflects kd E / pi. Exact for the band-limited radiance; for
+   a VPL's delta (e at w) the n-band clamped cosine gives e times a value that differs from
+   max(0, nrm . w) by at most 0.094 (n = 3, 4), 0.059 (n = 5, 6), 0.021 (n = 16), 0.0050
+   (n = 64), about 0.32 / n, the worst at the horizon nrm . w = 0, where it also rings below 0
+   (tests/test_ssf). nrm: any finite non-zero vector (normalised; zero, NaN or infinite: +z).
+   n < 1: 0. Cost: O(n) for the lobe, one SH evaluation and n^2 FMA (for RGB see >>ssf: one
+   rotation, three dots). */
+SHLIGHT_INLINE float shl_ssf_irradiance(int n, const float *sh, const float nrm[3]);
+
+/* shl_sh_eval_accurate: Y_i(d / |d|) for any d != 0, the input normalised in double: error
+   at the float rounding floor for every n. Zero / NaN / Inf d: Y(0,0,1). CPU only. */
+SHLIGHT_API void shl_sh_eval_accurate(int n, const float d[3], float *out_y);
+
+/* shl_sh_eval_batch: SoA batch of count unit directions (x[j], y[j], z[j]);
+   out_y[i * count + j] = Y_i. SIMD across directions (AVX-512, AVX2+FMA or SSE2 as compiled,
+   scalar with SHLIGHT_NO_SIMD). The vector path runs the recurrence in float (Reinsch form,
+   input renormalised per lane); accuracy in docs/accuracy.md. count <= 0: nothing written. CPU
+   only. Cost (AVX-512, output in L1, count a multiple of 32): per direction ~0.1 of the plain float
+   loop for 7..16 bands, 0.05-0.12 for n <= 6. The output is n^2 count floats written once:
+   beyond L1 the stores bound it (n = 16: 0.22-0.28 of the loop from count 100 on). When it
+   exceeds 256 KiB, count is a multiple of the SIMD width and out_y is float-aligned, the rows
+   go out by streaming (non-temporal) stores, so that any count costs about the same per
+   direction (n = 10: 0.26-0.30 of the loop at count 1000 .. 65536); the values then sit in
+   memory, not in the caches. */
+SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float *y, const float *z,
+                                   float *out_y);
+
+/* shl_brdf_eval: f_s(w_o, w_i) of an analytic BRDF (models above), evaluated in double. wo, wi
+   unit, local frame; 0 when either is at or below the surface (z <= 0), for an unknown model,
+   and for alpha <= 0 (microfacet models). Reciprocal: f(wo, wi) = f(wi, wo) up to rounding.
+   Cost: ~30 flops (Beckmann: two erf). */
+SHLIGHT_API float shl_brdf_eval(const shl_brdf_params *brdf, const float wo[3], const float wi[3]);
+
+/* shl_brdf_table_size: floats of a table of n bands and n_theta x n_phi samples:
+   n_phi n_theta 2 n^2; 0 for n outside [1, SHLIGHT_MAX_BANDS], n_theta or n_phi outside
+   [1, SHLIGHT_BRDF_TABLE_MAX_SAMPLES], or a size whose SHLT file would not fit in size_t.
+   The kernels index tables with int: shl_brdf_table_lookup gives zeros for a table of
+   n_theta n_phi 2 n^2 >= 2^31 floats. */
+SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
+
+/* shl_brdf_table_build: fills t->data (t->n, n_theta, n_phi, flags set by the caller, data
+   holding shl_brdf_table_size floats) with the SH of F and F' of the analytic BRDF at each
+   outgoing sample (layout and sampling of >>brdftab). Quadrature over w_i, sums in double:
+   - the kd / pi term: Gauss-Legendre in cos(theta_i) (n/2 + 2 nodes) x uniform phi_i (n + 2
+     nodes), exact for it (its products with Y are polynomials of degree <= n);
+   - the specular term (ks > 0), in the frame whose pole is the mirror direction r of w_o:
+     panels of the angle g from r with break points at 2, 6, 18, 54 lobe widths (width:
+     1/sqrt(e + 1) Phong, 2/sqrt(e + 2) Blinn-Phong, 2 max(alpha) microfacet), where the circle
+     of angle g about r first meets the horizon (g = pi/2 - theta_o) and where it leaves it;
+     quad_order Gauss-Legendre nodes per panel after the substitution g = g0 + (g1 - g0) s^2
+     (3 - 2 s), which is smooth through the square-root ends of the arc length; on each circle
+     only the arc above the horizon (end points in closed form): 2 quad_order uniform nodes
+     round a whole circle, else panels at 0, +-w/2, +-3w/2, +-9w/2 and graded towards the arc's
+     ends (pm - L/4, /16, /64), quad_order Gauss-Legendre nodes each. Every panel's integrand is
+     smooth, so the error falls geometrically with quad_order even for sharp lobes and grazing
+     w_o (docs/brdf-tables.md has the error against quad_order).
+   Outgoing samples on the grid of >>brdftab (shl_brdf_table_theta), the last one at
+   cos theta_o = SHLIGHT_BRDF_TABLE_GRAZING. Y by shl_sh_eval in float at the float-rounded
+   node; the table rounds to float. Stack: about 13.5 KB deep (gcc -O2 -fstack-usage: 12.6 KB in
+   the build loop; the quadrature nodes are made on the fly, no per-arc scratch arrays).
+   out_err_est (may be NULL; NULL also skips the extra passes): an estimate of the returned
+   table's largest absolute error (table units) from the tables at quad_order / 4 and / 2: per
+   sample, with e1 = max |T(q/2) - T(q/4)| and e2 = max |T(q) - T(q/2)|, e2^2.5 / e1^1.5 while
+   e2 < e1 (geometric convergence), else e2; at least 2^-24 max |T| (the float rounding of the
+   table); the max over the samples. Measured against an independent long-double projection
+   (GGX alpha 0.05 .. 1, Phong 1000, theta_o 30 .. 89.5 deg, q 32 .. 128): 0.65 .. 5.5 times
+   the true error (docs/brdf-tables.md); not a guaranteed bound. Accuracy: Phong / Blinn-Phong
+   reach the float rounding floor at q = 32 up to e = 1e6, GGX / Beckmann alpha >= 0.05 at
+   q = 128 (q = 64: 2e-4 near grazing); alpha < 0.05 near grazing does not converge within
+   q = 256 (alpha 0.01 at 89.5 deg: 2.6e-2 at q = 128). quad_order in [2, 256].
+   Returns SHLIGHT_EINVAL (data untouched) for NULL t / data / brdf, n, n_theta, n_phi out of
+   range (see shl_brdf_table_size), flags != (n_phi > 1 ? ANISO : 0), an unknown model,
+   negative or non-finite kd / ks, a Phong / Blinn-Phong exponent outside [0,
+   SHLIGHT_BRDF_MAX_EXPONENT] (larger ones, up to 1e27, used to give non-finite tables), alpha
+   outside [SHLIGHT_BRDF_MIN_ALPHA, 4] for Beckmann / GGX, f0
+   outside [0, 1] (microfacet models), quad_order out of range; SHLIGHT_ENOMEM when n > 16 and
+   the 2 n^2-double accumulator (on the stack up to 16 bands) cannot be allocated. Cost: per
+   sample, up to ~12 panels x q x (2q .. 14q) nodes (x 1.31 with out_err_est), each one BRDF
+   evaluation, one shl_sh_eval and 2 n^2 FMA. Measured, 90 samples, n = 9, one core: q = 32
+   0.19 s (GGX 1) .. 0.69 s (GGX 0.05), q = 64 0.75 .. 2.7 s (Phong 1000: 0.55, 2.3 s). */
+SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_params *brdf,
+                                            int quad_order, float *out_err_est);
+
+/* shl_brdf_table_theta: theta_o (radians) of sample t of an n_theta-sample table (the grid of
+   >>brdftab: 0 at t = 0, pi/2 at t = n_theta - 1; n_theta = 1: 0), float-rounded from a double
+   bisection of the grid variable. -1 for n_theta outside [1, SHLIGHT_BRDF_TABLE_MAX_SAMPLES] or
+   t outside [0, n_theta). Cost: ~60 iterations of one log. */
+SHLIGHT_API float shl_brdf_table_theta(int n_theta, int t);
+
+/* shl_brdf_table_write: the SHLT file of t into buf (capacity cap bytes); *out_len (may not be
+   NULL) = its length, 40 + 4 x shl_brdf_table_size bytes. Format version 2 (little-endian):
+     0  "SHLT"                4  uint32 version (2)       8  int32 bands n
+     12 int32 n_theta         16 int32 n_phi              20 uint32 flags
+     24 uint32 payload floats (= n_phi n_theta 2 n^2)     28 uint32 grid (1: the outgoing
+        grid of >>brdftab)    32 uint32 reserved (0)      36 uint32 CRC-32 (IEEE 802.3,
+        reflected, as zlib's crc32) of bytes 0..35 followed by the payload
+     40 payload: the table's data, float32 little-endian, in the >>brdftab layout.
+   (Version 1, 32-byte header, no grid field, sampled theta_o at cell centres; not written.)
+   Returns SHLIGHT_EINVAL for NULL t / t->data / out_len or an invalid table (dims, flags),
+   SHLIGHT_ENONFINITE for a NaN / Inf in the data (nothing written), SHLIGHT_ESTORAGE (with
+   *out_len set) when buf is NULL or cap too small. Cost: one pass over the data. */
+SHLIGHT_API shl_result shl_brdf_table_write(const shl_brdf_table *t, void *buf, size_t cap,
+                                            size_t *out_len);
+
+/* shl_brdf_table_read: parses an SHLT file of len bytes at buf into *out, the payload copied to
+   storage (storage_floats floats; out->data = storage). Checks, in this order, each with its
+   error: len < 8: SHLIGHT_ELENGTH; magic: SHLIGHT_EMAGIC; version other than 2 (version 1
+   files hold the cell-centred grid of earlier releases, which the lookup no longer reads:
+   rebuild them): SHLIGHT_EVERSION; len < 40: SHLIGHT_ELENGTH; n, n_theta, n_phi out of
+   range, flags inconsistent with n_phi or with unknown bits, payload floats != n_phi n_theta
+   2 n^2, grid != 1 or reserved != 0: SHLIGHT_EDIMS; len != 40 + 4 x payload floats:
+   SHLIGHT_ELENGTH (truncated, or trailing bytes); CRC: SHLIGHT_ECHECKSUM; a NaN / Inf payload
+   float: SHLIGHT_ENONFINITE; storage NULL or storage_floats too small: SHLIGHT_ESTORAGE, with
+   out->n, n_theta, n_phi, flags set and out->data NULL, so that a caller can call with (NULL, 0) to
+   learn the size. NULL out or buf: SHLIGHT_EINVAL. Never reads outside [buf, buf + len) or writes
+   outside storage; on any error storage is untouched. Cost: two passes over the payload. */
+SHLIGHT_API shl_result shl_brdf_table_read(const void *buf, size_t len, float *storage,
+                                           size_t storage_floats, shl_brdf_table *out_table);
+
+/* shl_merl_read: parses a MERL binary BRDF of len bytes at buf (int32 n_theta_h, n_theta_d,
+   n_phi_d little-endian, then 3 x their product float64 little-endian: red, green, blue, each
+   [theta_h][theta_d][phi_d]) into *out, the samples scaled and stored as floats in storage
+   (storage_floats floats). Errors, in this order: len < 12: SHLIGHT_ELENGTH; a dimension < 1
+   or > SHLIGHT_MERL_MAX_DIM: SHLIGHT_EDIMS; len != 12 + 24 x product: SHLIGHT_ELENGTH; a NaN /
+   Inf sample (or one beyond float range once scaled): SHLIGHT_ENONFINITE; storage NULL / too small:
+   SHLIGHT_ESTORAGE (out's dims set, out->data NULL); NULL out / buf: SHLIGHT_EINVAL. Never reads
+   outside the buffer; storage untouched on error. Cost: two passes over the samples. */
+SHLIGHT_API shl_result shl_merl_read(const void *buf, size_t len, float *storage,
+                                     size_t storage_floats, shl_merl *out_merl);
+
+/* shl_merl_eval: channel c (0 red, 1 green, 2 blue) of the measured BRDF at (wo, wi) (unit,
+   local frame; 0 when either z <= 0): the half-diff angles of [MPBM03] (theta_h, theta_d,
+   phi_d folded to [0, pi) by reciprocity), index coordinates u_h = sqrt(theta_h / (pi/2)) n_theta_h
+   (MERL's non-linear theta_h index), u_d = theta_d / (pi/2) n_theta_d, u_p = phi_d / pi n_phi_d,
+   sample i at coordinate i (MERL's convention: the index is the floor of the coordinate),
+   trilinear between samples (clamped at the ends of theta_h and theta_d, periodic in phi_d).
+   Reconstruction (for grazing directions): the trilinear interpolant is of f cos(theta_h)
+   cos(theta_d) = f (cos_i + cos_o) / 2, divided by the query's factor (floored at 1e-6), so
+   that the 1 / (cos_i + cos_o) growth of f at grazing is carried by the factor; only valid
+   samples (> 0; MERL marks invalid ones negative) enter the sum, their weights renormalised
+   to 1; beyond the last theta_d sample, linear extrapolation from the last two layers when
+   their 8 samples are valid, else the last layer held; a cell without any valid sample takes
+   the nearest theta_d layer below that has one (held along theta_d); 0 if none.
+   Invalid m or c: 0. Cost: ~100 flops, 2 acos, 2 atan2. */
+SHLIGHT_API float shl_merl_eval(const shl_merl *m, int c, const float wo[3], const float wi[3]);
+
+/* shl_brdf_table_build_merl: shl_brdf_table_build for channel c of a measured BRDF (tables
+   must be isotropic: n_phi = 1, flags 0): the whole BRDF by the specular-frame quadrature,
+   lobe width 0.1 rad. Errors as shl_brdf_table_build (EINVAL also for an invalid m / c). */
+SHLIGHT_API shl_result shl_brdf_table_build_merl(shl_brdf_table *t, const shl_merl *m, int c,
+                                                 int quad_order, float *out_err_est);
+
+/* ================================================================================================
+   END OF THE API: stop here if you only want the API. The implementation follows.
+   ================================================================================================
+ */
+
 /* >>numerics --------------------------------------------------------------------------------
    Domains and degenerate inputs (each has a named test in tests/):
    - shl_sh_eval: d unit to float precision is evaluated as given (the kernel corrects the
@@ -118,12 +1165,12 @@
    - shl_sh_eval_accurate, shl_sh_eval_grad, shl_sh_eval_grad_spherical: any finite d != 0,
      from denormals to FLT_MAX (the input is scaled by its largest component first). Zero,
      NaN or infinite d: the values of d = (0,0,1) and a zero gradient.
-   - shl_sh_grad_from_spherical: the Jacobian of the paper (seed 003 eq. 23) divides by
+   - shl_sh_grad_from_spherical: the Jacobian of the paper ([GRAD] eq. 23) divides by
      sin(theta); at an exact pole (x = y = 0) it returns 0 for every entry.
    - n < 1: nothing is written. n > SHLIGHT_MAX_BANDS: taken as SHLIGHT_MAX_BANDS. Debug and
      release builds behave the same (no assertion).
    Accuracy (float output, max abs error against a binary128 reference, measured by
-   tests/test_basis and bench/; README has the table): the Legendre part runs in shli_real
+   tests/test_basis and bench/; docs/accuracy.md has the table): the Legendre part runs in shli_real
    (double in C, float in GLSL) with a Reinsch-type modified recurrence in t = 1 - |z|, which
    keeps the error growth linear in l at the poles instead of quadratic.
 */
@@ -167,29 +1214,14 @@ typedef double shli_real;
 #define SHLIGHT_FSQRT(x) shli_fsqrt(x)
 #define SHLIGHT_FLOG1P(x) shli_flog1p(x)
 #define SHLIGHT_FEXP(x) shli_fexp(x)
-/* edge-integral methods (shl_edge_method, shl_polygon_moment) and polygon limits. GLSL has no
-   enums: there the selectors are #defines of the same values and shl_edge_method is int. A
-   value outside the enumerators is accepted and documented at each function (AUTO, or EXACT
-   for shl_edge_integral). */
-typedef enum shl_edge_method {
-  SHLIGHT_EDGE_EXACT = 0,
-  SHLIGHT_EDGE_LORENTZ = 1,
-  SHLIGHT_EDGE_LORENTZ_PEARSON = 2,
-  SHLIGHT_EDGE_ELLIPSOID = 3,
-  SHLIGHT_EDGE_AUTO = 4,
-  SHLIGHT_EDGE_QUADRATURE = 5,
-  SHLIGHT_EDGE_FAST = 6,
-  SHLIGHT_EDGE_INT_MIN_ = -2147483647 - 1 /* not a method: makes the type a signed int that
-                                             holds any int (no sign conversion in C++) */
-} shl_edge_method;
-#define SHLIGHT_POLYGON_MAX 8 /* vertices of a polygon light in one piece (GLSL: at most) */
 #define SHLIGHT_POLYGON_ANY 1 /* C: any nv >= 3 (fan pieces); GLSL 0: above the max gives -1 */
 #define SHLIGHT_CLIP_MAX 20   /* after two plane clips of a non-convex 8-gon (<= 2.25 nv) */
 #define SHLIGHT_EDGE_STOKES_ADAPT 105 /* internal: EXACT's adaptive Stokes rule */
 #define SHLIGHT_ADAPT_LEVELS 7        /* its most halvings (128 panels of 5 nodes per half-arc) */
 #define SHLIGHT_ADAPT_TOL 1.0e-9      /* its stop: two successive levels this close (GLSL 2e-6) */
-#define SHLIGHT_EDGE_FAST_ON 1 /* GLSL: 0 unless the host defines it (compile cost, README) */
-#define SHLIGHT_LANES 8        /* edges per block of the FAST edge loop (GLSL: 1) */
+#define SHLIGHT_EDGE_FAST_ON                                                                       \
+  1                     /* GLSL: 0 unless the host defines it (compile cost, docs/accuracy.md) */
+#define SHLIGHT_LANES 8 /* edges per block of the FAST edge loop (GLSL: 1) */
 #define SHLIGHT_FAST_PAD (SHLIGHT_CLIP_MAX + SHLIGHT_LANES)
 #define SHLIGHT_HALF_K                                                                             \
   8 /* sub-edges per light edge in half-vector space (shl_polygon_blinn_phong) */
@@ -3254,10 +4286,10 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
 /* Across-m SIMD core (C only, AVX-512): one 16-lane register holds X_l^m of every order m of
    band l, so a band costs one Reinsch step (4 vector ops) and its outputs two multiplies, one
    lane reversal and two masked stores. Float lanes: the Reinsch form keeps the float error
-   within the stated targets (README, tests/test_basis); the scalar kernel (double) stays the
-   reference and SHLIGHT_NO_SIMD selects it. Used by shl_sh_eval for 7 <= n <= 64 (n <= 16:
-   the rescaled step of SHLI_SH_LANES_S, 256-bit lanes with AVX-512VL), and the Horner forms
-   across the outputs for n = 4..6 (AVX-512VL). */
+   within the stated targets (docs/accuracy.md, tests/test_basis); the scalar kernel (double) stays
+   the reference and SHLIGHT_NO_SIMD selects it. Used by shl_sh_eval for 7 <= n <= 64 (n <= 16: the
+   rescaled step of SHLI_SH_LANES_S, 256-bit lanes with AVX-512VL), and the Horner forms across the
+   outputs for n = 4..6 (AVX-512VL). */
 #if !defined(SHLIGHT_NO_SIMD) && defined(__AVX512F__)
 #define SHLIGHT_SIMD_EVAL 1
 #include <immintrin.h>
@@ -4960,7 +5992,7 @@ SHLIGHT_INLINE void shli_sh_eval_small(int n, float dx, float dy, float dz, floa
 #endif
 #endif
   switch (n) {
-  /* up to 6 bands, float Horner forms straight from d are within the targets (README): no
+  /* up to 6 bands, float Horner forms straight from d are within the targets (docs/accuracy.md): no
      normalisation, no division, no double */
   case 1:
     shli_sh_poly_1(dx, dy, dz, out_y);
@@ -5050,15 +6082,6 @@ SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float 
 #endif
 }
 
-/* shl_sh_eval: the real SH basis Y_i(d), i < n * n, of n bands at the direction d.
-   d: a unit vector to float precision (| |d|^2 - 1 | <= 1e-6, which every float-normalised
-   vector meets) is evaluated as given; any other finite non-zero d is normalised first (in
-   double, scaled by its largest component: denormal and huge d work; about 10 ns more); a
-   zero, NaN or infinite d gives Y(0, 0, 1). n: bands, 1..SHLIGHT_MAX_BANDS; n > max is taken
-   as max, n < 1 writes nothing (debug and release alike). out_y: n * n floats.
-   Accuracy: max abs error 3e-7 (n <= 4), 2e-6 (n <= 16), 1e-5 (n <= 32) against binary128.
-   Cost: 1 ns (n = 2) to 32 ns (n = 16) on Zen 4, see docs/speed.md; in C, n > 6 runs out of
-   line in the implementation (define SHLIGHT_IMPLEMENTATION in one file). */
 SHLIGHT_INLINE void shl_sh_eval(int n, const float d[3], float *out_y) {
   shli_sh_eval_xyz(n, d[0], d[1], d[2], out_y);
 }
@@ -6430,14 +7453,6 @@ SHLIGHT_CPU_INLINE int shli_sh_eval_grad_avx512(int n, const float d[3], float *
 
 #endif
 
-/* shl_sh_eval_grad: Y_i(d / |d|) and its gradient with respect to d, out_grad[i][k] =
-   dY_i / dd_k, for any finite d != 0 (scaled by its largest component first, so denormal and
-   huge inputs work). Zero, NaN or infinite d: the values at (0,0,1) and a zero gradient.
-   Finite at the poles. The gradient scales like l / |d|: below |d| ~ 1e-38 the entries whose
-   exact value exceeds FLT_MAX are +-inf (IEEE overflow, correct sign); every entry that fits in
-   a float is within the stated accuracy. n as shl_sh_eval. out_y: n * n floats, out_grad:
-   n * n float[3]. Accuracy: values as shl_sh_eval, gradient 1.3e-6 of max |grad| at n = 16.
-   Cost: about 4x shl_sh_eval (docs/speed.md). */
 SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, float (*out_grad)[3]) {
   shli_real x = SHLIGHT_REAL(d[0]);
   shli_real y = SHLIGHT_REAL(d[1]);
@@ -6518,11 +7533,7 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
   shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, ib, out_grad);
 }
 
-/* shl_sh_eval_grad_spherical: the paper's form (seed 003 sections 3-4, errata E1-E3 of
-   MATH.md fixed): Y_i(d / |d|), dY_i / dtheta and dY_i / dphi, by Sloan's recurrence for X
-   and the normalised T recurrence Z_l = alpha (cos Z_{l-1} - sin X_{l-1}) - beta Z_{l-2}.
-   Any finite d != 0; zero / NaN / Inf d: as (0,0,1). At an exact pole phi is taken as 0.
-   Kept as the comparison point of shl_sh_eval_grad in tests and bench. */
+#ifdef SHLIGHT_REFERENCE_FORMS
 SHLIGHT_INLINE void shl_sh_eval_grad_spherical(int n, const float d[3], float *out_y,
                                                float *out_dtheta, float *out_dphi) {
   shli_real x = SHLIGHT_REAL(d[0]);
@@ -6630,11 +7641,9 @@ SHLIGHT_INLINE void shl_sh_eval_grad_spherical(int n, const float d[3], float *o
     }
   }
 }
+#endif
 
-/* shl_sh_grad_from_spherical: Cartesian gradient from the spherical partials (seed 003
-   eq. 23): grad Y = dY/dtheta grad(theta) + dY/dphi grad(phi). Singular at the poles; at an
-   exact pole (x = y = 0) or for d = 0 every entry is 0. Comparison point only: use
-   shl_sh_eval_grad. */
+#ifdef SHLIGHT_REFERENCE_FORMS
 SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const float *dtheta,
                                                const float *dphi, float (*out_grad)[3]) {
   shli_real x = SHLIGHT_REAL(d[0]);
@@ -6666,23 +7675,22 @@ SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const fl
     out_grad[i][2] = dtheta[i] * tz;
   }
 }
+#endif
 
 /* >>zonal -----------------------------------------------------------------------------------
-   Zonal harmonics (ZH) of a uniform spherical cap and the ZH -> SH rotation (MATH.md sec. 2,
-   seed 003 eq. 9-11, 14-16 with erratum E4 applied). A sphere of radius r seen from distance d
-   covers the cap of half-angle a, s = sin a = min(r / d, 1), alpha = cos a. The unit-radiance
-   cap about +z projects onto band l as
-     L_0 = sqrt(pi) (1 - alpha)  = sqrt(pi) s^2 / (1 + alpha)
-     L_l = sqrt(pi / (2l+1)) (P_{l-1}(alpha) - P_{l+1}(alpha))
-         = sqrt(pi (2l+1)) / (l (l+1)) s^2 P'_l(alpha)                       (l >= 1)
-   The second forms have no cancellation: alpha = sqrt((d - r)(d + r)) / d, and
-   P'_{l+1} = P'_{l-1} + (2l+1) P_l sums positive terms near alpha = 1 (small caps). The printed
-   first forms lose everything to 1 - alpha for small caps (float: every L_l = 0 below
-   s = 2.4e-4); shl_zh_cap_printed keeps them as the comparison point.
-   Common domain of the cap kernels: r and d in float; r <= 0 or NaN (no light), NaN or
-   infinite d: every output 0. d <= r (the point on or inside the sphere): the hemisphere,
-   s = 1, alpha = 0, which is the limit at the sphere's surface. Internal precision shli_real
-   (double in C, float in GLSL). */
+   Zonal harmonics (ZH) of a uniform spherical cap and the ZH -> SH rotation (docs/math.md section
+   2, [GRAD] eq. 9-11, 14-16 with correction E4 (docs/math.md section 12) applied). A sphere of
+   radius r seen from distance d covers the cap of half-angle a, s = sin a = min(r / d, 1), alpha =
+   cos a. The unit-radiance cap about +z projects onto band l as L_0 = sqrt(pi) (1 - alpha)  =
+   sqrt(pi) s^2 / (1 + alpha) L_l = sqrt(pi / (2l+1)) (P_{l-1}(alpha) - P_{l+1}(alpha)) = sqrt(pi
+   (2l+1)) / (l (l+1)) s^2 P'_l(alpha)                       (l >= 1) The second forms have no
+   cancellation: alpha = sqrt((d - r)(d + r)) / d, and P'_{l+1} = P'_{l-1} + (2l+1) P_l sums
+   positive terms near alpha = 1 (small caps). The printed first forms lose everything to 1 - alpha
+   for small caps (float: every L_l = 0 below s = 2.4e-4); shl_zh_cap_printed keeps them as the
+   comparison point. Common domain of the cap kernels: r and d in float; r <= 0 or NaN (no light),
+   NaN or infinite d: every output 0. d <= r (the point on or inside the sphere): the hemisphere, s
+   = 1, alpha = 0, which is the limit at the sphere's surface. Internal precision shli_real (double
+   in C, float in GLSL). */
 
 /* Per band l < 64: (2l+1)/(l+1), l/(l+1), 1/(l(l+1)) (0 for l = 0), sqrt(4 pi/(2l+1)),
    sqrt(pi(2l+1)): the Legendre recurrence and the ZH normalisations without divisions
@@ -6833,11 +7841,6 @@ SHLIGHT_INLINE void shli_cap_frame(shli_real dx, shli_real dy, shli_real dz, shl
   }
 }
 
-/* shl_zh_cap: ZH coefficients L_l, l < n, of the unit-radiance cap that a sphere of radius r
-   subtends at distance d (its centre on +z): out_zh[l] = int_cap Y_l^0. Stable s^2 P'_l form
-   (see >>zonal), any s from 1e-30 to 1: relative error at the float rounding floor in C.
-   Small caps: L_l -> pi s^2 K_l (a point light). r <= 0, NaN r or d, infinite d: zeros;
-   d <= r: the hemisphere. out_zh: n floats. Cost: O(n), one sqrt and 2 divisions per band. */
 SHLIGHT_INLINE void shl_zh_cap(int n, float r, float d, float *out_zh) {
   shli_real g[8];
   shli_real f;
@@ -6876,12 +7879,7 @@ SHLIGHT_INLINE void shl_zh_cap(int n, float r, float d, float *out_zh) {
   }
 }
 
-/* shl_zh_cap_da: derivative of shl_zh_cap with respect to the half-angle a,
-   out_dzh[l] = dL_l / da = sqrt(pi (2l+1)) P_l(alpha) s (MATH.md sec. 2: the paper's eq. 16 is
-   O'_l = -(2l+1) P_l, no division by alpha^2 - 1). Chain with da/dd = -s / (d alpha), or use
-   shl_sphere_light_grad, which does it for the full SH. Same domain as shl_zh_cap; d <= r: the
-   value at a = pi/2 (s = 1, alpha = 0). out_dzh: n floats. Cost: O(n), one sqrt per band. */
-SHLIGHT_INLINE void shl_zh_cap_da(int n, float r, float d, float *out_dzh) {
+SHLIGHT_INLINE void shl_zh_cap_derivative(int n, float r, float d, float *out_dzh) {
   shli_real g[8];
   shli_real s;
   shli_real al;
@@ -6908,12 +7906,7 @@ SHLIGHT_INLINE void shl_zh_cap_da(int n, float r, float d, float *out_dzh) {
   }
 }
 
-/* shl_zh_cap_printed: the printed form of seed 003 eq. 9 / seed 000 eq. 14, as a shader would
-   write it, all in float: alpha = sqrt(1 - s^2) (= cos(asin(s))), L_0 = sqrt(pi)(1 - alpha),
-   L_l = sqrt(pi / (2l+1)) (P_{l-1}(alpha) - P_{l+1}(alpha)). Comparison point for tests and
-   bench only (erratum E4): relative error 1.4e-4 at s = 1e-2, 4.6e-2 at s = 1e-3, and every
-   L_l is 0 for s < 2.4e-4. Use shl_zh_cap. Same domain and degenerate results as shl_zh_cap.
-   out_zh: n floats. Cost: O(n). */
+#ifdef SHLIGHT_REFERENCE_FORMS
 SHLIGHT_INLINE void shl_zh_cap_printed(int n, float r, float d, float *out_zh) {
   float s = 0.0f;
   float al;
@@ -6946,15 +7939,8 @@ SHLIGHT_INLINE void shl_zh_cap_printed(int n, float r, float d, float *out_zh) {
     fl = fl + 1.0f;
   }
 }
+#endif
 
-/* shl_zh_rotate: SH of a circularly symmetric function with ZH coefficients zh about the axis
-   dir (seed 003 eq. 11): out_sh[l (l+1) + m] = sqrt(4 pi / (2l+1)) Y_l^m(dir) zh[l]. dir: any
-   finite non-zero vector (normalised in shli_real); zero, NaN or infinite dir: the axis +z.
-   zh: n floats, any finite values: |out_sh[l (l+1) + m]| <= |zh[l]| (Unsold's bound), so the
-   output is finite for finite zh up to FLT_MAX (no intermediate overflow; a value that float
-   rounding carries past FLT_MAX saturates to +-FLT_MAX). Not finite input: a NaN zh[l] gives
-   NaN in band l, an infinite one +-FLT_MAX or NaN (where Y = 0) in band l only. out_sh: n * n
-   floats. Cost: one shl_sh_eval plus n sqrt and n * n mul (two in a band with |zh| >= 1e30). */
 SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], float *out_sh) {
   shli_real g[8];
   shli_real t;
@@ -6994,29 +7980,6 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
   }
 }
 
-/* shl_sh_rotate: out_sh (n * n floats) = the SH of the function sh (n * n floats) rotated by
-   the rotation matrix R (row-major, R[3 i + j] = R_ij): g(w) = f(R^T w), so sh = Y(d) gives
-   out_sh = Y(R d). n: bands, 1..SHLIGHT_MAX_BANDS (64 in C; GLSL: written for n <= 16, see
-   accuracy); n < 1 writes nothing, n > max asserts in debug and is clamped in release.
-   Method: R = Rz(alpha) Ry(beta) Rz(gamma) (zyz Euler angles, found without inverse
-   trigonometry: beta from R's third column, alpha from its first two entries, gamma from the
-   second row of Rz(-alpha) R); the z rotations act on each (m, -m) pair; the y rotation is the
-   real-basis form of Wigner's d^l_{m'm}(beta), each entry carried up the bands by the
-   three-term recurrence in l of its Jacobi polynomial (start at l = max(|m|, |m'|) from the
-   closed form sqrt(C(2q, q+p)) cos(beta/2)^a sin(beta/2)^b), one row m' at a time, so the
-   work space is O(n) and no matrix of a band is ever stored.
-   R must be a rotation (orthonormal, det +1; float rounding of one is fine: the kernel uses
-   the exact rotation with R's third column, R_00, R_01, R_10, R_11 as above, within 1e-7 of a
-   float-rounded R); any other finite matrix gives the rotation that decomposition yields (an
-   all-zero R: the identity); NaN in R gives NaN out. sh and out_sh must not overlap.
-   Accuracy (C, double inside; against a long-double re-projection by Gauss quadrature,
-   tests/test_rotate.c): per band, |error| / |input band| <= 4.3e-8 for every n = 1..64 and
-   for beta = 0, 1e-6, pi / 2, pi - 1e-6, pi (the float rounding of the output); band energy
-   kept to 1e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16 (llvmpipe).
-   Cost: about n^3 / 3 steps of the two recurrences (one sqrt and one division each) and
-   n^3 / 3 of the row dot products: 0.6 us at n = 6, 8.7 us at n = 16, 0.47 ms at n = 64 (gcc
-   -O3 -march=native; docs/rotation.md has the table; DirectXMath's XMSHRotate, n <= 6, is
-   faster at small n). Stack: about 7 KB at SHLIGHT_MAX_BANDS = 64. */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh) {
   shli_real pc[2 * SHLIGHT_MAX_BANDS];
   shli_real ps[2 * SHLIGHT_MAX_BANDS];
@@ -7202,23 +8165,22 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
    indicator of the light's solid angle, so out_sh[0] = Omega Y_0^0 and the irradiance of a
    normal n follows by convolution with the clamped cosine) and its gradient with respect to
    x, out_grad[i][k] = d out_sh[i] / d x_k.
-   Sphere light (centre c, radius r; seed 003 eq. 9-14, MATH.md sec. 2-3): with d = |c - x|,
+   Sphere light (centre c, radius r; [GRAD] eq. 9-14, docs/math.md section 2-3): with d = |c - x|,
    s = min(r / d, 1), alpha = sqrt((d - r)(d + r)) / d, w = (c - x) / d, and
      q_0 = 1 / (1 + alpha),  q_l = P'_l(alpha) / (l (l+1))                 (l >= 1)
      out_sh[l,m] = 2 pi s^2 q_l Y_l^m(w)        [= sqrt(4 pi / (2l+1)) L_l Y_l^m(w)]
      grad_x      = -2 pi s^2 q_l grad_d Y_l^m(w) + 2 pi s^2 P_l(alpha) / (d alpha) Y_l^m(w) w
-   (MATH.md sec. 3, "complete coefficient gradient, simplified"), grad_d Y from the pole-free
-   Cartesian gradient of >>gradient.
-   Inside and on the surface (d <= r): the value at the nearest surface point, i.e. the
-   hemisphere about w; it is constant along rays from c, so its gradient is the rotational
-   term only (radial derivative 0). The exact gradient is unbounded as d -> r+ (1 / alpha,
-   genuinely singular); outside it stays finite because alpha >= ~1e-8 (C) / ~3e-4 (GLSL)
-   for any d > r representable. x == c: the hemisphere about +z, gradient 0. r <= 0 or NaN,
+   (docs/math.md section 3, "complete coefficient gradient, simplified"), grad_d Y from the
+   pole-free Cartesian gradient of >>gradient. Inside and on the surface (d <= r): the value at the
+   nearest surface point, i.e. the hemisphere about w; it is constant along rays from c, so its
+   gradient is the rotational term only (radial derivative 0). The exact gradient is unbounded as d
+   -> r+ (1 / alpha, genuinely singular); outside it stays finite because alpha >= ~1e-8 (C) / ~3e-4
+   (GLSL) for any d > r representable. x == c: the hemisphere about +z, gradient 0. r <= 0 or NaN,
    NaN or infinite x or c: zeros (no light). 1 / |c - x| is capped at 1e20 in the gradient.
-   Triangle light as a sphere (seed 003 eq. 24-28): the sphere at the centroid with the
+   Triangle light as a sphere ([GRAD] eq. 24-28): the sphere at the centroid with the
    triangle's area (r_s = sqrt(|e1 x e2| / (2 pi))), weighted by |cos gamma|, cos gamma the
    cosine between the triangle's normal and w (two-sided). This is the paper's far-field
-   model: exact in L_0 only as d / sqrt(area) -> inf (MATH.md sec. 4 table). The exact solid
+   model: exact in L_0 only as d / sqrt(area) -> inf (docs/math.md section 4 table). The exact solid
    angle is shl_triangle_solid_angle. */
 
 /* @generated begin light_idx */
@@ -8250,15 +9212,6 @@ shli_cap_light_grad_avx512(int n, const shli_real *g, shli_real wgt, shli_real g
 }
 #endif
 
-/* shl_sphere_light: SH of the unit-radiance sphere light (centre c, radius r) seen from x:
-   out_sh[l (l+1) + m] = 2 pi s^2 q_l Y_l^m(w) (see >>light). Accuracy: the cap factors in
-   shli_real by the stable s^2 P'_l form for every s from 1e-30 to 1 (float rounding floor in
-   C); Y at the float-rounded axis. Degenerate inputs (see >>light): r <= 0 / NaN, NaN or
-   infinite positions: zeros; x on or inside the sphere: the hemisphere about c - x (its
-   value at the surface); x == c: the hemisphere about +z. out_sh: n * n floats. Cost: one
-   shl_sh_eval, n * n mul (AVX-512, 3 <= n <= 16: one permute and one multiply per 16
-   coefficients), the O(n) double recurrence, 2 sqrt and 2 divisions; 11 / 36 / 77 ns at
-   n = 2 / 8 / 16 (bench/out/light.md, Zen 4). */
 SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], float r,
                                      float *out_sh) {
   shli_real g[8];
@@ -8279,18 +9232,6 @@ SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], 
   shli_cap_light_apply(n, g, 1.0, out_sh);
 }
 
-/* shl_sphere_light_grad: shl_sphere_light and its gradient with respect to the shading point
-   x, out_grad[i][k] = d out_sh[i] / d x_k: the rotational term through the pole-free
-   Cartesian gradient of Y (finite for a probe exactly below or above the light) plus the
-   radial term 2 pi s^2 P_l(alpha) / (d alpha) Y w (MATH.md sec. 3). Singular only as
-   d -> r+ (1 / alpha: exact, large, finite); on or inside the sphere the radial term is 0
-   (the hemisphere extension is constant along rays from c); x == c, r <= 0 / NaN, NaN or
-   infinite positions: zero gradient (values as shl_sphere_light). out_sh: n * n floats,
-   out_grad: n * n float[3]. Cost: the basis values at the unit axis, the O(n) recurrence with
-   4 weights per band, and the basis gradient pass with those weights folded in (AVX-512,
-   n <= 16; otherwise the scalar gradient and 7 flops per coefficient): 2.4 / 2.5 / 2.7 times
-   shl_sphere_light at n = 2 / 8 / 16 (1.95 at n = 3), 8.3 / 9.9 at n = 32 / 64 (the scalar
-   gradient loop; bench/out/light.md, Zen 4). */
 SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c[3], float r,
                                           float *out_sh, float (*out_grad)[3]) {
   shli_real g[8];
@@ -8323,7 +9264,7 @@ SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c
   shli_cap_light_grad(n, g, 1.0, 0.0, 0.0, 0.0, out_sh, out_grad);
 }
 
-/* Triangle as a sphere (seed 003 eq. 24-25): out_g as shli_cap_frame for the sphere at the
+/* Triangle as a sphere ([GRAD] eq. 24-25): out_g as shli_cap_frame for the sphere at the
    centroid with radius sqrt(|e1 x e2| / (2 pi)) seen from x, and out_g[7] = n_t . w = -cos gamma
    (n_t = unit (p1 - p0) x (p2 - p0), w the unit axis from x to the centroid); the weight is
    |out_g[7]|. out_nt: n_t (0 for a zero-area triangle, which gives out_g[6] = 0: no light;
@@ -8390,15 +9331,6 @@ SHLIGHT_INLINE void shli_tri_frame(const float x[3], const float p0[3], const fl
   out_g[7] = out_nt[0] * out_g[0] + out_nt[1] * out_g[1] + out_nt[2] * out_g[2];
 }
 
-/* shl_triangle_light: SH of the unit-radiance two-sided triangle light (p0, p1, p2) seen
-   from x, approximated by the paper's sphere (seed 003 eq. 24-26): the sphere light at the
-   centroid with r_s = sqrt(area / pi), times |cos gamma|, gamma the angle between the
-   triangle's normal and the direction from x to the centroid. A model, not the exact
-   projection: its error is set by distance / sqrt(area) (MATH.md sec. 4: L_0 within 1e-3 at
-   20, 3e-5 at 100 for well-shaped triangles; slivers are worse). x closer to the centroid than
-   r_s: the hemisphere (as shl_sphere_light) times |cos gamma|; x == centroid: axis +z.
-   Zero-area triangle, NaN or infinite input: zeros. out_sh: n * n floats. Cost: one
-   shl_sphere_light plus a cross product. */
 SHLIGHT_INLINE void shl_triangle_light(int n, const float x[3], const float p0[3],
                                        const float p1[3], const float p2[3], float *out_sh) {
   shli_real g[8];
@@ -8419,13 +9351,6 @@ SHLIGHT_INLINE void shl_triangle_light(int n, const float x[3], const float p0[3
   shli_cap_light_apply(n, g, SHLIGHT_ABSR(g[7]), out_sh);
 }
 
-/* shl_triangle_light_grad: shl_triangle_light and its gradient with respect to x (seed 003
-   eq. 27-28): |cos gamma| grad S + S grad |cos gamma|, grad_x |cos gamma| =
-   sign(cos gamma) (n_t - (n_t . w) w) / d. Edge-on (cos gamma = 0, the kink of |.|): the
-   gradient of |cos gamma| is taken as 0 (the mean of the one-sided limits). Other degenerate
-   inputs as shl_triangle_light (zeros) and shl_sphere_light_grad (inside the sphere: radial
-   term 0). out_sh: n * n floats, out_grad: n * n float[3]. Cost: one shl_sphere_light_grad
-   plus a cross product. */
 SHLIGHT_INLINE void shl_triangle_light_grad(int n, const float x[3], const float p0[3],
                                             const float p1[3], const float p2[3], float *out_sh,
                                             float (*out_grad)[3]) {
@@ -8515,25 +9440,6 @@ SHLIGHT_INLINE shli_real shli_atan2r(shli_real y, shli_real x) {
   return a;
 }
 
-/* shl_triangle_solid_angle: signed solid angle of the triangle (p0, p1, p2) seen from x, by
-   van Oosterom-Strackee in the edge form with atan2 (MATH.md sec. 4, erratum E6):
-   Omega = 2 atan2(N, D), R_i = p_i - x, N = R_0 . ((p1 - p0) x (p2 - p0)),
-   D = |R0||R1||R2| + (R0.R1)|R2| + (R0.R2)|R1| + (R1.R2)|R0|, in shli_real. Positive when
-   x is behind the triangle, i.e. on the side opposite to n = (p1 - p0) x (p2 - p0) (p0, p1,
-   p2 clockwise as seen from x); |Omega| for a two-sided light. Range [-2 pi, 2 pi]; Omega >
-   pi (D < 0) for points close to the triangle. Accuracy (float inputs): relative 1e-7 at
-   distance 1e4 (no unit-vector cancellation: the printed form loses 6e-2 there). Degenerate:
-   zero-area triangle 0; x at a vertex 0; x in the triangle's plane: 0 outside the triangle,
-   2 pi inside it (both sides' limits are +-2 pi), 0 or 2 pi on an edge; NaN or infinite input:
-   0. Any finite scale, from denormals to FLT_MAX: when N and D overflow (|p_i - x| above ~7e12
-   in C, 1e12 in GLSL) or fall below 1e-30 they are recomputed with everything divided by
-   the largest component of the p_i - x (Omega is scale-invariant). GLSL: in
-   float the sum D cancels when two pairs of the R_i are nearly opposite (x near an edge, or
-   near a vertex with the other two almost behind each other): the GLSL result is within
-   2.5 u (|Omega| + 2 (|D| EN + |N| ED) / (N^2 + D^2)) of the exact one, EN = |R0||p1 - p0|
-   |p2 - p0| and ED the sum of the magnitudes of D's terms (up to 1.2e-2 of the face-on solid
-   angle area / d^2 there; bench/solid_angle_float.c, tests/test_glsl). Cost: 3 sqrt, ~40 flops
-   and the own atan2 (2 sqrt, 8-term polynomial). */
 SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3],
                                               const float p1[3], const float p2[3]) {
   shli_real ax = SHLIGHT_REAL(p0[0]) - SHLIGHT_REAL(x[0]);
@@ -8601,7 +9507,7 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
 }
 
 /* >>grid ------------------------------------------------------------------------------------
-   SH lighting on a regular 3D grid (seed 003 sec. 5, after [WCZR20]): the SH coefficients of
+   SH lighting on a regular 3D grid ([GRAD] sec. 5, after [WCZR20]): the SH coefficients of
    many sphere lights and their spatial gradients at the vertices of a grid (shl_grid_build,
    CPU), then reconstruction at any point from the 8 corners of its cell (kernels with GLSL
    twins: trilinear, first-order Taylor, Hermite; shl_grid_sample gathers the corners on the
@@ -8653,45 +9559,7 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
      combination of the 32 corner data with weights computed once per call (32 FMA per
      coefficient). The seed and [WCZR20] do not spell out their mixed-derivative treatment;
      this is ours. */
-#define SHLIGHT_GRID_FORWARD 0
-#define SHLIGHT_GRID_REVERSED 1
-#define SHLIGHT_GRID_TRILINEAR 0
-#define SHLIGHT_GRID_TAYLOR 1
-#define SHLIGHT_GRID_HERMITE 2
 
-#ifndef SHLIGHT_RESULT_DEFINED
-#define SHLIGHT_RESULT_DEFINED
-/* Status of the CPU functions that can fail. */
-typedef enum shl_result {
-  SHLIGHT_OK = 0,
-  SHLIGHT_EINVAL = -1,     /* an invalid argument */
-  SHLIGHT_ENOMEM = -2,     /* an allocation failed */
-  SHLIGHT_ELENGTH = -3,    /* loaders: input truncated, or longer than its header says */
-  SHLIGHT_EMAGIC = -4,     /* loaders: not the expected file type (magic bytes) */
-  SHLIGHT_EVERSION = -5,   /* loaders: unsupported format version */
-  SHLIGHT_EDIMS = -6,      /* loaders: zero, negative, oversized or inconsistent dimensions */
-  SHLIGHT_ENONFINITE = -7, /* NaN or infinity in the data */
-  SHLIGHT_ECHECKSUM = -8,  /* loaders: checksum mismatch */
-  SHLIGHT_ESTORAGE = -9    /* the caller's buffer is missing or too small (size reported) */
-} shl_result;
-#endif
-
-/* shl_grid: plain data (no pointers), the same fields in GLSL. spacing: the cell size per
-   axis (> 0 and finite where the dims > 1; ignored where dims = 1). n: bands of the stored
-   SH. cull: the culling tolerance eps (>= 0, see >>grid). */
-typedef struct shl_grid {
-  float origin[3];
-  float spacing[3];
-  int nx;
-  int ny;
-  int nz;
-  int n;
-  float cull;
-} shl_grid;
-
-/* shl_grid_trilinear: out_sh[i] = sum_k w_k c8[k n^2 + i], w the trilinear weights of the
-   fraction f (in [0, 1]^3; outside: linear extrapolation). out_sh: n * n floats. Cost: 7 FMA
-   per coefficient. */
 SHLIGHT_INLINE void shl_grid_trilinear(int n, const float *c8, const float f[3], float *out_sh) {
   float x1 = f[0];
   float x0 = 1.0f - f[0];
@@ -8721,9 +9589,6 @@ SHLIGHT_INLINE void shl_grid_trilinear(int n, const float *c8, const float f[3],
   }
 }
 
-/* shl_grid_taylor: first-order Taylor expansion from the nearest corner k (cx = f[0] >= 0.5,
-   ...): out_sh[i] = c8[k n^2 + i] + g8[k n^2 + i] . ((f - corner) * cell), cell the cell size
-   (shl_grid.spacing). out_sh: n * n floats. Cost: 3 FMA per coefficient. */
 SHLIGHT_INLINE void shl_grid_taylor(int n, const float *c8, const float (*g8)[3], const float f[3],
                                     const float cell[3], float *out_sh) {
   int cx = 0;
@@ -8758,10 +9623,6 @@ SHLIGHT_INLINE void shl_grid_taylor(int n, const float *c8, const float (*g8)[3]
   }
 }
 
-/* shl_grid_hermite: tricubic Hermite from the corner values and gradients, mixed
-   derivatives estimated in the cell (see >>grid): out_sh[i] = sum_k (wv_k c8[k n^2 + i] +
-   wx_k g8[..][0] + wy_k g8[..][1] + wz_k g8[..][2]). f in [0, 1]^3, cell the cell size.
-   out_sh: n * n floats. Cost: ~150 flops for the weights, 32 FMA per coefficient. */
 SHLIGHT_INLINE void shl_grid_hermite(int n, const float *c8, const float (*g8)[3], const float f[3],
                                      const float cell[3], float *out_sh) {
   float ha[6];
@@ -8843,40 +9704,14 @@ SHLIGHT_INLINE void shl_grid_hermite(int n, const float *c8, const float (*g8)[3
 
 /* CPU only (declared here, defined with SHLIGHT_IMPLEMENTATION). */
 
-/* shl_grid_build: out_sh[v n^2 + i] = sum_j I_j shl_sphere_light(n, p_v, c_j, r_j)[i] over
-   the lights that reach vertex v (culling, see >>grid), out_grad likewise with
-   shl_sphere_light_grad (out_grad NULL: no gradients, values by shl_sphere_light). With
-   cull = 0 each vertex holds exactly the per-point sum (same bits as a caller's loop
-   out += I * shl_sphere_light(_grad) in light order). intensity NULL: all 1. order
-   SHLIGHT_GRID_FORWARD or SHLIGHT_GRID_REVERSED, threads 1 or 2 (more: 2): the same bits.
-   Lights with r <= 0 / NaN, non-finite centres or a non-finite intensity add nothing. Returns
-   SHLIGHT_EINVAL (and writes nothing) for: g or out_sh NULL, n outside [1, SHLIGHT_MAX_BANDS], a
-   dim < 1, a spacing <= 0 or non-finite on an axis with dims > 1, non-finite origin, cull < 0 or
-   NaN, nlights < 0, centres or radii NULL with nlights > 0, an unknown order, threads < 1. Cost:
-   (vertices) x (lights reaching them) shl_sphere_light_grad calls. */
-SHLIGHT_API shl_result shl_grid_build(const shl_grid *g, const float (*centres)[3],
-                                      const float *radii, const float *intensity, int nlights,
-                                      float *out_sh, float (*out_grad)[3], int order, int threads);
-
-/* shl_grid_sample: reconstruction at p from a grid built by shl_grid_build: clamps p to the
-   grid's box (NaN components: the origin's), gathers the 8 corners of its cell and calls
-   shl_grid_trilinear, shl_grid_taylor or shl_grid_hermite (method SHLIGHT_GRID_TRILINEAR,
-   _TAYLOR, _HERMITE). grad may be NULL for trilinear only. out_sh: g->n^2 floats. Returns
-   SHLIGHT_EINVAL for NULL g / sh / out_sh, invalid g (as shl_grid_build), an unknown method
-   or a NULL grad that the method needs (nothing written then); otherwise SHLIGHT_OK (no
-   allocation: the corners are gathered in chunks of at most 64 coefficients, 8 KB of stack).
-   The output is finite wherever the grid's corner values (and gradients) are. */
-SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const float (*grad)[3],
-                                       const float p[3], int method, float *out_sh);
-
 /* >>edge ------------------------------------------------------------------------------------
-   Area lights without tables (seed 001, MATH.md sec. 7): axial moments of polygons, the
+   Area lights without tables ([AREA], docs/math.md section 7): axial moments of polygons, the
    moment M^e(P, r) = integral over the solid angle of P, clipped to the hemisphere u.r >= 0, of
-   (u.r)^e. Two exact identities carry everything here (MATH.md sec. 7.1 and this header's
-   derivation in README "Area lights"):
+   (u.r)^e. Two exact identities carry everything here (docs/math.md section 7.1 and this header's
+   derivation in docs/area-lights.md):
    - Arvo (integer e): (e+1) M = [e even] Omega + sum_i w_i F(Phi_i, c_i, delta_i, e-1), with
-     the edge integral F of seed 001 eq. 3 (errata E10, E11 applied), F's exact O(e) recurrence
-     or the paper's O(1) peak fits (Lorentzian, Lorentzian-Pearson, ellipsoid; errata E12-E17).
+     the edge integral F of [AREA] eq. 3 (corrections E10, E11 applied), F's exact O(e) recurrence
+     or the paper's O(1) peak fits (Lorentzian, Lorentzian-Pearson, ellipsoid; corrections E12-E17).
    - Stokes in the azimuth about r (any real e >= 0, derived for shlight): with the 1-form
      (x^(e+1) - 1)/(e+1) dpsi, x = u.r, the pole term vanishes and
        (e+1) M = -sum_i sgn(w_i) integral over theta in the edge's arc of (1 - h(theta)) dtheta,
@@ -9030,9 +9865,9 @@ SHLIGHT_INLINE shli_real shli_expm1r(shli_real t) {
   return t + t * (t * p);
 }
 
-/* The edge integrand of seed 001 eq. 5-6: I(x) = sum over k = nf, nf - 2, ..., >= 0 of x^k,
+/* The edge integrand of [AREA] eq. 5-6: I(x) = sum over k = nf, nf - 2, ..., >= 0 of x^k,
    x = c cos(phi), in the expm1 form f (1 - x^m) / (1 - x^2) (m = nf + 2 for even nf, nf + 1
-   with f = x for odd nf) with its limit f m / 2 at x^2 = 1 (MATH.md sec. 7.1). */
+   with f = x for odd nf) with its limit f m / 2 at x^2 = 1 (docs/math.md section 7.1). */
 SHLIGHT_INLINE shli_real shli_edge_isum(shli_real x, int nf) {
   shli_real f = 1.0;
   shli_real x2 = x * x;
@@ -9094,11 +9929,11 @@ SHLIGHT_INLINE shli_real shli_edge_exact(shli_real pa, shli_real pb, shli_real c
 }
 
 /* The paper's O(1) fits of F over [pa, pb] inside [-pi/2, pi/2], nf >= 3, c in (1.0e-3, 1]:
-   peak I_max = I(0), floor I_min = I(pi/2), half width x_w of eq. 7 (erratum E12: level
-   (I_max + I_min) / 2), the fit passing through (x_w, I(x_w)); Lorentzian with the atan2 form
-   of eq. 12 (E13); Lorentzian-Pearson with b = a / 2, the corrected antiderivative (E14) and
-   the blend factor clamped to [0, 1] (E17); single ellipsoid eq. 15-16, 18 (its degenerate
-   a_E = 1 falls back to the Lorentzian). */
+   peak I_max = I(0), floor I_min = I(pi/2), half width x_w of eq. 7 (correction E12 (docs/math.md
+   section 12): level (I_max + I_min) / 2), the fit passing through (x_w, I(x_w)); Lorentzian with
+   the atan2 form of eq. 12 (E13); Lorentzian-Pearson with b = a / 2, the corrected antiderivative
+   (E14) and the blend factor clamped to [0, 1] (E17); single ellipsoid eq. 15-16, 18 (its
+   degenerate a_E = 1 falls back to the Lorentzian). */
 SHLIGHT_INLINE shli_real shli_edge_fit(shli_real pa, shli_real pb, shli_real c, int nf,
                                        int method) {
   int odd = nf - 2 * (nf / 2);
@@ -9183,17 +10018,7 @@ SHLIGHT_INLINE shli_real shli_edge_fit(shli_real pa, shli_real pb, shli_real c, 
   return fl;
 }
 
-/* shl_edge_integral: the edge integral of seed 001 eq. 3,
-   F(Phi, c, delta, n) = sum over k = n, n - 2, ..., >= 0 of c^k integral from -delta to
-   Phi - delta of cos^k, for Phi in [0, pi], c in [0, 1], any delta, n >= 0 (rounded to the
-   nearest integer), by `method`: SHLIGHT_EDGE_EXACT (the O(n) recurrence, in shli_real) or one
-   of the O(1) fits SHLIGHT_EDGE_LORENTZ / _LORENTZ_PEARSON / _ELLIPSOID (AUTO, QUADRATURE,
-   FAST and any unknown method id mean EXACT here). The arc is split at +-pi/2 and reduced with I(p
-   + pi) = (-1)^n I(p) (MATH.md sec. 7.2); orders n <= 2 and c < 1.0e-3 always take the exact path
-   (closed forms; the fits are 0/0 there). Degenerate: c clamped to [0, 1], Phi to [0, pi]; NaN
-   input -> 0; n > 1.0e6 clamped. Accuracy: EXACT matches long double quadrature to 1.0e-12 relative
-   to F(-pi/2, pi/2) in C (double inside); the fits' errors are in README "Area lights". */
-SHLIGHT_INLINE float shl_edge_integral(float phi, float c, float delta, float n,
+SHLIGHT_INLINE float shl_edge_integral(float phi, float c, float delta, float exponent,
                                        shl_edge_method method) {
   shli_real cc = SHLIGHT_MINR(SHLIGHT_MAXR(SHLIGHT_REAL(c), 0.0), 1.0);
   shli_real p = SHLIGHT_MINR(SHLIGHT_MAXR(SHLIGHT_REAL(phi), 0.0), 3.1415926535897932);
@@ -9205,10 +10030,10 @@ SHLIGHT_INLINE float shl_edge_integral(float phi, float c, float delta, float n,
   shli_real b;
   int nf;
   int piece = 0;
-  if (!(n >= 0.0f) || !(SHLIGHT_ABSR(lo) < 1.0e6) || !(p >= 0.0) || !(cc >= 0.0)) {
+  if (!(exponent >= 0.0f) || !(SHLIGHT_ABSR(lo) < 1.0e6) || !(p >= 0.0) || !(cc >= 0.0)) {
     return 0.0f;
   }
-  nf = SHLIGHT_FTOI(SHLIGHT_MINR(SHLIGHT_REAL(n), 1.0e6) + 0.5);
+  nf = SHLIGHT_FTOI(SHLIGHT_MINR(SHLIGHT_REAL(exponent), 1.0e6) + 0.5);
   /* shift lo into [-pi/2, pi/2) */
   while (lo >= 1.5707963267948966) {
     lo = lo - 3.1415926535897932;
@@ -9960,41 +10785,6 @@ SHLIGHT_INLINE shli_real shli_polygon_moment_r(shli_real *io_px, shli_real *io_p
   return SHLIGHT_MAXR(sum, 0.0) / (e + 1.0);
 }
 
-/* shl_polygon_moment: the axial moment of seed 001 eq. 1, integral over the solid angle of the
-   polygon v[0..nv-1] (vertices relative to the shading point, any winding, two-sided), clipped
-   to the hemisphere u.axis > 0, of (u.axis)^exponent. nv >= 3, any count in C (above
-   SHLIGHT_POLYGON_MAX = 8 the polygon is summed in fan pieces of at most 8 vertices, see the
-   start of >>edge; GLSL: at most SHLIGHT_POLYGON_MAX, above it -1). A non-convex or
-   self-overlapping (planar) polygon is integrated with its winding number relative to its net
-   orientation (a region wound twice counts twice). axis any non-zero vector (normalised
-   inside); exponent >= 0 real. method:
-   - SHLIGHT_EDGE_EXACT: exact at every real exponent. Integer exponents up to 65536: Arvo's
-     form with the O(e) recurrence (double inside in C); any other exponent: the Stokes form
-     (see >>edge) with an adaptive rule and an error estimate (shli_stokes_half, lev > 0:
-     composite 5-node Gauss-Legendre, 2^l panels with the panel at the clip circle cut
-     geometrically, until two levels agree to 1e-9), within 1e-5 of the normalised lobe
-     (measured: 5.5e-8 against cubature for exponents 0.3..9999.5, the float output's rounding;
-     3.2e-10 against its own 14-level refinement; 9e-11 against the recurrence at integer
-     exponents). Cost: ~61k x86 instructions per doubly clipped quad at e = 777.7 (callgrind,
-     GCC -O3 -march=x86-64-v3; QUADRATURE 10k).
-   - SHLIGHT_EDGE_LORENTZ / _LORENTZ_PEARSON / _ELLIPSOID: Arvo's form with the paper's O(1)
-     fits of F (errata fixed), exponent rounded to the nearest integer; above 65536 they take
-     QUADRATURE (no float-to-int conversion of huge exponents).
-   - SHLIGHT_EDGE_QUADRATURE: the Stokes form (see >>edge), O(1), any real exponent.
-   - SHLIGHT_EDGE_AUTO: the recurrence for integer exponents <= 16, EXACT's adaptive rule
-     above: exact everywhere, so its switch point is continuous (jump < 1e-7 relative at 16
-     and the next float, measured). Cost: 2.5k instructions per quad at e = 10, 64k at 100
-     (was QUADRATURE's 10k: exactness costs 6x; FAST is the constant-time road).
-   - SHLIGHT_EDGE_FAST: the Stokes form in float with a 4-node rational-graded rule per
-     half-arc and polynomial transcendentals, SIMD over 8 edges in C: O(1), any real exponent
-     (finite to 1e30), ~1.3k x86 instructions per doubly clipped quad (GCC -O3
-     -march=x86-64-v3), p95 1e-4 and max 1.5e-3 of the normalised lobe (README). GLSL: only
-     with SHLIGHT_EDGE_FAST_ON 1 defined by the host, else it means QUADRATURE.
-   - any other value (an unknown method id): SHLIGHT_EDGE_AUTO.
-   Degenerate: nv < 3, zero axis, NaN anywhere, a polygon through the shading point or reduced
-   to < 3 vertices by the clip: 0; NaN exponent or exponent >= 1e30: 0 (the limit of the
-   moment); negative exponent: treated as 0. Result >= 0 (GLSL nv > SHLIGHT_POLYGON_MAX: -1).
-   Accuracy and cost: docs/area-lights.md (measured against tests/ref/arearef.h). */
 SHLIGHT_INLINE float shl_polygon_moment(const float (*v)[3], int nv, const float axis[3],
                                         float exponent, shl_edge_method method) {
   shli_real px[SHLIGHT_CLIP_MAX];
@@ -10160,12 +10950,6 @@ SHLIGHT_INLINE shli_real shli_polygon_phong_r(const float (*v)[3], int nv, shli_
   return shli_phong_arrays(px, py, pz, nv, nx, ny, nz, rx, ry, rz, exponent, method);
 }
 
-/* shl_polygon_phong: single-axis Phong shading from a polygon light (seed 001 eq. 10):
-   (e+1)/(2 pi) M^e(P, r) with r the mirror direction of `view` about `nrm`, the polygon first
-   clipped to the horizon u.nrm >= 0 (then to u.r >= 0 by the moment). Unit-radiance light,
-   rho_s = 1: a light covering the whole r-hemisphere above the horizon gives 1 at normal
-   incidence. view and nrm: unit, pointing away from the surface. Same methods and degenerate
-   results as shl_polygon_moment; view below the horizon (nrm.view <= 0): 0. */
 SHLIGHT_INLINE float shl_polygon_phong(const float (*v)[3], int nv, const float nrm[3],
                                        const float view[3], float exponent,
                                        shl_edge_method method) {
@@ -10230,28 +11014,17 @@ SHLIGHT_INLINE shli_real shli_log1pr(shli_real x) {
   return 2.0 * (z + z * (z2 * p));
 }
 
-/* shl_lobe_to_sg: the sharpness lambda of the spherical Gaussian exp(lambda (u.r - 1)) with the
-   same half-maximum angle as the cosine lobe max(0, u.r)^n (seed 001 eq. 22, erratum E16):
-   lambda = ln 2 / (1 - 2^(-1/n)), in the stable form ln 2 / -expm1(-ln 2 / n) (float: 3e-8
-   relative at n = 1e7; the printed form is negative). n <= 0 or NaN: 0; lambda ~ n + ln 2 / 2
-   for large n: n >= 1e30 returns n itself (the relative difference is below float's
-   resolution), so n = +inf gives +inf (the delta-lobe limit, documented; finite n gives
-   a finite lambda). */
-SHLIGHT_INLINE float shl_lobe_to_sg(float n) {
-  shli_real e = SHLIGHT_REAL(n);
+SHLIGHT_INLINE float shl_lobe_to_sg(float exponent) {
+  shli_real e = SHLIGHT_REAL(exponent);
   if (!(e > 0.0)) {
     return 0.0f;
   }
   if (!(e < 1.0e30)) {
-    return n;
+    return exponent;
   }
   return SHLIGHT_FLOAT(0.69314718055994531 / -shli_expm1r(-0.69314718055994531 / e));
 }
 
-/* shl_sg_to_lobe: the inverse, n = -ln 2 / log1p(-ln 2 / lambda) (exact round trip); lambda <=
-   ln 2 has no cosine-lobe counterpart (the SG never falls to half): 0; NaN: 0. lambda >= 1e30
-   returns lambda (as shl_lobe_to_sg), so +inf gives +inf (the limit); finite lambda gives a
-   finite n. */
 SHLIGHT_INLINE float shl_sg_to_lobe(float lambda) {
   shli_real l = SHLIGHT_REAL(lambda);
   if (!(l > 0.69314718055994531)) {
@@ -10263,22 +11036,10 @@ SHLIGHT_INLINE float shl_sg_to_lobe(float lambda) {
   return SHLIGHT_FLOAT(-0.69314718055994531 / shli_log1pr(-0.69314718055994531 / l));
 }
 
-/* shl_lobe_product: the product of two cosine lobes max(0, u.r1)^n1 max(0, u.r2)^n2 approximated
-   by one lobe mu max(0, u.rp)^np (seed 001 sec. 7.1): both mapped to SGs (shl_lobe_to_sg), the
-   exact SG product (axis rp along lambda1 r1 + lambda2 r2, sharpness lambda_p = |lambda1 r1 +
-   lambda2 r2|), mapped back (shl_sg_to_lobe), mu the true product at rp (clamped lobes,
-   MATH.md 7.3). r1, r2: any finite non-zero vectors, normalised here in shli_real (so a
-   float-normalised axis is exact enough for any exponent); zero, NaN or infinite: +z. Writes
-   rp (unit) and returns mu in [0, 1] (a product of two cosines <= 1 raised to n1, n2 >= 0),
-   np in out_np[0]. Accuracy is the paper's: good for aligned lobes, poor beyond ~60 degrees
-   (README); above n ~ 1e9 a lobe is narrower than the double rounding of the axes, and mu
-   (still in [0, 1]) loses accuracy. Opposite lobes with equal sharpness (no axis), n1 or n2
-   negative or NaN, or |lambda1 r1 + lambda2 r2| >= 1e30 (exponents ~1e30 and above, +inf):
-   mu = 0, np = 0, rp = r1. */
-SHLIGHT_INLINE float shl_lobe_product(const float r1[3], float n1, const float r2[3], float n2,
-                                      float *out_rp, float *out_np) {
-  shli_real l1 = SHLIGHT_REAL(shl_lobe_to_sg(n1));
-  shli_real l2 = SHLIGHT_REAL(shl_lobe_to_sg(n2));
+SHLIGHT_INLINE float shl_lobe_product(const float r1[3], float exponent1, const float r2[3],
+                                      float exponent2, float *out_axis, float *out_exponent) {
+  shli_real l1 = SHLIGHT_REAL(shl_lobe_to_sg(exponent1));
+  shli_real l2 = SHLIGHT_REAL(shl_lobe_to_sg(exponent2));
   shli_real a[8];
   shli_real b[8];
   shli_real px;
@@ -10288,11 +11049,11 @@ SHLIGHT_INLINE float shl_lobe_product(const float r1[3], float n1, const float r
   shli_real c1;
   shli_real c2;
   shli_real mu = 0.0;
-  out_rp[0] = r1[0];
-  out_rp[1] = r1[1];
-  out_rp[2] = r1[2];
-  out_np[0] = 0.0f;
-  if (!(n1 >= 0.0f) || !(n2 >= 0.0f)) {
+  out_axis[0] = r1[0];
+  out_axis[1] = r1[1];
+  out_axis[2] = r1[2];
+  out_exponent[0] = 0.0f;
+  if (!(exponent1 >= 0.0f) || !(exponent2 >= 0.0f)) {
     return 0.0f;
   }
   /* the axes normalised in shli_real: a float-normalised axis (|r|^2 - 1 ~ 5e-8) raised to
@@ -10309,10 +11070,10 @@ SHLIGHT_INLINE float shl_lobe_product(const float r1[3], float n1, const float r
   px = px / lp;
   py = py / lp;
   pz = pz / lp;
-  out_rp[0] = SHLIGHT_FLOAT(px);
-  out_rp[1] = SHLIGHT_FLOAT(py);
-  out_rp[2] = SHLIGHT_FLOAT(pz);
-  out_np[0] = shl_sg_to_lobe(SHLIGHT_FLOAT(lp));
+  out_axis[0] = SHLIGHT_FLOAT(px);
+  out_axis[1] = SHLIGHT_FLOAT(py);
+  out_axis[2] = SHLIGHT_FLOAT(pz);
+  out_exponent[0] = shl_sg_to_lobe(SHLIGHT_FLOAT(lp));
   c1 = px * a[0] + py * a[1] + pz * a[2];
   c2 = px * b[0] + py * b[1] + pz * b[2];
   /* cosines of unit vectors: <= 1, so mu <= 1 for any exponents (rounding can give 1 + 1e-16,
@@ -10320,20 +11081,14 @@ SHLIGHT_INLINE float shl_lobe_product(const float r1[3], float n1, const float r
   c1 = SHLIGHT_MINR(c1, 1.0);
   c2 = SHLIGHT_MINR(c2, 1.0);
   if (c1 > 0.0 && c2 > 0.0) {
-    mu = SHLIGHT_POWR(c1, SHLIGHT_REAL(n1)) * SHLIGHT_POWR(c2, SHLIGHT_REAL(n2));
+    mu = SHLIGHT_POWR(c1, SHLIGHT_REAL(exponent1)) * SHLIGHT_POWR(c2, SHLIGHT_REAL(exponent2));
   }
   return SHLIGHT_FLOAT(mu);
 }
 
-/* shl_polygon_phong2: double-axis Phong, (e+1)/(2 pi) times the integral over the polygon (clipped
-   to the horizon) of max(0, u.r)^e max(0, u.nrm), by the lobe product of shl_lobe_product (n2 =
-   1: the cosine) and one moment about its axis (seed 001 sec. 7.1). Inputs and degenerate
-   results as shl_polygon_phong. Exponents above 1e6: the product's limit, max(0, nrm.r) times
-   the single-axis value (relative error ~ 1 / e; the SG road loses its axis to float rounding
-   above ~1e12). Error: docs/area-lights.md (the product approximation dominates). */
-SHLIGHT_INLINE float shl_polygon_phong2(const float (*v)[3], int nv, const float nrm[3],
-                                        const float view[3], float exponent,
-                                        shl_edge_method method) {
+SHLIGHT_INLINE float shl_polygon_phong_double_axis(const float (*v)[3], int nv, const float nrm[3],
+                                                   const float view[3], float exponent,
+                                                   shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -10420,16 +11175,6 @@ SHLIGHT_INLINE shli_real shli_ellipse_phong_r(shli_real cx, shli_real cy, shli_r
   return 0.5 * sum;
 }
 
-/* shl_ellipse_phong: single-axis Phong (as shl_polygon_phong) from a planar ellipse light with
-   centre c (relative to the shading point) and orthogonal semi-axis vectors a1, a2 (a disc when
-   |a1| = |a2|), by the polygon road of seed 001 sec. 9 with two changes. The polygons are fixed
-   to the light, never re-oriented per shading point, so the result is continuous in the shading
-   point (the paper's arg-max orientation is what makes its Figure 17 jump); and two regular
-   octagons rotated by pi/8 are averaged (vertices c + k (a1 cos t + a2 sin t), t = j pi/4 and
-   j pi/4 + pi/8, k = sqrt(pi / (2 sqrt 2)): each has the ellipse's area), which cancels the
-   octagon's leading rim error: 1.5e-3 instead of 1.4e-2 of the normalised lobe at e = 1000
-   (tests/test_edge). Cost: two octagon moments. Non-uniform scale maps the outline exactly.
-   Degenerate: as shl_polygon_phong; zero axes: 0. */
 SHLIGHT_INLINE float shl_ellipse_phong(const float c[3], const float a1[3], const float a2[3],
                                        const float nrm[3], const float view[3], float exponent,
                                        shl_edge_method method) {
@@ -10451,13 +11196,6 @@ SHLIGHT_INLINE float shl_ellipse_phong(const float c[3], const float a1[3], cons
       SHLIGHT_REAL(a2[2]), nx, ny, nz, rx / l, ry / l, rz / l, SHLIGHT_REAL(exponent), method));
 }
 
-/* shl_sphere_phong: single-axis Phong from a uniform sphere light (centre c relative to the
-   shading point, radius r): the disc through c facing the point with radius r d / sqrt(d^2 -
-   r^2) subtends the sphere's cap exactly; it is drawn as shl_ellipse_phong's octagons in the
-   frame of Duff et al. (2017) about c / d (continuous in c except at c / d = -z). Shading point
-   inside the sphere (d <= r): the light fills every direction, taken as an octagon of radius
-   1e4 at distance 1 across the mirror direction (the r-hemisphere to 1e-4 rad). r <= 0, NaN
-   or infinite input: 0. */
 SHLIGHT_INLINE float shl_sphere_phong(const float c[3], float r, const float nrm[3],
                                       const float view[3], float exponent, shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
@@ -10554,17 +11292,6 @@ SHLIGHT_INLINE int shli_poly_load_clip(const float (*v)[3], int nv, const float 
   return nc;
 }
 
-/* shl_polygon_ggx_ndf: the integral over the polygon v[0..nv-1] (as shl_polygon_moment: any
-   winding, two-sided, clipped to u.axis > 0) of D(u) (u.axis), D the isotropic GGX normal
-   distribution about `axis` with roughness alpha (D(t) = alpha^2 / (pi (t^2 (alpha^2 - 1) +
-   1)^2), normalised: the whole hemisphere gives 1). Closed form, one atan2 per edge, derived
-   for shlight by the Stokes form of >>edge: the antiderivative of D(t) t is
-   -(1 - t^2) / (2 pi (1 - (1 - alpha^2) t^2)), which along an edge's arc becomes
-   w^2 / (2 pi (w^2 + alpha^2 c^2 cos^2 theta)) and integrates to
-   (|w| / q) atan2(q sin Phi, cos Phi - (1 - alpha^2) x_A x_B) / (2 pi), q^2 = w^2 + alpha^2 c^2.
-   alpha = 1 gives the cosine moment / pi (Lambert). It is the half-vector-space core of a GGX
-   polygon light (the map from light to half vectors is not in this function). alpha clamped
-   to [1e-4, 1]; degenerate inputs as shl_polygon_moment. */
 SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const float axis[3],
                                          float alpha) {
   shli_real px[SHLIGHT_CLIP_MAX];
@@ -10962,7 +11689,7 @@ SHLIGHT_INLINE shli_real shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, 
   return res;
 }
 
-/* The body of shl_polygon_ggx (ndf 0) and shl_polygon_beckmann_taylor (ndf 1): the same
+/* The body of shl_polygon_ggx (ndf 0) and shl_polygon_beckmann (ndf 1): the same
    clipping, Taylor point, Stokes edges and remainder fan, the NDF and Lambda switched inside
    the helpers (derivation above). */
 SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm[3],
@@ -11375,25 +12102,6 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   return SHLIGHT_FLOAT(SHLIGHT_MAXR(q, 0.0));
 }
 
-/* shl_polygon_ggx: a GGX polygon light, the integral over the polygon v[0..nv-1] (vertices
-   relative to the shading point, any winding, two-sided), clipped to the shading hemisphere
-   nrm.l > 0, of f(view, l) (nrm.l) dl with f = D G2 / (4 (n.l)(n.v)) the GGX microfacet BRDF
-   without Fresnel (F = 1), D the GGX normal distribution of roughness alpha (= perceptual
-   roughness squared), G2 the height-correlated Smith masking-shadowing; multiply by the
-   light's radiance (and a Fresnel or specular colour) outside. No table. Method: the half-vector
-   NDF integral and its first moment by Stokes along the edges' images, a first-order Taylor model
-   of the rest of the BRDF and a 7-point cubature of its remainder (derivation above; README
-   "GGX polygon lights"). nrm and view any non-zero vectors (normalised inside), nv >= 3 (C: any
-   count, fan pieces above SHLIGHT_POLYGON_MAX; GLSL: above it -1), alpha clamped to [1e-4, 1].
-   Degenerate inputs give 0: nv < 3, NaN or infinite input, zero normal or view, view at or below
-   the horizon (nrm.view <= 0), NaN alpha, a light entirely below the horizon (exactly 0: the
-   polygon is clipped first, so no light comes from below), a polygon through the shading point.
-   Result >= 0. Accuracy against long double cubature (tests/ref/arearef.h) on the LTC comparison's
-   sampler (README "GGX polygon lights", bench/bench_ggx.c): median relative error 1e-6 to 5e-5 at
-   roughness 0.05 to 1 (LTC: 7e-5 to 0.11), p95 below 0.9 %; weakest at grazing views with very
-   large lights (up to 16 % for a light filling the hemisphere at alpha 0.04, view 85 deg).
-   Cost: 18k x86 instructions per quad (10 Gauss nodes per edge with exp, sincos, log; 7 or 28
-   cubature nodes per fan triangle), about 16x shl_polygon_phong FAST. */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha) {
 #if SHLIGHT_POLYGON_ANY
@@ -11407,27 +12115,8 @@ SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nr
   return shli_mf_taylor(v, nv, nrm, view, alpha, 0);
 }
 
-/* shl_polygon_beckmann_taylor: the Beckmann microfacet specular from a unit-radiance polygon
-   light, the integral over the polygon (vertices relative to the shading point, any winding,
-   two-sided) clipped to nrm.l > 0 of D_B(h) G2(l, v) / (4 (n.v)) dl, the same integrand as
-   shl_polygon_beckmann (D_B(h) = exp(-tan^2 t / alpha^2) / (pi alpha^2 cos^4 t), t the angle of
-   h from nrm; G2 the height-correlated Smith 1 / (1 + Lambda(v) + Lambda(l)) with Beckmann's
-   Lambda, shli_beckmann_lambda; Fresnel 1), by shl_polygon_ggx's method with the Beckmann NDF:
-   A and M1 by Stokes (the cap CDF 1 - exp(-tan^2 / alpha^2); the first moment's radial
-   antiderivative by erfc, shli_beck_i), the first-order Taylor model of G2 (h.v) / ((n.v)(h.n))
-   and the 7-point cubature of its remainder (derivation at "GGX polygon lights"). No table; the
-   recommended Beckmann light (shl_polygon_beckmann holds G2 at one direction). nrm and view any
-   non-zero vectors, nv >= 3 (C: any count; GLSL: at most SHLIGHT_POLYGON_MAX, above it -1), alpha
-   clamped to [1e-4, 1]. Degenerate inputs give 0 as shl_polygon_ggx (nv < 3, NaN / Inf input, zero
-   normal or view, view at or below the horizon, NaN alpha, a light wholly below the horizon, a
-   polygon through the shading point). Result >= 0. Accuracy against long double cubature
-   (tests/ref/arearef.h) on bench_ggx's sampler (bench/bench_beckmann.c, README "Microfacet polygon
-   lights"): median relative error 3e-6 to 1e-4 at roughness 0.05 to 1, p95 below 0.7 %, max error /
-   albedo
-   <= 4.9e-2 (grazing views, lights straddling the horizon; up to 6.7e-2 in test_microfacet's
-   grazing set). Cost: 33k x86 instructions per quad (shl_polygon_beckmann k = 8: ~220k). */
-SHLIGHT_INLINE float shl_polygon_beckmann_taylor(const float (*v)[3], int nv, const float nrm[3],
-                                                 const float view[3], float alpha) {
+SHLIGHT_INLINE float shl_polygon_beckmann(const float (*v)[3], int nv, const float nrm[3],
+                                          const float view[3], float alpha) {
 #if SHLIGHT_POLYGON_ANY
   if (nv > SHLIGHT_POLYGON_MAX) {
     return shli_fan_beckmann_taylor(v, nv, nrm, view, alpha);
@@ -11439,15 +12128,15 @@ SHLIGHT_INLINE float shl_polygon_beckmann_taylor(const float (*v)[3], int nv, co
   return shli_mf_taylor(v, nv, nrm, view, alpha, 1);
 }
 
-/* ---- microfacet polygon lights in half-vector space (seed 001 sec. 8; README "Microfacet
-   polygon lights"). With h = (l + v) / |l + v| and dl = 4 (h.l) dh, the reflected radiance of a
-   unit-radiance polygon becomes an integral over the image H(P) of the light in half-vector
-   space: integral over P of D(h) G2 / (4 (n.v)) dl = integral over H(P) of D(h) (h.n) Y(h) dh,
-   Y = G2 (h.v) / ((n.v) (h.n)). D (h.n) over H(P) is a moment (Blinn-Phong: (e+2)/(2 pi)
-   M^(e+1)) or the Stokes form of a radial CDF (Beckmann), both sums over H(P)'s edges; Y
-   is held at one representative direction. H maps great arcs to spherical conics (the cone
-   through the circle {l + v}), not great arcs: each light edge is cut into k sub-edges whose
-   mapped end points are joined by great arcs (the split of seed 001 sec. 8.1). */
+/* ---- microfacet polygon lights in half-vector space ([AREA] sec. 8; docs/area-lights.md). With h
+   = (l + v) / |l + v| and dl = 4 (h.l) dh, the reflected radiance of a unit-radiance polygon
+   becomes an integral over the image H(P) of the light in half-vector space: integral over P of
+   D(h) G2 / (4 (n.v)) dl = integral over H(P) of D(h) (h.n) Y(h) dh, Y = G2 (h.v) / ((n.v) (h.n)).
+   D (h.n) over H(P) is a moment (Blinn-Phong: (e+2)/(2 pi) M^(e+1)) or the Stokes form of a radial
+   CDF (Beckmann), both sums over H(P)'s edges; Y is held at one representative direction. H maps
+   great arcs to spherical conics (the cone through the circle {l + v}), not great arcs: each light
+   edge is cut into k sub-edges whose mapped end points are joined by great arcs (the split of
+   [AREA] sec. 8.1). */
 
 /* One edge a -> b (unit, the arc inside u.r >= 0) of the Stokes form of the Beckmann NDF about
    the unit axis r, roughness alpha: sgn(w) times the integral over the arc's theta of the cap
@@ -11515,18 +12204,6 @@ SHLIGHT_INLINE shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_rea
   return g;
 }
 
-/* shl_polygon_beckmann_ndf: the integral over the polygon v[0..nv-1] (as shl_polygon_moment:
-   any winding, two-sided, clipped to u.axis > 0) of D(u) (u.axis), D the isotropic Beckmann
-   normal distribution about `axis`, D(t) = exp(-(1 - t^2) / (t^2 alpha^2)) / (pi alpha^2 t^4)
-   (normalised: the whole hemisphere gives 1). Stokes form of >>edge with the closed-form
-   radial CDF 1 - exp(-tan^2(T) / alpha^2) of a cap of half-angle T: along an edge's arc the
-   CDF is 1 - exp(-w^2 / (alpha^2 c^2 cos^2 theta)) (no elementary antiderivative: an Owen's T
-   function), integrated with the graded 5+5-node Gauss-Legendre rule of QUADRATURE. Error
-   (tests/test_microfacet, against long double cubature): max 1.0e-4 of the normalised lobe
-   for alpha in [1e-3, 1] (as QUADRATURE moments). Cost: one QUADRATURE moment (20 exp + 20 sin per
-   edge). The half-vector-space core of a Beckmann polygon light (shl_polygon_beckmann adds the
-   map). alpha clamped to [1e-4, 1]; NaN alpha and the degenerate inputs of shl_polygon_moment: 0.
- */
 SHLIGHT_INLINE float shl_polygon_beckmann_ndf(const float (*v)[3], int nv, const float axis[3],
                                               float alpha) {
   shli_real px[SHLIGHT_CLIP_MAX];
@@ -11562,7 +12239,7 @@ SHLIGHT_INLINE float shl_polygon_beckmann_ndf(const float (*v)[3], int nv, const
 /* The split points of the light edge a -> b (unit vectors, arc angle phi in (0, pi)) for k
    sub-edges (k - 1 points), as fractions of the arc's angle in (0, 1), ascending, in io_split;
    returns their count. p is the point of the edge's great circle nearest the mirror direction r
-   (seed 001 Algorithm 1: where the image of the circle bends most). k = 2: one split at p when
+   ([AREA] Algorithm 1: where the image of the circle bends most). k = 2: one split at p when
    p lies inside the arc, none otherwise (the paper). k >= 3: p is one split and the other
    k - 2 are shared between its two sides in proportion to their angles, graded toward p
    quadratically (fraction tp (1 - u^2) and tp + (1 - tp) u^2, u uniform); with p outside the
@@ -11939,7 +12616,7 @@ SHLIGHT_INLINE shli_real shli_half_image(shli_real *io_px, shli_real *io_py, shl
     }
   }
   /* J1 = integral of t^e (h.v), J2 = of t^(e+1) (h.v)^2 over the image (surface divergence
-     identities, README): (a+2) J1(a) = a (n.v) M^(a-1) - sum (v.m) line(t^a),
+     identities, docs/accuracy.md): (a+2) J1(a) = a (n.v) M^(a-1) - sum (v.m) line(t^a),
      (a+3) J2(a) = a (n.v) J1(a-1) + M^a - sum (v.m) line(t^a (h.v)), m the outward
      conormal */
   if (kind >= 2) {
@@ -11954,8 +12631,8 @@ SHLIGHT_INLINE shli_real shli_half_image(shli_real *io_px, shli_real *io_py, shl
   return (par + 2.0) * 0.15915494309189534 * (2.0 * j2 - dv * j1);
 }
 
-/* The common body of shl_polygon_blinn_phong (kind 0, par = e) and shl_polygon_beckmann (kind
-   1, par = alpha): clip to the horizon, the representative direction l* (the point of the
+/* The common body of shl_polygon_blinn_phong (kind 0, par = e) and shl_polygon_beckmann_subedges
+   (kind 1, par = alpha): clip to the horizon, the representative direction l* (the point of the
    clipped light nearest the mirror direction r: r itself when every edge sees r on the same
    side, else the nearest vertex or in-arc foot point; used for Beckmann's held G2), then the
    sums over the sub-edge image polygon in half-vector space (shli_half_image). par already
@@ -12123,23 +12800,6 @@ SHLIGHT_INLINE shli_real shli_half_light(const float (*v)[3], int nv, const floa
   return sum / ((1.0 + shli_beckmann_lambda(dv, par) + shli_beckmann_lambda(nl, par)) * dv);
 }
 
-/* shl_polygon_blinn_phong: the normalised Blinn-Phong microfacet specular from a unit-radiance
-   polygon light, integral over the polygon v[0..nv-1] (vertices relative to the shading point,
-   any winding, two-sided), clipped to the horizon u.nrm > 0, of f (nrm.l) dl with
-   f = D(h) / 4, D(h) = (e+2)/(2 pi) (nrm.h)^e, h = normalise(l + view): the microfacet BRDF
-   D G / (4 (n.l)(n.v)) with the implicit G = (n.l)(n.v), Fresnel 1. The usual engine form
-   (e+8)/(8 pi) (n.h)^e is this times (e+8)/(e+2). Computed in half-vector space (seed 001 sec.
-   8) over the light's image H(P), H's curved edges replaced by great arcs between the images
-   of k sub-edges per light edge (shli_half_splits); the integrand there, t^e (n.l)(h.v), is
-   integrated without a held factor (shli_half_image: two QUADRATURE moments and two line
-   integrals per arc). subedges = k in [1, SHLIGHT_HALF_K] (clamped): 1 = the vertices only,
-   2 = the paper's single split with its balancing heuristic, >= 3 = split at p plus graded
-   splits; -k = the same without the balancing heuristic. Error (of the albedo, README
-   "Microfacet polygon lights", 96 random quads x e = 1..1e4): worst case k = 2: 0.15, k = 4:
-   3.0e-2, k = 8: 8.3e-3. Cost: ~90k / 220k / 420k x86 instructions per quad at k = 2 / 4 / 8
-   (Phong QUADRATURE: 9.3k). view, nrm: any length (normalised inside). Degenerate: nv < 3, NaN /
-   Inf input, zero nrm or view, view at or below the horizon (nrm.view <= 0), light wholly below the
-   horizon, NaN exponent: 0; exponent clamped to [0, 1e6]. */
 SHLIGHT_INLINE float shl_polygon_blinn_phong(const float (*v)[3], int nv, const float nrm[3],
                                              const float view[3], float exponent, int subedges) {
   shli_real e = SHLIGHT_REAL(exponent);
@@ -12158,22 +12818,8 @@ SHLIGHT_INLINE float shl_polygon_blinn_phong(const float (*v)[3], int nv, const 
   return SHLIGHT_FLOAT(shli_half_light(v, nv, nrm, view, e, subedges, 0));
 }
 
-/* shl_polygon_beckmann: the Beckmann microfacet specular from a unit-radiance polygon light
-   (as shl_polygon_blinn_phong): integral over the polygon clipped to the horizon of
-   D_B(h) G2(l, v) / (4 (n.v)) dl, D_B as in shl_polygon_beckmann_ndf about nrm, G2 the
-   height-correlated Smith masking-shadowing 1 / (1 + Lambda(v) + Lambda(l)) with Beckmann's
-   Lambda (shli_beckmann_lambda), Fresnel 1. In half-vector space: the integral of D_B (h.v)
-   over the sub-edge image polygon without approximation beyond the split
-   (shli_half_image), times G2 / (n.v) with G2 held at the light point nearest the mirror
-   direction. subedges as shl_polygon_blinn_phong (the balancing uses m = alpha). Error (of
-   the albedo, README): worst case 0.41 / 0.35 / 0.36 at k = 2 / 4 / 8 (alpha = 0.4, lights
-   straddling the horizon, grazing views, large lights: the held G2; without G2 k = 8 is within
-   1.1e-2); slivers 1.8e-3 at k = 8. Cost: ~48k / 115k / 220k instructions per quad at
-   k = 2 / 4 / 8. alpha clamped to [1e-4, 1]; NaN alpha and the degenerate inputs of
-   shl_polygon_blinn_phong: 0. shl_polygon_beckmann_taylor computes the same integral with G2
-   not held (worst 4.9e-2 of the albedo on bench_ggx's sampler, 33k instructions): prefer it. */
-SHLIGHT_INLINE float shl_polygon_beckmann(const float (*v)[3], int nv, const float nrm[3],
-                                          const float view[3], float alpha, int subedges) {
+SHLIGHT_INLINE float shl_polygon_beckmann_subedges(const float (*v)[3], int nv, const float nrm[3],
+                                                   const float view[3], float alpha, int subedges) {
   shli_real al = SHLIGHT_REAL(alpha);
 #if SHLIGHT_POLYGON_ANY
   if (nv > SHLIGHT_POLYGON_MAX) {
@@ -12214,7 +12860,8 @@ SHLIGHT_CPU_INLINE float shli_fan_phong(const float (*v)[3], int nv, const float
 SHLIGHT_CPU_INLINE float shli_fan_phong2(const float (*v)[3], int nv, const float nrm[3],
                                          const float view[3], float exponent,
                                          shl_edge_method method) {
-  SHLIGHT_FAN_SUM_(shl_polygon_phong2(SHLIGHT_FAN_P_, f.np, nrm, view, exponent, method));
+  SHLIGHT_FAN_SUM_(
+      shl_polygon_phong_double_axis(SHLIGHT_FAN_P_, f.np, nrm, view, exponent, method));
 }
 SHLIGHT_CPU_INLINE float shli_fan_ggx_ndf(const float (*v)[3], int nv, const float axis[3],
                                           float alpha) {
@@ -12226,7 +12873,7 @@ SHLIGHT_CPU_INLINE float shli_fan_ggx(const float (*v)[3], int nv, const float n
 }
 SHLIGHT_CPU_INLINE float shli_fan_beckmann_taylor(const float (*v)[3], int nv, const float nrm[3],
                                                   const float view[3], float alpha) {
-  SHLIGHT_FAN_SUM_(shl_polygon_beckmann_taylor(SHLIGHT_FAN_P_, f.np, nrm, view, alpha));
+  SHLIGHT_FAN_SUM_(shl_polygon_beckmann(SHLIGHT_FAN_P_, f.np, nrm, view, alpha));
 }
 SHLIGHT_CPU_INLINE float shli_fan_beckmann_ndf(const float (*v)[3], int nv, const float axis[3],
                                                float alpha) {
@@ -12238,25 +12885,24 @@ SHLIGHT_CPU_INLINE float shli_fan_blinn_phong(const float (*v)[3], int nv, const
 }
 SHLIGHT_CPU_INLINE float shli_fan_beckmann(const float (*v)[3], int nv, const float nrm[3],
                                            const float view[3], float alpha, int subedges) {
-  SHLIGHT_FAN_SUM_(shl_polygon_beckmann(SHLIGHT_FAN_P_, f.np, nrm, view, alpha, subedges));
+  SHLIGHT_FAN_SUM_(shl_polygon_beckmann_subedges(SHLIGHT_FAN_P_, f.np, nrm, view, alpha, subedges));
 }
 #undef SHLIGHT_FAN_SUM_
 #undef SHLIGHT_FAN_P_
 
 /* >>brdf ------------------------------------------------------------------------------------
    ZH of circularly symmetric BRDF lobes, convolution with SH / ZH radiance, irradiance,
-   windowing and band selection (MATH.md sec. 5-6; seed 004 sec. 3.3 with erratum E7; seed 000
-   sec. 4.2, 6.3, Appendix B).
-   A lobe f(w . c) about its axis c (the normal for Lambert and the microfacet lobes, the
-   mirror direction for Phong) has ZH coefficients f_l = 2 pi int_0^pi f(cos t) Y_l^0(t)
-   sin t dt; its SH about c are sqrt(4 pi / (2l+1)) f_l Y_l^m(c) (shl_zh_rotate).
-   Cosine powers (Lambert, Phong, Blinn-Phong) use the factorial-free recurrence of MATH.md
-   sec. 5: Lambda_l(e) = (e+1) int_0^1 x^e P_l(x) dx, Lambda_0 = 1, Lambda_1 = (e+1)/(e+2),
-   Lambda_{l+2} = Lambda_l (e-l)/(e+l+3), in shli_real (double in C: within one float rounding
-   of a binary128 quadrature reference for e in [0, 1e4] and n <= 64, tests/test_brdf).
-   The microfacet lobes (GGX, Beckmann: the projected NDF D(h)(n . h), which integrates to 1)
-   use the substitution tan^2 t = alpha^2 v, after which f_l = K_l int w(v) P_l((1 + alpha^2
-   v)^-1/2) dv with w(v) = (1+v)^-2 (GGX) or e^-v (Beckmann), and the trapezoidal rule in
+   windowing and band selection (docs/math.md section 5-6; [SSF] sec. 3.3 with correction E7
+   (docs/math.md section 12); [HVL] sec. 4.2, 6.3, Appendix B). A lobe f(w . c) about its axis c
+   (the normal for Lambert and the microfacet lobes, the mirror direction for Phong) has ZH
+   coefficients f_l = 2 pi int_0^pi f(cos t) Y_l^0(t) sin t dt; its SH about c are sqrt(4 pi /
+   (2l+1)) f_l Y_l^m(c) (shl_zh_rotate). Cosine powers (Lambert, Phong, Blinn-Phong) use the
+   factorial-free recurrence of docs/math.md sec. 5: Lambda_l(e) = (e+1) int_0^1 x^e P_l(x) dx,
+   Lambda_0 = 1, Lambda_1 = (e+1)/(e+2), Lambda_{l+2} = Lambda_l (e-l)/(e+l+3), in shli_real (double
+   in C: within one float rounding of a binary128 quadrature reference for e in [0, 1e4] and n <=
+   64, tests/test_brdf). The microfacet lobes (GGX, Beckmann: the projected NDF D(h)(n . h), which
+   integrates to 1) use the substitution tan^2 t = alpha^2 v, after which f_l = K_l int w(v) P_l((1
+   + alpha^2 v)^-1/2) dv with w(v) = (1+v)^-2 (GGX) or e^-v (Beckmann), and the trapezoidal rule in
    u = ln v (step h = min(0.35, 6 / (n+1)), u from -18 to where the weight is spent, both tails
    added in closed form): exponentially accurate for these smooth, decaying integrands.
    Measured against a long double quadrature in t: at the float rounding floor (shl_zh_ggx).
@@ -12266,12 +12912,9 @@ SHLIGHT_CPU_INLINE float shli_fan_beckmann(const float (*v)[3], int nv, const fl
    theorem sum_m Y_lm(u) Y_lm(v) = (2l+1)/(4 pi) P_l(u . v) leaves
      int A B = sum_l a_l b_l P_l(u . v)                   (shl_zh_dot_zh, O(n))
    (no sqrt(4 pi / (2l+1)) factor: the two rotations' factors cancel against the theorem's).
-   Irradiance of a ZH radiance L about w at a normal n, z = w . n (MATH.md sec. 6):
+   Irradiance of a ZH radiance L about w at a normal n, z = w . n (docs/math.md section 6):
      E(z) = sum_l A_l K_l L_l P_l(z), A_l = pi Lambda_l(1)   (A_0 = pi, A_1 = 2pi/3, A_2 = pi/4)
-   which for n = 3 is seed 000's Appendix B 2x2 form c3 L2 z^2 + 2 c2 L1 z + c4 L0 - c5 L2. */
-#define SHLIGHT_WINDOW_NONE 0
-#define SHLIGHT_WINDOW_HANNING 1
-#define SHLIGHT_WINDOW_LANCZOS 2
+   which for n = 3 is [HVL] Appendix B 2x2 form c3 L2 z^2 + 2 c2 L1 z + c4 L0 - c5 L2. */
 
 /* out_zh[l] = scale K_l Lambda_l(e), l < n (n already clamped, >= 1), e in [0, 1e30]. */
 SHLIGHT_INLINE void shli_zh_lambda(int n, shli_real e, shli_real scale, float *out_zh) {
@@ -12305,13 +12948,6 @@ SHLIGHT_INLINE shli_real shli_zh_exponent(float exponent) {
   return e;
 }
 
-/* shl_zh_phong: ZH of the normalised Phong lobe (e+1)/(2 pi) max(0, cos t)^e about its axis:
-   out_zh[l] = K_l Lambda_l(e) (MATH.md sec. 5; the printed products of seed 004 sec. 3.3.2).
-   exponent: any real >= 0 (non-integer too); NaN or negative: 0 (the uniform hemisphere
-   1/(2 pi)); above 1e30: 1e30, where every Lambda_l rounds to 1 (the Dirac limit, out_zh[l] =
-   K_l). out_zh[0] = K_0 = 0.2820948 always (unit integral). Accuracy: within one float rounding
-   of the exact value (binary128 quadrature) for e in [0, 1e4], n <= 64. out_zh: n floats.
-   Cost: O(n), one division per band. */
 SHLIGHT_INLINE void shl_zh_phong(int n, float exponent, float *out_zh) {
   n = shli_bands(n);
   if (n < 1) {
@@ -12320,11 +12956,6 @@ SHLIGHT_INLINE void shl_zh_phong(int n, float exponent, float *out_zh) {
   shli_zh_lambda(n, shli_zh_exponent(exponent), 1.0, out_zh);
 }
 
-/* shl_zh_cosine_power: ZH of the unnormalised clamped cosine power max(0, cos t)^e:
-   out_zh[l] = 2 pi K_l Lambda_l(e) / (e+1) = sqrt(pi (2l+1)) int_0^1 x^e P_l(x) dx. Same
-   exponent domain and accuracy as shl_zh_phong (e = 0: the hemisphere indicator, out_zh[0] =
-   sqrt(pi); e = 1: the clamped cosine, out_zh = A_l K_l of MATH.md sec. 6; above 1e30: 1e30,
-   every coefficient about 2 pi K_l 1e-30). out_zh: n floats. Cost: O(n). */
 SHLIGHT_INLINE void shl_zh_cosine_power(int n, float exponent, float *out_zh) {
   shli_real e;
   n = shli_bands(n);
@@ -12335,20 +12966,10 @@ SHLIGHT_INLINE void shl_zh_cosine_power(int n, float exponent, float *out_zh) {
   shli_zh_lambda(n, e, 6.283185307179586 / (e + 1.0), out_zh);
 }
 
-/* shl_zh_lambert: ZH of the Lambert lobe max(0, cos t) / pi (k_d = 1; the BRDF times the
-   cosine) about the normal: out_zh[l] = K_l Lambda_l(1) = (1/pi) K_l A_l with the
-   Ramamoorthi-Hanrahan A_l (erratum E7: seed 004's even-l formula is off by 2, 16, 192, ...):
-   0.2820948, 0.3257350, 0.1576958, 0, -0.0352618, 0, 0.0158923, ... Multiply by pi for the
-   clamped cosine (irradiance). Accuracy: one float rounding. out_zh: n floats. Cost: O(n). */
 SHLIGHT_INLINE void shl_zh_lambert(int n, float *out_zh) {
   shl_zh_phong(n, 1.0f, out_zh);
 }
 
-/* shl_zh_blinn_phong: ZH of the normalised Blinn-Phong NDF times the cosine, D(h) (n . h) with
-   D = (e+2)/(2 pi) (n . h)^e, about the normal n (unit integral over the hemisphere of h):
-   the Phong lobe of exponent e + 1, exactly (a lobe over half vectors h; turning it into a
-   lobe over light directions is the BRDF tables' business). exponent: NaN or < 0: 0, then as
-   shl_zh_phong. out_zh: n floats. Cost: O(n). */
 SHLIGHT_INLINE void shl_zh_blinn_phong(int n, float exponent, float *out_zh) {
   float e = exponent;
   if (!(e >= 0.0f)) {
@@ -12436,15 +13057,6 @@ SHLIGHT_INLINE void shli_zh_delta(int n, float *out_zh) {
   }
 }
 
-/* shl_zh_ggx: ZH of the GGX (Trowbridge-Reitz) NDF times the cosine about the normal,
-   D(h)(n . h) with D = alpha^2 / (pi ((n.h)^2 (alpha^2 - 1) + 1)^2) (unit integral:
-   out_zh[0] = K_0). alpha: the roughness (GGX alpha, not its square root); alpha < 1e-6, 0,
-   negative or NaN: the Dirac limit out_zh[l] = K_l (off by < 1e-7 K_l at alpha = 1e-6, l < 64);
-   alpha > 1e4: 1e4. Measured max |error| / K_l against a long double quadrature in t: 5.4e-8
-   (the float rounding of the output) for alpha in [1e-4, 1e2] and n in {1, 4, 8, 16, 32, 64}
-   (tests/test_brdf; the rule itself is good to ~1e-9 K_l). out_zh: n floats. Cost:
-   (36 + 2 ln(1/min(alpha, 1))) / h nodes, h = min(0.35, 6 / (n+1)), each one exp, one sqrt
-   and n Legendre steps: 116 nodes at n = 4 and 223 at n = 32 for alpha = 0.1. */
 SHLIGHT_INLINE void shl_zh_ggx(int n, float alpha, float *out_zh) {
   shli_real a = SHLIGHT_REAL(alpha);
   n = shli_bands(n);
@@ -12461,11 +13073,6 @@ SHLIGHT_INLINE void shl_zh_ggx(int n, float alpha, float *out_zh) {
   shli_zh_ndf(n, a, 0, out_zh);
 }
 
-/* shl_zh_beckmann: ZH of the Beckmann NDF times the cosine about the normal, D(h)(n . h) with
-   D = exp(-tan^2 t / alpha^2) / (pi alpha^2 cos^4 t). alpha: the Beckmann roughness (RMS
-   slope); degenerate alpha as shl_zh_ggx. Accuracy as shl_zh_ggx (max 7e-8 K_l). out_zh: n
-   floats. Cost: about 22 / h nodes (alpha-independent: 63 at n = 4, 121 at n = 32), each two
-   exp, one sqrt and n Legendre steps. */
 SHLIGHT_INLINE void shl_zh_beckmann(int n, float alpha, float *out_zh) {
   shli_real a = SHLIGHT_REAL(alpha);
   n = shli_bands(n);
@@ -12482,11 +13089,6 @@ SHLIGHT_INLINE void shl_zh_beckmann(int n, float alpha, float *out_zh) {
   shli_zh_ndf(n, a, 1, out_zh);
 }
 
-/* shl_sh_dot: sum_i a[i] b[i], i < n^2: the integral over the sphere of the product of two
-   functions given by their SH (seed 000 eq. 4), accumulated in shli_real in four interleaved
-   partial sums (i mod 4: independent add chains, so the loop is not bound by the add
-   latency; the result does not depend on the compiler's reassociation). a, b: n^2 floats.
-   n < 1: 0. Cost: n^2 FMA. */
 SHLIGHT_INLINE float shl_sh_dot(int n, const float *a, const float *b) {
   shli_real s0 = 0.0;
   shli_real s1 = 0.0;
@@ -12600,11 +13202,6 @@ SHLIGHT_INLINE float shli_sh_conv_zh_xyz(int n, const float *sh, const float *zh
   return shl_sh_dot(n, sh, ysh);
 }
 
-/* shl_sh_conv_zh: the integral of the SH function sh (n^2 coefficients) times the lobe with
-   ZH coefficients zh (n floats) turned to the axis w: sum_l sqrt(4 pi/(2l+1)) zh[l] sum_m
-   sh[l(l+1)+m] Y_lm(w) = shl_sh_dot(sh, shl_zh_rotate(zh, w)) without the rotated copy. w: any
-   finite non-zero vector (normalised in shli_real); zero, NaN or infinite: +z. n < 1: 0.
-   Cost: one SH evaluation (n^2 values, a float[SHLIGHT_MAX_COEFFS] on the stack) and n^2 FMA. */
 SHLIGHT_INLINE float shl_sh_conv_zh(int n, const float *sh, const float *zh, const float w[3]) {
   shli_real g[8];
   n = shli_bands(n);
@@ -12651,13 +13248,6 @@ SHLIGHT_INLINE float shli_zh_dot_c(int n, const float *zh_a, const float *zh_b, 
   return SHLIGHT_FLOAT(s);
 }
 
-/* shl_zh_dot_zh: the integral over the sphere of the product of two circularly symmetric
-   functions, ZH zh_a about the axis u and ZH zh_b about the axis v (n floats each):
-   sum_l zh_a[l] zh_b[l] P_l(u . v) (see >>brdf; equal to shl_sh_dot of the two rotated SH).
-   Use it when the lobe is circularly symmetric about its own axis (Phong about the mirror
-   direction, a microfacet lobe about the normal) and the radiance is a ZH (a sphere light's
-   cap, an HVL). u, v: any finite non-zero vectors; zero, NaN or infinite: +z. n < 1: 0.
-   Cost: O(n): two normalisations, n Legendre steps, 3n flops. */
 SHLIGHT_INLINE float shl_zh_dot_zh(int n, const float *zh_a, const float u[3], const float *zh_b,
                                    const float v[3]) {
   n = shli_bands(n);
@@ -12682,13 +13272,7 @@ SHLIGHT_INLINE shli_real shli_clamp_cos(float z) {
   return c;
 }
 
-/* shl_zh_irradiance3: irradiance E = int L(w) max(0, n . w) dw of a 3-band ZH radiance
-   zh3 = (L_0, L_1, L_2) about an axis w_l, at a normal with z = w_l . n: seed 000 Appendix B,
-   E = sigma^T M sigma, sigma = (z, 1), M = ((c3 L2, c2 L1), (c2 L1, c4 L0 - c5 L2)), i.e.
-   c3 L2 z^2 + 2 c2 L1 z + c4 L0 - c5 L2 with the exact constants c2 = sqrt(3 pi)/6,
-   c3 = 3 sqrt(5 pi)/16, c4 = sqrt(pi)/2, c5 = sqrt(5 pi)/16 (the printed 6-digit values
-   differ by <= 1.1e-6). z outside [-1, 1]: clamped; NaN: 0. Cost: 5 flops. */
-SHLIGHT_INLINE float shl_zh_irradiance3(const float *zh3, float z) {
+SHLIGHT_INLINE float shl_zh_irradiance_quadratic(const float *zh3, float z) {
   shli_real c = shli_clamp_cos(z);
   shli_real l2 = SHLIGHT_REAL(zh3[2]);
   return SHLIGHT_FLOAT(0.7431238683011271 * l2 * c * c +
@@ -12696,10 +13280,6 @@ SHLIGHT_INLINE float shl_zh_irradiance3(const float *zh3, float z) {
                        0.8862269254527579 * SHLIGHT_REAL(zh3[0]) - 0.2477079561003757 * l2);
 }
 
-/* shl_zh_irradiance: the same for n bands, E(z) = sum_l A_l K_l L_l P_l(z), A_l = pi
-   Lambda_l(1) (MATH.md sec. 6): the exact irradiance of the band-limited radiance (its bands
-   >= n are zero, so the clamped cosine's are not needed). zh: n floats; z as
-   shl_zh_irradiance3. n < 1: 0. Cost: O(n). */
 SHLIGHT_INLINE float shl_zh_irradiance(int n, const float *zh, float z) {
   shli_real c;
   shli_real s;
@@ -12758,16 +13338,7 @@ SHLIGHT_INLINE shli_real shli_sinpi(shli_real t) {
   return x + x * (x2 * p);
 }
 
-/* shl_sh_window: multiplies band l of a ZH (io_zh, n floats) by a window sigma_l against
-   ringing (Sloan, "Stupid SH tricks"; seed 000 sec. 4.2): kind SHLIGHT_WINDOW_HANNING (1):
-   sigma_l = (1 + cos(pi l / width)) / 2; SHLIGHT_WINDOW_LANCZOS (2): sigma_l = sinc(l / width)
-   = sin(pi l / width) / (pi l / width); both 0 for l >= width. width: the window's band count,
-   > 0 (typically n, or n + 1 to keep the last band); <= 0 or NaN: n; +inf: sigma_l = 1 (the
-   limit; every band kept). Another kind
-   (SHLIGHT_WINDOW_NONE): unchanged. For an SH vector multiply its band l by the sigma_l that
-   this returns for a ZH of ones. Measured on a cap (half-angle 30 deg, n = 8; tests/test_brdf,
-   bench/out/brdf.md): see README. Cost: O(n). */
-SHLIGHT_INLINE void shl_sh_window(int n, int kind, float width, float *io_zh) {
+SHLIGHT_INLINE void shl_sh_window(int n, shl_window_kind kind, float width, float *io_zh) {
   shli_real w = SHLIGHT_REAL(width);
   shli_real t;
   shli_real sg;
@@ -12798,13 +13369,6 @@ SHLIGHT_INLINE void shl_sh_window(int n, int kind, float width, float *io_zh) {
   }
 }
 
-/* shl_zh_bands_for: the smallest band count m in [1, n] whose truncation of the lobe zh (n
-   floats, n = the largest band count considered) has relative squared L2 error
-     sum_{m <= l < n} zh[l]^2 / sum_{l < n} zh[l]^2 <= target,
-   i.e. the fraction of the lobe's energy (over the sphere, within the first n bands) that the
-   dropped bands carry. (The bands >= n are not seen: pass a large n, e.g. 64, to measure
-   against the full lobe.) For an L2 error target eps relative to the lobe's norm, pass eps^2.
-   target NaN or < 0: n; a zero lobe: 1. Cost: O(n). */
 SHLIGHT_INLINE int shl_zh_bands_for(int n, const float *zh, float target) {
   shli_real tot = 0.0;
   shli_real tail = 0.0;
@@ -12840,8 +13404,8 @@ SHLIGHT_INLINE int shl_zh_bands_for(int n, const float *zh, float target) {
 }
 
 /* >>hvl -------------------------------------------------------------------------------------
-   Harmonics Virtual Lights (seed 000 sec. 5; MATH.md sec. 6, errata E8, E9). An HVL j is a
-   sphere of radius r at y with normal n_j and power Phi_j, whose emission towards the shading
+   Harmonics Virtual Lights ([HVL] sec. 5; docs/math.md section 6, corrections E8, E9). An HVL j is
+   a sphere of radius r at y with normal n_j and power Phi_j, whose emission towards the shading
    point x is the reconstruction of an SH emission function F' (the BRDF projected without the
    cosine, in world axes). With w_j = (y - x) / |y - x| and n_x the normal at x:
      eq. 20  L_j = Phi_j (F' . Y(-w_j)) G_j(-w_j)                      (shl_hvl_radiance)
@@ -12850,16 +13414,16 @@ SHLIGHT_INLINE int shl_zh_bands_for(int n, const float *zh, float target) {
              (shl_zh_cap rotated to w_j; shl_hvl_contribution, O(n^2)), or with a ZH lobe F
              about its own axis, shl_zh_dot_zh (shl_hvl_contribution_zh, O(n)).
    H is the fraction of the cap (half-angle a, sin a = s = min(r/d, 1), d = |y - x|) above the
-   horizon of n_x, with beta the angle between n_x and w_j. Exact (MATH.md sec. 6, two-cap
+   horizon of n_x, with beta the angle between n_x and w_j. Exact (docs/math.md section 6, two-cap
    intersection), rewritten without cancellation for small caps: with c = cos beta,
    t = c / s, k = cos a / sin beta, both in the crossing range |c| < s,
      H = D / (pi (1 - cos a)) + acos(-t k) / pi,   D = acos(t k) - acos(t)
    where sin D = t (s - c)(s + c) / (sin^2 beta (sqrt(1 - t^2 k^2) + k sqrt(1 - t^2))) and
    cos D = t^2 k + sqrt(1 - t^2 k^2) sqrt(1 - t^2) (no difference of nearly equal angles),
    1 - cos a = s^2 / (1 + cos a); H = 1 for c >= s, 0 for c <= -s (shl_hvl_horizon). The cheap
-   variant is seed 000's smoothstep (eq. 22) with the clamp corrected (erratum E8:
-   lower bound pi/2 - a, S clamped to [0, 1]): max abs error 0.039-0.089 against the exact H
-   (shl_hvl_horizon_smoothstep). The angles use the own atan2 of >>light. */
+   variant is [HVL] smoothstep (eq. 22) with the clamp corrected (correction E8 (docs/math.md
+   section 12): lower bound pi/2 - a, S clamped to [0, 1]): max abs error 0.039-0.089 against the
+   exact H (shl_hvl_horizon_smoothstep). The angles use the own atan2 of >>light. */
 
 /* exact H for the cosine c (in [-1, 1]) between the normal and the axis */
 SHLIGHT_INLINE float shli_hvl_h(shli_real c, float r, float d) {
@@ -12909,16 +13473,8 @@ SHLIGHT_INLINE float shli_hvl_h(shli_real c, float r, float d) {
   return SHLIGHT_FLOAT(hh);
 }
 
-/* shl_hvl_horizon: exact fraction H in [0, 1] of the cap of a sphere of radius r at distance
-   d in the direction w that lies above the plane of the normal nx (see >>hvl). nx, w: any
-   finite non-zero vectors (normalised in shli_real; zero, NaN or infinite: +z). d <= r (x on
-   or inside the sphere): the cap is the hemisphere about w (s = 1). r <= 0 or NaN, d NaN, or
-   a cap too small for float (s = 0): the point limit, 1 if nx . w > 0, 0 if < 0, 1/2 if 0.
-   Accuracy: max |error| 3.0e-8 (the float rounding of the output) against a long double
-   ring-by-ring quadrature of the cap, s from 1e-6 to 1, all crossing angles (tests/test_brdf).
-   Cost: 2 normalisations, ~8 sqrt, 2 own atan2. */
-SHLIGHT_INLINE float shl_hvl_horizon(const float nx[3], const float w[3], float r, float d) {
-  return shli_hvl_h(shli_cos_between(nx, w), r, d);
+SHLIGHT_INLINE float shl_hvl_horizon(const float nrm[3], const float w[3], float r, float d) {
+  return shli_hvl_h(shli_cos_between(nrm, w), r, d);
 }
 
 /* smoothstep H for the cosine c */
@@ -12957,25 +13513,15 @@ SHLIGHT_INLINE float shli_hvl_hs(shli_real c, float r, float d) {
   return SHLIGHT_FLOAT(xx * xx * (3.0 - 2.0 * xx));
 }
 
-/* shl_hvl_horizon_smoothstep: seed 000 eq. 22 with erratum E8 fixed: H = S((a + pi/2 -
-   clamp(beta, pi/2 - a, pi/2 + a)) / (2a)), S(x) = 3x^2 - 2x^3 on x clamped to [0, 1]. Same
-   arguments and degenerate results as shl_hvl_horizon (a = 0: the point limit). Max abs
-   error against the exact H: 0.039 (a = 0.01) to 0.089 (a = 1.5) (MATH.md sec. 6; remeasured
-   in tests/test_brdf). Cost: 2 normalisations, 2 own atan2. */
-SHLIGHT_INLINE float shl_hvl_horizon_smoothstep(const float nx[3], const float w[3], float r,
+#ifdef SHLIGHT_REFERENCE_FORMS
+SHLIGHT_INLINE float shl_hvl_horizon_smoothstep(const float nrm[3], const float w[3], float r,
                                                 float d) {
-  return shli_hvl_hs(shli_cos_between(nx, w), r, d);
+  return shli_hvl_hs(shli_cos_between(nrm, w), r, d);
 }
+#endif
 
-/* shl_hvl_geometric: seed 000 eq. 21, G_j = max(0, n_j . (x - y)/|x - y|) H(n_x, w_j) /
-   (pi r^2), with H exact (exact != 0, shl_hvl_horizon) or the smoothstep variant (exact = 0).
-   x, nx: shading point and its normal; y, ny: the HVL's centre and normal (normals: any
-   non-zero vectors, normalised here). r <= 0 or NaN: 0 (no HVL). x == y: the direction +z
-   (then H is the hemisphere's). NaN or infinite positions: 0. Bounded by 1 / (pi r^2); a
-   value above FLT_MAX (possible for r < 3.1e-20 only) saturates to FLT_MAX, never inf. Cost:
-   about 3 normalisations and one H. */
-SHLIGHT_INLINE float shl_hvl_geometric(const float x[3], const float nx[3], const float y[3],
-                                       const float ny[3], float r, int exact) {
+SHLIGHT_INLINE float shl_hvl_geometric(const float x[3], const float nrm[3], const float y[3],
+                                       const float light_nrm[3], float r, int exact) {
   shli_real g[8];
   shli_real gn[8];
   shli_real cj;
@@ -12990,7 +13536,8 @@ SHLIGHT_INLINE float shl_hvl_geometric(const float x[3], const float nx[3], cons
   if (!(g[6] > 0.0)) {
     return 0.0f;
   }
-  shli_cap_frame(SHLIGHT_REAL(ny[0]), SHLIGHT_REAL(ny[1]), SHLIGHT_REAL(ny[2]), 1.0, gn);
+  shli_cap_frame(SHLIGHT_REAL(light_nrm[0]), SHLIGHT_REAL(light_nrm[1]), SHLIGHT_REAL(light_nrm[2]),
+                 1.0, gn);
   cj = -(gn[0] * g[0] + gn[1] * g[1] + gn[2] * g[2]);
   if (!(cj > 0.0)) {
     return 0.0f;
@@ -12998,7 +13545,7 @@ SHLIGHT_INLINE float shl_hvl_geometric(const float x[3], const float nx[3], cons
   if (cj > 1.0) {
     cj = 1.0;
   }
-  shli_cap_frame(SHLIGHT_REAL(nx[0]), SHLIGHT_REAL(nx[1]), SHLIGHT_REAL(nx[2]), 1.0, gn);
+  shli_cap_frame(SHLIGHT_REAL(nrm[0]), SHLIGHT_REAL(nrm[1]), SHLIGHT_REAL(nrm[2]), 1.0, gn);
   cx = gn[0] * g[0] + gn[1] * g[1] + gn[2] * g[2];
   if (cx > 1.0) {
     cx = 1.0;
@@ -13042,11 +13589,6 @@ SHLIGHT_INLINE float shli_hvl_emission_xyz(int n, const float *femit, shli_real 
   return shl_sh_dot(n, femit, ysh);
 }
 
-/* shl_hvl_emission: the reconstruction F' . Y(dir) of an SH emission function femit (n^2
-   floats) in the direction dir (seed 000 eq. 20 with dir = -w_j, from the HVL to x; any
-   finite non-zero vector, normalised; zero, NaN or infinite: +z). n = 1 (isotropic HVL):
-   femit[0] Y_0^0, no SH evaluation. Not clamped: a band-limited emission can be negative.
-   n < 1: 0. Cost: one SH evaluation (a float[SHLIGHT_MAX_COEFFS] on the stack) and n^2 FMA. */
 SHLIGHT_INLINE float shl_hvl_emission(int n, const float *femit, const float dir[3]) {
   shli_real g[8];
   n = shli_bands(n);
@@ -13057,20 +13599,16 @@ SHLIGHT_INLINE float shl_hvl_emission(int n, const float *femit, const float dir
   return shli_hvl_emission_xyz(n, femit, g[0], g[1], g[2]);
 }
 
-/* shl_hvl_radiance: seed 000 eq. 20, L_j = power (F' . Y(-w_j)) G_j(-w_j): the radiance that
-   HVL j (centre y, normal ny, radius r, emission femit: n^2 floats of SH in world axes) sends
-   to the shading point x with normal nx; exact selects H as in shl_hvl_geometric. Degenerate
-   inputs: those of shl_hvl_geometric give 0. Cost: shl_hvl_emission + shl_hvl_geometric. */
 SHLIGHT_INLINE float shl_hvl_radiance(int n, const float *femit, float power, const float x[3],
-                                      const float nx[3], const float y[3], const float ny[3],
-                                      float r, int exact) {
+                                      const float nrm[3], const float y[3],
+                                      const float light_nrm[3], float r, int exact) {
   shli_real g[8];
   float gj;
   n = shli_bands(n);
   if (n < 1) {
     return 0.0f;
   }
-  gj = shl_hvl_geometric(x, nx, y, ny, r, exact);
+  gj = shl_hvl_geometric(x, nrm, y, light_nrm, r, exact);
   if (!(gj > 0.0f)) {
     return 0.0f;
   }
@@ -13098,11 +13636,6 @@ SHLIGHT_INLINE int shli_hvl_cap(int n, const float x[3], const float y[3], float
   return 1;
 }
 
-/* shl_hvl_contribution: seed 000 eq. 19, lj (L . F): the light that HVL j (centre y, radius
-   r, radiance lj from shl_hvl_radiance) reflects at x through a lobe F given by its SH fsh
-   (n^2 floats, world axes; e.g. the BRDF with the cosine for the outgoing direction),
-   L = the SH of the sphere's unit cap at x (shl_zh_cap about w_j). x inside the sphere: the
-   hemisphere about w_j; r <= 0, NaN or infinite: 0. Cost: shl_zh_cap + shl_sh_conv_zh. */
 SHLIGHT_INLINE float shl_hvl_contribution(int n, float lj, const float *fsh, const float x[3],
                                           const float y[3], float r) {
   float zh[SHLIGHT_MAX_BANDS];
@@ -13114,10 +13647,6 @@ SHLIGHT_INLINE float shl_hvl_contribution(int n, float lj, const float *fsh, con
   return lj * shli_sh_conv_zh_xyz(n, fsh, zh, g[0], g[1], g[2]);
 }
 
-/* shl_hvl_contribution_zh: the same with a circularly symmetric lobe, ZH fzh (n floats) about
-   the axis faxis (seed 000 sec. 6.3: Phong about the mirror direction, a microfacet lobe
-   about the normal): lj shl_zh_dot_zh(cap about w_j, fzh about faxis). Degenerate inputs as
-   shl_hvl_contribution (faxis zero, NaN or infinite: +z). Cost: shl_zh_cap + O(n). */
 SHLIGHT_INLINE float shl_hvl_contribution_zh(int n, float lj, const float *fzh,
                                              const float faxis[3], const float x[3],
                                              const float y[3], float r) {
@@ -13140,11 +13669,6 @@ SHLIGHT_INLINE float shl_hvl_contribution_zh(int n, float lj, const float *fzh,
   return lj * shli_zh_dot_c(n, zh, fzh, c);
 }
 
-/* shl_hvl_radius_neighbours: seed 000 eq. 23, r1 = sum w_i |p - pn_i| / sum w_i with
-   w_i = 1 / (|dist - dn_i| + eps): the HVL at p (distance dist to its primary light) and up
-   to 8 neighbours pn_i (distances dn_i) from the RSM. count: clamped to [0, 8]. eps: NaN or
-   below 1e-20: 1e-20. Neighbours with a non-finite position or distance are skipped; none
-   left: 0. Cost: count sqrt and divisions. */
 SHLIGHT_INLINE float shl_hvl_radius_neighbours(int count, const float p[3], float dist,
                                                const float (*pn)[3], const float *dn, float eps) {
   shli_real sw = 0.0;
@@ -13179,23 +13703,17 @@ SHLIGHT_INLINE float shl_hvl_radius_neighbours(int count, const float p[3], floa
   return SHLIGHT_FLOAT(sd / sw);
 }
 
-/* shl_hvl_radius_fov: seed 000 eq. 24-26, r2 = d (g + g^3 / 3), g = sqrt(2) fov / sqrt(m),
-   the Taylor form of d tan(g) (fov: the RSM's field of view in radians, m the number of
-   HVLs, d the HVL's distance to the light). Within 1 % absolute of tan for g <= 0.5786, i.e.
-   fov / sqrt(m) <= 0.41 (erratum E9; the seed's 0.2 is wrong). m < 1: 1. d or fov NaN or
-   < 0: 0. A result above FLT_MAX (d near FLT_MAX, or a huge fov) saturates to FLT_MAX, never
-   inf; +inf d or fov: FLT_MAX. Cost: 1 sqrt, 8 flops. */
-SHLIGHT_INLINE float shl_hvl_radius_fov(float d, float fov, int m) {
+SHLIGHT_INLINE float shl_hvl_radius_fov(float d, float fov, int hvl_count) {
   shli_real dd = SHLIGHT_REAL(d);
   shli_real f = SHLIGHT_REAL(fov);
   shli_real g;
-  if (m < 1) {
-    m = 1;
+  if (hvl_count < 1) {
+    hvl_count = 1;
   }
   if (!(dd >= 0.0) || !(f >= 0.0)) {
     return 0.0f;
   }
-  g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(m)));
+  g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(hvl_count)));
   /* d g (1 + g^2 / 3) with the overflow test before the product (float in GLSL) */
   f = 1.0 + g * g / 3.0;
   g = dd * g;
@@ -13209,21 +13727,17 @@ SHLIGHT_INLINE float shl_hvl_radius_fov(float d, float fov, int m) {
   return SHLIGHT_FLOAT(g);
 }
 
-/* shl_hvl_radius_fov_tan: eq. 25 itself, r2 = d tan(g), g as shl_hvl_radius_fov, with the own
-   sine (no GLSL tan); g clamped to [0, 1.5707] (tan <= 1.3e4). Same degenerate inputs and
-   saturation at FLT_MAX.
-   Cost: 1 sqrt, 2 short polynomials. */
-SHLIGHT_INLINE float shl_hvl_radius_fov_tan(float d, float fov, int m) {
+SHLIGHT_INLINE float shl_hvl_radius_fov_tan(float d, float fov, int hvl_count) {
   shli_real dd = SHLIGHT_REAL(d);
   shli_real f = SHLIGHT_REAL(fov);
   shli_real g;
-  if (m < 1) {
-    m = 1;
+  if (hvl_count < 1) {
+    hvl_count = 1;
   }
   if (!(dd >= 0.0) || !(f >= 0.0)) {
     return 0.0f;
   }
-  g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(m)));
+  g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(hvl_count)));
   if (g > 1.5707) {
     g = 1.5707;
   }
@@ -13241,7 +13755,7 @@ SHLIGHT_INLINE float shl_hvl_radius_fov_tan(float d, float fov, int m) {
 }
 
 /* >>brdftab ---------------------------------------------------------------------------------
-   Kautz-style BRDF SH tables (seed 000 sec. 4.2, [KSS02]): for outgoing directions w_o on a
+   Kautz-style BRDF SH tables ([HVL] sec. 4.2, [KSS02]): for outgoing directions w_o on a
    grid, the SH (n bands, the >>basis convention) of F(w_i) = cos(theta_i) f_s(w_o, w_i) and of
    F'(w_i) = f_s(w_o, w_i), in the local frame (normal +z, tangent +x), w_i over the upper
    hemisphere (both are 0 below it). Built on the CPU (shl_brdf_table_build, the CPU-only part
@@ -13260,7 +13774,7 @@ SHLIGHT_INLINE float shl_hvl_radius_fov_tan(float d, float fov, int m) {
    by a factor 1.67 (0.05 deg steps at 89.9 deg). The last sample holds F and F' at cos theta_o = d0
    (F' diverges at exactly 90 degrees; shl_brdf_table_theta gives the sample angles). Sample p at
    phi_o = 2 pi p / n_phi (p = 0: phi_o = 0). n_phi = 1: an isotropic table, sampled at phi_o = 0
-   (seed 000 eq. 17-18); n_phi > 1: anisotropic, periodic in phi_o. On a GPU the same flat float
+   ([HVL] eq. 17-18); n_phi > 1: anisotropic, periodic in phi_o. On a GPU the same flat float
    array is an SSBO (std430 float[]), or an RGBA32F texture of n_theta * n_phi * 2 * n^2 / 4 texels
    read linearly (n^2 * 2 floats per sample: whole texels for every n >= 2), in the same order.
    Lookup (shl_brdf_table_cell, shl_brdf_table_lookup): d = atan2(w_z, |w_xy|) (own atan2, see
@@ -13279,11 +13793,6 @@ SHLIGHT_INLINE shli_real shli_brdf_grid_u(shli_real d) {
          0.4377994232697314;
 }
 
-/* shl_sh_rotate_z: io_sh (n bands) becomes the SH of the function rotated by the angle phi
-   about +z, given c1 = cos(phi) and s1 = sin(phi) (unit: c1^2 + s1^2 = 1): for m > 0,
-   (a, b) = (io_sh[l(l+1)+m], io_sh[l(l+1)-m]) -> (a cos(m phi) - b sin(m phi),
-   a sin(m phi) + b cos(m phi)); m = 0 unchanged. cos(m phi), sin(m phi) by the angle-addition
-   recurrence in shli_real. Cost: 4 flops per coefficient. */
 SHLIGHT_INLINE void shl_sh_rotate_z(int n, float c1, float s1, float *io_sh) {
   shli_real cm = 1.0;
   shli_real sm = 0.0;
@@ -13308,17 +13817,6 @@ SHLIGHT_INLINE void shl_sh_rotate_z(int n, float c1, float s1, float *io_sh) {
   }
 }
 
-/* shl_brdf_table_cell: the samples and weights of the lookup at the outgoing direction wo
-   (local frame, any finite vector; wo_x = wo_y = 0, zero included, is normal incidence,
-   theta_o = 0, phi_o = 0; wo_z < 0 counts as the horizon). out_idx[j] is a sample index
-   s = p * n_theta + t (the table's F of sample s starts at float 2 s n^2, F' at (2 s + 1) n^2),
-   out_w[j] its weight, j < 4: (t0, p0), (t0 + 1, p0), (t0, p1), (t0 + 1, p1) with
-   p1 = (p0 + 1) mod n_phi; the weights add up to 1. Isotropic tables (n_phi = 1) have weight 0
-   at j = 2, 3 (indices repeat j = 0, 1); n_theta = 1 puts all weight on t = 0. The samples
-   cover theta_o in [0, 90] degrees (grid of >>brdftab): no clamping at the ends.
-   n_theta or n_phi outside [1, 4096] (SHLIGHT_BRDF_TABLE_MAX_SAMPLES): all indices 0, all
-   weights 0 (so n_theta n_phi < 2^24 and no index overflows an int). Cost: one atan2 and one
-   log (a second atan2 with n_phi > 1), ~40 flops. */
 SHLIGHT_INLINE void shl_brdf_table_cell(int n_theta, int n_phi, const float wo[3], int *out_idx,
                                         float *out_w) {
   shli_real x = SHLIGHT_REAL(wo[0]);
@@ -13395,17 +13893,6 @@ SHLIGHT_INLINE void shl_brdf_table_cell(int n_theta, int n_phi, const float wo[3
   out_w[3] = ft * fp;
 }
 
-/* shl_brdf_table_lookup: the SH (n bands) of F (which = 0) or F' (which = 1) at the outgoing
-   direction wo (local frame, see shl_brdf_table_cell), interpolated from the table tab (layout
-   of >>brdftab: n_theta * n_phi * 2 * n^2 floats) and, for an isotropic table (n_phi = 1),
-   rotated about z to wo's azimuth (shl_sh_rotate_z with cos, sin of atan2(wo_y, wo_x); no
-   rotation when wo_x = wo_y = 0). out_sh: n * n floats. GLSL: tab is
-   float[SHLIGHT_BRDF_TABLE_FLOATS] (the host defines it; shl_prelude.glsl defaults it to
-   2 * 90 * SHLIGHT_MAX_COEFFS, one isotropic table of 90 samples); a shader that keeps the
-   table in an SSBO calls shl_brdf_table_cell, sums the 4 weighted samples itself and then
-   shl_sh_rotate_z. which outside {0, 1} is taken as 0; n_theta or n_phi outside [1, 4096],
-   or a table of n_theta n_phi 2 n^2 >= 2^31 floats (beyond int indexing), give zeros.
-   Cost: the cell, 4 FMA per coefficient, the rotation (4 flops per coefficient). */
 SHLIGHT_INLINE void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int which,
                                           const float *tab, const float wo[3], float *out_sh) {
   int idx[4];
@@ -13452,15 +13939,15 @@ SHLIGHT_INLINE void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int whi
 
 /* >>ssf -------------------------------------------------------------------------------------
    Screen-space SH filter for instant global illumination with virtual point lights (VPLs):
-   seed 004 (Segovia & Wald) on top of instant radiosity (Keller 1997), n x m interleaved
+   [SSF] (Segovia & Wald) on top of instant radiosity (Keller 1997), n x m interleaved
    sampling (Keller & Heidrich 2001) and IGI's discontinuity filter (Wald et al. 2002).
    VPL. A VPL j at y with normal n_y and flux Phi is a cosine emitter: its radiant intensity
    towards the unit direction u is Phi max(0, n_y . u) / pi (the 1/pi makes the emitted flux,
    the intensity integrated over the hemisphere, equal to Phi). Seen from a receiver x, with
    d = |y - x| and w = (y - x) / d, it is a delta of incoming radiance in the direction w,
      L_j(w') = e delta(w' - w),  e = Phi max(0, n_y . -w) / (pi max(d^2, dmin^2))
-   (dmin: the clamp distance, the usual bound on the 1/d^2 singularity of VPLs; the seed's
-   sec. 3.2 leaves this constant to the VPL generation). So its SH coefficients (seed 004 eq. 1)
+   (dmin: the clamp distance, the usual bound on the 1/d^2 singularity of VPLs; the paper's
+   sec. 3.2 leaves this constant to the VPL generation). So its SH coefficients ([SSF] eq. 1)
    are e Y_i(w) (shl_ssf_vpl_sh) and its irradiance at a normal n is e max(0, n . w)
    (shl_ssf_vpl_irradiance); a Lambertian receiver of albedo kd reflects kd / pi of that.
    A VPL made from a spot light of intensity I (W/sr) through a shadow-map texel of solid angle
@@ -13472,7 +13959,7 @@ SHLIGHT_INLINE void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int whi
    point (u, v) (plane at distance 1) has dw ~ (2 tan(a) / w)^2 / (1 + u^2 + v^2)^(3/2) (its
    midpoint value; exactly F(u1, v1) - F(u0, v1) - F(u1, v0) + F(u0, v0) with F(u, v) =
    atan(u v / sqrt(1 + u^2 + v^2)) over its corners); texels outside the cone carry no flux.
-   Interleaved sampling (seed 004 sec. 2.3). The VPLs are split into n_int m_int disjoint sets,
+   Interleaved sampling ([SSF] sec. 2.3). The VPLs are split into n_int m_int disjoint sets,
    set s holding the VPLs j with j mod (n_int m_int) = s; pixel (px, py) uses set
    s = (py mod m_int) n_int + (px mod n_int) (shl_ssf_interleave), so every n_int x m_int tile
    of pixels uses every VPL exactly once. For sets that are spread over the scene rather than
@@ -13480,7 +13967,7 @@ SHLIGHT_INLINE void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int whi
    texel (tx, ty) is VPL ((ty / m_int) (w / n_int) + tx / n_int) n_int m_int + (ty mod m_int)
    n_int + tx mod n_int: each set is then a regular sub-lattice of the map. A pixel's estimate
    scales the flux of its set by n_int m_int (an unbiased estimate of the sum over all VPLs).
-   Filter (seed 004 sec. 3). Per pixel the SH of the incoming radiance of its set (RGB: three
+   Filter ([SSF] sec. 3). Per pixel the SH of the incoming radiance of its set (RGB: three
    SH vectors), then the box filter over the n_int x m_int window around the pixel with the
    discontinuity weight of shl_ssf_weight (geometric normals and positions: the filter must not
    look at a normal map), sum w_k L_k / sum w_k; finally the irradiance at the normal-mapped
@@ -13527,20 +14014,8 @@ SHLIGHT_INLINE shli_real shli_ssf_vpl(const float x[3], const float nx[3], const
   return f * cy * id2 * 0.3183098861837907;
 }
 
-/* shl_ssf_vpl_sh: adds to io_sh (n * n floats, n bands) the SH of the incoming radiance at the
-   receiver x due to one VPL at y with normal ny and flux `flux`: io_sh[i] += e Y_i(w), with
-   w = (y - x) / |y - x| and e = flux max(0, ny . -w) / (pi max(|y - x|^2, dmin^2)) (see >>ssf
-   for the constant). nx: the receiver's geometric normal, any length: a VPL strictly below its
-   plane (nx . w < 0) adds nothing (a normal-mapped shading normal must not see light through the
-   surface); nx = 0 turns the test off. ny: any finite non-zero vector (normalised; zero, NaN or
-   infinite: +z, the library's convention). dmin: the clamp distance (<= 0 or NaN: no clamp);
-   |y - x| is taken as at least 1e-18. Nothing is added when flux <= 0, NaN or infinite, x == y
-   (no direction), x or y NaN or infinite, or the VPL faces away (ny . -w <= 0). n < 1: nothing;
-   n > SHLIGHT_MAX_BANDS: see shli_bands. Accuracy: e to a few float roundings, times Y of
-   >>basis. Cost: 2 normalisations, one SH evaluation (a float[SHLIGHT_MAX_COEFFS] on the
-   stack) and n^2 FMA. */
-SHLIGHT_INLINE void shl_ssf_vpl_sh(int n, const float x[3], const float nx[3], const float y[3],
-                                   const float ny[3], float flux, float dmin, float *io_sh) {
+SHLIGHT_INLINE void shl_ssf_vpl_sh(int n, const float x[3], const float nrm[3], const float y[3],
+                                   const float light_nrm[3], float flux, float dmin, float *io_sh) {
   float ysh[SHLI_YBUF_COEFFS];
   shli_real g[8];
   float e;
@@ -13550,7 +14025,7 @@ SHLIGHT_INLINE void shl_ssf_vpl_sh(int n, const float x[3], const float nx[3], c
   if (n < 1) {
     return;
   }
-  e = SHLIGHT_FLOAT(shli_ssf_vpl(x, nx, y, ny, flux, dmin, g));
+  e = SHLIGHT_FLOAT(shli_ssf_vpl(x, nrm, y, light_nrm, flux, dmin, g));
   if (!(e > 0.0f)) {
     return;
   }
@@ -13568,11 +14043,6 @@ SHLIGHT_INLINE void shl_ssf_vpl_sh(int n, const float x[3], const float nx[3], c
   }
 }
 
-/* shl_ssf_vpl_irradiance: the irradiance at x with the shading normal ns due to the same VPL,
-   e max(0, ns . w) with e and w as in shl_ssf_vpl_sh (the exact value that shl_ssf_irradiance
-   of the accumulated SH approaches as the band count grows). ns: any finite non-zero vector
-   (normalised; zero, NaN or infinite: +z). Degenerate inputs as shl_ssf_vpl_sh: 0. Cost: 3
-   normalisations, ~30 flops. */
 SHLIGHT_INLINE float shl_ssf_vpl_irradiance(const float x[3], const float nx[3], const float ns[3],
                                             const float y[3], const float ny[3], float flux,
                                             float dmin) {
@@ -13604,31 +14074,24 @@ SHLIGHT_INLINE int shli_ssf_mod(int p, int k) {
   return (k - 1) - (-1 - p) % k;
 }
 
-/* shl_ssf_interleave: the VPL set of pixel (px, py) under n_int x m_int interleaved sampling of
-   nvpl VPLs (see >>ssf): out_range[0] = the first VPL s = (py mod m_int) n_int + (px mod
-   n_int), out_range[1] = the stride n_int m_int; the set is s, s + stride, ... below nvpl, and
-   the return value is its size, ceil((nvpl - s) / stride) (0 when s >= nvpl). Every
-   n_int x m_int tile of pixels uses every VPL exactly once. px, py: any int (negative ones
-   continue the pattern periodically). n_int, m_int: clamped to [1, 256]; nvpl < 0: 0.
-   out_range: 2 ints. Cost: a few integer operations. */
-SHLIGHT_INLINE int shl_ssf_interleave(int px, int py, int n_int, int m_int, int nvpl,
+SHLIGHT_INLINE int shl_ssf_interleave(int px, int py, int tile_x, int tile_y, int nvpl,
                                       int *out_range) {
   int s;
   int st;
-  if (n_int < 1) {
-    n_int = 1;
+  if (tile_x < 1) {
+    tile_x = 1;
   }
-  if (n_int > 256) {
-    n_int = 256;
+  if (tile_x > 256) {
+    tile_x = 256;
   }
-  if (m_int < 1) {
-    m_int = 1;
+  if (tile_y < 1) {
+    tile_y = 1;
   }
-  if (m_int > 256) {
-    m_int = 256;
+  if (tile_y > 256) {
+    tile_y = 256;
   }
-  st = n_int * m_int;
-  s = shli_ssf_mod(py, m_int) * n_int + shli_ssf_mod(px, n_int);
+  st = tile_x * tile_y;
+  s = shli_ssf_mod(py, tile_y) * tile_x + shli_ssf_mod(px, tile_x);
   out_range[0] = s;
   out_range[1] = st;
   if (nvpl <= s) {
@@ -13637,19 +14100,8 @@ SHLIGHT_INLINE int shl_ssf_interleave(int px, int py, int n_int, int m_int, int 
   return (nvpl - 1 - s) / st + 1;
 }
 
-/* shl_ssf_weight: the discontinuity-aware filter weight (seed 004 sec. 2.3; IGI) between a
-   pixel's surface point p with geometric normal np and a neighbour's q with nq: 1 when both lie
-   on one smooth surface, else 0. The test: the normals (normalised) agree, np . nq >= min_cos,
-   and each point lies within max_dist of the other's tangent plane, |np . (q - p)| <= max_dist
-   and |nq . (p - q)| <= max_dist (symmetric in the two pixels; a plane distance, so a slanted
-   plane passes at any depth, a depth step or a silhouette does not). Give it the geometric
-   (interpolated) normals, not the normal-mapped ones, and a max_dist that scales with the
-   pixel's footprint, e.g. 0.02 times the eye distance. max_dist < 0 or NaN: 0 for every pair;
-   +infinity: no plane test. min_cos <= -1: no normal test; NaN: 0. p == q and np == nq: 1 for
-   max_dist >= 0 and min_cos <= 1. Normals zero: +z; NaN or infinite: 0; NaN or infinite
-   positions: 0. Cost: 2 normalisations, ~20 flops. */
-SHLIGHT_INLINE float shl_ssf_weight(const float p[3], const float np[3], const float q[3],
-                                    const float nq[3], float max_dist, float min_cos) {
+SHLIGHT_INLINE float shl_ssf_weight(const float p[3], const float p_nrm[3], const float q[3],
+                                    const float q_nrm[3], float max_dist, float min_cos) {
   shli_real ga[8];
   shli_real gb[8];
   shli_real dx = SHLIGHT_REAL(q[0]) - SHLIGHT_REAL(p[0]);
@@ -13663,8 +14115,8 @@ SHLIGHT_INLINE float shl_ssf_weight(const float p[3], const float np[3], const f
       !(md >= 0.0)) {
     return 0.0f;
   }
-  shli_cap_frame(SHLIGHT_REAL(np[0]), SHLIGHT_REAL(np[1]), SHLIGHT_REAL(np[2]), 1.0, ga);
-  shli_cap_frame(SHLIGHT_REAL(nq[0]), SHLIGHT_REAL(nq[1]), SHLIGHT_REAL(nq[2]), 1.0, gb);
+  shli_cap_frame(SHLIGHT_REAL(p_nrm[0]), SHLIGHT_REAL(p_nrm[1]), SHLIGHT_REAL(p_nrm[2]), 1.0, ga);
+  shli_cap_frame(SHLIGHT_REAL(q_nrm[0]), SHLIGHT_REAL(q_nrm[1]), SHLIGHT_REAL(q_nrm[2]), 1.0, gb);
   if (!(ga[6] > 0.0) || !(gb[6] > 0.0)) {
     return 0.0f;
   }
@@ -13683,16 +14135,6 @@ SHLIGHT_INLINE float shl_ssf_weight(const float p[3], const float np[3], const f
   return 1.0f;
 }
 
-/* shl_ssf_irradiance: the irradiance E = int L(w) max(0, nrm . w) dw of the radiance with SH sh
-   (n * n floats, e.g. the filtered sum of shl_ssf_vpl_sh) at the normal nrm: sh convolved with
-   the clamped cosine turned to nrm, shl_sh_conv_zh(sh, shl_zh_cosine_power(n, 1)). A
-   Lambertian surface of albedo kd reflects kd E / pi. Exact for the band-limited radiance; for
-   a VPL's delta (e at w) the n-band clamped cosine gives e times a value that differs from
-   max(0, nrm . w) by at most 0.094 (n = 3, 4), 0.059 (n = 5, 6), 0.021 (n = 16), 0.0050
-   (n = 64), about 0.32 / n, the worst at the horizon nrm . w = 0, where it also rings below 0
-   (tests/test_ssf). nrm: any finite non-zero vector (normalised; zero, NaN or infinite: +z).
-   n < 1: 0. Cost: O(n) for the lobe, one SH evaluation and n^2 FMA (for RGB see >>ssf: one
-   rotation, three dots). */
 SHLIGHT_INLINE float shl_ssf_irradiance(int n, const float *sh, const float nrm[3]) {
   float zh[SHLIGHT_MAX_BANDS];
   n = shli_bands(n);
@@ -13706,23 +14148,6 @@ SHLIGHT_INLINE float shl_ssf_irradiance(int n, const float *sh, const float nrm[
 #ifdef __cplusplus
 extern "C" {
 #endif
-/* shl_sh_eval_accurate: Y_i(d / |d|) for any d != 0, the input normalised in double: error
-   at the float rounding floor for every n. Zero / NaN / Inf d: Y(0,0,1). CPU only. */
-SHLIGHT_API void shl_sh_eval_accurate(int n, const float d[3], float *out_y);
-
-/* shl_sh_eval_batch: SoA batch of count unit directions (x[j], y[j], z[j]);
-   out_y[i * count + j] = Y_i. SIMD across directions (AVX-512, AVX2+FMA or SSE2 as compiled,
-   scalar with SHLIGHT_NO_SIMD). The vector path runs the recurrence in float (Reinsch form,
-   input renormalised per lane); accuracy in README. count <= 0: nothing written. CPU only.
-   Cost (AVX-512, output in L1, count a multiple of 32): per direction ~0.1 of the plain float
-   loop for 7..16 bands, 0.05-0.12 for n <= 6. The output is n^2 count floats written once:
-   beyond L1 the stores bound it (n = 16: 0.22-0.28 of the loop from count 100 on). When it
-   exceeds 256 KiB, count is a multiple of the SIMD width and out_y is float-aligned, the rows
-   go out by streaming (non-temporal) stores, so that any count costs about the same per
-   direction (n = 10: 0.26-0.30 of the loop at count 1000 .. 65536); the values then sit in
-   memory, not in the caches. */
-SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float *y, const float *z,
-                                   float *out_y);
 
 /* CPU-only part of >>brdftab (declared here, defined with SHLIGHT_IMPLEMENTATION): analytic
    BRDFs, table build by quadrature, the SHLT table file, the MERL measured-BRDF loader.
@@ -13730,13 +14155,11 @@ SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float
    (z > 0; f_s = 0 otherwise), kd = diffuse albedo, ks = specular scale:
      SHLIGHT_BRDF_LAMBERT      kd / pi
      SHLIGHT_BRDF_PHONG        kd / pi + ks (e + 1) / (2 pi) max(0, r . w_i)^e, r = the mirror
-                               direction of w_o, e = exponent (the lobe of MATH.md sec. 5: its
-                               integral over the sphere is ks, so albedo <= kd + ks)
-     SHLIGHT_BRDF_BLINN_PHONG  kd / pi + ks D F G2 / (4 cos_i cos_o), D = (e + 2) / (2 pi)
-                               (n.h)^e, G2 with Beckmann's Lambda at alpha = sqrt(2 / (e + 2))
-                               (Walter et al. 2007's equivalence)
-     SHLIGHT_BRDF_BECKMANN     kd / pi + ks D F G2 / (4 cos_i cos_o), anisotropic Beckmann D
-                               (alpha_x, alpha_y) and its exact Smith Lambda (erf)
+                               direction of w_o, e = exponent (the lobe of docs/math.md section 5:
+   its integral over the sphere is ks, so albedo <= kd + ks) SHLIGHT_BRDF_BLINN_PHONG  kd / pi + ks
+   D F G2 / (4 cos_i cos_o), D = (e + 2) / (2 pi) (n.h)^e, G2 with Beckmann's Lambda at alpha =
+   sqrt(2 / (e + 2)) (Walter et al. 2007's equivalence) SHLIGHT_BRDF_BECKMANN     kd / pi + ks D F
+   G2 / (4 cos_i cos_o), anisotropic Beckmann D (alpha_x, alpha_y) and its exact Smith Lambda (erf)
      SHLIGHT_BRDF_GGX          the same with the anisotropic GGX (Trowbridge-Reitz) D and Lambda
    h = normalise(w_i + w_o); G2 = 1 / (1 + Lambda(w_o) + Lambda(w_i)) (height-correlated
    Smith); F = f0 + (1 - f0) (1 - w_i . h)^5 (Schlick; w_i . h taken as the mean of w_i . h
@@ -13746,187 +14169,14 @@ SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float
    (tests/test_brdftab: max 0.981 Phong e = 50, 0.997 GGX alpha 0.05, 1 + 1e-7 Beckmann alpha
    0.05, with ks = 1, f0 = 1); Blinn-Phong does not quite, since Beckmann's Lambda is not its
    own: albedo up to 1.068 ks at e = 10, 1.0015 ks at e = 500 (at cos theta_o = 1e-6). */
-#define SHLIGHT_BRDF_LAMBERT 0
-#define SHLIGHT_BRDF_PHONG 1
-#define SHLIGHT_BRDF_BLINN_PHONG 2
-#define SHLIGHT_BRDF_BECKMANN 3
-#define SHLIGHT_BRDF_GGX 4
-/* shl_brdf_table.flags: bit 0 set for an anisotropic table (n_phi > 1); other bits 0. */
-#define SHLIGHT_BRDF_TABLE_ANISO 1
 /* SHLT file: version written and the only one read (version 1 files, of the cell-centred grid
    of earlier releases, give SHLIGHT_EVERSION: rebuild them); header bytes before the payload;
    the outgoing grid id recorded in the header (1: the grid of >>brdftab, the only one). */
-#define SHLIGHT_BRDF_TABLE_VERSION 2
-#define SHLIGHT_BRDF_TABLE_HEADER 40
-#define SHLIGHT_BRDF_TABLE_GRID 1
 /* cos(theta_o) of the last (90 degree) sample's outgoing direction, in double (F' of the
    microfacet models diverges like ln(1 / cos theta_o) at exactly 90 degrees) */
-#define SHLIGHT_BRDF_TABLE_GRAZING 1e-6
 /* shl_brdf_table_build's parameter domain: Phong / Blinn-Phong exponents up to
    SHLIGHT_BRDF_MAX_EXPONENT, Beckmann / GGX alpha from SHLIGHT_BRDF_MIN_ALPHA to 4 */
-#define SHLIGHT_BRDF_MAX_EXPONENT 1e6f
-#define SHLIGHT_BRDF_MIN_ALPHA 1e-3f
-/* limits the loaders enforce (SHLIGHT_EDIMS beyond them) */
-#define SHLIGHT_BRDF_TABLE_MAX_SAMPLES 4096 /* n_theta, n_phi each */
-#define SHLIGHT_MERL_MAX_DIM 1024           /* each of the three MERL dimensions */
 
-typedef struct shl_brdf_params {
-  int model;      /* SHLIGHT_BRDF_* */
-  float kd;       /* diffuse albedo, >= 0 */
-  float ks;       /* specular scale, >= 0 */
-  float exponent; /* Phong / Blinn-Phong exponent e in [0, SHLIGHT_BRDF_MAX_EXPONENT] */
-  float alpha_x;  /* Beckmann / GGX slope roughness along x, [SHLIGHT_BRDF_MIN_ALPHA, 4] */
-  float alpha_y;  /* along y (= alpha_x: isotropic) */
-  float f0;       /* Schlick reflectance at normal incidence, [0, 1] (1: no Fresnel) */
-} shl_brdf_params;
-
-/* shl_brdf_table: n bands, n_theta x n_phi outgoing samples, flags (SHLIGHT_BRDF_TABLE_ANISO
-   iff n_phi > 1), data: shl_brdf_table_size(n, n_theta, n_phi) floats owned by the caller, in
-   the layout of >>brdftab: data[((p * n_theta + t) * 2 + k) * n^2 + i]. */
-typedef struct shl_brdf_table {
-  int n;
-  int n_theta;
-  int n_phi;
-  int flags;
-  float *data;
-} shl_brdf_table;
-
-/* shl_merl: a measured isotropic BRDF in MERL's half-diff parametrisation [MPBM03]: dims
-   (n_theta_h, n_theta_d, n_phi_d), 90 x 90 x 180 in the MERL files; data: 3 * the product of
-   the dims floats owned by the caller, data[((c * n_theta_h + ih) * n_theta_d + id) * n_phi_d
-   + ip], channel c = 0 red, 1 green, 2 blue, the MERL scale factors (1, 1.15, 1.66) / 1500
-   applied, negative (invalid) samples kept as stored. */
-typedef struct shl_merl {
-  int n_theta_h;
-  int n_theta_d;
-  int n_phi_d;
-  float *data;
-} shl_merl;
-
-/* shl_brdf_eval: f_s(w_o, w_i) of an analytic BRDF (models above), evaluated in double. wo, wi
-   unit, local frame; 0 when either is at or below the surface (z <= 0), for an unknown model,
-   and for alpha <= 0 (microfacet models). Reciprocal: f(wo, wi) = f(wi, wo) up to rounding.
-   Cost: ~30 flops (Beckmann: two erf). */
-SHLIGHT_API float shl_brdf_eval(const shl_brdf_params *brdf, const float wo[3], const float wi[3]);
-
-/* shl_brdf_table_size: floats of a table of n bands and n_theta x n_phi samples:
-   n_phi n_theta 2 n^2; 0 for n outside [1, SHLIGHT_MAX_BANDS], n_theta or n_phi outside
-   [1, SHLIGHT_BRDF_TABLE_MAX_SAMPLES], or a size whose SHLT file would not fit in size_t.
-   The kernels index tables with int: shl_brdf_table_lookup gives zeros for a table of
-   n_theta n_phi 2 n^2 >= 2^31 floats. */
-SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
-
-/* shl_brdf_table_build: fills t->data (t->n, n_theta, n_phi, flags set by the caller, data
-   holding shl_brdf_table_size floats) with the SH of F and F' of the analytic BRDF at each
-   outgoing sample (layout and sampling of >>brdftab). Quadrature over w_i, sums in double:
-   - the kd / pi term: Gauss-Legendre in cos(theta_i) (n/2 + 2 nodes) x uniform phi_i (n + 2
-     nodes), exact for it (its products with Y are polynomials of degree <= n);
-   - the specular term (ks > 0), in the frame whose pole is the mirror direction r of w_o:
-     panels of the angle g from r with break points at 2, 6, 18, 54 lobe widths (width:
-     1/sqrt(e + 1) Phong, 2/sqrt(e + 2) Blinn-Phong, 2 max(alpha) microfacet), where the circle
-     of angle g about r first meets the horizon (g = pi/2 - theta_o) and where it leaves it;
-     quad_order Gauss-Legendre nodes per panel after the substitution g = g0 + (g1 - g0) s^2
-     (3 - 2 s), which is smooth through the square-root ends of the arc length; on each circle
-     only the arc above the horizon (end points in closed form): 2 quad_order uniform nodes
-     round a whole circle, else panels at 0, +-w/2, +-3w/2, +-9w/2 and graded towards the arc's
-     ends (pm - L/4, /16, /64), quad_order Gauss-Legendre nodes each. Every panel's integrand is
-     smooth, so the error falls geometrically with quad_order even for sharp lobes and grazing
-     w_o (docs/brdf-tables.md has the error against quad_order).
-   Outgoing samples on the grid of >>brdftab (shl_brdf_table_theta), the last one at
-   cos theta_o = SHLIGHT_BRDF_TABLE_GRAZING. Y by shl_sh_eval in float at the float-rounded
-   node; the table rounds to float. Stack: about 13.5 KB deep (gcc -O2 -fstack-usage: 12.6 KB in
-   the build loop; the quadrature nodes are made on the fly, no per-arc scratch arrays).
-   out_err_est (may be NULL; NULL also skips the extra passes): an estimate of the returned
-   table's largest absolute error (table units) from the tables at quad_order / 4 and / 2: per
-   sample, with e1 = max |T(q/2) - T(q/4)| and e2 = max |T(q) - T(q/2)|, e2^2.5 / e1^1.5 while
-   e2 < e1 (geometric convergence), else e2; at least 2^-24 max |T| (the float rounding of the
-   table); the max over the samples. Measured against an independent long-double projection
-   (GGX alpha 0.05 .. 1, Phong 1000, theta_o 30 .. 89.5 deg, q 32 .. 128): 0.65 .. 5.5 times
-   the true error (docs/brdf-tables.md); not a guaranteed bound. Accuracy: Phong / Blinn-Phong
-   reach the float rounding floor at q = 32 up to e = 1e6, GGX / Beckmann alpha >= 0.05 at
-   q = 128 (q = 64: 2e-4 near grazing); alpha < 0.05 near grazing does not converge within
-   q = 256 (alpha 0.01 at 89.5 deg: 2.6e-2 at q = 128). quad_order in [2, 256].
-   Returns SHLIGHT_EINVAL (data untouched) for NULL t / data / brdf, n, n_theta, n_phi out of
-   range (see shl_brdf_table_size), flags != (n_phi > 1 ? ANISO : 0), an unknown model,
-   negative or non-finite kd / ks, a Phong / Blinn-Phong exponent outside [0,
-   SHLIGHT_BRDF_MAX_EXPONENT] (larger ones, up to 1e27, used to give non-finite tables), alpha
-   outside [SHLIGHT_BRDF_MIN_ALPHA, 4] for Beckmann / GGX, f0
-   outside [0, 1] (microfacet models), quad_order out of range; SHLIGHT_ENOMEM when n > 16 and
-   the 2 n^2-double accumulator (on the stack up to 16 bands) cannot be allocated. Cost: per
-   sample, up to ~12 panels x q x (2q .. 14q) nodes (x 1.31 with out_err_est), each one BRDF
-   evaluation, one shl_sh_eval and 2 n^2 FMA. Measured, 90 samples, n = 9, one core: q = 32
-   0.19 s (GGX 1) .. 0.69 s (GGX 0.05), q = 64 0.75 .. 2.7 s (Phong 1000: 0.55, 2.3 s). */
-SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_params *brdf,
-                                            int quad_order, float *out_err_est);
-
-/* shl_brdf_table_theta: theta_o (radians) of sample t of an n_theta-sample table (the grid of
-   >>brdftab: 0 at t = 0, pi/2 at t = n_theta - 1; n_theta = 1: 0), float-rounded from a double
-   bisection of the grid variable. -1 for n_theta outside [1, SHLIGHT_BRDF_TABLE_MAX_SAMPLES] or
-   t outside [0, n_theta). Cost: ~60 iterations of one log. */
-SHLIGHT_API float shl_brdf_table_theta(int n_theta, int t);
-
-/* shl_brdf_table_write: the SHLT file of t into buf (capacity cap bytes); *out_len (may not be
-   NULL) = its length, 40 + 4 x shl_brdf_table_size bytes. Format version 2 (little-endian):
-     0  "SHLT"                4  uint32 version (2)       8  int32 bands n
-     12 int32 n_theta         16 int32 n_phi              20 uint32 flags
-     24 uint32 payload floats (= n_phi n_theta 2 n^2)     28 uint32 grid (1: the outgoing
-        grid of >>brdftab)    32 uint32 reserved (0)      36 uint32 CRC-32 (IEEE 802.3,
-        reflected, as zlib's crc32) of bytes 0..35 followed by the payload
-     40 payload: the table's data, float32 little-endian, in the >>brdftab layout.
-   (Version 1, 32-byte header, no grid field, sampled theta_o at cell centres; not written.)
-   Returns SHLIGHT_EINVAL for NULL t / t->data / out_len or an invalid table (dims, flags),
-   SHLIGHT_ENONFINITE for a NaN / Inf in the data (nothing written), SHLIGHT_ESTORAGE (with
-   *out_len set) when buf is NULL or cap too small. Cost: one pass over the data. */
-SHLIGHT_API shl_result shl_brdf_table_write(const shl_brdf_table *t, void *buf, size_t cap,
-                                            size_t *out_len);
-
-/* shl_brdf_table_read: parses an SHLT file of len bytes at buf into *out, the payload copied to
-   storage (storage_floats floats; out->data = storage). Checks, in this order, each with its
-   error: len < 8: SHLIGHT_ELENGTH; magic: SHLIGHT_EMAGIC; version other than 2 (version 1
-   files hold the cell-centred grid of earlier releases, which the lookup no longer reads:
-   rebuild them): SHLIGHT_EVERSION; len < 40: SHLIGHT_ELENGTH; n, n_theta, n_phi out of
-   range, flags inconsistent with n_phi or with unknown bits, payload floats != n_phi n_theta
-   2 n^2, grid != 1 or reserved != 0: SHLIGHT_EDIMS; len != 40 + 4 x payload floats:
-   SHLIGHT_ELENGTH (truncated, or trailing bytes); CRC: SHLIGHT_ECHECKSUM; a NaN / Inf payload
-   float: SHLIGHT_ENONFINITE; storage NULL or storage_floats too small: SHLIGHT_ESTORAGE, with
-   out->n, n_theta, n_phi, flags set and out->data NULL, so that a caller can call with (NULL, 0) to
-   learn the size. NULL out or buf: SHLIGHT_EINVAL. Never reads outside [buf, buf + len) or writes
-   outside storage; on any error storage is untouched. Cost: two passes over the payload. */
-SHLIGHT_API shl_result shl_brdf_table_read(shl_brdf_table *out, const void *buf, size_t len,
-                                           float *storage, size_t storage_floats);
-
-/* shl_merl_read: parses a MERL binary BRDF of len bytes at buf (int32 n_theta_h, n_theta_d,
-   n_phi_d little-endian, then 3 x their product float64 little-endian: red, green, blue, each
-   [theta_h][theta_d][phi_d]) into *out, the samples scaled and stored as floats in storage
-   (storage_floats floats). Errors, in this order: len < 12: SHLIGHT_ELENGTH; a dimension < 1
-   or > SHLIGHT_MERL_MAX_DIM: SHLIGHT_EDIMS; len != 12 + 24 x product: SHLIGHT_ELENGTH; a NaN /
-   Inf sample (or one beyond float range once scaled): SHLIGHT_ENONFINITE; storage NULL / too small:
-   SHLIGHT_ESTORAGE (out's dims set, out->data NULL); NULL out / buf: SHLIGHT_EINVAL. Never reads
-   outside the buffer; storage untouched on error. Cost: two passes over the samples. */
-SHLIGHT_API shl_result shl_merl_read(shl_merl *out, const void *buf, size_t len, float *storage,
-                                     size_t storage_floats);
-
-/* shl_merl_eval: channel c (0 red, 1 green, 2 blue) of the measured BRDF at (wo, wi) (unit,
-   local frame; 0 when either z <= 0): the half-diff angles of [MPBM03] (theta_h, theta_d,
-   phi_d folded to [0, pi) by reciprocity), index coordinates u_h = sqrt(theta_h / (pi/2)) n_theta_h
-   (MERL's non-linear theta_h index), u_d = theta_d / (pi/2) n_theta_d, u_p = phi_d / pi n_phi_d,
-   sample i at coordinate i (MERL's convention: the index is the floor of the coordinate),
-   trilinear between samples (clamped at the ends of theta_h and theta_d, periodic in phi_d).
-   Reconstruction (for grazing directions): the trilinear interpolant is of f cos(theta_h)
-   cos(theta_d) = f (cos_i + cos_o) / 2, divided by the query's factor (floored at 1e-6), so
-   that the 1 / (cos_i + cos_o) growth of f at grazing is carried by the factor; only valid
-   samples (> 0; MERL marks invalid ones negative) enter the sum, their weights renormalised
-   to 1; beyond the last theta_d sample, linear extrapolation from the last two layers when
-   their 8 samples are valid, else the last layer held; a cell without any valid sample takes
-   the nearest theta_d layer below that has one (held along theta_d); 0 if none.
-   Invalid m or c: 0. Cost: ~100 flops, 2 acos, 2 atan2. */
-SHLIGHT_API float shl_merl_eval(const shl_merl *m, int c, const float wo[3], const float wi[3]);
-
-/* shl_brdf_table_build_merl: shl_brdf_table_build for channel c of a measured BRDF (tables
-   must be isotropic: n_phi = 1, flags 0): the whole BRDF by the specular-frame quadrature,
-   lobe width 0.1 rad. Errors as shl_brdf_table_build (EINVAL also for an invalid m / c). */
-SHLIGHT_API shl_result shl_brdf_table_build_merl(shl_brdf_table *t, const shl_merl *m, int c,
-                                                 int quad_order, float *out_err_est);
 #ifdef __cplusplus
 }
 #endif
@@ -13936,6 +14186,34 @@ SHLIGHT_API shl_result shl_brdf_table_build_merl(shl_brdf_table *t, const shl_me
 /* ================================== implementation ================================== */
 #if defined(SHLIGHT_IMPLEMENTATION) && !defined(SHLIGHT_IMPLEMENTATION_DONE)
 #define SHLIGHT_IMPLEMENTATION_DONE
+
+SHLIGHT_API const char *shl_result_string(shl_result r) {
+  switch (r) {
+  case SHLIGHT_OK:
+    return "SHLIGHT_OK: success";
+  case SHLIGHT_EINVAL:
+    return "SHLIGHT_EINVAL: an invalid argument";
+  case SHLIGHT_ENOMEM:
+    return "SHLIGHT_ENOMEM: an allocation failed";
+  case SHLIGHT_ELENGTH:
+    return "SHLIGHT_ELENGTH: loaders: input truncated, or longer than its header says";
+  case SHLIGHT_EMAGIC:
+    return "SHLIGHT_EMAGIC: loaders: not the expected file type (magic bytes)";
+  case SHLIGHT_EVERSION:
+    return "SHLIGHT_EVERSION: loaders: unsupported format version";
+  case SHLIGHT_EDIMS:
+    return "SHLIGHT_EDIMS: loaders: zero, negative, oversized or inconsistent dimensions";
+  case SHLIGHT_ENONFINITE:
+    return "SHLIGHT_ENONFINITE: NaN or infinity in the data";
+  case SHLIGHT_ECHECKSUM:
+    return "SHLIGHT_ECHECKSUM: loaders: checksum mismatch";
+  case SHLIGHT_ESTORAGE:
+    return "SHLIGHT_ESTORAGE: the caller's buffer is missing or too small (size reported)";
+  default:
+    break;
+  }
+  return "unknown shl_result";
+}
 
 SHLIGHT_API void shli_sh_eval_outline(int n, float dx, float dy, float dz, float *out_y) {
   shli_sh_eval_any(n, dx, dy, dz, out_y);
@@ -14705,7 +14983,7 @@ static void shli_grid_add(const shli_grid_job *jb, int j, int ix, int iy, int iz
                           float (*tg)[3]) {
   const shl_grid *g = jb->g;
   int n = g->n, nn = n * n, i;
-  size_t v = (size_t)ix + (size_t)g->nx * ((size_t)iy + (size_t)g->ny * (size_t)iz);
+  size_t v = (size_t)ix + (size_t)g->dims[0] * ((size_t)iy + (size_t)g->dims[1] * (size_t)iz);
   float p[3], w = jb->intensity ? jb->intensity[j] : 1.0f;
   float *o = jb->out_sh + v * (size_t)nn;
   double dx, dy, dz;
@@ -14762,8 +15040,8 @@ static void *shli_grid_run(void *arg) {
   tg = (float(*)[3])(void *)(tsh + g->n * g->n);
   if (jb->order == SHLIGHT_GRID_FORWARD) {
     for (iz = jb->z0; iz < jb->z1; ++iz)
-      for (iy = 0; iy < g->ny; ++iy)
-        for (ix = 0; ix < g->nx; ++ix)
+      for (iy = 0; iy < g->dims[1]; ++iy)
+        for (ix = 0; ix < g->dims[0]; ++ix)
           for (j = 0; j < jb->nlights; ++j)
             shli_grid_add(jb, j, ix, iy, iz, tsh, tg);
   } else {
@@ -14771,9 +15049,12 @@ static void *shli_grid_run(void *arg) {
       int x0, x1, y0, y1, zl, zh;
       double rad = jb->cut2[j] < 0.0 ? -1.0 : sqrt(jb->cut2[j]);
       if (rad < 0.0) continue;
-      shli_grid_range((double)jb->centres[j][0], rad, g->origin[0], g->spacing[0], g->nx, &x0, &x1);
-      shli_grid_range((double)jb->centres[j][1], rad, g->origin[1], g->spacing[1], g->ny, &y0, &y1);
-      shli_grid_range((double)jb->centres[j][2], rad, g->origin[2], g->spacing[2], g->nz, &zl, &zh);
+      shli_grid_range((double)jb->centres[j][0], rad, g->origin[0], g->spacing[0], g->dims[0], &x0,
+                      &x1);
+      shli_grid_range((double)jb->centres[j][1], rad, g->origin[1], g->spacing[1], g->dims[1], &y0,
+                      &y1);
+      shli_grid_range((double)jb->centres[j][2], rad, g->origin[2], g->spacing[2], g->dims[2], &zl,
+                      &zh);
       if (zl < jb->z0) zl = jb->z0;
       if (zh > jb->z1 - 1) zh = jb->z1 - 1;
       for (iz = zl; iz <= zh; ++iz)
@@ -14788,11 +15069,13 @@ static void *shli_grid_run(void *arg) {
 
 static int shli_grid_valid(const shl_grid *g) {
   int k, dims[3];
-  if (!g || g->n < 1 || g->n > SHLIGHT_MAX_BANDS || g->nx < 1 || g->ny < 1 || g->nz < 1) return 0;
+  if (!g || g->n < 1 || g->n > SHLIGHT_MAX_BANDS || g->dims[0] < 1 || g->dims[1] < 1 ||
+      g->dims[2] < 1)
+    return 0;
   if (!(g->cull >= 0.0f)) return 0;
-  dims[0] = g->nx;
-  dims[1] = g->ny;
-  dims[2] = g->nz;
+  dims[0] = g->dims[0];
+  dims[1] = g->dims[1];
+  dims[2] = g->dims[2];
   for (k = 0; k < 3; ++k) {
     if (!(fabs((double)g->origin[k]) <= 3.4e38)) return 0;
     if (dims[k] > 1 && !(g->spacing[k] > 0.0f && (double)g->spacing[k] <= 3.4e38)) return 0;
@@ -14802,7 +15085,8 @@ static int shli_grid_valid(const shl_grid *g) {
 
 SHLIGHT_API shl_result shl_grid_build(const shl_grid *g, const float (*centres)[3],
                                       const float *radii, const float *intensity, int nlights,
-                                      float *out_sh, float (*out_grad)[3], int order, int threads) {
+                                      int sum_order, int threads, float *out_sh,
+                                      float (*out_grad)[3]) {
   shli_grid_job jb[2];
   double *cut2;
   size_t nv, nn, k;
@@ -14810,10 +15094,10 @@ SHLIGHT_API shl_result shl_grid_build(const shl_grid *g, const float (*centres)[
   void *rc0 = NULL, *rc1 = NULL;
   if (!shli_grid_valid(g) || !out_sh || nlights < 0 || threads < 1 ||
       (nlights > 0 && (!centres || !radii)) ||
-      (order != SHLIGHT_GRID_FORWARD && order != SHLIGHT_GRID_REVERSED))
+      (sum_order != SHLIGHT_GRID_FORWARD && sum_order != SHLIGHT_GRID_REVERSED))
     return SHLIGHT_EINVAL;
   nn = (size_t)g->n * (size_t)g->n;
-  nv = (size_t)g->nx * (size_t)g->ny * (size_t)g->nz;
+  nv = (size_t)g->dims[0] * (size_t)g->dims[1] * (size_t)g->dims[2];
   cut2 = (double *)malloc(sizeof(double) * (size_t)(nlights > 0 ? nlights : 1));
   if (!cut2) return SHLIGHT_ENOMEM;
   for (k = 0; k < nv * nn; ++k)
@@ -14845,17 +15129,17 @@ SHLIGHT_API shl_result shl_grid_build(const shl_grid *g, const float (*centres)[
     jb[j].nlights = nlights;
     jb[j].out_sh = out_sh;
     jb[j].out_grad = out_grad;
-    jb[j].order = order;
+    jb[j].order = sum_order;
   }
-  if (nt < 2 || g->nz < 2) {
+  if (nt < 2 || g->dims[2] < 2) {
     jb[0].z0 = 0;
-    jb[0].z1 = g->nz;
+    jb[0].z1 = g->dims[2];
     rc0 = shli_grid_run(&jb[0]);
   } else {
     jb[0].z0 = 0;
-    jb[0].z1 = g->nz / 2;
-    jb[1].z0 = g->nz / 2;
-    jb[1].z1 = g->nz;
+    jb[0].z1 = g->dims[2] / 2;
+    jb[1].z0 = g->dims[2] / 2;
+    jb[1].z1 = g->dims[2];
 #if SHLI_GRID_PTHREADS
     {
       pthread_t th;
@@ -14877,7 +15161,7 @@ SHLIGHT_API shl_result shl_grid_build(const shl_grid *g, const float (*centres)[
 }
 
 SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const float (*grad)[3],
-                                       const float p[3], int method, float *out_sh) {
+                                       const float p[3], shl_grid_method method, float *out_sh) {
   /* the corners are gathered and reconstructed in chunks of s^2 coefficients (s <= 8: 8 KB
      of stack for any n, no heap): each output coefficient depends only on its own corner
      values and on weights that depend only on f and the spacing, so the chunks give the same
@@ -14892,9 +15176,9 @@ SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const
     return SHLIGHT_EINVAL;
   n = g->n;
   nn = n * n;
-  dims[0] = g->nx;
-  dims[1] = g->ny;
-  dims[2] = g->nz;
+  dims[0] = g->dims[0];
+  dims[1] = g->dims[1];
+  dims[2] = g->dims[2];
   for (k = 0; k < 3; ++k) {
     double u = 0.0, fl;
     if (dims[k] > 1) u = ((double)p[k] - (double)g->origin[k]) / (double)g->spacing[k];
@@ -14909,7 +15193,7 @@ SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const
   }
   for (c = 0; c < 8; ++c) {
     int ix = (c & 1) ? hi[0] : lo[0], iy = (c & 2) ? hi[1] : lo[1], iz = (c & 4) ? hi[2] : lo[2];
-    v[c] = (size_t)ix + (size_t)g->nx * ((size_t)iy + (size_t)g->ny * (size_t)iz);
+    v[c] = (size_t)ix + (size_t)g->dims[0] * ((size_t)iy + (size_t)g->dims[1] * (size_t)iz);
   }
   for (i0 = 0; i0 < nn; i0 += ss) {
     s = 8;
@@ -15766,8 +16050,8 @@ SHLIGHT_API shl_result shl_brdf_table_write(const shl_brdf_table *t, void *buf, 
   return SHLIGHT_OK;
 }
 
-SHLIGHT_API shl_result shl_brdf_table_read(shl_brdf_table *out, const void *buf, size_t len,
-                                           float *storage, size_t storage_floats) {
+SHLIGHT_API shl_result shl_brdf_table_read(const void *buf, size_t len, float *storage,
+                                           size_t storage_floats, shl_brdf_table *out_table) {
   const unsigned char *b = (const unsigned char *)buf;
   shl_brdf_table t;
   unsigned long count;
@@ -15775,7 +16059,7 @@ SHLIGHT_API shl_result shl_brdf_table_read(shl_brdf_table *out, const void *buf,
   unsigned long crc;
   size_t want;
   size_t i;
-  if (!out || !buf) {
+  if (!out_table || !buf) {
     return SHLIGHT_EINVAL;
   }
   if (len < 8) {
@@ -15816,25 +16100,25 @@ SHLIGHT_API shl_result shl_brdf_table_read(shl_brdf_table *out, const void *buf,
       return SHLIGHT_ENONFINITE;
     }
   }
-  *out = t;
+  *out_table = t;
   if (!storage || storage_floats < want) {
     return SHLIGHT_ESTORAGE;
   }
   for (i = 0; i < want; ++i) {
     storage[i] = shli_rdf32(b + SHLIGHT_BRDF_TABLE_HEADER + 4u * i);
   }
-  out->data = storage;
+  out_table->data = storage;
   return SHLIGHT_OK;
 }
 
-SHLIGHT_API shl_result shl_merl_read(shl_merl *out, const void *buf, size_t len, float *storage,
-                                     size_t storage_floats) {
+SHLIGHT_API shl_result shl_merl_read(const void *buf, size_t len, float *storage,
+                                     size_t storage_floats, shl_merl *out_merl) {
   static const double scale[3] = {1.0 / 1500.0, 1.15 / 1500.0, 1.66 / 1500.0};
   const unsigned char *b = (const unsigned char *)buf;
   shl_merl m;
   size_t per;
   size_t i;
-  if (!out || !buf) {
+  if (!out_merl || !buf) {
     return SHLIGHT_EINVAL;
   }
   if (len < 12) {
@@ -15861,14 +16145,14 @@ SHLIGHT_API shl_result shl_merl_read(shl_merl *out, const void *buf, size_t len,
       return SHLIGHT_ENONFINITE; /* NaN, infinity, or beyond float once scaled */
     }
   }
-  *out = m;
+  *out_merl = m;
   if (!storage || storage_floats < 3 * per) {
     return SHLIGHT_ESTORAGE;
   }
   for (i = 0; i < 3 * per; ++i) {
     storage[i] = (float)(shli_rdf64(b + 12 + 8 * i) * scale[i / per]);
   }
-  out->data = storage;
+  out_merl->data = storage;
   return SHLIGHT_OK;
 }
 

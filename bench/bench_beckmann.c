@@ -1,6 +1,6 @@
 /* bench_beckmann.c - Beckmann polygon (quad) lights on bench_ggx's sampler (tests/ref/ggxcases.h:
- * 7 roughness values x 250 quads, alpha = r^2): shl_polygon_beckmann_taylor (shl_polygon_ggx's
- * method with the Beckmann NDF) next to shl_polygon_beckmann at k = 8 (G2 held at one
+ * 7 roughness values x 250 quads, alpha = r^2): shl_polygon_beckmann (shl_polygon_ggx's
+ * method with the Beckmann NDF) next to shl_polygon_beckmann_subedges at k = 8 (G2 held at one
  * direction), both against long double cubature of the same integrand (tests/ref/arearef.h,
  * arref_polygon_mf kind 1, abs. tolerance 1e-9 x the albedo arref_mf_albedo). Per roughness:
  * median / p95 / max relative error where the light gives >= 5 % of the albedo ("visible"),
@@ -30,7 +30,7 @@ static const float NZ[3] = {0, 0, 1};
 
 /* the wrapper callgrind counts */
 __attribute__((noinline)) float bw_beck(const cfg *c) {
-  return shl_polygon_beckmann_taylor((const float(*)[3])c->q, 4, NZ, c->view, c->alpha);
+  return shl_polygon_beckmann((const float(*)[3])c->q, 4, NZ, c->view, c->alpha);
 }
 
 int main(int argc, char **argv) {
@@ -65,17 +65,20 @@ int main(int argc, char **argv) {
           "### Beckmann quad lights (bench_ggx's sampler, %d quads per roughness, F = 1, "
           "height-correlated G2)\n\n",
           NPER);
-  fprintf(o, "| roughness (alpha = r^2) | vis. | shl_polygon_beckmann_taylor rel. err vis. median "
-             "/ p95 / max | err/albedo median / p95 / max | shl_polygon_beckmann k = 8 rel. err "
-             "vis. median / p95 / max | err/albedo median / p95 / max |\n"
-             "|---|---|---|---|---|---|\n");
+  fprintf(
+      o,
+      "| roughness (alpha = r^2) | vis. | shl_polygon_beckmann rel. err vis. median "
+      "/ p95 / max | err/albedo median / p95 / max | shl_polygon_beckmann_subedges k = 8 rel. err "
+      "vis. median / p95 / max | err/albedo median / p95 / max |\n"
+      "|---|---|---|---|---|---|\n");
   for (ir = 0; ir < NR; ++ir) {
     static double rel[2][NPER], ea[2][NPER];
     int nv = 0;
     for (i = ir * NPER; i < (ir + 1) * NPER; ++i) {
       double got[2], d[2];
-      got[0] = shl_polygon_beckmann_taylor((const float(*)[3])C[i].q, 4, NZ, C[i].view, C[i].alpha);
-      got[1] = shl_polygon_beckmann((const float(*)[3])C[i].q, 4, NZ, C[i].view, C[i].alpha, 8);
+      got[0] = shl_polygon_beckmann((const float(*)[3])C[i].q, 4, NZ, C[i].view, C[i].alpha);
+      got[1] =
+          shl_polygon_beckmann_subedges((const float(*)[3])C[i].q, 4, NZ, C[i].view, C[i].alpha, 8);
       for (m = 0; m < 2; ++m) {
         d[m] = fabs(got[m] - C[i].gt);
         ea[m][i - ir * NPER] = d[m] / C[i].alb;

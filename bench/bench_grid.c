@@ -74,7 +74,7 @@ int main(int argc, char **argv) {
     g.origin[k] = 0.0f;
     g.spacing[k] = 1.0f / 7.0f;
   }
-  g.nx = g.ny = g.nz = 8;
+  g.dims[0] = g.dims[1] = g.dims[2] = 8;
   g.cull = 0.0f;
   pk1 = fma_peak(1);
   pk2 = fma_peak(2);
@@ -92,7 +92,7 @@ int main(int argc, char **argv) {
         double ts[5];
         for (rep = 0; rep < 5; ++rep) {
           double t0 = now();
-          shl_grid_build(&g, (const float(*)[3])c, r, in, NL, sh, gr, o, t);
+          shl_grid_build(&g, (const float(*)[3])c, r, in, NL, o, t, sh, gr);
           ts[rep] = now() - t0;
         }
         qsort(ts, 5, sizeof(double), cmpd);

@@ -1,6 +1,6 @@
 /* bench_microfacet.c - Blinn-Phong and Beckmann polygon (quad) lights in half-vector space
- * (shl_polygon_blinn_phong, shl_polygon_beckmann): ns per light and error by sub-edge count k
- * and by the balancing heuristic (k = 2 with it, -2 without: the paper's single split), for
+ * (shl_polygon_blinn_phong, shl_polygon_beckmann_subedges): ns per light and error by sub-edge
+ * count k and by the balancing heuristic (k = 2 with it, -2 without: the paper's single split), for
  * Blinn-Phong exponents 1..1e4 and Beckmann alpha 1..0.02. Error in units of the directional
  * albedo (the whole hemisphere as the light) against long double cubature of the light-space
  * integrand (tests/ref/arearef.h): median, p95, max; then by configuration (straddling the
@@ -33,7 +33,7 @@ static float g_par;
 static float eval(int i) {
   const float(*v)[3] = (const float(*)[3])C[i].v;
   if (g_kind == 0) return shl_polygon_blinn_phong(v, 4, C[i].n, C[i].view, g_par, g_k);
-  if (g_kind == 1) return shl_polygon_beckmann(v, 4, C[i].n, C[i].view, g_par, g_k);
+  if (g_kind == 1) return shl_polygon_beckmann_subedges(v, 4, C[i].n, C[i].view, g_par, g_k);
   return shl_polygon_phong(v, 4, C[i].n, C[i].view, g_par, SHLIGHT_EDGE_QUADRATURE);
 }
 __attribute__((noinline)) void bw_mf(int i) {

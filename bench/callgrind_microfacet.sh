@@ -1,6 +1,6 @@
 #!/bin/sh
 # callgrind_microfacet.sh - x86 instructions per quad light of shl_polygon_blinn_phong and
-# shl_polygon_beckmann by sub-edge count k (bench/bench_microfacet.c --count-only), with
+# shl_polygon_beckmann_subedges by sub-edge count k (bench/bench_microfacet.c --count-only), with
 # shl_polygon_phong (QUADRATURE) as the baseline; -O3 -march=x86-64-v3 (valgrind cannot decode
 # AVX-512). Only the wrapper bw_mf and what it calls are counted. Writes
 # bench/out/microfacet_instr.md. Run from the repository root: sh bench/callgrind_microfacet.sh

@@ -134,11 +134,11 @@ int main(int argc, char **argv) {
     if (f && fseek(f, 0, SEEK_END) == 0) len = ftell(f);
     if (f && len > 0 && fseek(f, 0, SEEK_SET) == 0) buf = (unsigned char *)malloc((size_t)len);
     if (buf && fread(buf, 1, (size_t)len, f) == (size_t)len) {
-      r = shl_merl_read(&merl, buf, (size_t)len, NULL, 0);
+      r = shl_merl_read(buf, (size_t)len, NULL, 0, &merl);
       if (r == SHLIGHT_ESTORAGE) {
         size_t nf = 3 * (size_t)merl.n_theta_h * (size_t)merl.n_theta_d * (size_t)merl.n_phi_d;
         merl_data = (float *)malloc(nf * sizeof(float));
-        r = merl_data ? shl_merl_read(&merl, buf, (size_t)len, merl_data, nf) : SHLIGHT_ENOMEM;
+        r = merl_data ? shl_merl_read(buf, (size_t)len, merl_data, nf, &merl) : SHLIGHT_ENOMEM;
       }
     }
     if (f) fclose(f);

@@ -426,9 +426,9 @@ static void gd_layout(const gd_lights *L, int n, double h, float cull, int grad,
     G->g.spacing[k] = (float)h;
     G->isp[k] = 1.0f / G->g.spacing[k];
   }
-  G->g.nx = dims[0];
-  G->g.ny = dims[1];
-  G->g.nz = dims[2];
+  G->g.dims[0] = dims[0];
+  G->g.dims[1] = dims[1];
+  G->g.dims[2] = dims[2];
   G->g.n = n;
   G->g.cull = cull;
   G->grad = grad;
@@ -456,9 +456,10 @@ static void *gd_tri_run(void *arg) {
   }
   tg = (float(*)[3])(void *)(tsh + nn);
   for (iz = jb->z0; iz < jb->z1; iz++)
-    for (iy = 0; iy < G->g.ny; iy++)
-      for (ix = 0; ix < G->g.nx; ix++) {
-        size_t v = (size_t)ix + (size_t)G->g.nx * ((size_t)iy + (size_t)G->g.ny * (size_t)iz);
+    for (iy = 0; iy < G->g.dims[1]; iy++)
+      for (ix = 0; ix < G->g.dims[0]; ix++) {
+        size_t v =
+            (size_t)ix + (size_t)G->g.dims[0] * ((size_t)iy + (size_t)G->g.dims[1] * (size_t)iz);
         float p[3];
         p[0] = (float)((double)G->g.origin[0] + (double)ix * (double)G->g.spacing[0]);
         p[1] = (float)((double)G->g.origin[1] + (double)iy * (double)G->g.spacing[1]);
@@ -550,8 +551,8 @@ static int gd_build(const gd_lights *L, gd_grid *G) {
         else
           inten[j] = l[12 + b];
       }
-      r = shl_grid_build(&G->g, (const float(*)[3])cen, rad, inten, ns, tsh,
-                         G->grad ? (float(*)[3])(void *)tgr : NULL, SHLIGHT_GRID_REVERSED, 2);
+      r = shl_grid_build(&G->g, (const float(*)[3])cen, rad, inten, ns, SHLIGHT_GRID_REVERSED, 2,
+                         tsh, G->grad ? (float(*)[3])(void *)tgr : NULL);
       G->builds++;
       if (r != SHLIGHT_OK) {
         fprintf(stderr, "grid: shl_grid_build failed (%d)\n", (int)r);
@@ -604,9 +605,9 @@ static int gd_build(const gd_lights *L, gd_grid *G) {
       jb[j].fail = 0;
     }
     jb[0].z0 = 0;
-    jb[0].z1 = G->g.nz / 2;
-    jb[1].z0 = G->g.nz / 2;
-    jb[1].z1 = G->g.nz;
+    jb[0].z1 = G->g.dims[2] / 2;
+    jb[1].z0 = G->g.dims[2] / 2;
+    jb[1].z1 = G->g.dims[2];
 #if GD_THREADS
     {
       pthread_t th;
@@ -647,9 +648,9 @@ static void gd_grid_free(gd_grid *G) {
    pick the same cell and, for Taylor, the same corner. shl_grid_sample does this in double. */
 static void gd_cell(const gd_grid *G, const float x[3], int lo[3], float f[3]) {
   int dims[3], k;
-  dims[0] = G->g.nx;
-  dims[1] = G->g.ny;
-  dims[2] = G->g.nz;
+  dims[0] = G->g.dims[0];
+  dims[1] = G->g.dims[1];
+  dims[2] = G->g.dims[2];
   for (k = 0; k < 3; k++) {
     float u = (x[k] - G->g.origin[k]) * G->isp[k], fl;
     if (!(u >= 0.0f)) u = 0.0f;
@@ -671,8 +672,8 @@ static void gd_shade_grid(const gd_grid *G, int method, const float x[3], const 
   for (ch = 0; ch < 3; ch++) {
     for (c = 0; c < 8; c++) {
       size_t v = (size_t)(lo[0] + (c & 1)) +
-                 (size_t)G->g.nx * ((size_t)(lo[1] + ((c >> 1) & 1)) +
-                                    (size_t)G->g.ny * (size_t)(lo[2] + (c >> 2)));
+                 (size_t)G->g.dims[0] * ((size_t)(lo[1] + ((c >> 1) & 1)) +
+                                         (size_t)G->g.dims[1] * (size_t)(lo[2] + (c >> 2)));
       size_t base = ((size_t)ch * G->nv + v) * (size_t)nn;
       for (i = 0; i < nn; i++) {
         c8[c * nn + i] = G->sh[base + (size_t)i];
@@ -1119,10 +1120,11 @@ static int gd_gl_image(const rd_run *run, const gd_lights *L, const gd_grid *G, 
              "#define RD_ORG vec3(%.9e, %.9e, %.9e)\n#define RD_SP vec3(%.9e, %.9e, %.9e)\n"
              "#define RD_ISP vec3(%.9e, %.9e, %.9e)\n"
              "#define RD_METHOD %d\n#define RD_GRAD %d\n",
-             n, n, n * n, G->g.nx, G->g.ny, G->g.nz, (int)G->nv, (double)G->g.origin[0],
-             (double)G->g.origin[1], (double)G->g.origin[2], (double)G->g.spacing[0],
-             (double)G->g.spacing[1], (double)G->g.spacing[2], (double)G->isp[0], (double)G->isp[1],
-             (double)G->isp[2], kind == GD_EQMEM ? 0 : kind, G->grad);
+             n, n, n * n, G->g.dims[0], G->g.dims[1], G->g.dims[2], (int)G->nv,
+             (double)G->g.origin[0], (double)G->g.origin[1], (double)G->g.origin[2],
+             (double)G->g.spacing[0], (double)G->g.spacing[1], (double)G->g.spacing[2],
+             (double)G->isp[0], (double)G->isp[1], (double)G->isp[2], kind == GD_EQMEM ? 0 : kind,
+             G->grad);
     bufs[0] = G->sh;
     bf[0] = 3u * G->nv * G->nn;
     bufs[1] = G->gr;
@@ -1252,7 +1254,7 @@ int rd_pass_grid(rd_run *run) {
   for (k = 0; k < 2; k++)
     printf("grid: %s grid %dx%dx%d (%zu vertices, cell %.4g), %s, %.1f KiB; build %.1f ms wall "
            "(%d shl_grid_build calls + triangle loop, 2 threads)\n",
-           k ? "equal-memory" : "coarse", G[k].g.nx, G[k].g.ny, G[k].g.nz, G[k].nv,
+           k ? "equal-memory" : "coarse", G[k].g.dims[0], G[k].g.dims[1], G[k].g.dims[2], G[k].nv,
            (double)G[k].g.spacing[0], k ? "values" : "values + gradients",
            (double)gd_floats(&G[k]) * 4.0 / 1024.0, G[k].wall_ms, G[k].builds);
   /* methods: -1 perpixel, then the grid methods */

@@ -1512,7 +1512,7 @@ void shli_sh_eval_small(int n, float dx, float dy, float dz, out float out_y[SHL
 #endif
 #endif
   switch (n) {
-  /* up to 6 bands, float Horner forms straight from d are within the targets (README): no
+  /* up to 6 bands, float Horner forms straight from d are within the targets (docs/accuracy.md): no
      normalisation, no division, no double */
   case 1:
     shli_sh_poly_1(dx, dy, dz, out_y);

@@ -288,7 +288,7 @@ shli_real shli_clamp_cos(float z) {
   return c;
 }
 
-float shl_zh_irradiance3(float zh3[3], float z) {
+float shl_zh_irradiance_quadratic(float zh3[3], float z) {
   shli_real c = shli_clamp_cos(z);
   shli_real l2 = SHLIGHT_REAL(zh3[2]);
   return SHLIGHT_FLOAT(0.7431238683011271 * l2 * c * c +
@@ -352,7 +352,7 @@ shli_real shli_sinpi(shli_real t) {
   return x + x * (x2 * p);
 }
 
-void shl_sh_window(int n, int kind, float width, inout float io_zh[SHLIGHT_MAX_BANDS]) {
+void shl_sh_window(int n, shl_window_kind kind, float width, inout float io_zh[SHLIGHT_MAX_BANDS]) {
   shli_real w = SHLIGHT_REAL(width);
   shli_real t;
   shli_real sg;

@@ -160,7 +160,7 @@ shli_real shli_edge_fit(shli_real pa, shli_real pb, shli_real c, int nf, int met
   return fl;
 }
 
-float shl_edge_integral(float phi, float c, float delta, float n, shl_edge_method method) {
+float shl_edge_integral(float phi, float c, float delta, float exponent, shl_edge_method method) {
   shli_real cc = SHLIGHT_MINR(SHLIGHT_MAXR(SHLIGHT_REAL(c), 0.0), 1.0);
   shli_real p = SHLIGHT_MINR(SHLIGHT_MAXR(SHLIGHT_REAL(phi), 0.0), 3.1415926535897932);
   shli_real lo = -SHLIGHT_REAL(delta);
@@ -171,10 +171,10 @@ float shl_edge_integral(float phi, float c, float delta, float n, shl_edge_metho
   shli_real b;
   int nf;
   int piece = 0;
-  if (!(n >= 0.0f) || !(SHLIGHT_ABSR(lo) < 1.0e6) || !(p >= 0.0) || !(cc >= 0.0)) {
+  if (!(exponent >= 0.0f) || !(SHLIGHT_ABSR(lo) < 1.0e6) || !(p >= 0.0) || !(cc >= 0.0)) {
     return 0.0f;
   }
-  nf = SHLIGHT_FTOI(SHLIGHT_MINR(SHLIGHT_REAL(n), 1.0e6) + 0.5);
+  nf = SHLIGHT_FTOI(SHLIGHT_MINR(SHLIGHT_REAL(exponent), 1.0e6) + 0.5);
   /* shift lo into [-pi/2, pi/2) */
   while (lo >= 1.5707963267948966) {
     lo = lo - 3.1415926535897932;
@@ -1008,13 +1008,13 @@ shli_real shli_log1pr(shli_real x) {
   return 2.0 * (z + z * (z2 * p));
 }
 
-float shl_lobe_to_sg(float n) {
-  shli_real e = SHLIGHT_REAL(n);
+float shl_lobe_to_sg(float exponent) {
+  shli_real e = SHLIGHT_REAL(exponent);
   if (!(e > 0.0)) {
     return 0.0f;
   }
   if (!(e < 1.0e30)) {
-    return n;
+    return exponent;
   }
   return SHLIGHT_FLOAT(0.69314718055994531 / -shli_expm1r(-0.69314718055994531 / e));
 }
@@ -1030,10 +1030,11 @@ float shl_sg_to_lobe(float lambda) {
   return SHLIGHT_FLOAT(-0.69314718055994531 / shli_log1pr(-0.69314718055994531 / l));
 }
 
-float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3],
-                       out float out_np[1]) {
-  shli_real l1 = SHLIGHT_REAL(shl_lobe_to_sg(n1));
-  shli_real l2 = SHLIGHT_REAL(shl_lobe_to_sg(n2));
+float shl_lobe_product(vec3 r1, float exponent1, vec3 r2, float exponent2,
+                       out float out_axis[SHLIGHT_MAX_COEFFS],
+                       out float out_exponent[SHLIGHT_MAX_COEFFS]) {
+  shli_real l1 = SHLIGHT_REAL(shl_lobe_to_sg(exponent1));
+  shli_real l2 = SHLIGHT_REAL(shl_lobe_to_sg(exponent2));
   shli_real a[8];
   shli_real b[8];
   shli_real px;
@@ -1043,11 +1044,11 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
   shli_real c1;
   shli_real c2;
   shli_real mu = 0.0;
-  out_rp[0] = r1[0];
-  out_rp[1] = r1[1];
-  out_rp[2] = r1[2];
-  out_np[0] = 0.0f;
-  if (!(n1 >= 0.0f) || !(n2 >= 0.0f)) {
+  out_axis[0] = r1[0];
+  out_axis[1] = r1[1];
+  out_axis[2] = r1[2];
+  out_exponent[0] = 0.0f;
+  if (!(exponent1 >= 0.0f) || !(exponent2 >= 0.0f)) {
     return 0.0f;
   }
   /* the axes normalised in shli_real: a float-normalised axis (|r|^2 - 1 ~ 5e-8) raised to
@@ -1064,10 +1065,10 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
   px = px / lp;
   py = py / lp;
   pz = pz / lp;
-  out_rp[0] = SHLIGHT_FLOAT(px);
-  out_rp[1] = SHLIGHT_FLOAT(py);
-  out_rp[2] = SHLIGHT_FLOAT(pz);
-  out_np[0] = shl_sg_to_lobe(SHLIGHT_FLOAT(lp));
+  out_axis[0] = SHLIGHT_FLOAT(px);
+  out_axis[1] = SHLIGHT_FLOAT(py);
+  out_axis[2] = SHLIGHT_FLOAT(pz);
+  out_exponent[0] = shl_sg_to_lobe(SHLIGHT_FLOAT(lp));
   c1 = px * a[0] + py * a[1] + pz * a[2];
   c2 = px * b[0] + py * b[1] + pz * b[2];
   /* cosines of unit vectors: <= 1, so mu <= 1 for any exponents (rounding can give 1 + 1e-16,
@@ -1075,13 +1076,13 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
   c1 = SHLIGHT_MINR(c1, 1.0);
   c2 = SHLIGHT_MINR(c2, 1.0);
   if (c1 > 0.0 && c2 > 0.0) {
-    mu = SHLIGHT_POWR(c1, SHLIGHT_REAL(n1)) * SHLIGHT_POWR(c2, SHLIGHT_REAL(n2));
+    mu = SHLIGHT_POWR(c1, SHLIGHT_REAL(exponent1)) * SHLIGHT_POWR(c2, SHLIGHT_REAL(exponent2));
   }
   return SHLIGHT_FLOAT(mu);
 }
 
-float shl_polygon_phong2(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float exponent,
-                         shl_edge_method method) {
+float shl_polygon_phong_double_axis(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view,
+                                    float exponent, shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -2032,8 +2033,7 @@ float shl_polygon_ggx(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, 
   return shli_mf_taylor(v, nv, nrm, view, alpha, 0);
 }
 
-float shl_polygon_beckmann_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view,
-                                  float alpha) {
+float shl_polygon_beckmann(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha) {
 #if SHLIGHT_POLYGON_ANY
   if (nv > SHLIGHT_POLYGON_MAX) {
     return shli_fan_beckmann_taylor(v, nv, nrm, view, alpha);
@@ -2480,7 +2480,7 @@ shli_real shli_half_image(inout shli_real io_px[SHLIGHT_CLIP_MAX],
     }
   }
   /* J1 = integral of t^e (h.v), J2 = of t^(e+1) (h.v)^2 over the image (surface divergence
-     identities, README): (a+2) J1(a) = a (n.v) M^(a-1) - sum (v.m) line(t^a),
+     identities, docs/accuracy.md): (a+2) J1(a) = a (n.v) M^(a-1) - sum (v.m) line(t^a),
      (a+3) J2(a) = a (n.v) J1(a-1) + M^a - sum (v.m) line(t^a (h.v)), m the outward
      conormal */
   if (kind >= 2) {
@@ -2675,8 +2675,8 @@ float shl_polygon_blinn_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec
   return SHLIGHT_FLOAT(shli_half_light(v, nv, nrm, view, e, subedges, 0));
 }
 
-float shl_polygon_beckmann(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha,
-                           int subedges) {
+float shl_polygon_beckmann_subedges(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view,
+                                    float alpha, int subedges) {
   shli_real al = SHLIGHT_REAL(alpha);
 #if SHLIGHT_POLYGON_ANY
   if (nv > SHLIGHT_POLYGON_MAX) {

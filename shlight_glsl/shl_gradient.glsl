@@ -1332,6 +1332,7 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
   shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, ib, out_grad);
 }
 
+#ifdef SHLIGHT_REFERENCE_FORMS
 void shl_sh_eval_grad_spherical(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
                                 out float out_dtheta[SHLIGHT_MAX_COEFFS],
                                 out float out_dphi[SHLIGHT_MAX_COEFFS]) {
@@ -1440,7 +1441,9 @@ void shl_sh_eval_grad_spherical(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFF
     }
   }
 }
+#endif
 
+#ifdef SHLIGHT_REFERENCE_FORMS
 void shl_sh_grad_from_spherical(int n, vec3 d, float dtheta[SHLIGHT_MAX_COEFFS],
                                 float dphi[SHLIGHT_MAX_COEFFS],
                                 out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
@@ -1473,5 +1476,6 @@ void shl_sh_grad_from_spherical(int n, vec3 d, float dtheta[SHLIGHT_MAX_COEFFS],
     out_grad[i][2] = dtheta[i] * tz;
   }
 }
+#endif
 
 #endif

@@ -52,8 +52,8 @@ float shli_hvl_h(shli_real c, float r, float d) {
   return SHLIGHT_FLOAT(hh);
 }
 
-float shl_hvl_horizon(vec3 nx, vec3 w, float r, float d) {
-  return shli_hvl_h(shli_cos_between(nx, w), r, d);
+float shl_hvl_horizon(vec3 nrm, vec3 w, float r, float d) {
+  return shli_hvl_h(shli_cos_between(nrm, w), r, d);
 }
 
 float shli_hvl_hs(shli_real c, float r, float d) {
@@ -91,11 +91,13 @@ float shli_hvl_hs(shli_real c, float r, float d) {
   return SHLIGHT_FLOAT(xx * xx * (3.0 - 2.0 * xx));
 }
 
-float shl_hvl_horizon_smoothstep(vec3 nx, vec3 w, float r, float d) {
-  return shli_hvl_hs(shli_cos_between(nx, w), r, d);
+#ifdef SHLIGHT_REFERENCE_FORMS
+float shl_hvl_horizon_smoothstep(vec3 nrm, vec3 w, float r, float d) {
+  return shli_hvl_hs(shli_cos_between(nrm, w), r, d);
 }
+#endif
 
-float shl_hvl_geometric(vec3 x, vec3 nx, vec3 y, vec3 ny, float r, int exact) {
+float shl_hvl_geometric(vec3 x, vec3 nrm, vec3 y, vec3 light_nrm, float r, int exact) {
   shli_real g[8];
   shli_real gn[8];
   shli_real cj;
@@ -110,7 +112,8 @@ float shl_hvl_geometric(vec3 x, vec3 nx, vec3 y, vec3 ny, float r, int exact) {
   if (!(g[6] > 0.0)) {
     return 0.0f;
   }
-  shli_cap_frame(SHLIGHT_REAL(ny[0]), SHLIGHT_REAL(ny[1]), SHLIGHT_REAL(ny[2]), 1.0, gn);
+  shli_cap_frame(SHLIGHT_REAL(light_nrm[0]), SHLIGHT_REAL(light_nrm[1]), SHLIGHT_REAL(light_nrm[2]),
+                 1.0, gn);
   cj = -(gn[0] * g[0] + gn[1] * g[1] + gn[2] * g[2]);
   if (!(cj > 0.0)) {
     return 0.0f;
@@ -118,7 +121,7 @@ float shl_hvl_geometric(vec3 x, vec3 nx, vec3 y, vec3 ny, float r, int exact) {
   if (cj > 1.0) {
     cj = 1.0;
   }
-  shli_cap_frame(SHLIGHT_REAL(nx[0]), SHLIGHT_REAL(nx[1]), SHLIGHT_REAL(nx[2]), 1.0, gn);
+  shli_cap_frame(SHLIGHT_REAL(nrm[0]), SHLIGHT_REAL(nrm[1]), SHLIGHT_REAL(nrm[2]), 1.0, gn);
   cx = gn[0] * g[0] + gn[1] * g[1] + gn[2] * g[2];
   if (cx > 1.0) {
     cx = 1.0;
@@ -171,15 +174,15 @@ float shl_hvl_emission(int n, float femit[SHLIGHT_MAX_COEFFS], vec3 dir) {
   return shli_hvl_emission_xyz(n, femit, g[0], g[1], g[2]);
 }
 
-float shl_hvl_radiance(int n, float femit[SHLIGHT_MAX_COEFFS], float power, vec3 x, vec3 nx, vec3 y,
-                       vec3 ny, float r, int exact) {
+float shl_hvl_radiance(int n, float femit[SHLIGHT_MAX_COEFFS], float power, vec3 x, vec3 nrm,
+                       vec3 y, vec3 light_nrm, float r, int exact) {
   shli_real g[8];
   float gj;
   n = shli_bands(n);
   if (n < 1) {
     return 0.0f;
   }
-  gj = shl_hvl_geometric(x, nx, y, ny, r, exact);
+  gj = shl_hvl_geometric(x, nrm, y, light_nrm, r, exact);
   if (!(gj > 0.0f)) {
     return 0.0f;
   }
@@ -268,17 +271,17 @@ float shl_hvl_radius_neighbours(int count, vec3 p, float dist, vec3 pn[8], float
   return SHLIGHT_FLOAT(sd / sw);
 }
 
-float shl_hvl_radius_fov(float d, float fov, int m) {
+float shl_hvl_radius_fov(float d, float fov, int hvl_count) {
   shli_real dd = SHLIGHT_REAL(d);
   shli_real f = SHLIGHT_REAL(fov);
   shli_real g;
-  if (m < 1) {
-    m = 1;
+  if (hvl_count < 1) {
+    hvl_count = 1;
   }
   if (!(dd >= 0.0) || !(f >= 0.0)) {
     return 0.0f;
   }
-  g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(m)));
+  g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(hvl_count)));
   /* d g (1 + g^2 / 3) with the overflow test before the product (float in GLSL) */
   f = 1.0 + g * g / 3.0;
   g = dd * g;
@@ -292,17 +295,17 @@ float shl_hvl_radius_fov(float d, float fov, int m) {
   return SHLIGHT_FLOAT(g);
 }
 
-float shl_hvl_radius_fov_tan(float d, float fov, int m) {
+float shl_hvl_radius_fov_tan(float d, float fov, int hvl_count) {
   shli_real dd = SHLIGHT_REAL(d);
   shli_real f = SHLIGHT_REAL(fov);
   shli_real g;
-  if (m < 1) {
-    m = 1;
+  if (hvl_count < 1) {
+    hvl_count = 1;
   }
   if (!(dd >= 0.0) || !(f >= 0.0)) {
     return 0.0f;
   }
-  g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(m)));
+  g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(hvl_count)));
   if (g > 1.5707) {
     g = 1.5707;
   }

@@ -1,6 +1,6 @@
 // shl_prelude.glsl - the GLSL side of shlight.h's >>prelude (math shims): include first.
 // The host defines SHLIGHT_MAX_BANDS (the band count the shader is built for) before it.
-// Internal precision: shli_real is float in GLSL (double in C); see README for the accuracy.
+// Internal precision: shli_real is float in GLSL (double in C); see docs/accuracy.md for the accuracy.
 #ifndef SHL_PRELUDE_GLSL
 #define SHL_PRELUDE_GLSL
 #ifndef SHLIGHT_MAX_BANDS

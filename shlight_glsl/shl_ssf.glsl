@@ -40,7 +40,7 @@ shli_real shli_ssf_vpl(vec3 x, vec3 nx, vec3 y, vec3 ny, float flux, float dmin,
   return f * cy * id2 * 0.3183098861837907;
 }
 
-void shl_ssf_vpl_sh(int n, vec3 x, vec3 nx, vec3 y, vec3 ny, float flux, float dmin,
+void shl_ssf_vpl_sh(int n, vec3 x, vec3 nrm, vec3 y, vec3 light_nrm, float flux, float dmin,
                     inout float io_sh[SHLIGHT_MAX_COEFFS]) {
   float ysh[SHLI_YBUF_COEFFS];
   shli_real g[8];
@@ -51,7 +51,7 @@ void shl_ssf_vpl_sh(int n, vec3 x, vec3 nx, vec3 y, vec3 ny, float flux, float d
   if (n < 1) {
     return;
   }
-  e = SHLIGHT_FLOAT(shli_ssf_vpl(x, nx, y, ny, flux, dmin, g));
+  e = SHLIGHT_FLOAT(shli_ssf_vpl(x, nrm, y, light_nrm, flux, dmin, g));
   if (!(e > 0.0f)) {
     return;
   }
@@ -96,23 +96,23 @@ int shli_ssf_mod(int p, int k) {
   return (k - 1) - (-1 - p) % k;
 }
 
-int shl_ssf_interleave(int px, int py, int n_int, int m_int, int nvpl, out int out_range[2]) {
+int shl_ssf_interleave(int px, int py, int tile_x, int tile_y, int nvpl, out int out_range[2]) {
   int s;
   int st;
-  if (n_int < 1) {
-    n_int = 1;
+  if (tile_x < 1) {
+    tile_x = 1;
   }
-  if (n_int > 256) {
-    n_int = 256;
+  if (tile_x > 256) {
+    tile_x = 256;
   }
-  if (m_int < 1) {
-    m_int = 1;
+  if (tile_y < 1) {
+    tile_y = 1;
   }
-  if (m_int > 256) {
-    m_int = 256;
+  if (tile_y > 256) {
+    tile_y = 256;
   }
-  st = n_int * m_int;
-  s = shli_ssf_mod(py, m_int) * n_int + shli_ssf_mod(px, n_int);
+  st = tile_x * tile_y;
+  s = shli_ssf_mod(py, tile_y) * tile_x + shli_ssf_mod(px, tile_x);
   out_range[0] = s;
   out_range[1] = st;
   if (nvpl <= s) {
@@ -121,7 +121,7 @@ int shl_ssf_interleave(int px, int py, int n_int, int m_int, int nvpl, out int o
   return (nvpl - 1 - s) / st + 1;
 }
 
-float shl_ssf_weight(vec3 p, vec3 np, vec3 q, vec3 nq, float max_dist, float min_cos) {
+float shl_ssf_weight(vec3 p, vec3 p_nrm, vec3 q, vec3 q_nrm, float max_dist, float min_cos) {
   shli_real ga[8];
   shli_real gb[8];
   shli_real dx = SHLIGHT_REAL(q[0]) - SHLIGHT_REAL(p[0]);
@@ -135,8 +135,8 @@ float shl_ssf_weight(vec3 p, vec3 np, vec3 q, vec3 nq, float max_dist, float min
       !(md >= 0.0)) {
     return 0.0f;
   }
-  shli_cap_frame(SHLIGHT_REAL(np[0]), SHLIGHT_REAL(np[1]), SHLIGHT_REAL(np[2]), 1.0, ga);
-  shli_cap_frame(SHLIGHT_REAL(nq[0]), SHLIGHT_REAL(nq[1]), SHLIGHT_REAL(nq[2]), 1.0, gb);
+  shli_cap_frame(SHLIGHT_REAL(p_nrm[0]), SHLIGHT_REAL(p_nrm[1]), SHLIGHT_REAL(p_nrm[2]), 1.0, ga);
+  shli_cap_frame(SHLIGHT_REAL(q_nrm[0]), SHLIGHT_REAL(q_nrm[1]), SHLIGHT_REAL(q_nrm[2]), 1.0, gb);
   if (!(ga[6] > 0.0) || !(gb[6] > 0.0)) {
     return 0.0f;
   }

@@ -127,7 +127,7 @@ void shl_zh_cap(int n, float r, float d, out float out_zh[SHLIGHT_MAX_BANDS]) {
   }
 }
 
-void shl_zh_cap_da(int n, float r, float d, out float out_dzh[SHLIGHT_MAX_BANDS]) {
+void shl_zh_cap_derivative(int n, float r, float d, out float out_dzh[SHLIGHT_MAX_BANDS]) {
   shli_real g[8];
   shli_real s;
   shli_real al;
@@ -154,6 +154,7 @@ void shl_zh_cap_da(int n, float r, float d, out float out_dzh[SHLIGHT_MAX_BANDS]
   }
 }
 
+#ifdef SHLIGHT_REFERENCE_FORMS
 void shl_zh_cap_printed(int n, float r, float d, out float out_zh[SHLIGHT_MAX_BANDS]) {
   float s = 0.0f;
   float al;
@@ -186,6 +187,7 @@ void shl_zh_cap_printed(int n, float r, float d, out float out_zh[SHLIGHT_MAX_BA
     fl = fl + 1.0f;
   }
 }
+#endif
 
 void shl_zh_rotate(int n, float zh[SHLIGHT_MAX_BANDS], vec3 dir,
                    out float out_sh[SHLIGHT_MAX_COEFFS]) {

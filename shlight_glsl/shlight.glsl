@@ -131,7 +131,7 @@ precision highp int;
 
 // shl_prelude.glsl - the GLSL side of shlight.h's >>prelude (math shims): include first.
 // The host defines SHLIGHT_MAX_BANDS (the band count the shader is built for) before it.
-// Internal precision: shli_real is float in GLSL (double in C); see README for the accuracy.
+// Internal precision: shli_real is float in GLSL (double in C); see docs/accuracy.md for the accuracy.
 #ifndef SHL_PRELUDE_GLSL
 #define SHL_PRELUDE_GLSL
 #ifndef SHLIGHT_MAX_BANDS
@@ -1713,7 +1713,7 @@ void shli_sh_eval_small(int n, float dx, float dy, float dz, out float out_y[SHL
 #endif
 #endif
   switch (n) {
-  /* up to 6 bands, float Horner forms straight from d are within the targets (README): no
+  /* up to 6 bands, float Horner forms straight from d are within the targets (docs/accuracy.md): no
      normalisation, no division, no double */
   case 1:
     shli_sh_poly_1(dx, dy, dz, out_y);
@@ -3141,6 +3141,7 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
   shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, ib, out_grad);
 }
 
+#ifdef SHLIGHT_REFERENCE_FORMS
 void shl_sh_eval_grad_spherical(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
                                 out float out_dtheta[SHLIGHT_MAX_COEFFS],
                                 out float out_dphi[SHLIGHT_MAX_COEFFS]) {
@@ -3249,7 +3250,9 @@ void shl_sh_eval_grad_spherical(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFF
     }
   }
 }
+#endif
 
+#ifdef SHLIGHT_REFERENCE_FORMS
 void shl_sh_grad_from_spherical(int n, vec3 d, float dtheta[SHLIGHT_MAX_COEFFS],
                                 float dphi[SHLIGHT_MAX_COEFFS],
                                 out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
@@ -3282,6 +3285,7 @@ void shl_sh_grad_from_spherical(int n, vec3 d, float dtheta[SHLIGHT_MAX_COEFFS],
     out_grad[i][2] = dtheta[i] * tz;
   }
 }
+#endif
 
 #endif
 #endif
@@ -3416,7 +3420,7 @@ void shl_zh_cap(int n, float r, float d, out float out_zh[SHLIGHT_MAX_BANDS]) {
   }
 }
 
-void shl_zh_cap_da(int n, float r, float d, out float out_dzh[SHLIGHT_MAX_BANDS]) {
+void shl_zh_cap_derivative(int n, float r, float d, out float out_dzh[SHLIGHT_MAX_BANDS]) {
   shli_real g[8];
   shli_real s;
   shli_real al;
@@ -3443,6 +3447,7 @@ void shl_zh_cap_da(int n, float r, float d, out float out_dzh[SHLIGHT_MAX_BANDS]
   }
 }
 
+#ifdef SHLIGHT_REFERENCE_FORMS
 void shl_zh_cap_printed(int n, float r, float d, out float out_zh[SHLIGHT_MAX_BANDS]) {
   float s = 0.0f;
   float al;
@@ -3475,6 +3480,7 @@ void shl_zh_cap_printed(int n, float r, float d, out float out_zh[SHLIGHT_MAX_BA
     fl = fl + 1.0f;
   }
 }
+#endif
 
 void shl_zh_rotate(int n, float zh[SHLIGHT_MAX_BANDS], vec3 dir,
                    out float out_sh[SHLIGHT_MAX_COEFFS]) {
@@ -5222,7 +5228,7 @@ shli_real shli_edge_fit(shli_real pa, shli_real pb, shli_real c, int nf, int met
   return fl;
 }
 
-float shl_edge_integral(float phi, float c, float delta, float n, shl_edge_method method) {
+float shl_edge_integral(float phi, float c, float delta, float exponent, shl_edge_method method) {
   shli_real cc = SHLIGHT_MINR(SHLIGHT_MAXR(SHLIGHT_REAL(c), 0.0), 1.0);
   shli_real p = SHLIGHT_MINR(SHLIGHT_MAXR(SHLIGHT_REAL(phi), 0.0), 3.1415926535897932);
   shli_real lo = -SHLIGHT_REAL(delta);
@@ -5233,10 +5239,10 @@ float shl_edge_integral(float phi, float c, float delta, float n, shl_edge_metho
   shli_real b;
   int nf;
   int piece = 0;
-  if (!(n >= 0.0f) || !(SHLIGHT_ABSR(lo) < 1.0e6) || !(p >= 0.0) || !(cc >= 0.0)) {
+  if (!(exponent >= 0.0f) || !(SHLIGHT_ABSR(lo) < 1.0e6) || !(p >= 0.0) || !(cc >= 0.0)) {
     return 0.0f;
   }
-  nf = SHLIGHT_FTOI(SHLIGHT_MINR(SHLIGHT_REAL(n), 1.0e6) + 0.5);
+  nf = SHLIGHT_FTOI(SHLIGHT_MINR(SHLIGHT_REAL(exponent), 1.0e6) + 0.5);
   /* shift lo into [-pi/2, pi/2) */
   while (lo >= 1.5707963267948966) {
     lo = lo - 3.1415926535897932;
@@ -6070,13 +6076,13 @@ shli_real shli_log1pr(shli_real x) {
   return 2.0 * (z + z * (z2 * p));
 }
 
-float shl_lobe_to_sg(float n) {
-  shli_real e = SHLIGHT_REAL(n);
+float shl_lobe_to_sg(float exponent) {
+  shli_real e = SHLIGHT_REAL(exponent);
   if (!(e > 0.0)) {
     return 0.0f;
   }
   if (!(e < 1.0e30)) {
-    return n;
+    return exponent;
   }
   return SHLIGHT_FLOAT(0.69314718055994531 / -shli_expm1r(-0.69314718055994531 / e));
 }
@@ -6092,10 +6098,11 @@ float shl_sg_to_lobe(float lambda) {
   return SHLIGHT_FLOAT(-0.69314718055994531 / shli_log1pr(-0.69314718055994531 / l));
 }
 
-float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3],
-                       out float out_np[1]) {
-  shli_real l1 = SHLIGHT_REAL(shl_lobe_to_sg(n1));
-  shli_real l2 = SHLIGHT_REAL(shl_lobe_to_sg(n2));
+float shl_lobe_product(vec3 r1, float exponent1, vec3 r2, float exponent2,
+                       out float out_axis[SHLIGHT_MAX_COEFFS],
+                       out float out_exponent[SHLIGHT_MAX_COEFFS]) {
+  shli_real l1 = SHLIGHT_REAL(shl_lobe_to_sg(exponent1));
+  shli_real l2 = SHLIGHT_REAL(shl_lobe_to_sg(exponent2));
   shli_real a[8];
   shli_real b[8];
   shli_real px;
@@ -6105,11 +6112,11 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
   shli_real c1;
   shli_real c2;
   shli_real mu = 0.0;
-  out_rp[0] = r1[0];
-  out_rp[1] = r1[1];
-  out_rp[2] = r1[2];
-  out_np[0] = 0.0f;
-  if (!(n1 >= 0.0f) || !(n2 >= 0.0f)) {
+  out_axis[0] = r1[0];
+  out_axis[1] = r1[1];
+  out_axis[2] = r1[2];
+  out_exponent[0] = 0.0f;
+  if (!(exponent1 >= 0.0f) || !(exponent2 >= 0.0f)) {
     return 0.0f;
   }
   /* the axes normalised in shli_real: a float-normalised axis (|r|^2 - 1 ~ 5e-8) raised to
@@ -6126,10 +6133,10 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
   px = px / lp;
   py = py / lp;
   pz = pz / lp;
-  out_rp[0] = SHLIGHT_FLOAT(px);
-  out_rp[1] = SHLIGHT_FLOAT(py);
-  out_rp[2] = SHLIGHT_FLOAT(pz);
-  out_np[0] = shl_sg_to_lobe(SHLIGHT_FLOAT(lp));
+  out_axis[0] = SHLIGHT_FLOAT(px);
+  out_axis[1] = SHLIGHT_FLOAT(py);
+  out_axis[2] = SHLIGHT_FLOAT(pz);
+  out_exponent[0] = shl_sg_to_lobe(SHLIGHT_FLOAT(lp));
   c1 = px * a[0] + py * a[1] + pz * a[2];
   c2 = px * b[0] + py * b[1] + pz * b[2];
   /* cosines of unit vectors: <= 1, so mu <= 1 for any exponents (rounding can give 1 + 1e-16,
@@ -6137,13 +6144,13 @@ float shl_lobe_product(vec3 r1, float n1, vec3 r2, float n2, out float out_rp[3]
   c1 = SHLIGHT_MINR(c1, 1.0);
   c2 = SHLIGHT_MINR(c2, 1.0);
   if (c1 > 0.0 && c2 > 0.0) {
-    mu = SHLIGHT_POWR(c1, SHLIGHT_REAL(n1)) * SHLIGHT_POWR(c2, SHLIGHT_REAL(n2));
+    mu = SHLIGHT_POWR(c1, SHLIGHT_REAL(exponent1)) * SHLIGHT_POWR(c2, SHLIGHT_REAL(exponent2));
   }
   return SHLIGHT_FLOAT(mu);
 }
 
-float shl_polygon_phong2(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float exponent,
-                         shl_edge_method method) {
+float shl_polygon_phong_double_axis(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view,
+                                    float exponent, shl_edge_method method) {
   shli_real nx = SHLIGHT_REAL(nrm[0]);
   shli_real ny = SHLIGHT_REAL(nrm[1]);
   shli_real nz = SHLIGHT_REAL(nrm[2]);
@@ -7094,8 +7101,7 @@ float shl_polygon_ggx(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, 
   return shli_mf_taylor(v, nv, nrm, view, alpha, 0);
 }
 
-float shl_polygon_beckmann_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view,
-                                  float alpha) {
+float shl_polygon_beckmann(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha) {
 #if SHLIGHT_POLYGON_ANY
   if (nv > SHLIGHT_POLYGON_MAX) {
     return shli_fan_beckmann_taylor(v, nv, nrm, view, alpha);
@@ -7542,7 +7548,7 @@ shli_real shli_half_image(inout shli_real io_px[SHLIGHT_CLIP_MAX],
     }
   }
   /* J1 = integral of t^e (h.v), J2 = of t^(e+1) (h.v)^2 over the image (surface divergence
-     identities, README): (a+2) J1(a) = a (n.v) M^(a-1) - sum (v.m) line(t^a),
+     identities, docs/accuracy.md): (a+2) J1(a) = a (n.v) M^(a-1) - sum (v.m) line(t^a),
      (a+3) J2(a) = a (n.v) J1(a-1) + M^a - sum (v.m) line(t^a (h.v)), m the outward
      conormal */
   if (kind >= 2) {
@@ -7737,8 +7743,8 @@ float shl_polygon_blinn_phong(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec
   return SHLIGHT_FLOAT(shli_half_light(v, nv, nrm, view, e, subedges, 0));
 }
 
-float shl_polygon_beckmann(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha,
-                           int subedges) {
+float shl_polygon_beckmann_subedges(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view,
+                                    float alpha, int subedges) {
   shli_real al = SHLIGHT_REAL(alpha);
 #if SHLIGHT_POLYGON_ANY
   if (nv > SHLIGHT_POLYGON_MAX) {
@@ -8049,7 +8055,7 @@ shli_real shli_clamp_cos(float z) {
   return c;
 }
 
-float shl_zh_irradiance3(float zh3[3], float z) {
+float shl_zh_irradiance_quadratic(float zh3[3], float z) {
   shli_real c = shli_clamp_cos(z);
   shli_real l2 = SHLIGHT_REAL(zh3[2]);
   return SHLIGHT_FLOAT(0.7431238683011271 * l2 * c * c +
@@ -8113,7 +8119,7 @@ shli_real shli_sinpi(shli_real t) {
   return x + x * (x2 * p);
 }
 
-void shl_sh_window(int n, int kind, float width, inout float io_zh[SHLIGHT_MAX_BANDS]) {
+void shl_sh_window(int n, shl_window_kind kind, float width, inout float io_zh[SHLIGHT_MAX_BANDS]) {
   shli_real w = SHLIGHT_REAL(width);
   shli_real t;
   shli_real sg;
@@ -8236,8 +8242,8 @@ float shli_hvl_h(shli_real c, float r, float d) {
   return SHLIGHT_FLOAT(hh);
 }
 
-float shl_hvl_horizon(vec3 nx, vec3 w, float r, float d) {
-  return shli_hvl_h(shli_cos_between(nx, w), r, d);
+float shl_hvl_horizon(vec3 nrm, vec3 w, float r, float d) {
+  return shli_hvl_h(shli_cos_between(nrm, w), r, d);
 }
 
 float shli_hvl_hs(shli_real c, float r, float d) {
@@ -8275,11 +8281,13 @@ float shli_hvl_hs(shli_real c, float r, float d) {
   return SHLIGHT_FLOAT(xx * xx * (3.0 - 2.0 * xx));
 }
 
-float shl_hvl_horizon_smoothstep(vec3 nx, vec3 w, float r, float d) {
-  return shli_hvl_hs(shli_cos_between(nx, w), r, d);
+#ifdef SHLIGHT_REFERENCE_FORMS
+float shl_hvl_horizon_smoothstep(vec3 nrm, vec3 w, float r, float d) {
+  return shli_hvl_hs(shli_cos_between(nrm, w), r, d);
 }
+#endif
 
-float shl_hvl_geometric(vec3 x, vec3 nx, vec3 y, vec3 ny, float r, int exact) {
+float shl_hvl_geometric(vec3 x, vec3 nrm, vec3 y, vec3 light_nrm, float r, int exact) {
   shli_real g[8];
   shli_real gn[8];
   shli_real cj;
@@ -8294,7 +8302,8 @@ float shl_hvl_geometric(vec3 x, vec3 nx, vec3 y, vec3 ny, float r, int exact) {
   if (!(g[6] > 0.0)) {
     return 0.0f;
   }
-  shli_cap_frame(SHLIGHT_REAL(ny[0]), SHLIGHT_REAL(ny[1]), SHLIGHT_REAL(ny[2]), 1.0, gn);
+  shli_cap_frame(SHLIGHT_REAL(light_nrm[0]), SHLIGHT_REAL(light_nrm[1]), SHLIGHT_REAL(light_nrm[2]),
+                 1.0, gn);
   cj = -(gn[0] * g[0] + gn[1] * g[1] + gn[2] * g[2]);
   if (!(cj > 0.0)) {
     return 0.0f;
@@ -8302,7 +8311,7 @@ float shl_hvl_geometric(vec3 x, vec3 nx, vec3 y, vec3 ny, float r, int exact) {
   if (cj > 1.0) {
     cj = 1.0;
   }
-  shli_cap_frame(SHLIGHT_REAL(nx[0]), SHLIGHT_REAL(nx[1]), SHLIGHT_REAL(nx[2]), 1.0, gn);
+  shli_cap_frame(SHLIGHT_REAL(nrm[0]), SHLIGHT_REAL(nrm[1]), SHLIGHT_REAL(nrm[2]), 1.0, gn);
   cx = gn[0] * g[0] + gn[1] * g[1] + gn[2] * g[2];
   if (cx > 1.0) {
     cx = 1.0;
@@ -8355,15 +8364,15 @@ float shl_hvl_emission(int n, float femit[SHLIGHT_MAX_COEFFS], vec3 dir) {
   return shli_hvl_emission_xyz(n, femit, g[0], g[1], g[2]);
 }
 
-float shl_hvl_radiance(int n, float femit[SHLIGHT_MAX_COEFFS], float power, vec3 x, vec3 nx, vec3 y,
-                       vec3 ny, float r, int exact) {
+float shl_hvl_radiance(int n, float femit[SHLIGHT_MAX_COEFFS], float power, vec3 x, vec3 nrm,
+                       vec3 y, vec3 light_nrm, float r, int exact) {
   shli_real g[8];
   float gj;
   n = shli_bands(n);
   if (n < 1) {
     return 0.0f;
   }
-  gj = shl_hvl_geometric(x, nx, y, ny, r, exact);
+  gj = shl_hvl_geometric(x, nrm, y, light_nrm, r, exact);
   if (!(gj > 0.0f)) {
     return 0.0f;
   }
@@ -8452,17 +8461,17 @@ float shl_hvl_radius_neighbours(int count, vec3 p, float dist, vec3 pn[8], float
   return SHLIGHT_FLOAT(sd / sw);
 }
 
-float shl_hvl_radius_fov(float d, float fov, int m) {
+float shl_hvl_radius_fov(float d, float fov, int hvl_count) {
   shli_real dd = SHLIGHT_REAL(d);
   shli_real f = SHLIGHT_REAL(fov);
   shli_real g;
-  if (m < 1) {
-    m = 1;
+  if (hvl_count < 1) {
+    hvl_count = 1;
   }
   if (!(dd >= 0.0) || !(f >= 0.0)) {
     return 0.0f;
   }
-  g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(m)));
+  g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(hvl_count)));
   /* d g (1 + g^2 / 3) with the overflow test before the product (float in GLSL) */
   f = 1.0 + g * g / 3.0;
   g = dd * g;
@@ -8476,17 +8485,17 @@ float shl_hvl_radius_fov(float d, float fov, int m) {
   return SHLIGHT_FLOAT(g);
 }
 
-float shl_hvl_radius_fov_tan(float d, float fov, int m) {
+float shl_hvl_radius_fov_tan(float d, float fov, int hvl_count) {
   shli_real dd = SHLIGHT_REAL(d);
   shli_real f = SHLIGHT_REAL(fov);
   shli_real g;
-  if (m < 1) {
-    m = 1;
+  if (hvl_count < 1) {
+    hvl_count = 1;
   }
   if (!(dd >= 0.0) || !(f >= 0.0)) {
     return 0.0f;
   }
-  g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(m)));
+  g = 1.4142135623730951 * f / SHLIGHT_SQRTR(SHLIGHT_REAL(SHLIGHT_ITOF(hvl_count)));
   if (g > 1.5707) {
     g = 1.5707;
   }
@@ -8710,7 +8719,7 @@ shli_real shli_ssf_vpl(vec3 x, vec3 nx, vec3 y, vec3 ny, float flux, float dmin,
   return f * cy * id2 * 0.3183098861837907;
 }
 
-void shl_ssf_vpl_sh(int n, vec3 x, vec3 nx, vec3 y, vec3 ny, float flux, float dmin,
+void shl_ssf_vpl_sh(int n, vec3 x, vec3 nrm, vec3 y, vec3 light_nrm, float flux, float dmin,
                     inout float io_sh[SHLIGHT_MAX_COEFFS]) {
   float ysh[SHLI_YBUF_COEFFS];
   shli_real g[8];
@@ -8721,7 +8730,7 @@ void shl_ssf_vpl_sh(int n, vec3 x, vec3 nx, vec3 y, vec3 ny, float flux, float d
   if (n < 1) {
     return;
   }
-  e = SHLIGHT_FLOAT(shli_ssf_vpl(x, nx, y, ny, flux, dmin, g));
+  e = SHLIGHT_FLOAT(shli_ssf_vpl(x, nrm, y, light_nrm, flux, dmin, g));
   if (!(e > 0.0f)) {
     return;
   }
@@ -8766,23 +8775,23 @@ int shli_ssf_mod(int p, int k) {
   return (k - 1) - (-1 - p) % k;
 }
 
-int shl_ssf_interleave(int px, int py, int n_int, int m_int, int nvpl, out int out_range[2]) {
+int shl_ssf_interleave(int px, int py, int tile_x, int tile_y, int nvpl, out int out_range[2]) {
   int s;
   int st;
-  if (n_int < 1) {
-    n_int = 1;
+  if (tile_x < 1) {
+    tile_x = 1;
   }
-  if (n_int > 256) {
-    n_int = 256;
+  if (tile_x > 256) {
+    tile_x = 256;
   }
-  if (m_int < 1) {
-    m_int = 1;
+  if (tile_y < 1) {
+    tile_y = 1;
   }
-  if (m_int > 256) {
-    m_int = 256;
+  if (tile_y > 256) {
+    tile_y = 256;
   }
-  st = n_int * m_int;
-  s = shli_ssf_mod(py, m_int) * n_int + shli_ssf_mod(px, n_int);
+  st = tile_x * tile_y;
+  s = shli_ssf_mod(py, tile_y) * tile_x + shli_ssf_mod(px, tile_x);
   out_range[0] = s;
   out_range[1] = st;
   if (nvpl <= s) {
@@ -8791,7 +8800,7 @@ int shl_ssf_interleave(int px, int py, int n_int, int m_int, int nvpl, out int o
   return (nvpl - 1 - s) / st + 1;
 }
 
-float shl_ssf_weight(vec3 p, vec3 np, vec3 q, vec3 nq, float max_dist, float min_cos) {
+float shl_ssf_weight(vec3 p, vec3 p_nrm, vec3 q, vec3 q_nrm, float max_dist, float min_cos) {
   shli_real ga[8];
   shli_real gb[8];
   shli_real dx = SHLIGHT_REAL(q[0]) - SHLIGHT_REAL(p[0]);
@@ -8805,8 +8814,8 @@ float shl_ssf_weight(vec3 p, vec3 np, vec3 q, vec3 nq, float max_dist, float min
       !(md >= 0.0)) {
     return 0.0f;
   }
-  shli_cap_frame(SHLIGHT_REAL(np[0]), SHLIGHT_REAL(np[1]), SHLIGHT_REAL(np[2]), 1.0, ga);
-  shli_cap_frame(SHLIGHT_REAL(nq[0]), SHLIGHT_REAL(nq[1]), SHLIGHT_REAL(nq[2]), 1.0, gb);
+  shli_cap_frame(SHLIGHT_REAL(p_nrm[0]), SHLIGHT_REAL(p_nrm[1]), SHLIGHT_REAL(p_nrm[2]), 1.0, ga);
+  shli_cap_frame(SHLIGHT_REAL(q_nrm[0]), SHLIGHT_REAL(q_nrm[1]), SHLIGHT_REAL(q_nrm[2]), 1.0, gb);
   if (!(ga[6] > 0.0) || !(gb[6] > 0.0)) {
     return 0.0f;
   }

@@ -77,7 +77,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     size_t need = 0, give = 0;
     float *st = NULL;
     memset(&t, 0, sizeof t);
-    r0 = shl_brdf_table_read(&t, file, flen, NULL, 0);
+    r0 = shl_brdf_table_read(file, flen, NULL, 0, &t);
     FUZZ_CHECK(r0 != SHLIGHT_OK, "SHLT: success without storage");
     if (r0 == SHLIGHT_ESTORAGE) {
       FUZZ_CHECK(t.data == NULL, "SHLT: query set data");
@@ -90,7 +90,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
       if (!st) abort();
     }
     memset(&t2, 0, sizeof t2);
-    r1 = shl_brdf_table_read(&t2, file, flen, st, give);
+    r1 = shl_brdf_table_read(file, flen, st, give, &t2);
     if (r0 != SHLIGHT_ESTORAGE) {
       FUZZ_CHECK(r1 == r0, "SHLT: storage changed the parse error");
     } else if (give < need) {
@@ -128,7 +128,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     size_t need = 0, give = 0;
     float *st = NULL;
     memset(&m, 0, sizeof m);
-    r0 = shl_merl_read(&m, file, flen, NULL, 0);
+    r0 = shl_merl_read(file, flen, NULL, 0, &m);
     FUZZ_CHECK(r0 != SHLIGHT_OK, "MERL: success without storage");
     if (r0 == SHLIGHT_ESTORAGE) {
       FUZZ_CHECK(m.data == NULL, "MERL: query set data");
@@ -141,7 +141,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
       if (!st) abort();
     }
     memset(&m2, 0, sizeof m2);
-    r1 = shl_merl_read(&m2, file, flen, st, give);
+    r1 = shl_merl_read(file, flen, st, give, &m2);
     if (r0 != SHLIGHT_ESTORAGE) {
       FUZZ_CHECK(r1 == r0, "MERL: storage changed the parse error");
     } else if (give < need) {

@@ -26,6 +26,7 @@
  * Replay without libFuzzer: tests/fuzz_replay.c (links against the two globals below);
  * seeded random driver: tests/fuzz_random.c. */
 #define SHLIGHT_ASSERT(x) ((void)0)
+#define SHLIGHT_REFERENCE_FORMS /* the published forms, for comparison */
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
 
@@ -186,7 +187,7 @@ static void fam_light(rd_t *r) {
   FF_CHECK(zh_cap, canary_ok(oz, nb), "canary");
   FF_CHECK(zh_cap, !fin || all_finite(oz, nb), "non-finite for finite r, d"); /* contract: finite */
   CALL(zh_cap_da);
-  shl_zh_cap_da(n, rad, d, oz);
+  shl_zh_cap_derivative(n, rad, d, oz);
   FF_CHECK(zh_cap_da, canary_ok(oz, nb), "canary");
   CALL(zh_cap_printed);
   shl_zh_cap_printed(n, rad, d, oz);
@@ -233,17 +234,17 @@ static void fam_grid(rd_t *r) {
   shl_result rc;
   memset(&g, 0, sizeof g);
   g.n = n;
-  g.nx = (int)(rd_u8(r) % 4u);
-  g.ny = (int)(rd_u8(r) % 4u);
-  g.nz = (int)(rd_u8(r) % 3u);
+  g.dims[0] = (int)(rd_u8(r) % 4u);
+  g.dims[1] = (int)(rd_u8(r) % 4u);
+  g.dims[2] = (int)(rd_u8(r) % 3u);
   rd_v3(r, g.origin);
   rd_v3(r, g.spacing);
   for (i = 0; i < 3; ++i)
     if (rd_u8(r) & 1u) g.spacing[i] = 0.5f; /* mostly valid grids */
   if (rd_u8(r) & 1u) g.origin[0] = g.origin[1] = g.origin[2] = 0.0f;
   g.cull = (rd_u8(r) & 1u) ? 0.0f : rd_f(r);
-  nv =
-      (size_t)(g.nx > 0 ? g.nx : 0) * (size_t)(g.ny > 0 ? g.ny : 0) * (size_t)(g.nz > 0 ? g.nz : 0);
+  nv = (size_t)(g.dims[0] > 0 ? g.dims[0] : 0) * (size_t)(g.dims[1] > 0 ? g.dims[1] : 0) *
+       (size_t)(g.dims[2] > 0 ? g.dims[2] : 0);
   nn = nn_of(n);
   sh = obuf(nv * nn);
   gr = obuf(3 * nv * nn);
@@ -251,8 +252,8 @@ static void fam_grid(rd_t *r) {
   rad = ibuf(r, (size_t)nl, 0);
   inten = ibuf(r, (size_t)nl, 1); /* moderate: a sum of 1e38-intensity lights overflows */
   CALL(grid_build);
-  rc = shl_grid_build(&g, (const float(*)[3])cen, rad, inten, nl, sh, (float(*)[3])gr, order,
-                      threads);
+  rc = shl_grid_build(&g, (const float(*)[3])cen, rad, inten, nl, order, threads, sh,
+                      (float(*)[3])gr);
   FF_CHECK(grid_build, canary_ok(sh, nv * nn) && canary_ok(gr, 3 * nv * nn), "canary");
   /* contract: lights with non-finite data add nothing, so a built grid is finite */
   FF_CHECK(grid_build, rc != SHLIGHT_OK || (all_finite(sh, nv * nn) && all_finite(gr, 3 * nv * nn)),
@@ -334,9 +335,9 @@ static void fam_edge(rd_t *r) {
   /* phong2 with a fit method (1..3) or FAST (6) is not fuzzed: a product lobe whose SG
      sharpness is just above ln 2 gets np ~ 1e16 and those methods' float-to-int rounding of
      the exponent overflows (UB, an open finding of the area functions, docs/contracts.md) */
-  res =
-      shl_polygon_phong2((const float(*)[3])v, nv, nrm, view, e,
-                         (method >= 1 && method <= 3) || method == 6 ? SHLIGHT_EDGE_AUTO : method);
+  res = shl_polygon_phong_double_axis(
+      (const float(*)[3])v, nv, nrm, view, e,
+      (method >= 1 && method <= 3) || method == 6 ? SHLIGHT_EDGE_AUTO : method);
   CALL(ellipse_phong);
   res = shl_ellipse_phong(v[0], a1, a2, nrm, view, e, method);
   CALL(sphere_phong);
@@ -346,13 +347,13 @@ static void fam_edge(rd_t *r) {
   CALL(polygon_ggx);
   res = shl_polygon_ggx((const float(*)[3])v, nv, nrm, view, al);
   CALL(polygon_beckmann_taylor);
-  res = shl_polygon_beckmann_taylor((const float(*)[3])v, nv, nrm, view, al);
+  res = shl_polygon_beckmann((const float(*)[3])v, nv, nrm, view, al);
   CALL(polygon_beckmann_ndf);
   res = shl_polygon_beckmann_ndf((const float(*)[3])v, nv, nrm, al);
   CALL(polygon_blinn_phong);
   res = shl_polygon_blinn_phong((const float(*)[3])v, nv, nrm, view, e, sub);
   CALL(polygon_beckmann);
-  res = shl_polygon_beckmann((const float(*)[3])v, nv, nrm, view, al, sub);
+  res = shl_polygon_beckmann_subedges((const float(*)[3])v, nv, nrm, view, al, sub);
   (void)res;
   /* lobe / SG helpers (this round's contracts): finite for finite input, mu in [0, 1] */
   {
@@ -413,7 +414,7 @@ static void fam_brdf(rd_t *r) {
   zh3[1] = 1.0f;
   zh3[2] = -0.5f;
   CALL(zh_irradiance3);
-  res = shl_zh_irradiance3(zh3, isfinite(z) ? z : 0.5f);
+  res = shl_zh_irradiance_quadratic(zh3, isfinite(z) ? z : 0.5f);
   FF_CHECK(zh_irradiance3, isfinite(res) || !isfinite(zh3[0]), "non-finite");
   CALL(zh_irradiance);
   res = shl_zh_irradiance(n, zh, isfinite(z) ? z : 0.5f);

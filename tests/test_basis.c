@@ -23,6 +23,7 @@
 /* Out-of-range n asserts in debug builds and is clamped in release builds (shlight.h
  * >>numerics).  The tests check the release behaviour, and that the assertion fires: count
  * assertion failures instead of aborting. */
+#define SHLIGHT_REFERENCE_FORMS /* the published forms, for comparison */
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
 #include "ref/shref.h"
@@ -1165,7 +1166,8 @@ static void test_hard_n_clamped(void) {
  * 1e-38 to 1e38, against the binary128 reference at d / |d|, within the target of
  * float-normalised input (target_fnorm). */
 static void test_contract_sh_eval_nonunit(void) {
-  static const double scale[] = {2.4, 4.8, 136, 3850, 0.5, 1 + 3e-6, 1 - 3e-6, 1e-38, 1e-20, 1e20, 1e38};
+  static const double scale[] = {2.4,      4.8,   136,   3850, 0.5, 1 + 3e-6,
+                                 1 - 3e-6, 1e-38, 1e-20, 1e20, 1e38};
   static const int nl[] = {1, 2, 3, 4, 5, 6, 7, 8, 10, 16, 17, 32, 64};
   int a, b, j, i, fail = 0;
   double worst = 0;
@@ -1182,7 +1184,8 @@ static void test_contract_sh_eval_nonunit(void) {
         to_float3(u, 1.0, du);
         (void)du;
         shref_eval_d(n, d, g_ref); /* Y(d / |d|), normalised in binary128 */
-        for (i = 0; i < n * n; i++) g_y[i] = NAN;
+        for (i = 0; i < n * n; i++)
+          g_y[i] = NAN;
         shl_sh_eval(n, d, g_y);
         for (i = 0; i < n * n; i++)
           e = isfinite(g_y[i]) ? fmax(e, fabs((double)g_y[i] - g_ref[i])) : HUGE_VAL;
@@ -1203,8 +1206,8 @@ static void test_contract_sh_eval_nonunit(void) {
  * n = 1..16, 32, 64 (the zero vector once gave wrong values for n = 2..6). */
 static void test_contract_sh_eval_zero_nan_inf(void) {
   float inf = INFINITY, nan = NAN;
-  float dz[][3] = {{0, 0, 0}, {-0.0f, 0, -0.0f}, {nan, 0, 1}, {0, 0, nan}, {inf, 0, 0},
-                   {0, -inf, 1}, {inf, inf, nan}, {FLT_MAX, nan, 0}};
+  float dz[][3] = {{0, 0, 0},   {-0.0f, 0, -0.0f}, {nan, 0, 1},     {0, 0, nan},
+                   {inf, 0, 0}, {0, -inf, 1},      {inf, inf, nan}, {FLT_MAX, nan, 0}};
   float pole[3] = {0, 0, 1};
   int j, t, i;
   for (j = 0; j < (int)(sizeof dz / sizeof dz[0]); j++) {

@@ -4,6 +4,7 @@
    float rounding: the tolerances below are 2e-5 of each output's scale (1 for the lobes'
    K_l-normalised values and H, the product of the norms for the convolutions), measured
    worst cases printed. Run from the repository root (tests/run.sh runs it). */
+#define SHLIGHT_REFERENCE_FORMS /* the published forms, for comparison */
 #include "../shlight.h"
 #include "gl/glrun.h"
 #include "tl.h"
@@ -54,7 +55,7 @@ static void c_item(const float *p, float *o) {
   o[O_S + 0] = shl_sh_dot(NB, p + I_SH, p + I_SH2);
   o[O_S + 1] = shl_sh_conv_zh(NB, p + I_SH, p + I_ZH, p + I_VEC);
   o[O_S + 2] = shl_zh_dot_zh(NB, p + I_ZH, p + I_VEC, o + 32, p + I_VEC + 3);
-  o[O_S + 3] = shl_zh_irradiance3(p + I_ZH, p[2]);
+  o[O_S + 3] = shl_zh_irradiance_quadratic(p + I_ZH, p[2]);
   o[O_S + 4] = shl_zh_irradiance(NB, p + I_ZH, p[2]);
   o[O_S + 5] = (float)shl_zh_bands_for(NB, o + 32, 1e-3f);
   o[O_S + 6] = shl_hvl_horizon(p + I_VEC + 6, p + I_VEC + 9, p[3], p[4]);
@@ -79,7 +80,7 @@ static void test_glsl_brdf(void) {
                           "shlight_glsl/shl_gradient.glsl", "shlight_glsl/shl_zonal.glsl",
                           "shlight_glsl/shl_light.glsl",    "shlight_glsl/shl_brdf.glsl",
                           "shlight_glsl/shl_hvl.glsl"};
-  const char *defines = "#define SHLIGHT_MAX_BANDS 8\n";
+  const char *defines = "#define SHLIGHT_MAX_BANDS 8\n#define SHLIGHT_REFERENCE_FORMS\n";
   const char *main_src =
       "vec3 v3(int j) { return vec3(in_float(j), in_float(j + 1), in_float(j + 2)); }\n"
       "void glrun_main(int item) {\n"
@@ -110,7 +111,7 @@ static void test_glsl_brdf(void) {
       "  out_float(56, shl_sh_dot(8, sh, sh2));\n"
       "  out_float(57, shl_sh_conv_zh(8, sh, zh, v3(6)));\n"
       "  out_float(58, shl_zh_dot_zh(8, zh, v3(6), g, v3(9)));\n"
-      "  out_float(59, shl_zh_irradiance3(z3, in_float(2)));\n"
+      "  out_float(59, shl_zh_irradiance_quadratic(z3, in_float(2)));\n"
       "  out_float(60, shl_zh_irradiance(8, zh, in_float(2)));\n"
       "  out_float(61, float(shl_zh_bands_for(8, g, 1e-3)));\n"
       "  out_float(62, shl_hvl_horizon(v3(12), v3(15), in_float(3), in_float(4)));\n"

@@ -545,11 +545,11 @@ static void test_merl_synth(void) {
   b.kd = 0.1f;
   b.ks = 0.9f;
   file = synth_merl(&b, 90, 90, 180, &len);
-  TL_CHECK(shl_merl_read(&m, file, len, NULL, 0) == SHLIGHT_ESTORAGE, "size query");
+  TL_CHECK(shl_merl_read(file, len, NULL, 0, &m) == SHLIGHT_ESTORAGE, "size query");
   need = 3u * (size_t)m.n_theta_h * (size_t)m.n_theta_d * (size_t)m.n_phi_d;
   TL_CHECK(need == 3u * 90 * 90 * 180, "dims %d %d %d", m.n_theta_h, m.n_theta_d, m.n_phi_d);
   st = falloc(need);
-  TL_CHECK(shl_merl_read(&m, file, len, st, need) == SHLIGHT_OK, "read");
+  TL_CHECK(shl_merl_read(file, len, st, need, &m) == SHLIGHT_OK, "read");
   /* channels: the scale factors undone */
   for (c = 0; c < 3; ++c) {
     const float wo[3] = {0.6f, 0.0f, 0.8f}, wi[3] = {-0.48f, 0.36f, 0.8f};
@@ -681,16 +681,16 @@ static void test_shlt_file(void) {
                  c,
              "stored CRC is zlib's crc32 of header and payload");
   }
-  TL_CHECK(shl_brdf_table_read(&r, f, len, NULL, 0) == SHLIGHT_ESTORAGE && r.n == n &&
+  TL_CHECK(shl_brdf_table_read(f, len, NULL, 0, &r) == SHLIGHT_ESTORAGE && r.n == n &&
                r.n_theta == nt && r.n_phi == np && r.flags == 1 && r.data == NULL,
            "read size query");
-  TL_CHECK(shl_brdf_table_read(&r, f, len, back, cnt - 1) == SHLIGHT_ESTORAGE, "short storage");
-  TL_CHECK(shl_brdf_table_read(&r, f, len, back, cnt + 1) == SHLIGHT_OK && r.data == back &&
+  TL_CHECK(shl_brdf_table_read(f, len, back, cnt - 1, &r) == SHLIGHT_ESTORAGE, "short storage");
+  TL_CHECK(shl_brdf_table_read(f, len, back, cnt + 1, &r) == SHLIGHT_OK && r.data == back &&
                memcmp(back, d, cnt * sizeof(float)) == 0,
            "round trip bit exact");
 #define EXPECT(buf, l, code, what)                                                                 \
-  TL_CHECK(shl_brdf_table_read(&r, buf, l, back, cnt) == code, "%s: got %d, want %d", what,        \
-           (int)shl_brdf_table_read(&r, buf, l, back, cnt), (int)code)
+  TL_CHECK(shl_brdf_table_read(buf, l, back, cnt, &r) == code, "%s: got %d, want %d", what,        \
+           (int)shl_brdf_table_read(buf, l, back, cnt, &r), (int)code)
   EXPECT(f, 0, SHLIGHT_ELENGTH, "empty");
   EXPECT(f, 7, SHLIGHT_ELENGTH, "cut before the version");
   EXPECT(f, 39, SHLIGHT_ELENGTH, "header cut");
@@ -769,14 +769,14 @@ static void test_shlt_file(void) {
     EXPECT(g, l1, SHLIGHT_EVERSION, "version 1 file");
     TL_CHECK(back[0] == 7.0f, "version 1: storage written");
   }
-  TL_CHECK(shl_brdf_table_read(NULL, f, len, back, cnt) == SHLIGHT_EINVAL, "NULL out");
-  TL_CHECK(shl_brdf_table_read(&r, NULL, len, back, cnt) == SHLIGHT_EINVAL, "NULL buf");
+  TL_CHECK(shl_brdf_table_read(f, len, back, cnt, NULL) == SHLIGHT_EINVAL, "NULL out");
+  TL_CHECK(shl_brdf_table_read(NULL, len, back, cnt, &r) == SHLIGHT_EINVAL, "NULL buf");
   /* storage untouched on error */
   for (i = 0; i < cnt; ++i)
     back[i] = 7.0f;
   memcpy(g, f, len);
   g[44] ^= 1;
-  shl_brdf_table_read(&r, g, len, back, cnt);
+  shl_brdf_table_read(g, len, back, cnt, &r);
   TL_CHECK(back[0] == 7.0f && back[cnt - 1] == 7.0f, "storage written on error");
   /* write errors */
   t.flags = 0;
@@ -801,13 +801,13 @@ static void test_merl_errors(void) {
   double v;
   int k;
 #define EXPECT(buf, l, code, what)                                                                 \
-  TL_CHECK(shl_merl_read(&m, buf, l, st, 3 * per) == code, "%s: got %d, want %d", what,            \
-           (int)shl_merl_read(&m, buf, l, st, 3 * per), (int)code)
+  TL_CHECK(shl_merl_read(buf, l, st, 3 * per, &m) == code, "%s: got %d, want %d", what,            \
+           (int)shl_merl_read(buf, l, st, 3 * per, &m), (int)code)
   EXPECT(f, len, SHLIGHT_OK, "valid");
   TL_CHECK(m.n_theta_h == 2 && m.n_theta_d == 3 && m.n_phi_d == 4 && m.data == st, "dims");
-  TL_CHECK(shl_merl_read(&m, f, len, st, 3 * per - 1) == SHLIGHT_ESTORAGE && m.data == NULL,
+  TL_CHECK(shl_merl_read(f, len, st, 3 * per - 1, &m) == SHLIGHT_ESTORAGE && m.data == NULL,
            "short storage");
-  TL_CHECK(shl_merl_read(&m, f, len, NULL, 0) == SHLIGHT_ESTORAGE && m.n_phi_d == 4, "size query");
+  TL_CHECK(shl_merl_read(f, len, NULL, 0, &m) == SHLIGHT_ESTORAGE && m.n_phi_d == 4, "size query");
   EXPECT(f, 11, SHLIGHT_ELENGTH, "header cut");
   EXPECT(f, len - 1, SHLIGHT_ELENGTH, "payload cut by a byte");
   EXPECT(f, len - 8, SHLIGHT_ELENGTH, "payload cut by a double");
@@ -838,8 +838,8 @@ static void test_merl_errors(void) {
   v = 1e300;
   put_le(g + 12 + 8 * 30, &v, 8);
   EXPECT(g, len, SHLIGHT_ENONFINITE, "sample beyond float once scaled");
-  TL_CHECK(shl_merl_read(NULL, f, len, st, 3 * per) == SHLIGHT_EINVAL, "NULL out");
-  TL_CHECK(shl_merl_read(&m, NULL, len, st, 3 * per) == SHLIGHT_EINVAL, "NULL buf");
+  TL_CHECK(shl_merl_read(f, len, st, 3 * per, NULL) == SHLIGHT_EINVAL, "NULL out");
+  TL_CHECK(shl_merl_read(NULL, len, st, 3 * per, &m) == SHLIGHT_EINVAL, "NULL buf");
   { /* negative (invalid) samples count as 0 */
     const float wo[3] = {0.0f, 0.0f, 1.0f};
     shl_merl z;

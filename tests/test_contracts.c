@@ -398,9 +398,9 @@ static void test_stack_grid_sample_chunked_same_bits(void) {
     if (!sh || !gr || !c8 || !g8 || !out || !ref) abort();
     memset(&g, 0, sizeof g);
     g.n = n;
-    g.nx = 2;
-    g.ny = 3;
-    g.nz = 2;
+    g.dims[0] = 2;
+    g.dims[1] = 3;
+    g.dims[2] = 2;
     g.spacing[0] = g.spacing[1] = g.spacing[2] = 1.0f;
     for (v = 0; v < nv * nn; ++v) {
       sh[v] = (float)sin(0.3 * v);

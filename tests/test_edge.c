@@ -525,7 +525,8 @@ static void test_phong2(void) {
       res = arref_polygon((const double(*)[3])v, 4, (const double(*)[3])clip, 2, dax_f, &ctx, &h,
                           1e-12L);
       ref = res.value * (e + 1) / (2 * PI_L);
-      got = shl_polygon_phong2((const float(*)[3])q, 4, n, vw, (float)e, SHLIGHT_EDGE_AUTO);
+      got = shl_polygon_phong_double_axis((const float(*)[3])q, 4, n, vw, (float)e,
+                                          SHLIGHT_EDGE_AUTO);
       d = (double)fabsl(got - ref); /* normalised-lobe units (the model's value is <= 1) */
       if (getenv("EDGE_DEBUG") && d > 0.1)
         printf("   view %g e %g ext %g: got %g ref %Lg conv %d\n", tvs[it], e, ext, got, ref,
@@ -774,15 +775,15 @@ static void test_polygon_any_vertex_count(void) {
               if (ie == 2) cp += arref_polygon_moment2((const double(*)[3])td, 3, r, e, nd);
               f[0] += shl_polygon_phong((const float(*)[3])t, 3, nrm, view, (float)e,
                                         SHLIGHT_EDGE_EXACT);
-              f[1] += shl_polygon_phong2((const float(*)[3])t, 3, nrm, view, (float)e,
-                                         SHLIGHT_EDGE_EXACT);
+              f[1] += shl_polygon_phong_double_axis((const float(*)[3])t, 3, nrm, view, (float)e,
+                                                    SHLIGHT_EDGE_EXACT);
               f[2] += shl_polygon_ggx_ndf((const float(*)[3])t, 3, ax, 0.3f);
               f[3] += shl_polygon_beckmann_ndf((const float(*)[3])t, 3, ax, 0.3f);
             }
             g[0] = shl_polygon_phong((const float(*)[3])ac.v, nv, nrm, view, (float)e,
                                      SHLIGHT_EDGE_EXACT);
-            g[1] = shl_polygon_phong2((const float(*)[3])ac.v, nv, nrm, view, (float)e,
-                                      SHLIGHT_EDGE_EXACT);
+            g[1] = shl_polygon_phong_double_axis((const float(*)[3])ac.v, nv, nrm, view, (float)e,
+                                                 SHLIGHT_EDGE_EXACT);
             g[2] = shl_polygon_ggx_ndf((const float(*)[3])ac.v, nv, ax, 0.3f);
             g[3] = shl_polygon_beckmann_ndf((const float(*)[3])ac.v, nv, ax, 0.3f);
             if (ie == 2)
@@ -805,14 +806,14 @@ static void test_polygon_any_vertex_count(void) {
             double td[3][3];
             any_tri(&ac, i, t, td);
             f[0] += shl_polygon_ggx((const float(*)[3])t, 3, nrm, view, 0.3f);
-            f[1] += shl_polygon_beckmann_taylor((const float(*)[3])t, 3, nrm, view, 0.3f);
+            f[1] += shl_polygon_beckmann((const float(*)[3])t, 3, nrm, view, 0.3f);
             f[2] += shl_polygon_blinn_phong((const float(*)[3])t, 3, nrm, view, 20.0f, 8);
-            f[3] += shl_polygon_beckmann((const float(*)[3])t, 3, nrm, view, 0.3f, 8);
+            f[3] += shl_polygon_beckmann_subedges((const float(*)[3])t, 3, nrm, view, 0.3f, 8);
           }
           g[0] = shl_polygon_ggx((const float(*)[3])ac.v, nv, nrm, view, 0.3f);
-          g[1] = shl_polygon_beckmann_taylor((const float(*)[3])ac.v, nv, nrm, view, 0.3f);
+          g[1] = shl_polygon_beckmann((const float(*)[3])ac.v, nv, nrm, view, 0.3f);
           g[2] = shl_polygon_blinn_phong((const float(*)[3])ac.v, nv, nrm, view, 20.0f, 8);
-          g[3] = shl_polygon_beckmann((const float(*)[3])ac.v, nv, nrm, view, 0.3f, 8);
+          g[3] = shl_polygon_beckmann_subedges((const float(*)[3])ac.v, nv, nrm, view, 0.3f, 8);
           for (i = 0; i < 4; ++i)
             TL_CHECK(fabs(g[i] - f[i]) < 1e-2 * fabs(f[i]) + 1e-4,
                      "polygon_any microfacet nv %d kind %d clipped %d function %d: %.6g vs centre "
@@ -912,7 +913,8 @@ static void test_phong2_exponent_gt_1e12(void) {
   static const float es[] = {1e5f, 1e7f, 1e12f, 1e15f, 1e20f, 1e29f};
   int i;
   for (i = 0; i < 6; ++i) {
-    float p = shl_polygon_phong2((const float(*)[3])big, 4, z, v, es[i], SHLIGHT_EDGE_AUTO);
+    float p =
+        shl_polygon_phong_double_axis((const float(*)[3])big, 4, z, v, es[i], SHLIGHT_EDGE_AUTO);
     TL_CHECK(fabsf(p - 0.8f) < 2e-3f, "phong2_exponent_gt_1e12 e=%g: %g (limit 0.8)", es[i], p);
   }
 }
@@ -933,9 +935,9 @@ static void test_phong2_nv_22(void) {
       t[1][k] = d[i][k];
       t[2][k] = d[(i + 1) % 22][k];
     }
-    fan += shl_polygon_phong2((const float(*)[3])t, 3, z, v, 30.0f, SHLIGHT_EDGE_EXACT);
+    fan += shl_polygon_phong_double_axis((const float(*)[3])t, 3, z, v, 30.0f, SHLIGHT_EDGE_EXACT);
   }
-  got = shl_polygon_phong2((const float(*)[3])d, 22, z, v, 30.0f, SHLIGHT_EDGE_EXACT);
+  got = shl_polygon_phong_double_axis((const float(*)[3])d, 22, z, v, 30.0f, SHLIGHT_EDGE_EXACT);
   TL_CHECK(isfinite(got) && got > 0 && fabs(got - fan) < 1e-5 * fan,
            "phong2_nv_22: %g vs the centre fan %g", got, fan);
 }

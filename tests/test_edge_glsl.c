@@ -53,7 +53,7 @@ static void test_glsl_edge(void) {
       "  }\n"
       "  out_float(4, shl_polygon_phong(v, nv, ax, vw, e, SHLIGHT_EDGE_AUTO));\n"
       "  out_float(6, shl_sphere_phong(v[0], 0.3 * length(v[0]), ax, vw, e, SHLIGHT_EDGE_AUTO));\n"
-      "  out_float(7, shl_polygon_phong2(v, nv, ax, vw, e, SHLIGHT_EDGE_AUTO));\n"
+      "  out_float(7, shl_polygon_phong_double_axis(v, nv, ax, vw, e, SHLIGHT_EDGE_AUTO));\n"
       "  out_float(8, shl_polygon_ggx_ndf(v, nv, ax, 0.02 + 0.001 * e));\n"
       "#ifndef SKIP_FAST\n"
       "  out_float(10, shl_polygon_phong(v, nv, ax, vw, e, SHLIGHT_EDGE_FAST));\n"
@@ -105,7 +105,7 @@ static void test_glsl_edge(void) {
           shl_edge_integral(p[0] + 1.5f, p[1] * 0.5f + 0.5f, p[2], e, SHLIGHT_EDGE_LORENTZ_PEARSON);
       r[6] = shl_sphere_phong(p, 0.3f * sqrtf(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), p + 25,
                               p + 29, e, SHLIGHT_EDGE_AUTO);
-      r[7] = shl_polygon_phong2(v, nv, p + 25, p + 29, e, SHLIGHT_EDGE_AUTO);
+      r[7] = shl_polygon_phong_double_axis(v, nv, p + 25, p + 29, e, SHLIGHT_EDGE_AUTO);
       r[8] = shl_polygon_ggx_ndf(v, nv, p + 25, 0.02f + 0.001f * e);
       r[9] = -1.0f; /* nv = SHLIGHT_POLYGON_MAX + 1 in GLSL: the documented -1 */
       r[10] = fast ? shl_polygon_phong(v, nv, p + 25, p + 29, e, SHLIGHT_EDGE_FAST) : 0.0f;

@@ -12,6 +12,7 @@
  * are C only). The compute path (GLSL 4.50) checks every kernel; the fragment path (GLSL 3.30,
  * which flushes denormals) and the GLSL ES 3.00 fragment path check the kernels whose outputs fit
  * in 8 vec4 per pixel. */
+#define SHLIGHT_REFERENCE_FORMS /* the published forms, for comparison */
 #include "../shlight.h"
 #include "gl/glrun.h"
 #include "tl.h"
@@ -70,7 +71,8 @@ static double tol_y(int n) {
 
 static char defines[128];
 static void set_bands(int maxb) {
-  snprintf(defines, sizeof defines, "#define SHLIGHT_MAX_BANDS %d\n", maxb);
+  snprintf(defines, sizeof defines,
+           "#define SHLIGHT_MAX_BANDS %d\n#define SHLIGHT_REFERENCE_FORMS\n", maxb);
 }
 
 /* shl_sh_eval on the compute path: n bands in a shader built for maxb bands */

@@ -54,14 +54,14 @@ static shl_grid cube_grid(int N, int n) {
     g.origin[k] = 0.0f;
     g.spacing[k] = N > 1 ? 1.0f / (float)(N - 1) : 1.0f;
   }
-  g.nx = g.ny = g.nz = N;
+  g.dims[0] = g.dims[1] = g.dims[2] = N;
   g.n = n;
   g.cull = 0.0f;
   return g;
 }
 
 static size_t nverts(const shl_grid *g) {
-  return (size_t)g->nx * (size_t)g->ny * (size_t)g->nz;
+  return (size_t)g->dims[0] * (size_t)g->dims[1] * (size_t)g->dims[2];
 }
 
 static float *alloc_sh(const shl_grid *g) {
@@ -112,9 +112,9 @@ static void test_orders_threads(void) {
   float *a, *b;
   float(*ga)[3], (*gb)[3];
   int o, t, pass, withg;
-  g.nx = 5;
-  g.ny = 4;
-  g.nz = 6;
+  g.dims[0] = 5;
+  g.dims[1] = 4;
+  g.dims[2] = 6;
   m = nverts(&g) * 25u;
   a = alloc_sh(&g);
   b = alloc_sh(&g);
@@ -123,14 +123,14 @@ static void test_orders_threads(void) {
   for (pass = 0; pass < 2; ++pass) {
     g.cull = pass ? 1e-3f : 0.0f;
     for (withg = 0; withg < 2; ++withg) {
-      TL_CHECK(shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, s.nl, a, withg ? ga : NULL,
-                              SHLIGHT_GRID_FORWARD, 1) == SHLIGHT_OK,
+      TL_CHECK(shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, s.nl, SHLIGHT_GRID_FORWARD, 1,
+                              a, withg ? ga : NULL) == SHLIGHT_OK,
                "build");
       for (o = 0; o < 2; ++o)
         for (t = 1; t <= 3; ++t) {
           if (o == 0 && t == 1) continue;
-          TL_CHECK(shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, s.nl, b, withg ? gb : NULL,
-                                  o, t) == SHLIGHT_OK,
+          TL_CHECK(shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, s.nl, o, t, b,
+                                  withg ? gb : NULL) == SHLIGHT_OK,
                    "build");
           TL_CHECK(memcmp(a, b, m * sizeof(float)) == 0, "sh differ: order %d threads %d cull %d",
                    o, t, pass);
@@ -158,13 +158,13 @@ static void test_build_vs_point(void) {
       int n = nb[q], nn = n * n, bad = 0;
       g.origin[0] = -0.3f;
       g.spacing[2] = 0.37f;
-      TL_CHECK(shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, s.nl, a, withg ? ga : NULL,
-                              SHLIGHT_GRID_REVERSED, 2) == SHLIGHT_OK,
+      TL_CHECK(shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, s.nl, SHLIGHT_GRID_REVERSED, 2,
+                              a, withg ? ga : NULL) == SHLIGHT_OK,
                "build");
-      for (iz = 0; iz < g.nz; ++iz)
-        for (iy = 0; iy < g.ny; ++iy)
-          for (ix = 0; ix < g.nx; ++ix) {
-            size_t v = (size_t)(ix + g.nx * (iy + g.ny * iz));
+      for (iz = 0; iz < g.dims[2]; ++iz)
+        for (iy = 0; iy < g.dims[1]; ++iy)
+          for (ix = 0; ix < g.dims[0]; ++ix) {
+            size_t v = (size_t)(ix + g.dims[0] * (iy + g.dims[1] * iz));
             vertex_pos(&g, ix, iy, iz, p);
             point_sum(n, &s, p, ref, withg ? rg : NULL);
             if (memcmp(ref, a + v * (size_t)nn, sizeof(float) * (size_t)nn)) bad++;
@@ -272,7 +272,7 @@ static void interp_error(const scene *s, int N, int n, int npts, double zmax, do
   double sum[3] = {0, 0, 0}, sref = 0.0;
   unsigned long long save = rng_state;
   int q, m, i, nn = n * n;
-  shl_grid_build(&g, (const float(*)[3])s->c, s->r, s->in, s->nl, sh, gr, SHLIGHT_GRID_REVERSED, 2);
+  shl_grid_build(&g, (const float(*)[3])s->c, s->r, s->in, s->nl, SHLIGHT_GRID_REVERSED, 2, sh, gr);
   rng_state = 0x1234567ull; /* the same points for every grid */
   for (q = 0; q < npts; ++q) {
     float p[3];
@@ -381,10 +381,10 @@ static void test_culling_bound(void) {
     int ix, iy, iz, j, l, m, nn = 36, viol = 0, culled = 0;
     double worst = 0.0, worstg = 0.0;
     double eps = (double)epss[q];
-    shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, s.nl, a, ga, SHLIGHT_GRID_FORWARD, 1);
+    shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, s.nl, SHLIGHT_GRID_FORWARD, 1, a, ga);
     g.cull = epss[q];
-    TL_CHECK(shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, s.nl, b, gb,
-                            SHLIGHT_GRID_REVERSED, 2) == SHLIGHT_OK,
+    TL_CHECK(shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, s.nl, SHLIGHT_GRID_REVERSED, 2,
+                            b, gb) == SHLIGHT_OK,
              "build");
     for (iz = 0; iz < 9; ++iz)
       for (iy = 0; iy < 9; ++iy)
@@ -448,28 +448,28 @@ static void test_degenerate(void) {
   int bad = 0;
   /* 0 lights: zeros, OK (centres / radii may be NULL) */
   a[0] = 5.0f;
-  TL_CHECK(shl_grid_build(&g, NULL, NULL, NULL, 0, a, ga, SHLIGHT_GRID_FORWARD, 2) == SHLIGHT_OK,
+  TL_CHECK(shl_grid_build(&g, NULL, NULL, NULL, 0, SHLIGHT_GRID_FORWARD, 2, a, ga) == SHLIGHT_OK,
            "0 lights");
   for (i = 0; i < m; ++i)
     bad += a[i] != 0.0f || ga[i][0] != 0.0f;
   TL_CHECK(bad == 0, "0 lights: nonzero");
   /* r = 0 (and NaN) light adds nothing */
-  shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, 4, a, ga, SHLIGHT_GRID_FORWARD, 1);
+  shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, 4, SHLIGHT_GRID_FORWARD, 1, a, ga);
   s.r[4] = 0.0f;
-  shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, 5, b, ga, SHLIGHT_GRID_REVERSED, 1);
+  shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, 5, SHLIGHT_GRID_REVERSED, 1, b, ga);
   TL_CHECK(memcmp(a, b, m * sizeof(float)) == 0, "r = 0 light changed the grid");
   s.r[4] = NAN;
-  shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, 5, b, ga, SHLIGHT_GRID_REVERSED, 2);
+  shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, 5, SHLIGHT_GRID_REVERSED, 2, b, ga);
   TL_CHECK(memcmp(a, b, m * sizeof(float)) == 0, "r = NaN light changed the grid");
   /* intensity NULL == all ones */
   {
     float ones[5] = {1, 1, 1, 1, 1};
-    shl_grid_build(&g, (const float(*)[3])s.c, s.r, ones, 4, a, NULL, SHLIGHT_GRID_FORWARD, 1);
-    shl_grid_build(&g, (const float(*)[3])s.c, s.r, NULL, 4, b, NULL, SHLIGHT_GRID_FORWARD, 1);
+    shl_grid_build(&g, (const float(*)[3])s.c, s.r, ones, 4, SHLIGHT_GRID_FORWARD, 1, a, NULL);
+    shl_grid_build(&g, (const float(*)[3])s.c, s.r, NULL, 4, SHLIGHT_GRID_FORWARD, 1, b, NULL);
     TL_CHECK(memcmp(a, b, m * sizeof(float)) == 0, "intensity NULL != ones");
   }
   /* points outside the grid: clamped */
-  shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, 4, a, ga, SHLIGHT_GRID_FORWARD, 1);
+  shl_grid_build(&g, (const float(*)[3])s.c, s.r, s.in, 4, SHLIGHT_GRID_FORWARD, 1, a, ga);
   {
     float po[3] = {-3.0f, 0.4f, 7.0f}, pc[3] = {0.0f, 0.4f, 1.0f}, pn[3] = {NAN, 0.4f, 1.0f};
     int mm;
@@ -488,18 +488,18 @@ static void test_degenerate(void) {
     float v1[9], gv1[9][3], p[3] = {0.3f, -2.0f, 9.0f};
     int mm;
     g1.origin[0] = 0.5f;
-    TL_CHECK(shl_grid_build(&g1, (const float(*)[3])s.c, s.r, s.in, 4, v1, gv1,
-                            SHLIGHT_GRID_REVERSED, 2) == SHLIGHT_OK,
+    TL_CHECK(shl_grid_build(&g1, (const float(*)[3])s.c, s.r, s.in, 4, SHLIGHT_GRID_REVERSED, 2, v1,
+                            gv1) == SHLIGHT_OK,
              "dims 1");
     for (mm = 0; mm < 3; ++mm) {
       TL_CHECK(shl_grid_sample(&g1, v1, (const float(*)[3])gv1, p, mm, out) == SHLIGHT_OK, "s");
       TL_CHECK(memcmp(out, v1, sizeof out) == 0, "dims 1 method %d", mm);
     }
     g1 = cube_grid(3, 3);
-    g1.nz = 1;
+    g1.dims[2] = 1;
     g1.spacing[2] = 0.0f; /* ignored where dims = 1 */
-    TL_CHECK(shl_grid_build(&g1, (const float(*)[3])s.c, s.r, s.in, 4, a, ga, SHLIGHT_GRID_FORWARD,
-                            2) == SHLIGHT_OK,
+    TL_CHECK(shl_grid_build(&g1, (const float(*)[3])s.c, s.r, s.in, 4, SHLIGHT_GRID_FORWARD, 2, a,
+                            ga) == SHLIGHT_OK,
              "nz 1");
     p[0] = 0.5f;
     p[1] = 0.5f;
@@ -510,24 +510,24 @@ static void test_degenerate(void) {
   /* invalid input */
   {
     shl_grid gb = g;
-    TL_CHECK(shl_grid_build(NULL, NULL, NULL, NULL, 0, a, NULL, 0, 1) == SHLIGHT_EINVAL, "NULL g");
-    TL_CHECK(shl_grid_build(&g, NULL, NULL, NULL, 0, NULL, NULL, 0, 1) == SHLIGHT_EINVAL,
+    TL_CHECK(shl_grid_build(NULL, NULL, NULL, NULL, 0, 0, 1, a, NULL) == SHLIGHT_EINVAL, "NULL g");
+    TL_CHECK(shl_grid_build(&g, NULL, NULL, NULL, 0, 0, 1, NULL, NULL) == SHLIGHT_EINVAL,
              "NULL out");
-    TL_CHECK(shl_grid_build(&g, NULL, s.r, NULL, 2, a, NULL, 0, 1) == SHLIGHT_EINVAL, "NULL c");
-    TL_CHECK(shl_grid_build(&g, NULL, NULL, NULL, -1, a, NULL, 0, 1) == SHLIGHT_EINVAL, "nl < 0");
-    TL_CHECK(shl_grid_build(&g, NULL, NULL, NULL, 0, a, NULL, 7, 1) == SHLIGHT_EINVAL, "order");
-    TL_CHECK(shl_grid_build(&g, NULL, NULL, NULL, 0, a, NULL, 0, 0) == SHLIGHT_EINVAL, "threads");
+    TL_CHECK(shl_grid_build(&g, NULL, s.r, NULL, 2, 0, 1, a, NULL) == SHLIGHT_EINVAL, "NULL c");
+    TL_CHECK(shl_grid_build(&g, NULL, NULL, NULL, -1, 0, 1, a, NULL) == SHLIGHT_EINVAL, "nl < 0");
+    TL_CHECK(shl_grid_build(&g, NULL, NULL, NULL, 0, 7, 1, a, NULL) == SHLIGHT_EINVAL, "order");
+    TL_CHECK(shl_grid_build(&g, NULL, NULL, NULL, 0, 0, 0, a, NULL) == SHLIGHT_EINVAL, "threads");
     gb.n = 0;
-    TL_CHECK(shl_grid_build(&gb, NULL, NULL, NULL, 0, a, NULL, 0, 1) == SHLIGHT_EINVAL, "n 0");
+    TL_CHECK(shl_grid_build(&gb, NULL, NULL, NULL, 0, 0, 1, a, NULL) == SHLIGHT_EINVAL, "n 0");
     gb = g;
     gb.spacing[1] = 0.0f;
-    TL_CHECK(shl_grid_build(&gb, NULL, NULL, NULL, 0, a, NULL, 0, 1) == SHLIGHT_EINVAL, "spacing");
+    TL_CHECK(shl_grid_build(&gb, NULL, NULL, NULL, 0, 0, 1, a, NULL) == SHLIGHT_EINVAL, "spacing");
     gb = g;
     gb.cull = -1.0f;
-    TL_CHECK(shl_grid_build(&gb, NULL, NULL, NULL, 0, a, NULL, 0, 1) == SHLIGHT_EINVAL, "cull");
+    TL_CHECK(shl_grid_build(&gb, NULL, NULL, NULL, 0, 0, 1, a, NULL) == SHLIGHT_EINVAL, "cull");
     gb = g;
-    gb.nx = 0;
-    TL_CHECK(shl_grid_build(&gb, NULL, NULL, NULL, 0, a, NULL, 0, 1) == SHLIGHT_EINVAL, "dims");
+    gb.dims[0] = 0;
+    TL_CHECK(shl_grid_build(&gb, NULL, NULL, NULL, 0, 0, 1, a, NULL) == SHLIGHT_EINVAL, "dims");
     TL_CHECK(shl_grid_sample(&g, a, NULL, out, SHLIGHT_GRID_HERMITE, out2) == SHLIGHT_EINVAL,
              "hermite without grad");
     TL_CHECK(shl_grid_sample(&g, a, NULL, out, SHLIGHT_GRID_TRILINEAR, out2) == SHLIGHT_OK,
@@ -539,7 +539,7 @@ static void test_degenerate(void) {
     shl_grid g2 = cube_grid(2, 20);
     float *h = alloc_sh(&g2), o20[400], p[3] = {0.0f, 1.0f, 0.0f};
     float(*hg)[3] = alloc_grad(&g2);
-    shl_grid_build(&g2, (const float(*)[3])s.c, s.r, s.in, 4, h, hg, SHLIGHT_GRID_FORWARD, 1);
+    shl_grid_build(&g2, (const float(*)[3])s.c, s.r, s.in, 4, SHLIGHT_GRID_FORWARD, 1, h, hg);
     TL_CHECK(shl_grid_sample(&g2, h, (const float(*)[3])hg, p, SHLIGHT_GRID_HERMITE, o20) ==
                  SHLIGHT_OK,
              "n 20");

@@ -1,10 +1,10 @@
 /* test_microfacet.c - shlight's microfacet polygon lights in half-vector space (>>edge:
- * shl_polygon_blinn_phong, shl_polygon_beckmann, shl_polygon_beckmann_ndf and their helpers)
- * against tests/ref/arearef.h: long double adaptive cubature of the light-space integrand over
- * the clipped polygon (no half vectors, no edge formulas), and closed forms.
- * Errors are relative to the directional albedo (the whole hemisphere as the light), or to the
- * normalised lobe (NDF integrals: the whole hemisphere gives 1), never to the (tiny) value.
- * SHLIGHT_TEST_QUICK=1: fewer random cases. Build: make build/tests/test_microfacet. */
+ * shl_polygon_blinn_phong, shl_polygon_beckmann_subedges, shl_polygon_beckmann_ndf and their
+ * helpers) against tests/ref/arearef.h: long double adaptive cubature of the light-space integrand
+ * over the clipped polygon (no half vectors, no edge formulas), and closed forms. Errors are
+ * relative to the directional albedo (the whole hemisphere as the light), or to the normalised lobe
+ * (NDF integrals: the whole hemisphere gives 1), never to the (tiny) value. SHLIGHT_TEST_QUICK=1:
+ * fewer random cases. Build: make build/tests/test_microfacet. */
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
 
@@ -246,8 +246,8 @@ static void test_shading(int kind) {
         for (q = 0; q < 3; ++q) {
           float got = kind == 0 ? shl_polygon_blinn_phong((const float(*)[3])c.v, 4, c.n, c.view,
                                                           (float)par, ks[q])
-                                : shl_polygon_beckmann((const float(*)[3])c.v, 4, c.n, c.view,
-                                                       (float)par, ks[q]);
+                                : shl_polygon_beckmann_subedges((const float(*)[3])c.v, 4, c.n,
+                                                                c.view, (float)par, ks[q]);
           double err = (double)(fabsl((long double)got - ref) / alb);
           if (!(err <= worst[q])) worst[q] = err;
         }
@@ -347,7 +347,7 @@ static void test_degenerate(void) {
     float par = kind == 0 ? 50.0f : 0.3f;
 #define MF(P, NV, N, V, X, K)                                                                      \
   (kind == 0 ? shl_polygon_blinn_phong((const float(*)[3])(P), NV, N, V, X, K)                     \
-             : shl_polygon_beckmann((const float(*)[3])(P), NV, N, V, X, K))
+             : shl_polygon_beckmann_subedges((const float(*)[3])(P), NV, N, V, X, K))
     const char *nm = kind ? "Beckmann" : "Blinn-Phong";
     float ref = MF(q, 4, z, v, par, 4);
     TL_CHECK(ref > 0 && isfinite(ref), "%s: a plain case is positive: %g", nm, ref);
@@ -395,10 +395,10 @@ static void test_degenerate(void) {
            "Blinn-Phong: exponent clamped to 1e6");
   TL_CHECK(isfinite(shl_polygon_blinn_phong((const float(*)[3])q, 4, z, v, INFINITY, 4)),
            "Blinn-Phong: exponent +Inf finite");
-  TL_CHECK(shl_polygon_beckmann((const float(*)[3])q, 4, z, v, 0, 4) ==
-                   shl_polygon_beckmann((const float(*)[3])q, 4, z, v, 1e-4f, 4) &&
-               shl_polygon_beckmann((const float(*)[3])q, 4, z, v, 7, 4) ==
-                   shl_polygon_beckmann((const float(*)[3])q, 4, z, v, 1, 4),
+  TL_CHECK(shl_polygon_beckmann_subedges((const float(*)[3])q, 4, z, v, 0, 4) ==
+                   shl_polygon_beckmann_subedges((const float(*)[3])q, 4, z, v, 1e-4f, 4) &&
+               shl_polygon_beckmann_subedges((const float(*)[3])q, 4, z, v, 7, 4) ==
+                   shl_polygon_beckmann_subedges((const float(*)[3])q, 4, z, v, 1, 4),
            "Beckmann: alpha clamped to [1e-4, 1]");
   {
     float a = shl_polygon_beckmann_ndf((const float(*)[3])q, 4, z, 0.3f);
@@ -437,15 +437,15 @@ static void test_lambda(void) {
   TL_CHECK(worst < 2.5e-7, "Beckmann Smith G1 from the A&S erfc: max %.2e", worst);
 }
 
-/* shl_polygon_beckmann_taylor (shl_polygon_ggx's method with the Beckmann NDF and Lambda) against
+/* shl_polygon_beckmann (shl_polygon_ggx's method with the Beckmann NDF and Lambda) against
    the cubature of the same integrand (arearef kind 1): the five configurations of test_shading
    (error / albedo) and every 25th quad of bench_ggx's sampler (tests/ref/ggxcases.h, relative
    error where the light gives >= 5 % of the albedo). Tolerances ~3x the measured maxima. */
 static void test_beckmann_taylor(void) {
   static const double als[4] = {1.0, 0.5, 0.2, 0.05};
   /* measured (MF_CASES=12: 48 cases per configuration): front 1.3e-4, grazing 6.7e-2,
-     straddle 2.6e-4, large 1.2e-2, sliver 1.6e-4 (shl_polygon_beckmann k = 8, test_shading:
-     4.1e-2, 0.26, 4.2e-2, 0.13, 5.7e-4) */
+     straddle 2.6e-4, large 1.2e-2, sliver 1.6e-4 (shl_polygon_beckmann_subedges k = 8,
+     test_shading: 4.1e-2, 0.26, 4.2e-2, 0.13, 5.7e-4) */
   static const double tol[5] = {4e-4, 0.2, 8e-4, 3.5e-2, 5e-4};
   int cfg, ip, it, i, k, nv = 0, nt = quick() ? 1 : 2;
   double rel[70], worst_rel = 0;
@@ -463,7 +463,7 @@ static void test_beckmann_taylor(void) {
         make_case(&c, cfg);
         alb = arref_mf_albedo(c.dn, c.dview, als[ip], 1, 1e-8L);
         ref = arref_polygon_mf((const double(*)[3])c.dv, 4, c.dn, c.dview, als[ip], 1, 1e-8L * alb);
-        got = shl_polygon_beckmann_taylor((const float(*)[3])c.v, 4, c.n, c.view, (float)als[ip]);
+        got = shl_polygon_beckmann((const float(*)[3])c.v, 4, c.n, c.view, (float)als[ip]);
         err = (double)(fabsl((long double)got - ref) / alb);
         if (!(err <= worst)) worst = err;
       }
@@ -489,7 +489,7 @@ static void test_beckmann_taylor(void) {
       alb = arref_mf_albedo(n, v, al, 1, 1e-10L);
       ref = arref_polygon_mf((const double(*)[3])q, 4, n, v, al, 1, 1e-9L * alb);
       if (ref >= 0.05L * alb) {
-        float got = shl_polygon_beckmann_taylor((const float(*)[3])fq, 4, fn, fv, (float)al);
+        float got = shl_polygon_beckmann((const float(*)[3])fq, 4, fn, fv, (float)al);
         rel[nv] = (double)(fabsl((long double)got - ref) / ref);
         if (rel[nv] > worst_rel) worst_rel = rel[nv];
         nv++;
@@ -518,7 +518,7 @@ static void test_beckmann_taylor_degenerate(void) {
   float below[4][3] = {{-1, -1, -2}, {1, -1, -2}, {1, 1, -2}, {-1, 1, -2}};
   float z[3] = {0, 0, 1}, v[3] = {0, -0.6f, 0.8f}, zero[3] = {0, 0, 0}, nanv[3] = {NAN, 0, 1};
   float vb[3] = {0, -0.6f, -0.8f}, qn[4][3], at[4][3], q9[9][3];
-#define BT(P, NV, N, V, A) shl_polygon_beckmann_taylor((const float(*)[3])(P), NV, N, V, A)
+#define BT(P, NV, N, V, A) shl_polygon_beckmann((const float(*)[3])(P), NV, N, V, A)
   float ref = BT(q, 4, z, v, 0.3f);
   quad9((const float(*)[3])q, q9);
   memcpy(qn, q, sizeof q);
@@ -555,8 +555,8 @@ static void test_beckmann_view_grazing_eps(void) {
   float q[4][3] = {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}, z[3] = {0, 0, 1};
   static const float eps[] = {1e-6f, 3e-7f, 1e-9f, 1e-12f, 1e-16f, 1e-30f};
   float v0[3] = {1, 0, 1e-4f};
-  float rt = shl_polygon_beckmann_taylor((const float(*)[3])q, 4, z, v0, 0.3f);
-  float rb = shl_polygon_beckmann((const float(*)[3])q, 4, z, v0, 0.3f, 8);
+  float rt = shl_polygon_beckmann((const float(*)[3])q, 4, z, v0, 0.3f);
+  float rb = shl_polygon_beckmann_subedges((const float(*)[3])q, 4, z, v0, 0.3f, 8);
   int i;
   TL_CHECK(rt > 0 && rt < 1 && rb > 0 && rb < 1, "beckmann_view_grazing_eps at 1e-4: %g %g", rt,
            rb);
@@ -564,8 +564,8 @@ static void test_beckmann_view_grazing_eps(void) {
     float v[3] = {1, 0, 0};
     float t, b;
     v[2] = eps[i];
-    t = shl_polygon_beckmann_taylor((const float(*)[3])q, 4, z, v, 0.3f);
-    b = shl_polygon_beckmann((const float(*)[3])q, 4, z, v, 0.3f, 8);
+    t = shl_polygon_beckmann((const float(*)[3])q, 4, z, v, 0.3f);
+    b = shl_polygon_beckmann_subedges((const float(*)[3])q, 4, z, v, 0.3f, 8);
     TL_CHECK(isfinite(t) && fabsf(t - rt) < 2e-2f * rt,
              "beckmann_view_grazing_eps taylor eps %g: %g (at 1e-4: %g)", eps[i], t, rt);
     TL_CHECK(isfinite(b) && fabsf(b - rb) < 2e-2f * rb,
@@ -580,8 +580,8 @@ static void test_subedges_int_min(void) {
   TL_CHECK(shl_polygon_blinn_phong((const float(*)[3])q, 4, z, v, 50.0f, imin) ==
                shl_polygon_blinn_phong((const float(*)[3])q, 4, z, v, 50.0f, -SHLIGHT_HALF_K),
            "subedges_int_min blinn-phong");
-  TL_CHECK(shl_polygon_beckmann((const float(*)[3])q, 4, z, v, 0.3f, imin) ==
-               shl_polygon_beckmann((const float(*)[3])q, 4, z, v, 0.3f, -SHLIGHT_HALF_K),
+  TL_CHECK(shl_polygon_beckmann_subedges((const float(*)[3])q, 4, z, v, 0.3f, imin) ==
+               shl_polygon_beckmann_subedges((const float(*)[3])q, 4, z, v, 0.3f, -SHLIGHT_HALF_K),
            "subedges_int_min beckmann");
 }
 

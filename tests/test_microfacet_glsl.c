@@ -1,11 +1,12 @@
-/* test_microfacet_glsl.c - the GLSL twins of shl_polygon_blinn_phong, shl_polygon_beckmann,
-   shl_polygon_beckmann_taylor and shl_polygon_beckmann_ndf (shlight_glsl/shl_edge.glsl) against the
-   C kernels on llvmpipe (compute path), on random quads around the mirror direction: front, grazing
-   and horizon-straddling views, Blinn-Phong exponents 1..3000, Beckmann alpha 0.03..1, k = 2 and 8
-   sub-edges. GLSL runs shli_real as float, C as double: differences are in units of the
-   albedo-scale result (Blinn-Phong and Beckmann give at most ~1 for a hemisphere light) and
-   of the normalised lobe (NDF). One call site per kernel: llvmpipe compiles each inlined copy
-   of the half-vector sums in seconds. Run from the repository root (tests/run.sh runs it). */
+/* test_microfacet_glsl.c - the GLSL twins of shl_polygon_blinn_phong,
+   shl_polygon_beckmann_subedges, shl_polygon_beckmann and shl_polygon_beckmann_ndf
+   (shlight_glsl/shl_edge.glsl) against the C kernels on llvmpipe (compute path), on random quads
+   around the mirror direction: front, grazing and horizon-straddling views, Blinn-Phong
+   exponents 1..3000, Beckmann alpha 0.03..1, k = 2 and 8 sub-edges. GLSL runs shli_real as float, C
+   as double: differences are in units of the albedo-scale result (Blinn-Phong and Beckmann give at
+   most ~1 for a hemisphere light) and of the normalised lobe (NDF). One call site per kernel:
+   llvmpipe compiles each inlined copy of the half-vector sums in seconds. Run from the repository
+   root (tests/run.sh runs it). */
 #include "../shlight.h"
 #include "gl/glrun.h"
 #include "tl.h"
@@ -45,9 +46,10 @@ static void test_glsl_microfacet(void) {
       "  for (k = 0; k < 2; ++k)\n"
       "    out_float(k, shl_polygon_blinn_phong(v, 4, n, vw, in_float(18), k == 0 ? 2 : 8));\n"
       "  for (k = 0; k < 2; ++k)\n"
-      "    out_float(2 + k, shl_polygon_beckmann(v, 4, n, vw, in_float(19), k == 0 ? -2 : 8));\n"
+      "    out_float(2 + k, shl_polygon_beckmann_subedges(v, 4, n, vw, in_float(19), k == 0 ? -2 : "
+      "8));\n"
       "  out_float(4, shl_polygon_beckmann_ndf(v, 4, n, in_float(19)));\n"
-      "  out_float(5, shl_polygon_beckmann_taylor(v, 4, n, vw, in_float(19)));\n"
+      "  out_float(5, shl_polygon_beckmann(v, 4, n, vw, in_float(19)));\n"
       "}\n";
   int i, k, bad = 0;
   double worst[OUTS] = {0, 0, 0, 0, 0, 0};
@@ -86,10 +88,10 @@ static void test_glsl_microfacet(void) {
       float *o = ref + i * OUTS;
       o[0] = shl_polygon_blinn_phong(v, 4, p + 12, p + 15, p[18], 2);
       o[1] = shl_polygon_blinn_phong(v, 4, p + 12, p + 15, p[18], 8);
-      o[2] = shl_polygon_beckmann(v, 4, p + 12, p + 15, p[19], -2);
-      o[3] = shl_polygon_beckmann(v, 4, p + 12, p + 15, p[19], 8);
+      o[2] = shl_polygon_beckmann_subedges(v, 4, p + 12, p + 15, p[19], -2);
+      o[3] = shl_polygon_beckmann_subedges(v, 4, p + 12, p + 15, p[19], 8);
       o[4] = shl_polygon_beckmann_ndf(v, 4, p + 12, p[19]);
-      o[5] = shl_polygon_beckmann_taylor(v, 4, p + 12, p + 15, p[19]);
+      o[5] = shl_polygon_beckmann(v, 4, p + 12, p + 15, p[19]);
     }
   }
   TL_CHECK(glrun_compute(defines, files, 6, main_src, in, (size_t)NI * IN, out, (size_t)NI * OUTS,

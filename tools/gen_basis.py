@@ -7,7 +7,7 @@ plus the constant tables of the run-time loops. Writes the regions between
   python3 tools/gen_basis.py          rewrite the regions
   python3 tools/gen_basis.py --check  exit 1 if a region is stale (CI)
 
-Math (../shared/MATH.md sections 1 and 3, errata applied):
+Math (docs/math.md sections 1 and 3, errata applied):
   X_l^m(z): normalised associated Legendre / sin^m, Condon-Shortley phase;
   Y_l^m = X_l^m U_m, Y_l^-m = X_l^m V_m, U_m + i V_m = (x + i y)^m.
   Reinsch form with t = 1 - |z|, g_l = X_l(1)/X_{l-1}(1), c_l = beta_l / g_{l-1}:
@@ -827,7 +827,12 @@ def split_items(lines):
     return items
 
 
+REFERENCE_FORMS = ('shl_zh_cap_printed', 'shl_hvl_horizon_smoothstep', 'shl_sh_eval_grad_spherical', 'shl_sh_grad_from_spherical')
+
+
 def guard(kind, name):
+    if name in REFERENCE_FORMS:
+        return '#ifdef SHLIGHT_REFERENCE_FORMS'
     if kind == 'tab' or name.endswith('_loop'):
         return '#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS'
     if name.startswith('shli_fast_'):

@@ -143,7 +143,7 @@ int main(int argc, char **argv) {
     fprintf(stderr, "merl_write: cannot write %s\n", argv[1]);
     return 1;
   }
-  if (shl_merl_read(&m, buf, len, store, 3 * np) != SHLIGHT_OK) {
+  if (shl_merl_read(buf, len, store, 3 * np, &m) != SHLIGHT_OK) {
     fprintf(stderr, "merl_write: shl_merl_read refused the file\n");
     return 1;
   }
