@@ -417,8 +417,8 @@ SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const
 
 /* ---- edge ---------------------------------------------------------------------------------- */
 /* shl_edge_integral: the edge integral of [AREA] eq. 3,
-   F(Phi, c, delta, n) = sum over k = n, n - 2, ..., >= 0 of c^k integral from -delta to
-   Phi - delta of cos^k, for Phi in [0, pi], c in [0, 1], any delta, n >= 0 (rounded to the
+   F(Phi, c, delta, e) = sum over k = e, e - 2, ..., >= 0 of c^k integral from -delta to
+   Phi - delta of cos^k, for Phi in [0, pi], c in [0, 1], any delta, e = exponent >= 0 (rounded to the
    nearest integer), by `method`: SHLIGHT_EDGE_EXACT (the O(n) recurrence, in shli_real) or one
    of the O(1) fits SHLIGHT_EDGE_LORENTZ / _LORENTZ_PEARSON / _ELLIPSOID (AUTO, QUADRATURE,
    FAST and any unknown method id mean EXACT here). The arc is split at +-pi/2 and reduced with I(p
@@ -491,24 +491,24 @@ SHLIGHT_INLINE float shl_lobe_to_sg(float exponent);
    finite n. */
 SHLIGHT_INLINE float shl_sg_to_lobe(float lambda);
 
-/* shl_lobe_product: the product of two cosine lobes max(0, u.r1)^n1 max(0, u.r2)^n2 approximated
-   by one lobe mu max(0, u.rp)^np ([AREA] sec. 7.1): both mapped to SGs (shl_lobe_to_sg), the
-   exact SG product (axis rp along lambda1 r1 + lambda2 r2, sharpness lambda_p = |lambda1 r1 +
-   lambda2 r2|), mapped back (shl_sg_to_lobe), mu the true product at rp (clamped lobes,
+/* shl_lobe_product: the product of two cosine lobes max(0, u.r1)^exponent1 max(0, u.r2)^exponent2 approximated
+   by one lobe mu max(0, u.r_p)^e_p ([AREA] sec. 7.1): both mapped to SGs (shl_lobe_to_sg), the
+   exact SG product (axis r_p along lambda1 r1 + lambda2 r2, sharpness lambda_p = |lambda1 r1 +
+   lambda2 r2|), mapped back (shl_sg_to_lobe), mu the true product at r_p (clamped lobes,
    docs/math.md 7.3). r1, r2: any finite non-zero vectors, normalised here in shli_real (so a
    float-normalised axis is exact enough for any exponent); zero, NaN or infinite: +z. Writes
-   rp (unit) and returns mu in [0, 1] (a product of two cosines <= 1 raised to n1, n2 >= 0),
-   np in out_np[0]. Accuracy is the paper's: good for aligned lobes, poor beyond ~60 degrees
+   r_p (unit) and returns mu in [0, 1] (a product of two cosines <= 1 raised to exponent1, exponent2 >= 0),
+   e_p in out_exponent[0]. Accuracy is the paper's: good for aligned lobes, poor beyond ~60 degrees
    (docs/accuracy.md); above n ~ 1e9 a lobe is narrower than the double rounding of the axes, and mu
-   (still in [0, 1]) loses accuracy. Opposite lobes with equal sharpness (no axis), n1 or n2
+   (still in [0, 1]) loses accuracy. Opposite lobes with equal sharpness (no axis), exponent1 or exponent2
    negative or NaN, or |lambda1 r1 + lambda2 r2| >= 1e30 (exponents ~1e30 and above, +inf):
-   mu = 0, np = 0, rp = r1. */
+   mu = 0, e_p = 0, r_p = r1. */
 SHLIGHT_INLINE float shl_lobe_product(const float r1[3], float exponent1, const float r2[3],
                                       float exponent2, float *out_axis, float *out_exponent);
 
 /* shl_polygon_phong_double_axis: double-axis Phong, (e+1)/(2 pi) times the integral over the
    polygon (clipped to the horizon) of max(0, u.r)^e max(0, u.nrm), by the lobe product of
-   shl_lobe_product (n2 = 1: the cosine) and one moment about its axis ([AREA] sec. 7.1). Inputs and
+   shl_lobe_product (exponent2 = 1: the cosine) and one moment about its axis ([AREA] sec. 7.1). Inputs and
    degenerate results as shl_polygon_phong. Exponents above 1e6: the product's limit, max(0, nrm.r)
    times the single-axis value (relative error ~ 1 / e; the SG road loses its axis to float rounding
    above ~1e12). Error: docs/area-lights.md (the product approximation dominates). */
@@ -772,10 +772,10 @@ SHLIGHT_INLINE int shl_zh_bands_for(int n, const float *zh, float target);
 
 /* ---- hvl ----------------------------------------------------------------------------------- */
 /* shl_hvl_horizon: exact fraction H in [0, 1] of the cap of a sphere of radius r at distance
-   d in the direction w that lies above the plane of the normal nx (see >>hvl). nx, w: any
+   d in the direction w that lies above the plane of the normal nrm (see >>hvl). nrm, w: any
    finite non-zero vectors (normalised in shli_real; zero, NaN or infinite: +z). d <= r (x on
    or inside the sphere): the cap is the hemisphere about w (s = 1). r <= 0 or NaN, d NaN, or
-   a cap too small for float (s = 0): the point limit, 1 if nx . w > 0, 0 if < 0, 1/2 if 0.
+   a cap too small for float (s = 0): the point limit, 1 if nrm . w > 0, 0 if < 0, 1/2 if 0.
    Accuracy: max |error| 3.0e-8 (the float rounding of the output) against a long double
    ring-by-ring quadrature of the cap, s from 1e-6 to 1, all crossing angles (tests/test_brdf).
    Cost: 2 normalisations, ~8 sqrt, 2 own atan2. */
@@ -793,7 +793,7 @@ SHLIGHT_INLINE float shl_hvl_horizon_smoothstep(const float nrm[3], const float 
 
 /* shl_hvl_geometric: [HVL] eq. 21, G_j = max(0, n_j . (x - y)/|x - y|) H(n_x, w_j) /
    (pi r^2), with H exact (exact != 0, shl_hvl_horizon) or the smoothstep variant (exact = 0).
-   x, nx: shading point and its normal; y, ny: the HVL's centre and normal (normals: any
+   x, nrm: shading point and its normal; y, light_nrm: the HVL's centre and normal (normals: any
    non-zero vectors, normalised here). r <= 0 or NaN: 0 (no HVL). x == y: the direction +z
    (then H is the hemisphere's). NaN or infinite positions: 0. Bounded by 1 / (pi r^2); a
    value above FLT_MAX (possible for r < 3.1e-20 only) saturates to FLT_MAX, never inf. Cost:
@@ -809,8 +809,8 @@ SHLIGHT_INLINE float shl_hvl_geometric(const float x[3], const float nrm[3], con
 SHLIGHT_INLINE float shl_hvl_emission(int n, const float *femit, const float dir[3]);
 
 /* shl_hvl_radiance: [HVL] eq. 20, L_j = power (F' . Y(-w_j)) G_j(-w_j): the radiance that
-   HVL j (centre y, normal ny, radius r, emission femit: n^2 floats of SH in world axes) sends
-   to the shading point x with normal nx; exact selects H as in shl_hvl_geometric. Degenerate
+   HVL j (centre y, normal light_nrm, radius r, emission femit: n^2 floats of SH in world axes) sends
+   to the shading point x with normal nrm; exact selects H as in shl_hvl_geometric. Degenerate
    inputs: those of shl_hvl_geometric give 0. Cost: shl_hvl_emission + shl_hvl_geometric. */
 SHLIGHT_INLINE float shl_hvl_radiance(int n, const float *femit, float power, const float x[3],
                                       const float nrm[3], const float y[3],
@@ -840,10 +840,10 @@ SHLIGHT_INLINE float shl_hvl_contribution_zh(int n, float lj, const float *fzh,
 SHLIGHT_INLINE float shl_hvl_radius_neighbours(int count, const float p[3], float dist,
                                                const float (*pn)[3], const float *dn, float eps);
 
-/* shl_hvl_radius_fov: [HVL] eq. 24-26, r2 = d (g + g^3 / 3), g = sqrt(2) fov / sqrt(m),
-   the Taylor form of d tan(g) (fov: the RSM's field of view in radians, m the number of
+/* shl_hvl_radius_fov: [HVL] eq. 24-26, r2 = d (g + g^3 / 3), g = sqrt(2) fov / sqrt(hvl_count),
+   the Taylor form of d tan(g) (fov: the RSM's field of view in radians, hvl_count the number of
    HVLs, d the HVL's distance to the light). Within 1 % absolute of tan for g <= 0.5786, i.e.
-   fov / sqrt(m) <= 0.41 (correction E9 (docs/math.md section 12); the paper's 0.2 is wrong). m <
+   fov / sqrt(hvl_count) <= 0.41 (correction E9 (docs/math.md section 12); the paper's 0.2 is wrong). hvl_count <
    1: 1. d or fov NaN or < 0: 0. A result above FLT_MAX (d near FLT_MAX, or a huge fov) saturates to
    FLT_MAX, never inf; +inf d or fov: FLT_MAX. Cost: 1 sqrt, 8 flops. */
 SHLIGHT_INLINE float shl_hvl_radius_fov(float d, float fov, int hvl_count);
@@ -933,7 +933,6 @@ typedef struct shl_merl {
   float *data;
 } shl_merl;
 
-#define SHLIGHT_BRDF_LAMBERT 0
 /* shl_brdf_table.flags: bit 0 set for an anisotropic table (n_phi > 1); other bits 0. */
 #define SHLIGHT_BRDF_TABLE_ANISO 1
 
@@ -950,48 +949,49 @@ typedef struct shl_merl {
 #define SHLIGHT_MERL_MAX_DIM 1024           /* each of the three MERL dimensions */
 
 /* shl_ssf_vpl_sh: adds to io_sh (n * n floats, n bands) the SH of the incoming radiance at the
-   receiver x due to one VPL at y with normal ny and flux `flux`: io_sh[i] += e Y_i(w), with
-   w = (y - x) / |y - x| and e = flux max(0, ny . -w) / (pi max(|y - x|^2, dmin^2)) (see >>ssf
-   for the constant). nx: the receiver's geometric normal, any length: a VPL strictly below its
-   plane (nx . w < 0) adds nothing (a normal-mapped shading normal must not see light through the
-   surface); nx = 0 turns the test off. ny: any finite non-zero vector (normalised; zero, NaN or
+   receiver x due to one VPL at y with normal light_nrm and flux `flux`: io_sh[i] += e Y_i(w), with
+   w = (y - x) / |y - x| and e = flux max(0, light_nrm . -w) / (pi max(|y - x|^2, dmin^2)) (see >>ssf
+   for the constant). nrm: the receiver's geometric normal, any length: a VPL strictly below its
+   plane (nrm . w < 0) adds nothing (a normal-mapped shading normal must not see light through the
+   surface); nrm = 0 turns the test off. light_nrm: any finite non-zero vector (normalised; zero, NaN or
    infinite: +z, the library's convention). dmin: the clamp distance (<= 0 or NaN: no clamp);
    |y - x| is taken as at least 1e-18. Nothing is added when flux <= 0, NaN or infinite, x == y
-   (no direction), x or y NaN or infinite, or the VPL faces away (ny . -w <= 0). n < 1: nothing;
+   (no direction), x or y NaN or infinite, or the VPL faces away (light_nrm . -w <= 0). n < 1: nothing;
    n > SHLIGHT_MAX_BANDS: see shli_bands. Accuracy: e to a few float roundings, times Y of
    >>basis. Cost: 2 normalisations, one SH evaluation (a float[SHLIGHT_MAX_COEFFS] on the
    stack) and n^2 FMA. */
 SHLIGHT_INLINE void shl_ssf_vpl_sh(int n, const float x[3], const float nrm[3], const float y[3],
                                    const float light_nrm[3], float flux, float dmin, float *io_sh);
 
-/* shl_ssf_vpl_irradiance: the irradiance at x with the shading normal ns due to the same VPL,
-   e max(0, ns . w) with e and w as in shl_ssf_vpl_sh (the exact value that shl_ssf_irradiance
-   of the accumulated SH approaches as the band count grows). ns: any finite non-zero vector
+/* shl_ssf_vpl_irradiance: the irradiance at x with the shading normal shading_nrm due to the
+   same VPL, e max(0, shading_nrm . w) with e and w as in shl_ssf_vpl_sh (x, nrm, y, light_nrm:
+   the same; the exact value that shl_ssf_irradiance of the accumulated SH approaches as the
+   band count grows). shading_nrm: any finite non-zero vector
    (normalised; zero, NaN or infinite: +z). Degenerate inputs as shl_ssf_vpl_sh: 0. Cost: 3
    normalisations, ~30 flops. */
-SHLIGHT_INLINE float shl_ssf_vpl_irradiance(const float x[3], const float nx[3], const float ns[3],
-                                            const float y[3], const float ny[3], float flux,
-                                            float dmin);
+SHLIGHT_INLINE float shl_ssf_vpl_irradiance(const float x[3], const float nrm[3],
+                                            const float shading_nrm[3], const float y[3],
+                                            const float light_nrm[3], float flux, float dmin);
 
-/* shl_ssf_interleave: the VPL set of pixel (px, py) under n_int x m_int interleaved sampling of
-   nvpl VPLs (see >>ssf): out_range[0] = the first VPL s = (py mod m_int) n_int + (px mod
-   n_int), out_range[1] = the stride n_int m_int; the set is s, s + stride, ... below nvpl, and
+/* shl_ssf_interleave: the VPL set of pixel (px, py) under tile_x x tile_y interleaved sampling of
+   nvpl VPLs (see >>ssf): out_range[0] = the first VPL s = (py mod tile_y) tile_x + (px mod
+   tile_x), out_range[1] = the stride tile_x tile_y; the set is s, s + stride, ... below nvpl, and
    the return value is its size, ceil((nvpl - s) / stride) (0 when s >= nvpl). Every
-   n_int x m_int tile of pixels uses every VPL exactly once. px, py: any int (negative ones
-   continue the pattern periodically). n_int, m_int: clamped to [1, 256]; nvpl < 0: 0.
+   tile_x x tile_y tile of pixels uses every VPL exactly once. px, py: any int (negative ones
+   continue the pattern periodically). tile_x, tile_y: clamped to [1, 256]; nvpl < 0: 0.
    out_range: 2 ints. Cost: a few integer operations. */
 SHLIGHT_INLINE int shl_ssf_interleave(int px, int py, int tile_x, int tile_y, int nvpl,
                                       int *out_range);
 
 /* shl_ssf_weight: the discontinuity-aware filter weight ([SSF] sec. 2.3; IGI) between a
-   pixel's surface point p with geometric normal np and a neighbour's q with nq: 1 when both lie
-   on one smooth surface, else 0. The test: the normals (normalised) agree, np . nq >= min_cos,
-   and each point lies within max_dist of the other's tangent plane, |np . (q - p)| <= max_dist
-   and |nq . (p - q)| <= max_dist (symmetric in the two pixels; a plane distance, so a slanted
+   pixel's surface point p with geometric normal p_nrm and a neighbour's q with q_nrm: 1 when both lie
+   on one smooth surface, else 0. The test: the normals (normalised) agree, p_nrm . q_nrm >= min_cos,
+   and each point lies within max_dist of the other's tangent plane, |p_nrm . (q - p)| <= max_dist
+   and |q_nrm . (p - q)| <= max_dist (symmetric in the two pixels; a plane distance, so a slanted
    plane passes at any depth, a depth step or a silhouette does not). Give it the geometric
    (interpolated) normals, not the normal-mapped ones, and a max_dist that scales with the
    pixel's footprint, e.g. 0.02 times the eye distance. max_dist < 0 or NaN: 0 for every pair;
-   +infinity: no plane test. min_cos <= -1: no normal test; NaN: 0. p == q and np == nq: 1 for
+   +infinity: no plane test. min_cos <= -1: no normal test; NaN: 0. p == q and p_nrm == q_nrm: 1 for
    max_dist >= 0 and min_cos <= 1. Normals zero: +z; NaN or infinite: 0; NaN or infinite
    positions: 0. Cost: 2 normalisations, ~20 flops. */
 SHLIGHT_INLINE float shl_ssf_weight(const float p[3], const float p_nrm[3], const float q[3],
@@ -14043,18 +14043,19 @@ SHLIGHT_INLINE void shl_ssf_vpl_sh(int n, const float x[3], const float nrm[3], 
   }
 }
 
-SHLIGHT_INLINE float shl_ssf_vpl_irradiance(const float x[3], const float nx[3], const float ns[3],
-                                            const float y[3], const float ny[3], float flux,
-                                            float dmin) {
+SHLIGHT_INLINE float shl_ssf_vpl_irradiance(const float x[3], const float nrm[3],
+                                            const float shading_nrm[3], const float y[3],
+                                            const float light_nrm[3], float flux, float dmin) {
   shli_real g[8];
   shli_real gs[8];
   shli_real e;
   shli_real c;
-  e = shli_ssf_vpl(x, nx, y, ny, flux, dmin, g);
+  e = shli_ssf_vpl(x, nrm, y, light_nrm, flux, dmin, g);
   if (!(e > 0.0)) {
     return 0.0f;
   }
-  shli_cap_frame(SHLIGHT_REAL(ns[0]), SHLIGHT_REAL(ns[1]), SHLIGHT_REAL(ns[2]), 1.0, gs);
+  shli_cap_frame(SHLIGHT_REAL(shading_nrm[0]), SHLIGHT_REAL(shading_nrm[1]),
+                 SHLIGHT_REAL(shading_nrm[2]), 1.0, gs);
   c = gs[0] * g[0] + gs[1] * g[1] + gs[2] * g[2];
   if (!(c > 0.0)) {
     return 0.0f;

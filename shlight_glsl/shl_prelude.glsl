@@ -54,6 +54,7 @@
 #define SHLIGHT_POLYGON_MAX 8
 #define SHLIGHT_POLYGON_ANY 0
 #define shl_edge_method int
+#define shl_window_kind int
 #define SHLIGHT_CLIP_MAX 20
 #define SHLIGHT_EDGE_FAST 6
 #define SHLIGHT_EDGE_STOKES_ADAPT 105

@@ -185,6 +185,7 @@ precision highp int;
 #define SHLIGHT_POLYGON_MAX 8
 #define SHLIGHT_POLYGON_ANY 0
 #define shl_edge_method int
+#define shl_window_kind int
 #define SHLIGHT_CLIP_MAX 20
 #define SHLIGHT_EDGE_FAST 6
 #define SHLIGHT_EDGE_STOKES_ADAPT 105
@@ -8748,16 +8749,18 @@ void shl_ssf_vpl_sh(int n, vec3 x, vec3 nrm, vec3 y, vec3 light_nrm, float flux,
   }
 }
 
-float shl_ssf_vpl_irradiance(vec3 x, vec3 nx, vec3 ns, vec3 y, vec3 ny, float flux, float dmin) {
+float shl_ssf_vpl_irradiance(vec3 x, vec3 nrm, vec3 shading_nrm, vec3 y, vec3 light_nrm, float flux,
+                             float dmin) {
   shli_real g[8];
   shli_real gs[8];
   shli_real e;
   shli_real c;
-  e = shli_ssf_vpl(x, nx, y, ny, flux, dmin, g);
+  e = shli_ssf_vpl(x, nrm, y, light_nrm, flux, dmin, g);
   if (!(e > 0.0)) {
     return 0.0f;
   }
-  shli_cap_frame(SHLIGHT_REAL(ns[0]), SHLIGHT_REAL(ns[1]), SHLIGHT_REAL(ns[2]), 1.0, gs);
+  shli_cap_frame(SHLIGHT_REAL(shading_nrm[0]), SHLIGHT_REAL(shading_nrm[1]),
+                 SHLIGHT_REAL(shading_nrm[2]), 1.0, gs);
   c = gs[0] * g[0] + gs[1] * g[1] + gs[2] * g[2];
   if (!(c > 0.0)) {
     return 0.0f;

@@ -101,6 +101,8 @@ step glsl-one-include bash tools/glsl_one_check.sh
 step mirror-checker-selftest bash tools/tests_mirror/run.sh
 step glslang-450-330-300es bash tools/glsl_validate.sh
 step format-check $MAKE -s format-check
+# the header's size budgets (bench/budgets.sh: fails at 1.5x a budget)
+step budgets bash bench/budgets.sh --check
 step example $MAKE -s example
 # every code block of README.md and docs/*.md: C programs built with ASan/UBSan and run, GLSL
 # through glslang; the API index names every public function

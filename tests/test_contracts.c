@@ -14,8 +14,6 @@
  *  - per-coefficient kernels (shl_grid_trilinear / _taylor / _hermite on the full gathered
  *    corners) for the chunked shl_grid_sample: the same bits.
  * Each test is named after the finding it guards. */
-static int g_assert_hits;
-#define SHLIGHT_ASSERT(x) ((void)((x) || (g_assert_hits++, 0)))
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
 #include "tl.h"
@@ -444,7 +442,30 @@ static void test_stack_grid_sample_chunked_same_bits(void) {
   TL_CHECK(bad == 0, "%d (n, method) pairs differ from the one-call kernel", bad);
 }
 
+/* shl_result_string: every shl_result has its own string, starting with its enumerator's name;
+ * anything else is "unknown shl_result"; never NULL. */
+static void test_result_string(void) {
+  static const shl_result codes[] = {
+      SHLIGHT_OK,       SHLIGHT_EINVAL, SHLIGHT_ENOMEM,     SHLIGHT_ELENGTH,   SHLIGHT_EMAGIC,
+      SHLIGHT_EVERSION, SHLIGHT_EDIMS,  SHLIGHT_ENONFINITE, SHLIGHT_ECHECKSUM, SHLIGHT_ESTORAGE};
+  static const char *names[] = {
+      "SHLIGHT_OK:",        "SHLIGHT_EINVAL:",   "SHLIGHT_ENOMEM:", "SHLIGHT_ELENGTH:",
+      "SHLIGHT_EMAGIC:",    "SHLIGHT_EVERSION:", "SHLIGHT_EDIMS:",  "SHLIGHT_ENONFINITE:",
+      "SHLIGHT_ECHECKSUM:", "SHLIGHT_ESTORAGE:"};
+  int i, j, nc = (int)(sizeof codes / sizeof codes[0]);
+  for (i = 0; i < nc; ++i) {
+    const char *t = shl_result_string(codes[i]);
+    TL_CHECK(t != NULL && strncmp(t, names[i], strlen(names[i])) == 0, "code %d: %s", (int)codes[i],
+             t ? t : "(null)");
+    for (j = 0; j < i; ++j)
+      TL_CHECK(strcmp(t, shl_result_string(codes[j])) != 0, "codes %d and %d share a string", i, j);
+  }
+  TL_CHECK(strcmp(shl_result_string((shl_result)42), "unknown shl_result") == 0, "unknown code");
+  TL_CHECK(strcmp(shl_result_string((shl_result)-100), "unknown shl_result") == 0, "unknown code");
+}
+
 int main(void) {
+  TL_RUN(test_result_string);
   TL_RUN(test_lobe_product_float_axes_mu_le_1);
   TL_RUN(test_lobe_product_mu_closed_form);
   TL_RUN(test_lobe_product_degenerate_axes);
