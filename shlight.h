@@ -418,8 +418,8 @@ SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const
 /* ---- edge ---------------------------------------------------------------------------------- */
 /* shl_edge_integral: the edge integral of [AREA] eq. 3,
    F(Phi, c, delta, e) = sum over k = e, e - 2, ..., >= 0 of c^k integral from -delta to
-   Phi - delta of cos^k, for Phi in [0, pi], c in [0, 1], any delta, e = exponent >= 0 (rounded to the
-   nearest integer), by `method`: SHLIGHT_EDGE_EXACT (the O(n) recurrence, in shli_real) or one
+   Phi - delta of cos^k, for Phi in [0, pi], c in [0, 1], any delta, e = exponent >= 0 (rounded to
+   the nearest integer), by `method`: SHLIGHT_EDGE_EXACT (the O(n) recurrence, in shli_real) or one
    of the O(1) fits SHLIGHT_EDGE_LORENTZ / _LORENTZ_PEARSON / _ELLIPSOID (AUTO, QUADRATURE,
    FAST and any unknown method id mean EXACT here). The arc is split at +-pi/2 and reduced with I(p
    + pi) = (-1)^n I(p) (docs/math.md section 7.2); orders n <= 2 and c < 1.0e-3 always take the
@@ -491,27 +491,27 @@ SHLIGHT_INLINE float shl_lobe_to_sg(float exponent);
    finite n. */
 SHLIGHT_INLINE float shl_sg_to_lobe(float lambda);
 
-/* shl_lobe_product: the product of two cosine lobes max(0, u.r1)^exponent1 max(0, u.r2)^exponent2 approximated
-   by one lobe mu max(0, u.r_p)^e_p ([AREA] sec. 7.1): both mapped to SGs (shl_lobe_to_sg), the
-   exact SG product (axis r_p along lambda1 r1 + lambda2 r2, sharpness lambda_p = |lambda1 r1 +
-   lambda2 r2|), mapped back (shl_sg_to_lobe), mu the true product at r_p (clamped lobes,
-   docs/math.md 7.3). r1, r2: any finite non-zero vectors, normalised here in shli_real (so a
-   float-normalised axis is exact enough for any exponent); zero, NaN or infinite: +z. Writes
-   r_p (unit) and returns mu in [0, 1] (a product of two cosines <= 1 raised to exponent1, exponent2 >= 0),
-   e_p in out_exponent[0]. Accuracy is the paper's: good for aligned lobes, poor beyond ~60 degrees
-   (docs/accuracy.md); above n ~ 1e9 a lobe is narrower than the double rounding of the axes, and mu
-   (still in [0, 1]) loses accuracy. Opposite lobes with equal sharpness (no axis), exponent1 or exponent2
-   negative or NaN, or |lambda1 r1 + lambda2 r2| >= 1e30 (exponents ~1e30 and above, +inf):
-   mu = 0, e_p = 0, r_p = r1. */
+/* shl_lobe_product: the product of two cosine lobes max(0, u.r1)^exponent1 max(0, u.r2)^exponent2
+   approximated by one lobe mu max(0, u.r_p)^e_p ([AREA] sec. 7.1): both mapped to SGs
+   (shl_lobe_to_sg), the exact SG product (axis r_p along lambda1 r1 + lambda2 r2, sharpness
+   lambda_p = |lambda1 r1 + lambda2 r2|), mapped back (shl_sg_to_lobe), mu the true product at r_p
+   (clamped lobes, docs/math.md 7.3). r1, r2: any finite non-zero vectors, normalised here in
+   shli_real (so a float-normalised axis is exact enough for any exponent); zero, NaN or infinite:
+   +z. Writes r_p (unit) and returns mu in [0, 1] (a product of two cosines <= 1 raised to
+   exponent1, exponent2 >= 0), e_p in out_exponent[0]. Accuracy is the paper's: good for aligned
+   lobes, poor beyond ~60 degrees (docs/accuracy.md); above n ~ 1e9 a lobe is narrower than the
+   double rounding of the axes, and mu (still in [0, 1]) loses accuracy. Opposite lobes with equal
+   sharpness (no axis), exponent1 or exponent2 negative or NaN, or |lambda1 r1 + lambda2 r2| >= 1e30
+   (exponents ~1e30 and above, +inf): mu = 0, e_p = 0, r_p = r1. */
 SHLIGHT_INLINE float shl_lobe_product(const float r1[3], float exponent1, const float r2[3],
                                       float exponent2, float *out_axis, float *out_exponent);
 
 /* shl_polygon_phong_double_axis: double-axis Phong, (e+1)/(2 pi) times the integral over the
    polygon (clipped to the horizon) of max(0, u.r)^e max(0, u.nrm), by the lobe product of
-   shl_lobe_product (exponent2 = 1: the cosine) and one moment about its axis ([AREA] sec. 7.1). Inputs and
-   degenerate results as shl_polygon_phong. Exponents above 1e6: the product's limit, max(0, nrm.r)
-   times the single-axis value (relative error ~ 1 / e; the SG road loses its axis to float rounding
-   above ~1e12). Error: docs/area-lights.md (the product approximation dominates). */
+   shl_lobe_product (exponent2 = 1: the cosine) and one moment about its axis ([AREA] sec. 7.1).
+   Inputs and degenerate results as shl_polygon_phong. Exponents above 1e6: the product's limit,
+   max(0, nrm.r) times the single-axis value (relative error ~ 1 / e; the SG road loses its axis to
+   float rounding above ~1e12). Error: docs/area-lights.md (the product approximation dominates). */
 SHLIGHT_INLINE float shl_polygon_phong_double_axis(const float (*v)[3], int nv, const float nrm[3],
                                                    const float view[3], float exponent,
                                                    shl_edge_method method);
@@ -809,8 +809,8 @@ SHLIGHT_INLINE float shl_hvl_geometric(const float x[3], const float nrm[3], con
 SHLIGHT_INLINE float shl_hvl_emission(int n, const float *femit, const float dir[3]);
 
 /* shl_hvl_radiance: [HVL] eq. 20, L_j = power (F' . Y(-w_j)) G_j(-w_j): the radiance that
-   HVL j (centre y, normal light_nrm, radius r, emission femit: n^2 floats of SH in world axes) sends
-   to the shading point x with normal nrm; exact selects H as in shl_hvl_geometric. Degenerate
+   HVL j (centre y, normal light_nrm, radius r, emission femit: n^2 floats of SH in world axes)
+   sends to the shading point x with normal nrm; exact selects H as in shl_hvl_geometric. Degenerate
    inputs: those of shl_hvl_geometric give 0. Cost: shl_hvl_emission + shl_hvl_geometric. */
 SHLIGHT_INLINE float shl_hvl_radiance(int n, const float *femit, float power, const float x[3],
                                       const float nrm[3], const float y[3],
@@ -843,9 +843,9 @@ SHLIGHT_INLINE float shl_hvl_radius_neighbours(int count, const float p[3], floa
 /* shl_hvl_radius_fov: [HVL] eq. 24-26, r2 = d (g + g^3 / 3), g = sqrt(2) fov / sqrt(hvl_count),
    the Taylor form of d tan(g) (fov: the RSM's field of view in radians, hvl_count the number of
    HVLs, d the HVL's distance to the light). Within 1 % absolute of tan for g <= 0.5786, i.e.
-   fov / sqrt(hvl_count) <= 0.41 (correction E9 (docs/math.md section 12); the paper's 0.2 is wrong). hvl_count <
-   1: 1. d or fov NaN or < 0: 0. A result above FLT_MAX (d near FLT_MAX, or a huge fov) saturates to
-   FLT_MAX, never inf; +inf d or fov: FLT_MAX. Cost: 1 sqrt, 8 flops. */
+   fov / sqrt(hvl_count) <= 0.41 (correction E9 (docs/math.md section 12); the paper's 0.2 is
+   wrong). hvl_count < 1: 1. d or fov NaN or < 0: 0. A result above FLT_MAX (d near FLT_MAX, or a
+   huge fov) saturates to FLT_MAX, never inf; +inf d or fov: FLT_MAX. Cost: 1 sqrt, 8 flops. */
 SHLIGHT_INLINE float shl_hvl_radius_fov(float d, float fov, int hvl_count);
 
 /* shl_hvl_radius_fov_tan: eq. 25 itself, r2 = d tan(g), g as shl_hvl_radius_fov, with the own
@@ -950,14 +950,14 @@ typedef struct shl_merl {
 
 /* shl_ssf_vpl_sh: adds to io_sh (n * n floats, n bands) the SH of the incoming radiance at the
    receiver x due to one VPL at y with normal light_nrm and flux `flux`: io_sh[i] += e Y_i(w), with
-   w = (y - x) / |y - x| and e = flux max(0, light_nrm . -w) / (pi max(|y - x|^2, dmin^2)) (see >>ssf
-   for the constant). nrm: the receiver's geometric normal, any length: a VPL strictly below its
-   plane (nrm . w < 0) adds nothing (a normal-mapped shading normal must not see light through the
-   surface); nrm = 0 turns the test off. light_nrm: any finite non-zero vector (normalised; zero, NaN or
-   infinite: +z, the library's convention). dmin: the clamp distance (<= 0 or NaN: no clamp);
-   |y - x| is taken as at least 1e-18. Nothing is added when flux <= 0, NaN or infinite, x == y
-   (no direction), x or y NaN or infinite, or the VPL faces away (light_nrm . -w <= 0). n < 1: nothing;
-   n > SHLIGHT_MAX_BANDS: see shli_bands. Accuracy: e to a few float roundings, times Y of
+   w = (y - x) / |y - x| and e = flux max(0, light_nrm . -w) / (pi max(|y - x|^2, dmin^2)) (see
+   >>ssf for the constant). nrm: the receiver's geometric normal, any length: a VPL strictly below
+   its plane (nrm . w < 0) adds nothing (a normal-mapped shading normal must not see light through
+   the surface); nrm = 0 turns the test off. light_nrm: any finite non-zero vector (normalised;
+   zero, NaN or infinite: +z, the library's convention). dmin: the clamp distance (<= 0 or NaN: no
+   clamp); |y - x| is taken as at least 1e-18. Nothing is added when flux <= 0, NaN or infinite, x
+   == y (no direction), x or y NaN or infinite, or the VPL faces away (light_nrm . -w <= 0). n < 1:
+   nothing; n > SHLIGHT_MAX_BANDS: see shli_bands. Accuracy: e to a few float roundings, times Y of
    >>basis. Cost: 2 normalisations, one SH evaluation (a float[SHLIGHT_MAX_COEFFS] on the
    stack) and n^2 FMA. */
 SHLIGHT_INLINE void shl_ssf_vpl_sh(int n, const float x[3], const float nrm[3], const float y[3],
@@ -984,11 +984,11 @@ SHLIGHT_INLINE int shl_ssf_interleave(int px, int py, int tile_x, int tile_y, in
                                       int *out_range);
 
 /* shl_ssf_weight: the discontinuity-aware filter weight ([SSF] sec. 2.3; IGI) between a
-   pixel's surface point p with geometric normal p_nrm and a neighbour's q with q_nrm: 1 when both lie
-   on one smooth surface, else 0. The test: the normals (normalised) agree, p_nrm . q_nrm >= min_cos,
-   and each point lies within max_dist of the other's tangent plane, |p_nrm . (q - p)| <= max_dist
-   and |q_nrm . (p - q)| <= max_dist (symmetric in the two pixels; a plane distance, so a slanted
-   plane passes at any depth, a depth step or a silhouette does not). Give it the geometric
+   pixel's surface point p with geometric normal p_nrm and a neighbour's q with q_nrm: 1 when both
+   lie on one smooth surface, else 0. The test: the normals (normalised) agree, p_nrm . q_nrm >=
+   min_cos, and each point lies within max_dist of the other's tangent plane, |p_nrm . (q - p)| <=
+   max_dist and |q_nrm . (p - q)| <= max_dist (symmetric in the two pixels; a plane distance, so a
+   slanted plane passes at any depth, a depth step or a silhouette does not). Give it the geometric
    (interpolated) normals, not the normal-mapped ones, and a max_dist that scales with the
    pixel's footprint, e.g. 0.02 times the eye distance. max_dist < 0 or NaN: 0 for every pair;
    +infinity: no plane test. min_cos <= -1: no normal test; NaN: 0. p == q and p_nrm == q_nrm: 1 for

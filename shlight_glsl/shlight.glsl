@@ -6099,9 +6099,8 @@ float shl_sg_to_lobe(float lambda) {
   return SHLIGHT_FLOAT(-0.69314718055994531 / shli_log1pr(-0.69314718055994531 / l));
 }
 
-float shl_lobe_product(vec3 r1, float exponent1, vec3 r2, float exponent2,
-                       out float out_axis[SHLIGHT_MAX_COEFFS],
-                       out float out_exponent[SHLIGHT_MAX_COEFFS]) {
+float shl_lobe_product(vec3 r1, float exponent1, vec3 r2, float exponent2, out float out_axis[3],
+                       out float out_exponent[1]) {
   shli_real l1 = SHLIGHT_REAL(shl_lobe_to_sg(exponent1));
   shli_real l2 = SHLIGHT_REAL(shl_lobe_to_sg(exponent2));
   shli_real a[8];
