@@ -212,18 +212,6 @@ static void gd_brdf_free(gd_brdf *B) {
   memset(B, 0, sizeof *B);
 }
 
-/* orthonormal frame (t, b) about the unit normal z (Duff et al. 2017, "Building an orthonormal
-   basis, revisited"), in float, the same operations as the GLSL twin gd_frame */
-static void gd_frame(const float z[3], float t[3], float b[3]) {
-  float sg = z[2] >= 0.0f ? 1.0f : -1.0f, a = -1.0f / (sg + z[2]), c = z[0] * z[1] * a;
-  t[0] = 1.0f + sg * z[0] * z[0] * a;
-  t[1] = sg * c;
-  t[2] = -sg * z[0];
-  b[0] = c;
-  b[1] = sg + z[1] * z[1] * a;
-  b[2] = -z[1];
-}
-
 /* per pixel: R (world -> local, rows t, b, nrm) and F (nb bands); 0 when mat has no table */
 typedef struct {
   int has, nd; /* nd: coefficients of the product, min(n, nb)^2 */
@@ -239,7 +227,7 @@ static void gd_spec_setup(const gd_brdf *B, int n, int mat, const float x[3], co
   S->has = B->any && mat >= 0 && mat < B->nmats && B->off[mat] >= 0;
   if (!S->has) return;
   S->nd = m * m;
-  gd_frame(nz, t, b);
+  rd_frame(nz, t, b);
   for (k = 0; k < 3; k++)
     v[k] = eye[k] - x[k];
   vl = 1.0f / sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -342,8 +330,8 @@ static const char *const gd_perpixel_glsl =
     "  rd_out0 = vec4(rgb, 1.0);\n"
     "}\n";
 
-/* GLSL twin of gd_frame / gd_spec_setup / gd_spec_dot (the table in rd_buf3: material offsets,
-   then the tables; the lookup as shl_brdf_table_lookup does it, on min(n, nb) bands) */
+/* GLSL twin of rd_frame (gd_frame) / gd_spec_setup / gd_spec_dot (the table in rd_buf3: material
+   offsets, then the tables; the lookup as shl_brdf_table_lookup does it, on min(n, nb) bands) */
 static const char *const gd_spec_glsl =
     "#if RD_SPEC\n"
     "float gd_R[9];\n"
@@ -944,7 +932,7 @@ static void gd_spec_gt(const gd_lights *L, const shl_brdf_params *P, const float
   int j, k, c, a, e, np = 2 * q + 4;
   for (k = 0; k < 3; k++)
     nz[k] = nf[k];
-  gd_frame(nz, tf, bf);
+  rd_frame(nz, tf, bf);
   for (k = 0; k < 3; k++) {
     x[k] = (double)xf[k];
     z[k] = (double)nf[k];

@@ -308,7 +308,7 @@ static float *method_buffer(const light_set *ls, int method) {
    of the mirror angle, GGX D G2 / (4 cos_i cos_o), as the grid and area passes) and the
    measured f are tabulated once per material and channel by shl_brdf_table_build(_merl):
    HV_NT theta_o samples, isotropic, nb = run->brdf_bands bands, in the local frame (t, b, nrm)
-   of gd_frame. Per pixel the table is looked up at w_o (the eye direction in that frame):
+   of rd_frame. Per pixel the table is looked up at w_o (the eye direction in that frame):
      HVL:  F  = SH of f cos(theta_i); light j adds Phi_j shl_hvl_contribution(nb, lj, F, 0,
            R (y_j - x), r_j): the cap is taken in the local frame (R: rows t, b, nrm), so no
            SH rotation is needed; the cap's SH is exact at any band count, so the product has
@@ -445,24 +445,12 @@ static int hv_brdf_build(const rd_run *run, hv_brdf *B) {
   return 0;
 }
 
-/* orthonormal frame (t, b) about the unit normal z (Duff et al. 2017, "Building an orthonormal
-   basis, revisited"), in float, the same operations as the GLSL twin hv_frame */
-static void hv_frame(const float z[3], float t[3], float b[3]) {
-  float sg = z[2] >= 0.0f ? 1.0f : -1.0f, a = -1.0f / (sg + z[2]), c = z[0] * z[1] * a;
-  t[0] = 1.0f + sg * z[0] * z[0] * a;
-  t[1] = sg * c;
-  t[2] = -sg * z[0];
-  b[0] = c;
-  b[1] = sg + z[1] * z[1] * a;
-  b[2] = -z[1];
-}
-
 /* the pixel's local frame R (rows t, b, nrm) and w_o (the eye direction in it) */
 static void hv_local(const float x[3], const float nz[3], const float eye[3], float R[9],
                      float wo[3]) {
   float t[3], b[3], v[3], vl;
   int k;
-  hv_frame(nz, t, b);
+  rd_frame(nz, t, b);
   for (k = 0; k < 3; k++)
     v[k] = eye[k] - x[k];
   vl = 1.0f / sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -564,8 +552,8 @@ static void shade_cpu(const rd_run *run, const hv_brdf *B, int method, const flo
 }
 
 /* ---- GL shading ----------------------------------------------------------------------------- */
-/* GLSL twin of hv_frame, hv_local and the table lookup (shl_brdf_table_lookup's sums, done
-   on the table in rd_buf2: HV_HDR floats per material, then the tables) */
+/* GLSL twin of rd_frame (hv_frame), hv_local and the table lookup (shl_brdf_table_lookup's sums,
+   done on the table in rd_buf2: HV_HDR floats per material, then the tables) */
 static const char *const gl_spec =
     "#if HVL_SPEC\n"
     "float hv_F[3][SHLIGHT_MAX_COEFFS];\n"

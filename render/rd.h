@@ -144,6 +144,8 @@ rd_metrics rd_compare(const rd_image *test, const rd_image *ref, const int *mask
 /* RMSE of a against ref over the surface pixels of material mat (-1: every surface pixel),
  * relative to the RMS of ref there; 0 when ref is zero there. */
 double rd_relrmse(const rd_gbuf *gb, const rd_image *a, const rd_image *ref, int mat);
+/* orthonormal frame (t, b) about the unit normal z (Duff et al. 2017), as the shaders do it */
+void rd_frame(const float z[3], float t[3], float b[3]);
 
 /* Terminal progress bar on stderr (only when stderr is a terminal, or SHLIGHT_PROGRESS=1). */
 void rd_progress(const char *label, long done, long total);

@@ -442,3 +442,15 @@ void rd_run_free(rd_run *run) {
   run->res = NULL;
   run->nres = run->capres = 0;
 }
+
+/* orthonormal frame (t, b) about the unit normal z (Duff et al. 2017, "Building an orthonormal
+   basis, revisited"), in float, the same operations as the GLSL twins in the passes' shaders */
+void rd_frame(const float z[3], float t[3], float b[3]) {
+  float sg = z[2] >= 0.0f ? 1.0f : -1.0f, a = -1.0f / (sg + z[2]), c = z[0] * z[1] * a;
+  t[0] = 1.0f + sg * z[0] * z[0] * a;
+  t[1] = sg * c;
+  t[2] = -sg * z[0];
+  b[0] = c;
+  b[1] = sg + z[1] * z[1] * a;
+  b[2] = -z[1];
+}
