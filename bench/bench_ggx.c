@@ -5,8 +5,13 @@
  * light gives >= 5 % of the directional albedo ("visible"), error / albedo over all quads; then
  * pooled by configuration (straddling the horizon, grazing view >= 60 deg); ns per light
  * (per-thread CPU time, median of 15 samples over the 1,750 quads). Writes bench/out/ggx.md.
- * `--count-only K` runs K passes of the 1,750 calls of the wrapper bw_ggx for callgrind
- * (bench/callgrind_ggx.sh). Build and run: make bench-ggx. */
+ * `--count-only K [R]` runs K passes of the 1,750 calls of the wrapper bw_ggx for callgrind
+ * (bench/callgrind_ggx.sh), or of the 250 of roughness index R only. Also writes
+ * bench/out/ggx_speed.md: the speed-against-error table per roughness (every GGX road: the
+ * instructions per quad of each roughness from bench/out/ggx_instr_rough.txt, written by
+ * callgrind_ggx.sh; ns per quad of each roughness timed here; LTC's row measured externally),
+ * which bench/readme_tables.py copies into docs/area-lights.md and bench/plot_ggx.py plots.
+ * Build and run: make bench-ggx. */
 #define _POSIX_C_SOURCE 200809L
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
@@ -23,6 +28,13 @@
 
 /* peers-arealight.md sec. 2.2, LTC reference (clipped quad, 64x64 tables): rel. error on visible
    configurations median / p95 / max, err / albedo median / p95 / max */
+/* LTC measured externally (an independent run of the reference clipped-quad shader and 64x64
+   tables on a 1,400-quad harness of the same sampler): x86 instructions and ns per quad, median
+   relative error (visible) and max error / albedo per roughness */
+static const double LTC_X_INSTR = 463, LTC_X_NS = 58;
+static const double LTC_X[NR][2] = {{8.3e-5, 8.9e-2}, {1.1e-3, 9.7e-3}, {1.4e-2, 4.3e-2},
+                                    {5.0e-2, 0.14},   {0.14, 0.20},     {0.12, 0.10},
+                                    {3.1e-2, 7.1e-3}};
 static const double LTC[NR][6] = {
     {7.3e-5, 0.019, 0.24, 1.0e-5, 1.9e-3, 0.11}, {1.0e-3, 0.020, 0.20, 8.0e-5, 2.7e-3, 0.028},
     {3.8e-3, 0.19, 1.3, 3.8e-4, 0.021, 0.18},    {0.016, 0.45, 0.68, 9.7e-4, 0.030, 0.20},
@@ -47,11 +59,73 @@ __attribute__((noinline)) float bw_ggx(const cfg *c) {
   return shl_polygon_ggx((const float(*)[3])c->q, 4, NZ, c->view, c->alpha);
 }
 
+/* ns per quad of roughness index ir: median of 15 samples of >= 2 ms over its NPER quads */
+static double ns_rough(int ir) {
+  double ns[15];
+  int s, i, k, reps = 1;
+  for (;;) {
+    double t0 = now();
+    float acc = 0;
+    for (k = 0; k < reps; ++k)
+      for (i = ir * NPER; i < (ir + 1) * NPER; ++i)
+        acc += bw_ggx(&C[i]);
+    sink = acc;
+    if (now() - t0 > 2e-3) break;
+    reps *= 2;
+  }
+  for (s = 0; s < 15; ++s) {
+    double t0 = now();
+    float acc = 0;
+    for (k = 0; k < reps; ++k)
+      for (i = ir * NPER; i < (ir + 1) * NPER; ++i)
+        acc += bw_ggx(&C[i]);
+    sink = acc;
+    ns[s] = (now() - t0) * 1e9 / ((double)reps * NPER);
+  }
+  return pct(ns, 15, 0.5);
+}
+
+/* bench/out/ggx_speed.md: per roughness, every GGX road's cost and error side by side */
+static void speed_table(void) {
+  double instr[NR];
+  int ir, i, have = 1;
+  FILE *f = fopen("bench/out/ggx_instr_rough.txt", "r"), *o;
+  for (ir = 0; ir < NR; ++ir)
+    if (!f || fscanf(f, "%lf", &instr[ir]) != 1) have = 0;
+  if (f) fclose(f);
+  o = fopen("bench/out/ggx_speed.md", "w");
+  if (!o) return;
+  fprintf(o, "| roughness | road | x86 instructions per quad | ns per quad | rel. err vis. median "
+             "/ p95 / max | max err / albedo |\n|---|---|---|---|---|---|\n");
+  for (ir = 0; ir < NR; ++ir) {
+    static double rel[NPER];
+    double emax = 0, ns = ns_rough(ir);
+    int nv = 0;
+    char ins[32];
+    for (i = ir * NPER; i < (ir + 1) * NPER; ++i) {
+      double got = shl_polygon_ggx((const float(*)[3])C[i].q, 4, NZ, C[i].view, C[i].alpha);
+      double d = fabs(got - C[i].gt);
+      if (d / C[i].alb > emax) emax = d / C[i].alb;
+      if (C[i].gt >= 0.05 * C[i].alb) rel[nv++] = d / C[i].gt;
+    }
+    if (have)
+      snprintf(ins, sizeof ins, "%.0f", instr[ir]);
+    else
+      snprintf(ins, sizeof ins, "-");
+    fprintf(o, "| %.2f | shl_polygon_ggx | %s | %.0f | %.1e / %.1e / %.1e | %.1e |\n", ROUGH[ir],
+            ins, ns, pct(rel, nv, 0.5), pct(rel, nv, 0.95), pct(rel, nv, 1), emax);
+    fprintf(o, "| %.2f | LTC (measured externally) | %.0f | %.0f | %.1e / - / - | %.1e |\n",
+            ROUGH[ir], LTC_X_INSTR, LTC_X_NS, LTC_X[ir][0], LTC_X[ir][1]);
+  }
+  fclose(o);
+}
+
 int main(int argc, char **argv) {
   ggxc_rng rg;
-  int i, ir, k, K = 0;
+  int i, ir, k, K = 0, R = -1;
   FILE *o;
-  if (argc == 3 && strcmp(argv[1], "--count-only") == 0) K = atoi(argv[2]);
+  if (argc >= 3 && strcmp(argv[1], "--count-only") == 0) K = atoi(argv[2]);
+  if (argc == 4 && K > 0) R = atoi(argv[3]);
   rg.s = 2017u;
   for (i = 0; i < NCFG; ++i) {
     cfg *c = &C[i];
@@ -65,7 +139,7 @@ int main(int argc, char **argv) {
   if (K > 0) {
     float s = 0;
     for (k = 0; k < K; ++k)
-      for (i = 0; i < NCFG; ++i)
+      for (i = R < 0 ? 0 : R * NPER; i < (R < 0 ? NCFG : (R + 1) * NPER); ++i)
         s += bw_ggx(&C[i]);
     sink = s;
     return 0;
@@ -163,5 +237,6 @@ int main(int argc, char **argv) {
             pct(ns, 15, 0.5), pct(ny, 15, 0.5), pct(ns, 15, 0.5) / pct(ny, 15, 0.5));
   }
   if (o != stdout) fclose(o);
+  speed_table();
   return 0;
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Rewrites the benchmark tables of docs/speed.md and docs/accuracy.md (between
+"""Rewrites the benchmark tables of docs/speed.md, docs/accuracy.md and docs/area-lights.md (between
 <!-- bench:NAME --> markers) from what `make bench` and the `make bench-*` targets leave in
 bench/out/: `speed` and `accuracy` from basis.csv, `light` from light.md, `grid` from grid.md;
 any other marker NAME takes bench/out/NAME.md as written. A marker whose input is missing is
@@ -70,7 +70,7 @@ def main():
     except (IOError, OSError, KeyError) as e:  # no basis / light / grid run: other markers only
         print('bench/out incomplete (%s): only the bench/out/NAME.md markers are rewritten' % e)
         computed = {}
-    for doc in ('docs/speed.md', 'docs/accuracy.md'):
+    for doc in ('docs/speed.md', 'docs/accuracy.md', 'docs/area-lights.md'):
         path = os.path.join(ROOT, doc)
         text = open(path).read()
         for name in re.findall(r'<!-- bench:([a-z_0-9]+) -->', text):
