@@ -6486,14 +6486,16 @@ shli_real shli_ggx_w(shli_real lx, shli_real ly, shli_real lz, shli_real vx, shl
   return hv / ((1.0 + lamv + laml) * nv * nh);
 }
 
-void shli_ggx_side(shli_real lo, shli_real hi, shli_real t0, shli_real wd, shli_real ax,
+void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli_real wd, shli_real ax,
                    shli_real ay, shli_real az, shli_real bx, shli_real by, shli_real bz,
                    shli_real vx, shli_real vy, shli_real vz, shli_real nx, shli_real ny,
                    shli_real nz, shli_real a2, shli_real gx, shli_real gy, shli_real gz,
                    shli_real i1, shli_real al, int ndf, inout shli_real io_am[2]) {
   shli_real xs[5];
   shli_real ws[5];
-  shli_real hl = 0.5 * (hi - lo);
+  shli_real lo;
+  shli_real hi;
+  shli_real hl;
   shli_real gn = gx * nx + gy * ny + gz * nz;
   shli_real tx = gx - gn * nx;
   shli_real ty = gy - gn * ny;
@@ -6523,6 +6525,8 @@ void shli_ggx_side(shli_real lo, shli_real hi, shli_real t0, shli_real wd, shli_
   shli_real u;
   shli_real e;
   int j;
+  int k;
+  int nd;
   xs[0] = -0.90617984593866399;
   xs[1] = -0.53846931010568309;
   xs[2] = 0.0;
@@ -6533,10 +6537,24 @@ void shli_ggx_side(shli_real lo, shli_real hi, shli_real t0, shli_real wd, shli_
   ws[2] = 0.56888888888888889;
   ws[3] = 0.47862867049936647;
   ws[4] = 0.23692688505618909;
-  if (!(hi > lo)) {
-    return;
-  }
-  for (j = 0; j < 5; ++j) {
+  for (nd = 0; nd < 10; ++nd) {
+    k = nd / 5;
+    j = nd - 5 * k;
+    lo = sa;
+    hi = sb;
+    if (sa < 0.0 && sb > 0.0) {
+      if (k == 0) {
+        hi = 0.0;
+      } else {
+        lo = 0.0;
+      }
+    } else if (k == 1) {
+      hi = sa;
+    }
+    if (!(hi > lo)) {
+      continue;
+    }
+    hl = 0.5 * (hi - lo);
     s = lo + hl * (xs[j] + 1.0);
     es = SHLIGHT_EXPR(s);
     jw = ws[j] * hl * wd * 0.5 * (es + 1.0 / es);
@@ -6720,6 +6738,9 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   shli_real t2x;
   shli_real t2y;
   shli_real t2z;
+  shli_real ax;
+  shli_real ay;
+  shli_real az;
   shli_real ex;
   shli_real ey;
   shli_real ez;
@@ -6752,6 +6773,10 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   shli_real res = 0.0;
   shli_real w;
   shli_real sp;
+  shli_real ori = 1.0;
+  shli_real ox = 0.0;
+  shli_real oy = 0.0;
+  shli_real oz = 0.0;
   int inside = 1;
   int np;
   int nc;
@@ -6792,22 +6817,17 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   if (nc == 0) {
     return 0.0f;
   }
-  if (nc < 0) { /* reverse to the positive orientation */
+  /* a negatively oriented polygon: every edge and remainder term below changes sign with the
+     orientation (the edges' integrands with l', the remainder's with det), so the sum is taken
+     as it comes and multiplied by ori at the end (no reversal of the arrays: GLSL's indexed
+     swaps cost more to compile than the rest of the body) */
+  if (nc < 0) {
     nc = -nc;
-    for (i = 0; i < nc / 2; ++i) {
-      j = nc - 1 - i;
-      q = px[i];
-      px[i] = px[j];
-      px[j] = q;
-      q = py[i];
-      py[i] = py[j];
-      py[j] = q;
-      q = pz[i];
-      pz[i] = pz[j];
-      pz[j] = q;
-    }
+    ori = -1.0;
   }
-  /* the mirror direction r; the point l* of the polygon closest to it */
+  /* the mirror direction r; in one loop over the edges (one loop copy in GLSL): whether r lies
+     inside the polygon, the point l* of the polygon's vertices and arcs closest to r (used when
+     it does not) and the sum of the vertices (the centroid's direction, below) */
   rx = 2.0 * nv2 * nx - vx;
   ry = 2.0 * nv2 * ny - vy;
   rz = 2.0 * nv2 * nz - vz;
@@ -6819,57 +6839,58 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
     if (j == nc) {
       j = 0;
     }
-    ex = py[i] * pz[j] - pz[i] * py[j];
-    ey = pz[i] * px[j] - px[i] * pz[j];
-    ez = px[i] * py[j] - py[i] * px[j];
-    if (ex * rx + ey * ry + ez * rz < 0.0) {
+    ax = px[i];
+    ay = py[i];
+    az = pz[i];
+    bx = px[j];
+    by = py[j];
+    bz = pz[j];
+    d = ax * rx + ay * ry + az * rz;
+    if (d > best) {
+      best = d;
+      sx = ax;
+      sy = ay;
+      sz = az;
+    }
+    ox = ox + ax;
+    oy = oy + ay;
+    oz = oz + az;
+    ex = ay * bz - az * by;
+    ey = az * bx - ax * bz;
+    ez = ax * by - ay * bx;
+    if (ori * (ex * rx + ey * ry + ez * rz) < 0.0) {
       inside = 0;
     }
-  }
-  if (inside == 0) {
-    for (i = 0; i < nc; ++i) {
-      j = i + 1;
-      if (j == nc) {
-        j = 0;
-      }
-      d = px[i] * rx + py[i] * ry + pz[i] * rz;
-      if (d > best) {
-        best = d;
-        sx = px[i];
-        sy = py[i];
-        sz = pz[i];
-      }
-      ex = py[i] * pz[j] - pz[i] * py[j];
-      ey = pz[i] * px[j] - px[i] * pz[j];
-      ez = px[i] * py[j] - py[i] * px[j];
-      se = ex * ex + ey * ey + ez * ez;
-      if (se > 1.0e-30) {
-        d = (ex * rx + ey * ry + ez * rz) / se;
-        qx = rx - d * ex;
-        qy = ry - d * ey;
-        qz = rz - d * ez;
-        q = SHLIGHT_SQRTR(qx * qx + qy * qy + qz * qz);
-        if (q > 1.0e-15) {
-          qx = qx / q;
-          qy = qy / q;
-          qz = qz / q;
-          /* inside the arc: (a x p).e >= 0 and (p x b).e >= 0 */
-          d = qx * rx + qy * ry + qz * rz;
-          if (d > best &&
-              ex * (py[i] * qz - pz[i] * qy) + ey * (pz[i] * qx - px[i] * qz) +
-                      ez * (px[i] * qy - py[i] * qx) >=
-                  0.0 &&
-              ex * (qy * pz[j] - qz * py[j]) + ey * (qz * px[j] - qx * pz[j]) +
-                      ez * (qx * py[j] - qy * px[j]) >=
-                  0.0) {
-            best = d;
-            sx = qx;
-            sy = qy;
-            sz = qz;
-          }
+    se = ex * ex + ey * ey + ez * ez;
+    if (se > 1.0e-30) {
+      d = (ex * rx + ey * ry + ez * rz) / se;
+      qx = rx - d * ex;
+      qy = ry - d * ey;
+      qz = rz - d * ez;
+      q = SHLIGHT_SQRTR(qx * qx + qy * qy + qz * qz);
+      if (q > 1.0e-15) {
+        qx = qx / q;
+        qy = qy / q;
+        qz = qz / q;
+        /* inside the arc: (a x p).e >= 0 and (p x b).e >= 0 */
+        d = qx * rx + qy * ry + qz * rz;
+        if (d > best &&
+            ex * (ay * qz - az * qy) + ey * (az * qx - ax * qz) + ez * (ax * qy - ay * qx) >=
+                0.0 &&
+            ex * (qy * bz - qz * by) + ey * (qz * bx - qx * bz) + ez * (qx * by - qy * bx) >=
+                0.0) {
+          best = d;
+          sx = qx;
+          sy = qy;
+          sz = qz;
         }
       }
     }
+  }
+  if (inside != 0) {
+    sx = rx;
+    sy = ry;
+    sz = rz;
   }
   /* h* and w*, and the gradient g of w(h) at h* by central differences in the frame of Duff et
      al. (2017) about h* */
@@ -6929,28 +6950,35 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
     if (j == nc) {
       j = 0;
     }
-    ex = py[i] * pz[j] - pz[i] * py[j];
-    ey = pz[i] * px[j] - px[i] * pz[j];
-    ez = px[i] * py[j] - py[i] * px[j];
+    ax = px[i];
+    ay = py[i];
+    az = pz[i];
+    bx = px[j];
+    by = py[j];
+    bz = pz[j];
+    ex = ay * bz - az * by;
+    ey = az * bx - ax * bz;
+    ez = ax * by - ay * bx;
     se = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
     if (se > 1.0e-30) {
-      phi = shli_atan2r(se, px[i] * px[j] + py[i] * py[j] + pz[i] * pz[j]);
+      phi = shli_atan2r(se, ax * bx + ay * by + az * bz);
       ex = ex / se;
       ey = ey / se;
       ez = ez / se;
-      bx = ey * pz[i] - ez * py[i];
-      by = ez * px[i] - ex * pz[i];
-      bz = ex * py[i] - ey * px[i];
-      t0 = shli_atan2r(rx * bx + ry * by + rz * bz, rx * px[i] + ry * py[i] + rz * pz[i]);
+      /* b: the unit tangent of the edge's great circle at a */
+      bx = ey * az - ez * ay;
+      by = ez * ax - ex * az;
+      bz = ex * ay - ey * ax;
+      t0 = shli_atan2r(rx * bx + ry * by + rz * bz, rx * ax + ry * ay + rz * az);
       for (k = 0; k < 2; ++k) {
         ct = SHLIGHT_COSR(t0);
         st = SHLIGHT_SINR(t0);
-        qx = ct * px[i] + st * bx + vx;
-        qy = ct * py[i] + st * by + vy;
-        qz = ct * pz[i] + st * bz + vz;
-        dx = ct * bx - st * px[i];
-        dy = ct * by - st * py[i];
-        dz = ct * bz - st * pz[i];
+        qx = ct * ax + st * bx + vx;
+        qy = ct * ay + st * by + vy;
+        qz = ct * az + st * bz + vz;
+        dx = ct * bx - st * ax;
+        dy = ct * by - st * ay;
+        dz = ct * bz - st * az;
         /* Dn = Q.M.Q, M = 1 - c n n; Dn'/2 = Q.M.Q', Dn''/2 = Q'.M.Q' - (Q - v).M.Q */
         d = qx * nx + qy * ny + qz * nz;
         q = dx * nx + dy * ny + dz * nz;
@@ -6973,22 +7001,8 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
            SHLIGHT_LOGR(SHLIGHT_ABSR(sa) + SHLIGHT_SQRTR(sa * sa + 1.0));
       sb = SHLIGHT_REAL(SHLIGHT_SIGN1(sb)) *
            SHLIGHT_LOGR(SHLIGHT_ABSR(sb) + SHLIGHT_SQRTR(sb * sb + 1.0));
-      /* both sides of the peak when it lies inside the arc */
-      for (k = 0; k < 2; ++k) {
-        f1 = sa;
-        f2 = sb;
-        if (sa < 0.0 && sb > 0.0) {
-          f1 = 0.0;
-          if (k == 0) {
-            f1 = sa;
-            f2 = 0.0;
-          }
-        } else if (k == 1) {
-          f2 = sa;
-        }
-        shli_ggx_side(f1, f2, t0, wd, px[i], py[i], pz[i], bx, by, bz, vx, vy, vz, nx, ny, nz, a2,
-                      gx, gy, gz, i1, al, ndf, am);
-      }
+      shli_ggx_side(sa, sb, t0, wd, ax, ay, az, bx, by, bz, vx, vy, vz, nx, ny, nz, a2, gx, gy, gz,
+                    i1, al, ndf, am);
     }
   }
   aa = am[0] * 0.15915494309189534;
@@ -6996,14 +7010,9 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
      deg (cos < 0.6; Beckmann: 26 deg, cos < 0.9, halving its worst error / albedo on
      bench_beckmann's sampler from 0.11 to 0.049) split 1 -> 4 at its edge midpoints, the 7-point
      degree-5 rule (Dunavant) on each piece */
-  sx = 0.0;
-  sy = 0.0;
-  sz = 0.0;
-  for (i = 0; i < nc; ++i) {
-    sx = sx + px[i];
-    sy = sy + py[i];
-    sz = sz + pz[i];
-  }
+  sx = ox;
+  sy = oy;
+  sz = oz;
   q = SHLIGHT_SQRTR(sx * sx + sy * sy + sz * sz);
   if (!(q > 1.0e-6)) { /* no usable centroid direction: the fan from the first vertex */
     sx = px[0];
@@ -7023,18 +7032,24 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
     if (j == nc) {
       j = 0;
     }
-    tr[0] = sx + px[i];
-    ts[0] = sy + py[i];
-    tw[0] = sz + pz[i];
-    tr[1] = px[i] + px[j];
-    ts[1] = py[i] + py[j];
-    tw[1] = pz[i] + pz[j];
-    tr[2] = px[j] + sx;
-    ts[2] = py[j] + sy;
-    tw[2] = pz[j] + sz;
+    ax = px[i];
+    ay = py[i];
+    az = pz[i];
+    bx = px[j];
+    by = py[j];
+    bz = pz[j];
+    tr[0] = sx + ax;
+    ts[0] = sy + ay;
+    tw[0] = sz + az;
+    tr[1] = ax + bx;
+    ts[1] = ay + by;
+    tw[1] = az + bz;
+    tr[2] = bx + sx;
+    ts[2] = by + sy;
+    tw[2] = bz + sz;
     np = 1;
-    if (sx * px[i] + sy * py[i] + sz * pz[i] < sp || sx * px[j] + sy * py[j] + sz * pz[j] < sp ||
-        px[i] * px[j] + py[i] * py[j] + pz[i] * pz[j] < sp) {
+    if (sx * ax + sy * ay + sz * az < sp || sx * bx + sy * by + sz * bz < sp ||
+        ax * bx + ay * by + az * bz < sp) {
       np = 4;
     }
     for (k = 0; k < np; ++k) {
@@ -7059,9 +7074,9 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
         tr[3] = tr[0];
         ts[3] = ts[0];
         tw[3] = tw[0];
-        tr[4] = px[i];
-        ts[4] = py[i];
-        tw[4] = pz[i];
+        tr[4] = ax;
+        ts[4] = ay;
+        tw[4] = az;
         tr[5] = tr[1];
         ts[5] = ts[1];
         tw[5] = tw[1];
@@ -7069,23 +7084,23 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
         tr[3] = tr[2];
         ts[3] = ts[2];
         tw[3] = tw[2];
-        tr[5] = px[j];
-        ts[5] = py[j];
-        tw[5] = pz[j];
+        tr[5] = bx;
+        ts[5] = by;
+        tw[5] = bz;
       }
       if (np == 1) {
-        tr[4] = px[i];
-        ts[4] = py[i];
-        tw[4] = pz[i];
-        tr[5] = px[j];
-        ts[5] = py[j];
-        tw[5] = pz[j];
+        tr[4] = ax;
+        ts[4] = ay;
+        tw[4] = az;
+        tr[5] = bx;
+        ts[5] = by;
+        tw[5] = bz;
       }
       res = res + shli_ggx_tri(tr[3], ts[3], tw[3], tr[4], ts[4], tw[4], tr[5], ts[5], tw[5], vx,
                                vy, vz, nx, ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf);
     }
   }
-  q = aa * ws - am[1] * a2 * 0.31830988618379067 - (gx * hx + gy * hy + gz * hz) * aa + res;
+  q = ori * (aa * ws - am[1] * a2 * 0.31830988618379067 - (gx * hx + gy * hy + gz * hz) * aa + res);
   return SHLIGHT_FLOAT(SHLIGHT_MAXR(q, 0.0));
 }
 
