@@ -104,6 +104,30 @@ static const char *MAIN_HERMITE =
   "  out_float(0, " call ");\n"                                                                    \
   "}\n"
 
+/* POLY_MAIN with the repeat count of the run table (its first vertex moved per repeat) */
+#define POLY_RUN_MAIN(call)                                                                        \
+  "void glrun_main(int item) {\n"                                                                  \
+  "  vec4 a = in_vec4(0);\n"                                                                       \
+  "  vec3 v[SHLIGHT_POLYGON_MAX];\n"                                                               \
+  "  for (int i = 0; i < SHLIGHT_POLYGON_MAX; ++i) v[i] = vec3(0.0);\n"                            \
+  "  v[1] = vec3(0.5, -0.5, 1.0);\n"                                                               \
+  "  v[2] = vec3(0.5, 0.5, 1.0);\n"                                                                \
+  "  v[3] = vec3(-0.5, 0.5, 1.0);\n"                                                               \
+  "  vec3 nrm = vec3(0.0, 0.0, 1.0);\n"                                                            \
+  "  vec3 view = normalize(vec3(0.3, 0.0, 1.0));\n"                                                \
+  "  float acc = 0.0;\n"                                                                           \
+  "#ifdef GLSL_BUDGET_REPS\n"                                                                      \
+  "  int reps = int(a.w);\n"                                                                       \
+  "#else\n"                                                                                        \
+  "  const int reps = 1;\n"                                                                        \
+  "#endif\n"                                                                                       \
+  "  for (int r = 0; r < reps; ++r) {\n"                                                           \
+  "    v[0] = vec3(-0.5, -0.5, 1.0) + 0.1 * a.xyz + vec3(0.0, 0.0, 0.01 * float(r));\n"            \
+  "    acc += " call ";\n"                                                                         \
+  "  }\n"                                                                                          \
+  "  out_float(0, acc);\n"                                                                         \
+  "}\n"
+
 struct kcase {
   const char *name;
   int bands;
@@ -128,9 +152,9 @@ static const struct kcase CASES[] = {
     {"shl_polygon_phong (one call site)", 4, "basis gradient zonal light edge",
      POLY_MAIN("shl_polygon_phong(v, 4, nrm, view, 20.0, SHLIGHT_EDGE_AUTO)"), 2.0, 0, 0},
     {"shl_polygon_ggx (one call site)", 4, "basis gradient zonal light edge",
-     POLY_MAIN("shl_polygon_ggx(v, 4, nrm, view, 0.3)"), 2.0, 0, 0},
+     POLY_RUN_MAIN("shl_polygon_ggx(v, 4, nrm, view, 0.3)"), 2.0, 1, 1},
     {"shl_polygon_beckmann (one call site)", 4, "basis gradient zonal light edge",
-     POLY_MAIN("shl_polygon_beckmann(v, 4, nrm, view, 0.3)"), 2.0, 0, 0},
+     POLY_RUN_MAIN("shl_polygon_beckmann(v, 4, nrm, view, 0.3)"), 2.0, 1, 1},
     {"shl_polygon_beckmann_subedges (one call site)", 4, "basis gradient zonal light edge",
      POLY_MAIN("shl_polygon_beckmann_subedges(v, 4, nrm, view, 0.3, 4)"), 2.0, 0, 1},
 };

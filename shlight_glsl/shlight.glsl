@@ -6875,10 +6875,8 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
         /* inside the arc: (a x p).e >= 0 and (p x b).e >= 0 */
         d = qx * rx + qy * ry + qz * rz;
         if (d > best &&
-            ex * (ay * qz - az * qy) + ey * (az * qx - ax * qz) + ez * (ax * qy - ay * qx) >=
-                0.0 &&
-            ex * (qy * bz - qz * by) + ey * (qz * bx - qx * bz) + ez * (qx * by - qy * bx) >=
-                0.0) {
+            ex * (ay * qz - az * qy) + ey * (az * qx - ax * qz) + ez * (ax * qy - ay * qx) >= 0.0 &&
+            ex * (qy * bz - qz * by) + ey * (qz * bx - qx * bz) + ez * (qx * by - qy * bx) >= 0.0) {
           best = d;
           sx = qx;
           sy = qy;
