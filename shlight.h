@@ -10532,51 +10532,78 @@ SHLIGHT_INLINE shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real 
   shli_real z1 = (1.5707963267948966 - lo) / beta;
   shli_real s0 = SHLIGHT_LOGR(z0 + SHLIGHT_SQRTR(z0 * z0 + 1.0));
   shli_real s1 = SHLIGHT_LOGR(z1 + SHLIGHT_SQRTR(z1 * z1 + 1.0));
-  shli_real r = 0.5 * (s1 - s0);
-  shli_real cur;
-  shli_real prev;
-  shli_real h;
+  shli_real h = s1 - s0;
+  shli_real hg = h;
+  shli_real cur = 0.0;
+  shli_real prev = 0.0;
+  shli_real pm;
+  shli_real pr;
   int np = 1;
-  int l;
-  int k;
-  if (!(r > 0.0)) {
+  int l = 0;
+  int k = 0;
+  if (!(h > 0.0)) {
     return 0.0;
   }
-  cur = shli_stokes_gl5(0.5 * (s0 + s1), r, beta, c2, p, q, kind);
-  for (l = 1; l <= lev; ++l) {
-    prev = cur;
-    np = 2 * np;
-    h = (s1 - s0) / SHLIGHT_ITOR(np);
-    cur = 0.0;
-    for (k = 1; k < np; ++k) {
-      cur = cur + shli_stokes_gl5(s0 + (SHLIGHT_ITOR(k) + 0.5) * h, 0.5 * h, beta, c2, p, q, kind);
+  /* one loop over the panels of every level and one call of the 5-node rule (GLSL inlines
+     each call site: one copy instead of four per half-arc). Level l has np = 2^l panels of
+     width h: k = 0 .. np - 2 the panels 1 .. np - 1; the one at s0 (theta = pi/2, where h
+     has the branch point |cos|^(e+1) for non-integer e) cut geometrically toward s0: l
+     panels of ratio 0.15 (k = np - 1 .. np + l - 2), then the rest (k = np + l - 1). Level 0
+     is the single panel [s0, s1]. */
+  while (l <= lev) {
+    if (k < np - 1) {
+      pm = s0 + (SHLIGHT_ITOR(k + 1) + 0.5) * h;
+      pr = 0.5 * h;
+    } else if (k < np + l - 1) {
+      pm = s0 + 0.575 * hg;
+      pr = 0.425 * hg;
+      hg = 0.15 * hg;
+    } else {
+      pm = s0 + 0.5 * hg;
+      pr = 0.5 * hg;
     }
-    /* the panel at s0 (theta = pi/2, where h has the branch point |cos|^(e+1) for non-integer
-       e) cut geometrically toward s0: l panels, ratio 0.15, then the rest */
-    for (k = 0; k < l; ++k) {
-      cur = cur + shli_stokes_gl5(s0 + 0.575 * h, 0.425 * h, beta, c2, p, q, kind);
-      h = 0.15 * h;
-    }
-    cur = cur + shli_stokes_gl5(s0 + 0.5 * h, 0.5 * h, beta, c2, p, q, kind);
-    if (SHLIGHT_ABSR(cur - prev) <= SHLIGHT_ADAPT_TOL) {
-      return cur;
+    cur = cur + shli_stokes_gl5(pm, pr, beta, c2, p, q, kind);
+    k = k + 1;
+    if (k == np + l) {
+      if (l == lev || (l > 0 && SHLIGHT_ABSR(cur - prev) <= SHLIGHT_ADAPT_TOL)) {
+        return cur;
+      }
+      prev = cur;
+      cur = 0.0;
+      l = l + 1;
+      np = 2 * np;
+      h = (s1 - s0) / SHLIGHT_ITOR(np);
+      hg = h;
+      k = 0;
     }
   }
   return cur;
 }
 
 /* The arc theta in [ta, tb] of an edge: the halves on either side of theta = 0, each by
-   shli_stokes_half (the integrand is even in theta; lev as there). */
+   shli_stokes_half (the integrand is even in theta; lev as there), from one call site. */
 SHLIGHT_INLINE shli_real shli_stokes_arc(shli_real ta, shli_real tb, shli_real beta, shli_real c2,
                                          shli_real p, shli_real q, int kind, int lev) {
+  shli_real lo = ta;
+  shli_real hi = tb;
+  shli_real hi2 = 0.0;
+  shli_real sum = 0.0;
+  int nh = 1;
+  int k;
   if (ta < 0.0 && tb > 0.0) {
-    return shli_stokes_half(0.0, -ta, beta, c2, p, q, kind, lev) +
-           shli_stokes_half(0.0, tb, beta, c2, p, q, kind, lev);
+    lo = 0.0;
+    hi = -ta;
+    hi2 = tb;
+    nh = 2;
+  } else if (tb <= 0.0) {
+    lo = -tb;
+    hi = -ta;
   }
-  if (tb <= 0.0) {
-    return shli_stokes_half(-tb, -ta, beta, c2, p, q, kind, lev);
+  for (k = 0; k < nh; ++k) {
+    sum = sum + shli_stokes_half(lo, hi, beta, c2, p, q, kind, lev);
+    hi = hi2;
   }
-  return shli_stokes_half(ta, tb, beta, c2, p, q, kind, lev);
+  return sum;
 }
 
 /* One edge a -> b (unit vectors, the arc inside u.r >= 0) of the polygon moment about the unit
