@@ -10707,33 +10707,51 @@ SHLIGHT_INLINE shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az
   return w * shli_edge_fit(pa, pb, SHLIGHT_SQRTR(c2), nf, method);
 }
 
-/* The shared start of every polygon sum: the orientation of the (unclipped, planar) polygon
-   as seen from the shading point, sign of (vector area) . (a vertex); the clip to u.r >= 0;
-   the clipped vertices normalised in place. Returns +-(clipped vertex count), the sign the
-   orientation's, or 0 when nothing usable is left (< 3 vertices, zero area, a vertex at the
-   shading point). */
-SHLIGHT_INLINE int shli_poly_clip_unit(shli_real *io_px, shli_real *io_py, shli_real *io_pz, int nv,
-                                       shli_real rx, shli_real ry, shli_real rz) {
+/* The shared start of every polygon sum: with npre = 1 first the clip to u.n >= 0 (Phong's
+   horizon; nothing usable left: 0); then the orientation of the polygon as seen from the
+   shading point, sign of (vector area) . (a vertex); the clip to u.r >= 0; the clipped
+   vertices normalised in place. Returns +-(clipped vertex count), the sign the orientation's,
+   or 0 when nothing usable is left (< 3 vertices, zero area, a vertex at the shading point).
+   Both clips run from one call site in a loop (GLSL inlines every call site, and the clip's
+   indexed stores are the costliest part of an llvmpipe compile). */
+SHLIGHT_INLINE int shli_poly_clip_unit2(shli_real *io_px, shli_real *io_py, shli_real *io_pz,
+                                        int nv, shli_real nx, shli_real ny, shli_real nz, int npre,
+                                        shli_real rx, shli_real ry, shli_real rz) {
   shli_real ox = 0.0;
   shli_real oy = 0.0;
   shli_real oz = 0.0;
-  shli_real orient;
+  shli_real orient = 0.0;
+  shli_real mx = nx;
+  shli_real my = ny;
+  shli_real mz = nz;
   shli_real l;
-  int nc;
+  int nc = nv;
+  int pass = 1 - npre;
   int i;
   int j;
-  for (i = 0; i < nv; ++i) {
-    j = i + 1;
-    if (j == nv) {
-      j = 0;
+  while (pass < 2) {
+    if (pass == 1) {
+      for (i = 0; i < nc; ++i) {
+        j = i + 1;
+        if (j == nc) {
+          j = 0;
+        }
+        ox = ox + io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+        oy = oy + io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+        oz = oz + io_px[i] * io_py[j] - io_py[i] * io_px[j];
+      }
+      orient = ox * io_px[0] + oy * io_py[0] + oz * io_pz[0];
+      mx = rx;
+      my = ry;
+      mz = rz;
     }
-    ox = ox + io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
-    oy = oy + io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
-    oz = oz + io_px[i] * io_py[j] - io_py[i] * io_px[j];
+    nc = shli_poly_clip(io_px, io_py, io_pz, nc, mx, my, mz);
+    if (nc < 3) {
+      return 0;
+    }
+    pass = pass + 1;
   }
-  orient = ox * io_px[0] + oy * io_py[0] + oz * io_pz[0];
-  nc = shli_poly_clip(io_px, io_py, io_pz, nv, rx, ry, rz);
-  if (nc < 3 || !(orient != 0.0)) {
+  if (!(orient != 0.0)) {
     return 0;
   }
   for (i = 0; i < nc; ++i) {
@@ -10751,10 +10769,18 @@ SHLIGHT_INLINE int shli_poly_clip_unit(shli_real *io_px, shli_real *io_py, shli_
   return nc;
 }
 
+/* shli_poly_clip_unit2 without the horizon clip */
+SHLIGHT_INLINE int shli_poly_clip_unit(shli_real *io_px, shli_real *io_py, shli_real *io_pz, int nv,
+                                       shli_real rx, shli_real ry, shli_real rz) {
+  return shli_poly_clip_unit2(io_px, io_py, io_pz, nv, rx, ry, rz, 0, rx, ry, rz);
+}
+
 /* Moment (e+1)-normalised pieces of one polygon already in the arrays (shading point at the
-   origin), clipped to u.r >= 0; returns M^e. e integer for the Arvo-form methods. */
+   origin), clipped to u.n >= 0 when npre = 1 (Phong's horizon), then to u.r >= 0; returns
+   M^e. e integer for the Arvo-form methods. */
 SHLIGHT_INLINE shli_real shli_polygon_moment_r(shli_real *io_px, shli_real *io_py, shli_real *io_pz,
-                                               int nv, shli_real rx, shli_real ry, shli_real rz,
+                                               int nv, shli_real nx, shli_real ny, shli_real nz,
+                                               int npre, shli_real rx, shli_real ry, shli_real rz,
                                                shli_real e, int method) {
   shli_real ax;
   shli_real ay;
@@ -10767,7 +10793,7 @@ SHLIGHT_INLINE shli_real shli_polygon_moment_r(shli_real *io_px, shli_real *io_p
   shli_real cx;
   shli_real cy;
   shli_real cz;
-  int nc = shli_poly_clip_unit(io_px, io_py, io_pz, nv, rx, ry, rz);
+  int nc = shli_poly_clip_unit2(io_px, io_py, io_pz, nv, nx, ny, nz, npre, rx, ry, rz);
   int sg = 1;
   int i;
   int j;
@@ -10886,7 +10912,7 @@ SHLIGHT_INLINE float shl_polygon_moment(const float (*v)[3], int nv, const float
   if (mth != SHLIGHT_EDGE_QUADRATURE && mth != SHLIGHT_EDGE_STOKES_ADAPT) {
     e = SHLIGHT_ITOR(SHLIGHT_FTOI(e + 0.5));
   }
-  return SHLIGHT_FLOAT(shli_polygon_moment_r(px, py, pz, nv, rx, ry, rz, e, mth));
+  return SHLIGHT_FLOAT(shli_polygon_moment_r(px, py, pz, nv, rx, ry, rz, 0, rx, ry, rz, e, mth));
 }
 
 /* (e+1)/(2 pi) M^e of the polygon (io_px, io_py, io_pz)[0..nv-1] clipped to the horizon
@@ -10900,7 +10926,6 @@ SHLIGHT_INLINE shli_real shli_phong_arrays(shli_real *io_px, shli_real *io_py, s
   float fz[SHLIGHT_CLIP_MAX];
   shli_real e = exponent;
   int i;
-  int nc;
   int mth = method;
   if (mth < SHLIGHT_EDGE_EXACT || mth > SHLIGHT_EDGE_FAST) {
     mth = SHLIGHT_EDGE_AUTO; /* an unknown method id */
@@ -10934,10 +10959,7 @@ SHLIGHT_INLINE shli_real shli_phong_arrays(shli_real *io_px, shli_real *io_py, s
       return 0.0;
     }
   }
-  nc = shli_poly_clip(io_px, io_py, io_pz, nv, nx, ny, nz);
-  if (nc < 3) {
-    return 0.0;
-  }
+  /* the clip to u.n >= 0 happens in shli_polygon_moment_r (one clip call site) */
   if (mth == SHLIGHT_EDGE_AUTO) {
     mth = SHLIGHT_EDGE_STOKES_ADAPT;
     if (e <= 16.0 && e == SHLIGHT_ITOR(SHLIGHT_FTOI(e))) {
@@ -10954,7 +10976,7 @@ SHLIGHT_INLINE shli_real shli_phong_arrays(shli_real *io_px, shli_real *io_py, s
     e = SHLIGHT_ITOR(SHLIGHT_FTOI(e + 0.5));
   }
   return (e + 1.0) * 0.15915494309189534 *
-         shli_polygon_moment_r(io_px, io_py, io_pz, nc, rx, ry, rz, e, mth);
+         shli_polygon_moment_r(io_px, io_py, io_pz, nv, nx, ny, nz, 1, rx, ry, rz, e, mth);
 }
 
 /* the same for a polygon given as vertices */

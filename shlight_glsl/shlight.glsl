@@ -5780,30 +5780,46 @@ shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx,
   return w * shli_edge_fit(pa, pb, SHLIGHT_SQRTR(c2), nf, method);
 }
 
-int shli_poly_clip_unit(inout shli_real io_px[SHLIGHT_CLIP_MAX],
-                        inout shli_real io_py[SHLIGHT_CLIP_MAX],
-                        inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real rx, shli_real ry,
-                        shli_real rz) {
+int shli_poly_clip_unit2(inout shli_real io_px[SHLIGHT_CLIP_MAX],
+                         inout shli_real io_py[SHLIGHT_CLIP_MAX],
+                         inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real nx,
+                         shli_real ny, shli_real nz, int npre, shli_real rx, shli_real ry,
+                         shli_real rz) {
   shli_real ox = 0.0;
   shli_real oy = 0.0;
   shli_real oz = 0.0;
-  shli_real orient;
+  shli_real orient = 0.0;
+  shli_real mx = nx;
+  shli_real my = ny;
+  shli_real mz = nz;
   shli_real l;
-  int nc;
+  int nc = nv;
+  int pass = 1 - npre;
   int i;
   int j;
-  for (i = 0; i < nv; ++i) {
-    j = i + 1;
-    if (j == nv) {
-      j = 0;
+  while (pass < 2) {
+    if (pass == 1) {
+      for (i = 0; i < nc; ++i) {
+        j = i + 1;
+        if (j == nc) {
+          j = 0;
+        }
+        ox = ox + io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+        oy = oy + io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+        oz = oz + io_px[i] * io_py[j] - io_py[i] * io_px[j];
+      }
+      orient = ox * io_px[0] + oy * io_py[0] + oz * io_pz[0];
+      mx = rx;
+      my = ry;
+      mz = rz;
     }
-    ox = ox + io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
-    oy = oy + io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
-    oz = oz + io_px[i] * io_py[j] - io_py[i] * io_px[j];
+    nc = shli_poly_clip(io_px, io_py, io_pz, nc, mx, my, mz);
+    if (nc < 3) {
+      return 0;
+    }
+    pass = pass + 1;
   }
-  orient = ox * io_px[0] + oy * io_py[0] + oz * io_pz[0];
-  nc = shli_poly_clip(io_px, io_py, io_pz, nv, rx, ry, rz);
-  if (nc < 3 || !(orient != 0.0)) {
+  if (!(orient != 0.0)) {
     return 0;
   }
   for (i = 0; i < nc; ++i) {
@@ -5821,10 +5837,18 @@ int shli_poly_clip_unit(inout shli_real io_px[SHLIGHT_CLIP_MAX],
   return nc;
 }
 
+int shli_poly_clip_unit(inout shli_real io_px[SHLIGHT_CLIP_MAX],
+                        inout shli_real io_py[SHLIGHT_CLIP_MAX],
+                        inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real rx, shli_real ry,
+                        shli_real rz) {
+  return shli_poly_clip_unit2(io_px, io_py, io_pz, nv, rx, ry, rz, 0, rx, ry, rz);
+}
+
 shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
                                 inout shli_real io_py[SHLIGHT_CLIP_MAX],
-                                inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real rx,
-                                shli_real ry, shli_real rz, shli_real e, int method) {
+                                inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real nx,
+                                shli_real ny, shli_real nz, int npre, shli_real rx, shli_real ry,
+                                shli_real rz, shli_real e, int method) {
   shli_real ax;
   shli_real ay;
   shli_real az;
@@ -5836,7 +5860,7 @@ shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
   shli_real cx;
   shli_real cy;
   shli_real cz;
-  int nc = shli_poly_clip_unit(io_px, io_py, io_pz, nv, rx, ry, rz);
+  int nc = shli_poly_clip_unit2(io_px, io_py, io_pz, nv, nx, ny, nz, npre, rx, ry, rz);
   int sg = 1;
   int i;
   int j;
@@ -5955,7 +5979,7 @@ float shl_polygon_moment(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float e
   if (mth != SHLIGHT_EDGE_QUADRATURE && mth != SHLIGHT_EDGE_STOKES_ADAPT) {
     e = SHLIGHT_ITOR(SHLIGHT_FTOI(e + 0.5));
   }
-  return SHLIGHT_FLOAT(shli_polygon_moment_r(px, py, pz, nv, rx, ry, rz, e, mth));
+  return SHLIGHT_FLOAT(shli_polygon_moment_r(px, py, pz, nv, rx, ry, rz, 0, rx, ry, rz, e, mth));
 }
 
 shli_real shli_phong_arrays(inout shli_real io_px[SHLIGHT_CLIP_MAX],
@@ -5968,7 +5992,6 @@ shli_real shli_phong_arrays(inout shli_real io_px[SHLIGHT_CLIP_MAX],
   float fz[SHLIGHT_CLIP_MAX];
   shli_real e = exponent;
   int i;
-  int nc;
   int mth = method;
   if (mth < SHLIGHT_EDGE_EXACT || mth > SHLIGHT_EDGE_FAST) {
     mth = SHLIGHT_EDGE_AUTO; /* an unknown method id */
@@ -6002,10 +6025,7 @@ shli_real shli_phong_arrays(inout shli_real io_px[SHLIGHT_CLIP_MAX],
       return 0.0;
     }
   }
-  nc = shli_poly_clip(io_px, io_py, io_pz, nv, nx, ny, nz);
-  if (nc < 3) {
-    return 0.0;
-  }
+  /* the clip to u.n >= 0 happens in shli_polygon_moment_r (one clip call site) */
   if (mth == SHLIGHT_EDGE_AUTO) {
     mth = SHLIGHT_EDGE_STOKES_ADAPT;
     if (e <= 16.0 && e == SHLIGHT_ITOR(SHLIGHT_FTOI(e))) {
@@ -6022,7 +6042,7 @@ shli_real shli_phong_arrays(inout shli_real io_px[SHLIGHT_CLIP_MAX],
     e = SHLIGHT_ITOR(SHLIGHT_FTOI(e + 0.5));
   }
   return (e + 1.0) * 0.15915494309189534 *
-         shli_polygon_moment_r(io_px, io_py, io_pz, nc, rx, ry, rz, e, mth);
+         shli_polygon_moment_r(io_px, io_py, io_pz, nv, nx, ny, nz, 1, rx, ry, rz, e, mth);
 }
 
 shli_real shli_polygon_phong_r(vec3 v[SHLIGHT_POLYGON_MAX], int nv, shli_real nx, shli_real ny,
