@@ -126,9 +126,11 @@ static const struct kcase CASES[] = {
     {"shl_polygon_moment (one call site)", 4, "basis gradient zonal light edge",
      POLY_MAIN("shl_polygon_moment(v, 4, nrm, 3.5, SHLIGHT_EDGE_AUTO)"), 2.0, 0, 1},
     {"shl_polygon_phong (one call site)", 4, "basis gradient zonal light edge",
-     POLY_MAIN("shl_polygon_phong(v, 4, nrm, view, 20.0, SHLIGHT_EDGE_AUTO)"), 2.0, 0, 0},
+     POLY_MAIN("shl_polygon_phong(v, 4, nrm, view, 20.0, SHLIGHT_EDGE_AUTO)"), 2.0, 0, 1},
     {"shl_polygon_ggx (one call site)", 4, "basis gradient zonal light edge",
      POLY_MAIN("shl_polygon_ggx(v, 4, nrm, view, 0.3)"), 2.0, 0, 0},
+    {"shl_polygon_beckmann (one call site)", 4, "basis gradient zonal light edge",
+     POLY_MAIN("shl_polygon_beckmann(v, 4, nrm, view, 0.3)"), 2.0, 0, 0},
     {"shl_polygon_beckmann_subedges (one call site)", 4, "basis gradient zonal light edge",
      POLY_MAIN("shl_polygon_beckmann_subedges(v, 4, nrm, view, 0.3, 4)"), 2.0, 0, 1},
 };
