@@ -229,6 +229,9 @@ void shl_zh_rotate(int n, float zh[SHLIGHT_MAX_BANDS], vec3 dir,
   }
 }
 
+/* shl_sh_rotate's small-n path is C only (shlight.h, SHLIGHT_ROTATE_FAST) */
+#undef SHLIGHT_ROTATE_FAST
+#define SHLIGHT_ROTATE_FAST 0
 void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
                    out float out_sh[SHLIGHT_MAX_COEFFS]) {
   shli_real pc[2 * SHLIGHT_MAX_BANDS];
@@ -271,6 +274,12 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
   if (n < 1) {
     return;
   }
+#if SHLIGHT_ROTATE_FAST
+  if (n <= SHLI_ROT_FAST_BANDS) {
+    shli_sh_rotate_fast(n, R, sh, out_sh);
+    return;
+  }
+#endif
   /* beta: sin from R's third column (accurate near 0 and pi), cos = R_22 */
   sb = SHLIGHT_SQRTR(SHLIGHT_REAL(R[2]) * SHLIGHT_REAL(R[2]) +
                      SHLIGHT_REAL(R[5]) * SHLIGHT_REAL(R[5]));
