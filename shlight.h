@@ -8287,8 +8287,8 @@ SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float
     return;
   }
   /* cos, sin of m gamma, m (beta + pi), m (alpha + pi) = (-1)^m those of m beta, m alpha, at
-     3 m + q; m = 2, 3 here, 4..7 below when n > 4, as products of lower ones (three
-     multiplications deep) */
+     3 m + q; m = 2, 3 here, 4..7 below, as products of lower ones (three multiplications
+     deep) */
   cm[0] = 1.0;
   sm[0] = 0.0;
   cm[1] = 1.0;
@@ -8312,18 +8312,6 @@ SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float
       sm[3 * m + q] = sm[a] * cm[d] + cm[a] * sm[d];
     }
   }
-  if (n > 4) {
-    SHLI_ROT_UNROLL
-    for (m = 4; m < SHLI_ROT_FAST_BANDS; ++m) {
-      SHLI_ROT_UNROLL
-      for (q = 0; q < 3; ++q) {
-        int a = 3 * (m / 2 + m % 2) + q;
-        int d = 3 * (m / 2) + q;
-        cm[3 * m + q] = cm[a] * cm[d] - sm[a] * sm[d];
-        sm[3 * m + q] = sm[a] * cm[d] + cm[a] * sm[d];
-      }
-    }
-  }
   SHLI_ROT_UNROLL
   for (q = 0; q < 3; ++q) {
     shli_rot_v2 ce2 = {cm[q], cm[6 + q]};
@@ -8342,6 +8330,16 @@ SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float
   }
   if (n > 4) {
     shli_rot_v4 tv[12];
+    SHLI_ROT_UNROLL
+    for (m = 4; m < SHLI_ROT_FAST_BANDS; ++m) {
+      SHLI_ROT_UNROLL
+      for (q = 0; q < 3; ++q) {
+        int a = 3 * (m / 2 + m % 2) + q;
+        int d = 3 * (m / 2) + q;
+        cm[3 * m + q] = cm[a] * cm[d] - sm[a] * sm[d];
+        sm[3 * m + q] = sm[a] * cm[d] + cm[a] * sm[d];
+      }
+    }
     SHLI_ROT_UNROLL
     for (q = 0; q < 3; ++q) {
       shli_rot_v4 ce = {cm[q], cm[6 + q], cm[12 + q], cm[18 + q]};
