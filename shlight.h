@@ -8251,7 +8251,7 @@ SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float
       t = (double)R[4];
       w = (double)R[3];
     }
-    if (h > 0.0) {
+    if (!(h <= 0.0)) {
       sb = sb / h;
       cb = cb / h;
     } else {
@@ -8423,7 +8423,8 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
     c1 = SHLIGHT_REAL(R[2]) / sb;
     s1 = SHLIGHT_REAL(R[5]) / sb;
   }
-  if (h > 0.0) {
+  /* not h > 0: a NaN R_22 must reach the output as NaN */
+  if (!(h <= 0.0)) {
     sb = sb / h;
     cb = cb / h;
   } else {

@@ -291,7 +291,8 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
     c1 = SHLIGHT_REAL(R[2]) / sb;
     s1 = SHLIGHT_REAL(R[5]) / sb;
   }
-  if (h > 0.0) {
+  /* not h > 0: a NaN R_22 must reach the output as NaN */
+  if (!(h <= 0.0)) {
     sb = sb / h;
     cb = cb / h;
   } else {
