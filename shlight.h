@@ -80,6 +80,8 @@
                            output stays in L1, at 3.5x the implementation's compile time, 7.7
                            against 2.2 s, and +200 KB of .text, gcc 12 -O2)
    SHLIGHT_STATIC          the CPU-only functions become static (private to one file)
+   SHLIGHT_ROTATE_FAST     default 1 with GCC / Clang: shl_sh_rotate's vector path for n <= 8;
+                           0: the portable kernel (the GLSL twin's body) at every n
 */
 #ifndef SHLIGHT_MAX_BANDS
 #define SHLIGHT_MAX_BANDS 64
@@ -228,26 +230,33 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
 /* shl_sh_rotate: out_sh (n * n floats) = the SH of the function sh (n * n floats) rotated by
    the rotation matrix R (row-major, R[3 i + j] = R_ij): g(w) = f(R^T w), so sh = Y(d) gives
    out_sh = Y(R d). n: bands, 1..SHLIGHT_MAX_BANDS (64 in C; GLSL: written for n <= 16, see
-   accuracy); n < 1 writes nothing, n > max asserts in debug and is clamped in release.
+   accuracy); n < 1 writes nothing, n > max is clamped.
    Method: R = Rz(alpha) Ry(beta) Rz(gamma) (zyz Euler angles, found without inverse
    trigonometry: beta from R's third column, alpha from its first two entries, gamma from the
    second row of Rz(-alpha) R); the z rotations act on each (m, -m) pair; the y rotation is the
    real-basis form of Wigner's d^l_{m'm}(beta), each entry carried up the bands by the
    three-term recurrence in l of its Jacobi polynomial (start at l = max(|m|, |m'|) from the
    closed form sqrt(C(2q, q+p)) cos(beta/2)^a sin(beta/2)^b), one row m' at a time, so the
-   work space is O(n) and no matrix of a band is ever stored.
+   work space is O(n) and no matrix of a band is ever stored. C with GCC or Clang, n <= 8
+   (SHLIGHT_ROTATE_FAST, default 1 there): the same angles, then Ry(beta) = X(-90) Rz(beta)
+   X(+90) with constant band matrices of the +90 degree turn about x, in double vectors;
+   band 1 the signed permutation of the rotation. Both give the same float result but for
+   rare last-bit differences (tests/test_rotate.c holds them to 6e-8 of each band).
    R must be a rotation (orthonormal, det +1; float rounding of one is fine: the kernel uses
    the exact rotation with R's third column, R_00, R_01, R_10, R_11 as above, within 1e-7 of a
    float-rounded R); any other finite matrix gives the rotation that decomposition yields (an
-   all-zero R: the identity); NaN in R gives NaN out. sh and out_sh must not overlap.
+   all-zero R: the identity); R_20, R_21 are not read; NaN in any other entry gives NaN in
+   every band above 0. sh and out_sh must not overlap.
    Accuracy (C, double inside; against a long-double re-projection by Gauss quadrature,
-   tests/test_rotate.c): per band, |error| / |input band| <= 4.3e-8 for every n = 1..64 and
+   tests/test_rotate.c): per band, |error| / |input band| <= 4.6e-8 for every n = 1..64 and
    for beta = 0, 1e-6, pi / 2, pi - 1e-6, pi (the float rounding of the output); band energy
    kept to 1e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16 (llvmpipe).
-   Cost: about n^3 / 3 steps of the two recurrences (one sqrt and one division each) and
-   n^3 / 3 of the row dot products: 0.6 us at n = 6, 8.7 us at n = 16, 0.47 ms at n = 64 (gcc
-   -O3 -march=native; docs/rotation.md has the table; DirectXMath's XMSHRotate, n <= 6, is
-   faster at small n). Stack: about 7 KB at SHLIGHT_MAX_BANDS = 64. */
+   Cost: n <= 8 (C, GCC / Clang): 3 square roots and 1 division, then per band 3 z rotations
+   and 2 (2l + 1) multiply-adds of 2- or 4-lane double vectors: COST_SMALL. Otherwise about n^3 / 3
+   steps of the two recurrences (one sqrt and one division each) and n^3 / 3 of the row dot
+   products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc -O3 -march=native; docs/rotation.md has
+   the tables, with DirectXMath's XMSHRotate, n <= 6). Stack: about 8 KB at
+   SHLIGHT_MAX_BANDS = 64. */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh);
 
 /* ---- light --------------------------------------------------------------------------------- */

@@ -284,8 +284,9 @@ int main(int argc, char **argv) {
       e_dx = err_vs_ref(n);
     }
 #endif
-    snprintf(row, sizeof row, "| %d | %.1f | %.1f | %.1f | %s | %s | %.2g | %.2g | %s | %s | %s |\n",
-             n, t_shl, t_po, t_rp, t_m > 0 ? fmtd(f1, t_m, "%.1f") : "-",
+    snprintf(row, sizeof row,
+             "| %d | %.1f | %.1f | %.1f | %s | %s | %.2g | %.2g | %s | %s | %s |\n", n, t_shl, t_po,
+             t_rp, t_m > 0 ? fmtd(f1, t_m, "%.1f") : "-",
              t_m > 0 ? fmtd(f2, t_shl / t_m, "%.2f") : "-", e_sh, e_rp,
              t_dx > 0 ? fmtd(f3, t_dx, "%.1f") : "-", t_dx > 0 ? fmtd(f4, e_dx, "%.2g") : "-",
              t_dx > 0 ? fmtd(f5, t_dx / t_shl, "%.2f") : "-");
