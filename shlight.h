@@ -8267,7 +8267,7 @@ SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float
       cb = 1.0;
     }
     hg = sqrt(t * t + w * w);
-    if (hg > 0.0) {
+    if (!(hg <= 0.0)) {
       t = t / hg;
       w = w / hg;
     } else {
@@ -8447,7 +8447,7 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
   h = SHLIGHT_SQRTR(t * t + w * w);
   cg[0] = 1.0;
   sg[0] = 0.0;
-  if (h > 0.0) {
+  if (!(h <= 0.0)) {
     t = t / h;
     w = w / h;
   } else {

@@ -3600,7 +3600,7 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
   h = SHLIGHT_SQRTR(t * t + w * w);
   cg[0] = 1.0;
   sg[0] = 0.0;
-  if (h > 0.0) {
+  if (!(h <= 0.0)) {
     t = t / h;
     w = w / h;
   } else {
