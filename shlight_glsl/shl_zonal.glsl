@@ -229,9 +229,6 @@ void shl_zh_rotate(int n, float zh[SHLIGHT_MAX_BANDS], vec3 dir,
   }
 }
 
-/* shl_sh_rotate's small-n path is C only (shlight.h, SHLIGHT_ROTATE_FAST) */
-#undef SHLIGHT_ROTATE_FAST
-#define SHLIGHT_ROTATE_FAST 0
 void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
                    out float out_sh[SHLIGHT_MAX_COEFFS]) {
   shli_real pc[2 * SHLIGHT_MAX_BANDS];

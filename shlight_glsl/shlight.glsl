@@ -159,6 +159,7 @@ precision highp int;
 #endif
 #define SHLIGHT_SIGN1(x) ((x) < 0.0 ? -1.0 : 1.0)
 #define SHLIGHT_SIMD_EVAL 0
+#define SHLIGHT_ROTATE_FAST 0 /* C: shl_sh_rotate's vector path for n <= 8 */
 #define SHLIGHT_OUTLINE_EVAL 0 /* C: the large band counts run out of line, in the implementation */
 #define SHLIGHT_FTOI(x) int(x)
 #define SHLIGHT_ITOR(i) float(i)
@@ -3523,9 +3524,6 @@ void shl_zh_rotate(int n, float zh[SHLIGHT_MAX_BANDS], vec3 dir,
   }
 }
 
-/* shl_sh_rotate's small-n path is C only (shlight.h, SHLIGHT_ROTATE_FAST) */
-#undef SHLIGHT_ROTATE_FAST
-#define SHLIGHT_ROTATE_FAST 0
 void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
                    out float out_sh[SHLIGHT_MAX_COEFFS]) {
   shli_real pc[2 * SHLIGHT_MAX_BANDS];
