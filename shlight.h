@@ -80,6 +80,8 @@
                            output stays in L1, at 3.5x the implementation's compile time, 7.7
                            against 2.2 s, and +200 KB of .text, gcc 12 -O2)
    SHLIGHT_STATIC          the CPU-only functions become static (private to one file)
+   SHLIGHT_ROTATE_FAST     default 1 with GCC / Clang: shl_sh_rotate's vector path for n <= 8;
+                           0: the portable kernel (the GLSL twin's body) at every n
 */
 #ifndef SHLIGHT_MAX_BANDS
 #define SHLIGHT_MAX_BANDS 64
@@ -228,26 +230,34 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
 /* shl_sh_rotate: out_sh (n * n floats) = the SH of the function sh (n * n floats) rotated by
    the rotation matrix R (row-major, R[3 i + j] = R_ij): g(w) = f(R^T w), so sh = Y(d) gives
    out_sh = Y(R d). n: bands, 1..SHLIGHT_MAX_BANDS (64 in C; GLSL: written for n <= 16, see
-   accuracy); n < 1 writes nothing, n > max asserts in debug and is clamped in release.
+   accuracy); n < 1 writes nothing, n > max is clamped.
    Method: R = Rz(alpha) Ry(beta) Rz(gamma) (zyz Euler angles, found without inverse
    trigonometry: beta from R's third column, alpha from its first two entries, gamma from the
    second row of Rz(-alpha) R); the z rotations act on each (m, -m) pair; the y rotation is the
    real-basis form of Wigner's d^l_{m'm}(beta), each entry carried up the bands by the
    three-term recurrence in l of its Jacobi polynomial (start at l = max(|m|, |m'|) from the
    closed form sqrt(C(2q, q+p)) cos(beta/2)^a sin(beta/2)^b), one row m' at a time, so the
-   work space is O(n) and no matrix of a band is ever stored.
+   work space is O(n) and no matrix of a band is ever stored. C with GCC or Clang, n <= 8
+   (SHLIGHT_ROTATE_FAST, default 1 there): the same angles, then Ry(beta) = X(-90) Rz(beta)
+   X(+90) with constant band matrices of the +90 degree turn about x, in double vectors;
+   band 1 the signed permutation of the rotation. Both give the same float result but for
+   rare last-bit differences (tests/test_rotate.c holds them to 6e-8 of each band).
    R must be a rotation (orthonormal, det +1; float rounding of one is fine: the kernel uses
    the exact rotation with R's third column, R_00, R_01, R_10, R_11 as above, within 1e-7 of a
    float-rounded R); any other finite matrix gives the rotation that decomposition yields (an
-   all-zero R: the identity); NaN in R gives NaN out. sh and out_sh must not overlap.
+   all-zero R: the identity); R_20, R_21 are not read; NaN in any other entry gives NaN in
+   every band above 0. sh and out_sh must not overlap.
    Accuracy (C, double inside; against a long-double re-projection by Gauss quadrature,
-   tests/test_rotate.c): per band, |error| / |input band| <= 4.3e-8 for every n = 1..64 and
+   tests/test_rotate.c): per band, |error| / |input band| <= 4.6e-8 for every n = 1..64 and
    for beta = 0, 1e-6, pi / 2, pi - 1e-6, pi (the float rounding of the output); band energy
-   kept to 1e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16 (llvmpipe).
-   Cost: about n^3 / 3 steps of the two recurrences (one sqrt and one division each) and
-   n^3 / 3 of the row dot products: 0.6 us at n = 6, 8.7 us at n = 16, 0.47 ms at n = 64 (gcc
-   -O3 -march=native; docs/rotation.md has the table; DirectXMath's XMSHRotate, n <= 6, is
-   faster at small n). Stack: about 7 KB at SHLIGHT_MAX_BANDS = 64. */
+   kept to 1.1e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16 (llvmpipe).
+   Cost: n <= 8 (C, GCC / Clang): 3 square roots and 1 division, then per band 3 z rotations
+   and 2 (2l + 1) multiply-adds of 2- or 4-lane double vectors: 146 / 436 / 821 / 1113
+   instructions at n = 2 / 4 / 6 / 8 (gcc -O3, callgrind), 21 / 65 / 142 / 173 ns. Otherwise
+   about n^3 / 3 steps of the two recurrences (one sqrt and one division each) and n^3 / 3 of
+   the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc -O3 -march=native;
+   docs/rotation.md has the tables, with DirectXMath's XMSHRotate, n <= 6, still about 2x
+   faster at n <= 6). Stack: about 8 KB at SHLIGHT_MAX_BANDS = 64. */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh);
 
 /* ---- light --------------------------------------------------------------------------------- */
@@ -7980,6 +7990,391 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
   }
 }
 
+/* shl_sh_rotate's C-only path for n <= SHLI_ROT_FAST_BANDS (GCC and Clang: it is written in their
+   vector extensions; SHLIGHT_ROTATE_FAST 0 sends every n to the portable kernel below, the body
+   the GLSL twin shares; tests/test_rotate.c holds this path to that kernel). The portable
+   kernel's Euler angles, found the same way (so the same rotation for any R), and Ry(beta) =
+   X(-90) Rz(beta) X(+90), X(+90) the rotation by +90 degrees about x, whose band matrices are
+   constants (the "zxzxz" factorisation); X(-90) = Rz(pi) X(+90) Rz(pi), so per band: z
+   rotations by gamma, beta + pi, alpha + pi with X(+90) between them. X(+90) keeps x-parity
+   and m's parity: a band splits into four lane groups (A: m = 0, 2, 4, 6; C: m = 1, 3, 5, 7;
+   D: m = -, -2, -4, -6; B: m = -1, -3, -5, -7), each output group takes one input group (l
+   even: A A, C D, D C, B B; l odd: A B, C C, D D, B A), and a z rotation pairs A with D and C
+   with B lane by lane. Double inside, 2 lanes for bands 2, 3 and 4 lanes for bands 4..7 (one
+   SSE / AVX register); the tables hold each band's four group blocks by columns; band 1 is
+   the signed permutation of the rotation matrix. */
+#ifndef SHLIGHT_ROTATE_FAST
+#if defined(__GNUC__) || defined(__clang__)
+#define SHLIGHT_ROTATE_FAST 1
+#else
+#define SHLIGHT_ROTATE_FAST 0
+#endif
+#endif
+#if SHLIGHT_ROTATE_FAST
+#define SHLI_ROT_FAST_BANDS 8
+/* clang-format off */
+static const double SHLI_ROT_X90_2[32] = {
+  -0.5, -0.8660254037844386, -0.8660254037844386, 0.5,
+  0, 0, -1.0, 0,
+  0, 1.0, 0, 0,
+  -1.0, 0, 0, 0,
+  0.61237243569579447, 0.79056941504209488, 0.79056941504209488, -0.61237243569579447,
+  -0.25, -0.96824583655185426, -0.96824583655185426, 0.25,
+  0, 0, 0, -1.0,
+  -0.61237243569579447, -0.79056941504209488, -0.79056941504209488, 0.61237243569579447
+};
+static const double SHLI_ROT_X90_4[256] = {
+  0.375, 0.55901699437494745, 0.73950997288745202, 0,
+  0.55901699437494745, 0.5, -0.66143782776614768, 0,
+  0.73950997288745202, -0.66143782776614768, 0.125, 0,
+  0, 0, 0, 0,
+  0, 0, 0, 0,
+  0.35355339059327379, 0.93541434669348533, 0, 0,
+  0.93541434669348533, -0.35355339059327379, 0, 0,
+  0, 0, 0, 0,
+  0, -0.35355339059327379, -0.93541434669348533, 0,
+  0, -0.93541434669348533, 0.35355339059327379, 0,
+  0, 0, 0, 0,
+  0, 0, 0, 0,
+  0.75, 0.66143782776614768, 0, 0,
+  0.66143782776614768, -0.75, 0, 0,
+  0, 0, 0, 0,
+  0, 0, 0, 0,
+  -0.48412291827592713, -0.66143782776614768, -0.57282196186947998, 0,
+  -0.52291251658379723, -0.30618621784789724, 0.79549512883486595, 0,
+  -0.70156076002011403, 0.68465319688145765, -0.19764235376052372, 0,
+  0, 0, 0, 0,
+  0.125, 0.40504629365049127, 0.90571104663683988, 0,
+  0.40504629365049127, 0.8125, -0.41926274578121059, 0,
+  0.90571104663683988, -0.41926274578121059, 0.0625, 0,
+  0, 0, 0, 0,
+  0, 0, 0, 0,
+  0, 0.5, 0.8660254037844386, 0,
+  0, 0.8660254037844386, -0.5, 0,
+  0, 0, 0, 0,
+  0.48412291827592713, 0.52291251658379723, 0.70156076002011403, 0,
+  0.66143782776614768, 0.30618621784789724, -0.68465319688145765, 0,
+  0.57282196186947998, -0.79549512883486595, 0.19764235376052372, 0,
+  0, 0, 0, 0,
+  -0.3125, -0.45285552331841994, -0.49607837082461076, -0.67169328938139616,
+  -0.45285552331841994, -0.53125, -0.17116329922036441, 0.6952686081652184,
+  -0.49607837082461076, -0.17116329922036441, 0.8125, -0.25387620014487378,
+  -0.67169328938139616, 0.6952686081652184, -0.25387620014487378, 0.03125,
+  0, 0, 0, 0,
+  -0.19764235376052372, -0.5625, -0.80282703616657058, 0,
+  -0.4330127018922193, -0.68465319688145765, 0.58630196997792872, 0,
+  -0.87945295496689302, 0.46351240544347894, -0.10825317547305482, 0,
+  0, 0.19764235376052372, 0.4330127018922193, 0.87945295496689302,
+  0, 0.5625, 0.68465319688145765, -0.46351240544347894,
+  0, 0.80282703616657058, -0.58630196997792872, 0.10825317547305482,
+  0, 0, 0, 0,
+  -0.625, -0.59292706128157113, -0.50775240028974755, 0,
+  -0.59292706128157113, -0.0625, 0.80282703616657058, 0,
+  -0.50775240028974755, 0.80282703616657058, -0.3125, 0,
+  0, 0, 0, 0,
+  0.41339864235384227, 0.57409915846480741, 0.53855274811294018, 0.45768182862115031,
+  0.42961647140211001, 0.4198446513295126, -0.10364452469860624, -0.7927281808728639,
+  0.47495887979908324, 0.07328774624724109, -0.78125, 0.39836089949943632,
+  0.64725984928774938, -0.69912054128740919, 0.2981060004427955, -0.058463396668342833,
+  -0.078125, -0.24356964481437338, -0.44879395676078349, -0.85624429742626607,
+  -0.24356964481437338, -0.609375, -0.57004488584233437, 0.49435287561113672,
+  -0.44879395676078349, -0.57004488584233437, 0.671875, -0.14905300022139775,
+  -0.85624429742626607, 0.49435287561113672, -0.14905300022139775, 0.015625,
+  0, 0, 0, 0,
+  0, -0.3125, -0.58630196997792872, -0.74739129644383739,
+  0, -0.58630196997792872, -0.5, 0.63737743919909806,
+  0, -0.74739129644383739, 0.63737743919909806, -0.1875,
+  -0.41339864235384227, -0.42961647140211001, -0.47495887979908324, -0.64725984928774938,
+  -0.57409915846480741, -0.4198446513295126, -0.07328774624724109, 0.69912054128740919,
+  -0.53855274811294018, 0.10364452469860624, 0.78125, -0.2981060004427955,
+  -0.45768182862115031, 0.7927281808728639, -0.39836089949943632, 0.058463396668342833
+};
+/* clang-format on */
+#if defined(__clang__)
+#define SHLI_ROT_UNROLL _Pragma("unroll")
+#elif defined(__GNUC__) && __GNUC__ >= 8
+#define SHLI_ROT_UNROLL _Pragma("GCC unroll 16")
+#else
+#define SHLI_ROT_UNROLL
+#endif
+#define SHLI_ROT_FORCE __attribute__((always_inline))
+/* the input group of output group g (0 A, 1 C, 2 D, 3 B) and its lanes k0 .. k1 - 1 */
+#define SHLI_ROT_SRC(l, g)                                                                         \
+  ((l) % 2 == 0 ? ((g) == 1 ? 2 : ((g) == 2 ? 1 : (g))) : ((g) == 0 ? 3 : ((g) == 3 ? 0 : (g))))
+#define SHLI_ROT_K0(src) ((src) == 2 ? 1 : 0)
+#define SHLI_ROT_K1(l, src) ((src) == 0 || (src) == 2 ? (l) / 2 + 1 : ((l) + 1) / 2)
+typedef double shli_rot_v4 __attribute__((vector_size(32)));
+typedef double shli_rot_v2 __attribute__((vector_size(16)));
+#define SHLI_ROT_LD(v, p) memcpy(&(v), (p), sizeof(v))
+
+/* X(+90) for output group g of band l (a literal): from the z-rotated groups w0..w3 (A, C, D,
+   B) into out (named variables, not arrays, which GCC keeps in registers) */
+#define SHLI_ROT_X(VT, NL, l, g, out)                                                              \
+  do {                                                                                             \
+    int src_ = SHLI_ROT_SRC(l, g);                                                                 \
+    int k_;                                                                                        \
+    VT ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3));                            \
+    VT c_;                                                                                         \
+    out = ws_ - ws_;                                                                               \
+    SHLI_ROT_UNROLL                                                                                \
+    for (k_ = 0; k_ < (NL); ++k_) {                                                                \
+      if (k_ >= SHLI_ROT_K0(src_) && k_ < SHLI_ROT_K1(l, src_)) {                                  \
+        SHLI_ROT_LD(c_, t + (NL) * (NL) * (g) + k_ * (NL));                                        \
+        out = out + c_ * ws_[k_];                                                                  \
+      }                                                                                            \
+    }                                                                                              \
+  } while (0)
+
+/* band l (4 <= l < SHLI_ROT_FAST_BANDS) of sh rotated into out_sh; tv[4 q + j]: cos, sin of the
+   even m, cos, sin of the odd m (j = 0..3) of the q-th z rotation. Inlined with a literal l,
+   every loop has a constant trip count and unrolls into straight-line code. */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *tv, const float *sh,
+                                                     float *out_sh) {
+  const double *t = SHLI_ROT_X90_4 + 64 * (l - 4);
+  int b = l * l + l;
+  shli_rot_v4 v0 = {(double)sh[b], (double)sh[b + 2], (double)sh[b + 4],
+                    l >= 6 ? (double)sh[b + 6] : 0.0};
+  shli_rot_v4 v1 = {(double)sh[b + 1], (double)sh[b + 3], l >= 5 ? (double)sh[b + 5] : 0.0,
+                    l >= 7 ? (double)sh[b + 7] : 0.0};
+  shli_rot_v4 v2 = {0.0, (double)sh[b - 2], (double)sh[b - 4], l >= 6 ? (double)sh[b - 6] : 0.0};
+  shli_rot_v4 v3 = {(double)sh[b - 1], (double)sh[b - 3], l >= 5 ? (double)sh[b - 5] : 0.0,
+                    l >= 7 ? (double)sh[b - 7] : 0.0};
+  shli_rot_v4 w0;
+  shli_rot_v4 w1;
+  shli_rot_v4 w2;
+  shli_rot_v4 w3;
+  int i;
+  int q;
+  SHLI_ROT_UNROLL
+  for (q = 0; q < 3; ++q) {
+    /* z rotation (gamma, beta + pi, alpha + pi): A with D, C with B */
+    w0 = v0 * tv[4 * q] - v2 * tv[4 * q + 1];
+    w2 = v0 * tv[4 * q + 1] + v2 * tv[4 * q];
+    w1 = v1 * tv[4 * q + 2] - v3 * tv[4 * q + 3];
+    w3 = v1 * tv[4 * q + 3] + v3 * tv[4 * q + 2];
+    if (q == 2) {
+      break;
+    }
+    SHLI_ROT_X(shli_rot_v4, 4, l, 0, v0);
+    SHLI_ROT_X(shli_rot_v4, 4, l, 1, v1);
+    SHLI_ROT_X(shli_rot_v4, 4, l, 2, v2);
+    SHLI_ROT_X(shli_rot_v4, 4, l, 3, v3);
+  }
+  SHLI_ROT_UNROLL
+  for (i = 0; i < 4; ++i) {
+    if (2 * i <= l) {
+      out_sh[b + 2 * i] = (float)w0[i];
+    }
+    if (2 * i + 1 <= l) {
+      out_sh[b + 2 * i + 1] = (float)w1[i];
+      out_sh[b - 2 * i - 1] = (float)w3[i];
+    }
+    if (i > 0 && 2 * i <= l) {
+      out_sh[b - 2 * i] = (float)w2[i];
+    }
+  }
+}
+
+/* bands 2 and 3 (two lanes per group: A m = 0, 2; C 1, 3; D -, -2; B -1, -3): the same step
+   on half the lanes, one SSE register; tv: the first two lanes of the above */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band2(int l, const shli_rot_v2 *tv, const float *sh,
+                                                      float *out_sh) {
+  const double *t = SHLI_ROT_X90_2 + 16 * (l - 2);
+  int b = l * l + l;
+  shli_rot_v2 v0 = {(double)sh[b], (double)sh[b + 2]};
+  shli_rot_v2 v1 = {(double)sh[b + 1], l >= 3 ? (double)sh[b + 3] : 0.0};
+  shli_rot_v2 v2 = {0.0, (double)sh[b - 2]};
+  shli_rot_v2 v3 = {(double)sh[b - 1], l >= 3 ? (double)sh[b - 3] : 0.0};
+  shli_rot_v2 w0;
+  shli_rot_v2 w1;
+  shli_rot_v2 w2;
+  shli_rot_v2 w3;
+  int q;
+  SHLI_ROT_UNROLL
+  for (q = 0; q < 3; ++q) {
+    w0 = v0 * tv[4 * q] - v2 * tv[4 * q + 1];
+    w2 = v0 * tv[4 * q + 1] + v2 * tv[4 * q];
+    w1 = v1 * tv[4 * q + 2] - v3 * tv[4 * q + 3];
+    w3 = v1 * tv[4 * q + 3] + v3 * tv[4 * q + 2];
+    if (q == 2) {
+      break;
+    }
+    SHLI_ROT_X(shli_rot_v2, 2, l, 0, v0);
+    SHLI_ROT_X(shli_rot_v2, 2, l, 1, v1);
+    SHLI_ROT_X(shli_rot_v2, 2, l, 2, v2);
+    SHLI_ROT_X(shli_rot_v2, 2, l, 3, v3);
+  }
+  out_sh[b] = (float)w0[0];
+  out_sh[b + 2] = (float)w0[1];
+  out_sh[b + 1] = (float)w1[0];
+  out_sh[b - 1] = (float)w3[0];
+  out_sh[b - 2] = (float)w2[1];
+  if (l >= 3) {
+    out_sh[b + 3] = (float)w1[1];
+    out_sh[b - 3] = (float)w3[1];
+  }
+}
+
+/* n in [1, SHLI_ROT_FAST_BANDS] */
+SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float *sh,
+                                            float *out_sh) {
+  double cm[3 * SHLI_ROT_FAST_BANDS];
+  double sm[3 * SHLI_ROT_FAST_BANDS];
+  double r2 = (double)R[2];
+  double r5 = (double)R[5];
+  double s2 = r2 * r2 + r5 * r5;
+  double sb = sqrt(s2);
+  double cb = (double)R[8];
+  double h = sqrt(s2 + cb * cb);
+  /* (t, w): gamma's cos, sin times sin(beta), which needs no division by it */
+  double t = (double)R[4] * r2 - (double)R[1] * r5;
+  double w = (double)R[3] * r2 - (double)R[0] * r5;
+  double hg = sqrt(t * t + w * w);
+  double c1 = 1.0;
+  double s1 = 0.0;
+  double iv;
+  int m;
+  int q;
+  shli_rot_v2 tv2[12];
+  /* the portable kernel's angles (the same rotation for any R), its three normalisations side
+     by side; in the common case one division for the three (sb, h, hg >= 1e-45 and <= 1e78:
+     their product neither overflows nor underflows in double) */
+  if (sb > 0.0 && hg > 0.0) {
+    double ia = h * hg;
+    double ib = sb * hg;
+    double ic = sb * h;
+    iv = 1.0 / (ic * hg);
+    ia = ia * iv;
+    ib = ib * iv;
+    ic = ic * iv;
+    c1 = r2 * ia;
+    s1 = r5 * ia;
+    cb = cb * ib;
+    sb = sb * ib;
+    t = t * ic;
+    w = w * ic;
+  } else {
+    if (sb > 0.0) {
+      c1 = r2 / sb;
+      s1 = r5 / sb;
+    } else {
+      t = (double)R[4];
+      w = (double)R[3];
+    }
+    if (!(h <= 0.0)) {
+      sb = sb / h;
+      cb = cb / h;
+    } else {
+      cb = 1.0;
+    }
+    hg = sqrt(t * t + w * w);
+    if (!(hg <= 0.0)) {
+      t = t / hg;
+      w = w / hg;
+    } else {
+      t = 1.0;
+    }
+  }
+  out_sh[0] = sh[0];
+  if (n < 2) {
+    return;
+  }
+  /* band 1: the signed permutation of Q = Rz(alpha) Ry(beta) Rz(gamma) (Y_1 = sqrt(3 / (4 pi))
+     (-y, z, -x)) */
+  {
+    double q00 = c1 * cb * t - s1 * w;
+    double q01 = -c1 * cb * w - s1 * t;
+    double q10 = s1 * cb * t + c1 * w;
+    double q11 = c1 * t - s1 * cb * w;
+    double xm = (double)sh[1];
+    double x0 = (double)sh[2];
+    double xp = (double)sh[3];
+    out_sh[1] = (float)(q10 * xp + q11 * xm - s1 * sb * x0);
+    out_sh[2] = (float)(sb * t * xp - sb * w * xm + cb * x0);
+    out_sh[3] = (float)(q00 * xp + q01 * xm - c1 * sb * x0);
+  }
+  if (n < 3) {
+    return;
+  }
+  /* cos, sin of m gamma, m (beta + pi), m (alpha + pi) = (-1)^m those of m beta, m alpha, at
+     3 m + q; m = 2, 3 here, 4..7 below, as products of lower ones (three multiplications
+     deep) */
+  cm[0] = 1.0;
+  sm[0] = 0.0;
+  cm[1] = 1.0;
+  sm[1] = 0.0;
+  cm[2] = 1.0;
+  sm[2] = 0.0;
+  cm[3] = t;
+  sm[3] = w;
+  cm[4] = -cb;
+  sm[4] = -sb;
+  cm[5] = -c1;
+  sm[5] = -s1;
+  SHLI_ROT_UNROLL
+  for (m = 2; m < 4; ++m) {
+    SHLI_ROT_UNROLL
+    for (q = 0; q < 3; ++q) {
+      /* m = (m / 2 + m % 2) + m / 2 */
+      int a = 3 * (m / 2 + m % 2) + q;
+      int d = 3 * (m / 2) + q;
+      cm[3 * m + q] = cm[a] * cm[d] - sm[a] * sm[d];
+      sm[3 * m + q] = sm[a] * cm[d] + cm[a] * sm[d];
+    }
+  }
+  SHLI_ROT_UNROLL
+  for (q = 0; q < 3; ++q) {
+    shli_rot_v2 ce2 = {cm[q], cm[6 + q]};
+    shli_rot_v2 se2 = {sm[q], sm[6 + q]};
+    shli_rot_v2 co2 = {cm[3 + q], cm[9 + q]};
+    shli_rot_v2 so2 = {sm[3 + q], sm[9 + q]};
+    tv2[4 * q] = ce2;
+    tv2[4 * q + 1] = se2;
+    tv2[4 * q + 2] = co2;
+    tv2[4 * q + 3] = so2;
+  }
+  /* literal band numbers: see shli_rot_band */
+  shli_rot_band2(2, tv2, sh, out_sh);
+  if (n > 3) {
+    shli_rot_band2(3, tv2, sh, out_sh);
+  }
+  if (n > 4) {
+    shli_rot_v4 tv[12];
+    SHLI_ROT_UNROLL
+    for (m = 4; m < SHLI_ROT_FAST_BANDS; ++m) {
+      SHLI_ROT_UNROLL
+      for (q = 0; q < 3; ++q) {
+        int a = 3 * (m / 2 + m % 2) + q;
+        int d = 3 * (m / 2) + q;
+        cm[3 * m + q] = cm[a] * cm[d] - sm[a] * sm[d];
+        sm[3 * m + q] = sm[a] * cm[d] + cm[a] * sm[d];
+      }
+    }
+    SHLI_ROT_UNROLL
+    for (q = 0; q < 3; ++q) {
+      shli_rot_v4 ce = {cm[q], cm[6 + q], cm[12 + q], cm[18 + q]};
+      shli_rot_v4 se = {sm[q], sm[6 + q], sm[12 + q], sm[18 + q]};
+      shli_rot_v4 co = {cm[3 + q], cm[9 + q], cm[15 + q], cm[21 + q]};
+      shli_rot_v4 so = {sm[3 + q], sm[9 + q], sm[15 + q], sm[21 + q]};
+      tv[4 * q] = ce;
+      tv[4 * q + 1] = se;
+      tv[4 * q + 2] = co;
+      tv[4 * q + 3] = so;
+    }
+    shli_rot_band(4, tv, sh, out_sh);
+    if (n > 5) {
+      shli_rot_band(5, tv, sh, out_sh);
+    }
+    if (n > 6) {
+      shli_rot_band(6, tv, sh, out_sh);
+    }
+    if (n > 7) {
+      shli_rot_band(7, tv, sh, out_sh);
+    }
+  }
+}
+#endif
+
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh) {
   shli_real pc[2 * SHLIGHT_MAX_BANDS];
   shli_real ps[2 * SHLIGHT_MAX_BANDS];
@@ -8021,6 +8416,12 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
   if (n < 1) {
     return;
   }
+#if SHLIGHT_ROTATE_FAST
+  if (n <= SHLI_ROT_FAST_BANDS) {
+    shli_sh_rotate_fast(n, R, sh, out_sh);
+    return;
+  }
+#endif
   /* beta: sin from R's third column (accurate near 0 and pi), cos = R_22 */
   sb = SHLIGHT_SQRTR(SHLIGHT_REAL(R[2]) * SHLIGHT_REAL(R[2]) +
                      SHLIGHT_REAL(R[5]) * SHLIGHT_REAL(R[5]));
@@ -8032,7 +8433,8 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
     c1 = SHLIGHT_REAL(R[2]) / sb;
     s1 = SHLIGHT_REAL(R[5]) / sb;
   }
-  if (h > 0.0) {
+  /* not h > 0: a NaN R_22 must reach the output as NaN */
+  if (!(h <= 0.0)) {
     sb = sb / h;
     cb = cb / h;
   } else {
@@ -8046,7 +8448,7 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
   h = SHLIGHT_SQRTR(t * t + w * w);
   cg[0] = 1.0;
   sg[0] = 0.0;
-  if (h > 0.0) {
+  if (!(h <= 0.0)) {
     t = t / h;
     w = w / h;
   } else {

@@ -28,6 +28,7 @@
 #endif
 #define SHLIGHT_SIGN1(x) ((x) < 0.0 ? -1.0 : 1.0)
 #define SHLIGHT_SIMD_EVAL 0
+#define SHLIGHT_ROTATE_FAST 0 /* C: shl_sh_rotate's vector path for n <= 8 */
 #define SHLIGHT_OUTLINE_EVAL 0 /* C: the large band counts run out of line, in the implementation */
 #define SHLIGHT_FTOI(x) int(x)
 #define SHLIGHT_ITOR(i) float(i)
