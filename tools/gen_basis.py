@@ -253,15 +253,17 @@ def declare(L, candidates):
 
 
 def gen_tables():
-    """Reinsch constants for the run-time loop: per (l, m), m < l < MAX_BANDS, at
-    SHLI_SH_TAB[3 * (l * (l - 1) / 2 + m)]: alpha, g, c (double in C)."""
-    vals = []
+    """The run-time loops' Reinsch constants from closed forms (per band l, column m < l):
+    alpha = s1_l q, g = s2_l (l + m) q, c = s2_l (l - m - 1) q with q = 1 / sqrt((l - m)(l + m)),
+    s1_l = sqrt((2l + 1)(2l - 1)), s2_l = sqrt((2l + 1) / (2l - 1)). Tables (double in C):
+    SHLI_SH_RSQ[k] = 1 / sqrt(k) (k = 1..2 MAX_BANDS - 1, [0] = 0), SHLI_SH_S12[2 l + {0, 1}] =
+    s1_l, s2_l. The products are within 5 ulp (double) of the exact constants."""
+    rsq = [0.0] + [1.0 / math.sqrt(k) for k in range(1, 2 * MAX_BANDS)]
+    s12 = [0.0, 0.0]
     for l in range(1, MAX_BANDS):
-        for m in range(0, l):
-            a, g, c = reinsch(l, m)
-            vals += [a, g, c]
+        s12 += [math.sqrt((2 * l + 1) * (2 * l - 1)), math.sqrt((2 * l + 1) / (2 * l - 1))]
     diagv = [diag(m) for m in range(MAX_BANDS)]
-    return vals, diagv
+    return rsq, s12, diagv
 
 
 def fmt_table(ctype, name, size, vals, lit, glsl):
@@ -544,28 +546,10 @@ MIRRORED_TABLES = {'SHLI_ZH_TAB': lambda: zh_table(UNROLLED)}
 
 
 def gen_lane_table():
-    """SHLI_SH_LANES[(SHLI_SH_LANES_AT[c] + l) * 48 + {0, 16, 32} + j]: alpha, g, c of band l for
-    order m = 16 c + j in the across-m SIMD core of n > 16 bands, for the bands where chunk c has
-    started (l >= max(1, 16 c), l < MAX_BANDS; the only ones the core reads); orders m >= l hold
-    the identity step (0, 1, 0). Chunk-major. Returns (values, SHLI_SH_LANES_AT)."""
-    vals, at, rows = [], [], 0
-    for ch in range(MAX_BANDS // 16):
-        l0 = max(1, 16 * ch)
-        at.append(rows - l0)
-        for l in range(l0, MAX_BANDS):
-            a_s, g_s, c_s = [], [], []
-            for j in range(16):
-                m = 16 * ch + j
-                if m < l:
-                    a, g, c = reinsch(l, m)
-                else:
-                    a, g, c = 0.0, 1.0, 0.0
-                a_s.append(a)
-                g_s.append(g)
-                c_s.append(c)
-            vals += a_s + g_s + c_s
-            rows += 1
-    return vals, at
+    """SHLI_SH_RSQF[63 + k] = 1 / sqrt(|k|) in float, k = -63 .. 2 MAX_BANDS - 2 ([63] = 0): the
+    across-m SIMD core of n > 16 bands forms q = 1 / sqrt((l - m)(l + m)) of the 16 orders
+    m = 16 h + j of a chunk from two contiguous loads, at 63 + m - l and 63 + m + l."""
+    return [0.0 if k == 0 else 1.0 / math.sqrt(abs(k)) for k in range(-63, 2 * MAX_BANDS - 1)]
 
 
 def gen_lane_table_scaled():
@@ -696,10 +680,11 @@ def gen_band_weights(nmax):
 
 
 def c_regions():
-    tab, diagv = gen_tables()
+    rsq, s12, diagv = gen_tables()
     R = {}
-    R['sh_tab'] = (fmt_table_packed('shli_real', 'SHLI_SH_TAB', '%d' % len(tab), tab, lit_d, 4) +
-                      fmt_table_packed('float', 'SHLI_SH_DIAG', '%d' % len(diagv), diagv, lit_f, 6))
+    R['sh_tab'] = (fmt_table_packed('shli_real', 'SHLI_SH_RSQ', '%d' % len(rsq), rsq, lit_d, 4) +
+                   fmt_table_packed('shli_real', 'SHLI_SH_S12', '%d' % len(s12), s12, lit_d, 4) +
+                   fmt_table_packed('float', 'SHLI_SH_DIAG', '%d' % len(diagv), diagv, lit_f, 6))
     body = []
     for n in range(1, POLY_BANDS + 1):
         body += [''] + gen_poly(n)
@@ -720,9 +705,7 @@ def c_regions():
                   packed_table('int', 'SHLI_SH_PTAP', ptap, str) +
                   packed_table('int', 'SHLI_SH_PODD', podd, lambda v: '0x%02X' % v) +
                   ['#endif'])
-    lt, lat = lt
-    R['lanes'] = (['#if SHLIGHT_SIMD_EVAL'] + packed_table('float', 'SHLI_SH_LANES', lt, lit_fs) +
-                  ['static const int SHLI_SH_LANES_AT[%d] = {%s};' % (len(lat), ', '.join('%d' % v for v in lat))] +
+    R['lanes'] = (['#if SHLIGHT_SIMD_EVAL'] + packed_table('float', 'SHLI_SH_RSQF', lt, lit_fs) +
                   packed_table('float', 'SHLI_SH_LANES_S', ls, lit_fs) + ['#endif'])
     return R
 
