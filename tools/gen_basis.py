@@ -546,10 +546,18 @@ MIRRORED_TABLES = {'SHLI_ZH_TAB': lambda: zh_table(UNROLLED)}
 
 
 def gen_lane_table():
-    """SHLI_SH_RSQF[63 + k] = 1 / sqrt(|k|) in float, k = -63 .. 2 MAX_BANDS - 2 ([63] = 0): the
-    across-m SIMD core of n > 16 bands forms q = 1 / sqrt((l - m)(l + m)) of the 16 orders
-    m = 16 h + j of a chunk from two contiguous loads, at 63 + m - l and 63 + m + l."""
-    return [0.0 if k == 0 else 1.0 / math.sqrt(abs(k)) for k in range(-63, 2 * MAX_BANDS - 1)]
+    """The across-m SIMD core of n > 16 bands (float): SHLI_SH_LANEQ[l (l - 1) / 2 + m] =
+    s2_l q = sqrt((2l + 1) / (2l - 1)) / sqrt((l - m)(l + m)) for 0 <= m < l < MAX_BANDS (16
+    zeros after: masked loads of a chunk's 16 orders may reach past the last band), from which
+    alpha = (2l - 1) s2_l q, g = (l + m) s2_l q, c = (l - m - 1) s2_l q (gen_tables);
+    SHLI_SH_LANEK[63 + k] = k (k = -63 .. 2 MAX_BANDS - 2, as floats): l + m and m - l + 1 of
+    a chunk's orders from one contiguous load each. SHLI_SH_LANER[15 - k + j] = k - j
+    (j = 0..15): the lane reversal of a chunk's sines, a load instead of two vector operations."""
+    q = []
+    for l in range(1, MAX_BANDS):
+        s2 = math.sqrt((2 * l + 1) / (2 * l - 1))
+        q += [s2 / math.sqrt((l - m) * (l + m)) for m in range(l)]
+    return q + [0.0] * 16, [float(k) for k in range(-63, 2 * MAX_BANDS - 1)]
 
 
 def gen_lane_table_scaled():
@@ -705,7 +713,9 @@ def c_regions():
                   packed_table('int', 'SHLI_SH_PTAP', ptap, str) +
                   packed_table('int', 'SHLI_SH_PODD', podd, lambda v: '0x%02X' % v) +
                   ['#endif'])
-    R['lanes'] = (['#if SHLIGHT_SIMD_EVAL'] + packed_table('float', 'SHLI_SH_RSQF', lt, lit_fs) +
+    R['lanes'] = (['#if SHLIGHT_SIMD_EVAL'] + packed_table('float', 'SHLI_SH_LANEQ', lt[0], lit_fs) +
+                  packed_table('float', 'SHLI_SH_LANEK', lt[1], lit_fs) +
+                  packed_table('int', 'SHLI_SH_LANER', list(range(15, -16, -1)), str) +
                   packed_table('float', 'SHLI_SH_LANES_S', ls, lit_fs) + ['#endif'])
     return R
 
