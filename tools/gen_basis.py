@@ -663,26 +663,26 @@ def gen_band_weights(nmax):
             w('#endif')
     w('}')
     w('')
+    # one constant-trip loop per band, as above (shader compilers unroll it; constant indices)
     w('SHLIGHT_INLINE void shli_sh_zero_grad(int n, float *out_sh, float (*out_grad)[3]) {')
-    w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
     w('  int i;')
+    w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
     w('  for (i = SHLIGHT_UNROLLED_BANDS * SHLIGHT_UNROLLED_BANDS; i < n * n; ++i) {')
     w('    out_sh[i] = 0.0f;')
     w('    SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);')
     w('  }')
     w('#endif')
-    for l in range(nmax):
-        ind = '  '
-        if l > 0:
-            w('#if SHLIGHT_MAX_BANDS > %d' % l)
-            w('  if (n > %d) {' % l)
-            ind = '    '
-        for i in range(l * l, (l + 1) * (l + 1)):
-            w(ind + 'out_sh[%d] = 0.0f;' % i)
-            w(ind + 'SHLIGHT_SET3(out_grad[%d], 0.0f, 0.0f, 0.0f);' % i)
-        if l > 0:
-            w('  }')
-            w('#endif')
+    w('  out_sh[0] = 0.0f;')
+    w('  SHLIGHT_SET3(out_grad[0], 0.0f, 0.0f, 0.0f);')
+    for l in range(1, nmax):
+        w('#if SHLIGHT_MAX_BANDS > %d' % l)
+        w('  if (n > %d) {' % l)
+        w('    for (i = %d; i < %d; ++i) {' % (l * l, (l + 1) * (l + 1)))
+        w('      out_sh[i] = 0.0f;')
+        w('      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);')
+        w('    }')
+        w('  }')
+        w('#endif')
     w('}')
     return L
 
