@@ -546,7 +546,7 @@ MIRRORED_TABLES = {'SHLI_ZH_TAB': lambda: zh_table(UNROLLED)}
 
 
 def gen_lane_table():
-    """The across-m SIMD core of n > 16 bands (float): SHLI_SH_LANEQ[l (l - 1) / 2 + m] =
+    """The float run-time loops of n > 16 bands (the AVX-512 core, the batch): SHLI_SH_LANEQ[l (l - 1) / 2 + m] =
     s2_l q = sqrt((2l + 1) / (2l - 1)) / sqrt((l - m)(l + m)) for 0 <= m < l < MAX_BANDS (16
     zeros after: masked loads of a chunk's 16 orders may reach past the last band), from which
     alpha = (2l - 1) s2_l q, g = (l + m) s2_l q, c = (l - m - 1) s2_l q (gen_tables);
@@ -690,7 +690,9 @@ def gen_band_weights(nmax):
 def c_regions():
     rsq, s12, diagv = gen_tables()
     R = {}
+    lt = gen_lane_table()
     R['sh_tab'] = (fmt_table_packed('shli_real', 'SHLI_SH_RSQ', '%d' % len(rsq), rsq, lit_d, 4) +
+                   packed_table('float', 'SHLI_SH_LANEQ', lt[0], lit_fs) +
                    fmt_table_packed('shli_real', 'SHLI_SH_S12', '%d' % len(s12), s12, lit_d, 4) +
                    fmt_table_packed('float', 'SHLI_SH_DIAG', '%d' % len(diagv), diagv, lit_f, 6))
     body = []
@@ -705,7 +707,6 @@ def c_regions():
     import gen_grad_simd
     R['gradv'] = gen_grad_simd.main()
     R['light_idx'] = gen_light_idx() + [''] + gen_band_weights(UNROLLED)
-    lt = gen_lane_table()
     ls = gen_lane_table_scaled()
     pco, ptap, podd = gen_poly_lanes()
     R['plane'] = (['#if SHLIGHT_SIMD_EVAL'] +
@@ -713,8 +714,7 @@ def c_regions():
                   packed_table('int', 'SHLI_SH_PTAP', ptap, str) +
                   packed_table('int', 'SHLI_SH_PODD', podd, lambda v: '0x%02X' % v) +
                   ['#endif'])
-    R['lanes'] = (['#if SHLIGHT_SIMD_EVAL'] + packed_table('float', 'SHLI_SH_LANEQ', lt[0], lit_fs) +
-                  packed_table('float', 'SHLI_SH_LANEK', lt[1], lit_fs) +
+    R['lanes'] = (['#if SHLIGHT_SIMD_EVAL'] + packed_table('float', 'SHLI_SH_LANEK', lt[1], lit_fs) +
                   packed_table('int', 'SHLI_SH_LANER', list(range(15, -16, -1)), str) +
                   packed_table('float', 'SHLI_SH_LANES_S', ls, lit_fs) + ['#endif'])
     return R
