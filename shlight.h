@@ -12514,7 +12514,8 @@ SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float
 /* The accurate path: the Reinsch-form recurrence of the kernels, all in double, one rounding
    per output (Y = X U formed in double). */
 static void shli_sh_core_accurate(int n, double x, double y, double t, double sg, float *out_y) {
-  double pc = 1.0, ps = 0.0, ec, es, oc, os, sw, xa, dd, ra, rg, rc, xm = 0.28209479177387814;
+  double pc = 1.0, ps = 0.0, ec, es, oc, os, sw, xa, dd, ra, rg, rc, fg, fc,
+         xm = 0.28209479177387814;
   int m, l, b;
   for (m = 0; m < n; ++m) {
     if (m > 0) {
@@ -12531,8 +12532,16 @@ static void shli_sh_core_accurate(int n, double x, double y, double t, double sg
     out_y[m * m + 2 * m] = (float)(xa * ec);
     if (m > 0) out_y[m * m] = (float)(xa * es);
     dd = 0.0;
+    fg = 2.0 * m + 1.0;
+    fc = 0.0;
     for (l = m + 1; l < n; ++l) {
-      shli_sh_reinsch(l, m, &ra, &rg, &rc);
+      /* shli_sh_reinsch with l + m, l - m - 1 counted in double (no int conversions) */
+      double q = SHLI_SH_RSQ[l - m] * SHLI_SH_RSQ[l + m], gq = SHLI_SH_S12[2 * l + 1] * q;
+      ra = SHLI_SH_S12[2 * l] * q;
+      rg = gq * fg;
+      rc = gq * fc;
+      fg += 1.0;
+      fc += 1.0;
       dd = rc * dd - (ra * t) * xa;
       xa = rg * xa + dd;
       sw = ec, ec = oc, oc = sw;
