@@ -3576,7 +3576,8 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, fl
     __m512 wt = _mm512_mul_ps(_mm512_set1_ps((float)(2 * l - 1)), vt);
     const float *lq = SHLI_SH_LANEQ + (l * (l - 1)) / 2;
     for (h = 0; h <= (l >> 4); ++h) { /* chunks whose lowest order m = 16 h has started */
-      __mmask16 mk = (__mmask16) ~(0xFFFFull << (l - 16 * h)); /* orders m < l */
+      /* orders m < l (a 64-bit shift: l - 16 h <= 63; __mmask64, no long long literal) */
+      __mmask16 mk = (__mmask16) ~((__mmask64)0xFFFF << (l - 16 * h));
       __m512 gq = _mm512_maskz_loadu_ps(mk, lq + 16 * h), yc, ys;
       __m512 at = _mm512_mul_ps(gq, wt);
       __m512 cn = _mm512_mul_ps(gq, _mm512_loadu_ps(SHLI_SH_LANEK + 64 + 16 * h - l));
