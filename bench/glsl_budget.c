@@ -122,7 +122,7 @@ static const struct kcase CASES[] = {
     {"values + gradient, n = 9", 9, "basis gradient", NULL, 0.0, 1, 1},
     {"values + gradient, n = 16", 16, "basis gradient", NULL, 5.0, 1, 1},
     {"sphere light + gradient, n = 9", 9, "basis gradient zonal light", NULL, 1.5, 0, 1},
-    {"shl_grid_hermite, n = 5", 5, "basis grid", NULL, 1.0, 0, 0},
+    {"shl_grid_hermite, n = 5", 5, "basis grid", NULL, 1.0, 0, 1},
     {"shl_polygon_moment (one call site)", 4, "basis gradient zonal light edge",
      POLY_MAIN("shl_polygon_moment(v, 4, nrm, 3.5, SHLIGHT_EDGE_AUTO)"), 2.0, 0, 1},
     {"shl_polygon_phong (one call site)", 4, "basis gradient zonal light edge",
