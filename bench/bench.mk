@@ -121,8 +121,13 @@ bench-solid-float: build/bench/solid_angle_float
 	build/bench/solid_angle_float $(SOLID_N)
 .PHONY: bench-solid-float
 
-# shl_sh_rotate against re-projection and stored band matrices (build/bench/bench_%: the rule
-# above); DirectXMath's XMSHRotate joins with a C++ build, see docs/rotation.md
+# shl_sh_rotate against its portable kernel (a second translation unit,
+# tests/test_rotate_portable.c), re-projection and stored band matrices; DirectXMath's
+# XMSHRotate joins with a C++ build, see docs/rotation.md
+build/bench/bench_rotate: bench/bench_rotate.c tests/test_rotate_portable.c shlight.h bench/bench_util.h
+	@mkdir -p build/bench
+	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_rotate.c tests/test_rotate_portable.c -lm
+
 bench-rotate: build/bench/bench_rotate
 	@mkdir -p bench/out
 	build/bench/bench_rotate

@@ -1,4 +1,7 @@
-/* bench_rotate.c - shl_sh_rotate: ns per rotation at n = 2..16, 32, 64, next to
+/* bench_rotate.c - shl_sh_rotate: ns per rotation at n = 2..16, 32, 64 (its C-only path for
+ * n <= 8, the portable kernel above), next to
+ *   - the portable kernel alone at every n (tests/test_rotate_portable.c: SHLIGHT_ROTATE_FAST 0,
+ *     the body the GLSL twin shares), the reference of the error columns;
  *   - re-projection: the rotated function sampled at the 2 n^2 points of a Gauss-Legendre (n) x
  *     uniform-phi (2 n) rule, exact for the product of two n-band functions, and projected back
  *     (two shl_sh_eval and 2 n^2 flops per point: O(n^4));
@@ -6,10 +9,15 @@
  *     any method that rebuilds nothing), measured in the same run (DESIGN.md section 6);
  *   - with -DBENCH_DXM (a C++ build against DirectXMath's SHMath, see docs/rotation.md):
  *     DirectXMath's XMSHRotate, n = 2..6.
- * Error: the worst per-band |out - ref| / |band| over the configurations, ref = shl_sh_rotate
- * (its own error against a long-double reference is 4e-8, tests/test_rotate). Timings: per-thread
- * CPU time, median of 15 samples of >= 2 ms, 16 rotations per sample; noisy on a shared machine:
- * read the ratios. Output: a markdown table on stdout and in bench/out/rotate.md. */
+ * Error: the worst per-band |out - ref| / |band| over the configurations, ref = the portable
+ * kernel (its own error against a long-double reference is 4e-8, tests/test_rotate). Timings:
+ * per-thread CPU time, median of 15 samples of >= 2 ms, the clock read after every
+ * 16 * reps rotations (reps = 8192 / n^2 + 1: a read costs about 1 us here); noisy on a shared
+ * machine: read the ratios. Output: a markdown table on stdout and in bench/out/rotate.md.
+ * Instruction counts (load-robust): `bench_rotate --count VARIANT N K` runs K rotations of one
+ * variant (shl, portable, dxm) and nothing else timed; under
+ *   valgrind --tool=callgrind --toggle-collect='rw_*' build/bench/bench_rotate --count shl 4 1000
+ * the total / K is the count per rotation (docs/rotation.md). */
 #ifndef __cplusplus
 #define _POSIX_C_SOURCE 200809L
 #endif
@@ -17,6 +25,7 @@
 #include "../shlight.h"
 #include "bench_util.h"
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #ifdef BENCH_DXM
 #include "DirectXSH.h"
@@ -135,8 +144,13 @@ static void apply_mats(int n, const float *mat, const float *in, float *out) {
   }
 }
 
+void rotate_portable(int n, const float R[9], const float *sh, float *out_sh);
+
 static __attribute__((noinline)) void run_shl(int j) {
   shl_sh_rotate(g_n, g_R[j], g_in[j], g_out[j]);
+}
+static __attribute__((noinline)) void run_portable(int j) {
+  rotate_portable(g_n, g_R[j], g_in[j], g_out[j]);
 }
 static __attribute__((noinline)) void run_reproj(int j) {
   reproject(g_n, g_R[j], g_in[j], g_out[j]);
@@ -151,16 +165,19 @@ static __attribute__((noinline)) void run_dxm(int j) {
 }
 #endif
 
-static double time_fn(void (*fn)(int)) {
+/* reps: rotations between two clock reads (a CPU-time read costs about 1 us here, which at
+ * 16 rotations per read was most of a small-n rotation's time) */
+static double time_fn(void (*fn)(int), int reps) {
   double s[15], t0, t;
-  int k, j, it;
+  int k, j, r, it;
   for (k = 0; k < 15; ++k) {
     it = 0;
     t0 = now();
     do {
-      for (j = 0; j < NCFG; ++j)
-        fn(j);
-      it += NCFG;
+      for (r = 0; r < reps; ++r)
+        for (j = 0; j < NCFG; ++j)
+          fn(j);
+      it += NCFG * reps;
     } while ((t = now()) - t0 < 2e-3);
     s[k] = (t - t0) / it * 1e9;
   }
@@ -185,15 +202,34 @@ static double err_vs_ref(int n) {
   return worst;
 }
 
+/* --count: K rotations of one variant inside rw_* (callgrind's --toggle-collect) */
+static __attribute__((noinline)) void rw_shl(int n, int k) {
+  int j;
+  for (j = 0; j < k; ++j)
+    shl_sh_rotate(n, g_R[j % NCFG], g_in[j % NCFG], g_out[j % NCFG]);
+}
+static __attribute__((noinline)) void rw_portable(int n, int k) {
+  int j;
+  for (j = 0; j < k; ++j)
+    rotate_portable(n, g_R[j % NCFG], g_in[j % NCFG], g_out[j % NCFG]);
+}
+#ifdef BENCH_DXM
+static __attribute__((noinline)) void rw_dxm(int n, int k) {
+  int j;
+  for (j = 0; j < k; ++j)
+    DirectX::XMSHRotate(g_out[j % NCFG], (size_t)n, g_M[j % NCFG], g_in[j % NCFG]);
+}
+#endif
+
 static const char *fmtd(char *buf, double v, const char *f) {
   snprintf(buf, 32, f, v);
   return buf;
 }
 
-int main(void) {
+int main(int argc, char **argv) {
   static const int ns[] = {2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 32, 64};
   FILE *md;
-  char row[512], f1[32], f2[32], f3[32], f4[32];
+  char row[640], f1[32], f2[32], f3[32], f4[32], f5[32];
   unsigned k;
   int c, i;
   for (c = 0; c < NCFG; ++c) {
@@ -206,38 +242,54 @@ int main(void) {
                                   g_R[c][7], 0, g_R[c][2], g_R[c][5], g_R[c][8], 0, 0, 0, 0, 1);
 #endif
   }
+  if (argc == 5 && strcmp(argv[1], "--count") == 0) {
+    int n = atoi(argv[3]), kk = atoi(argv[4]);
+    if (strcmp(argv[2], "shl") == 0) rw_shl(n, kk);
+    if (strcmp(argv[2], "portable") == 0) rw_portable(n, kk);
+#ifdef BENCH_DXM
+    if (strcmp(argv[2], "dxm") == 0) rw_dxm(n, kk);
+#endif
+    g_sink = g_out[0][0];
+    return 0;
+  }
   md = fopen("bench/out/rotate.md", "w");
   snprintf(row, sizeof row,
-           "| n | shl_sh_rotate ns | re-projection ns | stored matrices ns (yardstick) | "
-           "rotate / yardstick | re-projection error | XMSHRotate ns | XMSHRotate error |\n"
-           "|---|---|---|---|---|---|---|---|\n");
+           "| n | shl_sh_rotate ns | portable kernel ns | re-projection ns | stored matrices ns "
+           "(yardstick) | rotate / yardstick | shl_sh_rotate error | re-projection error | "
+           "XMSHRotate ns | XMSHRotate error | XMSHRotate / rotate |\n"
+           "|---|---|---|---|---|---|---|---|---|---|---|\n");
   fputs(row, stdout);
   if (md) fputs(row, md);
   for (k = 0; k < sizeof ns / sizeof ns[0]; ++k) {
     int n = ns[k];
-    double t_shl, t_rp, t_m = 0.0, e_rp, t_dx = -1.0, e_dx = -1.0;
+    double t_shl, t_po, t_rp, t_m = 0.0, e_sh, e_rp, t_dx = -1.0, e_dx = -1.0;
+    int reps = 8192 / (n * n) + 1;
     g_n = n;
     setup_quad(n);
     for (c = 0; c < NCFG; ++c)
-      shl_sh_rotate(n, g_R[c], g_in[c], g_ref[c]);
-    t_shl = time_fn(run_shl);
-    t_rp = time_fn(run_reproj);
+      rotate_portable(n, g_R[c], g_in[c], g_ref[c]);
+    t_po = time_fn(run_portable, reps);
+    t_shl = time_fn(run_shl, reps);
+    e_sh = err_vs_ref(n);
+    t_rp = time_fn(run_reproj, 1);
     e_rp = err_vs_ref(n);
     if (n <= 16) {
       for (c = 0; c < NCFG; ++c)
         build_mats(n, c);
-      t_m = time_fn(run_mats);
+      t_m = time_fn(run_mats, reps);
     }
 #ifdef BENCH_DXM
     if (n <= 6) {
-      t_dx = time_fn(run_dxm);
+      t_dx = time_fn(run_dxm, reps);
       e_dx = err_vs_ref(n);
     }
 #endif
-    snprintf(row, sizeof row, "| %d | %.1f | %.1f | %s | %s | %.2g | %s | %s |\n", n, t_shl, t_rp,
-             t_m > 0 ? fmtd(f1, t_m, "%.1f") : "-", t_m > 0 ? fmtd(f2, t_shl / t_m, "%.2f") : "-",
-             e_rp, t_dx > 0 ? fmtd(f3, t_dx, "%.1f") : "-",
-             t_dx > 0 ? fmtd(f4, e_dx, "%.2g") : "-");
+    snprintf(row, sizeof row,
+             "| %d | %.1f | %.1f | %.1f | %s | %s | %.2g | %.2g | %s | %s | %s |\n", n, t_shl, t_po,
+             t_rp, t_m > 0 ? fmtd(f1, t_m, "%.1f") : "-",
+             t_m > 0 ? fmtd(f2, t_shl / t_m, "%.2f") : "-", e_sh, e_rp,
+             t_dx > 0 ? fmtd(f3, t_dx, "%.1f") : "-", t_dx > 0 ? fmtd(f4, e_dx, "%.2g") : "-",
+             t_dx > 0 ? fmtd(f5, t_dx / t_shl, "%.2f") : "-");
     fputs(row, stdout);
     if (md) fputs(row, md);
     fflush(stdout);

@@ -362,7 +362,8 @@ static const char *const ar_glsl[3] = {
     "- view.z);\n"
     "    int nm = RD_NM + min(rd_size.x, 0); /* run-time bounds: one copy of the kernels */\n"
     "    vec3 v[SHLIGHT_POLYGON_MAX];\n"
-    "    for (int j = 0; j < RD_NL; ++j) {\n"
+    "    int nl = int(rd_buf1[0]) + min(rd_size.x, 0); /* this draw's lights: 1 .. nl */\n"
+    "    for (int j = 1; j <= nl; ++j) {\n"
     "      int o = RD_LF * j;\n"
     "      int type = int(rd_buf1[o]);\n"
     "      int nv = type == 0 ? int(rd_buf1[o + 1]) : 8;\n"
@@ -434,12 +435,19 @@ static const char *const ar_glsl[3] = {
     "      }\n"
     "    }\n"
     "  }\n"
-    "  rd_out0 = vec4(acc0, 1.0);\n"
+    "  /* llvmpipe ends every loop of an invocation once all its loops together have run 65535\n"
+    "     iterations (one shared loop limiter, no error): a loop of 2 iterations that runs 1 says\n"
+    "     that happened (w = 0: the host draws fewer lights at a time) */\n"
+    "  int left = 0;\n"
+    "  for (int i = 0; i < 2 + min(rd_size.x, 0); ++i)\n"
+    "    left = left + 1;\n"
+    "  float w = left == 2 ? 1.0 : 0.0;\n"
+    "  rd_out0 = vec4(acc0, w);\n"
     "#if RD_NM > 1\n"
-    "  rd_out1 = vec4(acc1, 1.0);\n"
+    "  rd_out1 = vec4(acc1, w);\n"
     "#endif\n"
     "#if RD_NM > 2\n"
-    "  rd_out2 = vec4(acc2, 1.0);\n"
+    "  rd_out2 = vec4(acc2, w);\n"
     "#endif\n"
     "}\n"};
 
@@ -967,27 +975,33 @@ static double ar_gt_image(const rd_run *run, double tol, const char *label, rd_i
   return rd_cpu_ms() - t0;
 }
 
-/* GL images of methods m0 .. m0 + nm - 1 in one shader (one draw computes all of them) */
+/* GL images of methods m0 .. m0 + nm - 1 in one shader (one draw computes all of them). The
+   lights go to the GPU in draws of at most *io_chunk lights (0: all), summed here: the buffer
+   is a header of AR_LF floats ([0] the draw's light count) and the draw's lights, so the shader
+   source is the same for every draw (compiled once where Mesa's shader cache is on). llvmpipe
+   ends every loop of an invocation once its loops together have run 65535 iterations, without
+   an error; the shader's sentinel reports it (w != 1) and the lights are then drawn again in
+   draws of half as many (manylights: 120 lights at 64x48 in 2 draws of 60). *ms is the sum of
+   the draws' times. */
 static int ar_gl_images(const rd_run *run, const float *lb, int nl, int m0, int nm, rd_image *img,
-                        double *ms) {
+                        double *ms, int *io_chunk) {
   const rd_scene *s = run->scene;
-  int ggx = 0;
+  int ggx = 0, chunk = *io_chunk > 0 && *io_chunk < nl ? *io_chunk : nl, over = 1, j0, c;
   char defs[512];
   rd_gl_pass p;
   const float *bufs[1];
   size_t bf[1], np = (size_t)run->gb->w * (size_t)run->gb->h, i;
-  float *out, *outp[3];
+  float *out, *outp[3], *cb;
   char *body;
-  int rc, k;
+  int rc = 0, k;
+  double tot = 0.0, dms = 0.0;
   memset(&p, 0, sizeof p);
   for (k = 0; k < s->nmats; k++)
     ggx = ggx || s->mats[k].brdf == RD_BRDF_GGX;
   snprintf(defs, sizeof defs,
-           "#define SHLIGHT_MAX_BANDS 1\n#define RD_NL %d\n#define RD_LF %d\n#define RD_NM %d\n"
+           "#define SHLIGHT_MAX_BANDS 1\n#define RD_LF %d\n#define RD_NM %d\n"
            "#define RD_GGX %d\nconst int RD_METHODS[3] = int[3](%d, %d, %d);\n",
-           nl, AR_LF, nm, ggx, ar_methods[m0], ar_methods[(m0 + 1) % 3], ar_methods[(m0 + 2) % 3]);
-  bufs[0] = lb;
-  bf[0] = (size_t)nl * AR_LF;
+           AR_LF, nm, ggx, ar_methods[m0], ar_methods[(m0 + 1) % 3], ar_methods[(m0 + 2) % 3]);
   p.defines = defs;
   p.includes = ar_includes;
   p.ninclude = (int)(sizeof ar_includes / sizeof ar_includes[0]);
@@ -1001,24 +1015,54 @@ static int ar_gl_images(const rd_run *run, const float *lb, int nl, int m0, int 
     for (k = 0; k < (int)(sizeof ar_glsl / sizeof ar_glsl[0]); k++)
       strcat(body, ar_glsl[k]);
   }
+  out = (float *)malloc(sizeof(float) * 4u * np * (size_t)nm);
+  cb = (float *)malloc(sizeof(float) * AR_LF * ((size_t)nl + 1u));
+  if (!out || !cb) {
+    free(out);
+    free(cb);
+    free(body);
+    return -1;
+  }
+  bufs[0] = cb;
   p.body = body;
   p.bufs = bufs;
   p.buf_floats = bf;
   p.nbuf = 1;
   p.nout = nm;
-  out = (float *)malloc(sizeof(float) * 4u * np * (size_t)nm);
-  if (!out) return -1;
   for (k = 0; k < nm; k++)
     outp[k] = out + 4u * np * (size_t)k;
-  rc = rd_gl_run(run->scene, run->gb, &p, outp, run->reps > 0 ? run->reps : 1, ms);
-  if (rc == 0)
+  while (over && rc == 0) {
+    over = 0;
+    tot = 0.0;
     for (k = 0; k < nm; k++)
-      for (i = 0; i < np; i++) {
-        img[k].rgb[3 * i] = outp[k][4 * i];
-        img[k].rgb[3 * i + 1] = outp[k][4 * i + 1];
-        img[k].rgb[3 * i + 2] = outp[k][4 * i + 2];
-      }
+      memset(img[k].rgb, 0, sizeof(float) * 3u * np);
+    for (j0 = 0; j0 < nl && rc == 0; j0 += chunk) {
+      c = nl - j0 < chunk ? nl - j0 : chunk;
+      memset(cb, 0, sizeof(float) * AR_LF);
+      cb[0] = (float)c;
+      memcpy(cb + AR_LF, lb + (size_t)j0 * AR_LF, sizeof(float) * AR_LF * (size_t)c);
+      bf[0] = (size_t)(c + 1) * AR_LF;
+      rc = rd_gl_run(run->scene, run->gb, &p, outp, run->reps > 0 ? run->reps : 1, &dms);
+      tot += dms;
+      if (rc == 0)
+        for (k = 0; k < nm; k++)
+          for (i = 0; i < np; i++) {
+            over = over || outp[k][4 * i + 3] != 1.0f;
+            img[k].rgb[3 * i] += outp[k][4 * i];
+            img[k].rgb[3 * i + 1] += outp[k][4 * i + 1];
+            img[k].rgb[3 * i + 2] += outp[k][4 * i + 2];
+          }
+    }
+    if (over && chunk == 1) {
+      fprintf(stderr, "area: one light alone exceeds llvmpipe's loop limit; GL image wrong\n");
+      over = 0;
+    }
+    if (over) chunk = (chunk + 1) / 2;
+  }
+  *ms = tot;
+  *io_chunk = chunk;
   free(out);
+  free(cb);
   free(body);
   return rc;
 }
@@ -1073,7 +1117,7 @@ int rd_pass_area(rd_run *run) {
   if (run->use_gl) {
     /* CI (gt <= 1): the three methods in one shader and one draw (llvmpipe compile time), the
        draw's time reported for each; gt 2: one shader per method, per-method timings */
-    int per = run->gt >= 2, g;
+    int per = run->gt >= 2, g, chunk = 0;
     for (g = 0; g < (per ? 3 : 1); g++) {
       rd_image im[3];
       int nm = per ? 1 : 3, ok = 1;
@@ -1082,7 +1126,7 @@ int rd_pass_area(rd_run *run) {
         im[k] = rd_image_new(gb->w, gb->h);
         ok = ok && im[k].rgb;
       }
-      if (ok && ar_gl_images(run, lb, nl, g, nm, im, &ms) == 0) {
+      if (ok && ar_gl_images(run, lb, nl, g, nm, im, &ms, &chunk) == 0) {
         for (k = 0; k < nm; k++)
           ar_add(&outs[nout++], ar_names[g + k], "gl", im[k], ms, mem, ar_tol[g + k]);
       } else {
@@ -1094,8 +1138,12 @@ int rd_pass_area(rd_run *run) {
       }
     }
     if (!per && rc == 0)
-      printf("area gl: the three methods run in one shader and one draw (llvmpipe compile time; "
-             "--gt 2 times them apart): gl ms is that draw's\n");
+      printf("area gl: the three methods run in one shader and one draw per group of lights "
+             "(llvmpipe compile time; --gt 2 times them apart): gl ms is that of the draws\n");
+    if (rc == 0 && chunk < nl)
+      printf("area gl: %d lights in draws of at most %d (llvmpipe's limit of 65535 loop "
+             "iterations per invocation); gl ms is the draws' sum\n",
+             nl, chunk);
   }
   if (run->gt) {
     /* absolute tolerance of the unit-radiance integrals per light; gt_coarse: 10x looser */

@@ -541,34 +541,49 @@ shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real
   shli_real z1 = (1.5707963267948966 - lo) / beta;
   shli_real s0 = SHLIGHT_LOGR(z0 + SHLIGHT_SQRTR(z0 * z0 + 1.0));
   shli_real s1 = SHLIGHT_LOGR(z1 + SHLIGHT_SQRTR(z1 * z1 + 1.0));
-  shli_real r = 0.5 * (s1 - s0);
-  shli_real cur;
-  shli_real prev;
-  shli_real h;
+  shli_real h = s1 - s0;
+  shli_real hg = h;
+  shli_real cur = 0.0;
+  shli_real prev = 0.0;
+  shli_real pm;
+  shli_real pr;
   int np = 1;
-  int l;
-  int k;
-  if (!(r > 0.0)) {
+  int l = 0;
+  int k = 0;
+  if (!(h > 0.0)) {
     return 0.0;
   }
-  cur = shli_stokes_gl5(0.5 * (s0 + s1), r, beta, c2, p, q, kind);
-  for (l = 1; l <= lev; ++l) {
-    prev = cur;
-    np = 2 * np;
-    h = (s1 - s0) / SHLIGHT_ITOR(np);
-    cur = 0.0;
-    for (k = 1; k < np; ++k) {
-      cur = cur + shli_stokes_gl5(s0 + (SHLIGHT_ITOR(k) + 0.5) * h, 0.5 * h, beta, c2, p, q, kind);
+  /* one loop over the panels of every level and one call of the 5-node rule (GLSL inlines
+     each call site: one copy instead of four per half-arc). Level l has np = 2^l panels of
+     width h: k = 0 .. np - 2 the panels 1 .. np - 1; the one at s0 (theta = pi/2, where h
+     has the branch point |cos|^(e+1) for non-integer e) cut geometrically toward s0: l
+     panels of ratio 0.15 (k = np - 1 .. np + l - 2), then the rest (k = np + l - 1). Level 0
+     is the single panel [s0, s1]. */
+  while (l <= lev) {
+    if (k < np - 1) {
+      pm = s0 + (SHLIGHT_ITOR(k + 1) + 0.5) * h;
+      pr = 0.5 * h;
+    } else if (k < np + l - 1) {
+      pm = s0 + 0.575 * hg;
+      pr = 0.425 * hg;
+      hg = 0.15 * hg;
+    } else {
+      pm = s0 + 0.5 * hg;
+      pr = 0.5 * hg;
     }
-    /* the panel at s0 (theta = pi/2, where h has the branch point |cos|^(e+1) for non-integer
-       e) cut geometrically toward s0: l panels, ratio 0.15, then the rest */
-    for (k = 0; k < l; ++k) {
-      cur = cur + shli_stokes_gl5(s0 + 0.575 * h, 0.425 * h, beta, c2, p, q, kind);
-      h = 0.15 * h;
-    }
-    cur = cur + shli_stokes_gl5(s0 + 0.5 * h, 0.5 * h, beta, c2, p, q, kind);
-    if (SHLIGHT_ABSR(cur - prev) <= SHLIGHT_ADAPT_TOL) {
-      return cur;
+    cur = cur + shli_stokes_gl5(pm, pr, beta, c2, p, q, kind);
+    k = k + 1;
+    if (k == np + l) {
+      if (l == lev || (l > 0 && SHLIGHT_ABSR(cur - prev) <= SHLIGHT_ADAPT_TOL)) {
+        return cur;
+      }
+      prev = cur;
+      cur = 0.0;
+      l = l + 1;
+      np = 2 * np;
+      h = (s1 - s0) / SHLIGHT_ITOR(np);
+      hg = h;
+      k = 0;
     }
   }
   return cur;
@@ -576,14 +591,26 @@ shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real
 
 shli_real shli_stokes_arc(shli_real ta, shli_real tb, shli_real beta, shli_real c2, shli_real p,
                           shli_real q, int kind, int lev) {
+  shli_real lo = ta;
+  shli_real hi = tb;
+  shli_real hi2 = 0.0;
+  shli_real sum = 0.0;
+  int nh = 1;
+  int k;
   if (ta < 0.0 && tb > 0.0) {
-    return shli_stokes_half(0.0, -ta, beta, c2, p, q, kind, lev) +
-           shli_stokes_half(0.0, tb, beta, c2, p, q, kind, lev);
+    lo = 0.0;
+    hi = -ta;
+    hi2 = tb;
+    nh = 2;
+  } else if (tb <= 0.0) {
+    lo = -tb;
+    hi = -ta;
   }
-  if (tb <= 0.0) {
-    return shli_stokes_half(-tb, -ta, beta, c2, p, q, kind, lev);
+  for (k = 0; k < nh; ++k) {
+    sum = sum + shli_stokes_half(lo, hi, beta, c2, p, q, kind, lev);
+    hi = hi2;
   }
-  return shli_stokes_half(ta, tb, beta, c2, p, q, kind, lev);
+  return sum;
 }
 
 shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
@@ -684,30 +711,46 @@ shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az, shli_real bx,
   return w * shli_edge_fit(pa, pb, SHLIGHT_SQRTR(c2), nf, method);
 }
 
-int shli_poly_clip_unit(inout shli_real io_px[SHLIGHT_CLIP_MAX],
-                        inout shli_real io_py[SHLIGHT_CLIP_MAX],
-                        inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real rx, shli_real ry,
-                        shli_real rz) {
+int shli_poly_clip_unit2(inout shli_real io_px[SHLIGHT_CLIP_MAX],
+                         inout shli_real io_py[SHLIGHT_CLIP_MAX],
+                         inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real nx,
+                         shli_real ny, shli_real nz, int npre, shli_real rx, shli_real ry,
+                         shli_real rz) {
   shli_real ox = 0.0;
   shli_real oy = 0.0;
   shli_real oz = 0.0;
-  shli_real orient;
+  shli_real orient = 0.0;
+  shli_real mx = nx;
+  shli_real my = ny;
+  shli_real mz = nz;
   shli_real l;
-  int nc;
+  int nc = nv;
+  int pass = 1 - npre;
   int i;
   int j;
-  for (i = 0; i < nv; ++i) {
-    j = i + 1;
-    if (j == nv) {
-      j = 0;
+  while (pass < 2) {
+    if (pass == 1) {
+      for (i = 0; i < nc; ++i) {
+        j = i + 1;
+        if (j == nc) {
+          j = 0;
+        }
+        ox = ox + io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+        oy = oy + io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+        oz = oz + io_px[i] * io_py[j] - io_py[i] * io_px[j];
+      }
+      orient = ox * io_px[0] + oy * io_py[0] + oz * io_pz[0];
+      mx = rx;
+      my = ry;
+      mz = rz;
     }
-    ox = ox + io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
-    oy = oy + io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
-    oz = oz + io_px[i] * io_py[j] - io_py[i] * io_px[j];
+    nc = shli_poly_clip(io_px, io_py, io_pz, nc, mx, my, mz);
+    if (nc < 3) {
+      return 0;
+    }
+    pass = pass + 1;
   }
-  orient = ox * io_px[0] + oy * io_py[0] + oz * io_pz[0];
-  nc = shli_poly_clip(io_px, io_py, io_pz, nv, rx, ry, rz);
-  if (nc < 3 || !(orient != 0.0)) {
+  if (!(orient != 0.0)) {
     return 0;
   }
   for (i = 0; i < nc; ++i) {
@@ -725,10 +768,18 @@ int shli_poly_clip_unit(inout shli_real io_px[SHLIGHT_CLIP_MAX],
   return nc;
 }
 
+int shli_poly_clip_unit(inout shli_real io_px[SHLIGHT_CLIP_MAX],
+                        inout shli_real io_py[SHLIGHT_CLIP_MAX],
+                        inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real rx, shli_real ry,
+                        shli_real rz) {
+  return shli_poly_clip_unit2(io_px, io_py, io_pz, nv, rx, ry, rz, 0, rx, ry, rz);
+}
+
 shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
                                 inout shli_real io_py[SHLIGHT_CLIP_MAX],
-                                inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real rx,
-                                shli_real ry, shli_real rz, shli_real e, int method) {
+                                inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real nx,
+                                shli_real ny, shli_real nz, int npre, shli_real rx, shli_real ry,
+                                shli_real rz, shli_real e, int method) {
   shli_real ax;
   shli_real ay;
   shli_real az;
@@ -740,7 +791,7 @@ shli_real shli_polygon_moment_r(inout shli_real io_px[SHLIGHT_CLIP_MAX],
   shli_real cx;
   shli_real cy;
   shli_real cz;
-  int nc = shli_poly_clip_unit(io_px, io_py, io_pz, nv, rx, ry, rz);
+  int nc = shli_poly_clip_unit2(io_px, io_py, io_pz, nv, nx, ny, nz, npre, rx, ry, rz);
   int sg = 1;
   int i;
   int j;
@@ -859,7 +910,7 @@ float shl_polygon_moment(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 axis, float e
   if (mth != SHLIGHT_EDGE_QUADRATURE && mth != SHLIGHT_EDGE_STOKES_ADAPT) {
     e = SHLIGHT_ITOR(SHLIGHT_FTOI(e + 0.5));
   }
-  return SHLIGHT_FLOAT(shli_polygon_moment_r(px, py, pz, nv, rx, ry, rz, e, mth));
+  return SHLIGHT_FLOAT(shli_polygon_moment_r(px, py, pz, nv, rx, ry, rz, 0, rx, ry, rz, e, mth));
 }
 
 shli_real shli_phong_arrays(inout shli_real io_px[SHLIGHT_CLIP_MAX],
@@ -872,7 +923,6 @@ shli_real shli_phong_arrays(inout shli_real io_px[SHLIGHT_CLIP_MAX],
   float fz[SHLIGHT_CLIP_MAX];
   shli_real e = exponent;
   int i;
-  int nc;
   int mth = method;
   if (mth < SHLIGHT_EDGE_EXACT || mth > SHLIGHT_EDGE_FAST) {
     mth = SHLIGHT_EDGE_AUTO; /* an unknown method id */
@@ -906,10 +956,7 @@ shli_real shli_phong_arrays(inout shli_real io_px[SHLIGHT_CLIP_MAX],
       return 0.0;
     }
   }
-  nc = shli_poly_clip(io_px, io_py, io_pz, nv, nx, ny, nz);
-  if (nc < 3) {
-    return 0.0;
-  }
+  /* the clip to u.n >= 0 happens in shli_polygon_moment_r (one clip call site) */
   if (mth == SHLIGHT_EDGE_AUTO) {
     mth = SHLIGHT_EDGE_STOKES_ADAPT;
     if (e <= 16.0 && e == SHLIGHT_ITOR(SHLIGHT_FTOI(e))) {
@@ -926,7 +973,7 @@ shli_real shli_phong_arrays(inout shli_real io_px[SHLIGHT_CLIP_MAX],
     e = SHLIGHT_ITOR(SHLIGHT_FTOI(e + 0.5));
   }
   return (e + 1.0) * 0.15915494309189534 *
-         shli_polygon_moment_r(io_px, io_py, io_pz, nc, rx, ry, rz, e, mth);
+         shli_polygon_moment_r(io_px, io_py, io_pz, nv, nx, ny, nz, 1, rx, ry, rz, e, mth);
 }
 
 shli_real shli_polygon_phong_r(vec3 v[SHLIGHT_POLYGON_MAX], int nv, shli_real nx, shli_real ny,

@@ -137,6 +137,25 @@ void shl_grid_hermite(int n, float c8[8 * SHLIGHT_MAX_COEFFS], vec3 g8[8 * SHLIG
              0.33333333f * (sb[0] * sb[1] * sx * sy));
   }
   nn = n * n;
+#if SHLIGHT_FLAT_LOOPS
+  /* GLSL: one flat loop over (i, k), k fastest, with the same sums as the nested loop below,
+     which shader compilers unroll into 8 n^2 terms (llvmpipe: 13 s to compile at n = 5,
+     against 0.3 s for this form); C keeps the nested loop (2x faster with gcc at n = 9) */
+  s = 0.0f;
+  i = 0;
+  k = 0;
+  for (j = 0; j < 8 * nn; ++j) {
+    o = k * nn + i;
+    s = s + (wv[k] * c8[o] + wx[k] * g8[o][0] + wy[k] * g8[o][1] + wz[k] * g8[o][2]);
+    k = k + 1;
+    if (k == 8) {
+      out_sh[i] = s;
+      s = 0.0f;
+      k = 0;
+      i = i + 1;
+    }
+  }
+#else
   for (i = 0; i < nn; ++i) {
     s = 0.0f;
     for (k = 0; k < 8; ++k) {
@@ -145,6 +164,7 @@ void shl_grid_hermite(int n, float c8[8 * SHLIGHT_MAX_COEFFS], vec3 g8[8 * SHLIG
     }
     out_sh[i] = s;
   }
+#endif
 }
 
 #endif

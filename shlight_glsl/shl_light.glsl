@@ -216,8 +216,8 @@ void shli_sh_band_weights(int n, float kv[SHLIGHT_MAX_BANDS], float kg[SHLIGHT_M
 
 void shli_sh_zero_grad(int n, out float out_sh[SHLIGHT_MAX_COEFFS],
                        out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
   int i;
+#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
   for (i = SHLIGHT_UNROLLED_BANDS * SHLIGHT_UNROLLED_BANDS; i < n * n; ++i) {
     out_sh[i] = 0.0f;
     SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
@@ -227,572 +227,122 @@ void shli_sh_zero_grad(int n, out float out_sh[SHLIGHT_MAX_COEFFS],
   SHLIGHT_SET3(out_grad[0], 0.0f, 0.0f, 0.0f);
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
-    out_sh[1] = 0.0f;
-    SHLIGHT_SET3(out_grad[1], 0.0f, 0.0f, 0.0f);
-    out_sh[2] = 0.0f;
-    SHLIGHT_SET3(out_grad[2], 0.0f, 0.0f, 0.0f);
-    out_sh[3] = 0.0f;
-    SHLIGHT_SET3(out_grad[3], 0.0f, 0.0f, 0.0f);
+    for (i = 1; i < 4; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 2
   if (n > 2) {
-    out_sh[4] = 0.0f;
-    SHLIGHT_SET3(out_grad[4], 0.0f, 0.0f, 0.0f);
-    out_sh[5] = 0.0f;
-    SHLIGHT_SET3(out_grad[5], 0.0f, 0.0f, 0.0f);
-    out_sh[6] = 0.0f;
-    SHLIGHT_SET3(out_grad[6], 0.0f, 0.0f, 0.0f);
-    out_sh[7] = 0.0f;
-    SHLIGHT_SET3(out_grad[7], 0.0f, 0.0f, 0.0f);
-    out_sh[8] = 0.0f;
-    SHLIGHT_SET3(out_grad[8], 0.0f, 0.0f, 0.0f);
+    for (i = 4; i < 9; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 3
   if (n > 3) {
-    out_sh[9] = 0.0f;
-    SHLIGHT_SET3(out_grad[9], 0.0f, 0.0f, 0.0f);
-    out_sh[10] = 0.0f;
-    SHLIGHT_SET3(out_grad[10], 0.0f, 0.0f, 0.0f);
-    out_sh[11] = 0.0f;
-    SHLIGHT_SET3(out_grad[11], 0.0f, 0.0f, 0.0f);
-    out_sh[12] = 0.0f;
-    SHLIGHT_SET3(out_grad[12], 0.0f, 0.0f, 0.0f);
-    out_sh[13] = 0.0f;
-    SHLIGHT_SET3(out_grad[13], 0.0f, 0.0f, 0.0f);
-    out_sh[14] = 0.0f;
-    SHLIGHT_SET3(out_grad[14], 0.0f, 0.0f, 0.0f);
-    out_sh[15] = 0.0f;
-    SHLIGHT_SET3(out_grad[15], 0.0f, 0.0f, 0.0f);
+    for (i = 9; i < 16; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 4
   if (n > 4) {
-    out_sh[16] = 0.0f;
-    SHLIGHT_SET3(out_grad[16], 0.0f, 0.0f, 0.0f);
-    out_sh[17] = 0.0f;
-    SHLIGHT_SET3(out_grad[17], 0.0f, 0.0f, 0.0f);
-    out_sh[18] = 0.0f;
-    SHLIGHT_SET3(out_grad[18], 0.0f, 0.0f, 0.0f);
-    out_sh[19] = 0.0f;
-    SHLIGHT_SET3(out_grad[19], 0.0f, 0.0f, 0.0f);
-    out_sh[20] = 0.0f;
-    SHLIGHT_SET3(out_grad[20], 0.0f, 0.0f, 0.0f);
-    out_sh[21] = 0.0f;
-    SHLIGHT_SET3(out_grad[21], 0.0f, 0.0f, 0.0f);
-    out_sh[22] = 0.0f;
-    SHLIGHT_SET3(out_grad[22], 0.0f, 0.0f, 0.0f);
-    out_sh[23] = 0.0f;
-    SHLIGHT_SET3(out_grad[23], 0.0f, 0.0f, 0.0f);
-    out_sh[24] = 0.0f;
-    SHLIGHT_SET3(out_grad[24], 0.0f, 0.0f, 0.0f);
+    for (i = 16; i < 25; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 5
   if (n > 5) {
-    out_sh[25] = 0.0f;
-    SHLIGHT_SET3(out_grad[25], 0.0f, 0.0f, 0.0f);
-    out_sh[26] = 0.0f;
-    SHLIGHT_SET3(out_grad[26], 0.0f, 0.0f, 0.0f);
-    out_sh[27] = 0.0f;
-    SHLIGHT_SET3(out_grad[27], 0.0f, 0.0f, 0.0f);
-    out_sh[28] = 0.0f;
-    SHLIGHT_SET3(out_grad[28], 0.0f, 0.0f, 0.0f);
-    out_sh[29] = 0.0f;
-    SHLIGHT_SET3(out_grad[29], 0.0f, 0.0f, 0.0f);
-    out_sh[30] = 0.0f;
-    SHLIGHT_SET3(out_grad[30], 0.0f, 0.0f, 0.0f);
-    out_sh[31] = 0.0f;
-    SHLIGHT_SET3(out_grad[31], 0.0f, 0.0f, 0.0f);
-    out_sh[32] = 0.0f;
-    SHLIGHT_SET3(out_grad[32], 0.0f, 0.0f, 0.0f);
-    out_sh[33] = 0.0f;
-    SHLIGHT_SET3(out_grad[33], 0.0f, 0.0f, 0.0f);
-    out_sh[34] = 0.0f;
-    SHLIGHT_SET3(out_grad[34], 0.0f, 0.0f, 0.0f);
-    out_sh[35] = 0.0f;
-    SHLIGHT_SET3(out_grad[35], 0.0f, 0.0f, 0.0f);
+    for (i = 25; i < 36; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 6
   if (n > 6) {
-    out_sh[36] = 0.0f;
-    SHLIGHT_SET3(out_grad[36], 0.0f, 0.0f, 0.0f);
-    out_sh[37] = 0.0f;
-    SHLIGHT_SET3(out_grad[37], 0.0f, 0.0f, 0.0f);
-    out_sh[38] = 0.0f;
-    SHLIGHT_SET3(out_grad[38], 0.0f, 0.0f, 0.0f);
-    out_sh[39] = 0.0f;
-    SHLIGHT_SET3(out_grad[39], 0.0f, 0.0f, 0.0f);
-    out_sh[40] = 0.0f;
-    SHLIGHT_SET3(out_grad[40], 0.0f, 0.0f, 0.0f);
-    out_sh[41] = 0.0f;
-    SHLIGHT_SET3(out_grad[41], 0.0f, 0.0f, 0.0f);
-    out_sh[42] = 0.0f;
-    SHLIGHT_SET3(out_grad[42], 0.0f, 0.0f, 0.0f);
-    out_sh[43] = 0.0f;
-    SHLIGHT_SET3(out_grad[43], 0.0f, 0.0f, 0.0f);
-    out_sh[44] = 0.0f;
-    SHLIGHT_SET3(out_grad[44], 0.0f, 0.0f, 0.0f);
-    out_sh[45] = 0.0f;
-    SHLIGHT_SET3(out_grad[45], 0.0f, 0.0f, 0.0f);
-    out_sh[46] = 0.0f;
-    SHLIGHT_SET3(out_grad[46], 0.0f, 0.0f, 0.0f);
-    out_sh[47] = 0.0f;
-    SHLIGHT_SET3(out_grad[47], 0.0f, 0.0f, 0.0f);
-    out_sh[48] = 0.0f;
-    SHLIGHT_SET3(out_grad[48], 0.0f, 0.0f, 0.0f);
+    for (i = 36; i < 49; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 7
   if (n > 7) {
-    out_sh[49] = 0.0f;
-    SHLIGHT_SET3(out_grad[49], 0.0f, 0.0f, 0.0f);
-    out_sh[50] = 0.0f;
-    SHLIGHT_SET3(out_grad[50], 0.0f, 0.0f, 0.0f);
-    out_sh[51] = 0.0f;
-    SHLIGHT_SET3(out_grad[51], 0.0f, 0.0f, 0.0f);
-    out_sh[52] = 0.0f;
-    SHLIGHT_SET3(out_grad[52], 0.0f, 0.0f, 0.0f);
-    out_sh[53] = 0.0f;
-    SHLIGHT_SET3(out_grad[53], 0.0f, 0.0f, 0.0f);
-    out_sh[54] = 0.0f;
-    SHLIGHT_SET3(out_grad[54], 0.0f, 0.0f, 0.0f);
-    out_sh[55] = 0.0f;
-    SHLIGHT_SET3(out_grad[55], 0.0f, 0.0f, 0.0f);
-    out_sh[56] = 0.0f;
-    SHLIGHT_SET3(out_grad[56], 0.0f, 0.0f, 0.0f);
-    out_sh[57] = 0.0f;
-    SHLIGHT_SET3(out_grad[57], 0.0f, 0.0f, 0.0f);
-    out_sh[58] = 0.0f;
-    SHLIGHT_SET3(out_grad[58], 0.0f, 0.0f, 0.0f);
-    out_sh[59] = 0.0f;
-    SHLIGHT_SET3(out_grad[59], 0.0f, 0.0f, 0.0f);
-    out_sh[60] = 0.0f;
-    SHLIGHT_SET3(out_grad[60], 0.0f, 0.0f, 0.0f);
-    out_sh[61] = 0.0f;
-    SHLIGHT_SET3(out_grad[61], 0.0f, 0.0f, 0.0f);
-    out_sh[62] = 0.0f;
-    SHLIGHT_SET3(out_grad[62], 0.0f, 0.0f, 0.0f);
-    out_sh[63] = 0.0f;
-    SHLIGHT_SET3(out_grad[63], 0.0f, 0.0f, 0.0f);
+    for (i = 49; i < 64; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 8
   if (n > 8) {
-    out_sh[64] = 0.0f;
-    SHLIGHT_SET3(out_grad[64], 0.0f, 0.0f, 0.0f);
-    out_sh[65] = 0.0f;
-    SHLIGHT_SET3(out_grad[65], 0.0f, 0.0f, 0.0f);
-    out_sh[66] = 0.0f;
-    SHLIGHT_SET3(out_grad[66], 0.0f, 0.0f, 0.0f);
-    out_sh[67] = 0.0f;
-    SHLIGHT_SET3(out_grad[67], 0.0f, 0.0f, 0.0f);
-    out_sh[68] = 0.0f;
-    SHLIGHT_SET3(out_grad[68], 0.0f, 0.0f, 0.0f);
-    out_sh[69] = 0.0f;
-    SHLIGHT_SET3(out_grad[69], 0.0f, 0.0f, 0.0f);
-    out_sh[70] = 0.0f;
-    SHLIGHT_SET3(out_grad[70], 0.0f, 0.0f, 0.0f);
-    out_sh[71] = 0.0f;
-    SHLIGHT_SET3(out_grad[71], 0.0f, 0.0f, 0.0f);
-    out_sh[72] = 0.0f;
-    SHLIGHT_SET3(out_grad[72], 0.0f, 0.0f, 0.0f);
-    out_sh[73] = 0.0f;
-    SHLIGHT_SET3(out_grad[73], 0.0f, 0.0f, 0.0f);
-    out_sh[74] = 0.0f;
-    SHLIGHT_SET3(out_grad[74], 0.0f, 0.0f, 0.0f);
-    out_sh[75] = 0.0f;
-    SHLIGHT_SET3(out_grad[75], 0.0f, 0.0f, 0.0f);
-    out_sh[76] = 0.0f;
-    SHLIGHT_SET3(out_grad[76], 0.0f, 0.0f, 0.0f);
-    out_sh[77] = 0.0f;
-    SHLIGHT_SET3(out_grad[77], 0.0f, 0.0f, 0.0f);
-    out_sh[78] = 0.0f;
-    SHLIGHT_SET3(out_grad[78], 0.0f, 0.0f, 0.0f);
-    out_sh[79] = 0.0f;
-    SHLIGHT_SET3(out_grad[79], 0.0f, 0.0f, 0.0f);
-    out_sh[80] = 0.0f;
-    SHLIGHT_SET3(out_grad[80], 0.0f, 0.0f, 0.0f);
+    for (i = 64; i < 81; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 9
   if (n > 9) {
-    out_sh[81] = 0.0f;
-    SHLIGHT_SET3(out_grad[81], 0.0f, 0.0f, 0.0f);
-    out_sh[82] = 0.0f;
-    SHLIGHT_SET3(out_grad[82], 0.0f, 0.0f, 0.0f);
-    out_sh[83] = 0.0f;
-    SHLIGHT_SET3(out_grad[83], 0.0f, 0.0f, 0.0f);
-    out_sh[84] = 0.0f;
-    SHLIGHT_SET3(out_grad[84], 0.0f, 0.0f, 0.0f);
-    out_sh[85] = 0.0f;
-    SHLIGHT_SET3(out_grad[85], 0.0f, 0.0f, 0.0f);
-    out_sh[86] = 0.0f;
-    SHLIGHT_SET3(out_grad[86], 0.0f, 0.0f, 0.0f);
-    out_sh[87] = 0.0f;
-    SHLIGHT_SET3(out_grad[87], 0.0f, 0.0f, 0.0f);
-    out_sh[88] = 0.0f;
-    SHLIGHT_SET3(out_grad[88], 0.0f, 0.0f, 0.0f);
-    out_sh[89] = 0.0f;
-    SHLIGHT_SET3(out_grad[89], 0.0f, 0.0f, 0.0f);
-    out_sh[90] = 0.0f;
-    SHLIGHT_SET3(out_grad[90], 0.0f, 0.0f, 0.0f);
-    out_sh[91] = 0.0f;
-    SHLIGHT_SET3(out_grad[91], 0.0f, 0.0f, 0.0f);
-    out_sh[92] = 0.0f;
-    SHLIGHT_SET3(out_grad[92], 0.0f, 0.0f, 0.0f);
-    out_sh[93] = 0.0f;
-    SHLIGHT_SET3(out_grad[93], 0.0f, 0.0f, 0.0f);
-    out_sh[94] = 0.0f;
-    SHLIGHT_SET3(out_grad[94], 0.0f, 0.0f, 0.0f);
-    out_sh[95] = 0.0f;
-    SHLIGHT_SET3(out_grad[95], 0.0f, 0.0f, 0.0f);
-    out_sh[96] = 0.0f;
-    SHLIGHT_SET3(out_grad[96], 0.0f, 0.0f, 0.0f);
-    out_sh[97] = 0.0f;
-    SHLIGHT_SET3(out_grad[97], 0.0f, 0.0f, 0.0f);
-    out_sh[98] = 0.0f;
-    SHLIGHT_SET3(out_grad[98], 0.0f, 0.0f, 0.0f);
-    out_sh[99] = 0.0f;
-    SHLIGHT_SET3(out_grad[99], 0.0f, 0.0f, 0.0f);
+    for (i = 81; i < 100; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 10
   if (n > 10) {
-    out_sh[100] = 0.0f;
-    SHLIGHT_SET3(out_grad[100], 0.0f, 0.0f, 0.0f);
-    out_sh[101] = 0.0f;
-    SHLIGHT_SET3(out_grad[101], 0.0f, 0.0f, 0.0f);
-    out_sh[102] = 0.0f;
-    SHLIGHT_SET3(out_grad[102], 0.0f, 0.0f, 0.0f);
-    out_sh[103] = 0.0f;
-    SHLIGHT_SET3(out_grad[103], 0.0f, 0.0f, 0.0f);
-    out_sh[104] = 0.0f;
-    SHLIGHT_SET3(out_grad[104], 0.0f, 0.0f, 0.0f);
-    out_sh[105] = 0.0f;
-    SHLIGHT_SET3(out_grad[105], 0.0f, 0.0f, 0.0f);
-    out_sh[106] = 0.0f;
-    SHLIGHT_SET3(out_grad[106], 0.0f, 0.0f, 0.0f);
-    out_sh[107] = 0.0f;
-    SHLIGHT_SET3(out_grad[107], 0.0f, 0.0f, 0.0f);
-    out_sh[108] = 0.0f;
-    SHLIGHT_SET3(out_grad[108], 0.0f, 0.0f, 0.0f);
-    out_sh[109] = 0.0f;
-    SHLIGHT_SET3(out_grad[109], 0.0f, 0.0f, 0.0f);
-    out_sh[110] = 0.0f;
-    SHLIGHT_SET3(out_grad[110], 0.0f, 0.0f, 0.0f);
-    out_sh[111] = 0.0f;
-    SHLIGHT_SET3(out_grad[111], 0.0f, 0.0f, 0.0f);
-    out_sh[112] = 0.0f;
-    SHLIGHT_SET3(out_grad[112], 0.0f, 0.0f, 0.0f);
-    out_sh[113] = 0.0f;
-    SHLIGHT_SET3(out_grad[113], 0.0f, 0.0f, 0.0f);
-    out_sh[114] = 0.0f;
-    SHLIGHT_SET3(out_grad[114], 0.0f, 0.0f, 0.0f);
-    out_sh[115] = 0.0f;
-    SHLIGHT_SET3(out_grad[115], 0.0f, 0.0f, 0.0f);
-    out_sh[116] = 0.0f;
-    SHLIGHT_SET3(out_grad[116], 0.0f, 0.0f, 0.0f);
-    out_sh[117] = 0.0f;
-    SHLIGHT_SET3(out_grad[117], 0.0f, 0.0f, 0.0f);
-    out_sh[118] = 0.0f;
-    SHLIGHT_SET3(out_grad[118], 0.0f, 0.0f, 0.0f);
-    out_sh[119] = 0.0f;
-    SHLIGHT_SET3(out_grad[119], 0.0f, 0.0f, 0.0f);
-    out_sh[120] = 0.0f;
-    SHLIGHT_SET3(out_grad[120], 0.0f, 0.0f, 0.0f);
+    for (i = 100; i < 121; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 11
   if (n > 11) {
-    out_sh[121] = 0.0f;
-    SHLIGHT_SET3(out_grad[121], 0.0f, 0.0f, 0.0f);
-    out_sh[122] = 0.0f;
-    SHLIGHT_SET3(out_grad[122], 0.0f, 0.0f, 0.0f);
-    out_sh[123] = 0.0f;
-    SHLIGHT_SET3(out_grad[123], 0.0f, 0.0f, 0.0f);
-    out_sh[124] = 0.0f;
-    SHLIGHT_SET3(out_grad[124], 0.0f, 0.0f, 0.0f);
-    out_sh[125] = 0.0f;
-    SHLIGHT_SET3(out_grad[125], 0.0f, 0.0f, 0.0f);
-    out_sh[126] = 0.0f;
-    SHLIGHT_SET3(out_grad[126], 0.0f, 0.0f, 0.0f);
-    out_sh[127] = 0.0f;
-    SHLIGHT_SET3(out_grad[127], 0.0f, 0.0f, 0.0f);
-    out_sh[128] = 0.0f;
-    SHLIGHT_SET3(out_grad[128], 0.0f, 0.0f, 0.0f);
-    out_sh[129] = 0.0f;
-    SHLIGHT_SET3(out_grad[129], 0.0f, 0.0f, 0.0f);
-    out_sh[130] = 0.0f;
-    SHLIGHT_SET3(out_grad[130], 0.0f, 0.0f, 0.0f);
-    out_sh[131] = 0.0f;
-    SHLIGHT_SET3(out_grad[131], 0.0f, 0.0f, 0.0f);
-    out_sh[132] = 0.0f;
-    SHLIGHT_SET3(out_grad[132], 0.0f, 0.0f, 0.0f);
-    out_sh[133] = 0.0f;
-    SHLIGHT_SET3(out_grad[133], 0.0f, 0.0f, 0.0f);
-    out_sh[134] = 0.0f;
-    SHLIGHT_SET3(out_grad[134], 0.0f, 0.0f, 0.0f);
-    out_sh[135] = 0.0f;
-    SHLIGHT_SET3(out_grad[135], 0.0f, 0.0f, 0.0f);
-    out_sh[136] = 0.0f;
-    SHLIGHT_SET3(out_grad[136], 0.0f, 0.0f, 0.0f);
-    out_sh[137] = 0.0f;
-    SHLIGHT_SET3(out_grad[137], 0.0f, 0.0f, 0.0f);
-    out_sh[138] = 0.0f;
-    SHLIGHT_SET3(out_grad[138], 0.0f, 0.0f, 0.0f);
-    out_sh[139] = 0.0f;
-    SHLIGHT_SET3(out_grad[139], 0.0f, 0.0f, 0.0f);
-    out_sh[140] = 0.0f;
-    SHLIGHT_SET3(out_grad[140], 0.0f, 0.0f, 0.0f);
-    out_sh[141] = 0.0f;
-    SHLIGHT_SET3(out_grad[141], 0.0f, 0.0f, 0.0f);
-    out_sh[142] = 0.0f;
-    SHLIGHT_SET3(out_grad[142], 0.0f, 0.0f, 0.0f);
-    out_sh[143] = 0.0f;
-    SHLIGHT_SET3(out_grad[143], 0.0f, 0.0f, 0.0f);
+    for (i = 121; i < 144; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 12
   if (n > 12) {
-    out_sh[144] = 0.0f;
-    SHLIGHT_SET3(out_grad[144], 0.0f, 0.0f, 0.0f);
-    out_sh[145] = 0.0f;
-    SHLIGHT_SET3(out_grad[145], 0.0f, 0.0f, 0.0f);
-    out_sh[146] = 0.0f;
-    SHLIGHT_SET3(out_grad[146], 0.0f, 0.0f, 0.0f);
-    out_sh[147] = 0.0f;
-    SHLIGHT_SET3(out_grad[147], 0.0f, 0.0f, 0.0f);
-    out_sh[148] = 0.0f;
-    SHLIGHT_SET3(out_grad[148], 0.0f, 0.0f, 0.0f);
-    out_sh[149] = 0.0f;
-    SHLIGHT_SET3(out_grad[149], 0.0f, 0.0f, 0.0f);
-    out_sh[150] = 0.0f;
-    SHLIGHT_SET3(out_grad[150], 0.0f, 0.0f, 0.0f);
-    out_sh[151] = 0.0f;
-    SHLIGHT_SET3(out_grad[151], 0.0f, 0.0f, 0.0f);
-    out_sh[152] = 0.0f;
-    SHLIGHT_SET3(out_grad[152], 0.0f, 0.0f, 0.0f);
-    out_sh[153] = 0.0f;
-    SHLIGHT_SET3(out_grad[153], 0.0f, 0.0f, 0.0f);
-    out_sh[154] = 0.0f;
-    SHLIGHT_SET3(out_grad[154], 0.0f, 0.0f, 0.0f);
-    out_sh[155] = 0.0f;
-    SHLIGHT_SET3(out_grad[155], 0.0f, 0.0f, 0.0f);
-    out_sh[156] = 0.0f;
-    SHLIGHT_SET3(out_grad[156], 0.0f, 0.0f, 0.0f);
-    out_sh[157] = 0.0f;
-    SHLIGHT_SET3(out_grad[157], 0.0f, 0.0f, 0.0f);
-    out_sh[158] = 0.0f;
-    SHLIGHT_SET3(out_grad[158], 0.0f, 0.0f, 0.0f);
-    out_sh[159] = 0.0f;
-    SHLIGHT_SET3(out_grad[159], 0.0f, 0.0f, 0.0f);
-    out_sh[160] = 0.0f;
-    SHLIGHT_SET3(out_grad[160], 0.0f, 0.0f, 0.0f);
-    out_sh[161] = 0.0f;
-    SHLIGHT_SET3(out_grad[161], 0.0f, 0.0f, 0.0f);
-    out_sh[162] = 0.0f;
-    SHLIGHT_SET3(out_grad[162], 0.0f, 0.0f, 0.0f);
-    out_sh[163] = 0.0f;
-    SHLIGHT_SET3(out_grad[163], 0.0f, 0.0f, 0.0f);
-    out_sh[164] = 0.0f;
-    SHLIGHT_SET3(out_grad[164], 0.0f, 0.0f, 0.0f);
-    out_sh[165] = 0.0f;
-    SHLIGHT_SET3(out_grad[165], 0.0f, 0.0f, 0.0f);
-    out_sh[166] = 0.0f;
-    SHLIGHT_SET3(out_grad[166], 0.0f, 0.0f, 0.0f);
-    out_sh[167] = 0.0f;
-    SHLIGHT_SET3(out_grad[167], 0.0f, 0.0f, 0.0f);
-    out_sh[168] = 0.0f;
-    SHLIGHT_SET3(out_grad[168], 0.0f, 0.0f, 0.0f);
+    for (i = 144; i < 169; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 13
   if (n > 13) {
-    out_sh[169] = 0.0f;
-    SHLIGHT_SET3(out_grad[169], 0.0f, 0.0f, 0.0f);
-    out_sh[170] = 0.0f;
-    SHLIGHT_SET3(out_grad[170], 0.0f, 0.0f, 0.0f);
-    out_sh[171] = 0.0f;
-    SHLIGHT_SET3(out_grad[171], 0.0f, 0.0f, 0.0f);
-    out_sh[172] = 0.0f;
-    SHLIGHT_SET3(out_grad[172], 0.0f, 0.0f, 0.0f);
-    out_sh[173] = 0.0f;
-    SHLIGHT_SET3(out_grad[173], 0.0f, 0.0f, 0.0f);
-    out_sh[174] = 0.0f;
-    SHLIGHT_SET3(out_grad[174], 0.0f, 0.0f, 0.0f);
-    out_sh[175] = 0.0f;
-    SHLIGHT_SET3(out_grad[175], 0.0f, 0.0f, 0.0f);
-    out_sh[176] = 0.0f;
-    SHLIGHT_SET3(out_grad[176], 0.0f, 0.0f, 0.0f);
-    out_sh[177] = 0.0f;
-    SHLIGHT_SET3(out_grad[177], 0.0f, 0.0f, 0.0f);
-    out_sh[178] = 0.0f;
-    SHLIGHT_SET3(out_grad[178], 0.0f, 0.0f, 0.0f);
-    out_sh[179] = 0.0f;
-    SHLIGHT_SET3(out_grad[179], 0.0f, 0.0f, 0.0f);
-    out_sh[180] = 0.0f;
-    SHLIGHT_SET3(out_grad[180], 0.0f, 0.0f, 0.0f);
-    out_sh[181] = 0.0f;
-    SHLIGHT_SET3(out_grad[181], 0.0f, 0.0f, 0.0f);
-    out_sh[182] = 0.0f;
-    SHLIGHT_SET3(out_grad[182], 0.0f, 0.0f, 0.0f);
-    out_sh[183] = 0.0f;
-    SHLIGHT_SET3(out_grad[183], 0.0f, 0.0f, 0.0f);
-    out_sh[184] = 0.0f;
-    SHLIGHT_SET3(out_grad[184], 0.0f, 0.0f, 0.0f);
-    out_sh[185] = 0.0f;
-    SHLIGHT_SET3(out_grad[185], 0.0f, 0.0f, 0.0f);
-    out_sh[186] = 0.0f;
-    SHLIGHT_SET3(out_grad[186], 0.0f, 0.0f, 0.0f);
-    out_sh[187] = 0.0f;
-    SHLIGHT_SET3(out_grad[187], 0.0f, 0.0f, 0.0f);
-    out_sh[188] = 0.0f;
-    SHLIGHT_SET3(out_grad[188], 0.0f, 0.0f, 0.0f);
-    out_sh[189] = 0.0f;
-    SHLIGHT_SET3(out_grad[189], 0.0f, 0.0f, 0.0f);
-    out_sh[190] = 0.0f;
-    SHLIGHT_SET3(out_grad[190], 0.0f, 0.0f, 0.0f);
-    out_sh[191] = 0.0f;
-    SHLIGHT_SET3(out_grad[191], 0.0f, 0.0f, 0.0f);
-    out_sh[192] = 0.0f;
-    SHLIGHT_SET3(out_grad[192], 0.0f, 0.0f, 0.0f);
-    out_sh[193] = 0.0f;
-    SHLIGHT_SET3(out_grad[193], 0.0f, 0.0f, 0.0f);
-    out_sh[194] = 0.0f;
-    SHLIGHT_SET3(out_grad[194], 0.0f, 0.0f, 0.0f);
-    out_sh[195] = 0.0f;
-    SHLIGHT_SET3(out_grad[195], 0.0f, 0.0f, 0.0f);
+    for (i = 169; i < 196; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 14
   if (n > 14) {
-    out_sh[196] = 0.0f;
-    SHLIGHT_SET3(out_grad[196], 0.0f, 0.0f, 0.0f);
-    out_sh[197] = 0.0f;
-    SHLIGHT_SET3(out_grad[197], 0.0f, 0.0f, 0.0f);
-    out_sh[198] = 0.0f;
-    SHLIGHT_SET3(out_grad[198], 0.0f, 0.0f, 0.0f);
-    out_sh[199] = 0.0f;
-    SHLIGHT_SET3(out_grad[199], 0.0f, 0.0f, 0.0f);
-    out_sh[200] = 0.0f;
-    SHLIGHT_SET3(out_grad[200], 0.0f, 0.0f, 0.0f);
-    out_sh[201] = 0.0f;
-    SHLIGHT_SET3(out_grad[201], 0.0f, 0.0f, 0.0f);
-    out_sh[202] = 0.0f;
-    SHLIGHT_SET3(out_grad[202], 0.0f, 0.0f, 0.0f);
-    out_sh[203] = 0.0f;
-    SHLIGHT_SET3(out_grad[203], 0.0f, 0.0f, 0.0f);
-    out_sh[204] = 0.0f;
-    SHLIGHT_SET3(out_grad[204], 0.0f, 0.0f, 0.0f);
-    out_sh[205] = 0.0f;
-    SHLIGHT_SET3(out_grad[205], 0.0f, 0.0f, 0.0f);
-    out_sh[206] = 0.0f;
-    SHLIGHT_SET3(out_grad[206], 0.0f, 0.0f, 0.0f);
-    out_sh[207] = 0.0f;
-    SHLIGHT_SET3(out_grad[207], 0.0f, 0.0f, 0.0f);
-    out_sh[208] = 0.0f;
-    SHLIGHT_SET3(out_grad[208], 0.0f, 0.0f, 0.0f);
-    out_sh[209] = 0.0f;
-    SHLIGHT_SET3(out_grad[209], 0.0f, 0.0f, 0.0f);
-    out_sh[210] = 0.0f;
-    SHLIGHT_SET3(out_grad[210], 0.0f, 0.0f, 0.0f);
-    out_sh[211] = 0.0f;
-    SHLIGHT_SET3(out_grad[211], 0.0f, 0.0f, 0.0f);
-    out_sh[212] = 0.0f;
-    SHLIGHT_SET3(out_grad[212], 0.0f, 0.0f, 0.0f);
-    out_sh[213] = 0.0f;
-    SHLIGHT_SET3(out_grad[213], 0.0f, 0.0f, 0.0f);
-    out_sh[214] = 0.0f;
-    SHLIGHT_SET3(out_grad[214], 0.0f, 0.0f, 0.0f);
-    out_sh[215] = 0.0f;
-    SHLIGHT_SET3(out_grad[215], 0.0f, 0.0f, 0.0f);
-    out_sh[216] = 0.0f;
-    SHLIGHT_SET3(out_grad[216], 0.0f, 0.0f, 0.0f);
-    out_sh[217] = 0.0f;
-    SHLIGHT_SET3(out_grad[217], 0.0f, 0.0f, 0.0f);
-    out_sh[218] = 0.0f;
-    SHLIGHT_SET3(out_grad[218], 0.0f, 0.0f, 0.0f);
-    out_sh[219] = 0.0f;
-    SHLIGHT_SET3(out_grad[219], 0.0f, 0.0f, 0.0f);
-    out_sh[220] = 0.0f;
-    SHLIGHT_SET3(out_grad[220], 0.0f, 0.0f, 0.0f);
-    out_sh[221] = 0.0f;
-    SHLIGHT_SET3(out_grad[221], 0.0f, 0.0f, 0.0f);
-    out_sh[222] = 0.0f;
-    SHLIGHT_SET3(out_grad[222], 0.0f, 0.0f, 0.0f);
-    out_sh[223] = 0.0f;
-    SHLIGHT_SET3(out_grad[223], 0.0f, 0.0f, 0.0f);
-    out_sh[224] = 0.0f;
-    SHLIGHT_SET3(out_grad[224], 0.0f, 0.0f, 0.0f);
+    for (i = 196; i < 225; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 15
   if (n > 15) {
-    out_sh[225] = 0.0f;
-    SHLIGHT_SET3(out_grad[225], 0.0f, 0.0f, 0.0f);
-    out_sh[226] = 0.0f;
-    SHLIGHT_SET3(out_grad[226], 0.0f, 0.0f, 0.0f);
-    out_sh[227] = 0.0f;
-    SHLIGHT_SET3(out_grad[227], 0.0f, 0.0f, 0.0f);
-    out_sh[228] = 0.0f;
-    SHLIGHT_SET3(out_grad[228], 0.0f, 0.0f, 0.0f);
-    out_sh[229] = 0.0f;
-    SHLIGHT_SET3(out_grad[229], 0.0f, 0.0f, 0.0f);
-    out_sh[230] = 0.0f;
-    SHLIGHT_SET3(out_grad[230], 0.0f, 0.0f, 0.0f);
-    out_sh[231] = 0.0f;
-    SHLIGHT_SET3(out_grad[231], 0.0f, 0.0f, 0.0f);
-    out_sh[232] = 0.0f;
-    SHLIGHT_SET3(out_grad[232], 0.0f, 0.0f, 0.0f);
-    out_sh[233] = 0.0f;
-    SHLIGHT_SET3(out_grad[233], 0.0f, 0.0f, 0.0f);
-    out_sh[234] = 0.0f;
-    SHLIGHT_SET3(out_grad[234], 0.0f, 0.0f, 0.0f);
-    out_sh[235] = 0.0f;
-    SHLIGHT_SET3(out_grad[235], 0.0f, 0.0f, 0.0f);
-    out_sh[236] = 0.0f;
-    SHLIGHT_SET3(out_grad[236], 0.0f, 0.0f, 0.0f);
-    out_sh[237] = 0.0f;
-    SHLIGHT_SET3(out_grad[237], 0.0f, 0.0f, 0.0f);
-    out_sh[238] = 0.0f;
-    SHLIGHT_SET3(out_grad[238], 0.0f, 0.0f, 0.0f);
-    out_sh[239] = 0.0f;
-    SHLIGHT_SET3(out_grad[239], 0.0f, 0.0f, 0.0f);
-    out_sh[240] = 0.0f;
-    SHLIGHT_SET3(out_grad[240], 0.0f, 0.0f, 0.0f);
-    out_sh[241] = 0.0f;
-    SHLIGHT_SET3(out_grad[241], 0.0f, 0.0f, 0.0f);
-    out_sh[242] = 0.0f;
-    SHLIGHT_SET3(out_grad[242], 0.0f, 0.0f, 0.0f);
-    out_sh[243] = 0.0f;
-    SHLIGHT_SET3(out_grad[243], 0.0f, 0.0f, 0.0f);
-    out_sh[244] = 0.0f;
-    SHLIGHT_SET3(out_grad[244], 0.0f, 0.0f, 0.0f);
-    out_sh[245] = 0.0f;
-    SHLIGHT_SET3(out_grad[245], 0.0f, 0.0f, 0.0f);
-    out_sh[246] = 0.0f;
-    SHLIGHT_SET3(out_grad[246], 0.0f, 0.0f, 0.0f);
-    out_sh[247] = 0.0f;
-    SHLIGHT_SET3(out_grad[247], 0.0f, 0.0f, 0.0f);
-    out_sh[248] = 0.0f;
-    SHLIGHT_SET3(out_grad[248], 0.0f, 0.0f, 0.0f);
-    out_sh[249] = 0.0f;
-    SHLIGHT_SET3(out_grad[249], 0.0f, 0.0f, 0.0f);
-    out_sh[250] = 0.0f;
-    SHLIGHT_SET3(out_grad[250], 0.0f, 0.0f, 0.0f);
-    out_sh[251] = 0.0f;
-    SHLIGHT_SET3(out_grad[251], 0.0f, 0.0f, 0.0f);
-    out_sh[252] = 0.0f;
-    SHLIGHT_SET3(out_grad[252], 0.0f, 0.0f, 0.0f);
-    out_sh[253] = 0.0f;
-    SHLIGHT_SET3(out_grad[253], 0.0f, 0.0f, 0.0f);
-    out_sh[254] = 0.0f;
-    SHLIGHT_SET3(out_grad[254], 0.0f, 0.0f, 0.0f);
-    out_sh[255] = 0.0f;
-    SHLIGHT_SET3(out_grad[255], 0.0f, 0.0f, 0.0f);
+    for (i = 225; i < 256; ++i) {
+      out_sh[i] = 0.0f;
+      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);
+    }
   }
 #endif
 }

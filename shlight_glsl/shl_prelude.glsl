@@ -22,12 +22,14 @@
 #define SHLIGHT_REAL_WIDE 0
 #define SHLIGHT_UNUSED(x)
 #define SHLIGHT_BY_BANDS 1
+#define SHLIGHT_FLAT_LOOPS 1
 #define SHLIGHT_SET3(o, a, b, c) o = vec3((a), (b), (c))
 #ifndef SHLIGHT_BRDF_TABLE_FLOATS
 #define SHLIGHT_BRDF_TABLE_FLOATS (2 * 90 * SHLIGHT_MAX_COEFFS)
 #endif
 #define SHLIGHT_SIGN1(x) ((x) < 0.0 ? -1.0 : 1.0)
 #define SHLIGHT_SIMD_EVAL 0
+#define SHLIGHT_ROTATE_FAST 0 /* C: shl_sh_rotate's vector path for n <= 8 */
 #define SHLIGHT_OUTLINE_EVAL 0 /* C: the large band counts run out of line, in the implementation */
 #define SHLIGHT_FTOI(x) int(x)
 #define SHLIGHT_ITOR(i) float(i)

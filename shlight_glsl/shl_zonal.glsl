@@ -271,6 +271,12 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
   if (n < 1) {
     return;
   }
+#if SHLIGHT_ROTATE_FAST
+  if (n <= SHLI_ROT_FAST_BANDS) {
+    shli_sh_rotate_fast(n, R, sh, out_sh);
+    return;
+  }
+#endif
   /* beta: sin from R's third column (accurate near 0 and pi), cos = R_22 */
   sb = SHLIGHT_SQRTR(SHLIGHT_REAL(R[2]) * SHLIGHT_REAL(R[2]) +
                      SHLIGHT_REAL(R[5]) * SHLIGHT_REAL(R[5]));
@@ -282,7 +288,8 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
     c1 = SHLIGHT_REAL(R[2]) / sb;
     s1 = SHLIGHT_REAL(R[5]) / sb;
   }
-  if (h > 0.0) {
+  /* not h > 0: a NaN R_22 must reach the output as NaN */
+  if (!(h <= 0.0)) {
     sb = sb / h;
     cb = cb / h;
   } else {
@@ -296,7 +303,7 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
   h = SHLIGHT_SQRTR(t * t + w * w);
   cg[0] = 1.0;
   sg[0] = 0.0;
-  if (h > 0.0) {
+  if (!(h <= 0.0)) {
     t = t / h;
     w = w / h;
   } else {

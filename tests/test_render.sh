@@ -47,15 +47,8 @@ if "$R" --help | grep -q "usage: shlrender"; then ok; else ko "--help"; fi
 if "$R" --scene examples/scenes/room.scene --pass preview --paths cpu --size 32x24 --out "$t/png" \
   >/dev/null && [ -s "$t/png/room_preview_headlight_cpu.png" ]; then ok; else ko "cpu-only PNG"; fi
 # every pass, GL against CPU
-# KNOWN REGRESSION: on manylights (100 small sphere lights, 20 triangles, Lambert floor) the GL
-# area pass differs from the CPU one by up to 0.24 of the peak since the area-light kernels
-# took any vertex count and exact real exponents (the CPU image still matches the ground truth;
-# tests/test_edge_glsl, GLSL against C on random and small polygons, passes). Until it is found,
-# the default run checks manylights' other passes; SHLIGHT_RENDER_AREA_ALL=1 checks them all.
 for s in ${SHLIGHT_RENDER_SCENES:-cornell spheres manylights glossy examples/scenes/room.scene}; do
-  passes=all
-  [ "$s" = manylights ] && [ -z "${SHLIGHT_RENDER_AREA_ALL:-}" ] && passes=grid,hvl,ssf
-  SHLIGHT_GL_BACKEND=$backend "$R" --scene "$s" --pass "$passes" --size 64x48 --gt 1 --reps 1 --check \
+  SHLIGHT_GL_BACKEND=$backend "$R" --scene "$s" --size 64x48 --gt 1 --reps 1 --check \
     >"$t/log" 2>&1
   rc=$?
   line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$t/log" | tail -1)

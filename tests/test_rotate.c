@@ -2,7 +2,10 @@
  * of the rotated function by Gauss-Legendre x uniform-phi quadrature, exact for the products
  * of two n-band functions), and its properties: band energy, composition, identity, agreement
  * with shl_sh_rotate_z, Y(d) -> Y(R d), hard rotations (beta = 0, pi, 1e-6, pi - 1e-6), n = 1,
- * out-of-range n. Ends with "N passed, N failed". */
+ * out-of-range n. The C-only path for n <= 8 is held to the portable kernel (compiled alone in
+ * tests/test_rotate_portable.c) and to the reference at every n it covers, on hard rotations,
+ * matrices off a rotation by float ulps, non-rotations and NaN. Ends with "N passed, N
+ * failed". */
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
 #include "tl.h"
@@ -11,6 +14,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* shl_sh_rotate with SHLIGHT_ROTATE_FAST 0: the portable kernel at every n */
+void rotate_portable(int n, const float R[9], const float *sh, float *out_sh);
 
 #define NMAX 64
 #define NC (NMAX * NMAX)
@@ -466,10 +472,182 @@ static void test_edge_inputs(void) {
            "zero R is not the identity");
 }
 
+/* the hard cases of the small-n path: axis (x, y, z), angle; then the ulp-perturbed, the
+ * non-rotation and the NaN matrices */
+#define NHARD 16
+static const double HARD[NHARD][4] = {{0, 0, 1, 0.0},
+                                      {0, 0, 1, 0.7},
+                                      {0, 0, 1, 3.141592653589793},
+                                      {1, 0, 0, 3.141592653589793},
+                                      {0, 1, 0, 3.141592653589793},
+                                      {1, 1, 0, 3.141592653589793},
+                                      {1, 1, 1, 3.141592653589793},
+                                      {0.3, 0.4, 0.1, 1e-6},
+                                      {1, 0, 0, 1e-20},
+                                      {0.6, -0.8, 0, 1e-30},
+                                      {1, 0.2, 0, 3.141592653589793 - 1e-6},
+                                      {0, 1, 0, 1.5707963267948966},
+                                      {0.2, -0.7, 0.3, 2.5},
+                                      {-0.5, 0.1, 0.8, 4.0},
+                                      {1, -1, 0.5, -2.0},
+                                      {0.1, 0.1, -1, 6.0}};
+static const char *const HARD_NAME[NHARD] = {"identity",
+                                             "z only",
+                                             "pi about z",
+                                             "pi about x",
+                                             "pi about y",
+                                             "pi about (1,1,0)",
+                                             "pi about (1,1,1)",
+                                             "1e-6 about a skew axis",
+                                             "1e-20 about x",
+                                             "1e-30 about (.6,-.8,0)",
+                                             "pi - 1e-6",
+                                             "pi/2 about y",
+                                             "2.5 about a skew axis",
+                                             "4 about a skew axis",
+                                             "-2 about a skew axis",
+                                             "6 about -z"};
+
+/* R with each entry moved by k float ulps (k = -3..3 from a fixed pattern): not orthonormal */
+static void ulp_perturb(float R[9], int seed) {
+  int i, k;
+  for (i = 0; i < 9; ++i) {
+    for (k = (seed * 7 + i * 3) % 7 - 3; k > 0; --k) {
+      R[i] = nextafterf(R[i], 2.0f);
+    }
+    for (k = (seed * 7 + i * 3) % 7 - 3; k < 0; ++k) {
+      R[i] = nextafterf(R[i], -2.0f);
+    }
+  }
+}
+
+/* per band |fast - portable| / |input band|, the worst band; NaN where either output is NaN
+ * and the other is not */
+static double fast_vs_portable(int n, const float R[9]) {
+  double worst = 0.0;
+  int l, m;
+  rand_sh(n, g_in);
+  shl_sh_rotate(n, R, g_in, g_out);
+  rotate_portable(n, R, g_in, g_out2);
+  for (l = 0; l < n; ++l) {
+    double e = 0.0, b = 0.0;
+    for (m = -l; m <= l; ++m) {
+      int i = l * (l + 1) + m;
+      double d = (double)g_out[i] - (double)g_out2[i];
+      if ((g_out[i] != g_out[i]) != (g_out2[i] != g_out2[i])) {
+        return NAN;
+      }
+      if (g_out[i] == g_out[i]) {
+        e += d * d;
+      }
+      b += (double)g_in[i] * (double)g_in[i];
+    }
+    if (sqrt(e / b) > worst) {
+      worst = sqrt(e / b);
+    }
+  }
+  return worst;
+}
+
+/* the small-n path against the portable kernel (both round a double result to float: they
+ * differ only where the two doubles straddle a float rounding boundary, at most one ulp of a
+ * coefficient, 6e-8 of the band) on every n = 1..9 (9: the portable kernel itself) */
+static void test_fast_vs_portable(void) {
+  int n, k, s;
+  for (n = 1; n <= 9; ++n) {
+    double worst = 0.0, worst_ulp = 0.0, worst_rnd = 0.0;
+    float R[9];
+    for (k = 0; k < NHARD; ++k) {
+      double e;
+      axis_angle(HARD[k][0], HARD[k][1], HARD[k][2], HARD[k][3], R);
+      e = fast_vs_portable(n, R);
+      TL_CHECK(e <= 6e-8, "n = %d %s: fast vs portable %g", n, HARD_NAME[k], e);
+      worst = e > worst ? e : worst;
+      for (s = 0; s < 4; ++s) {
+        axis_angle(HARD[k][0], HARD[k][1], HARD[k][2], HARD[k][3], R);
+        ulp_perturb(R, s + k);
+        e = fast_vs_portable(n, R);
+        TL_CHECK(e <= 6e-8, "n = %d %s + ulps: fast vs portable %g", n, HARD_NAME[k], e);
+        worst_ulp = e > worst_ulp ? e : worst_ulp;
+      }
+    }
+    for (k = 0; k < 200; ++k) {
+      double e;
+      rand_R(R);
+      e = fast_vs_portable(n, R);
+      worst_rnd = e > worst_rnd ? e : worst_rnd;
+    }
+    TL_CHECK(worst_rnd <= 6e-8, "n = %d random: fast vs portable %g", n, worst_rnd);
+    printf("  n = %d: |fast - portable| / band: hard %.3g, hard + ulps %.3g, 200 random %.3g\n", n,
+           worst, worst_ulp, worst_rnd);
+  }
+}
+
+/* not a rotation: the decomposition's rotation, as the portable kernel (zero R: the identity;
+ * 2 R, a shear, random entries, tiny and huge entries); NaN anywhere: the same NaN pattern */
+static void test_fast_bad_matrices(void) {
+  static const float Z[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+  static const float S[9] = {1, 0.5f, 0, 0, 1, 0, 0, 0, 1};
+  static const float T[9] = {1e-30f, 0, 0, 0, 1e-30f, 0, 0, 0, 1e-30f};
+  static const float H[9] = {3e38f, -1e38f, 2e38f, 1e38f, 3e38f, -2e38f, 0, 1e38f, 3e38f};
+  int n, k, i;
+  for (n = 1; n <= 8; ++n) {
+    float R[9];
+    double e;
+    TL_CHECK(fast_vs_portable(n, Z) == 0.0, "n = %d zero R", n);
+    memcpy(g_tmp, g_in, sizeof(float) * (size_t)(n * n));
+    TL_CHECK(max_rel(n * n, g_out, g_tmp) == 0.0, "n = %d zero R is not the identity", n);
+    TL_CHECK(fast_vs_portable(n, S) <= 6e-8, "n = %d shear", n);
+    TL_CHECK(fast_vs_portable(n, T) <= 6e-8, "n = %d tiny", n);
+    TL_CHECK(fast_vs_portable(n, H) <= 6e-8, "n = %d huge", n);
+    for (k = 0; k < 50; ++k) {
+      rand_R(R);
+      for (i = 0; i < 9; ++i) {
+        R[i] *= (float)(0.25 + 2.0 * urand());
+      }
+      e = fast_vs_portable(n, R);
+      TL_CHECK(e <= 6e-8, "n = %d random matrix %d: %g", n, k, e);
+    }
+    for (i = 0; i < 9; ++i) {
+      rand_R(R);
+      R[i] = NAN;
+      e = fast_vs_portable(n, R);
+      TL_CHECK(e == e, "n = %d NaN at R[%d]: NaN patterns differ", n, i);
+      /* R_20, R_21 are not read; any other NaN: NaN in every band above 0 */
+      TL_CHECK(n < 2 || i == 6 || i == 7 || g_out[n * n - 1] != g_out[n * n - 1],
+               "n = %d NaN at R[%d] gives %g", n, i, (double)g_out[n * n - 1]);
+    }
+  }
+}
+
+/* the small-n path against the long-double reference at every n it covers, hard rotations
+ * and ulp-perturbed matrices */
+static void test_fast_accuracy(void) {
+  int n, k;
+  for (n = 1; n <= 8; ++n) {
+    double worst = 0.0;
+    for (k = 0; k < NHARD; ++k) {
+      float R[9];
+      double e;
+      axis_angle(HARD[k][0], HARD[k][1], HARD[k][2], HARD[k][3], R);
+      if (k % 2 == 1) {
+        ulp_perturb(R, k);
+      }
+      e = check_against_ref(n, R);
+      TL_CHECK(e <= 1e-7, "n = %d %s: %g against the reference", n, HARD_NAME[k], e);
+      worst = e > worst ? e : worst;
+    }
+    printf("  n = %d: worst band error / band norm %.3g (%d hard rotations)\n", n, worst, NHARD);
+  }
+}
+
 int main(void) {
   TL_RUN(test_reference_selfcheck);
   TL_RUN(test_identity);
   TL_RUN(test_edge_inputs);
+  TL_RUN(test_fast_vs_portable);
+  TL_RUN(test_fast_bad_matrices);
+  TL_RUN(test_fast_accuracy);
   TL_RUN(test_agrees_rotate_z);
   TL_RUN(test_delta_direction);
   TL_RUN(test_band_energy);

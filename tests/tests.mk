@@ -180,13 +180,14 @@ $(TESTS_BUILD)/asan/test_brdf: tests/test_brdf.c tests/tl.h shlight.h
 
 # >>zonal: shl_sh_rotate against a long-double Gauss re-projection and its properties
 # (tests/test_rotate.c; about 5 s of CPU, most of it the n = 64 reference)
-TESTS_ROTATE_DEPS := tests/test_rotate.c tests/tl.h shlight.h
+# (with tests/test_rotate_portable.c: the portable kernel alone, to hold the C-only n <= 8 path to)
+TESTS_ROTATE_DEPS := tests/test_rotate.c tests/test_rotate_portable.c tests/tl.h shlight.h
 $(TESTS_BUILD)/test_rotate: $(TESTS_ROTATE_DEPS)
 	@mkdir -p $(@D)
-	$(CC) $(TESTS_CFLAGS) -o $@ tests/test_rotate.c -lm
+	$(CC) $(TESTS_CFLAGS) -o $@ tests/test_rotate.c tests/test_rotate_portable.c -lm
 $(TESTS_BUILD)/asan/test_rotate: $(TESTS_ROTATE_DEPS)
 	@mkdir -p $(@D)
-	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/test_rotate.c -lm
+	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/test_rotate.c tests/test_rotate_portable.c -lm
 
 # >>brdftab: BRDF SH tables against closed forms and quadrature, the SHLT / MERL loaders and
 # their error paths (tests/test_brdftab.c); the loaders' fuzz corpus replayed (fuzz_brdftab.c)

@@ -253,15 +253,17 @@ def declare(L, candidates):
 
 
 def gen_tables():
-    """Reinsch constants for the run-time loop: per (l, m), m < l < MAX_BANDS, at
-    SHLI_SH_TAB[3 * (l * (l - 1) / 2 + m)]: alpha, g, c (double in C)."""
-    vals = []
+    """The run-time loops' Reinsch constants from closed forms (per band l, column m < l):
+    alpha = s1_l q, g = s2_l (l + m) q, c = s2_l (l - m - 1) q with q = 1 / sqrt((l - m)(l + m)),
+    s1_l = sqrt((2l + 1)(2l - 1)), s2_l = sqrt((2l + 1) / (2l - 1)). Tables (double in C):
+    SHLI_SH_RSQ[k] = 1 / sqrt(k) (k = 1..2 MAX_BANDS - 1, [0] = 0), SHLI_SH_S12[2 l + {0, 1}] =
+    s1_l, s2_l. The products are within 5 ulp (double) of the exact constants."""
+    rsq = [0.0] + [1.0 / math.sqrt(k) for k in range(1, 2 * MAX_BANDS)]
+    s12 = [0.0, 0.0]
     for l in range(1, MAX_BANDS):
-        for m in range(0, l):
-            a, g, c = reinsch(l, m)
-            vals += [a, g, c]
+        s12 += [math.sqrt((2 * l + 1) * (2 * l - 1)), math.sqrt((2 * l + 1) / (2 * l - 1))]
     diagv = [diag(m) for m in range(MAX_BANDS)]
-    return vals, diagv
+    return rsq, s12, diagv
 
 
 def fmt_table(ctype, name, size, vals, lit, glsl):
@@ -544,28 +546,18 @@ MIRRORED_TABLES = {'SHLI_ZH_TAB': lambda: zh_table(UNROLLED)}
 
 
 def gen_lane_table():
-    """SHLI_SH_LANES[(SHLI_SH_LANES_AT[c] + l) * 48 + {0, 16, 32} + j]: alpha, g, c of band l for
-    order m = 16 c + j in the across-m SIMD core of n > 16 bands, for the bands where chunk c has
-    started (l >= max(1, 16 c), l < MAX_BANDS; the only ones the core reads); orders m >= l hold
-    the identity step (0, 1, 0). Chunk-major. Returns (values, SHLI_SH_LANES_AT)."""
-    vals, at, rows = [], [], 0
-    for ch in range(MAX_BANDS // 16):
-        l0 = max(1, 16 * ch)
-        at.append(rows - l0)
-        for l in range(l0, MAX_BANDS):
-            a_s, g_s, c_s = [], [], []
-            for j in range(16):
-                m = 16 * ch + j
-                if m < l:
-                    a, g, c = reinsch(l, m)
-                else:
-                    a, g, c = 0.0, 1.0, 0.0
-                a_s.append(a)
-                g_s.append(g)
-                c_s.append(c)
-            vals += a_s + g_s + c_s
-            rows += 1
-    return vals, at
+    """The float run-time loops of n > 16 bands (the AVX-512 core, the batch): SHLI_SH_LANEQ[l (l - 1) / 2 + m] =
+    s2_l q = sqrt((2l + 1) / (2l - 1)) / sqrt((l - m)(l + m)) for 0 <= m < l < MAX_BANDS (16
+    zeros after: masked loads of a chunk's 16 orders may reach past the last band), from which
+    alpha = (2l - 1) s2_l q, g = (l + m) s2_l q, c = (l - m - 1) s2_l q (gen_tables);
+    SHLI_SH_LANEK[63 + k] = k (k = -63 .. 2 MAX_BANDS - 2, as floats): l + m and m - l + 1 of
+    a chunk's orders from one contiguous load each. SHLI_SH_LANER[15 - k + j] = k - j
+    (j = 0..15): the lane reversal of a chunk's sines, a load instead of two vector operations."""
+    q = []
+    for l in range(1, MAX_BANDS):
+        s2 = math.sqrt((2 * l + 1) / (2 * l - 1))
+        q += [s2 / math.sqrt((l - m) * (l + m)) for m in range(l)]
+    return q + [0.0] * 16, [float(k) for k in range(-63, 2 * MAX_BANDS - 1)]
 
 
 def gen_lane_table_scaled():
@@ -671,35 +663,38 @@ def gen_band_weights(nmax):
             w('#endif')
     w('}')
     w('')
+    # one constant-trip loop per band, as above (shader compilers unroll it; constant indices)
     w('SHLIGHT_INLINE void shli_sh_zero_grad(int n, float *out_sh, float (*out_grad)[3]) {')
-    w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
     w('  int i;')
+    w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
     w('  for (i = SHLIGHT_UNROLLED_BANDS * SHLIGHT_UNROLLED_BANDS; i < n * n; ++i) {')
     w('    out_sh[i] = 0.0f;')
     w('    SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);')
     w('  }')
     w('#endif')
-    for l in range(nmax):
-        ind = '  '
-        if l > 0:
-            w('#if SHLIGHT_MAX_BANDS > %d' % l)
-            w('  if (n > %d) {' % l)
-            ind = '    '
-        for i in range(l * l, (l + 1) * (l + 1)):
-            w(ind + 'out_sh[%d] = 0.0f;' % i)
-            w(ind + 'SHLIGHT_SET3(out_grad[%d], 0.0f, 0.0f, 0.0f);' % i)
-        if l > 0:
-            w('  }')
-            w('#endif')
+    w('  out_sh[0] = 0.0f;')
+    w('  SHLIGHT_SET3(out_grad[0], 0.0f, 0.0f, 0.0f);')
+    for l in range(1, nmax):
+        w('#if SHLIGHT_MAX_BANDS > %d' % l)
+        w('  if (n > %d) {' % l)
+        w('    for (i = %d; i < %d; ++i) {' % (l * l, (l + 1) * (l + 1)))
+        w('      out_sh[i] = 0.0f;')
+        w('      SHLIGHT_SET3(out_grad[i], 0.0f, 0.0f, 0.0f);')
+        w('    }')
+        w('  }')
+        w('#endif')
     w('}')
     return L
 
 
 def c_regions():
-    tab, diagv = gen_tables()
+    rsq, s12, diagv = gen_tables()
     R = {}
-    R['sh_tab'] = (fmt_table_packed('shli_real', 'SHLI_SH_TAB', '%d' % len(tab), tab, lit_d, 4) +
-                      fmt_table_packed('float', 'SHLI_SH_DIAG', '%d' % len(diagv), diagv, lit_f, 6))
+    lt = gen_lane_table()
+    R['sh_tab'] = (fmt_table_packed('shli_real', 'SHLI_SH_RSQ', '%d' % len(rsq), rsq, lit_d, 4) +
+                   packed_table('float', 'SHLI_SH_LANEQ', lt[0], lit_fs) +
+                   fmt_table_packed('shli_real', 'SHLI_SH_S12', '%d' % len(s12), s12, lit_d, 4) +
+                   fmt_table_packed('float', 'SHLI_SH_DIAG', '%d' % len(diagv), diagv, lit_f, 6))
     body = []
     for n in range(1, POLY_BANDS + 1):
         body += [''] + gen_poly(n)
@@ -712,7 +707,6 @@ def c_regions():
     import gen_grad_simd
     R['gradv'] = gen_grad_simd.main()
     R['light_idx'] = gen_light_idx() + [''] + gen_band_weights(UNROLLED)
-    lt = gen_lane_table()
     ls = gen_lane_table_scaled()
     pco, ptap, podd = gen_poly_lanes()
     R['plane'] = (['#if SHLIGHT_SIMD_EVAL'] +
@@ -720,9 +714,8 @@ def c_regions():
                   packed_table('int', 'SHLI_SH_PTAP', ptap, str) +
                   packed_table('int', 'SHLI_SH_PODD', podd, lambda v: '0x%02X' % v) +
                   ['#endif'])
-    lt, lat = lt
-    R['lanes'] = (['#if SHLIGHT_SIMD_EVAL'] + packed_table('float', 'SHLI_SH_LANES', lt, lit_fs) +
-                  ['static const int SHLI_SH_LANES_AT[%d] = {%s};' % (len(lat), ', '.join('%d' % v for v in lat))] +
+    R['lanes'] = (['#if SHLIGHT_SIMD_EVAL'] + packed_table('float', 'SHLI_SH_LANEK', lt[1], lit_fs) +
+                  packed_table('int', 'SHLI_SH_LANER', list(range(15, -16, -1)), str) +
                   packed_table('float', 'SHLI_SH_LANES_S', ls, lit_fs) + ['#endif'])
     return R
 
