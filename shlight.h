@@ -1023,7 +1023,10 @@ SHLIGHT_API void shl_sh_eval_accurate(int n, const float d[3], float *out_y);
    exceeds 256 KiB, count is a multiple of the SIMD width and out_y is float-aligned, the rows
    go out by streaming (non-temporal) stores, so that any count costs about the same per
    direction (n = 10: 0.26-0.30 of the loop at count 1000 .. 65536); the values then sit in
-   memory, not in the caches. */
+   memory, not in the caches. Smaller outputs past L1 (up to 10 bands) prefetch the next lines
+   for writing. An output that is in no cache and cannot stream (count not a multiple of the
+   width) pays a read of each line from memory: n = 16, count 1000, 2.0 of the loop
+   (docs/speed-batch.md). */
 SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float *y, const float *z,
                                    float *out_y);
 
