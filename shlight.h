@@ -14830,8 +14830,9 @@ SHLI_BATCH_NOINLINE void shli_sh_batch_pf(shli_sh_batch_fn f2, int n, int count,
 }
 
 /* Batch loop for n > SHLIGHT_UNROLLED_BANDS: the generated kernels' math with table constants. */
-SHLI_BATCH_NOINLINE void shli_sh_batch_loop(int n, SHLI_V x, SHLI_V y, SHLI_V z, float *out,
-                                            ptrdiff_t stride) {
+static void shli_sh_batch_big(int n, const float *px, const float *py, const float *pz, float *out,
+                              ptrdiff_t stride) {
+  SHLI_V x = SHLI_VLOAD(px), y = SHLI_VLOAD(py), z = SHLI_VLOAD(pz);
   SHLI_V s2 = SHLI_VMADD(x, x, SHLI_VMUL(y, y));
   SHLI_V ir = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(z, z, s2)));
   SHLI_V az = SHLI_VMUL(SHLI_VABS(z), ir);
@@ -14875,6 +14876,17 @@ SHLI_BATCH_NOINLINE void shli_sh_batch_loop(int n, SHLI_V x, SHLI_V y, SHLI_V z,
   }
 }
 
+/* n > SHLIGHT_UNROLLED_BANDS: one vector a call, the last overlapping the previous one */
+SHLI_BATCH_NOINLINE void shli_sh_batch_loop(int n, int count, const float *x, const float *y,
+                                            const float *z, float *out_y) {
+  int j;
+  for (j = 0;; j += SHLI_W) {
+    if (j > count - SHLI_W) j = count - SHLI_W;
+    shli_sh_batch_big(n, x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
+    if (j + SHLI_W >= count) break;
+  }
+}
+
 /* count < SHLI_W, too few for one vector: the scalar kernel, strided (a function of its own:
    its 8 KB buffer would otherwise enlarge the frame of every call of the vector paths) */
 SHLI_BATCH_NOINLINE void shli_sh_batch_few(int n, int count, const float *x, const float *y,
@@ -14899,6 +14911,34 @@ SHLI_BATCH_NOINLINE void shli_sh_batch_few(int n, int count, const float *x, con
   }
 }
 
+/* n <= SHLIGHT_UNROLLED_BANDS, count >= 2 SHLI_W: two vectors a call */
+SHLI_BATCH_NOINLINE void shli_sh_batch_pairs(int n, int count, const float *x, const float *y,
+                                             const float *z, float *out_y) {
+  int j;
+  /* two vectors a call, the last pair overlapping the previous one (the same values
+     rewritten); outputs larger than L1 go to shli_sh_batch_nt or shli_sh_batch_pf */
+  shli_sh_batch_fn f2 = n <= SHLI_SH_BPOLY_BANDS ? SHLI_SH_BATCHP[1][n] : SHLI_SH_BATCHR[1][n - 7];
+  double bytes = (double)count * (double)(n * n) * sizeof(float);
+  if (bytes > 32768.0) {
+    if (count % SHLI_W == 0 && (size_t)out_y % sizeof(float) == 0 &&
+        bytes >= SHLI_BATCH_STREAM_BYTES) {
+      shli_sh_batch_nt(n, count, x, y, z, out_y);
+      return;
+    }
+    if (SHLI_W >= 4 && n <= SHLI_BATCH_PREFETCH_BANDS &&
+        bytes > (n <= SHLI_SH_BPOLY_BANDS ? 32768.0 : 65536.0) &&
+        !(count % 1024 == 0 && (n * n > 9 || bytes <= 49152.0))) {
+      shli_sh_batch_pf(f2, n, count, x, y, z, out_y);
+      return;
+    }
+  }
+  for (j = 0;; j += 2 * SHLI_W) {
+    if (j > count - 2 * SHLI_W) j = count - 2 * SHLI_W;
+    f2(x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
+    if (j + 2 * SHLI_W >= count) break;
+  }
+}
+
 SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float *y, const float *z,
                                    float *out_y) {
   int j;
@@ -14909,40 +14949,18 @@ SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float
     return;
   }
   if (n <= SHLIGHT_UNROLLED_BANDS && count >= 2 * SHLI_W) {
-    /* two vectors a call, the last pair overlapping the previous one (the same values
-       rewritten); outputs larger than L1 go to shli_sh_batch_nt or shli_sh_batch_pf */
-    shli_sh_batch_fn f2 =
-        n <= SHLI_SH_BPOLY_BANDS ? SHLI_SH_BATCHP[1][n] : SHLI_SH_BATCHR[1][n - 7];
-    double bytes = (double)count * (double)(n * n) * sizeof(float);
-    if (bytes > 32768.0) {
-      if (count % SHLI_W == 0 && (size_t)out_y % sizeof(float) == 0 &&
-          bytes >= SHLI_BATCH_STREAM_BYTES) {
-        shli_sh_batch_nt(n, count, x, y, z, out_y);
-        return;
-      }
-      if (SHLI_W >= 4 && n <= SHLI_BATCH_PREFETCH_BANDS &&
-          bytes > (n <= SHLI_SH_BPOLY_BANDS ? 32768.0 : 65536.0) &&
-          !(count % 1024 == 0 && (n * n > 9 || bytes <= 49152.0))) {
-        shli_sh_batch_pf(f2, n, count, x, y, z, out_y);
-        return;
-      }
-    }
-    for (j = 0;; j += 2 * SHLI_W) {
-      if (j > count - 2 * SHLI_W) j = count - 2 * SHLI_W;
-      f2(x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
-      if (j + 2 * SHLI_W >= count) break;
-    }
+    shli_sh_batch_pairs(n, count, x, y, z, out_y);
+    return;
+  }
+  /* one vector a call; the last vector overlaps the previous one instead of running a scalar
+     tail: the overlapping lanes are computed twice and written with the same values */
+  if (n > SHLIGHT_UNROLLED_BANDS) {
+    shli_sh_batch_loop(n, count, x, y, z, out_y);
     return;
   }
   for (j = 0;; j += SHLI_W) {
-    /* the last vector overlaps the previous one instead of running a scalar tail: the
-       overlapping lanes are computed twice and written with the same values */
     if (j > count - SHLI_W) j = count - SHLI_W;
-    if (n <= SHLIGHT_UNROLLED_BANDS)
-      shli_sh_batch_vec1(n, x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
-    else
-      shli_sh_batch_loop(n, SHLI_VLOAD(x + j), SHLI_VLOAD(y + j), SHLI_VLOAD(z + j), out_y + j,
-                         (ptrdiff_t)count);
+    shli_sh_batch_vec1(n, x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
     if (j + SHLI_W >= count) break;
   }
 }
