@@ -1033,7 +1033,10 @@ SHLIGHT_API void shl_sh_eval_accurate(int n, const float d[3], float *out_y);
    exceeds 256 KiB, count is a multiple of the SIMD width and out_y is float-aligned, the rows
    go out by streaming (non-temporal) stores, so that any count costs about the same per
    direction (n = 10: 0.26-0.30 of the loop at count 1000 .. 65536); the values then sit in
-   memory, not in the caches. */
+   memory, not in the caches. Smaller outputs past L1 (up to 10 bands) prefetch the next lines
+   for writing. An output that is in no cache and cannot stream (count not a multiple of the
+   width) pays a read of each line from memory: n = 16, count 1000, 2.0 of the loop
+   (docs/speed-batch.md). */
 SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float *y, const float *z,
                                    float *out_y);
 
@@ -12874,9 +12877,65 @@ static void shli_sh_batch_vec1(int n, const float *x, const float *y, const floa
 /* streaming stores from this much output on (bytes; bench/bench_batch.c: below it the rows
    stay in the caches and plain stores win) */
 #define SHLI_BATCH_STREAM_BYTES (256.0 * 1024.0)
+/* Below it, with an output larger than L1 (more than 32 KiB, 64 KiB from 7 bands; rows count
+   floats apart, a pair of vectors writing 2 n^2 lines), each pair prefetches the next pair's
+   lines for writing while it computes (PREFETCHW where the target has it): the lines of two
+   pairs, 4 n^2 x 64 bytes, fit L1 up to 10 bands; more bands lose (bench/bench_batch.c). Not
+   where rows a multiple of 4 KiB apart (count a multiple of 1024) share their L1 sets and
+   either more than 9 rows compete for them or the output stays in L1 anyway: there the
+   prefetches only evict lines. */
+#define SHLI_BATCH_PREFETCH_BANDS 10
+#if defined(__GNUC__) || defined(__clang__)
+#define SHLI_PREFETCHW(p) __builtin_prefetch((p), 1, 3)
+#define SHLI_BATCH_NOINLINE static __attribute__((noinline))
+#else
+#define SHLI_PREFETCHW(p) ((void)0)
+#define SHLI_BATCH_NOINLINE static
+#endif
+
+/* An output far larger than the caches (rows count floats apart, written once and not read
+   back here) goes out by streaming stores: count a multiple of SHLI_W puts every row at the
+   same alignment, so the pairs from j0 on are aligned; the vectors before j0 and after the last
+   pair are plain (overlapping) stores */
+SHLI_BATCH_NOINLINE void shli_sh_batch_nt(int n, int count, const float *x, const float *y,
+                                          const float *z, float *out_y) {
+  int j0 = (int)((((size_t)0 - (size_t)out_y) % (sizeof(float) * SHLI_W)) / sizeof(float)), j;
+  if (j0 > 0) shli_sh_batch_vec1(n, x, y, z, out_y, (ptrdiff_t)count);
+  for (j = j0; j + 2 * SHLI_W <= count; j += 2 * SHLI_W) {
+    if (n <= SHLI_SH_BPOLY_BANDS)
+      SHLI_SH_BATCHP[2][n](x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
+    else
+      shli_sh_batch_rs2s(n, x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
+  }
+  SHLI_VSFENCE();
+  for (; j < count; j += SHLI_W) {
+    if (j > count - SHLI_W) j = count - SHLI_W;
+    shli_sh_batch_vec1(n, x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
+  }
+}
+/* the pairs of vectors of one call (count >= 2 SHLI_W, kernel f2, plain stores), each
+   prefetching the next pair's lines for writing (one a row per 64 bytes: the line after a pair
+   is the next pair's first) */
+SHLI_BATCH_NOINLINE void shli_sh_batch_pf(shli_sh_batch_fn f2, int n, int count, const float *x,
+                                          const float *y, const float *z, float *out_y) {
+  int j, i, k;
+  for (j = 0;; j += 2 * SHLI_W) {
+    if (j > count - 2 * SHLI_W) j = count - 2 * SHLI_W;
+    if (j + 4 * SHLI_W <= count) {
+      const float *pp = out_y + j + 2 * SHLI_W;
+      for (i = 0; i < n * n; ++i, pp += count)
+        for (k = 0; k < 2 * SHLI_W; k += 16)
+          SHLI_PREFETCHW(pp + k);
+    }
+    f2(x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
+    if (j + 2 * SHLI_W >= count) break;
+  }
+}
 
 /* Batch loop for n > SHLIGHT_UNROLLED_BANDS: the generated kernels' math with table constants. */
-static void shli_sh_batch_loop(int n, SHLI_V x, SHLI_V y, SHLI_V z, float *out, ptrdiff_t stride) {
+static void shli_sh_batch_big(int n, const float *px, const float *py, const float *pz, float *out,
+                              ptrdiff_t stride) {
+  SHLI_V x = SHLI_VLOAD(px), y = SHLI_VLOAD(py), z = SHLI_VLOAD(pz);
   SHLI_V s2 = SHLI_VMADD(x, x, SHLI_VMUL(y, y));
   SHLI_V ir = SHLI_VDIV(SHLI_VSET(1.0f), SHLI_VSQRT(SHLI_VMADD(z, z, s2)));
   SHLI_V az = SHLI_VMUL(SHLI_VABS(z), ir);
@@ -12927,76 +12986,91 @@ static void shli_sh_batch_loop(int n, SHLI_V x, SHLI_V y, SHLI_V z, float *out, 
   }
 }
 
+/* n > SHLIGHT_UNROLLED_BANDS: one vector a call, the last overlapping the previous one */
+SHLI_BATCH_NOINLINE void shli_sh_batch_loop(int n, int count, const float *x, const float *y,
+                                            const float *z, float *out_y) {
+  int j;
+  for (j = 0;; j += SHLI_W) {
+    if (j > count - SHLI_W) j = count - SHLI_W;
+    shli_sh_batch_big(n, x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
+    if (j + SHLI_W >= count) break;
+  }
+}
+
+/* count < SHLI_W, too few for one vector: the scalar kernel, strided (a function of its own:
+   its 8 KB buffer would otherwise enlarge the frame of every call of the vector paths) */
+SHLI_BATCH_NOINLINE void shli_sh_batch_few(int n, int count, const float *x, const float *y,
+                                           const float *z, float *out_y) {
+  float tmp[SHLI_YBUF_COEFFS]; /* <= 8 KB; more bands streamed (16 KB stack rule) */
+  int i, j;
+#if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
+  if (n * n > SHLI_YBUF_COEFFS) {
+    for (j = 0; j < count; ++j)
+      shli_sh_ystream(n, x[j], y[j], z[j], NULL, NULL, 0.0f, out_y + j, (ptrdiff_t)count);
+    return;
+  }
+#endif
+  for (j = 0; j < count; ++j) {
+    float d[3];
+    d[0] = x[j];
+    d[1] = y[j];
+    d[2] = z[j];
+    shl_sh_eval(n, d, tmp);
+    for (i = 0; i < n * n; ++i)
+      out_y[(ptrdiff_t)i * count + j] = tmp[i];
+  }
+}
+
+/* n <= SHLIGHT_UNROLLED_BANDS, count >= 2 SHLI_W: two vectors a call */
+SHLI_BATCH_NOINLINE void shli_sh_batch_pairs(int n, int count, const float *x, const float *y,
+                                             const float *z, float *out_y) {
+  int j;
+  /* two vectors a call, the last pair overlapping the previous one (the same values
+     rewritten); outputs larger than L1 go to shli_sh_batch_nt or shli_sh_batch_pf */
+  shli_sh_batch_fn f2 = n <= SHLI_SH_BPOLY_BANDS ? SHLI_SH_BATCHP[1][n] : SHLI_SH_BATCHR[1][n - 7];
+  double bytes = (double)count * (double)(n * n) * sizeof(float);
+  if (bytes > 32768.0) {
+    if (count % SHLI_W == 0 && (size_t)out_y % sizeof(float) == 0 &&
+        bytes >= SHLI_BATCH_STREAM_BYTES) {
+      shli_sh_batch_nt(n, count, x, y, z, out_y);
+      return;
+    }
+    if (SHLI_W >= 4 && n <= SHLI_BATCH_PREFETCH_BANDS &&
+        bytes > (n <= SHLI_SH_BPOLY_BANDS ? 32768.0 : 65536.0) &&
+        !(count % 1024 == 0 && (n * n > 9 || bytes <= 49152.0))) {
+      shli_sh_batch_pf(f2, n, count, x, y, z, out_y);
+      return;
+    }
+  }
+  for (j = 0;; j += 2 * SHLI_W) {
+    if (j > count - 2 * SHLI_W) j = count - 2 * SHLI_W;
+    f2(x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
+    if (j + 2 * SHLI_W >= count) break;
+  }
+}
+
 SHLIGHT_API void shl_sh_eval_batch(int n, int count, const float *x, const float *y, const float *z,
                                    float *out_y) {
   int j;
   n = shli_bands(n);
   if (n < 1 || count <= 0) return;
-  if (count < SHLI_W) {          /* too few for one vector: the scalar kernel, strided */
-    float tmp[SHLI_YBUF_COEFFS]; /* <= 8 KB; more bands streamed (16 KB stack rule) */
-    int i;
-#if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
-    if (n * n > SHLI_YBUF_COEFFS) {
-      for (j = 0; j < count; ++j)
-        shli_sh_ystream(n, x[j], y[j], z[j], NULL, NULL, 0.0f, out_y + j, (ptrdiff_t)count);
-      return;
-    }
-#endif
-    for (j = 0; j < count; ++j) {
-      float d[3];
-      d[0] = x[j];
-      d[1] = y[j];
-      d[2] = z[j];
-      shl_sh_eval(n, d, tmp);
-      for (i = 0; i < n * n; ++i)
-        out_y[(ptrdiff_t)i * count + j] = tmp[i];
-    }
+  if (count < SHLI_W) {
+    shli_sh_batch_few(n, count, x, y, z, out_y);
     return;
   }
   if (n <= SHLIGHT_UNROLLED_BANDS && count >= 2 * SHLI_W) {
-    /* two vectors a call, the last pair overlapping the previous one (the same values
-       rewritten). An output far larger than the caches (rows count floats apart, written once
-       and not read back here) goes out by streaming stores: count a multiple of SHLI_W puts
-       every row at the same alignment, so the pairs from j0 on are aligned; the vectors before
-       j0 and after the last pair are plain (overlapping) stores */
-    int nt = count % SHLI_W == 0 && (size_t)out_y % sizeof(float) == 0 &&
-             (double)count * (double)(n * n) * sizeof(float) >= SHLI_BATCH_STREAM_BYTES;
-    int j0 =
-        nt ? (int)((((size_t)0 - (size_t)out_y) % (sizeof(float) * SHLI_W)) / sizeof(float)) : 0;
-    if (nt) {
-      if (j0 > 0) shli_sh_batch_vec1(n, x, y, z, out_y, (ptrdiff_t)count);
-      for (j = j0; j + 2 * SHLI_W <= count; j += 2 * SHLI_W) {
-        if (n <= SHLI_SH_BPOLY_BANDS)
-          SHLI_SH_BATCHP[2][n](x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
-        else
-          shli_sh_batch_rs2s(n, x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
-      }
-      SHLI_VSFENCE();
-      for (; j < count; j += SHLI_W) {
-        if (j > count - SHLI_W) j = count - SHLI_W;
-        shli_sh_batch_vec1(n, x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
-      }
-      return;
-    }
-    for (j = 0;; j += 2 * SHLI_W) {
-      if (j > count - 2 * SHLI_W) j = count - 2 * SHLI_W;
-      if (n <= SHLI_SH_BPOLY_BANDS)
-        SHLI_SH_BATCHP[1][n](x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
-      else
-        SHLI_SH_BATCHR[1][n - 7](x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
-      if (j + 2 * SHLI_W >= count) break;
-    }
+    shli_sh_batch_pairs(n, count, x, y, z, out_y);
+    return;
+  }
+  /* one vector a call; the last vector overlaps the previous one instead of running a scalar
+     tail: the overlapping lanes are computed twice and written with the same values */
+  if (n > SHLIGHT_UNROLLED_BANDS) {
+    shli_sh_batch_loop(n, count, x, y, z, out_y);
     return;
   }
   for (j = 0;; j += SHLI_W) {
-    /* the last vector overlaps the previous one instead of running a scalar tail: the
-       overlapping lanes are computed twice and written with the same values */
     if (j > count - SHLI_W) j = count - SHLI_W;
-    if (n <= SHLIGHT_UNROLLED_BANDS)
-      shli_sh_batch_vec1(n, x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
-    else
-      shli_sh_batch_loop(n, SHLI_VLOAD(x + j), SHLI_VLOAD(y + j), SHLI_VLOAD(z + j), out_y + j,
-                         (ptrdiff_t)count);
+    shli_sh_batch_vec1(n, x + j, y + j, z + j, out_y + j, (ptrdiff_t)count);
     if (j + SHLI_W >= count) break;
   }
 }

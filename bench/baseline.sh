@@ -41,7 +41,7 @@ while [ "$r" -le "$ROUNDS" ]; do
   for w in new base; do
     echo "-- $w"
     awk '/^### ratio to the plain loop/ {p = 1} /^### value \+ gradient/ {p = 2} /^### / && !/ratio to the plain|value \+ gradient/ {p = 0} p' "$B/out/$w-$r/basis.txt"
-    tail -n 6 "$B/out/$w-$r/batch.md"
+    sed -n '/^### reuse/,$p' "$B/out/$w-$r/batch.md"
   done
   r=$((r + 1))
 done

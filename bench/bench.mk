@@ -39,6 +39,17 @@ bench-batch: build/bench/bench_batch
 bench: bench-batch
 .PHONY: bench-batch
 
+# the store floors of the batch's output layout (bandwidth of one core to L1 / L2 / memory, and
+# the batch's store pattern without arithmetic): docs/speed-batch.md
+build/bench/bench_store: bench/bench_store.c bench/bench_util.h
+	@mkdir -p build/bench
+	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ bench/bench_store.c -lm
+
+bench-store: build/bench/bench_store
+	@mkdir -p bench/out
+	build/bench/bench_store | tee bench/out/store.md
+.PHONY: bench-store
+
 # the bench programs that need only -lm (their extra headers are listed with each)
 build/bench/bench_%: bench/bench_%.c shlight.h bench/bench_util.h
 	@mkdir -p build/bench

@@ -9,9 +9,13 @@
  *
  * Time = per-thread CPU time, median of S samples of >= 2 ms each; the counts of one n are
  * timed interleaved (sample k of every count before sample k + 1 of any), so that they share the
- * machine's noise. Each sample evaluates about 64 Ki directions (count 65536: one call) into an
- * output of n^2 * count floats that is reused from call to call, so count = 65536 measures the
- * batch writing n^2 x 256 KiB to memory (beyond the last-level cache for n >= 6).
+ * machine's noise. Each sample evaluates about 64 Ki directions (count 65536: one call) in two
+ * ways: `reuse`, into one output of n^2 * count floats rewritten call after call (small counts
+ * then stay in L1: the kernel's compute speed), and `fresh`, each call writing the next
+ * n^2 * count floats of a 64 MiB arena, as a caller that keeps its results does (every count
+ * then writes n^2 x 256 KiB in all; the lines are flushed from the caches before each sample,
+ * so these are memory-cold writes). count = 65536 writes n^2 x 256 KiB either
+ * way (beyond the L2 for n >= 3).
  * The yardstick `loop` is the plain float loop of Sloan's recurrence (bench_basis.c's base_f),
  * one direction a call, n a run-time argument: ratio = batch ns / loop ns. */
 #define _POSIX_C_SOURCE 200809L
@@ -25,6 +29,9 @@
 
 #include <stdio.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #if defined(__clang__)
 #define NOINL __attribute__((noinline, used))
@@ -85,8 +92,25 @@ NOINL void bw_loop(int n, float x, float y, float z, float *out) {
   }
 }
 
-/* one sample: ~64 Ki directions in calls of `count` (count < 0: the yardstick loop) */
-static double sample(int n, int count) {
+/* fresh: the arena's lines written by the sample are first flushed from the caches, as memory
+   a caller allocated for its results and has not touched lately */
+static void flush(const float *p, size_t bytes) {
+#if defined(__SSE2__)
+  size_t k;
+  for (k = 0; k < bytes; k += 64)
+    _mm_clflush((const char *)p + k);
+  _mm_mfence();
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
+/* one sample: ~64 Ki directions in calls of `count` (count < 0: the yardstick loop); fresh: each
+   call writes the next n^2 x count floats of the 64 MiB output arena (a caller that keeps its
+   results), else every call rewrites the start of it */
+static double sample(int n, int count, int fresh) {
+  size_t per = (size_t)n * (size_t)n * (size_t)(count > 0 ? count : 1), o = 0;
   double t0, t1;
   int j, reps, r, total = 0;
   if (count < 0) {
@@ -101,13 +125,15 @@ static double sample(int n, int count) {
   }
   reps = MAXCNT / count;
   if (reps < 1) reps = 1;
+  if (fresh) flush(gout, per * (size_t)reps * sizeof(float));
   t0 = now();
   for (r = 0; r < reps; ++r) {
-    /* consecutive calls walk the inputs (as a user batching a stream does); the output
-       buffer is reused */
+    /* consecutive calls walk the inputs (as a user batching a stream does) */
     int off = (r * count) % (MAXCNT - count + 1);
-    shl_sh_eval_batch(n, count, gx + off, gy + off, gz + off, gout);
+    if (o + per > (size_t)MAXN * MAXN * MAXCNT) o = 0;
+    shl_sh_eval_batch(n, count, gx + off, gy + off, gz + off, gout + o);
     __asm__ volatile("" ::: "memory");
+    if (fresh) o += per;
     total += count;
   }
   t1 = now();
@@ -116,8 +142,8 @@ static double sample(int n, int count) {
 
 int main(int argc, char **argv) {
   int quick = argc > 1 && strcmp(argv[1], "--quick") == 0;
-  int S = quick ? 5 : 15, s, a, c, j;
-  static double tm[NBN][NCNT + 1][64];
+  int S = quick ? 5 : 15, s, a, c, j, f;
+  static double tm[2][NBN][NCNT + 1][64];
   void *mem;
   gx = (float *)malloc(sizeof(float) * MAXCNT);
   gy = (float *)malloc(sizeof(float) * MAXCNT);
@@ -135,33 +161,39 @@ int main(int argc, char **argv) {
     gz[j] = (float)z;
   }
   loop_init();
-  for (a = 0; a < NBN; ++a) /* warm-up */
-    for (c = 0; c <= NCNT; ++c)
-      (void)sample(BANDS[a], c < NCNT ? COUNTS[c] : -1);
-  for (s = 0; s < S; ++s)
-    for (a = 0; a < NBN; ++a)
+  for (f = 0; f < 2; ++f)
+    for (a = 0; a < NBN; ++a) /* warm-up */
       for (c = 0; c <= NCNT; ++c)
-        tm[a][c][s] = sample(BANDS[a], c < NCNT ? COUNTS[c] : -1);
+        (void)sample(BANDS[a], c < NCNT ? COUNTS[c] : -1, f);
+  for (s = 0; s < S; ++s)
+    for (f = 0; f < 2; ++f)
+      for (a = 0; a < NBN; ++a)
+        for (c = 0; c <= NCNT; ++c)
+          tm[f][a][c][s] = sample(BANDS[a], c < NCNT ? COUNTS[c] : -1, f);
   printf("shl_sh_eval_batch, ns per direction (median of %d samples of ~64 Ki directions; "
-         "ratio to the plain loop in parentheses)\n\n",
+         "ratio to the plain loop in parentheses)\n",
          S);
-  printf("| n | loop ns |");
-  for (c = 0; c < NCNT; ++c)
-    printf(" count %d |", COUNTS[c]);
-  printf(" max/min |\n|---|---|");
-  for (c = 0; c < NCNT; ++c)
-    printf("---|");
-  printf("---|\n");
-  for (a = 0; a < NBN; ++a) {
-    double lo = 1e30, hi = 0, lp = pct(tm[a][NCNT], S, 0.5);
-    printf("| %d | %.2f |", BANDS[a], lp);
-    for (c = 0; c < NCNT; ++c) {
-      double v = pct(tm[a][c], S, 0.5);
-      lo = v < lo ? v : lo;
-      hi = v > hi ? v : hi;
-      printf(" %.2f (%.3f) |", v, v / lp);
+  for (f = 0; f < 2; ++f) {
+    printf("\n### %s\n\n| n | loop ns |",
+           f ? "fresh: each call writes a new region of a 64 MiB arena"
+             : "reuse: every call rewrites one output buffer");
+    for (c = 0; c < NCNT; ++c)
+      printf(" count %d |", COUNTS[c]);
+    printf(" max/min |\n|---|---|");
+    for (c = 0; c < NCNT; ++c)
+      printf("---|");
+    printf("---|\n");
+    for (a = 0; a < NBN; ++a) {
+      double lo = 1e30, hi = 0, lp = pct(tm[f][a][NCNT], S, 0.5);
+      printf("| %d | %.2f |", BANDS[a], lp);
+      for (c = 0; c < NCNT; ++c) {
+        double v = pct(tm[f][a][c], S, 0.5);
+        lo = v < lo ? v : lo;
+        hi = v > hi ? v : hi;
+        printf(" %.2f (%.3f) |", v, v / lp);
+      }
+      printf(" %.2f |\n", hi / lo);
     }
-    printf(" %.2f |\n", hi / lo);
   }
   free(gx);
   free(gy);
