@@ -8218,8 +8218,8 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band2(int l, const shli_rot_v2 *
 /* n in [1, SHLI_ROT_FAST_BANDS] */
 SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float *sh,
                                             float *out_sh) {
-  double cm[3 * SHLI_ROT_FAST_BANDS];
-  double sm[3 * SHLI_ROT_FAST_BANDS];
+  double zr[3];
+  double zi[3];
   double r2 = (double)R[2];
   double r5 = (double)R[5];
   double s2 = r2 * r2 + r5 * r5;
@@ -8296,71 +8296,57 @@ SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float
   if (n < 3) {
     return;
   }
-  /* cos, sin of m gamma, m (beta + pi), m (alpha + pi) = (-1)^m those of m beta, m alpha, at
-     3 m + q; m = 2, 3 here, 4..7 below, as products of lower ones (three multiplications
-     deep) */
-  cm[0] = 1.0;
-  sm[0] = 0.0;
-  cm[1] = 1.0;
-  sm[1] = 0.0;
-  cm[2] = 1.0;
-  sm[2] = 0.0;
-  cm[3] = t;
-  sm[3] = w;
-  cm[4] = -cb;
-  sm[4] = -sb;
-  cm[5] = -c1;
-  sm[5] = -s1;
-  SHLI_ROT_UNROLL
-  for (m = 2; m < 4; ++m) {
+  /* z_q = cos + i sin of gamma, beta + pi, alpha + pi (the latter two: -(cos, sin) of beta,
+     alpha); per z rotation q the lanes hold z^m for the even m (0, 2, 4, 6: powers of u = z^2)
+     and the odd m (z times those), real and imaginary parts apart */
+  zr[0] = t;
+  zi[0] = w;
+  zr[1] = -cb;
+  zi[1] = -sb;
+  zr[2] = -c1;
+  zi[2] = -s1;
+  if (n <= 4) {
     SHLI_ROT_UNROLL
     for (q = 0; q < 3; ++q) {
-      /* m = (m / 2 + m % 2) + m / 2 */
-      int a = 3 * (m / 2 + m % 2) + q;
-      int d = 3 * (m / 2) + q;
-      cm[3 * m + q] = cm[a] * cm[d] - sm[a] * sm[d];
-      sm[3 * m + q] = sm[a] * cm[d] + cm[a] * sm[d];
+      double ur = zr[q] * zr[q] - zi[q] * zi[q];
+      double ui = 2.0 * zr[q] * zi[q];
+      shli_rot_v2 ce2 = {1.0, ur};
+      shli_rot_v2 se2 = {0.0, ui};
+      shli_rot_v2 co2 = {zr[q], zr[q] * ur - zi[q] * ui};
+      shli_rot_v2 so2 = {zi[q], zi[q] * ur + zr[q] * ui};
+      tv2[4 * q] = ce2;
+      tv2[4 * q + 1] = se2;
+      tv2[4 * q + 2] = co2;
+      tv2[4 * q + 3] = so2;
     }
-  }
-  SHLI_ROT_UNROLL
-  for (q = 0; q < 3; ++q) {
-    shli_rot_v2 ce2 = {cm[q], cm[6 + q]};
-    shli_rot_v2 se2 = {sm[q], sm[6 + q]};
-    shli_rot_v2 co2 = {cm[3 + q], cm[9 + q]};
-    shli_rot_v2 so2 = {sm[3 + q], sm[9 + q]};
-    tv2[4 * q] = ce2;
-    tv2[4 * q + 1] = se2;
-    tv2[4 * q + 2] = co2;
-    tv2[4 * q + 3] = so2;
-  }
-  /* literal band numbers: see shli_rot_band */
-  shli_rot_band2(2, tv2, sh, out_sh);
-  if (n > 3) {
-    shli_rot_band2(3, tv2, sh, out_sh);
-  }
-  if (n > 4) {
+    shli_rot_band2(2, tv2, sh, out_sh);
+    if (n > 3) {
+      shli_rot_band2(3, tv2, sh, out_sh);
+    }
+  } else {
     shli_rot_v4 tv[12];
     SHLI_ROT_UNROLL
-    for (m = 4; m < SHLI_ROT_FAST_BANDS; ++m) {
-      SHLI_ROT_UNROLL
-      for (q = 0; q < 3; ++q) {
-        int a = 3 * (m / 2 + m % 2) + q;
-        int d = 3 * (m / 2) + q;
-        cm[3 * m + q] = cm[a] * cm[d] - sm[a] * sm[d];
-        sm[3 * m + q] = sm[a] * cm[d] + cm[a] * sm[d];
-      }
-    }
-    SHLI_ROT_UNROLL
     for (q = 0; q < 3; ++q) {
-      shli_rot_v4 ce = {cm[q], cm[6 + q], cm[12 + q], cm[18 + q]};
-      shli_rot_v4 se = {sm[q], sm[6 + q], sm[12 + q], sm[18 + q]};
-      shli_rot_v4 co = {cm[3 + q], cm[9 + q], cm[15 + q], cm[21 + q]};
-      shli_rot_v4 so = {sm[3 + q], sm[9 + q], sm[15 + q], sm[21 + q]};
+      double ur = zr[q] * zr[q] - zi[q] * zi[q];
+      double ui = 2.0 * zr[q] * zi[q];
+      double u2r = ur * ur - ui * ui;
+      double u2i = 2.0 * ur * ui;
+      double u3r = u2r * ur - u2i * ui;
+      double u3i = u2i * ur + u2r * ui;
+      shli_rot_v4 ce = {1.0, ur, u2r, u3r};
+      shli_rot_v4 se = {0.0, ui, u2i, u3i};
       tv[4 * q] = ce;
       tv[4 * q + 1] = se;
-      tv[4 * q + 2] = co;
-      tv[4 * q + 3] = so;
+      tv[4 * q + 2] = zr[q] * ce - zi[q] * se;
+      tv[4 * q + 3] = zi[q] * ce + zr[q] * se;
+      SHLI_ROT_UNROLL
+      for (m = 0; m < 4; ++m) {
+        SHLI_ROT_LD(tv2[4 * q + m], &tv[4 * q + m]);
+      }
     }
+    /* literal band numbers: see shli_rot_band */
+    shli_rot_band2(2, tv2, sh, out_sh);
+    shli_rot_band2(3, tv2, sh, out_sh);
     shli_rot_band(4, tv, sh, out_sh);
     if (n > 5) {
       shli_rot_band(5, tv, sh, out_sh);
