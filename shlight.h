@@ -8098,6 +8098,9 @@ static const double SHLI_ROT_X90_4[256] = {
 #define SHLI_ROT_UNROLL
 #endif
 #define SHLI_ROT_FORCE __attribute__((always_inline))
+/* out of line: inlined, its 32-byte-aligned vectors and the portable kernel's 7 KB of arrays
+   would share one frame, set up on every call (about 25 instructions) */
+#define SHLI_ROT_NOINLINE static __attribute__((noinline, unused))
 /* the input group of output group g (0 A, 1 C, 2 D, 3 B) and its lanes k0 .. k1 - 1 */
 #define SHLI_ROT_SRC(l, g)                                                                         \
   ((l) % 2 == 0 ? ((g) == 1 ? 2 : ((g) == 2 ? 1 : (g))) : ((g) == 0 ? 3 : ((g) == 3 ? 0 : (g))))
@@ -8216,8 +8219,8 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band2(int l, const shli_rot_v2 *
 }
 
 /* n in [1, SHLI_ROT_FAST_BANDS] */
-SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float *sh,
-                                            float *out_sh) {
+SHLI_ROT_NOINLINE void shli_sh_rotate_fast(int n, const float R[9], const float *sh,
+                                           float *out_sh) {
   double zr[3];
   double zi[3];
   double r2 = (double)R[2];
