@@ -252,12 +252,12 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    for beta = 0, 1e-6, pi / 2, pi - 1e-6, pi (the float rounding of the output); band energy
    kept to 1.1e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16 (llvmpipe).
    Cost: n <= 8 (C, GCC / Clang): 3 square roots and 1 division, then per band 3 z rotations
-   and 2 (2l + 1) multiply-adds of 2- or 4-lane double vectors: 146 / 436 / 821 / 1113
-   instructions at n = 2 / 4 / 6 / 8 (gcc -O3, callgrind), 21 / 65 / 142 / 173 ns. Otherwise
-   about n^3 / 3 steps of the two recurrences (one sqrt and one division each) and n^3 / 3 of
-   the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc -O3 -march=native;
-   docs/rotation.md has the tables, with DirectXMath's XMSHRotate, n <= 6, still about 2x
-   faster at n <= 6). Stack: about 8 KB at SHLIGHT_MAX_BANDS = 64. */
+   and 2 (2l + 1) multiply-adds of 2- or 4-lane double vectors: 141 / 396 / 722 / 1030
+   instructions at n = 2 / 4 / 6 / 8 (gcc -O3 -march=x86-64-v3), 16 / 53 / 116 ns at n = 2 /
+   4 / 6. Otherwise about n^3 / 3 steps of the two recurrences (one sqrt and one division
+   each) and n^3 / 3 of the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc -O3
+   -march=native; docs/rotation.md has the tables, with DirectXMath's XMSHRotate, n <= 6,
+   still 1.6x to 4x faster in time). Stack: about 9 KB at SHLIGHT_MAX_BANDS = 64. */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh);
 
 /* ---- light --------------------------------------------------------------------------------- */
@@ -8219,8 +8219,8 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band2(int l, const shli_rot_v2 *
 }
 
 /* n in [1, SHLI_ROT_FAST_BANDS] */
-SHLI_ROT_NOINLINE void shli_sh_rotate_fast(int n, const float R[9], const float *sh,
-                                           float *out_sh) {
+SHLI_ROT_NOINLINE void shli_sh_rotate_small(int n, const float R[9], const float *sh,
+                                            float *out_sh) {
   double zr[3];
   double zi[3];
   double r2 = (double)R[2];
@@ -8361,6 +8361,11 @@ SHLI_ROT_NOINLINE void shli_sh_rotate_fast(int n, const float R[9], const float 
       shli_rot_band(7, tv, sh, out_sh);
     }
   }
+}
+
+SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float *sh,
+                                            float *out_sh) {
+  shli_sh_rotate_small(n, R, sh, out_sh);
 }
 #endif
 
