@@ -252,12 +252,12 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    for beta = 0, 1e-6, pi / 2, pi - 1e-6, pi (the float rounding of the output); band energy
    kept to 1.1e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16 (llvmpipe).
    Cost: n <= 8 (C, GCC / Clang): 3 square roots and 1 division, then per band 3 z rotations
-   and 2 (2l + 1) multiply-adds of 2- or 4-lane double vectors: 141 / 396 / 722 / 1030
-   instructions at n = 2 / 4 / 6 / 8 (gcc -O3 -march=x86-64-v3), 16 / 53 / 116 ns at n = 2 /
+   and 2 (2l + 1) multiply-adds of 2- or 4-lane double vectors: 141 / 394 / 721 / 1028
+   instructions at n = 2 / 4 / 6 / 8 (gcc -O3 -march=x86-64-v3), 16 / 50 / 116 ns at n = 2 /
    4 / 6. Otherwise about n^3 / 3 steps of the two recurrences (one sqrt and one division
    each) and n^3 / 3 of the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc -O3
    -march=native; docs/rotation.md has the tables, with DirectXMath's XMSHRotate, n <= 6,
-   still 1.6x to 4x faster in time). Stack: about 9 KB at SHLIGHT_MAX_BANDS = 64. */
+   still 1.6x to 4.5x faster in time). Stack: about 9 KB at SHLIGHT_MAX_BANDS = 64. */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh);
 
 /* ---- light --------------------------------------------------------------------------------- */
@@ -8235,21 +8235,18 @@ SHLI_ROT_NOINLINE void shli_sh_rotate_small(int n, const float R[9], const float
   double hg = sqrt(t * t + w * w);
   double c1 = 1.0;
   double s1 = 0.0;
-  double iv;
   int m;
   int q;
   shli_rot_v2 tv2[12];
   /* the portable kernel's angles (the same rotation for any R), its three normalisations side
-     by side; in the common case one division for the three (sb, h, hg >= 1e-45 and <= 1e78:
-     their product neither overflows nor underflows in double) */
+     by side; in the common case one vector division for the three (sb, h, hg in [1e-45,
+     1e78]: their reciprocals are finite) */
   if (sb > 0.0 && hg > 0.0) {
-    double ia = h * hg;
-    double ib = sb * hg;
-    double ic = sb * h;
-    iv = 1.0 / (ic * hg);
-    ia = ia * iv;
-    ib = ib * iv;
-    ic = ic * iv;
+    shli_rot_v4 nv = {sb, h, hg, 1.0};
+    shli_rot_v4 rv = 1.0 / nv;
+    double ia = rv[0];
+    double ib = rv[1];
+    double ic = rv[2];
     c1 = r2 * ia;
     s1 = r5 * ia;
     cb = cb * ib;
