@@ -252,12 +252,12 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    for beta = 0, 1e-6, pi / 2, pi - 1e-6, pi (the float rounding of the output); band energy
    kept to 1.1e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16 (llvmpipe).
    Cost: n <= 8 (C, GCC / Clang): 3 square roots and 1 division, then per band 3 z rotations
-   and 2 (2l + 1) multiply-adds of 2- or 4-lane double vectors: 146 / 436 / 821 / 1113
-   instructions at n = 2 / 4 / 6 / 8 (gcc -O3, callgrind), 21 / 65 / 142 / 173 ns. Otherwise
-   about n^3 / 3 steps of the two recurrences (one sqrt and one division each) and n^3 / 3 of
-   the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc -O3 -march=native;
-   docs/rotation.md has the tables, with DirectXMath's XMSHRotate, n <= 6, still about 2x
-   faster at n <= 6). Stack: about 8 KB at SHLIGHT_MAX_BANDS = 64. */
+   and 2 (2l + 1) multiply-adds of 2- or 4-lane double vectors: 141 / 394 / 721 / 1028
+   instructions at n = 2 / 4 / 6 / 8 (gcc -O3 -march=x86-64-v3), 16 / 50 / 116 ns at n = 2 /
+   4 / 6. Otherwise about n^3 / 3 steps of the two recurrences (one sqrt and one division
+   each) and n^3 / 3 of the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc -O3
+   -march=native; docs/rotation.md has the tables, with DirectXMath's XMSHRotate, n <= 6,
+   still 1.6x to 4.5x faster in time). Stack: about 9 KB at SHLIGHT_MAX_BANDS = 64. */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh);
 
 /* ---- light --------------------------------------------------------------------------------- */
@@ -6168,6 +6168,9 @@ static const double SHLI_ROT_X90_4[256] = {
 #define SHLI_ROT_UNROLL
 #endif
 #define SHLI_ROT_FORCE __attribute__((always_inline))
+/* out of line: inlined, its 32-byte-aligned vectors and the portable kernel's 7 KB of arrays
+   would share one frame, set up on every call (about 25 instructions) */
+#define SHLI_ROT_NOINLINE static __attribute__((noinline, unused))
 /* the input group of output group g (0 A, 1 C, 2 D, 3 B) and its lanes k0 .. k1 - 1 */
 #define SHLI_ROT_SRC(l, g)                                                                         \
   ((l) % 2 == 0 ? ((g) == 1 ? 2 : ((g) == 2 ? 1 : (g))) : ((g) == 0 ? 3 : ((g) == 3 ? 0 : (g))))
@@ -6286,10 +6289,10 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band2(int l, const shli_rot_v2 *
 }
 
 /* n in [1, SHLI_ROT_FAST_BANDS] */
-SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float *sh,
+SHLI_ROT_NOINLINE void shli_sh_rotate_small(int n, const float R[9], const float *sh,
                                             float *out_sh) {
-  double cm[3 * SHLI_ROT_FAST_BANDS];
-  double sm[3 * SHLI_ROT_FAST_BANDS];
+  double zr[3];
+  double zi[3];
   double r2 = (double)R[2];
   double r5 = (double)R[5];
   double s2 = r2 * r2 + r5 * r5;
@@ -6302,21 +6305,18 @@ SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float
   double hg = sqrt(t * t + w * w);
   double c1 = 1.0;
   double s1 = 0.0;
-  double iv;
   int m;
   int q;
   shli_rot_v2 tv2[12];
   /* the portable kernel's angles (the same rotation for any R), its three normalisations side
-     by side; in the common case one division for the three (sb, h, hg >= 1e-45 and <= 1e78:
-     their product neither overflows nor underflows in double) */
+     by side; in the common case one vector division for the three (sb, h, hg in [1e-45,
+     1e78]: their reciprocals are finite) */
   if (sb > 0.0 && hg > 0.0) {
-    double ia = h * hg;
-    double ib = sb * hg;
-    double ic = sb * h;
-    iv = 1.0 / (ic * hg);
-    ia = ia * iv;
-    ib = ib * iv;
-    ic = ic * iv;
+    shli_rot_v4 nv = {sb, h, hg, 1.0};
+    shli_rot_v4 rv = 1.0 / nv;
+    double ia = rv[0];
+    double ib = rv[1];
+    double ic = rv[2];
     c1 = r2 * ia;
     s1 = r5 * ia;
     cb = cb * ib;
@@ -6366,71 +6366,57 @@ SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float
   if (n < 3) {
     return;
   }
-  /* cos, sin of m gamma, m (beta + pi), m (alpha + pi) = (-1)^m those of m beta, m alpha, at
-     3 m + q; m = 2, 3 here, 4..7 below, as products of lower ones (three multiplications
-     deep) */
-  cm[0] = 1.0;
-  sm[0] = 0.0;
-  cm[1] = 1.0;
-  sm[1] = 0.0;
-  cm[2] = 1.0;
-  sm[2] = 0.0;
-  cm[3] = t;
-  sm[3] = w;
-  cm[4] = -cb;
-  sm[4] = -sb;
-  cm[5] = -c1;
-  sm[5] = -s1;
-  SHLI_ROT_UNROLL
-  for (m = 2; m < 4; ++m) {
+  /* z_q = cos + i sin of gamma, beta + pi, alpha + pi (the latter two: -(cos, sin) of beta,
+     alpha); per z rotation q the lanes hold z^m for the even m (0, 2, 4, 6: powers of u = z^2)
+     and the odd m (z times those), real and imaginary parts apart */
+  zr[0] = t;
+  zi[0] = w;
+  zr[1] = -cb;
+  zi[1] = -sb;
+  zr[2] = -c1;
+  zi[2] = -s1;
+  if (n <= 4) {
     SHLI_ROT_UNROLL
     for (q = 0; q < 3; ++q) {
-      /* m = (m / 2 + m % 2) + m / 2 */
-      int a = 3 * (m / 2 + m % 2) + q;
-      int d = 3 * (m / 2) + q;
-      cm[3 * m + q] = cm[a] * cm[d] - sm[a] * sm[d];
-      sm[3 * m + q] = sm[a] * cm[d] + cm[a] * sm[d];
+      double ur = zr[q] * zr[q] - zi[q] * zi[q];
+      double ui = 2.0 * zr[q] * zi[q];
+      shli_rot_v2 ce2 = {1.0, ur};
+      shli_rot_v2 se2 = {0.0, ui};
+      shli_rot_v2 co2 = {zr[q], zr[q] * ur - zi[q] * ui};
+      shli_rot_v2 so2 = {zi[q], zi[q] * ur + zr[q] * ui};
+      tv2[4 * q] = ce2;
+      tv2[4 * q + 1] = se2;
+      tv2[4 * q + 2] = co2;
+      tv2[4 * q + 3] = so2;
     }
-  }
-  SHLI_ROT_UNROLL
-  for (q = 0; q < 3; ++q) {
-    shli_rot_v2 ce2 = {cm[q], cm[6 + q]};
-    shli_rot_v2 se2 = {sm[q], sm[6 + q]};
-    shli_rot_v2 co2 = {cm[3 + q], cm[9 + q]};
-    shli_rot_v2 so2 = {sm[3 + q], sm[9 + q]};
-    tv2[4 * q] = ce2;
-    tv2[4 * q + 1] = se2;
-    tv2[4 * q + 2] = co2;
-    tv2[4 * q + 3] = so2;
-  }
-  /* literal band numbers: see shli_rot_band */
-  shli_rot_band2(2, tv2, sh, out_sh);
-  if (n > 3) {
-    shli_rot_band2(3, tv2, sh, out_sh);
-  }
-  if (n > 4) {
+    shli_rot_band2(2, tv2, sh, out_sh);
+    if (n > 3) {
+      shli_rot_band2(3, tv2, sh, out_sh);
+    }
+  } else {
     shli_rot_v4 tv[12];
     SHLI_ROT_UNROLL
-    for (m = 4; m < SHLI_ROT_FAST_BANDS; ++m) {
-      SHLI_ROT_UNROLL
-      for (q = 0; q < 3; ++q) {
-        int a = 3 * (m / 2 + m % 2) + q;
-        int d = 3 * (m / 2) + q;
-        cm[3 * m + q] = cm[a] * cm[d] - sm[a] * sm[d];
-        sm[3 * m + q] = sm[a] * cm[d] + cm[a] * sm[d];
-      }
-    }
-    SHLI_ROT_UNROLL
     for (q = 0; q < 3; ++q) {
-      shli_rot_v4 ce = {cm[q], cm[6 + q], cm[12 + q], cm[18 + q]};
-      shli_rot_v4 se = {sm[q], sm[6 + q], sm[12 + q], sm[18 + q]};
-      shli_rot_v4 co = {cm[3 + q], cm[9 + q], cm[15 + q], cm[21 + q]};
-      shli_rot_v4 so = {sm[3 + q], sm[9 + q], sm[15 + q], sm[21 + q]};
+      double ur = zr[q] * zr[q] - zi[q] * zi[q];
+      double ui = 2.0 * zr[q] * zi[q];
+      double u2r = ur * ur - ui * ui;
+      double u2i = 2.0 * ur * ui;
+      double u3r = u2r * ur - u2i * ui;
+      double u3i = u2i * ur + u2r * ui;
+      shli_rot_v4 ce = {1.0, ur, u2r, u3r};
+      shli_rot_v4 se = {0.0, ui, u2i, u3i};
       tv[4 * q] = ce;
       tv[4 * q + 1] = se;
-      tv[4 * q + 2] = co;
-      tv[4 * q + 3] = so;
+      tv[4 * q + 2] = zr[q] * ce - zi[q] * se;
+      tv[4 * q + 3] = zi[q] * ce + zr[q] * se;
+      SHLI_ROT_UNROLL
+      for (m = 0; m < 4; ++m) {
+        SHLI_ROT_LD(tv2[4 * q + m], &tv[4 * q + m]);
+      }
     }
+    /* literal band numbers: see shli_rot_band */
+    shli_rot_band2(2, tv2, sh, out_sh);
+    shli_rot_band2(3, tv2, sh, out_sh);
     shli_rot_band(4, tv, sh, out_sh);
     if (n > 5) {
       shli_rot_band(5, tv, sh, out_sh);
@@ -6442,6 +6428,11 @@ SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float
       shli_rot_band(7, tv, sh, out_sh);
     }
   }
+}
+
+SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float *sh,
+                                            float *out_sh) {
+  shli_sh_rotate_small(n, R, sh, out_sh);
 }
 #endif
 
