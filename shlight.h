@@ -7534,16 +7534,8 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
    I_j shl_sphere_light(_grad) (see >>light: inside a light, the hemisphere).
    Culling (shl_grid.cull = eps >= 0; 0: every light reaches every vertex): light j is skipped
    at the vertices farther than R_j = max(r_j sqrt(2 pi |I_j| / eps), 2 r_j) from c_j (test in
-   double: |c - p|^2 > R_j^2). Error bound, per skipped light and coefficient of band l
-   (solid angle Omega = 2 pi (1 - alpha) <= 2 pi r^2 / d^2 < eps / |I|, |Z_l| <= Omega for the
-   cap's ZH (|P_l| <= 1), |Y_l^m| <= sqrt((2l+1) / 4 pi)):
-     |I_j sh_i| <= eps sqrt((2l+1) / (4 pi))
-     |I_j grad sh_i| <= (eps / d) sqrt((2l+1) / (4 pi)) (sqrt(l (l+1)) + 2 / alpha),
-   d > R_j >= 2 r_j so alpha >= sqrt(3) / 2 and the last factor <= l + 1 + 2.31; (the first
-   term bounds the rotational part by the sum rule sum_m |grad_S Y_l^m|^2 =
-   l (l+1) (2l+1) / 4 pi, the second the radial part 2 pi s^2 P_l / (d alpha) Y). The error at
-   a vertex is at most the number of lights skipped there times these. The L2 norm over all
-   n^2 coefficients is also <= |I_j| sqrt(Omega) < sqrt(eps |I_j|) (Bessel).
+   double: |c - p|^2 > R_j^2). The error bounds (values and
+   gradients, per skipped light) are derived in docs/math.md section 10.
    Orders: SHLIGHT_GRID_FORWARD loops the vertices, then the lights (all lights, culling
    test per pair); SHLIGHT_GRID_REVERSED loops the lights, then the vertices of the box around
    the culling sphere (all vertices when eps = 0). Both add the lights to a vertex in index
@@ -7570,7 +7562,7 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
      corner values and gradients exactly, every polynomial of total degree <= 2 exactly, and
      has error O(h^3) (zero mixed derivatives would leave O(h^2)). Evaluated as one linear
      combination of the 32 corner data with weights computed once per call (32 FMA per
-     coefficient). The seed and [WCZR20] do not spell out their mixed-derivative treatment;
+     coefficient). [GRAD] and [WCZR20] do not spell out their mixed-derivative treatment;
      this is ours. */
 
 SHLIGHT_INLINE void shl_grid_trilinear(int n, const float *c8, const float f[3], float *out_sh) {
@@ -12047,22 +12039,11 @@ SHLIGHT_INLINE void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int whi
    sec. 3.2 leaves this constant to the VPL generation). So its SH coefficients ([SSF] eq. 1)
    are e Y_i(w) (shl_ssf_vpl_sh) and its irradiance at a normal n is e max(0, n . w)
    (shl_ssf_vpl_irradiance); a Lambertian receiver of albedo kd reflects kd / pi of that.
-   A VPL made from a spot light of intensity I (W/sr) through a shadow-map texel of solid angle
-   dw that lands on a Lambertian surface of albedo kd has Phi = kd I dw: the texel's footprint
-   dA = d^2 dw / cos(theta_in) receives the irradiance I cos(theta_in) / d^2, so the cosines
-   cancel (on a normal-mapped surface the irradiance takes the mapped normal's cosine and Phi
-   = kd I dw cos(theta_s) / cos(theta_in)). Through a square pinhole image of w x w texels with
-   tan(a) on the half-side (a: the cone's half-angle), the texel centred at the image-plane
-   point (u, v) (plane at distance 1) has dw ~ (2 tan(a) / w)^2 / (1 + u^2 + v^2)^(3/2) (its
-   midpoint value; exactly F(u1, v1) - F(u0, v1) - F(u1, v0) + F(u0, v0) with F(u, v) =
-   atan(u v / sqrt(1 + u^2 + v^2)) over its corners); texels outside the cone carry no flux.
+   VPLs from a spot light's shadow map: flux and texel solid angle in docs/math.md section 11.
    Interleaved sampling ([SSF] sec. 2.3). The VPLs are split into n_int m_int disjoint sets,
    set s holding the VPLs j with j mod (n_int m_int) = s; pixel (px, py) uses set
    s = (py mod m_int) n_int + (px mod n_int) (shl_ssf_interleave), so every n_int x m_int tile
-   of pixels uses every VPL exactly once. For sets that are spread over the scene rather than
-   clustered, order the VPLs of a w x h shadow map (w, h multiples of n_int, m_int) so that
-   texel (tx, ty) is VPL ((ty / m_int) (w / n_int) + tx / n_int) n_int m_int + (ty mod m_int)
-   n_int + tx mod n_int: each set is then a regular sub-lattice of the map. A pixel's estimate
+   of pixels uses every VPL exactly once. A pixel's estimate
    scales the flux of its set by n_int m_int (an unbiased estimate of the sum over all VPLs).
    Filter ([SSF] sec. 3). Per pixel the SH of the incoming radiance of its set (RGB: three
    SH vectors), then the box filter over the n_int x m_int window around the pixel with the
@@ -12070,9 +12051,7 @@ SHLIGHT_INLINE void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int whi
    look at a normal map), sum w_k L_k / sum w_k; finally the irradiance at the normal-mapped
    normal from the filtered SH (shl_ssf_irradiance, the convolution with the clamped cosine;
    for RGB rotate the cosine once, shl_zh_cosine_power(n, 1) + shl_zh_rotate, and take
-   shl_sh_dot per channel). Filtering the irradiance instead (classical IGI) averages values
-   that belong to different shading normals and blurs normal-map detail; the SH keep the
-   direction until the normal is applied. */
+   shl_sh_dot per channel). */
 
 /* The VPL seen from x (see >>ssf): out_g the frame of shli_cap_frame with the unit direction
    w = out_g[0..2] from x to y; returns e, or 0 when the VPL adds nothing. */
