@@ -1074,8 +1074,9 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
    sample, with e1 = max |T(q/2) - T(q/4)| and e2 = max |T(q) - T(q/2)|, e2^2.5 / e1^1.5 while
    e2 < e1 (geometric convergence), else e2; at least 2^-24 max |T| (the float rounding of the
    table); the max over the samples. Measured against an independent long-double projection
-   (GGX alpha 0.05 .. 1, Phong 1000, theta_o 30 .. 89.5 deg, q 32 .. 128): 0.65 .. 5.5 times
-   the true error (docs/brdf-tables.md); not a guaranteed bound. Accuracy (n = 9, against an
+   (GGX alpha 0.01 .. 1, Phong 1000, theta_o 30 .. 89.5 deg, q 32 .. 128): 0.65 .. 5.5 times
+   the true error (docs/brdf-tables.md; 0.77 .. 1.8 for the half-vector rule, which sits at
+   the float floor); not a guaranteed bound. Accuracy (n = 9, against an
    independent long-double projection and q = 256): isotropic GGX / Beckmann reach the float
    rounding floor at q = 24 for every alpha in [1e-3, 4] and theta_o up to cos theta_o = 1e-6
    (q = 16: within 10 float ulps), Blinn-Phong at q = 16 up to e = 1e6, Phong at q = 32 up to
