@@ -1058,17 +1058,26 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
    outgoing sample (layout and sampling of >>brdftab). Quadrature over w_i, sums in double:
    - the kd / pi term: Gauss-Legendre in cos(theta_i) (n/2 + 2 nodes) x uniform phi_i (n + 2
      nodes), exact for it (its products with Y are polynomials of degree <= n);
-   - the specular term (ks > 0), in the frame whose pole is the mirror direction r of w_o:
-     panels of the angle g from r with break points at 2, 6, 18, 54 lobe widths (width:
-     1/sqrt(e + 1) Phong, 2/sqrt(e + 2) Blinn-Phong, 2 max(alpha) microfacet), where the circle
-     of angle g about r first meets the horizon (g = pi/2 - theta_o) and where it leaves it;
-     quad_order Gauss-Legendre nodes per panel after the substitution g = g0 + (g1 - g0) s^2
-     (3 - 2 s), which is smooth through the square-root ends of the arc length; on each circle
-     only the arc above the horizon (end points in closed form): 2 quad_order uniform nodes
-     round a whole circle, else panels at 0, +-w/2, +-3w/2, +-9w/2 and graded towards the arc's
-     ends (pm - L/4, /16, /64), quad_order Gauss-Legendre nodes each. Every panel's integrand is
-     smooth, so the error falls geometrically with quad_order even for sharp lobes and grazing
-     w_o (docs/brdf-tables.md has the error against quad_order).
+   - isotropic microfacet lobes (Blinn-Phong; Beckmann and GGX with alpha_x = alpha_y), over
+     the half vector h (w_i its mirror of w_o, d w_i = 4 (w_o . h) d h): D depends only on the
+     angle t of h from the normal, with the width alpha (Blinn-Phong sqrt(2 / (e + 2))) at any
+     theta_o, so a sharp lobe is not foreshortened at grazing w_o. Panels of t at atan(3^k
+     alpha), k < 8, at t1 = (90 deg - theta_o) / 2 (below it every circle of h is whole, above
+     it w_i crosses the horizon) and graded (ratio 1/4, down to t1) towards the end tmax = 90
+     deg - t1 (w_i = w_o's backscatter on the horizon, where F' of a grazing w_o peaks like
+     1 / (cos_i + cos_o)); quad_order Gauss-Legendre nodes per panel after g = g0 + (g1 - g0)
+     s^2 (3 - 2 s). Whole circles: 2 quad_order uniform nodes; arcs (closed-form ends): panels
+     graded towards the ends (1 - 4^-k, k <= 3), quad_order nodes each;
+   - other specular terms (Phong, anisotropic Beckmann / GGX), in the frame whose pole is the
+     mirror direction r of w_o: panels of the angle g from r with break points at 2, 6, 18, 54
+     lobe widths (width: 1/sqrt(e + 1) Phong, 2 max(alpha) microfacet), where the circle of
+     angle g about r first meets the horizon (g = pi/2 - theta_o) and where it leaves it;
+     quad_order Gauss-Legendre nodes per panel after the same substitution; on each circle only
+     the arc above the horizon (end points in closed form): 2 quad_order uniform nodes round a
+     whole circle, else panels at 0, +-w/2, +-3w/2, +-9w/2 and graded towards the arc's ends
+     (pm - L/4, /16, /64), quad_order Gauss-Legendre nodes each.
+   Every panel's integrand is smooth, so the error falls geometrically with quad_order
+   (docs/brdf-tables.md has the error against quad_order).
    Outgoing samples on the grid of >>brdftab (shl_brdf_table_theta), the last one at
    cos theta_o = SHLIGHT_BRDF_TABLE_GRAZING. Y by shl_sh_eval in float at the float-rounded
    node; the table rounds to float. Stack: about 13.5 KB deep (gcc -O2 -fstack-usage: 12.6 KB in
@@ -1078,21 +1087,25 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
    sample, with e1 = max |T(q/2) - T(q/4)| and e2 = max |T(q) - T(q/2)|, e2^2.5 / e1^1.5 while
    e2 < e1 (geometric convergence), else e2; at least 2^-24 max |T| (the float rounding of the
    table); the max over the samples. Measured against an independent long-double projection
-   (GGX alpha 0.05 .. 1, Phong 1000, theta_o 30 .. 89.5 deg, q 32 .. 128): 0.65 .. 5.5 times
-   the true error (docs/brdf-tables.md); not a guaranteed bound. Accuracy: Phong / Blinn-Phong
-   reach the float rounding floor at q = 32 up to e = 1e6, GGX / Beckmann alpha >= 0.05 at
-   q = 128 (q = 64: 2e-4 near grazing); alpha < 0.05 near grazing does not converge within
-   q = 256 (alpha 0.01 at 89.5 deg: 2.6e-2 at q = 128). quad_order in [2, 256].
-   Returns SHLIGHT_EINVAL (data untouched) for NULL t / data / brdf, n, n_theta, n_phi out of
-   range (see shl_brdf_table_size), flags != (n_phi > 1 ? ANISO : 0), an unknown model,
-   negative or non-finite kd / ks, a Phong / Blinn-Phong exponent outside [0,
-   SHLIGHT_BRDF_MAX_EXPONENT] (larger ones, up to 1e27, used to give non-finite tables), alpha
-   outside [SHLIGHT_BRDF_MIN_ALPHA, 4] for Beckmann / GGX, f0
-   outside [0, 1] (microfacet models), quad_order out of range; SHLIGHT_ENOMEM when n > 16 and
-   the 2 n^2-double accumulator (on the stack up to 16 bands) cannot be allocated. Cost: per
-   sample, up to ~12 panels x q x (2q .. 14q) nodes (x 1.31 with out_err_est), each one BRDF
-   evaluation, one shl_sh_eval and 2 n^2 FMA. Measured, 90 samples, n = 9, one core: q = 32
-   0.19 s (GGX 1) .. 0.69 s (GGX 0.05), q = 64 0.75 .. 2.7 s (Phong 1000: 0.55, 2.3 s). */
+   (GGX alpha 0.01 .. 1, Phong 1000, theta_o 30 .. 89.5 deg, q 32 .. 128): 0.65 .. 5.5 times
+   the true error (docs/brdf-tables.md; 0.77 .. 1.8 for the half-vector rule, which sits at
+   the float floor); not a guaranteed bound. Accuracy (n = 9, against an
+   independent long-double projection and q = 256): isotropic GGX reaches the float rounding
+   floor at q = 24 for every alpha in [1e-3, 4] and theta_o up to cos theta_o = 1e-6, Beckmann
+   at q = 24 for alpha <= 1 and q = 48 up to alpha 4 (q = 32: 8e-8), Blinn-Phong at q = 16 up
+   to e = 1e6, Phong at q = 32 up to e = 1e6; anisotropic Beckmann / GGX (the specular-frame rule)
+   reach it at q = 128 for max(alpha) >= 0.05 and do not converge near grazing below that
+   (docs/brdf-tables.md). quad_order in [2, 256]. Returns SHLIGHT_EINVAL (data untouched) for NULL t
+   / data / brdf, n, n_theta, n_phi out of range (see shl_brdf_table_size), flags != (n_phi > 1 ?
+   ANISO : 0), an unknown model, negative or non-finite kd / ks, a Phong / Blinn-Phong exponent
+   outside [0, SHLIGHT_BRDF_MAX_EXPONENT] (larger ones, up to 1e27, used to give non-finite tables),
+   alpha outside [SHLIGHT_BRDF_MIN_ALPHA, 4] for Beckmann / GGX, f0 outside [0, 1] (microfacet
+   models), quad_order out of range; SHLIGHT_ENOMEM when n > 16 and the 2 n^2-double accumulator (on
+   the stack up to 16 bands) cannot be allocated. Cost: per sample, up to ~20 t panels x q x (2q ..
+   8q) nodes (isotropic microfacet) or ~12 panels x q x (2q .. 14q) (specular frame), x 1.31 with
+   out_err_est, each node one BRDF evaluation, one shl_sh_eval and 2 n^2 FMA. Measured, 90 samples,
+   n = 9, one core of a loaded machine: GGX q = 16 0.18 s (alpha 1) .. 0.27 s (alpha 1e-3), q = 32
+   0.75 .. 1.1 s; Phong 1000 q = 32 0.55 s. */
 SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_params *brdf,
                                             int quad_order, float *out_err_est);
 
@@ -13562,6 +13575,7 @@ typedef struct shli_tabsrc {
   int channel;
   double width; /* lobe width in radians (specular frame break points) */
   double gmax;  /* the lobe is 0 beyond this angle from r (pi: no limit) */
+  int half;     /* 1: an isotropic microfacet lobe, the half-vector quadrature (width: alpha) */
 } shli_tabsrc;
 
 static double shli_merl_f(const shl_merl *m, int c, const double wo[3], const double wi[3]);
@@ -13760,6 +13774,154 @@ static void shli_tab_spec(int n, const shli_tabsrc *src, const double wo[3], int
   }
 }
 
+/* one node of the half-vector quadrature: h = ct z + st (cos(ph) a + sin(ph) b), w_i the
+   mirror of w_o about h, weight wgt 4 (w_o . h) (the Jacobian d w_i / d h) */
+static void shli_tab_hnode(int n, const shli_tabsrc *src, const double wo[3], const double *a,
+                           const double *b, double ct, double st, double ph, double wgt,
+                           double *acc, float *y) {
+  double h[3];
+  double wi[3];
+  double cp = cos(ph);
+  double sp = sin(ph);
+  double oh;
+  double f;
+  int k;
+  for (k = 0; k < 2; ++k) {
+    h[k] = st * (cp * a[k] + sp * b[k]);
+  }
+  h[2] = ct;
+  oh = wo[0] * h[0] + wo[1] * h[1] + wo[2] * h[2];
+  for (k = 0; k < 3; ++k) {
+    wi[k] = 2.0 * oh * h[k] - wo[k];
+  }
+  if (!(wi[2] > 0.0) || !(oh > 0.0)) {
+    return;
+  }
+  f = shli_src_f(src, wo, wi);
+  if (f != 0.0) {
+    shli_tab_node(n, acc, y, 4.0 * oh * wgt * f, wi);
+  }
+}
+
+#define SHLI_HALF_GRADE 3
+
+/* the half-vector quadrature of an isotropic microfacet lobe (see shl_brdf_table_build) at
+   order q: w_i = 2 (w_o . h) h - w_o, d w_i = 4 (w_o . h) d h, h = cos(t) z + sin(t) (cos(ph) a
+   + sin(ph) b) with a the azimuth of w_o. D depends on t only, with the width alpha whatever
+   theta_o (no foreshortening), and w_i is above the horizon iff cos(ph) > cs(t) =
+   -cos_o cos(2t) / (sin_o sin(2t)): full circles for t < (pi/2 - theta_o) / 2, arcs
+   (-pm, pm) up to t = (pi/2 + theta_o) / 2. */
+static void shli_tab_half(int n, const shli_tabsrc *src, const double wo[3], int q, double *acc,
+                          float *y, const double *xg, const double *wg) {
+  double br[24];
+  double top;
+  double ax[3];
+  double bx[3];
+  double so = sqrt(wo[0] * wo[0] + wo[1] * wo[1]);
+  double co = wo[2];
+  double eps = atan2(co, so); /* pi/2 - theta_o */
+  double t1 = 0.5 * eps;
+  double tmax = 0.5 * SHLI_PI - 0.5 * eps;
+  int nb = 0;
+  int p;
+  int i;
+  int j;
+  int k;
+  if (so > 1e-300) {
+    ax[0] = wo[0] / so;
+    ax[1] = wo[1] / so;
+  } else {
+    ax[0] = 1.0;
+    ax[1] = 0.0;
+  }
+  ax[2] = 0.0;
+  bx[0] = -ax[1];
+  bx[1] = ax[0];
+  bx[2] = 0.0;
+  br[nb++] = 0.0;
+  br[nb++] = tmax;
+  if (t1 > 0.0 && t1 < tmax) {
+    br[nb++] = t1;
+  }
+  top = t1 > 0.5 * tmax ? t1 : 0.5 * tmax;
+  for (k = 0; k < 8; ++k) {
+    double b = atan(src->width * pow(3.0, (double)k));
+    if (b < tmax) {
+      br[nb++] = b;
+      top = b > top ? b : top;
+    }
+  }
+  /* graded towards tmax, the backscatter direction w_i = w_o on the horizon's side of w_o,
+     down to (pi/2 - theta_o) / 2: F' of a grazing w_o peaks there like 1 / (cos_i + cos_o) */
+  for (k = 0; k < 12 && (tmax - top) > 0.5 * eps; ++k) {
+    top = tmax - 0.25 * (tmax - top);
+    br[nb++] = top;
+  }
+  for (i = 1; i < nb; ++i) { /* insertion sort */
+    double v = br[i];
+    for (j = i; j > 0 && br[j - 1] > v; --j) {
+      br[j] = br[j - 1];
+    }
+    br[j] = v;
+  }
+  for (p = 0; p + 1 < nb; ++p) {
+    double g0 = br[p];
+    double g1 = br[p + 1];
+    if (!(g1 - g0 > 1e-15)) {
+      continue;
+    }
+    for (i = 0; i < q; ++i) {
+      double s = 0.5 * (xg[i] + 1.0);
+      double t = g0 + (g1 - g0) * s * s * (3.0 - 2.0 * s);
+      double st = sin(t);
+      double ct = cos(t);
+      double wgi = 0.5 * wg[i] * (g1 - g0) * 6.0 * s * (1.0 - s) * st;
+      double cs;
+      double ab[24];
+      int nab = 0;
+      int pa;
+      double pm;
+      double la;
+      if (so > 1e-300 && st > 0.0) {
+        cs = -co * (ct * ct - st * st) / (so * 2.0 * st * ct);
+      } else {
+        cs = ct * ct > st * st ? -2.0 : 2.0;
+      }
+      if (cs >= 1.0) {
+        continue;
+      }
+      if (cs <= -1.0) {
+        for (j = 0; j < 2 * q; ++j) {
+          shli_tab_hnode(n, src, wo, ax, bx, ct, st,
+                         2.0 * SHLI_PI * ((double)j + 0.5) / (double)(2 * q),
+                         wgi * 2.0 * SHLI_PI / (double)(2 * q), acc, y);
+        }
+        continue;
+      }
+      /* the arc (-pm, pm), graded geometrically towards its ends, where w_i meets the
+         horizon (F' of a grazing w_o peaks there like 1 / (cos_i + delta)) */
+      pm = acos(cs);
+      ab[nab++] = 0.0;
+      la = pm;
+      for (k = 0; k < SHLI_HALF_GRADE; ++k) {
+        la *= 0.25;
+        ab[nab++] = pm - la;
+      }
+      ab[nab++] = pm;
+      for (pa = 0; pa + 1 < nab; ++pa) {
+        double a0 = ab[pa];
+        double a1 = ab[pa + 1];
+        for (j = 0; j < q; ++j) {
+          double v = 0.5 * (a0 + a1) + 0.5 * (a1 - a0) * xg[j];
+          double wj = wgi * 0.5 * (a1 - a0) * wg[j];
+          shli_tab_hnode(n, src, wo, ax, bx, ct, st, v, wj, acc, y);
+          shli_tab_hnode(n, src, wo, ax, bx, ct, st, -v, wj, acc, y);
+        }
+      }
+    }
+  }
+}
+
 /* theta_o of sample t of an n_theta-sample grid (see >>brdftab), in double: u(d) = t / (n - 1)
    solved for d by bisection (u is monotone), d = pi/2 - theta_o */
 static double shli_grid_d(int n_theta, int t) {
@@ -13800,7 +13962,9 @@ static void shli_tab_project(int n, const shli_tabsrc *src, double kd, int spec,
   if (kd != 0.0) {
     shli_tab_diffuse(n, kd, acc, y);
   }
-  if (spec) {
+  if (spec && src->half) {
+    shli_tab_half(n, src, wo, q, acc, y, xg, wg);
+  } else if (spec) {
     shli_tab_spec(n, src, wo, q, acc, y, xg, wg);
   }
 }
@@ -13927,6 +14091,14 @@ SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_pa
     src.width = 2.0 / sqrt((double)brdf->exponent + 2.0);
   } else {
     src.width = 2.0 * (double)(brdf->alpha_x > brdf->alpha_y ? brdf->alpha_x : brdf->alpha_y);
+  }
+  src.half = 0;
+  if (brdf->model == SHLIGHT_BRDF_BLINN_PHONG) {
+    src.half = 1;
+    src.width = sqrt(2.0 / ((double)brdf->exponent + 2.0));
+  } else if (micro && brdf->alpha_x == brdf->alpha_y) {
+    src.half = 1;
+    src.width = (double)brdf->alpha_x;
   }
   return shli_tab_build(t, &src, (double)brdf->kd, quad_order, out_err_est);
 }
@@ -14103,6 +14275,7 @@ SHLIGHT_API shl_result shl_brdf_table_build_merl(shl_brdf_table *t, const shl_me
   }
   src.brdf = NULL;
   src.merl = m;
+  src.half = 0;
   src.channel = c;
   src.width = 0.1;
   src.gmax = SHLI_PI;

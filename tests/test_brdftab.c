@@ -1111,8 +1111,9 @@ static void test_brdftab_lookup_ends(void) {
   src.brdf = &b;
   src.merl = NULL;
   src.channel = 0;
-  src.width = 0.6;
+  src.width = 0.3; /* alpha: the half-vector quadrature, as the build sets it up */
   src.gmax = PI;
+  src.half = 1;
   shli_gauss_legendre(96, xg, wg);
   for (k = 0; k < 6; ++k) {
     double th = degs[k] * PI / 180.0, wo[3], e[2] = {0, 0};
@@ -1141,6 +1142,107 @@ static void test_brdftab_lookup_ends(void) {
   /* interpolation error, O(h^2): measured max 1.5e-4 (3.7 deg), 5.4e-5 at 89.9 deg */
   TL_CHECK(wmax <= 3e-4, "lookup off by %g of the norm", wmax);
   free(d);
+}
+
+/* tiny roughness at grazing: GGX and Beckmann alpha = 1e-3 (SHLIGHT_BRDF_MIN_ALPHA) and 0.01 at
+   theta_o = 85.5, 89.5, 89.9 deg and the last sample (cos theta_o = 1e-6), n = 9: the half-vector
+   quadrature at q = 24 against q = 96 (converged to the float floor: within 8 float ulps of the
+   largest coefficient; the earlier specular-frame rule was 0.18 off at alpha 1e-3, 89.5 deg,
+   q = 128), the albedo sqrt(4 pi) F_00 in (0, 1] (f0 = 1); then alpha = 0.05 at 89.5 deg against
+   the independent specular-frame rule (another parametrisation, converged at q = 160); and the
+   build's error estimate of a 2-sample table (0 and 90 deg) within 10x of its float floor */
+static void test_brdftab_tiny_alpha_grazing(void) {
+  const int n = 9, nn = 81;
+  const double degs[4] = {85.5, 89.5, 89.9, 90.0};
+  const float alphas[2] = {1e-3f, 0.01f};
+  const int models[2] = {SHLIGHT_BRDF_GGX, SHLIGHT_BRDF_BECKMANN};
+  static double xg[160], wg[160], xs[24], ws[24], a[162], r[162];
+  float y[81];
+  double worst = 0.0, alb_lo = 1.0, alb_hi = 0.0, ind;
+  int m, j, k, i;
+  shli_gauss_legendre(96, xg, wg);
+  shli_gauss_legendre(24, xs, ws);
+  for (m = 0; m < 2; ++m)
+    for (j = 0; j < 2; ++j) {
+      shl_brdf_params b = mk(models[m], 0, alphas[j], alphas[j], 1);
+      shli_tabsrc src;
+      src.brdf = &b;
+      src.merl = NULL;
+      src.channel = 0;
+      src.gmax = PI;
+      src.half = 1;
+      src.width = (double)alphas[j];
+      for (k = 0; k < 4; ++k) {
+        double th = degs[k] * PI / 180.0, wo[3], mx = 0.0, e = 0.0, alb;
+        if (degs[k] >= 90.0) th = acos(SHLIGHT_BRDF_TABLE_GRAZING);
+        wo[0] = sin(th);
+        wo[1] = 0.0;
+        wo[2] = cos(th);
+        shli_tab_project(n, &src, 0.0, 1, wo, 24, xs, ws, a, y);
+        shli_tab_project(n, &src, 0.0, 1, wo, 96, xg, wg, r, y);
+        for (i = 0; i < 2 * nn; ++i) {
+          mx = fabs(r[i]) > mx ? fabs(r[i]) : mx;
+          e = fabs((double)(float)a[i] - r[i]) > e ? fabs((double)(float)a[i] - r[i]) : e;
+        }
+        e /= mx * 5.9604644775390625e-8;
+        worst = e > worst ? e : worst;
+        alb = sqrt(4.0 * PI) * r[0];
+        alb_lo = alb < alb_lo ? alb : alb_lo;
+        alb_hi = alb > alb_hi ? alb : alb_hi;
+        printf("  %s %g, %5.2f deg: |T(24) - T(96)| = %.1f float ulps of max |T| = %.3g, "
+               "albedo %.4f\n",
+               m ? "Beckmann" : "GGX", (double)alphas[j], degs[k], e, mx, alb);
+      }
+    }
+  TL_CHECK(worst <= 8.0, "q = 24 off q = 96 by %g float ulps", worst);
+  TL_CHECK(alb_lo > 0.0 && alb_hi <= 1.0 + 1e-6, "albedo %g .. %g", alb_lo, alb_hi);
+  { /* independent: the specular-frame rule of the anisotropic path at alpha 0.05, 89.5 deg */
+    shl_brdf_params b = mk(SHLIGHT_BRDF_GGX, 0, 0.05f, 0.05f, 1);
+    shli_tabsrc src;
+    double th = 89.5 * PI / 180.0, wo[3], mx = 0.0, e = 0.0;
+    wo[0] = sin(th);
+    wo[1] = 0.0;
+    wo[2] = cos(th);
+    src.brdf = &b;
+    src.merl = NULL;
+    src.channel = 0;
+    src.gmax = PI;
+    src.half = 1;
+    src.width = 0.05;
+    shli_gauss_legendre(32, xg, wg);
+    shli_tab_project(n, &src, 0.0, 1, wo, 32, xg, wg, a, y);
+    src.half = 0;
+    src.width = 0.1;
+    shli_gauss_legendre(160, xg, wg);
+    shli_tab_project(n, &src, 0.0, 1, wo, 160, xg, wg, r, y);
+    for (i = 0; i < 2 * nn; ++i) {
+      mx = fabs(r[i]) > mx ? fabs(r[i]) : mx;
+      e = fabs(a[i] - r[i]) > e ? fabs(a[i] - r[i]) : e;
+    }
+    ind = e / mx;
+    printf("  GGX 0.05, 89.50 deg: half-vector q = 32 against specular-frame q = 160: %.1e of "
+           "max |T|\n",
+           ind);
+    TL_CHECK(ind <= 1e-6, "half-vector and specular-frame rules differ by %g", ind);
+  }
+  { /* the build's estimate at the float floor, 0 and 90 deg, alpha 1e-3 */
+    shl_brdf_params b = mk(SHLIGHT_BRDF_GGX, 0, 1e-3f, 1e-3f, 1);
+    shl_brdf_table t;
+    float *d = falloc(shl_brdf_table_size(n, 2, 1)), est = -1.0f;
+    double mx;
+    t.n = n;
+    t.n_theta = 2;
+    t.n_phi = 1;
+    t.flags = 0;
+    t.data = d;
+    TL_CHECK(shl_brdf_table_build(&t, &b, 32, &est) == SHLIGHT_OK, "build");
+    mx = maxabs(d, 2 * 2 * nn);
+    printf("  GGX 1e-3, 2 samples, q = 32: estimate %.2e = %.1f float ulps of max |T| = %.3g\n",
+           (double)est, (double)est / (mx * 5.9604644775390625e-8), mx);
+    TL_CHECK(est >= mx * 5.9604644775390625e-8 && est <= 10.0 * mx * 5.9604644775390625e-8,
+             "estimate %g for max |T| %g", (double)est, mx);
+    free(d);
+  }
 }
 
 /* the outgoing grid: shl_brdf_table_theta against the closed form of the grid variable in long
@@ -1195,5 +1297,6 @@ int main(void) {
   TL_RUN(test_brdftab_cell_overflow);
   TL_RUN(test_brdftab_lookup_ends);
   TL_RUN(test_brdftab_grid);
+  TL_RUN(test_brdftab_tiny_alpha_grazing);
   return tl_summary();
 }
