@@ -231,17 +231,11 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    the rotation matrix R (row-major, R[3 i + j] = R_ij): g(w) = f(R^T w), so sh = Y(d) gives
    out_sh = Y(R d). n: bands, 1..SHLIGHT_MAX_BANDS (64 in C; GLSL: written for n <= 16, see
    accuracy); n < 1 writes nothing, n > max is clamped.
-   Method: R = Rz(alpha) Ry(beta) Rz(gamma) (zyz Euler angles, found without inverse
-   trigonometry: beta from R's third column, alpha from its first two entries, gamma from the
-   second row of Rz(-alpha) R); the z rotations act on each (m, -m) pair; the y rotation is the
-   real-basis form of Wigner's d^l_{m'm}(beta), each entry carried up the bands by the
-   three-term recurrence in l of its Jacobi polynomial (start at l = max(|m|, |m'|) from the
-   closed form sqrt(C(2q, q+p)) cos(beta/2)^a sin(beta/2)^b), one row m' at a time, so the
-   work space is O(n) and no matrix of a band is ever stored. C with GCC or Clang, n <= 8
-   (SHLIGHT_ROTATE_FAST, default 1 there): the same angles, then Ry(beta) = X(-90) Rz(beta)
-   X(+90) with constant band matrices of the +90 degree turn about x, in double vectors;
-   band 1 the signed permutation of the rotation. Both give the same float result but for
-   rare last-bit differences (tests/test_rotate.c holds them to 6e-8 of each band).
+   Method (docs/rotation.md): zyz Euler angles read without inverse trigonometry, the y
+   rotation from Wigner's d by its three-term recurrence in l, one row at a time (O(n) work
+   space); C with GCC or Clang, n <= 8 (SHLIGHT_ROTATE_FAST, default 1 there): the same angles,
+   then constant +90 degree turns about x between z rotations, in double vectors (held to the
+   portable kernel by tests/test_rotate.c).
    R must be a rotation (orthonormal, det +1; float rounding of one is fine: the kernel uses
    the exact rotation with R's third column, R_00, R_01, R_10, R_11 as above, within 1e-7 of a
    float-rounded R); any other finite matrix gives the rotation that decomposition yields (an
@@ -7533,12 +7527,11 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
 }
 
 /* >>grid ------------------------------------------------------------------------------------
-   SH lighting on a regular 3D grid ([GRAD] sec. 5, after [WCZR20]): the SH coefficients of
-   many sphere lights and their spatial gradients at the vertices of a grid (shl_grid_build,
-   CPU), then reconstruction at any point from the 8 corners of its cell (kernels with GLSL
-   twins: trilinear, first-order Taylor, Hermite; shl_grid_sample gathers the corners on the
-   CPU).
-   Grid: vertex (ix, iy, iz), 0 <= ix < nx ..., index v = ix + nx (iy + ny iz), position
+   SH lighting on a regular 3D grid ([GRAD] sec. 5, after Wu, Cai, Zhao and Ramamoorthi 2020): the
+   SH coefficients of many sphere lights and their spatial gradients at the vertices of a grid
+   (shl_grid_build, CPU), then reconstruction at any point from the 8 corners of its cell (kernels
+   with GLSL twins: trilinear, first-order Taylor, Hermite; shl_grid_sample gathers the corners on
+   the CPU). Grid: vertex (ix, iy, iz), 0 <= ix < nx ..., index v = ix + nx (iy + ny iz), position
      p_k = float(double(origin[k]) + double(i_k) double(spacing[k]))    (exact product, one
    rounding: the same bits whatever the compiler's FMA contraction). Storage: sh[v n^2 + i],
    grad[v n^2 + i][k] = d sh[v n^2 + i] / d x_k (float[3] per coefficient: 4 floats per
@@ -7563,20 +7556,13 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
    bit 2 z (k = cx + 2 cy + 4 cz); c8[k n^2 + i], g8[k n^2 + i][axis]. GLSL twins:
    c8 is float[8 * SHLIGHT_MAX_COEFFS], g8 vec3[8 * SHLIGHT_MAX_COEFFS].
    - trilinear: exact for multilinear data, error O(h^2), C0.
-   - Taylor (first order from the nearest corner, [AKDS04]; ties f = 0.5 go to corner 1):
-     exact for linear data, error O(h^2), discontinuous at the mid-planes of the cell.
-   - Hermite: the tensor-product cubic Hermite interpolant (tricubic Hermite, 64 conditions)
-     whose values and gradients at the corners are the grid's, and whose mixed derivatives,
-     which the grid does not store, are estimated inside the cell from the gradients:
-       h_x h_y f_xy ~ ((G_x(cx,1,cz) - G_x(cx,0,cz)) + (G_y(1,cy,cz) - G_y(0,cy,cz))) / 2,
-       h_x h_y h_z f_xyz ~ (D_yz G_x(cx) + D_xz G_y(cy) + D_xy G_z(cz)) / 3,
-     G_a = h_a g_a, D the differences across the cell (so the mixed estimates on a face use
-     that face's data only: the interpolant is C0 across cells). It reproduces the
-     corner values and gradients exactly, every polynomial of total degree <= 2 exactly, and
-     has error O(h^3) (zero mixed derivatives would leave O(h^2)). Evaluated as one linear
-     combination of the 32 corner data with weights computed once per call (32 FMA per
-     coefficient). [GRAD] and [WCZR20] do not spell out their mixed-derivative treatment;
-     this is ours. */
+   - Taylor (first order from the nearest corner, Annen, Kautz, Durand and Seidel 2004; ties f = 0.5
+   go to corner 1): exact for linear data, error O(h^2), discontinuous at the mid-planes of the
+   cell.
+   - Hermite: the tensor-product cubic Hermite interpolant with the grid's corner values and
+     gradients and mixed derivatives estimated inside the cell from the gradients (C0 across
+     cells, exact on quadratics, error O(h^3); formulas in docs/math.md section 10), one linear
+     combination of the 32 corner data (32 FMA per coefficient). */
 
 SHLIGHT_INLINE void shl_grid_trilinear(int n, const float *c8, const float f[3], float *out_sh) {
   float x1 = f[0];
@@ -9455,24 +9441,10 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    centroid, triangles wider than 53 deg split 1 -> 4 at their edge midpoints, a 7-point
    degree-5 rule on each piece (the remainder is second order where D is narrow and smooth where
    D is wide).
-   A and M1 by Stokes along the boundary of H(P), the image of P's great arcs l(t) = cos t a +
-   sin t b, t in [0, Phi], under l -> l + v (homogeneous: no normalisation needed), with
-   Q = l + v, Q_z = Q.n, |Q_xy|^2 = |Q|^2 - Q_z^2, c = 1 - alpha^2:
-     A      = (1 / 2 pi) sum over edges of int (Q x l').n / (|Q_xy|^2 + alpha^2 Q_z^2) dt
-              (the NDF closed form of shl_polygon_ggx_ndf, whose edges are great arcs, holds
-              only for v = 0: the image of a great arc is a conic here);
-     M1.g   = -sum over edges of int [g_n Psi(t_h) (Q x l').n / |Q_xy|^2
-                                      - (1/2) F(t_h) g_t.(Q x l') / |Q|^2] dt,
-              t_h = Q_z / |Q|, I(t) = int_0^t s^2 D(s) ds = (alpha^2 / pi) t^3 J(c t^2),
-              Psi = I(t) - I(1), F = 2 I(t) / t^2 (the azimuthal 1-form for the normal part,
-              the divergence identity div(F(u.n) a_t) = -(a.u) (t F' + 2 F) for a tangential g_t).
-   Each edge integrand peaks (width ~ alpha) where l passes the mirror direction; it is taken with
-   the graded rule t = t0 + wd sinh(s), t0 the peak of |Q_xy|^2 + alpha^2 Q_z^2 (one Newton step
-   from the mirror direction's projection on the edge's great circle, taken only when it is
-   shorter than pi: the denominator has period 2 pi, so a longer step means its quadratic model
-   fails there, e.g. f2 ~ 1e-5 d0 on small lights far from the lobe gave steps of ~1e4 rad,
-   where t0 + wd sinh(s) keeps only a few bits of the arc in float: the GLSL twin was then off
-   by up to 8 %), wd = its half width, 5-node Gauss-Legendre on each side of t0. */
+   A and M1 by Stokes along the boundary of H(P) (the images of P's great arcs under
+   l -> l + v are conics), each edge integral by a graded rule t = t0 + wd sinh(s) about its
+   peak with 5 Gauss-Legendre nodes per side; the formulas and the guard on the Newton step
+   that finds t0 are in docs/math.md section 9. */
 
 /* Beckmann's Smith Lambda at the direction cosine c (0 < c <= 1), roughness alpha:
    (erf(a) - 1) / 2 + exp(-a^2) / (2 a sqrt(pi)), a = c / (alpha sqrt(1 - c^2)), with erfc by
@@ -11002,18 +10974,12 @@ SHLIGHT_CPU_INLINE float shli_fan_beckmann(const float (*v)[3], int nv, const fl
    factorial-free recurrence of docs/math.md sec. 5: Lambda_l(e) = (e+1) int_0^1 x^e P_l(x) dx,
    Lambda_0 = 1, Lambda_1 = (e+1)/(e+2), Lambda_{l+2} = Lambda_l (e-l)/(e+l+3), in shli_real (double
    in C: within one float rounding of a binary128 quadrature reference for e in [0, 1e4] and n <=
-   64, tests/test_brdf). The microfacet lobes (GGX, Beckmann: the projected NDF D(h)(n . h), which
-   integrates to 1) use the substitution tan^2 t = alpha^2 v, after which f_l = K_l int w(v) P_l((1
-   + alpha^2 v)^-1/2) dv with w(v) = (1+v)^-2 (GGX) or e^-v (Beckmann), and the trapezoidal rule in
-   u = ln v (step h = min(0.35, 6 / (n+1)), u from -18 to where the weight is spent, both tails
-   added in closed form): exponentially accurate for these smooth, decaying integrands.
-   Measured against a long double quadrature in t: at the float rounding floor (shl_zh_ggx).
-   Convolution: for radiance L (SH) and a lobe F (SH), int L F = sum_i L_i F_i (shl_sh_dot).
-   For a ZH lobe f about the axis w, sum_l sqrt(4 pi / (2l+1)) f_l sum_m L_lm Y_lm(w)
-   (shl_sh_conv_zh, O(n^2)). For two ZH, a about axis u and b about axis v, the addition
-   theorem sum_m Y_lm(u) Y_lm(v) = (2l+1)/(4 pi) P_l(u . v) leaves
-     int A B = sum_l a_l b_l P_l(u . v)                   (shl_zh_dot_zh, O(n))
-   (no sqrt(4 pi / (2l+1)) factor: the two rotations' factors cancel against the theorem's).
+   64, tests/test_brdf).
+   The microfacet lobes (GGX, Beckmann) by the trapezoidal rule in u = ln(tan^2 t / alpha^2)
+   (docs/math.md section 5), at the float rounding floor against a long double quadrature.
+   Convolution: int L F = sum_i L_i F_i (shl_sh_dot); a ZH lobe about w: shl_sh_conv_zh,
+   O(n^2); two ZH about u and v: sum_l a_l b_l P_l(u . v) by the addition theorem
+   (shl_zh_dot_zh, O(n); docs/math.md section 6).
    Irradiance of a ZH radiance L about w at a normal n, z = w . n (docs/math.md section 6):
      E(z) = sum_l A_l K_l L_l P_l(z), A_l = pi Lambda_l(1)   (A_0 = pi, A_1 = 2pi/3, A_2 = pi/4)
    which for n = 3 is [HVL] Appendix B 2x2 form c3 L2 z^2 + 2 c2 L1 z + c4 L0 - c5 L2. */
@@ -11516,13 +11482,8 @@ SHLIGHT_INLINE int shl_zh_bands_for(int n, const float *zh, float target) {
              (shl_zh_cap rotated to w_j; shl_hvl_contribution, O(n^2)), or with a ZH lobe F
              about its own axis, shl_zh_dot_zh (shl_hvl_contribution_zh, O(n)).
    H is the fraction of the cap (half-angle a, sin a = s = min(r/d, 1), d = |y - x|) above the
-   horizon of n_x, with beta the angle between n_x and w_j. Exact (docs/math.md section 6, two-cap
-   intersection), rewritten without cancellation for small caps: with c = cos beta,
-   t = c / s, k = cos a / sin beta, both in the crossing range |c| < s,
-     H = D / (pi (1 - cos a)) + acos(-t k) / pi,   D = acos(t k) - acos(t)
-   where sin D = t (s - c)(s + c) / (sin^2 beta (sqrt(1 - t^2 k^2) + k sqrt(1 - t^2))) and
-   cos D = t^2 k + sqrt(1 - t^2 k^2) sqrt(1 - t^2) (no difference of nearly equal angles),
-   1 - cos a = s^2 / (1 + cos a); H = 1 for c >= s, 0 for c <= -s (shl_hvl_horizon). The cheap
+   horizon of n_x, with beta the angle between n_x and w_j: exact (two-cap intersection,
+   written without cancellation for small caps, docs/math.md section 6; shl_hvl_horizon). The cheap
    variant is [HVL] smoothstep (eq. 22) with the clamp corrected (correction E8 (docs/math.md
    section 12): lower bound pi/2 - a, S clamped to [0, 1]): max abs error 0.039-0.089 against the
    exact H (shl_hvl_horizon_smoothstep). The angles use the own atan2 of >>light. */
