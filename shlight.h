@@ -1178,21 +1178,12 @@ SHLIGHT_API shl_result shl_brdf_table_build_merl(shl_brdf_table *t, const shl_me
  */
 
 /* >>numerics --------------------------------------------------------------------------------
-   Domains and degenerate inputs (each has a named test in tests/):
-   - shl_sh_eval: d unit to float precision is evaluated as given (the kernel corrects the
-     |d| - 1 ~ 1e-7 of float normalisation to second order); any other finite non-zero d is
-     normalised first; zero, NaN or infinite d gives Y(0,0,1).
-   - shl_sh_eval_accurate, shl_sh_eval_grad, shl_sh_eval_grad_spherical: any finite d != 0,
-     from denormals to FLT_MAX (the input is scaled by its largest component first). Zero,
-     NaN or infinite d: the values of d = (0,0,1) and a zero gradient.
-   - shl_sh_grad_from_spherical: the Jacobian of the paper ([GRAD] eq. 23) divides by
-     sin(theta); at an exact pole (x = y = 0) it returns 0 for every entry.
-   - n < 1: nothing is written. n > SHLIGHT_MAX_BANDS: taken as SHLIGHT_MAX_BANDS. Debug and
-     release builds behave the same (no assertion).
-   Accuracy (float output, max abs error against a binary128 reference, measured by
-   tests/test_basis and bench/; docs/accuracy.md has the table): the Legendre part runs in shli_real
-   (double in C, float in GLSL) with a Reinsch-type modified recurrence in t = 1 - |z|, which
-   keeps the error growth linear in l at the poles instead of quadratic.
+   Domains and degenerate inputs: each public function's contract in >>api says what it
+   accepts and what anything else gives (each case has a named test in tests/); n < 1 writes
+   nothing, n > SHLIGHT_MAX_BANDS is taken as SHLIGHT_MAX_BANDS, in debug and release alike.
+   The basis's Legendre part runs in shli_real (double in C, float in GLSL) with a Reinsch-type
+   modified recurrence in t = 1 - |z|, which keeps the error growth linear in l at the poles
+   instead of quadratic (docs/accuracy.md).
 */
 
 /* >>prelude ---------------------------------------------------------------------------------
@@ -5765,19 +5756,19 @@ SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const fl
 #endif
 
 /* >>zonal -----------------------------------------------------------------------------------
-   Zonal harmonics (ZH) of a uniform spherical cap and the ZH -> SH rotation (docs/math.md section
-   2, [GRAD] eq. 9-11, 14-16 with correction E4 (docs/math.md section 12) applied). A sphere of
-   radius r seen from distance d covers the cap of half-angle a, s = sin a = min(r / d, 1), alpha =
-   cos a. The unit-radiance cap about +z projects onto band l as L_0 = sqrt(pi) (1 - alpha)  =
-   sqrt(pi) s^2 / (1 + alpha) L_l = sqrt(pi / (2l+1)) (P_{l-1}(alpha) - P_{l+1}(alpha)) = sqrt(pi
-   (2l+1)) / (l (l+1)) s^2 P'_l(alpha)                       (l >= 1) The second forms have no
-   cancellation: alpha = sqrt((d - r)(d + r)) / d, and P'_{l+1} = P'_{l-1} + (2l+1) P_l sums
-   positive terms near alpha = 1 (small caps). The printed first forms lose everything to 1 - alpha
-   for small caps (float: every L_l = 0 below s = 2.4e-4); shl_zh_cap_printed keeps them as the
-   comparison point. Common domain of the cap kernels: r and d in float; r <= 0 or NaN (no light),
-   NaN or infinite d: every output 0. d <= r (the point on or inside the sphere): the hemisphere, s
-   = 1, alpha = 0, which is the limit at the sphere's surface. Internal precision shli_real (double
-   in C, float in GLSL). */
+   Zonal harmonics (ZH) of a uniform spherical cap and the ZH -> SH rotation ([GRAD] eq. 9-11,
+   14-16 with correction E4 applied; docs/math.md sections 2 and 12). A sphere of radius r seen
+   from distance d covers the cap of half-angle a, s = sin a = min(r / d, 1), alpha = cos a.
+   The unit-radiance cap about +z projects onto band l as
+     L_0 = sqrt(pi) (1 - alpha) = sqrt(pi) s^2 / (1 + alpha)
+     L_l = sqrt(pi / (2l+1)) (P_{l-1}(alpha) - P_{l+1}(alpha))
+         = sqrt(pi (2l+1)) / (l (l+1)) s^2 P'_l(alpha)                             (l >= 1)
+   The second forms have no cancellation: alpha = sqrt((d - r)(d + r)) / d, and
+   P'_{l+1} = P'_{l-1} + (2l+1) P_l sums positive terms near alpha = 1 (small caps); the
+   printed first forms lose everything to 1 - alpha for small caps (float: every L_l = 0
+   below s = 2.4e-4; shl_zh_cap_printed keeps them for comparison). r <= 0 or NaN, NaN or
+   infinite d: every output 0. d <= r: the hemisphere (s = 1, alpha = 0), the limit at the
+   sphere's surface. Internal precision shli_real (double in C, float in GLSL). */
 
 /* Per band l < 64: (2l+1)/(l+1), l/(l+1), 1/(l(l+1)) (0 for l = 0), sqrt(4 pi/(2l+1)),
    sqrt(pi(2l+1)): the Legendre recurrence and the ZH normalisations without divisions
@@ -7745,22 +7736,16 @@ SHLIGHT_INLINE void shl_grid_hermite(int n, const float *c8, const float (*g8)[3
      variables pi/2 - |theta| = beta sinh(s), beta = atan(|w| sqrt(e+1)) / 2 (the boundary layer
      of 1 - h sits at |theta| -> pi/2 with width ~ |w| sqrt(e+1)): constant cost for every e. */
 
-/* Polygons of any vertex count (C, SHLIGHT_POLYGON_ANY): each polygon function takes nv in
-   [3, SHLIGHT_POLYGON_MAX] in one piece; above that it cuts the polygon into fan pieces
-   (v0, v_i, ..., v_m) of at most SHLIGHT_POLYGON_MAX vertices whose fan triangles
-   (v0, v_j, v_j+1) all turn the same way as seen from the shading point (the sign of
-   det(v0, v_j, v_j+1)), calls itself on each piece and adds the pieces with their signs: a
-   piece of one turning sense has one winding, so the function's (non-negative) value for it is
-   its integral, and the fan edges v0 -> v_i cancel between neighbours. The sum is relative to
-   the whole polygon's orientation (the sum of the dets, the sign each kernel takes from its
-   vector area), then clamped at 0 as in one piece: a non-convex or self-overlapping polygon is
-   integrated with its winding number (the region turned twice counts twice, a part turned
-   against the whole subtracts), the same rule the one-piece kernels follow. O(1) memory (one
-   piece, 96 bytes); cost about (nv - 2) / (SHLIGHT_POLYGON_MAX - 2) pieces of the kernel
-   (a convex polygon: 1 + 2 ceil((nv - 2) / 6) / nv more edges than vertices). NaN or infinite
-   vertices, or a polygon whose dets sum to zero (seen edge-on): 0, as in one piece. GLSL keeps
-   the compile-time maximum SHLIGHT_POLYGON_MAX (its arrays are that long); there nv above it
-   returns -1 (no real result is negative). */
+/* Polygons of any vertex count (C, SHLIGHT_POLYGON_ANY): above SHLIGHT_POLYGON_MAX vertices a
+   polygon function cuts the polygon into fan pieces (v0, v_i, ..., v_m) of at most
+   SHLIGHT_POLYGON_MAX vertices whose fan triangles all turn the same way as seen from the
+   shading point (the sign of det(v0, v_j, v_j+1)), calls itself on each piece and adds the
+   pieces with their signs relative to the whole polygon's orientation (the sum of the dets),
+   then clamps at 0 as in one piece; the fan edges cancel between neighbours. So a non-convex
+   or self-overlapping polygon is integrated with its winding number, as in one piece. O(1)
+   memory (one piece, 96 bytes), about (nv - 2) / (SHLIGHT_POLYGON_MAX - 2) kernel calls. NaN
+   or infinite vertices, or dets summing to zero (seen edge-on): 0. GLSL keeps the compile-time
+   maximum SHLIGHT_POLYGON_MAX; above it the result is -1. */
 typedef struct {
   float p[SHLIGHT_POLYGON_MAX][3]; /* the current piece */
   double sum;                      /* the signed sum of the pieces' values so far */
@@ -12014,13 +11999,13 @@ SHLIGHT_INLINE void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int whi
    are e Y_i(w) (shl_ssf_vpl_sh) and its irradiance at a normal n is e max(0, n . w)
    (shl_ssf_vpl_irradiance); a Lambertian receiver of albedo kd reflects kd / pi of that.
    VPLs from a spot light's shadow map: flux and texel solid angle in docs/math.md section 11.
-   Interleaved sampling ([SSF] sec. 2.3). The VPLs are split into n_int m_int disjoint sets,
-   set s holding the VPLs j with j mod (n_int m_int) = s; pixel (px, py) uses set
-   s = (py mod m_int) n_int + (px mod n_int) (shl_ssf_interleave), so every n_int x m_int tile
-   of pixels uses every VPL exactly once. A pixel's estimate
-   scales the flux of its set by n_int m_int (an unbiased estimate of the sum over all VPLs).
+   Interleaved sampling ([SSF] sec. 2.3). The VPLs are split into tile_x tile_y disjoint sets,
+   set s holding the VPLs j with j mod (tile_x tile_y) = s; pixel (px, py) uses set
+   s = (py mod tile_y) tile_x + (px mod tile_x) (shl_ssf_interleave), so every tile_x x tile_y
+   tile of pixels uses every VPL exactly once. A pixel's estimate scales the flux of its set
+   by tile_x tile_y (an unbiased estimate of the sum over all VPLs).
    Filter ([SSF] sec. 3). Per pixel the SH of the incoming radiance of its set (RGB: three
-   SH vectors), then the box filter over the n_int x m_int window around the pixel with the
+   SH vectors), then the box filter over the tile_x x tile_y window around the pixel with the
    discontinuity weight of shl_ssf_weight (geometric normals and positions: the filter must not
    look at a normal map), sum w_k L_k / sum w_k; finally the irradiance at the normal-mapped
    normal from the filtered SH (shl_ssf_irradiance, the convolution with the clamped cosine;
