@@ -443,21 +443,17 @@ SHLIGHT_INLINE float shl_edge_integral(float phi, float c, float delta, float ex
    inside); exponent >= 0 real. method:
    - SHLIGHT_EDGE_EXACT: exact at every real exponent. Integer exponents up to 65536: Arvo's
      form with the O(e) recurrence (double inside in C); any other exponent: the Stokes form
-     (see >>edge) with an adaptive rule and an error estimate (shli_stokes_half, lev > 0:
-     composite 5-node Gauss-Legendre, 2^l panels with the panel at the clip circle cut
-     geometrically, until two levels agree to 1e-9), within 1e-5 of the normalised lobe
-     (measured: 5.5e-8 against cubature for exponents 0.3..9999.5, the float output's rounding;
-     3.2e-10 against its own 14-level refinement; 9e-11 against the recurrence at integer
-     exponents). Cost: ~61k x86 instructions per doubly clipped quad at e = 777.7 (callgrind,
-     GCC -O3 -march=x86-64-v3; QUADRATURE 10k).
+     (see >>edge) with an adaptive composite Gauss-Legendre rule run until two levels agree to
+     1e-9 (measured: 5.5e-8 of the normalised lobe against cubature for exponents
+     0.3..9999.5, the float output's rounding). ~61k x86 instructions per doubly clipped quad
+     at e = 777.7 (GCC -O3 -march=x86-64-v3).
    - SHLIGHT_EDGE_LORENTZ / _LORENTZ_PEARSON / _ELLIPSOID: Arvo's form with the paper's O(1)
      fits of F (errata fixed), exponent rounded to the nearest integer; above 65536 they take
      QUADRATURE (no float-to-int conversion of huge exponents).
    - SHLIGHT_EDGE_QUADRATURE: the Stokes form (see >>edge), O(1), any real exponent.
    - SHLIGHT_EDGE_AUTO: the recurrence for integer exponents <= 16, EXACT's adaptive rule
-     above: exact everywhere, so its switch point is continuous (jump < 1e-7 relative at 16
-     and the next float, measured). Cost: 2.5k instructions per quad at e = 10, 64k at 100
-     (was QUADRATURE's 10k: exactness costs 6x; FAST is the constant-time road).
+     above: exact everywhere, continuous at its switch (jump < 1e-7 relative, measured).
+     2.5k instructions per quad at e = 10, 64k at 100 (FAST is the constant-time road).
    - SHLIGHT_EDGE_FAST: the Stokes form in float with a 4-node rational-graded rule per
      half-arc and polynomial transcendentals, SIMD over 8 edges in C: O(1), any real exponent
      (finite to 1e30), ~1.3k x86 instructions per doubly clipped quad (GCC -O3
