@@ -846,7 +846,17 @@ def glsl_module(header_text, section, deps):
            '// rerun. Needs: %s. The host defines SHLIGHT_MAX_BANDS.' % ', '.join(deps),
            '#ifndef SHL_%s_GLSL' % section.upper(),
            '#define SHL_%s_GLSL' % section.upper()]
-    for kind, name, body in split_items(lines[a:b]):
+    sec = []
+    for ln in lines[a:b]:
+        m = re.match(r'/\* @generated (\w+): defined in >>generated', ln)
+        if m:
+            # a region written under >>generated at the end of the header: GLSL needs its
+            # definitions before their use, so the module takes them at the section's marker
+            i = lines.index('/* @generated begin %s */' % m.group(1))
+            sec += lines[i + 1:lines.index('/* @generated end %s */' % m.group(1))]
+        else:
+            sec.append(ln)
+    for kind, name, body in split_items(sec):
         g = guard(kind, name)
         out.append('')
         if g:
