@@ -1275,14 +1275,18 @@ SHLIGHT_INLINE int shli_bands(int n) {
 }
 
 /* @generated sh_tab: defined in >>generated at the end of the file */
-SHLIGHT_CPU_INLINE const shli_real *shli_tab_sh_rsq(void);
-#define SHLI_SH_RSQ (shli_tab_sh_rsq())
-SHLIGHT_CPU_INLINE const float *shli_tab_sh_laneq(void);
-#define SHLI_SH_LANEQ (shli_tab_sh_laneq())
-SHLIGHT_CPU_INLINE const shli_real *shli_tab_sh_s12(void);
-#define SHLI_SH_S12 (shli_tab_sh_s12())
-SHLIGHT_CPU_INLINE const float *shli_tab_sh_diag(void);
-#define SHLI_SH_DIAG (shli_tab_sh_diag())
+typedef shli_real shli_tab_sh_rsq_t[128];
+SHLIGHT_CPU_INLINE const shli_tab_sh_rsq_t *shli_tab_sh_rsq(void);
+#define SHLI_SH_RSQ (*shli_tab_sh_rsq())
+typedef float shli_tab_sh_laneq_t[2032];
+SHLIGHT_CPU_INLINE const shli_tab_sh_laneq_t *shli_tab_sh_laneq(void);
+#define SHLI_SH_LANEQ (*shli_tab_sh_laneq())
+typedef shli_real shli_tab_sh_s12_t[128];
+SHLIGHT_CPU_INLINE const shli_tab_sh_s12_t *shli_tab_sh_s12(void);
+#define SHLI_SH_S12 (*shli_tab_sh_s12())
+typedef float shli_tab_sh_diag_t[64];
+SHLIGHT_CPU_INLINE const shli_tab_sh_diag_t *shli_tab_sh_diag(void);
+#define SHLI_SH_DIAG (*shli_tab_sh_diag())
 
 /* The Reinsch constants alpha, g, c of step l in column m (0 <= m < l < 64) of the run-time
    loops, from their closed forms: q = 1 / sqrt((l - m)(l + m)), alpha = s1_l q,
@@ -1380,21 +1384,27 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
 #include <immintrin.h>
 /* @generated lanes: defined in >>generated at the end of the file */
 #if SHLIGHT_SIMD_EVAL
-SHLIGHT_CPU_INLINE const float *shli_tab_sh_lanek(void);
-#define SHLI_SH_LANEK (shli_tab_sh_lanek())
-SHLIGHT_CPU_INLINE const int *shli_tab_sh_laner(void);
-#define SHLI_SH_LANER (shli_tab_sh_laner())
-SHLIGHT_CPU_INLINE const float *shli_tab_sh_lanes_s(void);
-#define SHLI_SH_LANES_S (shli_tab_sh_lanes_s())
+typedef float shli_tab_sh_lanek_t[190];
+SHLIGHT_CPU_INLINE const shli_tab_sh_lanek_t *shli_tab_sh_lanek(void);
+#define SHLI_SH_LANEK (*shli_tab_sh_lanek())
+typedef int shli_tab_sh_laner_t[31];
+SHLIGHT_CPU_INLINE const shli_tab_sh_laner_t *shli_tab_sh_laner(void);
+#define SHLI_SH_LANER (*shli_tab_sh_laner())
+typedef float shli_tab_sh_lanes_s_t[720];
+SHLIGHT_CPU_INLINE const shli_tab_sh_lanes_s_t *shli_tab_sh_lanes_s(void);
+#define SHLI_SH_LANES_S (*shli_tab_sh_lanes_s())
 #endif
 /* @generated plane: defined in >>generated at the end of the file */
 #if SHLIGHT_SIMD_EVAL
-SHLIGHT_CPU_INLINE const float *shli_tab_sh_planes(void);
-#define SHLI_SH_PLANES (shli_tab_sh_planes())
-SHLIGHT_CPU_INLINE const int *shli_tab_sh_ptap(void);
-#define SHLI_SH_PTAP (shli_tab_sh_ptap())
-SHLIGHT_CPU_INLINE const int *shli_tab_sh_podd(void);
-#define SHLI_SH_PODD (shli_tab_sh_podd())
+typedef float shli_tab_sh_planes_t[120];
+SHLIGHT_CPU_INLINE const shli_tab_sh_planes_t *shli_tab_sh_planes(void);
+#define SHLI_SH_PLANES (*shli_tab_sh_planes())
+typedef int shli_tab_sh_ptap_t[40];
+SHLIGHT_CPU_INLINE const shli_tab_sh_ptap_t *shli_tab_sh_ptap(void);
+#define SHLI_SH_PTAP (*shli_tab_sh_ptap())
+typedef int shli_tab_sh_podd_t[5];
+SHLIGHT_CPU_INLINE const shli_tab_sh_podd_t *shli_tab_sh_podd(void);
+#define SHLI_SH_PODD (*shli_tab_sh_podd())
 #endif
 #ifdef __AVX512VL__
 /* n = 4..6 (C only, AVX-512VL): the Horner forms of shli_sh_poly_<n> evaluated across the
@@ -1714,20 +1724,27 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, fl
 #define SHLI_GRADV_ALIGN
 #endif
 /* @generated gradv: defined in >>generated at the end of the file */
-SHLIGHT_CPU_INLINE const short *shli_tab_gradv_ch0(void);
-#define SHLI_GRADV_CH0 (shli_tab_gradv_ch0())
-SHLIGHT_CPU_INLINE const float *shli_tab_gradv_lf(void);
-#define SHLI_GRADV_LF (shli_tab_gradv_lf())
-SHLIGHT_CPU_INLINE const unsigned short *shli_tab_gradv_lastm(void);
-#define SHLI_GRADV_LASTM (shli_tab_gradv_lastm())
-SHLIGHT_CPU_INLINE const unsigned short *shli_tab_gradv_ym(void);
-#define SHLI_GRADV_YM (shli_tab_gradv_ym())
-SHLIGHT_CPU_INLINE const int *shli_tab_gradv_iy(void);
-#define SHLI_GRADV_IY (shli_tab_gradv_iy())
-SHLIGHT_CPU_INLINE const int *shli_tab_gradv_tap(void);
-#define SHLI_GRADV_TAP (shli_tab_gradv_tap())
-SHLIGHT_CPU_INLINE const float *shli_tab_gradv_coef(void);
-#define SHLI_GRADV_COEF (shli_tab_gradv_coef())
+typedef short shli_tab_gradv_ch0_t[17];
+SHLIGHT_CPU_INLINE const shli_tab_gradv_ch0_t *shli_tab_gradv_ch0(void);
+#define SHLI_GRADV_CH0 (*shli_tab_gradv_ch0())
+typedef float shli_tab_gradv_lf_t[16];
+SHLIGHT_CPU_INLINE const shli_tab_gradv_lf_t *shli_tab_gradv_lf(void);
+#define SHLI_GRADV_LF (*shli_tab_gradv_lf())
+typedef unsigned short shli_tab_gradv_lastm_t[16];
+SHLIGHT_CPU_INLINE const shli_tab_gradv_lastm_t *shli_tab_gradv_lastm(void);
+#define SHLI_GRADV_LASTM (*shli_tab_gradv_lastm())
+typedef unsigned short shli_tab_gradv_ym_t[32];
+SHLIGHT_CPU_INLINE const shli_tab_gradv_ym_t *shli_tab_gradv_ym(void);
+#define SHLI_GRADV_YM (*shli_tab_gradv_ym())
+typedef int shli_tab_gradv_iy_t[96];
+SHLIGHT_CPU_INLINE const shli_tab_gradv_iy_t *shli_tab_gradv_iy(void);
+#define SHLI_GRADV_IY (*shli_tab_gradv_iy())
+typedef int shli_tab_gradv_tap_t[192];
+SHLIGHT_CPU_INLINE const shli_tab_gradv_tap_t *shli_tab_gradv_tap(void);
+#define SHLI_GRADV_TAP (*shli_tab_gradv_tap())
+typedef float shli_tab_gradv_coef_t[1760];
+SHLIGHT_CPU_INLINE const shli_tab_gradv_coef_t *shli_tab_gradv_coef(void);
+#define SHLI_GRADV_COEF (*shli_tab_gradv_coef())
 #define SHLI_GRADV_MASK(t) ((__mmask16) * (t))
 
 /* Chunk c (0..5) of band l: r = c1 P[tap 1] + c2 P[tap 2] + Y[k] w, two FMAs and a product
@@ -2423,8 +2440,9 @@ SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const fl
    sqrt(pi(2l+1)): the Legendre recurrence and the ZH normalisations without divisions
    (tools/gen_basis.py; the GLSL twin holds the first 16 bands). */
 /* @generated zh_tab: defined in >>generated at the end of the file */
-SHLIGHT_CPU_INLINE const shli_real *shli_tab_zh_tab(void);
-#define SHLI_ZH_TAB (shli_tab_zh_tab())
+typedef shli_real shli_tab_zh_tab_t[320];
+SHLIGHT_CPU_INLINE const shli_tab_zh_tab_t *shli_tab_zh_tab(void);
+#define SHLI_ZH_TAB (*shli_tab_zh_tab())
 
 /* Geometry of a sphere seen from a point, in shli_real: (dx, dy, dz) = c - x, r = radius.
    out_g[0..2]: unit axis (c - x) / |c - x|, (0, 0, 1) when x == c;
@@ -3232,8 +3250,9 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
                                          float (*io_grad)[3]);
 SHLIGHT_INLINE void shli_sh_zero_grad(int n, float *out_sh, float (*out_grad)[3]);
 #if SHLIGHT_SIMD_EVAL
-SHLIGHT_CPU_INLINE const int *shli_tab_light_band(void);
-#define SHLI_LIGHT_BAND (shli_tab_light_band())
+typedef int shli_tab_light_band_t[256];
+SHLIGHT_CPU_INLINE const shli_tab_light_band_t *shli_tab_light_band(void);
+#define SHLI_LIGHT_BAND (*shli_tab_light_band())
 #endif
 
 #if SHLIGHT_SIMD_EVAL
@@ -8639,10 +8658,12 @@ typedef float SHLI_V;
 #endif
 
 /* @generated batch: defined in >>generated at the end of the file */
-SHLIGHT_CPU_INLINE const float *shli_tab_sh_brs(void);
-#define SHLI_SH_BRS (shli_tab_sh_brs())
-SHLIGHT_CPU_INLINE const float *shli_tab_sh_bpoly(void);
-#define SHLI_SH_BPOLY (shli_tab_sh_bpoly())
+typedef float shli_tab_sh_brs_t[376];
+SHLIGHT_CPU_INLINE const shli_tab_sh_brs_t *shli_tab_sh_brs(void);
+#define SHLI_SH_BRS (*shli_tab_sh_brs())
+typedef float shli_tab_sh_bpoly_t[63];
+SHLIGHT_CPU_INLINE const shli_tab_sh_bpoly_t *shli_tab_sh_bpoly(void);
+#define SHLI_SH_BPOLY (*shli_tab_sh_bpoly())
 
 /* The batch kernels of n <= SHLIGHT_UNROLLED_BANDS, nv = 1 or 2 vectors of directions a call
    (two: independent chains side by side, and the two stores of a row one 128-byte pair of
@@ -11075,17 +11096,17 @@ static const float SHLI_SH_DIAG[64] = {
 };
 /* clang-format on */
 /* @generated end sh_tab */
-SHLIGHT_CPU_INLINE const shli_real *shli_tab_sh_rsq(void) {
-  return SHLI_SH_RSQ;
+SHLIGHT_CPU_INLINE const shli_tab_sh_rsq_t *shli_tab_sh_rsq(void) {
+  return &SHLI_SH_RSQ;
 }
-SHLIGHT_CPU_INLINE const float *shli_tab_sh_laneq(void) {
-  return SHLI_SH_LANEQ;
+SHLIGHT_CPU_INLINE const shli_tab_sh_laneq_t *shli_tab_sh_laneq(void) {
+  return &SHLI_SH_LANEQ;
 }
-SHLIGHT_CPU_INLINE const shli_real *shli_tab_sh_s12(void) {
-  return SHLI_SH_S12;
+SHLIGHT_CPU_INLINE const shli_tab_sh_s12_t *shli_tab_sh_s12(void) {
+  return &SHLI_SH_S12;
 }
-SHLIGHT_CPU_INLINE const float *shli_tab_sh_diag(void) {
-  return SHLI_SH_DIAG;
+SHLIGHT_CPU_INLINE const shli_tab_sh_diag_t *shli_tab_sh_diag(void) {
+  return &SHLI_SH_DIAG;
 }
 
 /* @generated begin basis */
@@ -12618,14 +12639,14 @@ static const float SHLI_SH_LANES_S[720] = {
 #endif
 /* @generated end lanes */
 #if SHLIGHT_SIMD_EVAL
-SHLIGHT_CPU_INLINE const float *shli_tab_sh_lanek(void) {
-  return SHLI_SH_LANEK;
+SHLIGHT_CPU_INLINE const shli_tab_sh_lanek_t *shli_tab_sh_lanek(void) {
+  return &SHLI_SH_LANEK;
 }
-SHLIGHT_CPU_INLINE const int *shli_tab_sh_laner(void) {
-  return SHLI_SH_LANER;
+SHLIGHT_CPU_INLINE const shli_tab_sh_laner_t *shli_tab_sh_laner(void) {
+  return &SHLI_SH_LANER;
 }
-SHLIGHT_CPU_INLINE const float *shli_tab_sh_lanes_s(void) {
-  return SHLI_SH_LANES_S;
+SHLIGHT_CPU_INLINE const shli_tab_sh_lanes_s_t *shli_tab_sh_lanes_s(void) {
+  return &SHLI_SH_LANES_S;
 }
 #endif
 
@@ -12662,14 +12683,14 @@ static const int SHLI_SH_PODD[5] = {
 #endif
 /* @generated end plane */
 #if SHLIGHT_SIMD_EVAL
-SHLIGHT_CPU_INLINE const float *shli_tab_sh_planes(void) {
-  return SHLI_SH_PLANES;
+SHLIGHT_CPU_INLINE const shli_tab_sh_planes_t *shli_tab_sh_planes(void) {
+  return &SHLI_SH_PLANES;
 }
-SHLIGHT_CPU_INLINE const int *shli_tab_sh_ptap(void) {
-  return SHLI_SH_PTAP;
+SHLIGHT_CPU_INLINE const shli_tab_sh_ptap_t *shli_tab_sh_ptap(void) {
+  return &SHLI_SH_PTAP;
 }
-SHLIGHT_CPU_INLINE const int *shli_tab_sh_podd(void) {
-  return SHLI_SH_PODD;
+SHLIGHT_CPU_INLINE const shli_tab_sh_podd_t *shli_tab_sh_podd(void) {
+  return &SHLI_SH_PODD;
 }
 #endif
 
@@ -12892,26 +12913,26 @@ SHLI_GRADV_ALIGN static const float SHLI_GRADV_COEF[SHLI_GRADV_CHUNKS * 32] = {
 };
 /* clang-format on */
 /* @generated end gradv */
-SHLIGHT_CPU_INLINE const short *shli_tab_gradv_ch0(void) {
-  return SHLI_GRADV_CH0;
+SHLIGHT_CPU_INLINE const shli_tab_gradv_ch0_t *shli_tab_gradv_ch0(void) {
+  return &SHLI_GRADV_CH0;
 }
-SHLIGHT_CPU_INLINE const float *shli_tab_gradv_lf(void) {
-  return SHLI_GRADV_LF;
+SHLIGHT_CPU_INLINE const shli_tab_gradv_lf_t *shli_tab_gradv_lf(void) {
+  return &SHLI_GRADV_LF;
 }
-SHLIGHT_CPU_INLINE const unsigned short *shli_tab_gradv_lastm(void) {
-  return SHLI_GRADV_LASTM;
+SHLIGHT_CPU_INLINE const shli_tab_gradv_lastm_t *shli_tab_gradv_lastm(void) {
+  return &SHLI_GRADV_LASTM;
 }
-SHLIGHT_CPU_INLINE const unsigned short *shli_tab_gradv_ym(void) {
-  return SHLI_GRADV_YM;
+SHLIGHT_CPU_INLINE const shli_tab_gradv_ym_t *shli_tab_gradv_ym(void) {
+  return &SHLI_GRADV_YM;
 }
-SHLIGHT_CPU_INLINE const int *shli_tab_gradv_iy(void) {
-  return SHLI_GRADV_IY;
+SHLIGHT_CPU_INLINE const shli_tab_gradv_iy_t *shli_tab_gradv_iy(void) {
+  return &SHLI_GRADV_IY;
 }
-SHLIGHT_CPU_INLINE const int *shli_tab_gradv_tap(void) {
-  return SHLI_GRADV_TAP;
+SHLIGHT_CPU_INLINE const shli_tab_gradv_tap_t *shli_tab_gradv_tap(void) {
+  return &SHLI_GRADV_TAP;
 }
-SHLIGHT_CPU_INLINE const float *shli_tab_gradv_coef(void) {
-  return SHLI_GRADV_COEF;
+SHLIGHT_CPU_INLINE const shli_tab_gradv_coef_t *shli_tab_gradv_coef(void) {
+  return &SHLI_GRADV_COEF;
 }
 #endif
 
@@ -14235,8 +14256,8 @@ static const shli_real SHLI_ZH_TAB[320] = {
 };
 /* clang-format on */
 /* @generated end zh_tab */
-SHLIGHT_CPU_INLINE const shli_real *shli_tab_zh_tab(void) {
-  return SHLI_ZH_TAB;
+SHLIGHT_CPU_INLINE const shli_tab_zh_tab_t *shli_tab_zh_tab(void) {
+  return &SHLI_ZH_TAB;
 }
 
 #undef SHLI_LIGHT_BAND
@@ -14597,8 +14618,8 @@ SHLIGHT_INLINE void shli_sh_zero_grad(int n, float *out_sh, float (*out_grad)[3]
 }
 /* @generated end light_idx */
 #if SHLIGHT_SIMD_EVAL
-SHLIGHT_CPU_INLINE const int *shli_tab_light_band(void) {
-  return SHLI_LIGHT_BAND;
+SHLIGHT_CPU_INLINE const shli_tab_light_band_t *shli_tab_light_band(void) {
+  return &SHLI_LIGHT_BAND;
 }
 #endif
 
@@ -14677,11 +14698,11 @@ static const float SHLI_SH_BPOLY[63] = {
 };
 /* clang-format on */
 /* @generated end batch */
-SHLIGHT_CPU_INLINE const float *shli_tab_sh_brs(void) {
-  return SHLI_SH_BRS;
+SHLIGHT_CPU_INLINE const shli_tab_sh_brs_t *shli_tab_sh_brs(void) {
+  return &SHLI_SH_BRS;
 }
-SHLIGHT_CPU_INLINE const float *shli_tab_sh_bpoly(void) {
-  return SHLI_SH_BPOLY;
+SHLIGHT_CPU_INLINE const shli_tab_sh_bpoly_t *shli_tab_sh_bpoly(void) {
+  return &SHLI_SH_BPOLY;
 }
 #endif /* SHLIGHT_IMPLEMENTATION */
 
