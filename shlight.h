@@ -10677,9 +10677,9 @@ SHLIGHT_API shl_result shl_merl_read(const void *buf, size_t len, float *storage
 /* >>generated ------------------------------------------------------------------------------
    Written by tools/gen_basis.py (edit the generator, not these lines; `--check` in CI): the
    tables and unrolled kernels whose prototypes and table accessors the sections above declare
-   at their `@generated NAME` lines. Each table is reached through an inline accessor function
-   (a C++ static const array cannot be declared before its definition); after inlining it is
-   the same load. */
+   at their `@generated NAME` lines. Code above reaches a table through an inline accessor
+   that returns a pointer to the whole array (a C++ static const array cannot be declared
+   before its definition); after inlining it is the same array access. */
 #ifndef SHLIGHT_GENERATED_H
 #define SHLIGHT_GENERATED_H
 

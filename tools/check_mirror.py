@@ -909,7 +909,7 @@ def run(root, quiet, require_f=False):
         if m and idx < stop:
             markers[m.group(1)] = idx
         m = re.match(r"\s*@generated (begin|end) (\w+)", body)
-        if m and gen_lo <= idx < gen_hi:
+        if m and gen_lo <= idx <= gen_hi:  # (a comment's index is that of the next token)
             if m.group(1) == "begin":
                 opened[m.group(2)] = idx
             elif m.group(2) in opened:
