@@ -878,6 +878,20 @@ def replace_region(text, name, lines, path):
     return text[:i] + '\n'.join(lines) + '\n' + text[j:]
 
 
+def table_typedefs(text):
+    """the sections reach a table of >>generated through `typedef T shli_tab_NAME_t[N];` (the
+    accessor returns a pointer to the whole array): keep N equal to the table's length"""
+    defs = dict(re.findall(r'#define (SHLI_\w+) (\d+)\n', text))
+    for ty, name, size in re.findall(r'static const ([\w ]+?) (SHLI_\w+)\[([^\]]+)\] = \{', text):
+        expr = re.sub(r'SHLI_\w+', lambda m: defs.get(m.group(0), m.group(0)), size)
+        if not re.match(r'^[\d *+]+$', expr):
+            continue
+        n = eval(expr)
+        text = re.sub(r'typedef %s shli_tab_%s_t\[\d+\];' % (re.escape(ty), name[5:].lower()),
+                      'typedef %s shli_tab_%s_t[%d];' % (ty, name[5:].lower(), n), text)
+    return text
+
+
 def clang_format(text, path):
     """the project's one style (.clang-format) for the header and the GLSL twins alike"""
     import subprocess
@@ -899,6 +913,7 @@ def main():
     new = text
     for name, lines in c_regions().items():
         new = replace_region(new, name, lines, hpath)
+    new = table_typedefs(new)
     outputs = [(hpath, text, new)]
     for sec, deps in (('basis', ['shl_prelude.glsl']),
                       ('gradient', ['shl_prelude.glsl', 'shl_basis.glsl']),
