@@ -285,9 +285,10 @@ def make_func(src, decl, body, start, problems):
 ANCHOR_RE = re.compile(r"[\s*!/]*>>([a-z][a-z0-9_]*)\b")
 
 
-def find_stop(toks):
+def find_stop(toks, start=0):
     """Index of the first `#ifdef SHLIGHT_IMPLEMENTATION` / `#if defined(...)` line."""
-    for k, t in enumerate(toks):
+    for k in range(start, len(toks)):
+        t = toks[k]
         if t.kind != "ppbeg":
             continue
         d = []
@@ -889,10 +890,45 @@ def run(root, quiet, require_f=False):
     for ctype, alias in re.findall(r"\btypedef\s+(float|double|int)\s+([A-Za-z_]\w*)\s*;", htext):
         SCALAR_ALIASES[alias] = "int" if ctype == "int" else "float"
 
+    # the generated part: an anchor `>>generated` after the implementation opens a second
+    # declaration part (to the next SHLIGHT_IMPLEMENTATION line) that holds the @generated
+    # regions; a region there counts at the line `@generated NAME: defined in >>generated`
+    # of its section (its place for the order of kernels and the section it belongs to)
+    gen_lo = gen_hi = len(toks)
+    for idx, line, body, in_pp in hsrc.comments:
+        m = ANCHOR_RE.match(body)
+        if not in_pp and idx >= stop and m and m.group(1) == "generated":
+            gen_lo = idx
+            gen_hi = find_stop(toks, idx)
+            break
+    markers = {}  # region name -> token index of its marker in its section
+    regions = []  # (begin token index, end token index, name) of regions in the generated part
+    opened = {}
+    for idx, line, body, in_pp in hsrc.comments:
+        m = re.match(r"\s*@generated (\w+): defined in >>generated", body)
+        if m and idx < stop:
+            markers[m.group(1)] = idx
+        m = re.match(r"\s*@generated (begin|end) (\w+)", body)
+        if m and gen_lo <= idx <= gen_hi:  # (a comment's index is that of the next token)
+            if m.group(1) == "begin":
+                opened[m.group(2)] = idx
+            elif m.group(2) in opened:
+                regions.append((opened.pop(m.group(2)), idx, m.group(2)))
+
+    def vpos(start):
+        """(place in the section order, tie-break) of an item starting at token start"""
+        for lo, hi, name in regions:
+            if lo <= start < hi and name in markers:
+                return (markers[name], start)
+        return (start, 0)
+
+    def in_decl(idx):
+        return idx < stop or gen_lo <= idx < gen_hi
+
     # sections
     anchors = []  # (name, token index, line)
     for idx, line, body, in_pp in hsrc.comments:
-        if in_pp or idx >= stop:
+        if in_pp or not in_decl(idx):
             continue
         m = ANCHOR_RE.match(body)
         if m:
@@ -907,9 +943,14 @@ def run(root, quiet, require_f=False):
 
     problems = []
     cfuncs, cdecls = extract(hsrc, 0, stop, problems)
+    if gen_lo < gen_hi:
+        gfuncs_, gdecls_ = extract(hsrc, gen_lo, gen_hi, problems)
+        cfuncs = sorted(cfuncs + gfuncs_, key=lambda f: vpos(f.start))
+        cdecls = sorted(cdecls + gdecls_, key=lambda d: vpos(d[1]))
 
     def section_of(start):
         sec = None
+        start = vpos(start)[0]
         for name, idx, line in anchors:
             if idx <= start:
                 sec = name

@@ -846,7 +846,17 @@ def glsl_module(header_text, section, deps):
            '// rerun. Needs: %s. The host defines SHLIGHT_MAX_BANDS.' % ', '.join(deps),
            '#ifndef SHL_%s_GLSL' % section.upper(),
            '#define SHL_%s_GLSL' % section.upper()]
-    for kind, name, body in split_items(lines[a:b]):
+    sec = []
+    for ln in lines[a:b]:
+        m = re.match(r'/\* @generated (\w+): defined in >>generated', ln)
+        if m:
+            # a region written under >>generated at the end of the header: GLSL needs its
+            # definitions before their use, so the module takes them at the section's marker
+            i = lines.index('/* @generated begin %s */' % m.group(1))
+            sec += lines[i + 1:lines.index('/* @generated end %s */' % m.group(1))]
+        else:
+            sec.append(ln)
+    for kind, name, body in split_items(sec):
         g = guard(kind, name)
         out.append('')
         if g:
@@ -866,6 +876,20 @@ def replace_region(text, name, lines, path):
     j = text.index(e)
     j = text.rindex('\n', 0, j) + 1
     return text[:i] + '\n'.join(lines) + '\n' + text[j:]
+
+
+def table_typedefs(text):
+    """the sections reach a table of >>generated through `typedef T shli_tab_NAME_t[N];` (the
+    accessor returns a pointer to the whole array): keep N equal to the table's length"""
+    defs = dict(re.findall(r'#define (SHLI_\w+) (\d+)\n', text))
+    for ty, name, size in re.findall(r'static const ([\w ]+?) (SHLI_\w+)\[([^\]]+)\] = \{', text):
+        expr = re.sub(r'SHLI_\w+', lambda m: defs.get(m.group(0), m.group(0)), size)
+        if not re.match(r'^[\d *+]+$', expr):
+            continue
+        n = eval(expr)
+        text = re.sub(r'typedef %s shli_tab_%s_t\[\d+\];' % (re.escape(ty), name[5:].lower()),
+                      'typedef %s shli_tab_%s_t[%d];' % (ty, name[5:].lower(), n), text)
+    return text
 
 
 def clang_format(text, path):
@@ -889,6 +913,7 @@ def main():
     new = text
     for name, lines in c_regions().items():
         new = replace_region(new, name, lines, hpath)
+    new = table_typedefs(new)
     outputs = [(hpath, text, new)]
     for sec, deps in (('basis', ['shl_prelude.glsl']),
                       ('gradient', ['shl_prelude.glsl', 'shl_basis.glsl']),

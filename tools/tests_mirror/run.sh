@@ -339,5 +339,43 @@ variant table_extra
 edit shlight_glsl/shl_basis.glsl "const float SHLG_ONLY[2]" "const float SHLI_ONLY[2]"
 expect 1 1 "FAIL  basis: table SHLI_ONLY" "GLSL table has no C counterpart"
 
+# a region under >>generated after the implementation counts at its section's marker line
+SH4_DEF='SHLIGHT_INLINE shl_sh4 shl_sh4_make(float c0)
+{
+    shl_sh4 r;
+    r.c[0] = c0;
+    r.c[1] = 0.0f;
+    r.c[2] = 0.0f;
+    r.c[3] = SHLIGHT_ITOF(SHLIGHT_FTOI(c0 * 2.0f)) * 0.5f;
+    return r;
+}'
+SH4_MARK='/* @generated sh4: defined in >>generated at the end of the file */
+SHLIGHT_INLINE shl_sh4 shl_sh4_make(float c0);'
+SH4_GEN='#endif /* SHLIGHT_H */
+
+/* >>generated: the generated regions */
+/* @generated begin sh4 */
+'"$SH4_DEF"'
+/* @generated end sh4 */'
+
+variant generated_region
+edit shlight.h "$SH4_DEF" "$SH4_MARK"
+edit shlight.h "#endif /* SHLIGHT_H */" "$SH4_GEN"
+expect 0 0 "ok    gradient: shl_sh4_make body" "ok    gradient: order"
+
+variant generated_region_order   # the marker after shli_lerp: the order check sees it there
+edit shlight.h "$SH4_DEF" ""
+edit shlight.h "#ifdef __cplusplus
+}" "$SH4_MARK
+#ifdef __cplusplus
+}"
+edit shlight.h "#endif /* SHLIGHT_H */" "$SH4_GEN"
+expect 1 1 "FAIL  gradient: order" "C has \`shli_lerp\`"
+
+variant generated_region_unmarked   # no marker: the kernel sits in a section >>generated
+edit shlight.h "$SH4_DEF" ""
+edit shlight.h "#endif /* SHLIGHT_H */" "$SH4_GEN"
+expect 1 2 "FAIL  gradient: shl_sh4_make extra"
+
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]
