@@ -68,7 +68,7 @@
      Phong exponent; alpha: GGX / Beckmann roughness (perceptual roughness squared). Outputs
      come last and are named out_* (io_*: read and written). Kernels never fail: bad input
      gives the documented value. The CPU functions that can fail return shl_result.
-     Derivations: docs/math.md; measured accuracy and speed: docs/accuracy.md, docs/speed.md.
+     Derivations: docs/derivations.md; measured accuracy and speed: docs/accuracy.md, docs/speed.md.
 */
 #ifndef SHLIGHT_H
 #define SHLIGHT_H
@@ -177,7 +177,8 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
 
 #ifdef SHLIGHT_REFERENCE_FORMS
 /* shl_sh_eval_grad_spherical: the paper's form ([GRAD] sections 3-4, corrections E1-E3 of
-   docs/math.md fixed): Y_i(d / |d|), dY_i / dtheta and dY_i / dphi, by Sloan's recurrence for X
+   docs/derivations.md fixed): Y_i(d / |d|), dY_i / dtheta and dY_i / dphi, by Sloan's recurrence
+   for X
    and the normalised T recurrence Z_l = alpha (cos Z_{l-1} - sin X_{l-1}) - beta Z_{l-2}.
    Any finite d != 0; zero / NaN / Inf d: as (0,0,1). At an exact pole phi is taken as 0.
    Kept as the comparison point of shl_sh_eval_grad in tests and bench. */
@@ -203,7 +204,8 @@ SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const fl
 SHLIGHT_INLINE void shl_zh_cap(int n, float r, float d, float *out_zh);
 
 /* shl_zh_cap_derivative: derivative of shl_zh_cap with respect to the half-angle a,
-   out_dzh[l] = dL_l / da = sqrt(pi (2l+1)) P_l(alpha) s (docs/math.md section 2: the paper's eq. 16
+   out_dzh[l] = dL_l / da = sqrt(pi (2l+1)) P_l(alpha) s (docs/derivations.md section 2: the
+   paper's eq. 16
    is O'_l = -(2l+1) P_l, no division by alpha^2 - 1). Chain with da/dd = -s / (d alpha), or use
    shl_sphere_light_grad, which does it for the full SH. Same domain as shl_zh_cap; d <= r: the
    value at a = pi/2 (s = 1, alpha = 0). out_dzh: n floats. Cost: O(n), one sqrt per band. */
@@ -213,7 +215,8 @@ SHLIGHT_INLINE void shl_zh_cap_derivative(int n, float r, float d, float *out_dz
 /* shl_zh_cap_printed: the printed form of [GRAD] eq. 9 / [HVL] eq. 14, as a shader would
    write it, all in float: alpha = sqrt(1 - s^2) (= cos(asin(s))), L_0 = sqrt(pi)(1 - alpha),
    L_l = sqrt(pi / (2l+1)) (P_{l-1}(alpha) - P_{l+1}(alpha)). Comparison point for tests and
-   bench only (correction E4 (docs/math.md section 12)): relative error 1.4e-4 at s = 1e-2, 4.6e-2
+   bench only (correction E4 (docs/derivations.md section 12)): relative error 1.4e-4 at s = 1e-2,
+   4.6e-2
    at s = 1e-3, and every L_l is 0 for s < 2.4e-4. Use shl_zh_cap. Same domain and degenerate
    results as shl_zh_cap. out_zh: n floats. Cost: O(n). */
 SHLIGHT_INLINE void shl_zh_cap_printed(int n, float r, float d, float *out_zh);
@@ -272,7 +275,7 @@ SHLIGHT_INLINE void shl_sphere_light(int n, const float x[3], const float c[3], 
 /* shl_sphere_light_grad: shl_sphere_light and its gradient with respect to the shading point
    x, out_grad[i][k] = d out_sh[i] / d x_k: the rotational term through the pole-free
    Cartesian gradient of Y (finite for a probe exactly below or above the light) plus the
-   radial term 2 pi s^2 P_l(alpha) / (d alpha) Y w (docs/math.md section 3). Singular only as
+   radial term 2 pi s^2 P_l(alpha) / (d alpha) Y w (docs/derivations.md section 3). Singular only as
    d -> r+ (1 / alpha: exact, large, finite); on or inside the sphere the radial term is 0
    (the hemisphere extension is constant along rays from c); x == c, r <= 0 / NaN, NaN or
    infinite positions: zero gradient (values as shl_sphere_light). out_sh: n * n floats,
@@ -288,7 +291,8 @@ SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c
    from x, approximated by the paper's sphere ([GRAD] eq. 24-26): the sphere light at the
    centroid with r_s = sqrt(area / pi), times |cos gamma|, gamma the angle between the
    triangle's normal and the direction from x to the centroid. A model, not the exact
-   projection: its error is set by distance / sqrt(area) (docs/math.md section 4: L_0 within 1e-3 at
+   projection: its error is set by distance / sqrt(area) (docs/derivations.md section 4: L_0 within
+   1e-3 at
    20, 3e-5 at 100 for well-shaped triangles; slivers are worse). x closer to the centroid than
    r_s: the hemisphere (as shl_sphere_light) times |cos gamma|; x == centroid: axis +z.
    Zero-area triangle, NaN or infinite input: zeros. out_sh: n * n floats. Cost: one
@@ -308,8 +312,9 @@ SHLIGHT_INLINE void shl_triangle_light_grad(int n, const float x[3], const float
                                             float (*out_grad)[3]);
 
 /* shl_triangle_solid_angle: signed solid angle of the triangle (p0, p1, p2) seen from x, by
-   van Oosterom-Strackee in the edge form with atan2 (docs/math.md section 4, correction E6
-   (docs/math.md section 12)): Omega = 2 atan2(N, D), R_i = p_i - x, N = R_0 . ((p1 - p0) x (p2 -
+   van Oosterom-Strackee in the edge form with atan2 (docs/derivations.md section 4, correction E6
+   (docs/derivations.md section 12)): Omega = 2 atan2(N, D), R_i = p_i - x, N = R_0 . ((p1 - p0) x
+   (p2 -
    p0)), D = |R0||R1||R2| + (R0.R1)|R2| + (R0.R2)|R1| + (R1.R2)|R0|, in shli_real. Positive when x
    is behind the triangle, i.e. on the side opposite to n = (p1 - p0) x (p2 - p0) (p0, p1, p2
    clockwise as seen from x); |Omega| for a two-sided light. Range [-2 pi, 2 pi]; Omega > pi (D < 0)
@@ -428,7 +433,8 @@ SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const
    the nearest integer), by `method`: SHLIGHT_EDGE_EXACT (the O(n) recurrence, in shli_real) or one
    of the O(1) fits SHLIGHT_EDGE_LORENTZ / _LORENTZ_PEARSON / _ELLIPSOID (AUTO, QUADRATURE,
    FAST and any unknown method id mean EXACT here). The arc is split at +-pi/2 and reduced with I(p
-   + pi) = (-1)^n I(p) (docs/math.md section 7.2); orders n <= 2 and c < 1.0e-3 always take the
+   + pi) = (-1)^n I(p) (docs/derivations.md section 7.2); orders n <= 2 and c < 1.0e-3 always take
+   the
    exact path (closed forms; the fits are 0/0 there). Degenerate: c clamped to [0, 1], Phi to [0,
    pi]; NaN input -> 0; n > 1.0e6 clamped. Accuracy: EXACT matches long double quadrature to 1.0e-12
    relative to F(-pi/2, pi/2) in C (double inside); the fits' errors are in docs/area-lights.md. */
@@ -480,7 +486,8 @@ SHLIGHT_INLINE float shl_polygon_phong(const float (*v)[3], int nv, const float 
 
 /* shl_lobe_to_sg: the sharpness lambda of the spherical Gaussian exp(lambda (u.r - 1)) with the
    same half-maximum angle as the cosine lobe max(0, u.r)^n ([AREA] eq. 22, correction E16
-   (docs/math.md section 12)): lambda = ln 2 / (1 - 2^(-1/n)), in the stable form ln 2 / -expm1(-ln
+   (docs/derivations.md section 12)): lambda = ln 2 / (1 - 2^(-1/n)), in the stable form ln 2 /
+   -expm1(-ln
    2 / n) (float: 3e-8 relative at n = 1e7; the printed form is negative). n <= 0 or NaN: 0; lambda
    ~ n + ln 2 / 2 for large n: n >= 1e30 returns n itself (the relative difference is below float's
    resolution), so n = +inf gives +inf (the delta-lobe limit, documented; finite n gives
@@ -497,7 +504,7 @@ SHLIGHT_INLINE float shl_sg_to_lobe(float lambda);
    approximated by one lobe mu max(0, u.r_p)^e_p ([AREA] sec. 7.1): both mapped to SGs
    (shl_lobe_to_sg), the exact SG product (axis r_p along lambda1 r1 + lambda2 r2, sharpness
    lambda_p = |lambda1 r1 + lambda2 r2|), mapped back (shl_sg_to_lobe), mu the true product at r_p
-   (clamped lobes, docs/math.md 7.3). r1, r2: any finite non-zero vectors, normalised here in
+   (clamped lobes, docs/derivations.md 7.3). r1, r2: any finite non-zero vectors, normalised here in
    shli_real (so a float-normalised axis is exact enough for any exponent); zero, NaN or infinite:
    +z. Writes r_p (unit) and returns mu in [0, 1] (a product of two cosines <= 1 raised to
    exponent1, exponent2 >= 0), e_p in out_exponent[0]. Accuracy is the paper's: good for aligned
@@ -665,7 +672,8 @@ typedef enum shl_window_kind {
 #define SHLIGHT_WINDOW_NONE 0
 
 /* shl_zh_phong: ZH of the normalised Phong lobe (e+1)/(2 pi) max(0, cos t)^e about its axis:
-   out_zh[l] = K_l Lambda_l(e) (docs/math.md section 5; the printed products of [SSF] sec. 3.3.2).
+   out_zh[l] = K_l Lambda_l(e) (docs/derivations.md section 5; the printed products of [SSF] sec.
+   3.3.2).
    exponent: any real >= 0 (non-integer too); NaN or negative: 0 (the uniform hemisphere
    1/(2 pi)); above 1e30: 1e30, where every Lambda_l rounds to 1 (the Dirac limit, out_zh[l] =
    K_l). out_zh[0] = K_0 = 0.2820948 always (unit integral). Accuracy: within one float rounding
@@ -676,13 +684,15 @@ SHLIGHT_INLINE void shl_zh_phong(int n, float exponent, float *out_zh);
 /* shl_zh_cosine_power: ZH of the unnormalised clamped cosine power max(0, cos t)^e:
    out_zh[l] = 2 pi K_l Lambda_l(e) / (e+1) = sqrt(pi (2l+1)) int_0^1 x^e P_l(x) dx. Same
    exponent domain and accuracy as shl_zh_phong (e = 0: the hemisphere indicator, out_zh[0] =
-   sqrt(pi); e = 1: the clamped cosine, out_zh = A_l K_l of docs/math.md section 6; above 1e30:
+   sqrt(pi); e = 1: the clamped cosine, out_zh = A_l K_l of docs/derivations.md section 6; above
+   1e30:
    1e30, every coefficient about 2 pi K_l 1e-30). out_zh: n floats. Cost: O(n). */
 SHLIGHT_INLINE void shl_zh_cosine_power(int n, float exponent, float *out_zh);
 
 /* shl_zh_lambert: ZH of the Lambert lobe max(0, cos t) / pi (k_d = 1; the BRDF times the
    cosine) about the normal: out_zh[l] = K_l Lambda_l(1) = (1/pi) K_l A_l with the
-   Ramamoorthi-Hanrahan A_l (correction E7 (docs/math.md section 12): [SSF] even-l formula is off by
+   Ramamoorthi-Hanrahan A_l (correction E7 (docs/derivations.md section 12): [SSF] even-l formula
+   is off by
    2, 16, 192, ...): 0.2820948, 0.3257350, 0.1576958, 0, -0.0352618, 0, 0.0158923, ... Multiply by
    pi for the clamped cosine (irradiance). Accuracy: one float rounding. out_zh: n floats. Cost:
    O(n). */
@@ -746,7 +756,8 @@ SHLIGHT_INLINE float shl_zh_dot_zh(int n, const float *zh_a, const float u[3], c
 SHLIGHT_INLINE float shl_zh_irradiance_quadratic(const float *zh3, float z);
 
 /* shl_zh_irradiance: the same for n bands, E(z) = sum_l A_l K_l L_l P_l(z), A_l = pi
-   Lambda_l(1) (docs/math.md section 6): the exact irradiance of the band-limited radiance (its
+   Lambda_l(1) (docs/derivations.md section 6): the exact irradiance of the band-limited radiance
+   (its
    bands
    >= n are zero, so the clamped cosine's are not needed). zh: n floats; z as
    shl_zh_irradiance_quadratic. n < 1: 0. Cost: O(n). */
@@ -784,10 +795,11 @@ SHLIGHT_INLINE int shl_zh_bands_for(int n, const float *zh, float target);
 SHLIGHT_INLINE float shl_hvl_horizon(const float nrm[3], const float w[3], float r, float d);
 
 #ifdef SHLIGHT_REFERENCE_FORMS
-/* shl_hvl_horizon_smoothstep: [HVL] eq. 22 with correction E8 (docs/math.md section 12) fixed: H =
+/* shl_hvl_horizon_smoothstep: [HVL] eq. 22 with correction E8 (docs/derivations.md section 12)
+   fixed: H =
    S((a + pi/2 - clamp(beta, pi/2 - a, pi/2 + a)) / (2a)), S(x) = 3x^2 - 2x^3 on x clamped to [0,
    1]. Same arguments and degenerate results as shl_hvl_horizon (a = 0: the point limit). Max abs
-   error against the exact H: 0.039 (a = 0.01) to 0.089 (a = 1.5) (docs/math.md section 6;
+   error against the exact H: 0.039 (a = 0.01) to 0.089 (a = 1.5) (docs/derivations.md section 6;
    remeasured in tests/test_brdf). Cost: 2 normalisations, 2 own atan2. */
 SHLIGHT_INLINE float shl_hvl_horizon_smoothstep(const float nrm[3], const float w[3], float r,
                                                 float d);
@@ -845,7 +857,7 @@ SHLIGHT_INLINE float shl_hvl_radius_neighbours(int count, const float p[3], floa
 /* shl_hvl_radius_fov: [HVL] eq. 24-26, r2 = d (g + g^3 / 3), g = sqrt(2) fov / sqrt(hvl_count),
    the Taylor form of d tan(g) (fov: the RSM's field of view in radians, hvl_count the number of
    HVLs, d the HVL's distance to the light). Within 1 % absolute of tan for g <= 0.5786, i.e.
-   fov / sqrt(hvl_count) <= 0.41 (correction E9 (docs/math.md section 12); the paper's 0.2 is
+   fov / sqrt(hvl_count) <= 0.41 (correction E9 (docs/derivations.md section 12); the paper's 0.2 is
    wrong). hvl_count < 1: 1. d or fov NaN or < 0: 0. A result above FLT_MAX (d near FLT_MAX, or a
    huge fov) saturates to FLT_MAX, never inf; +inf d or fov: FLT_MAX. Cost: 1 sqrt, 8 flops. */
 SHLIGHT_INLINE float shl_hvl_radius_fov(float d, float fov, int hvl_count);
@@ -2404,7 +2416,8 @@ SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const fl
 
 /* >>zonal -----------------------------------------------------------------------------------
    Zonal harmonics (ZH) of a uniform spherical cap and the ZH -> SH rotation ([GRAD] eq. 9-11,
-   14-16 with correction E4 applied; docs/math.md sections 2 and 12). A sphere of radius r seen
+   14-16 with correction E4 applied; docs/derivations.md sections 2 and 12). A sphere of radius r
+   seen
    from distance d covers the cap of half-angle a, s = sin a = min(r / d, 1), alpha = cos a.
    The unit-radiance cap about +z projects onto band l as
      L_0 = sqrt(pi) (1 - alpha) = sqrt(pi) s^2 / (1 + alpha)
@@ -3207,12 +3220,13 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
    indicator of the light's solid angle, so out_sh[0] = Omega Y_0^0 and the irradiance of a
    normal n follows by convolution with the clamped cosine) and its gradient with respect to
    x, out_grad[i][k] = d out_sh[i] / d x_k.
-   Sphere light (centre c, radius r; [GRAD] eq. 9-14, docs/math.md section 2-3): with d = |c - x|,
+   Sphere light (centre c, radius r; [GRAD] eq. 9-14, docs/derivations.md section 2-3): with d = |c
+   - x|,
    s = min(r / d, 1), alpha = sqrt((d - r)(d + r)) / d, w = (c - x) / d, and
      q_0 = 1 / (1 + alpha),  q_l = P'_l(alpha) / (l (l+1))                 (l >= 1)
      out_sh[l,m] = 2 pi s^2 q_l Y_l^m(w)        [= sqrt(4 pi / (2l+1)) L_l Y_l^m(w)]
      grad_x      = -2 pi s^2 q_l grad_d Y_l^m(w) + 2 pi s^2 P_l(alpha) / (d alpha) Y_l^m(w) w
-   (docs/math.md section 3, "complete coefficient gradient, simplified"), grad_d Y from the
+   (docs/derivations.md section 3, "complete coefficient gradient, simplified"), grad_d Y from the
    pole-free Cartesian gradient of >>gradient. Inside and on the surface (d <= r): the value at the
    nearest surface point, i.e. the hemisphere about w; it is constant along rays from c, so its
    gradient is the rotational term only (radial derivative 0). The exact gradient is unbounded as d
@@ -3222,7 +3236,8 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
    Triangle light as a sphere ([GRAD] eq. 24-28): the sphere at the centroid with the
    triangle's area (r_s = sqrt(|e1 x e2| / (2 pi))), weighted by |cos gamma|, cos gamma the
    cosine between the triangle's normal and w (two-sided). This is the paper's far-field
-   model: exact in L_0 only as d / sqrt(area) -> inf (docs/math.md section 4 table). The exact solid
+   model: exact in L_0 only as d / sqrt(area) -> inf (docs/derivations.md section 4 table). The
+   exact solid
    angle is shl_triangle_solid_angle. */
 
 /* @generated light_idx: defined in >>generated at the end of the file */
@@ -3767,7 +3782,7 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
    Culling (shl_grid.cull = eps >= 0; 0: every light reaches every vertex): light j is skipped
    at the vertices farther than R_j = max(r_j sqrt(2 pi |I_j| / eps), 2 r_j) from c_j (test in
    double: |c - p|^2 > R_j^2). The error bounds (values and
-   gradients, per skipped light) are derived in docs/math.md section 10.
+   gradients, per skipped light) are derived in docs/derivations.md section 10.
    Orders: SHLIGHT_GRID_FORWARD loops the vertices, then the lights (all lights, culling
    test per pair); SHLIGHT_GRID_REVERSED loops the lights, then the vertices of the box around
    the culling sphere (all vertices when eps = 0). Both add the lights to a vertex in index
@@ -3787,7 +3802,8 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
    cell.
    - Hermite: the tensor-product cubic Hermite interpolant with the grid's corner values and
      gradients and mixed derivatives estimated inside the cell from the gradients (C0 across
-     cells, exact on quadratics, error O(h^3); formulas in docs/math.md section 10), one linear
+     cells, exact on quadratics, error O(h^3); formulas in docs/derivations.md section 10), one
+     linear
      combination of the 32 corner data (32 FMA per coefficient). */
 
 SHLIGHT_INLINE void shl_grid_trilinear(int n, const float *c8, const float f[3], float *out_sh) {
@@ -3955,9 +3971,11 @@ SHLIGHT_INLINE void shl_grid_hermite(int n, const float *c8, const float (*g8)[3
 /* CPU only (declared here, defined with SHLIGHT_IMPLEMENTATION). */
 
 /* >>edge ------------------------------------------------------------------------------------
-   Area lights without tables ([AREA], docs/math.md section 7): axial moments of polygons, the
+   Area lights without tables ([AREA], docs/derivations.md section 7): axial moments of polygons,
+   the
    moment M^e(P, r) = integral over the solid angle of P, clipped to the hemisphere u.r >= 0, of
-   (u.r)^e. Two exact identities carry everything here (docs/math.md section 7.1 and this header's
+   (u.r)^e. Two exact identities carry everything here (docs/derivations.md section 7.1 and this
+   header's
    derivation in docs/area-lights.md):
    - Arvo (integer e): (e+1) M = [e even] Omega + sum_i w_i F(Phi_i, c_i, delta_i, e-1), with
      the edge integral F of [AREA] eq. 3 (corrections E10, E11 applied), F's exact O(e) recurrence
@@ -4111,7 +4129,7 @@ SHLIGHT_INLINE shli_real shli_expm1r(shli_real t) {
 
 /* The edge integrand of [AREA] eq. 5-6: I(x) = sum over k = nf, nf - 2, ..., >= 0 of x^k,
    x = c cos(phi), in the expm1 form f (1 - x^m) / (1 - x^2) (m = nf + 2 for even nf, nf + 1
-   with f = x for odd nf) with its limit f m / 2 at x^2 = 1 (docs/math.md section 7.1). */
+   with f = x for odd nf) with its limit f m / 2 at x^2 = 1 (docs/derivations.md section 7.1). */
 SHLIGHT_INLINE shli_real shli_edge_isum(shli_real x, int nf) {
   shli_real f = 1.0;
   shli_real x2 = x * x;
@@ -4173,7 +4191,8 @@ SHLIGHT_INLINE shli_real shli_edge_exact(shli_real pa, shli_real pb, shli_real c
 }
 
 /* The paper's O(1) fits of F over [pa, pb] inside [-pi/2, pi/2], nf >= 3, c in (1.0e-3, 1]:
-   peak I_max = I(0), floor I_min = I(pi/2), half width x_w of eq. 7 (correction E12 (docs/math.md
+   peak I_max = I(0), floor I_min = I(pi/2), half width x_w of eq. 7 (correction E12
+   (docs/derivations.md
    section 12): level (I_max + I_min) / 2), the fit passing through (x_w, I(x_w)); Lorentzian with
    the atan2 form of eq. 12 (E13); Lorentzian-Pearson with b = a / 2, the corrected antiderivative
    (E14) and the blend factor clamped to [0, 1] (E17); single ellipsoid eq. 15-16, 18 (its
@@ -5664,7 +5683,7 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    A and M1 by Stokes along the boundary of H(P) (the images of P's great arcs under
    l -> l + v are conics), each edge integral by a graded rule t = t0 + wd sinh(s) about its
    peak with 5 Gauss-Legendre nodes per side; the formulas and the guard on the Newton step
-   that finds t0 are in docs/math.md section 9. */
+   that finds t0 are in docs/derivations.md section 9. */
 
 /* Beckmann's Smith Lambda at the direction cosine c (0 < c <= 1), roughness alpha:
    (erf(a) - 1) / 2 + exp(-a^2) / (2 a sqrt(pi)), a = c / (alpha sqrt(1 - c^2)), with erfc by
@@ -7186,21 +7205,23 @@ SHLIGHT_CPU_INLINE float shli_fan_beckmann(const float (*v)[3], int nv, const fl
 
 /* >>brdf ------------------------------------------------------------------------------------
    ZH of circularly symmetric BRDF lobes, convolution with SH / ZH radiance, irradiance,
-   windowing and band selection (docs/math.md section 5-6; [SSF] sec. 3.3 with correction E7
-   (docs/math.md section 12); [HVL] sec. 4.2, 6.3, Appendix B). A lobe f(w . c) about its axis c
+   windowing and band selection (docs/derivations.md section 5-6; [SSF] sec. 3.3 with correction E7
+   (docs/derivations.md section 12); [HVL] sec. 4.2, 6.3, Appendix B). A lobe f(w . c) about its
+   axis c
    (the normal for Lambert and the microfacet lobes, the mirror direction for Phong) has ZH
    coefficients f_l = 2 pi int_0^pi f(cos t) Y_l^0(t) sin t dt; its SH about c are sqrt(4 pi /
    (2l+1)) f_l Y_l^m(c) (shl_zh_rotate). Cosine powers (Lambert, Phong, Blinn-Phong) use the
-   factorial-free recurrence of docs/math.md sec. 5: Lambda_l(e) = (e+1) int_0^1 x^e P_l(x) dx,
+   factorial-free recurrence of docs/derivations.md sec. 5: Lambda_l(e) = (e+1) int_0^1 x^e P_l(x)
+   dx,
    Lambda_0 = 1, Lambda_1 = (e+1)/(e+2), Lambda_{l+2} = Lambda_l (e-l)/(e+l+3), in shli_real (double
    in C: within one float rounding of a binary128 quadrature reference for e in [0, 1e4] and n <=
    64, tests/test_brdf).
    The microfacet lobes (GGX, Beckmann) by the trapezoidal rule in u = ln(tan^2 t / alpha^2)
-   (docs/math.md section 5), at the float rounding floor against a long double quadrature.
+   (docs/derivations.md section 5), at the float rounding floor against a long double quadrature.
    Convolution: int L F = sum_i L_i F_i (shl_sh_dot); a ZH lobe about w: shl_sh_conv_zh,
    O(n^2); two ZH about u and v: sum_l a_l b_l P_l(u . v) by the addition theorem
-   (shl_zh_dot_zh, O(n); docs/math.md section 6).
-   Irradiance of a ZH radiance L about w at a normal n, z = w . n (docs/math.md section 6):
+   (shl_zh_dot_zh, O(n); docs/derivations.md section 6).
+   Irradiance of a ZH radiance L about w at a normal n, z = w . n (docs/derivations.md section 6):
      E(z) = sum_l A_l K_l L_l P_l(z), A_l = pi Lambda_l(1)   (A_0 = pi, A_1 = 2pi/3, A_2 = pi/4)
    which for n = 3 is [HVL] Appendix B 2x2 form c3 L2 z^2 + 2 c2 L1 z + c4 L0 - c5 L2. */
 
@@ -7692,7 +7713,8 @@ SHLIGHT_INLINE int shl_zh_bands_for(int n, const float *zh, float target) {
 }
 
 /* >>hvl -------------------------------------------------------------------------------------
-   Harmonics Virtual Lights ([HVL] sec. 5; docs/math.md section 6, corrections E8, E9). An HVL j is
+   Harmonics Virtual Lights ([HVL] sec. 5; docs/derivations.md section 6, corrections E8, E9). An
+   HVL j is
    a sphere of radius r at y with normal n_j and power Phi_j, whose emission towards the shading
    point x is the reconstruction of an SH emission function F' (the BRDF projected without the
    cosine, in world axes). With w_j = (y - x) / |y - x| and n_x the normal at x:
@@ -7703,8 +7725,9 @@ SHLIGHT_INLINE int shl_zh_bands_for(int n, const float *zh, float target) {
              about its own axis, shl_zh_dot_zh (shl_hvl_contribution_zh, O(n)).
    H is the fraction of the cap (half-angle a, sin a = s = min(r/d, 1), d = |y - x|) above the
    horizon of n_x, with beta the angle between n_x and w_j: exact (two-cap intersection,
-   written without cancellation for small caps, docs/math.md section 6; shl_hvl_horizon). The cheap
-   variant is [HVL] smoothstep (eq. 22) with the clamp corrected (correction E8 (docs/math.md
+   written without cancellation for small caps, docs/derivations.md section 6; shl_hvl_horizon).
+   The cheap
+   variant is [HVL] smoothstep (eq. 22) with the clamp corrected (correction E8 (docs/derivations.md
    section 12): lower bound pi/2 - a, S clamped to [0, 1]): max abs error 0.039-0.089 against the
    exact H (shl_hvl_horizon_smoothstep). The angles use the own atan2 of >>light. */
 
@@ -8233,7 +8256,8 @@ SHLIGHT_INLINE void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int whi
    sec. 3.2 leaves this constant to the VPL generation). So its SH coefficients ([SSF] eq. 1)
    are e Y_i(w) (shl_ssf_vpl_sh) and its irradiance at a normal n is e max(0, n . w)
    (shl_ssf_vpl_irradiance); a Lambertian receiver of albedo kd reflects kd / pi of that.
-   VPLs from a spot light's shadow map: flux and texel solid angle in docs/math.md section 11.
+   VPLs from a spot light's shadow map: flux and texel solid angle in docs/derivations.md section
+   11.
    Interleaved sampling ([SSF] sec. 2.3). The VPLs are split into tile_x tile_y disjoint sets,
    set s holding the VPLs j with j mod (tile_x tile_y) = s; pixel (px, py) uses set
    s = (py mod tile_y) tile_x + (px mod tile_x) (shl_ssf_interleave), so every tile_x x tile_y
@@ -8426,7 +8450,8 @@ extern "C" {
    (z > 0; f_s = 0 otherwise), kd = diffuse albedo, ks = specular scale:
      SHLIGHT_BRDF_LAMBERT      kd / pi
      SHLIGHT_BRDF_PHONG        kd / pi + ks (e + 1) / (2 pi) max(0, r . w_i)^e, r = the mirror
-                               direction of w_o, e = exponent (the lobe of docs/math.md section 5:
+                               direction of w_o, e = exponent (the lobe of docs/derivations.md
+                               section 5:
    its integral over the sphere is ks, so albedo <= kd + ks) SHLIGHT_BRDF_BLINN_PHONG  kd / pi + ks
    D F G2 / (4 cos_i cos_o), D = (e + 2) / (2 pi) (n.h)^e, G2 with Beckmann's Lambda at alpha =
    sqrt(2 / (e + 2)) (Walter et al. 2007's equivalence) SHLIGHT_BRDF_BECKMANN     kd / pi + ks D F

@@ -7,7 +7,7 @@ plus the constant tables of the run-time loops. Writes the regions between
   python3 tools/gen_basis.py          rewrite the regions
   python3 tools/gen_basis.py --check  exit 1 if a region is stale (CI)
 
-Math (docs/math.md sections 1 and 3, errata applied):
+Math (docs/derivations.md sections 1 and 3, errata applied):
   X_l^m(z): normalised associated Legendre / sin^m, Condon-Shortley phase;
   Y_l^m = X_l^m U_m, Y_l^-m = X_l^m V_m, U_m + i V_m = (x + i y)^m.
   Reinsch form with t = 1 - |z|, g_l = X_l(1)/X_{l-1}(1), c_l = beta_l / g_{l-1}:
