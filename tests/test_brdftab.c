@@ -961,8 +961,11 @@ static void test_build_args(void) {
     wo[0] = (float)sin(th);
     wo[2] = (float)cos(th);
     shl_brdf_table_lookup(2, 4, 1, 0, d, wo, o);
+    /* cubic (4-point Lagrange) halfway: (-1, 9, 9, -1) / 16 of samples 0 .. 3 */
     for (i = 0; i < 4; ++i)
-      TL_CHECK(fabs((double)o[i] - 0.5 * (double)(d[2 * 4 + i] + d[4 * 4 + i])) <= 2e-6,
+      TL_CHECK(fabs((double)o[i] -
+                    (9.0 * (double)(d[2 * 4 + i] + d[4 * 4 + i]) - (double)(d[i] + d[6 * 4 + i])) /
+                        16.0) <= 2e-6,
                "halfway, coef %d", i);
     shl_brdf_table_lookup(2, 4, 1, 0, d, wz, o);
     for (i = 0; i < 4; ++i)
