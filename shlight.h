@@ -880,9 +880,13 @@ SHLIGHT_INLINE void shl_sh_rotate_z(int n, float c1, float s1, float *io_sh);
    (local frame, any finite vector; wo_x = wo_y = 0, zero included, is normal incidence,
    theta_o = 0, phi_o = 0; wo_z < 0 counts as the horizon). out_idx[j] is a sample index
    s = p * n_theta + t (the table's F of sample s starts at float 2 s n^2, F' at (2 s + 1) n^2),
-   out_w[j] its weight, j < 4: (t0, p0), (t0 + 1, p0), (t0, p1), (t0 + 1, p1) with
-   p1 = (p0 + 1) mod n_phi; the weights add up to 1. Isotropic tables (n_phi = 1) have weight 0
-   at j = 2, 3 (indices repeat j = 0, 1); n_theta = 1 puts all weight on t = 0. The samples
+   out_w[j] its weight, j < 4. Isotropic tables (n_phi = 1) with n_theta >= 4: cubic in the
+   grid variable u, samples t0 - 1 .. t0 + 2 (t0 .. t0 + 3 in the first cell, t0 - 2 .. t0 + 1
+   in the last) with their Lagrange weights (some negative; 4th order in the step: Phong
+   e = 1000 at 90 samples within 5.2e-5 of the coefficient norm, 2.1e-3 when linear). Otherwise
+   bilinear: (t0, p0), (t0 + 1, p0), (t0, p1), (t0 + 1, p1) with p1 = (p0 + 1) mod n_phi
+   (n_theta = 2, 3 isotropic: weight 0 at j = 2, 3, indices repeating j = 0, 1); n_theta = 1
+   puts all weight on t = 0. The weights add up to 1 (to float rounding). The samples
    cover theta_o in [0, 90] degrees (grid of >>brdftab): no clamping at the ends.
    n_theta or n_phi outside [1, 4096] (SHLIGHT_BRDF_TABLE_MAX_SAMPLES): all indices 0, all
    weights 0 (so n_theta n_phi < 2^24 and no index overflows an int). Cost: one atan2 and one
@@ -1165,20 +1169,23 @@ SHLIGHT_API shl_result shl_merl_read(const void *buf, size_t len, float *storage
    phi_d folded to [0, pi) by reciprocity), index coordinates u_h = sqrt(theta_h / (pi/2)) n_theta_h
    (MERL's non-linear theta_h index), u_d = theta_d / (pi/2) n_theta_d, u_p = phi_d / pi n_phi_d,
    sample i at coordinate i (MERL's convention: the index is the floor of the coordinate),
-   trilinear between samples (clamped at the ends of theta_h and theta_d, periodic in phi_d).
-   Reconstruction (for grazing directions): the trilinear interpolant is of f cos(theta_h)
-   cos(theta_d) = f (cos_i + cos_o) / 2, divided by the query's factor (floored at 1e-6), so
+   linear along phi_d (periodic), then theta_d, then theta_h (trilinear inside the valid grid).
+   Reconstruction (for grazing directions): the interpolant is of f cos(theta_h) cos(theta_d)
+   = f (cos_i + cos_o) / 2, divided by the query's (cos_i + cos_o) / 2 (floored at 1e-9), so
    that the 1 / (cos_i + cos_o) growth of f at grazing is carried by the factor; only valid
-   samples (> 0; MERL marks invalid ones negative) enter the sum, their weights renormalised
-   to 1; beyond the last theta_d sample, linear extrapolation from the last two layers when
-   their 8 samples are valid, else the last layer held; a cell without any valid sample takes
-   the nearest theta_d layer below that has one (held along theta_d); 0 if none.
-   Invalid m or c: 0. Cost: ~100 flops, 2 acos, 2 atan2. */
+   samples (> 0; MERL marks invalid ones negative) are used: where one of the two samples
+   along an axis is invalid or beyond the grid (theta_h past the last sample, 88 deg in MERL
+   files; theta_d past 89 deg), linear extrapolation from the valid one and its other
+   neighbour when that is valid, else the valid one held; with none in reach, the theta_d
+   coordinate steps down a layer at a time (held along theta_d); 0 if none; negative
+   extrapolations give 0. Invalid m or c: 0. Cost: ~100 flops, 2 acos, 2 atan2, 2 cos per
+   sample read (8 inside the grid, up to 64 at its edges). */
 SHLIGHT_API float shl_merl_eval(const shl_merl *m, int c, const float wo[3], const float wi[3]);
 
 /* shl_brdf_table_build_merl: shl_brdf_table_build for channel c of a measured BRDF (tables
-   must be isotropic: n_phi = 1, flags 0): the whole BRDF by the specular-frame quadrature,
-   lobe width 0.1 rad. Errors as shl_brdf_table_build (EINVAL also for an invalid m / c). */
+   must be isotropic: n_phi = 1, flags 0): the whole BRDF by the half-vector quadrature of
+   isotropic microfacet lobes (MERL data are isotropic), its panels at atan(0.01 3^k) and graded
+   towards the horizon. Errors as shl_brdf_table_build (EINVAL also for an invalid m / c). */
 SHLIGHT_API shl_result shl_brdf_table_build_merl(shl_brdf_table *t, const shl_merl *m, int c,
                                                  int quad_order, float *out_err_est);
 
@@ -8084,12 +8091,14 @@ SHLIGHT_INLINE float shl_hvl_radius_fov_tan(float d, float fov, int hvl_count) {
    array is an SSBO (std430 float[]), or an RGBA32F texture of n_theta * n_phi * 2 * n^2 / 4 texels
    read linearly (n^2 * 2 floats per sample: whole texels for every n >= 2), in the same order.
    Lookup (shl_brdf_table_cell, shl_brdf_table_lookup): d = atan2(w_z, |w_xy|) (own atan2, see
-   >>light; w_z < 0 clamps to the horizon, w_xy = 0 is normal incidence), linear in u between
-   the two bracketing samples over the whole range [0, 90] degrees; anisotropic tables also
+   >>light; w_z < 0 clamps to the horizon, w_xy = 0 is normal incidence); isotropic tables of
+   4 or more samples cubic in u (4 samples, Lagrange), others linear in u between the two
+   bracketing samples, over the whole range [0, 90] degrees; anisotropic tables also
    linear in phi_o = atan2(w_y, w_x) (periodic). Isotropic tables are rotated about z by phi_o
    (shl_sh_rotate_z): the result is the SH of F in the local frame for that w_o, whatever its
-   azimuth. Error: the interpolation error of the tabulated function, O(h^2) in the sample step
-   (docs/brdf-tables.md has it against theta_o for each model), plus float rounding. */
+   azimuth. Error: the interpolation error of the tabulated function, O(h^4) in the sample step
+   for isotropic tables, O(h^2) for anisotropic ones (docs/brdf-tables.md has it against theta_o for
+   each model), plus float rounding. */
 
 /* shli_brdf_grid_u: the table grid variable u in [0, 1] (see >>brdftab) of d = pi/2 - theta_o
    in [0, pi/2]: u(pi/2) = 0 (normal incidence), u(0) = 1 (grazing). */
@@ -8188,6 +8197,26 @@ SHLIGHT_INLINE void shl_brdf_table_cell(int n_theta, int n_phi, const float wo[3
     if (p1 == n_phi) {
       p1 = 0;
     }
+  }
+  if (n_phi == 1 && n_theta >= 4) {
+    /* isotropic: cubic in u, the Lagrange polynomial through samples t0 - 1 .. t0 + 2, the
+       stencil shifted inwards in the first and last cells (no extrapolation) */
+    p0 = -1;
+    if (t0 == 0) {
+      p0 = 0;
+    }
+    if (t0 == n_theta - 2) {
+      p0 = -2;
+    }
+    fp = ft - SHLIGHT_ITOF(p0);
+    for (j = 0; j < 4; ++j) {
+      out_idx[j] = t0 + p0 + j;
+    }
+    out_w[0] = (1.0f - fp) * (fp - 2.0f) * (fp - 3.0f) * 0.16666667f;
+    out_w[1] = fp * (fp - 2.0f) * (fp - 3.0f) * 0.5f;
+    out_w[2] = fp * (fp - 1.0f) * (3.0f - fp) * 0.5f;
+    out_w[3] = fp * (fp - 1.0f) * (fp - 2.0f) * 0.16666667f;
+    return;
   }
   out_idx[0] = p0 * n_theta + t0;
   out_idx[1] = p0 * n_theta + t1;
@@ -10250,6 +10279,89 @@ SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_pa
 }
 
 /* ---- MERL ---- */
+/* MERL reconstruction, one axis at a time (phi_d, then theta_d, then theta_h): the value at
+   index coordinate x from samples j0 = floor(x) (at most nj - 2, so that beyond the last sample
+   the last two extrapolate) and j0 + 1, each valid or not; both valid: linear; one valid: linear
+   extrapolation from it and its other neighbour when that is valid, else the valid one held;
+   none: invalid (returns 0). get(j) gives the value of index j and whether it is valid. */
+typedef struct shli_merlq {
+  const shl_merl *m;
+  int c;
+  double u[3]; /* index coordinates: theta_h, theta_d, phi_d */
+  int ih;      /* the theta_h and theta_d indices of the line being read */
+  int id;
+} shli_merlq;
+
+static int shli_merl_get(const shli_merlq *q, int axis, int j, double *out);
+
+static int shli_merl_axis(const shli_merlq *q, int axis, double *out) {
+  int nj = axis == 0 ? q->m->n_theta_h : (axis == 1 ? q->m->n_theta_d : q->m->n_phi_d);
+  double x = q->u[axis];
+  double f0 = floor(x);
+  double fr;
+  double v0 = 0.0;
+  double v1 = 0.0;
+  double vx = 0.0;
+  int j0;
+  int ok0;
+  int ok1;
+  if (nj == 1) {
+    return shli_merl_get(q, axis, 0, out);
+  }
+  if (axis < 2 && f0 > (double)(nj - 2)) {
+    f0 = (double)(nj - 2);
+  }
+  j0 = (int)f0;
+  fr = x - f0;
+  ok0 = shli_merl_get(q, axis, j0, &v0);
+  ok1 = shli_merl_get(q, axis, j0 + 1, &v1);
+  if (ok0 && ok1) {
+    *out = (1.0 - fr) * v0 + fr * v1;
+    return 1;
+  }
+  if (ok0) {
+    *out = shli_merl_get(q, axis, j0 - 1, &vx) ? v0 + fr * (v0 - vx) : v0;
+    return 1;
+  }
+  if (ok1) {
+    *out = shli_merl_get(q, axis, j0 + 2, &vx) ? v1 + (fr - 1.0) * (vx - v1) : v1;
+    return 1;
+  }
+  return 0;
+}
+
+/* axis 2 (phi_d, periodic): the sample (ih, id, j) times cos theta_h cos theta_d of the sample,
+   valid when > 0; axes 1 and 0: the reconstruction along the next axis at index j */
+static int shli_merl_get(const shli_merlq *q, int axis, int j, double *out) {
+  const shl_merl *m = q->m;
+  shli_merlq r = *q;
+  if (axis == 2) {
+    double s;
+    double sh = (double)q->ih / (double)m->n_theta_h;
+    j %= m->n_phi_d;
+    if (j < 0) {
+      j += m->n_phi_d;
+    }
+    s = (double)
+            m->data[(((size_t)q->c * (size_t)m->n_theta_h + (size_t)q->ih) * (size_t)m->n_theta_d +
+                     (size_t)q->id) *
+                        (size_t)m->n_phi_d +
+                    (size_t)j];
+    *out = s * cos(sh * sh * 0.5 * SHLI_PI) *
+           cos((double)q->id / (double)m->n_theta_d * 0.5 * SHLI_PI);
+    return s > 0.0;
+  }
+  if (j < 0 || j >= (axis == 0 ? m->n_theta_h : m->n_theta_d)) {
+    return 0;
+  }
+  if (axis == 0) {
+    r.ih = j;
+  } else {
+    r.id = j;
+  }
+  return shli_merl_axis(&r, axis + 1, out);
+}
+
 static double shli_merl_f(const shl_merl *m, int c, const double wo[3], const double wi[3]) {
   double h[3];
   double hl;
@@ -10259,18 +10371,10 @@ static double shli_merl_f(const shl_merl *m, int c, const double wo[3], const do
   double tmp[3];
   double td;
   double pd;
-  double u[3];
-  int nd[3];
-  int i0[3];
-  int i1[3];
-  double fr[3];
   double v = 0.0;
+  double qf;
+  shli_merlq q;
   int k;
-  int a;
-  int b;
-  int e;
-  int extra = 0;
-  int bad = 0;
   if (!(wo[2] > 0.0) || !(wi[2] > 0.0)) {
     return 0.0;
   }
@@ -10295,101 +10399,43 @@ static double shli_merl_f(const shl_merl *m, int c, const double wo[3], const do
   if (pd < 0.0) {
     pd += SHLI_PI;
   }
-  nd[0] = m->n_theta_h;
-  nd[1] = m->n_theta_d;
-  nd[2] = m->n_phi_d;
-  u[0] = sqrt(th / (0.5 * SHLI_PI)) * (double)nd[0];
-  u[1] = td / (0.5 * SHLI_PI) * (double)nd[1];
-  u[2] = pd / SHLI_PI * (double)nd[2];
+  q.m = m;
+  q.c = c;
+  q.ih = 0;
+  q.id = 0;
+  q.u[0] = sqrt(th / (0.5 * SHLI_PI)) * (double)m->n_theta_h;
+  q.u[1] = td / (0.5 * SHLI_PI) * (double)m->n_theta_d;
+  q.u[2] = pd / SHLI_PI * (double)m->n_phi_d;
   for (k = 0; k < 3; ++k) {
-    double f0;
-    if (!(u[k] > 0.0)) {
-      u[k] = 0.0;
-    }
-    f0 = floor(u[k]);
-    if (f0 > (double)(nd[k] - 1)) {
-      f0 = (double)(nd[k] - 1);
-    }
-    i0[k] = (int)f0;
-    fr[k] = u[k] - f0;
-    if (fr[k] > 1.0) {
-      fr[k] = 1.0;
-    }
-    i1[k] = i0[k] + 1;
-    if (i1[k] >= nd[k]) {
-      i1[k] = k == 2 ? 0 : nd[k] - 1; /* periodic in phi_d, clamped in the thetas */
+    if (!(q.u[k] > 0.0)) {
+      q.u[k] = 0.0;
     }
   }
-  if (u[1] > (double)(nd[1] - 1) && nd[1] >= 2) {
-    /* beyond the last theta_d layer (MERL: 89 to 90 degrees): linear extrapolation from the
-       last two layers (of f cos theta_h cos theta_d, below), when all 8 samples are valid */
-    i0[1] = nd[1] - 2;
-    i1[1] = nd[1] - 1;
-    fr[1] = u[1] - (double)(nd[1] - 2);
-    if (fr[1] > 2.0) {
-      fr[1] = 2.0;
-    }
-    extra = 1;
+  if (q.u[2] >= (double)m->n_phi_d) {
+    q.u[2] -= (double)m->n_phi_d;
   }
-  /* trilinear in f cos(theta_h) cos(theta_d) = f (cos_i + cos_o) / 2, which stays smooth where
-     f of a rough surface grows like 1 / (cos_i + cos_o) at grazing, divided by the query's
-     factor (floored at 1e-6); over the valid (positive) samples only, the weights renormalised:
-     near the horizon the grid mixes valid samples with invalid ones (negative in MERL files, 0
-     where a direction of the sample lies below the surface), which would otherwise pull the value
-     towards 0; with no valid sample in the cell, the nearest theta_d layer below that has one
-     (extrapolation by holding along theta_d, where the sampled configurations end first) */
+  /* f cos(theta_h) cos(theta_d) = f (cos_i + cos_o) / 2 is reconstructed, which stays smooth
+     where f of a rough surface grows like 1 / (cos_i + cos_o) at grazing, then divided by the
+     query's factor (cos_i + cos_o) / 2, floored at 1e-9. Where the cell reaches past the valid
+     samples (negative in MERL files, 0 where a direction of the sample lies below the surface;
+     beyond the last theta_h and theta_d samples, 88 and 89 degrees in MERL files), each axis
+     extrapolates linearly from the last two valid samples. With no valid sample in reach, the
+     theta_d coordinate steps down one layer at a time (held along theta_d, where the sampled
+     configurations end first). */
   for (;;) {
-    double ws = 0.0;
-    double ch[2];
-    double cd[2];
-    double q = cos(th) * cos(td);
-    for (k = 0; k < 2; ++k) {
-      double sh = (double)(k ? i1[0] : i0[0]) / (double)nd[0];
-      ch[k] = cos(sh * sh * 0.5 * SHLI_PI);
-      cd[k] = cos((double)(k ? i1[1] : i0[1]) / (double)nd[1] * 0.5 * SHLI_PI);
+    if (shli_merl_axis(&q, 0, &v)) {
+      break;
     }
-    if (q < 1e-6) {
-      q = 1e-6;
-    }
-    for (a = 0; a < 2; ++a) {
-      for (b = 0; b < 2; ++b) {
-        for (e = 0; e < 2; ++e) {
-          size_t ih = (size_t)(a ? i1[0] : i0[0]);
-          size_t id = (size_t)(b ? i1[1] : i0[1]);
-          size_t ip = (size_t)(e ? i1[2] : i0[2]);
-          double w =
-              (a ? fr[0] : 1.0 - fr[0]) * (b ? fr[1] : 1.0 - fr[1]) * (e ? fr[2] : 1.0 - fr[2]);
-          double s =
-              (double)
-                  m->data[(((size_t)c * (size_t)nd[0] + ih) * (size_t)nd[1] + id) * (size_t)nd[2] +
-                          ip];
-          if (s > 0.0 && w != 0.0) {
-            v += w * s * ch[a] * cd[b];
-            ws += w;
-          } else if (w != 0.0) {
-            bad = 1;
-          }
-        }
-      }
-    }
-    if (extra && bad) { /* an invalid sample: hold the last layer instead */
-      extra = 0;
-      bad = 0;
-      v = 0.0;
-      i0[1] = nd[1] - 1;
-      fr[1] = 0.0;
-      continue;
-    }
-    if (ws > 0.0) {
-      return v / (ws * q);
-    }
-    if (i0[1] == 0) {
+    if (q.u[1] < 1.0) {
       return 0.0;
     }
-    i0[1] -= 1; /* one theta_d layer down, both corners on it */
-    i1[1] = i0[1];
-    fr[1] = 0.0;
+    q.u[1] = floor(q.u[1]) - 1.0;
   }
+  qf = 0.5 * (wi[2] + wo[2]); /* = cos(theta_h) cos(theta_d), exactly */
+  if (qf < 1e-9) {
+    qf = 1e-9;
+  }
+  return v > 0.0 ? v / qf : 0.0;
 }
 
 static int shli_merl_valid(const shl_merl *m) {
@@ -10421,9 +10467,9 @@ SHLIGHT_API shl_result shl_brdf_table_build_merl(shl_brdf_table *t, const shl_me
   }
   src.brdf = NULL;
   src.merl = m;
-  src.half = 0;
+  src.half = 1;
   src.channel = c;
-  src.width = 0.1;
+  src.width = 0.01; /* panel breaks at atan(0.01 3^k): lobes down to about 0.01 rad */
   src.gmax = SHLI_PI;
   return shli_tab_build(t, &src, 0.0, quad_order, out_err_est);
 }

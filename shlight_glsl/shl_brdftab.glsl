@@ -100,6 +100,26 @@ void shl_brdf_table_cell(int n_theta, int n_phi, vec3 wo, out int out_idx[4], ou
       p1 = 0;
     }
   }
+  if (n_phi == 1 && n_theta >= 4) {
+    /* isotropic: cubic in u, the Lagrange polynomial through samples t0 - 1 .. t0 + 2, the
+       stencil shifted inwards in the first and last cells (no extrapolation) */
+    p0 = -1;
+    if (t0 == 0) {
+      p0 = 0;
+    }
+    if (t0 == n_theta - 2) {
+      p0 = -2;
+    }
+    fp = ft - SHLIGHT_ITOF(p0);
+    for (j = 0; j < 4; ++j) {
+      out_idx[j] = t0 + p0 + j;
+    }
+    out_w[0] = (1.0f - fp) * (fp - 2.0f) * (fp - 3.0f) * 0.16666667f;
+    out_w[1] = fp * (fp - 2.0f) * (fp - 3.0f) * 0.5f;
+    out_w[2] = fp * (fp - 1.0f) * (3.0f - fp) * 0.5f;
+    out_w[3] = fp * (fp - 1.0f) * (fp - 2.0f) * 0.16666667f;
+    return;
+  }
   out_idx[0] = p0 * n_theta + t0;
   out_idx[1] = p0 * n_theta + t1;
   out_idx[2] = p1 * n_theta + t0;
