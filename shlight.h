@@ -9801,6 +9801,20 @@ static void shli_tab_diffuse(int n, double kd, double *acc, float *y) {
   }
 }
 
+/* sorts the nb panel break points br[] of the quadratures below in place (insertion sort: a
+   few dozen values) */
+static void shli_sort_breaks(double *br, int nb) {
+  int i;
+  int j;
+  for (i = 1; i < nb; ++i) {
+    double v = br[i];
+    for (j = i; j > 0 && br[j - 1] > v; --j) {
+      br[j] = br[j - 1];
+    }
+    br[j] = v;
+  }
+}
+
 /* one node of the specular-frame quadrature: w_i = cos(g) r + sin(g) (cos(ps) e1 + sin(ps) e2),
    weight wgt */
 static void shli_tab_arc(int n, const shli_tabsrc *src, const double wo[3], const double fr[9],
@@ -9876,13 +9890,7 @@ static void shli_tab_spec(int n, const shli_tabsrc *src, const double wo[3], int
       br[nb++] = b;
     }
   }
-  for (i = 1; i < nb; ++i) { /* insertion sort */
-    double v = br[i];
-    for (j = i; j > 0 && br[j - 1] > v; --j) {
-      br[j] = br[j - 1];
-    }
-    br[j] = v;
-  }
+  shli_sort_breaks(br, nb);
   for (p = 0; p + 1 < nb; ++p) {
     double g0 = br[p];
     double g1 = br[p + 1];
@@ -10032,13 +10040,7 @@ static void shli_tab_half(int n, const shli_tabsrc *src, const double wo[3], int
     top = tmax - 0.25 * (tmax - top);
     br[nb++] = top;
   }
-  for (i = 1; i < nb; ++i) { /* insertion sort */
-    double v = br[i];
-    for (j = i; j > 0 && br[j - 1] > v; --j) {
-      br[j] = br[j - 1];
-    }
-    br[j] = v;
-  }
+  shli_sort_breaks(br, nb);
   for (p = 0; p + 1 < nb; ++p) {
     double g0 = br[p];
     double g1 = br[p + 1];
