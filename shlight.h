@@ -178,8 +178,7 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
 #ifdef SHLIGHT_REFERENCE_FORMS
 /* shl_sh_eval_grad_spherical: the paper's form ([GRAD] sections 3-4, corrections E1-E3 of
    docs/derivations.md fixed): Y_i(d / |d|), dY_i / dtheta and dY_i / dphi, by Sloan's recurrence
-   for X
-   and the normalised T recurrence Z_l = alpha (cos Z_{l-1} - sin X_{l-1}) - beta Z_{l-2}.
+   for X and the normalised T recurrence Z_l = alpha (cos Z_{l-1} - sin X_{l-1}) - beta Z_{l-2}.
    Any finite d != 0; zero / NaN / Inf d: as (0,0,1). At an exact pole phi is taken as 0.
    Kept as the comparison point of shl_sh_eval_grad in tests and bench. */
 SHLIGHT_INLINE void shl_sh_eval_grad_spherical(int n, const float d[3], float *out_y,
@@ -204,10 +203,9 @@ SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const fl
 SHLIGHT_INLINE void shl_zh_cap(int n, float r, float d, float *out_zh);
 
 /* shl_zh_cap_derivative: derivative of shl_zh_cap with respect to the half-angle a,
-   out_dzh[l] = dL_l / da = sqrt(pi (2l+1)) P_l(alpha) s (docs/derivations.md section 2: the
-   paper's eq. 16
-   is O'_l = -(2l+1) P_l, no division by alpha^2 - 1). Chain with da/dd = -s / (d alpha), or use
-   shl_sphere_light_grad, which does it for the full SH. Same domain as shl_zh_cap; d <= r: the
+   out_dzh[l] = dL_l / da = sqrt(pi (2l+1)) P_l(alpha) s (docs/derivations.md section 2: the paper's
+   eq. 16 is O'_l = -(2l+1) P_l, no division by alpha^2 - 1). Chain with da/dd = -s / (d alpha), or
+   use shl_sphere_light_grad, which does it for the full SH. Same domain as shl_zh_cap; d <= r: the
    value at a = pi/2 (s = 1, alpha = 0). out_dzh: n floats. Cost: O(n), one sqrt per band. */
 SHLIGHT_INLINE void shl_zh_cap_derivative(int n, float r, float d, float *out_dzh);
 
@@ -216,8 +214,7 @@ SHLIGHT_INLINE void shl_zh_cap_derivative(int n, float r, float d, float *out_dz
    write it, all in float: alpha = sqrt(1 - s^2) (= cos(asin(s))), L_0 = sqrt(pi)(1 - alpha),
    L_l = sqrt(pi / (2l+1)) (P_{l-1}(alpha) - P_{l+1}(alpha)). Comparison point for tests and
    bench only (correction E4 (docs/derivations.md section 12)): relative error 1.4e-4 at s = 1e-2,
-   4.6e-2
-   at s = 1e-3, and every L_l is 0 for s < 2.4e-4. Use shl_zh_cap. Same domain and degenerate
+   4.6e-2 at s = 1e-3, and every L_l is 0 for s < 2.4e-4. Use shl_zh_cap. Same domain and degenerate
    results as shl_zh_cap. out_zh: n floats. Cost: O(n). */
 SHLIGHT_INLINE void shl_zh_cap_printed(int n, float r, float d, float *out_zh);
 #endif
@@ -292,9 +289,8 @@ SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c
    centroid with r_s = sqrt(area / pi), times |cos gamma|, gamma the angle between the
    triangle's normal and the direction from x to the centroid. A model, not the exact
    projection: its error is set by distance / sqrt(area) (docs/derivations.md section 4: L_0 within
-   1e-3 at
-   20, 3e-5 at 100 for well-shaped triangles; slivers are worse). x closer to the centroid than
-   r_s: the hemisphere (as shl_sphere_light) times |cos gamma|; x == centroid: axis +z.
+   1e-3 at 20, 3e-5 at 100 for well-shaped triangles; slivers are worse). x closer to the centroid
+   than r_s: the hemisphere (as shl_sphere_light) times |cos gamma|; x == centroid: axis +z.
    Zero-area triangle, NaN or infinite input: zeros. out_sh: n * n floats. Cost: one
    shl_sphere_light plus a cross product. */
 SHLIGHT_INLINE void shl_triangle_light(int n, const float x[3], const float p0[3],
@@ -314,9 +310,8 @@ SHLIGHT_INLINE void shl_triangle_light_grad(int n, const float x[3], const float
 /* shl_triangle_solid_angle: signed solid angle of the triangle (p0, p1, p2) seen from x, by
    van Oosterom-Strackee in the edge form with atan2 (docs/derivations.md section 4, correction E6
    (docs/derivations.md section 12)): Omega = 2 atan2(N, D), R_i = p_i - x, N = R_0 . ((p1 - p0) x
-   (p2 -
-   p0)), D = |R0||R1||R2| + (R0.R1)|R2| + (R0.R2)|R1| + (R1.R2)|R0|, in shli_real. Positive when x
-   is behind the triangle, i.e. on the side opposite to n = (p1 - p0) x (p2 - p0) (p0, p1, p2
+   (p2 - p0)), D = |R0||R1||R2| + (R0.R1)|R2| + (R0.R2)|R1| + (R1.R2)|R0|, in shli_real. Positive
+   when x is behind the triangle, i.e. on the side opposite to n = (p1 - p0) x (p2 - p0) (p0, p1, p2
    clockwise as seen from x); |Omega| for a two-sided light. Range [-2 pi, 2 pi]; Omega > pi (D < 0)
    for points close to the triangle. Accuracy (float inputs): relative 1e-7 at distance 1e4 (no
    unit-vector cancellation: the printed form loses 6e-2 there). Degenerate: zero-area triangle 0; x
@@ -434,10 +429,10 @@ SHLIGHT_API shl_result shl_grid_sample(const shl_grid *g, const float *sh, const
    of the O(1) fits SHLIGHT_EDGE_LORENTZ / _LORENTZ_PEARSON / _ELLIPSOID (AUTO, QUADRATURE,
    FAST and any unknown method id mean EXACT here). The arc is split at +-pi/2 and reduced with I(p
    + pi) = (-1)^n I(p) (docs/derivations.md section 7.2); orders n <= 2 and c < 1.0e-3 always take
-   the
-   exact path (closed forms; the fits are 0/0 there). Degenerate: c clamped to [0, 1], Phi to [0,
-   pi]; NaN input -> 0; n > 1.0e6 clamped. Accuracy: EXACT matches long double quadrature to 1.0e-12
-   relative to F(-pi/2, pi/2) in C (double inside); the fits' errors are in docs/area-lights.md. */
+   the exact path (closed forms; the fits are 0/0 there). Degenerate: c clamped to [0, 1], Phi to
+   [0, pi]; NaN input -> 0; n > 1.0e6 clamped. Accuracy: EXACT matches long double quadrature to
+   1.0e-12 relative to F(-pi/2, pi/2) in C (double inside); the fits' errors are in
+   docs/area-lights.md. */
 SHLIGHT_INLINE float shl_edge_integral(float phi, float c, float delta, float exponent,
                                        shl_edge_method method);
 
@@ -601,9 +596,9 @@ SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nr
    below the horizon, a polygon through the shading point). Result >= 0. Accuracy against long
    double cubature (tests/ref/arearef.h) on bench_ggx's sampler (bench/bench_beckmann.c,
    docs/area-lights.md): median relative error 3e-6 to 1e-4 at roughness 0.05 to 1, p95 below 0.7 %,
-   max error / albedo
-   <= 4.9e-2 (grazing views, lights straddling the horizon; up to 6.7e-2 in test_microfacet's
-   grazing set). Cost: 33k x86 instructions per quad (shl_polygon_beckmann_subedges k = 8: ~220k).
+   max error / albedo <= 4.9e-2 (grazing views, lights straddling the horizon; up to 6.7e-2 in
+   test_microfacet's grazing set). Cost: 33k x86 instructions per quad
+   (shl_polygon_beckmann_subedges k = 8: ~220k).
  */
 SHLIGHT_INLINE float shl_polygon_beckmann(const float (*v)[3], int nv, const float nrm[3],
                                           const float view[3], float alpha);
@@ -691,11 +686,10 @@ SHLIGHT_INLINE void shl_zh_cosine_power(int n, float exponent, float *out_zh);
 
 /* shl_zh_lambert: ZH of the Lambert lobe max(0, cos t) / pi (k_d = 1; the BRDF times the
    cosine) about the normal: out_zh[l] = K_l Lambda_l(1) = (1/pi) K_l A_l with the
-   Ramamoorthi-Hanrahan A_l (correction E7 (docs/derivations.md section 12): [SSF] even-l formula
-   is off by
-   2, 16, 192, ...): 0.2820948, 0.3257350, 0.1576958, 0, -0.0352618, 0, 0.0158923, ... Multiply by
-   pi for the clamped cosine (irradiance). Accuracy: one float rounding. out_zh: n floats. Cost:
-   O(n). */
+   Ramamoorthi-Hanrahan A_l (correction E7 (docs/derivations.md section 12): [SSF] even-l formula is
+   off by 2, 16, 192, ...): 0.2820948, 0.3257350, 0.1576958, 0, -0.0352618, 0, 0.0158923, ...
+   Multiply by pi for the clamped cosine (irradiance). Accuracy: one float rounding. out_zh: n
+   floats. Cost: O(n). */
 SHLIGHT_INLINE void shl_zh_lambert(int n, float *out_zh);
 
 /* shl_zh_blinn_phong: ZH of the normalised Blinn-Phong NDF times the cosine, D(h) (n . h) with
@@ -757,9 +751,7 @@ SHLIGHT_INLINE float shl_zh_irradiance_quadratic(const float *zh3, float z);
 
 /* shl_zh_irradiance: the same for n bands, E(z) = sum_l A_l K_l L_l P_l(z), A_l = pi
    Lambda_l(1) (docs/derivations.md section 6): the exact irradiance of the band-limited radiance
-   (its
-   bands
-   >= n are zero, so the clamped cosine's are not needed). zh: n floats; z as
+   (its bands >= n are zero, so the clamped cosine's are not needed). zh: n floats; z as
    shl_zh_irradiance_quadratic. n < 1: 0. Cost: O(n). */
 SHLIGHT_INLINE float shl_zh_irradiance(int n, const float *zh, float z);
 
@@ -2424,8 +2416,7 @@ SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const fl
 /* >>zonal -----------------------------------------------------------------------------------
    Zonal harmonics (ZH) of a uniform spherical cap and the ZH -> SH rotation ([GRAD] eq. 9-11,
    14-16 with correction E4 applied; docs/derivations.md sections 2 and 12). A sphere of radius r
-   seen
-   from distance d covers the cap of half-angle a, s = sin a = min(r / d, 1), alpha = cos a.
+   seen from distance d covers the cap of half-angle a, s = sin a = min(r / d, 1), alpha = cos a.
    The unit-radiance cap about +z projects onto band l as
      L_0 = sqrt(pi) (1 - alpha) = sqrt(pi) s^2 / (1 + alpha)
      L_l = sqrt(pi / (2l+1)) (P_{l-1}(alpha) - P_{l+1}(alpha))
@@ -3244,8 +3235,7 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
    triangle's area (r_s = sqrt(|e1 x e2| / (2 pi))), weighted by |cos gamma|, cos gamma the
    cosine between the triangle's normal and w (two-sided). This is the paper's far-field
    model: exact in L_0 only as d / sqrt(area) -> inf (docs/derivations.md section 4 table). The
-   exact solid
-   angle is shl_triangle_solid_angle. */
+   exact solid angle is shl_triangle_solid_angle. */
 
 /* @generated light_idx: defined in >>generated at the end of the file */
 SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg, const float *ka,
@@ -3810,8 +3800,7 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
    - Hermite: the tensor-product cubic Hermite interpolant with the grid's corner values and
      gradients and mixed derivatives estimated inside the cell from the gradients (C0 across
      cells, exact on quadratics, error O(h^3); formulas in docs/derivations.md section 10), one
-     linear
-     combination of the 32 corner data (32 FMA per coefficient). */
+     linear combination of the 32 corner data (32 FMA per coefficient). */
 
 SHLIGHT_INLINE void shl_grid_trilinear(int n, const float *c8, const float f[3], float *out_sh) {
   float x1 = f[0];
@@ -3979,11 +3968,9 @@ SHLIGHT_INLINE void shl_grid_hermite(int n, const float *c8, const float (*g8)[3
 
 /* >>edge ------------------------------------------------------------------------------------
    Area lights without tables ([AREA], docs/derivations.md section 7): axial moments of polygons,
-   the
-   moment M^e(P, r) = integral over the solid angle of P, clipped to the hemisphere u.r >= 0, of
+   the moment M^e(P, r) = integral over the solid angle of P, clipped to the hemisphere u.r >= 0, of
    (u.r)^e. Two exact identities carry everything here (docs/derivations.md section 7.1 and this
-   header's
-   derivation in docs/area-lights.md):
+   header's derivation in docs/area-lights.md):
    - Arvo (integer e): (e+1) M = [e even] Omega + sum_i w_i F(Phi_i, c_i, delta_i, e-1), with
      the edge integral F of [AREA] eq. 3 (corrections E10, E11 applied), F's exact O(e) recurrence
      or the paper's O(1) peak fits (Lorentzian, Lorentzian-Pearson, ellipsoid; corrections E12-E17).
@@ -4199,11 +4186,10 @@ SHLIGHT_INLINE shli_real shli_edge_exact(shli_real pa, shli_real pb, shli_real c
 
 /* The paper's O(1) fits of F over [pa, pb] inside [-pi/2, pi/2], nf >= 3, c in (1.0e-3, 1]:
    peak I_max = I(0), floor I_min = I(pi/2), half width x_w of eq. 7 (correction E12
-   (docs/derivations.md
-   section 12): level (I_max + I_min) / 2), the fit passing through (x_w, I(x_w)); Lorentzian with
-   the atan2 form of eq. 12 (E13); Lorentzian-Pearson with b = a / 2, the corrected antiderivative
-   (E14) and the blend factor clamped to [0, 1] (E17); single ellipsoid eq. 15-16, 18 (its
-   degenerate a_E = 1 falls back to the Lorentzian). */
+   (docs/derivations.md section 12): level (I_max + I_min) / 2), the fit passing through (x_w,
+   I(x_w)); Lorentzian with the atan2 form of eq. 12 (E13); Lorentzian-Pearson with b = a / 2, the
+   corrected antiderivative (E14) and the blend factor clamped to [0, 1] (E17); single ellipsoid eq.
+   15-16, 18 (its degenerate a_E = 1 falls back to the Lorentzian). */
 SHLIGHT_INLINE shli_real shli_edge_fit(shli_real pa, shli_real pb, shli_real c, int nf,
                                        int method) {
   int odd = nf - 2 * (nf / 2);
@@ -5685,8 +5671,8 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    k = D (h.n) / (4 h.v) (so that k dl = D (h.n) dh), g the gradient of w at h* (central
    differences), and the remainder by cubature over P: a fan from the direction of the vertex
    centroid, triangles wider than 53 deg split 1 -> 4 at their edge midpoints, a 7-point
-   degree-5 rule on each piece (the remainder is second order where D is narrow and smooth where
-   D is wide).
+   degree-5 rule on each piece (the remainder is second order where D is narrow and smooth where D
+   is wide).
    A and M1 by Stokes along the boundary of H(P) (the images of P's great arcs under
    l -> l + v are conics), each edge integral by a graded rule t = t0 + wd sinh(s) about its
    peak with 5 Gauss-Legendre nodes per side; the formulas and the guard on the Newton step
@@ -7214,8 +7200,7 @@ SHLIGHT_CPU_INLINE float shli_fan_beckmann(const float (*v)[3], int nv, const fl
    ZH of circularly symmetric BRDF lobes, convolution with SH / ZH radiance, irradiance,
    windowing and band selection (docs/derivations.md section 5-6; [SSF] sec. 3.3 with correction E7
    (docs/derivations.md section 12); [HVL] sec. 4.2, 6.3, Appendix B). A lobe f(w . c) about its
-   axis c
-   (the normal for Lambert and the microfacet lobes, the mirror direction for Phong) has ZH
+   axis c (the normal for Lambert and the microfacet lobes, the mirror direction for Phong) has ZH
    coefficients f_l = 2 pi int_0^pi f(cos t) Y_l^0(t) sin t dt; its SH about c are sqrt(4 pi /
    (2l+1)) f_l Y_l^m(c) (shl_zh_rotate). Cosine powers (Lambert, Phong, Blinn-Phong) use the
    factorial-free recurrence of docs/derivations.md sec. 5: Lambda_l(e) = (e+1) int_0^1 x^e P_l(x)
@@ -7721,10 +7706,9 @@ SHLIGHT_INLINE int shl_zh_bands_for(int n, const float *zh, float target) {
 
 /* >>hvl -------------------------------------------------------------------------------------
    Harmonics Virtual Lights ([HVL] sec. 5; docs/derivations.md section 6, corrections E8, E9). An
-   HVL j is
-   a sphere of radius r at y with normal n_j and power Phi_j, whose emission towards the shading
-   point x is the reconstruction of an SH emission function F' (the BRDF projected without the
-   cosine, in world axes). With w_j = (y - x) / |y - x| and n_x the normal at x:
+   HVL j is a sphere of radius r at y with normal n_j and power Phi_j, whose emission towards the
+   shading point x is the reconstruction of an SH emission function F' (the BRDF projected without
+   the cosine, in world axes). With w_j = (y - x) / |y - x| and n_x the normal at x:
      eq. 20  L_j = Phi_j (F' . Y(-w_j)) G_j(-w_j)                      (shl_hvl_radiance)
      eq. 21  G_j = max(0, n_j . -w_j) H(n_x, w_j) / (pi r^2)            (shl_hvl_geometric)
      eq. 19  L_o = L_j (L . F), L = the SH of the unit cap that the sphere subtends at x
@@ -7732,11 +7716,11 @@ SHLIGHT_INLINE int shl_zh_bands_for(int n, const float *zh, float target) {
              about its own axis, shl_zh_dot_zh (shl_hvl_contribution_zh, O(n)).
    H is the fraction of the cap (half-angle a, sin a = s = min(r/d, 1), d = |y - x|) above the
    horizon of n_x, with beta the angle between n_x and w_j: exact (two-cap intersection,
-   written without cancellation for small caps, docs/derivations.md section 6; shl_hvl_horizon).
-   The cheap
-   variant is [HVL] smoothstep (eq. 22) with the clamp corrected (correction E8 (docs/derivations.md
-   section 12): lower bound pi/2 - a, S clamped to [0, 1]): max abs error 0.039-0.089 against the
-   exact H (shl_hvl_horizon_smoothstep). The angles use the own atan2 of >>light. */
+   written without cancellation for small caps, docs/derivations.md section 6; shl_hvl_horizon). The
+   cheap variant is [HVL] smoothstep (eq. 22) with the clamp corrected (correction E8
+   (docs/derivations.md section 12): lower bound pi/2 - a, S clamped to [0, 1]): max abs error
+   0.039-0.089 against the exact H (shl_hvl_horizon_smoothstep). The angles use the own atan2
+   of >>light. */
 
 /* exact H for the cosine c (in [-1, 1]) between the normal and the axis */
 SHLIGHT_INLINE float shli_hvl_h(shli_real c, float r, float d) {
