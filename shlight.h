@@ -367,9 +367,6 @@ typedef struct shl_grid {
   float cull;
 } shl_grid;
 
-#define SHLIGHT_GRID_FORWARD 0
-
-#define SHLIGHT_GRID_TRILINEAR 0
 
 /* shl_result_string: a constant string naming r and what it means ("SHLIGHT_EINVAL: an
    invalid argument"); any value that is not a shl_result gives "unknown shl_result".
@@ -407,7 +404,7 @@ SHLIGHT_INLINE void shl_grid_hermite(int n, const float *c8, const float (*g8)[3
    (vertices) x (lights reaching them) shl_sphere_light_grad calls. */
 SHLIGHT_API shl_result shl_grid_build(const shl_grid *g, const float (*centres)[3],
                                       const float *radii, const float *intensity, int nlights,
-                                      int sum_order, int threads, float *out_sh,
+                                      shl_grid_order sum_order, int threads, float *out_sh,
                                       float (*out_grad)[3]);
 
 /* shl_grid_sample: reconstruction at p from a grid built by shl_grid_build: clamps p to the
@@ -9421,7 +9418,7 @@ static int shli_grid_valid(const shl_grid *g) {
 
 SHLIGHT_API shl_result shl_grid_build(const shl_grid *g, const float (*centres)[3],
                                       const float *radii, const float *intensity, int nlights,
-                                      int sum_order, int threads, float *out_sh,
+                                      shl_grid_order sum_order, int threads, float *out_sh,
                                       float (*out_grad)[3]) {
   shli_grid_job jb[2];
   double *cut2;
