@@ -367,7 +367,6 @@ typedef struct shl_grid {
   float cull;
 } shl_grid;
 
-
 /* shl_result_string: a constant string naming r and what it means ("SHLIGHT_EINVAL: an
    invalid argument"); any value that is not a shl_result gives "unknown shl_result".
    Never NULL. Cost: a switch. */
