@@ -1262,18 +1262,24 @@ SHLIGHT_INLINE int shli_bands(int n) {
   return n;
 }
 
+/* The tables of >>generated are read through accessors (a C++ static const array cannot be
+   declared before its definition): SHLI_TAB_DECL(T, name, N) declares shli_tab_name(), which
+   returns a pointer to the whole T[N] table (after inlining, the same array access), and the
+   sections read the table as SHLI_NAME through a #define; >>generated defines the accessor
+   after the table (SHLI_TAB_FN). */
+#define SHLI_TAB_FN(name) SHLIGHT_CPU_INLINE const shli_tab_##name##_t *shli_tab_##name(void)
+#define SHLI_TAB_DECL(T, name, N)                                                                  \
+  typedef T shli_tab_##name##_t[N];                                                                \
+  SHLI_TAB_FN(name)
+
 /* @generated sh_tab: defined in >>generated at the end of the file */
-typedef shli_real shli_tab_sh_rsq_t[128];
-SHLIGHT_CPU_INLINE const shli_tab_sh_rsq_t *shli_tab_sh_rsq(void);
+SHLI_TAB_DECL(shli_real, sh_rsq, 128);
 #define SHLI_SH_RSQ (*shli_tab_sh_rsq())
-typedef float shli_tab_sh_laneq_t[2032];
-SHLIGHT_CPU_INLINE const shli_tab_sh_laneq_t *shli_tab_sh_laneq(void);
+SHLI_TAB_DECL(float, sh_laneq, 2032);
 #define SHLI_SH_LANEQ (*shli_tab_sh_laneq())
-typedef shli_real shli_tab_sh_s12_t[128];
-SHLIGHT_CPU_INLINE const shli_tab_sh_s12_t *shli_tab_sh_s12(void);
+SHLI_TAB_DECL(shli_real, sh_s12, 128);
 #define SHLI_SH_S12 (*shli_tab_sh_s12())
-typedef float shli_tab_sh_diag_t[64];
-SHLIGHT_CPU_INLINE const shli_tab_sh_diag_t *shli_tab_sh_diag(void);
+SHLI_TAB_DECL(float, sh_diag, 64);
 #define SHLI_SH_DIAG (*shli_tab_sh_diag())
 
 /* The Reinsch constants alpha, g, c of step l in column m (0 <= m < l < 64) of the run-time
@@ -1372,26 +1378,20 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
 #include <immintrin.h>
 /* @generated lanes: defined in >>generated at the end of the file */
 #if SHLIGHT_SIMD_EVAL
-typedef float shli_tab_sh_lanek_t[190];
-SHLIGHT_CPU_INLINE const shli_tab_sh_lanek_t *shli_tab_sh_lanek(void);
+SHLI_TAB_DECL(float, sh_lanek, 190);
 #define SHLI_SH_LANEK (*shli_tab_sh_lanek())
-typedef int shli_tab_sh_laner_t[31];
-SHLIGHT_CPU_INLINE const shli_tab_sh_laner_t *shli_tab_sh_laner(void);
+SHLI_TAB_DECL(int, sh_laner, 31);
 #define SHLI_SH_LANER (*shli_tab_sh_laner())
-typedef float shli_tab_sh_lanes_s_t[720];
-SHLIGHT_CPU_INLINE const shli_tab_sh_lanes_s_t *shli_tab_sh_lanes_s(void);
+SHLI_TAB_DECL(float, sh_lanes_s, 720);
 #define SHLI_SH_LANES_S (*shli_tab_sh_lanes_s())
 #endif
 /* @generated plane: defined in >>generated at the end of the file */
 #if SHLIGHT_SIMD_EVAL
-typedef float shli_tab_sh_planes_t[120];
-SHLIGHT_CPU_INLINE const shli_tab_sh_planes_t *shli_tab_sh_planes(void);
+SHLI_TAB_DECL(float, sh_planes, 120);
 #define SHLI_SH_PLANES (*shli_tab_sh_planes())
-typedef int shli_tab_sh_ptap_t[40];
-SHLIGHT_CPU_INLINE const shli_tab_sh_ptap_t *shli_tab_sh_ptap(void);
+SHLI_TAB_DECL(int, sh_ptap, 40);
 #define SHLI_SH_PTAP (*shli_tab_sh_ptap())
-typedef int shli_tab_sh_podd_t[5];
-SHLIGHT_CPU_INLINE const shli_tab_sh_podd_t *shli_tab_sh_podd(void);
+SHLI_TAB_DECL(int, sh_podd, 5);
 #define SHLI_SH_PODD (*shli_tab_sh_podd())
 #endif
 #ifdef __AVX512VL__
@@ -1712,26 +1712,19 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, fl
 #define SHLI_GRADV_ALIGN
 #endif
 /* @generated gradv: defined in >>generated at the end of the file */
-typedef short shli_tab_gradv_ch0_t[17];
-SHLIGHT_CPU_INLINE const shli_tab_gradv_ch0_t *shli_tab_gradv_ch0(void);
+SHLI_TAB_DECL(short, gradv_ch0, 17);
 #define SHLI_GRADV_CH0 (*shli_tab_gradv_ch0())
-typedef float shli_tab_gradv_lf_t[16];
-SHLIGHT_CPU_INLINE const shli_tab_gradv_lf_t *shli_tab_gradv_lf(void);
+SHLI_TAB_DECL(float, gradv_lf, 16);
 #define SHLI_GRADV_LF (*shli_tab_gradv_lf())
-typedef unsigned short shli_tab_gradv_lastm_t[16];
-SHLIGHT_CPU_INLINE const shli_tab_gradv_lastm_t *shli_tab_gradv_lastm(void);
+SHLI_TAB_DECL(unsigned short, gradv_lastm, 16);
 #define SHLI_GRADV_LASTM (*shli_tab_gradv_lastm())
-typedef unsigned short shli_tab_gradv_ym_t[32];
-SHLIGHT_CPU_INLINE const shli_tab_gradv_ym_t *shli_tab_gradv_ym(void);
+SHLI_TAB_DECL(unsigned short, gradv_ym, 32);
 #define SHLI_GRADV_YM (*shli_tab_gradv_ym())
-typedef int shli_tab_gradv_iy_t[96];
-SHLIGHT_CPU_INLINE const shli_tab_gradv_iy_t *shli_tab_gradv_iy(void);
+SHLI_TAB_DECL(int, gradv_iy, 96);
 #define SHLI_GRADV_IY (*shli_tab_gradv_iy())
-typedef int shli_tab_gradv_tap_t[192];
-SHLIGHT_CPU_INLINE const shli_tab_gradv_tap_t *shli_tab_gradv_tap(void);
+SHLI_TAB_DECL(int, gradv_tap, 192);
 #define SHLI_GRADV_TAP (*shli_tab_gradv_tap())
-typedef float shli_tab_gradv_coef_t[1760];
-SHLIGHT_CPU_INLINE const shli_tab_gradv_coef_t *shli_tab_gradv_coef(void);
+SHLI_TAB_DECL(float, gradv_coef, 1760);
 #define SHLI_GRADV_COEF (*shli_tab_gradv_coef())
 #define SHLI_GRADV_MASK(t) ((__mmask16) * (t))
 
@@ -2428,8 +2421,7 @@ SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const fl
    sqrt(pi(2l+1)): the Legendre recurrence and the ZH normalisations without divisions
    (tools/gen_basis.py; the GLSL twin holds the first 16 bands). */
 /* @generated zh_tab: defined in >>generated at the end of the file */
-typedef shli_real shli_tab_zh_tab_t[320];
-SHLIGHT_CPU_INLINE const shli_tab_zh_tab_t *shli_tab_zh_tab(void);
+SHLI_TAB_DECL(shli_real, zh_tab, 320);
 #define SHLI_ZH_TAB (*shli_tab_zh_tab())
 
 /* Geometry of a sphere seen from a point, in shli_real: (dx, dy, dz) = c - x, r = radius.
@@ -3239,8 +3231,7 @@ SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg
                                          float (*io_grad)[3]);
 SHLIGHT_INLINE void shli_sh_zero_grad(int n, float *out_sh, float (*out_grad)[3]);
 #if SHLIGHT_SIMD_EVAL
-typedef int shli_tab_light_band_t[256];
-SHLIGHT_CPU_INLINE const shli_tab_light_band_t *shli_tab_light_band(void);
+SHLI_TAB_DECL(int, light_band, 256);
 #define SHLI_LIGHT_BAND (*shli_tab_light_band())
 #endif
 
@@ -8634,11 +8625,9 @@ typedef float SHLI_V;
 #endif
 
 /* @generated batch: defined in >>generated at the end of the file */
-typedef float shli_tab_sh_brs_t[376];
-SHLIGHT_CPU_INLINE const shli_tab_sh_brs_t *shli_tab_sh_brs(void);
+SHLI_TAB_DECL(float, sh_brs, 376);
 #define SHLI_SH_BRS (*shli_tab_sh_brs())
-typedef float shli_tab_sh_bpoly_t[63];
-SHLIGHT_CPU_INLINE const shli_tab_sh_bpoly_t *shli_tab_sh_bpoly(void);
+SHLI_TAB_DECL(float, sh_bpoly, 63);
 #define SHLI_SH_BPOLY (*shli_tab_sh_bpoly())
 
 /* The batch kernels of n <= SHLIGHT_UNROLLED_BANDS, nv = 1 or 2 vectors of directions a call
@@ -9299,7 +9288,7 @@ typedef struct shli_grid_job {
   int nlights;
   float *out_sh;
   float (*out_grad)[3];
-  int order;
+  shl_grid_order order;
   int z0; /* vertex slab iz in [z0, z1) */
   int z1;
 } shli_grid_job;
@@ -10671,10 +10660,8 @@ SHLIGHT_API shl_result shl_merl_read(const void *buf, size_t len, float *storage
 
 /* >>generated ------------------------------------------------------------------------------
    Written by tools/gen_basis.py (edit the generator, not these lines; `--check` in CI): the
-   tables and unrolled kernels whose prototypes and table accessors the sections above declare
-   at their `@generated NAME` lines. Code above reaches a table through an inline accessor
-   that returns a pointer to the whole array (a C++ static const array cannot be declared
-   before its definition); after inlining it is the same array access. */
+   tables and unrolled kernels whose prototypes and table accessors (SHLI_TAB_DECL) the
+   sections above declare at their `@generated NAME` lines. */
 #ifndef SHLIGHT_GENERATED_H
 #define SHLIGHT_GENERATED_H
 
@@ -11091,16 +11078,16 @@ static const float SHLI_SH_DIAG[64] = {
 };
 /* clang-format on */
 /* @generated end sh_tab */
-SHLIGHT_CPU_INLINE const shli_tab_sh_rsq_t *shli_tab_sh_rsq(void) {
+SHLI_TAB_FN(sh_rsq) {
   return &SHLI_SH_RSQ;
 }
-SHLIGHT_CPU_INLINE const shli_tab_sh_laneq_t *shli_tab_sh_laneq(void) {
+SHLI_TAB_FN(sh_laneq) {
   return &SHLI_SH_LANEQ;
 }
-SHLIGHT_CPU_INLINE const shli_tab_sh_s12_t *shli_tab_sh_s12(void) {
+SHLI_TAB_FN(sh_s12) {
   return &SHLI_SH_S12;
 }
-SHLIGHT_CPU_INLINE const shli_tab_sh_diag_t *shli_tab_sh_diag(void) {
+SHLI_TAB_FN(sh_diag) {
   return &SHLI_SH_DIAG;
 }
 
@@ -12634,13 +12621,13 @@ static const float SHLI_SH_LANES_S[720] = {
 #endif
 /* @generated end lanes */
 #if SHLIGHT_SIMD_EVAL
-SHLIGHT_CPU_INLINE const shli_tab_sh_lanek_t *shli_tab_sh_lanek(void) {
+SHLI_TAB_FN(sh_lanek) {
   return &SHLI_SH_LANEK;
 }
-SHLIGHT_CPU_INLINE const shli_tab_sh_laner_t *shli_tab_sh_laner(void) {
+SHLI_TAB_FN(sh_laner) {
   return &SHLI_SH_LANER;
 }
-SHLIGHT_CPU_INLINE const shli_tab_sh_lanes_s_t *shli_tab_sh_lanes_s(void) {
+SHLI_TAB_FN(sh_lanes_s) {
   return &SHLI_SH_LANES_S;
 }
 #endif
@@ -12678,13 +12665,13 @@ static const int SHLI_SH_PODD[5] = {
 #endif
 /* @generated end plane */
 #if SHLIGHT_SIMD_EVAL
-SHLIGHT_CPU_INLINE const shli_tab_sh_planes_t *shli_tab_sh_planes(void) {
+SHLI_TAB_FN(sh_planes) {
   return &SHLI_SH_PLANES;
 }
-SHLIGHT_CPU_INLINE const shli_tab_sh_ptap_t *shli_tab_sh_ptap(void) {
+SHLI_TAB_FN(sh_ptap) {
   return &SHLI_SH_PTAP;
 }
-SHLIGHT_CPU_INLINE const shli_tab_sh_podd_t *shli_tab_sh_podd(void) {
+SHLI_TAB_FN(sh_podd) {
   return &SHLI_SH_PODD;
 }
 #endif
@@ -12908,25 +12895,25 @@ SHLI_GRADV_ALIGN static const float SHLI_GRADV_COEF[SHLI_GRADV_CHUNKS * 32] = {
 };
 /* clang-format on */
 /* @generated end gradv */
-SHLIGHT_CPU_INLINE const shli_tab_gradv_ch0_t *shli_tab_gradv_ch0(void) {
+SHLI_TAB_FN(gradv_ch0) {
   return &SHLI_GRADV_CH0;
 }
-SHLIGHT_CPU_INLINE const shli_tab_gradv_lf_t *shli_tab_gradv_lf(void) {
+SHLI_TAB_FN(gradv_lf) {
   return &SHLI_GRADV_LF;
 }
-SHLIGHT_CPU_INLINE const shli_tab_gradv_lastm_t *shli_tab_gradv_lastm(void) {
+SHLI_TAB_FN(gradv_lastm) {
   return &SHLI_GRADV_LASTM;
 }
-SHLIGHT_CPU_INLINE const shli_tab_gradv_ym_t *shli_tab_gradv_ym(void) {
+SHLI_TAB_FN(gradv_ym) {
   return &SHLI_GRADV_YM;
 }
-SHLIGHT_CPU_INLINE const shli_tab_gradv_iy_t *shli_tab_gradv_iy(void) {
+SHLI_TAB_FN(gradv_iy) {
   return &SHLI_GRADV_IY;
 }
-SHLIGHT_CPU_INLINE const shli_tab_gradv_tap_t *shli_tab_gradv_tap(void) {
+SHLI_TAB_FN(gradv_tap) {
   return &SHLI_GRADV_TAP;
 }
-SHLIGHT_CPU_INLINE const shli_tab_gradv_coef_t *shli_tab_gradv_coef(void) {
+SHLI_TAB_FN(gradv_coef) {
   return &SHLI_GRADV_COEF;
 }
 #endif
@@ -14251,7 +14238,7 @@ static const shli_real SHLI_ZH_TAB[320] = {
 };
 /* clang-format on */
 /* @generated end zh_tab */
-SHLIGHT_CPU_INLINE const shli_tab_zh_tab_t *shli_tab_zh_tab(void) {
+SHLI_TAB_FN(zh_tab) {
   return &SHLI_ZH_TAB;
 }
 
@@ -14613,7 +14600,7 @@ SHLIGHT_INLINE void shli_sh_zero_grad(int n, float *out_sh, float (*out_grad)[3]
 }
 /* @generated end light_idx */
 #if SHLIGHT_SIMD_EVAL
-SHLIGHT_CPU_INLINE const shli_tab_light_band_t *shli_tab_light_band(void) {
+SHLI_TAB_FN(light_band) {
   return &SHLI_LIGHT_BAND;
 }
 #endif
@@ -14693,10 +14680,10 @@ static const float SHLI_SH_BPOLY[63] = {
 };
 /* clang-format on */
 /* @generated end batch */
-SHLIGHT_CPU_INLINE const shli_tab_sh_brs_t *shli_tab_sh_brs(void) {
+SHLI_TAB_FN(sh_brs) {
   return &SHLI_SH_BRS;
 }
-SHLIGHT_CPU_INLINE const shli_tab_sh_bpoly_t *shli_tab_sh_bpoly(void) {
+SHLI_TAB_FN(sh_bpoly) {
   return &SHLI_SH_BPOLY;
 }
 #endif /* SHLIGHT_IMPLEMENTATION */

@@ -879,7 +879,7 @@ def replace_region(text, name, lines, path):
 
 
 def table_typedefs(text):
-    """the sections reach a table of >>generated through `typedef T shli_tab_NAME_t[N];` (the
+    """the sections reach a table of >>generated through `SHLI_TAB_DECL(T, name, N);` (the
     accessor returns a pointer to the whole array): keep N equal to the table's length"""
     defs = dict(re.findall(r'#define (SHLI_\w+) (\d+)\n', text))
     for ty, name, size in re.findall(r'static const ([\w ]+?) (SHLI_\w+)\[([^\]]+)\] = \{', text):
@@ -887,8 +887,8 @@ def table_typedefs(text):
         if not re.match(r'^[\d *+]+$', expr):
             continue
         n = eval(expr)
-        text = re.sub(r'typedef %s shli_tab_%s_t\[\d+\];' % (re.escape(ty), name[5:].lower()),
-                      'typedef %s shli_tab_%s_t[%d];' % (ty, name[5:].lower(), n), text)
+        text = re.sub(r'SHLI_TAB_DECL\(%s, %s, \d+\);' % (re.escape(ty), name[5:].lower()),
+                      'SHLI_TAB_DECL(%s, %s, %d);' % (ty, name[5:].lower(), n), text)
     return text
 
 
