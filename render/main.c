@@ -30,7 +30,8 @@ static void usage(FILE *f) {
              "  --out DIR           write PNGs to DIR (created; default: none)\n"
              "  --exposure X        PNG exposure (default: per pass, from the reference)\n"
              "  --check             exit 1 when a GL image differs from its CPU twin beyond the\n"
-             "                      pass's tolerance; prints \"N passed, N failed\"\n");
+             "                      pass's tolerance; prints \"N passed, N failed\"\n"
+             "  --timings           print where each pass's wall and CPU time went\n");
 }
 
 static int has(const char *list, const char *item) {
@@ -43,12 +44,28 @@ static int has(const char *list, const char *item) {
   return 0;
 }
 
+/* one --timings line: a pass's wall and process CPU seconds, and their parts */
+static void tm_line(const char *what, rd_tm t0, rd_tm t1, const rd_tm *p0, const rd_tm *p1) {
+  static const char *part[RD_TM_N] = {"gl compile", "gl draws", "gl setup", "gt"};
+  double wall = (t1.wall - t0.wall) * 1e-3, cpu = (t1.cpu - t0.cpu) * 1e-3, rw = wall, rc = cpu;
+  int k;
+  printf("timings: %-9s wall %6.2f s, cpu %6.2f s |", what, wall, cpu);
+  for (k = 0; k < RD_TM_N; k++) {
+    double w = (p1[k].wall - p0[k].wall) * 1e-3, c = (p1[k].cpu - p0[k].cpu) * 1e-3;
+    printf(" %s %.2f/%.2f", part[k], w, c);
+    rw -= w;
+    rc -= c;
+  }
+  printf(" | the rest (cpu path, metrics, png) %.2f/%.2f (wall/cpu s)\n", rw, rc);
+}
+
 int main(int argc, char **argv) {
   const char *scene = "cornell", *passes = "all", *paths = "gl,cpu", *backend = NULL,
              *outdir = NULL, *brdf = NULL;
   int w = 256, h = 192, gt = 1, bands = 0, brdf_bands = 9, reps = 3, check = 0, i, rc = 0, fails,
-      bad = 0;
+      bad = 0, timings = 0;
   float exposure = 0;
+  rd_tm t_run = rd_tm_now();
   shl_merl merl;
   float *merl_data = NULL;
   char merl_path[1024], *merl_mat = NULL;
@@ -64,6 +81,10 @@ int main(int argc, char **argv) {
     }
     if (!strcmp(a, "--check")) {
       check = 1;
+      continue;
+    }
+    if (!strcmp(a, "--timings")) {
+      timings = 1;
       continue;
     }
     if (!v) {
@@ -199,11 +220,19 @@ int main(int argc, char **argv) {
   printf("shlrender: scene %s (%d triangles, %d spheres, %d lights), %dx%d, %d bands, gl: %s\n",
          s.name, s.ntris, s.nspheres, s.nlights, w, h, run.bands,
          run.use_gl ? rd_gl_renderer() : "off");
-  if (has(passes, "preview") && rd_pass_preview(&run)) rc = 4;
-  if ((has(passes, "grid") || has(passes, "all")) && rd_pass_grid(&run)) rc = 4;
-  if ((has(passes, "area") || has(passes, "all")) && rd_pass_area(&run)) rc = 4;
-  if ((has(passes, "hvl") || has(passes, "all")) && rd_pass_hvl(&run)) rc = 4;
-  if ((has(passes, "ssf") || has(passes, "all")) && rd_pass_ssf(&run)) rc = 4;
+  for (i = 0; i < 5; i++) {
+    static const char *names[5] = {"preview", "grid", "area", "hvl", "ssf"};
+    static int (*const fn[5])(rd_run *) = {rd_pass_preview, rd_pass_grid, rd_pass_area, rd_pass_hvl,
+                                           rd_pass_ssf};
+    rd_tm p0[RD_TM_N], p1[RD_TM_N], t0, t1;
+    if (!has(passes, names[i]) && (i == 0 || !has(passes, "all"))) continue;
+    rd_tm_get(p0);
+    t0 = rd_tm_now();
+    if (fn[i](&run)) rc = 4;
+    t1 = rd_tm_now();
+    rd_tm_get(p1);
+    if (timings) tm_line(names[i], t0, t1, p0, p1);
+  }
   fails = rd_report(&run, 1);
   if (check) {
     /* one check per (pass, method) with both a GL and a CPU image; a failed pass is one more */
@@ -216,5 +245,11 @@ int main(int argc, char **argv) {
   rd_scene_free(&s);
   free(merl_data);
   if (run.use_gl) rd_gl_close();
+  if (timings) {
+    rd_tm z[RD_TM_N], p1[RD_TM_N];
+    memset(z, 0, sizeof z);
+    rd_tm_get(p1);
+    tm_line("whole run", t_run, rd_tm_now(), z, p1);
+  }
   return rc;
 }

@@ -1149,6 +1149,7 @@ int rd_pass_area(rd_run *run) {
     /* absolute tolerance of the unit-radiance integrals per light; gt_coarse: 10x looser */
     double tol = run->gt >= 2 ? 1e-7 : 1e-5, tms[2];
     int gi, i0 = nout;
+    rd_tm tm = rd_tm_now();
     for (gi = 0; gi < 2; gi++) {
       rd_image im = rd_image_new(gb->w, gb->h);
       if (!im.rgb) {
@@ -1158,6 +1159,7 @@ int rd_pass_area(rd_run *run) {
       tms[gi] = ar_gt_image(run, gi ? 10.0 * tol : tol, gi ? "area gt coarse" : "area gt", &im);
       ar_add(&outs[nout++], gi ? "gt_coarse" : "gt", gi ? "cpu" : "gt", im, tms[gi], 0, 0.0);
     }
+    rd_tm_add(RD_TM_GT, tm);
     printf("area gt: diffuse part of polygons and spheres in closed form, the rest by adaptive "
            "Gauss-Kronrod cubature, tolerance %.0e per light (%.0f ms); gt_coarse at %.0e (%.0f "
            "ms) vs gt: RMSE/RMS %.2e, max|diff|/peak %.2e\n",

@@ -1296,6 +1296,7 @@ int rd_pass_grid(rd_run *run) {
   if (run->gt) {
     rd_image im = rd_image_new(gb->w, gb->h);
     double ms;
+    rd_tm tm = rd_tm_now();
     if (!im.rgb) {
       rc = -1;
       goto done;
@@ -1366,6 +1367,7 @@ int rd_pass_grid(rd_run *run) {
       }
       (void)emax;
     }
+    rd_tm_add(RD_TM_GT, tm);
   }
   /* the seed-003 claim: each grid scheme against per-pixel SH (same path) */
   {

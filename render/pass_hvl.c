@@ -1250,6 +1250,7 @@ int rd_pass_hvl(rd_run *run) {
     int n1 = env_int("SHLIGHT_HVL_GT", run->gt >= 2 ? 512 : 128, 4, 4096), np1 = 0, np2 = 0;
     float *half = (float *)malloc(nb);
     double t0 = rd_cpu_ms(), t1, p99, mx, rmse;
+    rd_tm tm = rd_tm_now();
     gt = (float *)malloc(nb);
     if (!gt || !half || gt_image(run, &B, &sv, n1, (double)eps, gt, &np1)) {
       free(half);
@@ -1268,6 +1269,7 @@ int rd_pass_hvl(rd_run *run) {
              n1 / 2, n1 / 2, np2, n1, n1, np1, rmse, p99, mx);
     }
     free(half);
+    rd_tm_add(RD_TM_GT, tm);
     {
       rd_image im = rd_image_new(gb->w, gb->h);
       if (im.rgb) {

@@ -679,6 +679,7 @@ int rd_pass_ssf(rd_run *run) {
     rd_image half;
     double t0 = rd_cpu_ms(), t1;
     char label[32];
+    rd_tm tm = rd_tm_now();
     snprintf(label, sizeof label, "ssf gt %d^2", Ngt);
     if (gt_render(run, spot, Ngt, (double)dmin, label, &gt)) goto done;
     t1 = rd_cpu_ms();
@@ -691,6 +692,7 @@ int rd_pass_ssf(rd_run *run) {
              Ngt, Ngt, t1 - t0, Ngt / 2, Ngt / 2, d.rmse, d.psnr);
     }
     rd_image_free(&half);
+    rd_tm_add(RD_TM_GT, tm);
   }
   /* CPU */
   if (run->use_cpu) {

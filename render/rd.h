@@ -197,6 +197,20 @@ void rd_run_free(rd_run *run);
 /* Per-thread CPU time in milliseconds (for the CPU paths' timings). */
 double rd_cpu_ms(void);
 
+/* ---- where the run's time goes (--timings) ---------------------------------------------- */
+/* Wall and process CPU time (every thread, llvmpipe's included) spent in each part of a pass,
+ * summed over the run: GL compile (compile, link and the first draw, where llvmpipe's JIT
+ * runs), GL draws (the timed ones), GL setup (textures, buffers, read-back), ground truth. */
+enum { RD_TM_GL_COMPILE = 0, RD_TM_GL_DRAW = 1, RD_TM_GL_SETUP = 2, RD_TM_GT = 3, RD_TM_N = 4 };
+typedef struct {
+  double wall, cpu; /* ms */
+} rd_tm;
+rd_tm rd_tm_now(void);
+/* adds the time since t0 to part `part`; returns now (to chain parts) */
+rd_tm rd_tm_add(int part, rd_tm t0);
+/* the totals so far (RD_TM_N entries) */
+void rd_tm_get(rd_tm *out);
+
 /* ---- GL passes ------------------------------------------------------------------------- */
 /* A full-screen fragment pass at the G-buffer's resolution. The shader is, in order:
  *   "#version 450"; `defines`; each of `includes` (file names inside shlight_glsl/, e.g.

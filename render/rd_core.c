@@ -28,6 +28,28 @@ double rd_cpu_ms(void) {
   return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
 
+static rd_tm tm_sum[RD_TM_N];
+rd_tm rd_tm_now(void) {
+  struct timespec ts;
+  rd_tm t;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  t.wall = (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  t.cpu = (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+  return t;
+}
+rd_tm rd_tm_add(int part, rd_tm t0) {
+  rd_tm t = rd_tm_now();
+  if (part >= 0 && part < RD_TM_N) {
+    tm_sum[part].wall += t.wall - t0.wall;
+    tm_sum[part].cpu += t.cpu - t0.cpu;
+  }
+  return t;
+}
+void rd_tm_get(rd_tm *out) {
+  memcpy(out, tm_sum, sizeof tm_sum);
+}
+
 /* ---- PNG: 8-bit RGB, zlib stream of stored (uncompressed) deflate blocks ---------------- */
 static uint32_t crc_table[256];
 static void crc_init(void) {
