@@ -467,16 +467,28 @@ static void hv_local(const float x[3], const float nz[3], const float eye[3], fl
 }
 
 /* ---- CPU shading ---------------------------------------------------------------------------- */
-static void shade_cpu(const rd_run *run, const hv_brdf *B, int method, const float *b, int nl,
-                      float eps, float *rgb) {
+typedef struct {
+  const rd_run *run;
+  const hv_brdf *B;
+  int method, nl;
+  const float *b;
+  float eps, *rgb;
+  float fzh[SHLIGHT_MAX_BANDS];
+} cpu_job;
+
+static void shade_rows(void *ctx, long lo, long hi) {
+  const cpu_job *jb = (const cpu_job *)ctx;
+  const rd_run *run = jb->run;
+  const hv_brdf *B = jb->B;
+  const int method = jb->method, nl = jb->nl;
+  const float *b = jb->b, eps = jb->eps, *fzh = jb->fzh;
+  float *rgb = jb->rgb;
   const rd_gbuf *gb = run->gb;
   const rd_scene *s = run->scene;
   int st = method_stride[method], bands = run->bands, px, j, c, nb = B->nb;
-  int npx = gb->w * gb->h;
-  float fzh[SHLIGHT_MAX_BANDS], femit[1];
+  float femit[1];
   femit[0] = 1.1283791670955126f; /* 2 / sqrt(pi): F' . Y = femit[0] Y_0^0 = 1 / pi */
-  shl_zh_lambert(bands, fzh);
-  for (px = 0; px < npx; px++) {
+  for (px = (int)lo; px < (int)hi; px++) {
     const float *x = gb->pos + 3 * px, *nx = gb->nrm + 3 * px, *gx = gb->gnrm + 3 * px;
     int m = gb->mat[px], kind = hv_kind(B, m), nch = kind == HV_MEASURED ? 3 : 1;
     float acc[3] = {0.0f, 0.0f, 0.0f}, spec[3] = {0.0f, 0.0f, 0.0f};
@@ -547,8 +559,23 @@ static void shade_cpu(const rd_run *run, const hv_brdf *B, int method, const flo
                         : kind == HV_ANALYTIC ? dif + s->mats[m].ks[j] * spec[j]
                                               : dif;
     }
-    if ((px + 1) % gb->w == 0) rd_progress(method_name[method], px + 1, npx);
   }
+}
+
+/* the CPU image of a method, on rd_threads() threads; returns their CPU ms together */
+static double shade_cpu(const rd_run *run, const hv_brdf *B, int method, const float *b, int nl,
+                        float eps, float *rgb) {
+  cpu_job jb;
+  jb.run = run;
+  jb.B = B;
+  jb.method = method;
+  jb.nl = nl;
+  jb.b = b;
+  jb.eps = eps;
+  jb.rgb = rgb;
+  shl_zh_lambert(run->bands, jb.fzh);
+  return rd_parallel((long)run->gb->w * run->gb->h, run->gb->w, shade_rows, &jb,
+                     method_name[method]);
 }
 
 /* ---- GL shading ----------------------------------------------------------------------------- */
@@ -1039,12 +1066,25 @@ static void gt_spec_point(const hv_brdf *B, int m, int kind, const double x[3], 
    f_s (analytic: ks f_s; measured: f, no Lambert term) with the real BRDF. Near a patch
    (d^2 < near2) the Lambert part is the exact polygon form factor and the BRDF part the
    point formula at the centres of 4 x 4 bilinear sub-quads (equal weights) */
-static void gt_shade(const rd_run *run, const hv_brdf *B, const gt_patches *gp, double eps,
-                     const char *label, float *rgb) {
+typedef struct {
+  const rd_run *run;
+  const hv_brdf *B;
+  const gt_patches *gp;
+  double eps;
+  float *rgb;
+} gt_job;
+
+static void gt_shade(void *ctx, long lo, long hi) {
+  const gt_job *jb = (const gt_job *)ctx;
+  const rd_run *run = jb->run;
+  const hv_brdf *B = jb->B;
+  const gt_patches *gp = jb->gp;
+  const double eps = jb->eps;
+  float *rgb = jb->rgb;
   const rd_gbuf *gb = run->gb;
   const rd_scene *s = run->scene;
-  int npx = gb->w * gb->h, px, j, c;
-  for (px = 0; px < npx; px++) {
+  int px, j, c;
+  for (px = (int)lo; px < (int)hi; px++) {
     double x[3], nx[3], gx[3], e[3] = {0, 0, 0}, es[3] = {0, 0, 0};
     float R[9], wo[3];
     int m = gb->mat[px], kind = hv_kind(B, m);
@@ -1108,17 +1148,26 @@ static void gt_shade(const rd_run *run, const hv_brdf *B, const gt_patches *gp, 
                                 : kind == HV_ANALYTIC ? dif + (double)s->mats[m].ks[c] * es[c]
                                                       : dif);
     }
-    if ((px + 1) % gb->w == 0) rd_progress(label, px + 1, npx);
   }
 }
 
+/* the gt image on rd_threads() threads; *ms: the CPU ms of all of them */
 static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, int N, double eps,
-                    float *rgb, int *npatch) {
+                    float *rgb, int *npatch, double *ms) {
+  double t0 = rd_cpu_ms();
   gt_patches gp;
+  gt_job jb;
   char label[32];
   if (gt_build(run, sv, N, &gp)) return -1;
   snprintf(label, sizeof label, "hvl gt %d", N);
-  gt_shade(run, B, &gp, eps, label, rgb);
+  jb.run = run;
+  jb.B = B;
+  jb.gp = &gp;
+  jb.eps = eps;
+  jb.rgb = rgb;
+  t0 = rd_cpu_ms() - t0; /* the patches, on this thread */
+  t0 += rd_parallel((long)run->gb->w * run->gb->h, run->gb->w, gt_shade, &jb, label);
+  if (ms) *ms = t0;
   if (npatch) *npatch = gp.n;
   gt_free(&gp);
   return 0;
@@ -1249,10 +1298,10 @@ int rd_pass_hvl(rd_run *run) {
   if (run->gt) {
     int n1 = env_int("SHLIGHT_HVL_GT", run->gt >= 2 ? 512 : 128, 4, 4096), np1 = 0, np2 = 0;
     float *half = (float *)malloc(nb);
-    double t0 = rd_cpu_ms(), t1, p99, mx, rmse;
+    double gms = 0.0, p99, mx, rmse;
     rd_tm tm = rd_tm_now();
     gt = (float *)malloc(nb);
-    if (!gt || !half || gt_image(run, &B, &sv, n1, (double)eps, gt, &np1)) {
+    if (!gt || !half || gt_image(run, &B, &sv, n1, (double)eps, gt, &np1, &gms)) {
       free(half);
       free(gt);
       free(ls.buf);
@@ -1261,8 +1310,7 @@ int rd_pass_hvl(rd_run *run) {
       fprintf(stderr, "hvl: ground truth failed\n");
       return -1;
     }
-    t1 = rd_cpu_ms();
-    if (gt_image(run, &B, &sv, n1 / 2, (double)eps, half, &np2) == 0) {
+    if (gt_image(run, &B, &sv, n1 / 2, (double)eps, half, &np2, NULL) == 0) {
       err_stats(gb, half, gt, &p99, &mx, &rmse);
       printf("hvl gt convergence: RSM %dx%d (%d patches) vs %dx%d (%d patches): "
              "rmse/peak %.3g, p99 %.3g, max %.3g (the error of the coarse one; second order)\n",
@@ -1274,7 +1322,7 @@ int rd_pass_hvl(rd_run *run) {
       rd_image im = rd_image_new(gb->w, gb->h);
       if (im.rgb) {
         memcpy(im.rgb, gt, nb);
-        rd_emit(run, "hvl", "gt", "gt", im, t1 - t0, 0, 0);
+        rd_emit(run, "hvl", "gt", "gt", im, gms, 0, 0);
       }
     }
   }
@@ -1296,9 +1344,7 @@ int rd_pass_hvl(rd_run *run) {
         break;
       }
       for (r = 0; r < reps; r++) {
-        double t0 = rd_cpu_ms();
-        shade_cpu(run, &B, method, b, ls.count, eps, im.rgb);
-        t[r] = rd_cpu_ms() - t0;
+        t[r] = shade_cpu(run, &B, method, b, ls.count, eps, im.rgb);
         if (t[r] > 2000.0) { /* slow: one timing is enough */
           reps = r + 1;
           break;
