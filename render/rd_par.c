@@ -89,7 +89,7 @@ double rd_parallel(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), 
 typedef struct {
   pthread_mutex_t mu;
   pthread_cond_t cv;
-  int readers, writers_waiting, writer;
+  int readers, writers_waiting, writer; /* shared sections, timed ones waiting, one running */
   char renderer[256];
 } gate_t;
 static gate_t *gate;
@@ -124,7 +124,9 @@ void rd_gate_enter(int excl) {
     gate->writers_waiting--;
     gate->writer = 1;
   } else {
-    while (gate->writer || gate->writers_waiting > 0)
+    /* a timed section waits for the shared ones to end, but does not hold new ones back:
+       the CPUs stay busy, and it runs when the others are between pieces or done */
+    while (gate->writer)
       pthread_cond_wait(&gate->cv, &gate->mu);
     gate->readers++;
   }
