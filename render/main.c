@@ -29,7 +29,7 @@ static void usage(FILE *f) {
              "  --brdf FILE[:MAT]   a measured BRDF in MERL's binary format (shl_merl_read) for\n"
              "                      the hvl pass's receivers of material MAT (default: every\n"
              "                      Phong / GGX material of the scene), through BRDF SH tables\n"
-             "  --reps N            timed repetitions (median reported; default 3)\n"
+             "  --reps N            timed repetitions (median reported; default 1)\n"
              "  --out DIR           write PNGs to DIR (created; default: none)\n"
              "  --exposure X        PNG exposure (default: per pass, from the reference)\n"
              "  --check             exit 1 when a GL image differs from its CPU twin beyond the\n"
@@ -171,7 +171,7 @@ static int run_parallel(rd_run *run, const int *sel, int nsel, const char *backe
 int main(int argc, char **argv) {
   const char *scene = "cornell", *passes = "all", *paths = "gl,cpu", *backend = NULL,
              *outdir = NULL, *brdf = NULL;
-  int w = 256, h = 192, gt = 1, bands = 0, brdf_bands = 9, reps = 3, check = 0, i, rc = 0, fails,
+  int w = 256, h = 192, gt = 1, bands = 0, brdf_bands = 9, reps = 1, check = 0, i, rc = 0, fails,
       bad = 0, timings = 0, sel[5], nsel = 0, par;
   float exposure = 0;
   rd_tm t_run = rd_tm_now();
