@@ -47,19 +47,27 @@ static int has(const char *list, const char *item) {
   return 0;
 }
 
-/* one --timings line: a pass's wall and process CPU seconds, and their parts */
-static void tm_line(const char *what, rd_tm t0, rd_tm t1, const rd_tm *p0, const rd_tm *p1) {
+/* one --timings line: a pass's wall and process CPU seconds, and their parts (wall/cpu s); the
+   whole run's parts (cpu_only) are CPU s only: its passes' wall times overlap */
+static void tm_line(const char *what, rd_tm t0, rd_tm t1, const rd_tm *p0, const rd_tm *p1,
+                    int cpu_only) {
   static const char *part[RD_TM_N] = {"gl compile", "gl draws", "gl setup", "gt"};
   double wall = (t1.wall - t0.wall) * 1e-3, cpu = (t1.cpu - t0.cpu) * 1e-3, rw = wall, rc = cpu;
   int k;
   printf("timings: %-9s wall %6.2f s, cpu %6.2f s |", what, wall, cpu);
   for (k = 0; k < RD_TM_N; k++) {
     double w = (p1[k].wall - p0[k].wall) * 1e-3, c = (p1[k].cpu - p0[k].cpu) * 1e-3;
-    printf(" %s %.2f/%.2f", part[k], w, c);
+    if (cpu_only)
+      printf(" %s %.2f", part[k], c);
+    else
+      printf(" %s %.2f/%.2f", part[k], w, c);
     rw -= w;
     rc -= c;
   }
-  printf(" | the rest (cpu path, metrics, png) %.2f/%.2f (wall/cpu s)\n", rw, rc);
+  if (cpu_only)
+    printf(" | the rest (cpu path, metrics, png) %.2f (cpu s)\n", rc);
+  else
+    printf(" | the rest (cpu path, metrics, png) %.2f/%.2f (wall/cpu s)\n", rw, rc);
 }
 
 static const char *const pass_names[5] = {"preview", "grid", "area", "hvl", "ssf"};
@@ -77,7 +85,7 @@ static int run_pass(rd_run *run, int k, int timings) {
   rc = pass_fn[k](run) ? 4 : 0;
   t1 = rd_tm_now();
   rd_tm_get(p1);
-  if (timings) tm_line(pass_names[k], t0, t1, p0, p1);
+  if (timings) tm_line(pass_names[k], t0, t1, p0, p1, 0);
   return rc;
 }
 
@@ -365,7 +373,7 @@ int main(int argc, char **argv) {
     if (getrusage(RUSAGE_CHILDREN, &ru) == 0) /* the pass processes' CPU time */
       t1.cpu += (double)(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) * 1e3 +
                 (double)(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec) * 1e-3;
-    tm_line("whole run", t_run, t1, z, p1);
+    tm_line("whole run", t_run, t1, z, p1, 1);
   }
   return rc;
 }
