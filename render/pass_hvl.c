@@ -1074,6 +1074,43 @@ typedef struct {
   float *rgb;
 } gt_job;
 
+/* patch j's Lambert term at x into e: the loop body of gt_shade for a Lambert pixel (the same
+   operations in the same order) */
+static inline void gt_lambert(const gt_patches *gp, int j, double eps, const double x[3],
+                              const double nx[3], const double gx[3], double e[3]) {
+  const double *p = gp->p + 3 * j, *ns = gp->ns + 3 * j, *phi = gp->phi + 3 * j;
+  const double *ng = gp->ng + 3 * j;
+  double dx = p[0] - x[0], dy = p[1] - x[1], dz = p[2] - x[2];
+  double d2 = dx * dx + dy * dy + dz * dz, cy, cx, gf;
+  int c;
+  if (!(-(ng[0] * dx + ng[1] * dy + ng[2] * dz) > eps) ||
+      !(gx[0] * dx + gx[1] * dy + gx[2] * dz > eps))
+    return;
+  if (d2 < gp->near2[j]) {
+    const gt_quad *q = &gp->quad[j];
+    double v[4][3], side, ps;
+    int k, kk;
+    for (kk = 0; kk < 4; kk++)
+      for (k = 0; k < 3; k++)
+        v[kk][k] = q->q[kk][k] - x[k];
+    side = -(dx * q->ns[0] + dy * q->ns[1] + dz * q->ns[2]);
+    if (!(side > 1e-9 * sqrt(d2 + q->a))) return;
+    ps = poly_projected((const double(*)[3])v, 4, nx) / q->a;
+    for (c = 0; c < 3; c++)
+      e[c] += phi[c] * ps;
+    return;
+  }
+  cy = -(ns[0] * dx + ns[1] * dy + ns[2] * dz);
+  cx = nx[0] * dx + nx[1] * dy + nx[2] * dz;
+  if (!(cy > 0) || !(cx > 0) || !(d2 > 0)) return;
+  gf = cy * cx / (d2 * d2);
+  e[0] += phi[0] * gf;
+  e[1] += phi[1] * gf;
+  e[2] += phi[2] * gf;
+}
+
+#define GT_PK 8 /* Lambert pixels that share one pass over the patches */
+
 static void gt_shade(void *ctx, long lo, long hi) {
   const gt_job *jb = (const gt_job *)ctx;
   const rd_run *run = jb->run;
@@ -1083,11 +1120,36 @@ static void gt_shade(void *ctx, long lo, long hi) {
   float *rgb = jb->rgb;
   const rd_gbuf *gb = run->gb;
   const rd_scene *s = run->scene;
-  int px, j, c;
-  for (px = (int)lo; px < (int)hi; px++) {
+  int px, j, c, t, nq = 0, qp[GT_PK];
+  double qx[GT_PK][3], qn[GT_PK][3], qg[GT_PK][3], qe[GT_PK][3];
+  for (px = (int)lo; px <= (int)hi; px++) {
     double x[3], nx[3], gx[3], e[3] = {0, 0, 0}, es[3] = {0, 0, 0};
     float R[9], wo[3];
-    int m = gb->mat[px], kind = hv_kind(B, m);
+    int m = px < (int)hi ? gb->mat[px] : -1, kind = hv_kind(B, m);
+    /* Lambert pixels: GT_PK at a time, each summing the patches in the order of the loop
+       below (the same sums); the pending ones when the row ends or a glossy pixel comes */
+    if (px < (int)hi && m >= 0 && m < s->nmats && kind == HV_LAMBERT) {
+      for (c = 0; c < 3; c++) {
+        qx[nq][c] = (double)gb->pos[3 * px + c];
+        qn[nq][c] = (double)gb->nrm[3 * px + c];
+        qg[nq][c] = (double)gb->gnrm[3 * px + c];
+        qe[nq][c] = 0.0;
+      }
+      qp[nq++] = px;
+      if (nq < GT_PK && px + 1 < (int)hi) continue;
+    }
+    if (nq > 0) {
+      for (j = 0; j < gp->n; j++)
+        for (t = 0; t < nq; t++)
+          gt_lambert(gp, j, eps, qx[t], qn[t], qg[t], qe[t]);
+      for (t = 0; t < nq; t++) {
+        int mt = gb->mat[qp[t]];
+        for (c = 0; c < 3; c++)
+          rgb[3 * qp[t] + c] = (float)((double)s->mats[mt].kd[c] / HVL_PI * qe[t][c]);
+      }
+      nq = 0;
+    }
+    if (px >= (int)hi || (m >= 0 && m < s->nmats && kind == HV_LAMBERT)) continue;
     if (m < 0 || m >= s->nmats) {
       rgb[3 * px] = rgb[3 * px + 1] = rgb[3 * px + 2] = 0.0f;
       continue;
