@@ -104,11 +104,14 @@ static int run_parallel(rd_run *run, const int *sel, int nsel, const char *backe
   char line[4096];
   fflush(stdout);
   fflush(stderr);
-  for (k = 0; k < nsel; k++) {
+  for (k = 0; k < nsel; k++)
     pid[k] = -1;
+  for (k = 0; k < nsel; k++) {
     out[k] = tmpfile();
     res[k] = tmpfile();
     if (!out[k] || !res[k]) {
+      fprintf(stderr, "shlrender: cannot make a temporary file for the %s pass\n",
+              pass_names[sel[k]]);
       rc = 4;
       break;
     }
@@ -138,6 +141,7 @@ static int run_parallel(rd_run *run, const int *sel, int nsel, const char *backe
       _exit(r);
     }
     if (pid[k] < 0) {
+      fprintf(stderr, "shlrender: cannot start a process for the %s pass\n", pass_names[sel[k]]);
       rc = 4;
       break;
     }
