@@ -7,7 +7,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 static void usage(FILE *f) {
   fprintf(f, "usage: shlrender [options]\n"
@@ -26,11 +30,12 @@ static void usage(FILE *f) {
              "  --brdf FILE[:MAT]   a measured BRDF in MERL's binary format (shl_merl_read) for\n"
              "                      the hvl pass's receivers of material MAT (default: every\n"
              "                      Phong / GGX material of the scene), through BRDF SH tables\n"
-             "  --reps N            timed repetitions (median reported; default 3)\n"
+             "  --reps N            timed repetitions (median reported; default 1)\n"
              "  --out DIR           write PNGs to DIR (created; default: none)\n"
              "  --exposure X        PNG exposure (default: per pass, from the reference)\n"
              "  --check             exit 1 when a GL image differs from its CPU twin beyond the\n"
-             "                      pass's tolerance; prints \"N passed, N failed\"\n");
+             "                      pass's tolerance; prints \"N passed, N failed\"\n"
+             "  --timings           print where each pass's wall and CPU time went\n");
 }
 
 static int has(const char *list, const char *item) {
@@ -43,12 +48,156 @@ static int has(const char *list, const char *item) {
   return 0;
 }
 
+/* one --timings line: a pass's wall and process CPU seconds, and their parts (wall/cpu s); the
+   whole run's parts (cpu_only) are CPU s only: its passes' wall times overlap */
+static void tm_line(const char *what, rd_tm t0, rd_tm t1, const rd_tm *p0, const rd_tm *p1,
+                    int cpu_only) {
+  static const char *part[RD_TM_N] = {"gl compile", "gl draws", "gl setup", "gt"};
+  double wall = (t1.wall - t0.wall) * 1e-3, cpu = (t1.cpu - t0.cpu) * 1e-3, rw = wall, rc = cpu;
+  int k;
+  printf("timings: %-9s wall %6.2f s, cpu %6.2f s |", what, wall, cpu);
+  for (k = 0; k < RD_TM_N; k++) {
+    double w = (p1[k].wall - p0[k].wall) * 1e-3, c = (p1[k].cpu - p0[k].cpu) * 1e-3;
+    if (cpu_only)
+      printf(" %s %.2f", part[k], c);
+    else
+      printf(" %s %.2f/%.2f", part[k], w, c);
+    rw -= w;
+    rc -= c;
+  }
+  if (cpu_only)
+    printf(" | the rest (cpu path, metrics, png) %.2f (cpu s)\n", rc);
+  else
+    printf(" | the rest (cpu path, metrics, png) %.2f/%.2f (wall/cpu s)\n", rw, rc);
+}
+
+static const char *const pass_names[5] = {"preview", "grid", "area", "hvl", "ssf"};
+static int (*const pass_fn[5])(rd_run *) = {rd_pass_preview, rd_pass_grid, rd_pass_area,
+                                            rd_pass_hvl, rd_pass_ssf};
+static const char no_gl[] = "shlrender: no OpenGL 4.5 context (install Mesa: libosmesa6 or "
+                            "libegl1 + libgl1-mesa-dri), or run with --paths cpu\n";
+
+/* pass k (index into pass_names); 0 or 4 */
+static int run_pass(rd_run *run, int k, int timings) {
+  rd_tm p0[RD_TM_N], p1[RD_TM_N], t0, t1;
+  int rc;
+  rd_tm_get(p0);
+  t0 = rd_tm_now();
+  rc = pass_fn[k](run) ? 4 : 0;
+  t1 = rd_tm_now();
+  rd_tm_get(p1);
+  if (timings) tm_line(pass_names[k], t0, t1, p0, p1, 0);
+  return rc;
+}
+
+/* The passes sel[0..nsel-1] at the same time, one process each, each on its own GL context
+   (llvmpipe's JIT runs on one thread: while one pass compiles, the others shade on the CPU; the
+   gate of rd.h keeps every timed GL draw alone). Each process writes its output to a file and
+   its results (images, timings) to another; the parent prints the outputs in pass order and
+   takes the results over, so the run prints and reports what the passes run one after the
+   other would. Returns 0, 3 (no GL context) or 4 (a pass failed). */
+static int run_parallel(rd_run *run, const int *sel, int nsel, const char *backend, int timings,
+                        int w, int h) {
+  FILE *out[5] = {NULL}, *res[5] = {NULL};
+  pid_t pid[5];
+  int k, rc = 0, st, head = 0;
+  char line[4096];
+  fflush(stdout);
+  fflush(stderr);
+  for (k = 0; k < nsel; k++)
+    pid[k] = -1;
+  for (k = 0; k < nsel; k++) {
+    out[k] = tmpfile();
+    res[k] = tmpfile();
+    if (!out[k] || !res[k]) {
+      fprintf(stderr, "shlrender: cannot make a temporary file for the %s pass\n",
+              pass_names[sel[k]]);
+      rc = 4;
+      break;
+    }
+    pid[k] = fork();
+    if (pid[k] == 0) {
+      int r;
+      rd_tm parts[RD_TM_N];
+      int err = -1, nul;
+      if (dup2(fileno(out[k]), 1) < 0) _exit(4);
+      if (k > 0 && (err = dup(2)) >= 0 && (nul = open("/dev/null", O_WRONLY)) >= 0) {
+        dup2(nul, 2); /* a context that cannot be made is said once, by the first process */
+        close(nul);
+      }
+      r = rd_gl_open(backend);
+      if (err >= 0) {
+        dup2(err, 2);
+        close(err);
+      }
+      if (r != 0) _exit(3);
+      if (k == 0) snprintf(rd_gate_renderer(), 256, "%s", rd_gl_renderer());
+      r = run_pass(run, sel[k], timings);
+      fflush(stdout);
+      rd_tm_get(parts);
+      if (rd_results_write(res[k], run) || fwrite(parts, sizeof parts, 1, res[k]) != 1 ||
+          fflush(res[k]))
+        r = 4;
+      _exit(r);
+    }
+    if (pid[k] < 0) {
+      fprintf(stderr, "shlrender: cannot start a process for the %s pass\n", pass_names[sel[k]]);
+      rc = 4;
+      break;
+    }
+  }
+  for (k = 0; k < nsel; k++) {
+    if (pid[k] > 0 && waitpid(pid[k], &st, 0) == pid[k]) {
+      int code = WIFEXITED(st) ? WEXITSTATUS(st) : 4;
+      rd_tm parts[RD_TM_N];
+      if (code == 3) rc = 3;
+      if (rc != 3 && out[k] && fseek(out[k], 0, SEEK_SET) == 0) {
+        int first = 1;
+        while (fgets(line, sizeof line, out[k])) {
+          /* the first process's context line, then the run's header; the others' are dropped */
+          if (first && !strncmp(line, "glctx: ", 7) && head) {
+            first = 0;
+            continue;
+          }
+          first = 0;
+          fputs(line, stdout);
+          if (!head) {
+            const rd_scene *s = run->scene;
+            head = 1;
+            printf("shlrender: scene %s (%d triangles, %d spheres, %d lights), %dx%d, %d bands, "
+                   "gl: %s\n",
+                   s->name, s->ntris, s->nspheres, s->nlights, w, h, run->bands,
+                   rd_gate_renderer());
+          }
+        }
+      }
+      if (code == 4) rc = rc ? rc : 4;
+      if (rc != 3 && (fseek(res[k], 0, SEEK_SET) || rd_results_read(res[k], run) ||
+                      fread(parts, sizeof parts, 1, res[k]) != 1)) {
+        if (code == 0)
+          fprintf(stderr, "shlrender: the %s pass's results are lost\n", pass_names[sel[k]]);
+        rc = rc ? rc : 4;
+      } else if (rc != 3) {
+        rd_tm_merge(parts);
+      }
+    } else if (rc != 3) {
+      rc = 4;
+    }
+    if (out[k]) fclose(out[k]);
+    if (res[k]) fclose(res[k]);
+  }
+  if (rc == 3) fprintf(stderr, "%s", no_gl);
+  fflush(stdout);
+  return rc;
+}
+
 int main(int argc, char **argv) {
   const char *scene = "cornell", *passes = "all", *paths = "gl,cpu", *backend = NULL,
              *outdir = NULL, *brdf = NULL;
-  int w = 256, h = 192, gt = 1, bands = 0, brdf_bands = 9, reps = 3, check = 0, i, rc = 0, fails,
-      bad = 0;
+  int w = 256, h = 192, gt = 1, bands = 0, brdf_bands = 9, reps = 1, check = 0, i, rc = 0, fails,
+      bad = 0, timings = 0, sel[5], nsel = 0, par;
   float exposure = 0;
+  rd_tm t_run = rd_tm_now(), t_rep;
   shl_merl merl;
   float *merl_data = NULL;
   char merl_path[1024], *merl_mat = NULL;
@@ -64,6 +213,10 @@ int main(int argc, char **argv) {
     }
     if (!strcmp(a, "--check")) {
       check = 1;
+      continue;
+    }
+    if (!strcmp(a, "--timings")) {
+      timings = 1;
       continue;
     }
     if (!v) {
@@ -184,9 +337,12 @@ int main(int argc, char **argv) {
   run.reps = reps;
   run.outdir = outdir;
   run.exposure = exposure;
-  if (run.use_gl && rd_gl_open(backend) != 0) {
-    fprintf(stderr, "shlrender: no OpenGL 4.5 context (install Mesa: libosmesa6 or libegl1 + "
-                    "libgl1-mesa-dri), or run with --paths cpu\n");
+  for (i = 0; i < 5; i++)
+    if (has(passes, pass_names[i]) || (i > 0 && has(passes, "all"))) sel[nsel++] = i;
+  /* with GL, two or more passes and two or more CPUs, each pass runs in a process of its own */
+  par = run.use_gl && nsel > 1 && rd_threads() > 1 && rd_gate_share() == 0;
+  if (run.use_gl && !par && rd_gl_open(backend) != 0) {
+    fprintf(stderr, "%s", no_gl);
     rd_scene_free(&s);
     return 3;
   }
@@ -196,15 +352,29 @@ int main(int argc, char **argv) {
     return 4;
   }
   run.gb = &gb;
-  printf("shlrender: scene %s (%d triangles, %d spheres, %d lights), %dx%d, %d bands, gl: %s\n",
-         s.name, s.ntris, s.nspheres, s.nlights, w, h, run.bands,
-         run.use_gl ? rd_gl_renderer() : "off");
-  if (has(passes, "preview") && rd_pass_preview(&run)) rc = 4;
-  if ((has(passes, "grid") || has(passes, "all")) && rd_pass_grid(&run)) rc = 4;
-  if ((has(passes, "area") || has(passes, "all")) && rd_pass_area(&run)) rc = 4;
-  if ((has(passes, "hvl") || has(passes, "all")) && rd_pass_hvl(&run)) rc = 4;
-  if ((has(passes, "ssf") || has(passes, "all")) && rd_pass_ssf(&run)) rc = 4;
+  if (par) {
+    rc = run_parallel(&run, sel, nsel, backend, timings, w, h);
+    if (rc == 3) {
+      rd_run_free(&run);
+      rd_gbuf_free(&gb);
+      rd_scene_free(&s);
+      free(merl_data);
+      return 3;
+    }
+  } else {
+    printf("shlrender: scene %s (%d triangles, %d spheres, %d lights), %dx%d, %d bands, gl: %s\n",
+           s.name, s.ntris, s.nspheres, s.nlights, w, h, run.bands,
+           run.use_gl ? rd_gl_renderer() : "off");
+    for (i = 0; i < nsel; i++)
+      if (run_pass(&run, sel[i], timings)) rc = 4;
+  }
+  t_rep = rd_tm_now();
   fails = rd_report(&run, 1);
+  if (timings) {
+    rd_tm t1 = rd_tm_now();
+    printf("timings: report (checks, metrics, PNGs) wall %.2f s, cpu %.2f s\n",
+           (t1.wall - t_rep.wall) * 1e-3, (t1.cpu - t_rep.cpu) * 1e-3);
+  }
   if (check) {
     /* one check per (pass, method) with both a GL and a CPU image; a failed pass is one more */
     int total = rd_report_checks(&run);
@@ -215,6 +385,16 @@ int main(int argc, char **argv) {
   rd_gbuf_free(&gb);
   rd_scene_free(&s);
   free(merl_data);
-  if (run.use_gl) rd_gl_close();
+  if (run.use_gl && !par) rd_gl_close();
+  if (timings) {
+    rd_tm z[RD_TM_N], p1[RD_TM_N], t1 = rd_tm_now();
+    struct rusage ru;
+    memset(z, 0, sizeof z);
+    rd_tm_get(p1);
+    if (getrusage(RUSAGE_CHILDREN, &ru) == 0) /* the pass processes' CPU time */
+      t1.cpu += (double)(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) * 1e3 +
+                (double)(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec) * 1e-3;
+    tm_line("whole run", t_run, t1, z, p1, 1);
+  }
   return rc;
 }

@@ -933,46 +933,73 @@ static int ar_cmp(const void *a, const void *b) {
   return x < y ? -1 : x > y;
 }
 
-/* CPU image of method m (index into ar_methods), reps times; median per-thread CPU ms */
-static double ar_cpu_image(const rd_run *run, const float *lb, int nl, const float *mats, int m,
-                           rd_image *img) {
-  const rd_gbuf *gb = run->gb;
-  size_t np = (size_t)gb->w * (size_t)gb->h, i;
-  int reps = run->reps > 0 ? run->reps : 1, r;
-  double ts[64];
-  if (reps > 64) reps = 64;
-  for (r = 0; r < reps; r++) {
-    double t0 = rd_cpu_ms();
-    for (i = 0; i < np; i++) {
-      float *o = img->rgb + 3 * i;
-      if (gb->mat[i] < 0 || gb->depth[i] < 0.0f) {
-        o[0] = o[1] = o[2] = 0.0f;
-        continue;
-      }
-      ar_shade(lb, nl, gb->pos + 3 * i, gb->nrm + 3 * i, gb->eye, mats + 12 * gb->mat[i],
-               ar_methods[m], o);
-    }
-    ts[r] = rd_cpu_ms() - t0;
-  }
-  qsort(ts, (size_t)reps, sizeof(double), ar_cmp);
-  return ts[reps / 2];
-}
+typedef struct {
+  const rd_run *run;
+  const float *lb, *mats;
+  int nl, m;
+  double tol;
+  rd_image *img;
+} ar_job;
 
-static double ar_gt_image(const rd_run *run, double tol, const char *label, rd_image *img) {
-  const rd_gbuf *gb = run->gb;
-  size_t np = (size_t)gb->w * (size_t)gb->h, i;
-  double t0 = rd_cpu_ms();
-  for (i = 0; i < np; i++) {
-    float *o = img->rgb + 3 * i;
+static void ar_cpu_rows(void *ctx, long lo, long hi) {
+  const ar_job *jb = (const ar_job *)ctx;
+  const rd_gbuf *gb = jb->run->gb;
+  size_t i;
+  for (i = (size_t)lo; i < (size_t)hi; i++) {
+    float *o = jb->img->rgb + 3 * i;
     if (gb->mat[i] < 0 || gb->depth[i] < 0.0f) {
       o[0] = o[1] = o[2] = 0.0f;
       continue;
     }
-    ar_shade_gt(run->scene, gb, i, tol, o);
-    if ((i & 255) == 0) rd_progress(label, (long)i, (long)np);
+    ar_shade(jb->lb, jb->nl, gb->pos + 3 * i, gb->nrm + 3 * i, gb->eye, jb->mats + 12 * gb->mat[i],
+             ar_methods[jb->m], o);
   }
-  rd_progress(label, (long)np, (long)np);
-  return rd_cpu_ms() - t0;
+}
+
+/* CPU image of method m (index into ar_methods), reps times, on rd_threads() threads; median
+   CPU ms (all threads together) */
+static double ar_cpu_image(const rd_run *run, const float *lb, int nl, const float *mats, int m,
+                           rd_image *img) {
+  const rd_gbuf *gb = run->gb;
+  int reps = run->reps > 0 ? run->reps : 1, r;
+  double ts[64];
+  ar_job jb;
+  jb.run = run;
+  jb.lb = lb;
+  jb.mats = mats;
+  jb.nl = nl;
+  jb.m = m;
+  jb.tol = 0.0;
+  jb.img = img;
+  if (reps > 64) reps = 64;
+  for (r = 0; r < reps; r++)
+    ts[r] = rd_parallel((long)gb->w * gb->h, gb->w, ar_cpu_rows, &jb, NULL);
+  qsort(ts, (size_t)reps, sizeof(double), ar_cmp);
+  return ts[reps / 2];
+}
+
+static void ar_gt_rows(void *ctx, long lo, long hi) {
+  const ar_job *jb = (const ar_job *)ctx;
+  const rd_gbuf *gb = jb->run->gb;
+  size_t i;
+  for (i = (size_t)lo; i < (size_t)hi; i++) {
+    float *o = jb->img->rgb + 3 * i;
+    if (gb->mat[i] < 0 || gb->depth[i] < 0.0f) {
+      o[0] = o[1] = o[2] = 0.0f;
+      continue;
+    }
+    ar_shade_gt(jb->run->scene, gb, i, jb->tol, o);
+  }
+}
+
+/* the gt image on rd_threads() threads; returns their CPU ms together */
+static double ar_gt_image(const rd_run *run, double tol, const char *label, rd_image *img) {
+  ar_job jb;
+  memset(&jb, 0, sizeof jb);
+  jb.run = run;
+  jb.tol = tol;
+  jb.img = img;
+  return rd_parallel((long)run->gb->w * run->gb->h, run->gb->w, ar_gt_rows, &jb, label);
 }
 
 /* GL images of methods m0 .. m0 + nm - 1 in one shader (one draw computes all of them). The
@@ -1149,6 +1176,7 @@ int rd_pass_area(rd_run *run) {
     /* absolute tolerance of the unit-radiance integrals per light; gt_coarse: 10x looser */
     double tol = run->gt >= 2 ? 1e-7 : 1e-5, tms[2];
     int gi, i0 = nout;
+    rd_tm tm = rd_tm_now();
     for (gi = 0; gi < 2; gi++) {
       rd_image im = rd_image_new(gb->w, gb->h);
       if (!im.rgb) {
@@ -1158,6 +1186,7 @@ int rd_pass_area(rd_run *run) {
       tms[gi] = ar_gt_image(run, gi ? 10.0 * tol : tol, gi ? "area gt coarse" : "area gt", &im);
       ar_add(&outs[nout++], gi ? "gt_coarse" : "gt", gi ? "cpu" : "gt", im, tms[gi], 0, 0.0);
     }
+    rd_tm_add(RD_TM_GT, tm);
     printf("area gt: diffuse part of polygons and spheres in closed form, the rest by adaptive "
            "Gauss-Kronrod cubature, tolerance %.0e per light (%.0f ms); gt_coarse at %.0e (%.0f "
            "ms) vs gt: RMSE/RMS %.2e, max|diff|/peak %.2e\n",

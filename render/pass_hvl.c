@@ -467,16 +467,28 @@ static void hv_local(const float x[3], const float nz[3], const float eye[3], fl
 }
 
 /* ---- CPU shading ---------------------------------------------------------------------------- */
-static void shade_cpu(const rd_run *run, const hv_brdf *B, int method, const float *b, int nl,
-                      float eps, float *rgb) {
+typedef struct {
+  const rd_run *run;
+  const hv_brdf *B;
+  int method, nl;
+  const float *b;
+  float eps, *rgb;
+  float fzh[SHLIGHT_MAX_BANDS];
+} cpu_job;
+
+static void shade_rows(void *ctx, long lo, long hi) {
+  const cpu_job *jb = (const cpu_job *)ctx;
+  const rd_run *run = jb->run;
+  const hv_brdf *B = jb->B;
+  const int method = jb->method, nl = jb->nl;
+  const float *b = jb->b, eps = jb->eps, *fzh = jb->fzh;
+  float *rgb = jb->rgb;
   const rd_gbuf *gb = run->gb;
   const rd_scene *s = run->scene;
   int st = method_stride[method], bands = run->bands, px, j, c, nb = B->nb;
-  int npx = gb->w * gb->h;
-  float fzh[SHLIGHT_MAX_BANDS], femit[1];
+  float femit[1];
   femit[0] = 1.1283791670955126f; /* 2 / sqrt(pi): F' . Y = femit[0] Y_0^0 = 1 / pi */
-  shl_zh_lambert(bands, fzh);
-  for (px = 0; px < npx; px++) {
+  for (px = (int)lo; px < (int)hi; px++) {
     const float *x = gb->pos + 3 * px, *nx = gb->nrm + 3 * px, *gx = gb->gnrm + 3 * px;
     int m = gb->mat[px], kind = hv_kind(B, m), nch = kind == HV_MEASURED ? 3 : 1;
     float acc[3] = {0.0f, 0.0f, 0.0f}, spec[3] = {0.0f, 0.0f, 0.0f};
@@ -547,8 +559,23 @@ static void shade_cpu(const rd_run *run, const hv_brdf *B, int method, const flo
                         : kind == HV_ANALYTIC ? dif + s->mats[m].ks[j] * spec[j]
                                               : dif;
     }
-    if ((px + 1) % gb->w == 0) rd_progress(method_name[method], px + 1, npx);
   }
+}
+
+/* the CPU image of a method, on rd_threads() threads; returns their CPU ms together */
+static double shade_cpu(const rd_run *run, const hv_brdf *B, int method, const float *b, int nl,
+                        float eps, float *rgb) {
+  cpu_job jb;
+  jb.run = run;
+  jb.B = B;
+  jb.method = method;
+  jb.nl = nl;
+  jb.b = b;
+  jb.eps = eps;
+  jb.rgb = rgb;
+  shl_zh_lambert(run->bands, jb.fzh);
+  return rd_parallel((long)run->gb->w * run->gb->h, run->gb->w, shade_rows, &jb,
+                     method_name[method]);
 }
 
 /* ---- GL shading ----------------------------------------------------------------------------- */
@@ -1039,15 +1066,90 @@ static void gt_spec_point(const hv_brdf *B, int m, int kind, const double x[3], 
    f_s (analytic: ks f_s; measured: f, no Lambert term) with the real BRDF. Near a patch
    (d^2 < near2) the Lambert part is the exact polygon form factor and the BRDF part the
    point formula at the centres of 4 x 4 bilinear sub-quads (equal weights) */
-static void gt_shade(const rd_run *run, const hv_brdf *B, const gt_patches *gp, double eps,
-                     const char *label, float *rgb) {
+typedef struct {
+  const rd_run *run;
+  const hv_brdf *B;
+  const gt_patches *gp;
+  double eps;
+  float *rgb;
+} gt_job;
+
+/* patch j's Lambert term at x into e: the loop body of gt_shade for a Lambert pixel (the same
+   operations in the same order) */
+static inline void gt_lambert(const gt_patches *gp, int j, double eps, const double x[3],
+                              const double nx[3], const double gx[3], double e[3]) {
+  const double *p = gp->p + 3 * j, *ns = gp->ns + 3 * j, *phi = gp->phi + 3 * j;
+  const double *ng = gp->ng + 3 * j;
+  double dx = p[0] - x[0], dy = p[1] - x[1], dz = p[2] - x[2];
+  double d2 = dx * dx + dy * dy + dz * dz, cy, cx, gf;
+  int c;
+  if (!(-(ng[0] * dx + ng[1] * dy + ng[2] * dz) > eps) ||
+      !(gx[0] * dx + gx[1] * dy + gx[2] * dz > eps))
+    return;
+  if (d2 < gp->near2[j]) {
+    const gt_quad *q = &gp->quad[j];
+    double v[4][3], side, ps;
+    int k, kk;
+    for (kk = 0; kk < 4; kk++)
+      for (k = 0; k < 3; k++)
+        v[kk][k] = q->q[kk][k] - x[k];
+    side = -(dx * q->ns[0] + dy * q->ns[1] + dz * q->ns[2]);
+    if (!(side > 1e-9 * sqrt(d2 + q->a))) return;
+    ps = poly_projected((const double(*)[3])v, 4, nx) / q->a;
+    for (c = 0; c < 3; c++)
+      e[c] += phi[c] * ps;
+    return;
+  }
+  cy = -(ns[0] * dx + ns[1] * dy + ns[2] * dz);
+  cx = nx[0] * dx + nx[1] * dy + nx[2] * dz;
+  if (!(cy > 0) || !(cx > 0) || !(d2 > 0)) return;
+  gf = cy * cx / (d2 * d2);
+  e[0] += phi[0] * gf;
+  e[1] += phi[1] * gf;
+  e[2] += phi[2] * gf;
+}
+
+#define GT_PK 8 /* Lambert pixels that share one pass over the patches */
+
+static void gt_shade(void *ctx, long lo, long hi) {
+  const gt_job *jb = (const gt_job *)ctx;
+  const rd_run *run = jb->run;
+  const hv_brdf *B = jb->B;
+  const gt_patches *gp = jb->gp;
+  const double eps = jb->eps;
+  float *rgb = jb->rgb;
   const rd_gbuf *gb = run->gb;
   const rd_scene *s = run->scene;
-  int npx = gb->w * gb->h, px, j, c;
-  for (px = 0; px < npx; px++) {
+  int px, j, c, t, nq = 0, qp[GT_PK];
+  double qx[GT_PK][3], qn[GT_PK][3], qg[GT_PK][3], qe[GT_PK][3];
+  for (px = (int)lo; px <= (int)hi; px++) {
     double x[3], nx[3], gx[3], e[3] = {0, 0, 0}, es[3] = {0, 0, 0};
     float R[9], wo[3];
-    int m = gb->mat[px], kind = hv_kind(B, m);
+    int m = px < (int)hi ? gb->mat[px] : -1, kind = hv_kind(B, m);
+    /* Lambert pixels: GT_PK at a time, each summing the patches in the order of the loop
+       below (the same sums); the pending ones when the row ends or a glossy pixel comes */
+    if (px < (int)hi && m >= 0 && m < s->nmats && kind == HV_LAMBERT) {
+      for (c = 0; c < 3; c++) {
+        qx[nq][c] = (double)gb->pos[3 * px + c];
+        qn[nq][c] = (double)gb->nrm[3 * px + c];
+        qg[nq][c] = (double)gb->gnrm[3 * px + c];
+        qe[nq][c] = 0.0;
+      }
+      qp[nq++] = px;
+      if (nq < GT_PK && px + 1 < (int)hi) continue;
+    }
+    if (nq > 0) {
+      for (j = 0; j < gp->n; j++)
+        for (t = 0; t < nq; t++)
+          gt_lambert(gp, j, eps, qx[t], qn[t], qg[t], qe[t]);
+      for (t = 0; t < nq; t++) {
+        int mt = gb->mat[qp[t]];
+        for (c = 0; c < 3; c++)
+          rgb[3 * qp[t] + c] = (float)((double)s->mats[mt].kd[c] / HVL_PI * qe[t][c]);
+      }
+      nq = 0;
+    }
+    if (px >= (int)hi || (m >= 0 && m < s->nmats && kind == HV_LAMBERT)) continue;
     if (m < 0 || m >= s->nmats) {
       rgb[3 * px] = rgb[3 * px + 1] = rgb[3 * px + 2] = 0.0f;
       continue;
@@ -1108,17 +1210,26 @@ static void gt_shade(const rd_run *run, const hv_brdf *B, const gt_patches *gp, 
                                 : kind == HV_ANALYTIC ? dif + (double)s->mats[m].ks[c] * es[c]
                                                       : dif);
     }
-    if ((px + 1) % gb->w == 0) rd_progress(label, px + 1, npx);
   }
 }
 
+/* the gt image on rd_threads() threads; *ms: the CPU ms of all of them */
 static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, int N, double eps,
-                    float *rgb, int *npatch) {
+                    float *rgb, int *npatch, double *ms) {
+  double t0 = rd_cpu_ms();
   gt_patches gp;
+  gt_job jb;
   char label[32];
   if (gt_build(run, sv, N, &gp)) return -1;
   snprintf(label, sizeof label, "hvl gt %d", N);
-  gt_shade(run, B, &gp, eps, label, rgb);
+  jb.run = run;
+  jb.B = B;
+  jb.gp = &gp;
+  jb.eps = eps;
+  jb.rgb = rgb;
+  t0 = rd_cpu_ms() - t0; /* the patches, on this thread */
+  t0 += rd_parallel((long)run->gb->w * run->gb->h, run->gb->w, gt_shade, &jb, label);
+  if (ms) *ms = t0;
   if (npatch) *npatch = gp.n;
   gt_free(&gp);
   return 0;
@@ -1249,9 +1360,10 @@ int rd_pass_hvl(rd_run *run) {
   if (run->gt) {
     int n1 = env_int("SHLIGHT_HVL_GT", run->gt >= 2 ? 512 : 128, 4, 4096), np1 = 0, np2 = 0;
     float *half = (float *)malloc(nb);
-    double t0 = rd_cpu_ms(), t1, p99, mx, rmse;
+    double gms = 0.0, p99, mx, rmse;
+    rd_tm tm = rd_tm_now();
     gt = (float *)malloc(nb);
-    if (!gt || !half || gt_image(run, &B, &sv, n1, (double)eps, gt, &np1)) {
+    if (!gt || !half || gt_image(run, &B, &sv, n1, (double)eps, gt, &np1, &gms)) {
       free(half);
       free(gt);
       free(ls.buf);
@@ -1260,19 +1372,19 @@ int rd_pass_hvl(rd_run *run) {
       fprintf(stderr, "hvl: ground truth failed\n");
       return -1;
     }
-    t1 = rd_cpu_ms();
-    if (gt_image(run, &B, &sv, n1 / 2, (double)eps, half, &np2) == 0) {
+    if (gt_image(run, &B, &sv, n1 / 2, (double)eps, half, &np2, NULL) == 0) {
       err_stats(gb, half, gt, &p99, &mx, &rmse);
       printf("hvl gt convergence: RSM %dx%d (%d patches) vs %dx%d (%d patches): "
              "rmse/peak %.3g, p99 %.3g, max %.3g (the error of the coarse one; second order)\n",
              n1 / 2, n1 / 2, np2, n1, n1, np1, rmse, p99, mx);
     }
     free(half);
+    rd_tm_add(RD_TM_GT, tm);
     {
       rd_image im = rd_image_new(gb->w, gb->h);
       if (im.rgb) {
         memcpy(im.rgb, gt, nb);
-        rd_emit(run, "hvl", "gt", "gt", im, t1 - t0, 0, 0);
+        rd_emit(run, "hvl", "gt", "gt", im, gms, 0, 0);
       }
     }
   }
@@ -1294,9 +1406,7 @@ int rd_pass_hvl(rd_run *run) {
         break;
       }
       for (r = 0; r < reps; r++) {
-        double t0 = rd_cpu_ms();
-        shade_cpu(run, &B, method, b, ls.count, eps, im.rgb);
-        t[r] = rd_cpu_ms() - t0;
+        t[r] = shade_cpu(run, &B, method, b, ls.count, eps, im.rgb);
         if (t[r] > 2000.0) { /* slow: one timing is enough */
           reps = r + 1;
           break;

@@ -319,36 +319,23 @@ typedef struct {
   double y[3], n[3], phi[3];
 } gt_vpl;
 
-static int gt_render(const rd_run *run, const rd_light *l, int N, double dmin, const char *label,
-                     rd_image *out) {
-  const rd_gbuf *gb = run->gb;
-  const rd_scene *s = run->scene;
-  int npx = gb->w * gb->h, px, j, nv = 0, c;
-  float *raw = (float *)malloc((size_t)N * (size_t)N * SSF_STRIDE * sizeof(float));
-  gt_vpl *v = (gt_vpl *)malloc((size_t)N * (size_t)N * sizeof(gt_vpl));
-  double dm2 = dmin * dmin;
-  *out = rd_image_new(gb->w, gb->h);
-  if (!raw || !v || !out->rgb || spot_vpls(s, l, N, 0, raw)) {
-    free(raw);
-    free(v);
-    rd_image_free(out);
-    return -1;
-  }
-  for (j = 0; j < N * N; j++) {
-    const float *q = raw + (size_t)j * SSF_STRIDE;
-    double ln = 0;
-    if (q[6] == 0.0f && q[7] == 0.0f && q[8] == 0.0f) continue;
-    for (c = 0; c < 3; c++) {
-      v[nv].y[c] = (double)q[c];
-      ln += (double)q[3 + c] * (double)q[3 + c];
-      v[nv].phi[c] = (double)q[6 + c] / SSF_PI;
-    }
-    for (c = 0; c < 3; c++)
-      v[nv].n[c] = (double)q[3 + c] / sqrt(ln);
-    nv++;
-  }
-  free(raw);
-  for (px = 0; px < npx; px++) {
+typedef struct {
+  const rd_run *run;
+  const gt_vpl *v;
+  int nv;
+  double dm2;
+  float *rgb;
+} gt_job;
+
+static void gt_rows(void *ctx, long lo, long hi) {
+  const gt_job *jb = (const gt_job *)ctx;
+  const rd_gbuf *gb = jb->run->gb;
+  const rd_scene *s = jb->run->scene;
+  const gt_vpl *v = jb->v;
+  const int nv = jb->nv;
+  const double dm2 = jb->dm2;
+  int px, j, c;
+  for (px = (int)lo; px < (int)hi; px++) {
     const float *xf = gb->pos + 3 * px, *nsf = gb->nrm + 3 * px, *ngf = gb->gnrm + 3 * px;
     double x[3], ns[3], ng[3], acc[3] = {0, 0, 0}, ln = 0;
     int m = gb->mat[px];
@@ -375,9 +362,50 @@ static int gt_render(const rd_run *run, const rd_light *l, int N, double dmin, c
       acc[2] += q->phi[2] * f;
     }
     for (c = 0; c < 3; c++)
-      out->rgb[3 * px + c] = (float)((double)s->mats[m].kd[c] / SSF_PI * acc[c]);
-    if ((px + 1) % gb->w == 0) rd_progress(label, px + 1, npx);
+      jb->rgb[3 * px + c] = (float)((double)s->mats[m].kd[c] / SSF_PI * acc[c]);
   }
+}
+
+/* the gt image on rd_threads() threads; *ms: the CPU ms of all of them */
+static int gt_render(const rd_run *run, const rd_light *l, int N, double dmin, const char *label,
+                     rd_image *out, double *ms) {
+  const rd_gbuf *gb = run->gb;
+  const rd_scene *s = run->scene;
+  int j, nv = 0, c;
+  double t0 = rd_cpu_ms();
+  gt_job jb;
+  float *raw = (float *)malloc((size_t)N * (size_t)N * SSF_STRIDE * sizeof(float));
+  gt_vpl *v = (gt_vpl *)malloc((size_t)N * (size_t)N * sizeof(gt_vpl));
+  double dm2 = dmin * dmin;
+  *out = rd_image_new(gb->w, gb->h);
+  if (!raw || !v || !out->rgb || spot_vpls(s, l, N, 0, raw)) {
+    free(raw);
+    free(v);
+    rd_image_free(out);
+    return -1;
+  }
+  for (j = 0; j < N * N; j++) {
+    const float *q = raw + (size_t)j * SSF_STRIDE;
+    double ln = 0;
+    if (q[6] == 0.0f && q[7] == 0.0f && q[8] == 0.0f) continue;
+    for (c = 0; c < 3; c++) {
+      v[nv].y[c] = (double)q[c];
+      ln += (double)q[3 + c] * (double)q[3 + c];
+      v[nv].phi[c] = (double)q[6 + c] / SSF_PI;
+    }
+    for (c = 0; c < 3; c++)
+      v[nv].n[c] = (double)q[3 + c] / sqrt(ln);
+    nv++;
+  }
+  free(raw);
+  jb.run = run;
+  jb.v = v;
+  jb.nv = nv;
+  jb.dm2 = dm2;
+  jb.rgb = out->rgb;
+  t0 = rd_cpu_ms() - t0; /* the VPLs, on this thread */
+  t0 += rd_parallel((long)gb->w * gb->h, gb->w, gt_rows, &jb, label);
+  if (ms) *ms = t0;
   free(v);
   return 0;
 }
@@ -677,20 +705,21 @@ int rd_pass_ssf(rd_run *run) {
   /* ground truth */
   if (run->gt) {
     rd_image half;
-    double t0 = rd_cpu_ms(), t1;
+    double gms = 0.0;
     char label[32];
+    rd_tm tm = rd_tm_now();
     snprintf(label, sizeof label, "ssf gt %d^2", Ngt);
-    if (gt_render(run, spot, Ngt, (double)dmin, label, &gt)) goto done;
-    t1 = rd_cpu_ms();
+    if (gt_render(run, spot, Ngt, (double)dmin, label, &gt, &gms)) goto done;
     snprintf(label, sizeof label, "ssf gt %d^2", Ngt / 2);
-    if (gt_render(run, spot, Ngt / 2, (double)dmin, label, &half)) goto done;
+    if (gt_render(run, spot, Ngt / 2, (double)dmin, label, &half, NULL)) goto done;
     {
       rd_metrics d = rd_compare(&half, &gt, gb->mat);
       printf("ssf gt: %d x %d RSM, %.0f ms; the %d x %d RSM differs by RMSE %.3g (PSNR %.1f dB): "
              "the gt's discretisation error is below that\n",
-             Ngt, Ngt, t1 - t0, Ngt / 2, Ngt / 2, d.rmse, d.psnr);
+             Ngt, Ngt, gms, Ngt / 2, Ngt / 2, d.rmse, d.psnr);
     }
     rd_image_free(&half);
+    rd_tm_add(RD_TM_GT, tm);
   }
   /* CPU */
   if (run->use_cpu) {

@@ -16,6 +16,7 @@
 #ifndef SHLIGHT_RD_H
 #define SHLIGHT_RD_H
 #include <stddef.h>
+#include <stdio.h>
 
 #define RD_MAX_POLY 8 /* polygon light vertices (= SHLIGHT_POLYGON_MAX) */
 
@@ -193,9 +194,53 @@ int rd_report(rd_run *run, int markdown);
 /* The number of gl-vs-cpu checks (methods with both a "gl" and a "cpu" image). */
 int rd_report_checks(const rd_run *run);
 void rd_run_free(rd_run *run);
+/* The results emitted so far, written to f / read from f and emitted again (a pass that ran in
+ * a process of its own hands its results to the parent). 0, or -1 on an I/O error. */
+int rd_results_write(FILE *f, const rd_run *run);
+int rd_results_read(FILE *f, rd_run *run);
 
 /* Per-thread CPU time in milliseconds (for the CPU paths' timings). */
 double rd_cpu_ms(void);
+
+/* ---- threads --------------------------------------------------------------------------- */
+#define RD_MAX_THREADS 64
+/* SHLIGHT_THREADS, else the online CPUs; 1..RD_MAX_THREADS */
+int rd_threads(void);
+/* Calls fn(ctx, lo, hi) over [0, n) in pieces of `chunk` items, on rd_threads() threads (the
+ * calling one included), each thread taking the next piece when it is done with one. fn must
+ * write only the items lo..hi-1 (each item's result then does not depend on the threads).
+ * label: a progress bar (rd_progress), or NULL. Returns the CPU ms of all the threads
+ * together: the time one thread would take, the CPU column's meaning. */
+double rd_parallel(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), void *ctx,
+                   const char *label);
+
+/* The passes of a run with GL run in processes of their own, at the same time (main.c); the
+ * gate keeps what is timed by the wall clock quiet. Work that may overlap others (the JIT, a
+ * piece of rd_parallel) runs between rd_gate_enter(0) and rd_gate_leave(0), any number at
+ * once; a timed section (the GL draws, the grid build) between rd_gate_enter(1) and
+ * rd_gate_leave(1), alone: it waits until no piece runs (new pieces may start meanwhile: the
+ * CPUs stay busy), and pieces wait while it runs.
+ * Without rd_gate_share() (one process) these do nothing. rd_gate_share: 0, or -1 when the
+ * shared memory is refused. rd_gate_renderer: 256 shared bytes (NULL without the gate). */
+int rd_gate_share(void);
+void rd_gate_enter(int excl);
+void rd_gate_leave(int excl);
+char *rd_gate_renderer(void);
+
+/* ---- where the run's time goes (--timings) ---------------------------------------------- */
+/* Wall and process CPU time (every thread, llvmpipe's included) spent in each part of a pass,
+ * summed over the run: GL compile (compile, link and the first draw, where llvmpipe's JIT
+ * runs), GL draws (the timed ones), GL setup (textures, buffers, read-back), ground truth. */
+enum { RD_TM_GL_COMPILE = 0, RD_TM_GL_DRAW = 1, RD_TM_GL_SETUP = 2, RD_TM_GT = 3, RD_TM_N = 4 };
+typedef struct {
+  double wall, cpu; /* ms */
+} rd_tm;
+rd_tm rd_tm_now(void);
+/* adds the time since t0 to part `part`; returns now (to chain parts) */
+rd_tm rd_tm_add(int part, rd_tm t0);
+/* the totals so far (RD_TM_N entries); rd_tm_merge adds a pass process's totals */
+void rd_tm_get(rd_tm *out);
+void rd_tm_merge(const rd_tm *parts);
 
 /* ---- GL passes ------------------------------------------------------------------------- */
 /* A full-screen fragment pass at the G-buffer's resolution. The shader is, in order:

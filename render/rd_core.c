@@ -28,6 +28,28 @@ double rd_cpu_ms(void) {
   return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
 
+static rd_tm tm_sum[RD_TM_N];
+rd_tm rd_tm_now(void) {
+  struct timespec ts;
+  rd_tm t;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  t.wall = (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  t.cpu = (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+  return t;
+}
+rd_tm rd_tm_add(int part, rd_tm t0) {
+  rd_tm t = rd_tm_now();
+  if (part >= 0 && part < RD_TM_N) {
+    tm_sum[part].wall += t.wall - t0.wall;
+    tm_sum[part].cpu += t.cpu - t0.cpu;
+  }
+  return t;
+}
+void rd_tm_get(rd_tm *out) {
+  memcpy(out, tm_sum, sizeof tm_sum);
+}
+
 /* ---- PNG: 8-bit RGB, zlib stream of stored (uncompressed) deflate blocks ---------------- */
 static uint32_t crc_table[256];
 static void crc_init(void) {
@@ -421,6 +443,59 @@ int rd_report(rd_run *run, int markdown) {
     }
   }
   return fails;
+}
+
+int rd_results_write(FILE *f, const rd_run *run) {
+  int i;
+  if (fwrite(&run->nres, sizeof run->nres, 1, f) != 1) return -1;
+  for (i = 0; i < run->nres; i++) {
+    const rd_result *r = &run->res[i];
+    size_t n = r->img.rgb ? (size_t)r->img.w * (size_t)r->img.h * 3 : 0;
+    if (fwrite(r, sizeof *r, 1, f) != 1 || fwrite(r->img.rgb, sizeof(float), n, f) != n ||
+        (r->sel && fwrite(r->sel, sizeof(int), (size_t)r->nsel, f) != (size_t)r->nsel))
+      return -1;
+  }
+  return fflush(f) ? -1 : 0;
+}
+
+int rd_results_read(FILE *f, rd_run *run) {
+  int i, n;
+  if (fread(&n, sizeof n, 1, f) != 1 || n < 0) return -1;
+  for (i = 0; i < n; i++) {
+    rd_result r;
+    size_t np;
+    int *sel = NULL;
+    if (fread(&r, sizeof r, 1, f) != 1) return -1;
+    np = r.img.rgb ? (size_t)r.img.w * (size_t)r.img.h * 3 : 0;
+    r.img.rgb = np ? (float *)malloc(np * sizeof(float)) : NULL;
+    if (np && (!r.img.rgb || fread(r.img.rgb, sizeof(float), np, f) != np)) {
+      free(r.img.rgb);
+      return -1;
+    }
+    if (r.sel) {
+      sel = r.nsel > 0 ? (int *)malloc((size_t)r.nsel * sizeof(int)) : NULL;
+      if (!sel || fread(sel, sizeof(int), (size_t)r.nsel, f) != (size_t)r.nsel) {
+        free(sel);
+        free(r.img.rgb);
+        return -1;
+      }
+    }
+    if (sel)
+      rd_emit_sel(run, r.pass, r.method, r.path, r.img, r.ms, r.mem, r.tol, sel, r.nsel, r.tol_sel,
+                  r.sel_name);
+    else
+      rd_emit(run, r.pass, r.method, r.path, r.img, r.ms, r.mem, r.tol);
+    free(sel);
+  }
+  return 0;
+}
+
+void rd_tm_merge(const rd_tm *parts) {
+  int k;
+  for (k = 0; k < RD_TM_N; k++) {
+    tm_sum[k].wall += parts[k].wall;
+    tm_sum[k].cpu += parts[k].cpu;
+  }
 }
 
 int rd_report_checks(const rd_run *run) {
