@@ -1439,7 +1439,7 @@ shli_real shli_ggx_j(shli_real y, shli_real omy) {
     return p;
   }
   x = SHLIGHT_SQRTR(y);
-  return (1.0 / omy - 0.5 * SHLIGHT_LOGR((1.0 + x) * (1.0 + x) / omy) / x) / (2.0 * y);
+  return (1.0 / omy - 0.5 * SHLIGHT_MLOG((1.0 + x) * (1.0 + x) / omy) / x) / (2.0 * y);
 }
 
 shli_real shli_ggx_w(shli_real lx, shli_real ly, shli_real lz, shli_real vx, shli_real vy,
@@ -1534,11 +1534,11 @@ void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli_real wd, shli_
     }
     hl = 0.5 * (hi - lo);
     s = lo + hl * (xs[j] + 1.0);
-    es = SHLIGHT_EXPR(s);
+    es = SHLIGHT_MEXP(s);
     jw = ws[j] * hl * wd * 0.5 * (es + 1.0 / es);
     s = t0 + wd * 0.5 * (es - 1.0 / es);
-    ct = SHLIGHT_COSR(s);
-    st = SHLIGHT_SINR(s);
+    ct = SHLIGHT_MCOS(s);
+    st = SHLIGHT_MSIN(s);
     /* l = ct a + st b, l' = -st a + ct b, Q = l + v */
     dx = ct * bx - st * ax;
     dy = ct * by - st * ay;
@@ -1567,7 +1567,7 @@ void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli_real wd, shli_
         /* (1 - exp(-u)) / |Q_xy|^2, u = |Q_xy|^2 / (alpha^2 Q_z^2); a series below u = 0.1
            (truncation u^7 / 8! < 3e-12) */
         u = qxy / (a2 * qn * qn);
-        e = SHLIGHT_EXPR(-u);
+        e = SHLIGHT_MEXP(-u);
         if (u < 0.1) {
           m = 1.0 / 5040.0;
           m = 1.0 / 720.0 - u * m;
@@ -1668,7 +1668,7 @@ shli_real shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, s
     } else if (d > 0.0) {
       /* D_B (h.n) / (4 h.v) = exp(-(f2 - d^2) / (alpha^2 d^2)) f2^2 / (4 pi alpha^2 d^3 (l + v).v),
          d = (l + v).n, f2 = |l + v|^2 */
-      res = res + tw[k] * det / (q * q * q) * SHLIGHT_EXPR(-(f2 - d * d) / (a2 * d * d)) * f2 * f2 /
+      res = res + tw[k] * det / (q * q * q) * SHLIGHT_MEXP(-(f2 - d * d) / (a2 * d * d)) * f2 * f2 /
                       (12.566370614359173 * a2 * d * d * d * (dx * vx + dy * vy + dz * vz)) * w;
     }
   }
@@ -1947,8 +1947,8 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
       bz = ex * ay - ey * ax;
       t0 = shli_atan2r(rx * bx + ry * by + rz * bz, rx * ax + ry * ay + rz * az);
       for (k = 0; k < 2; ++k) {
-        ct = SHLIGHT_COSR(t0);
-        st = SHLIGHT_SINR(t0);
+        ct = SHLIGHT_MCOS(t0);
+        st = SHLIGHT_MSIN(t0);
         qx = ct * ax + st * bx + vx;
         qy = ct * ay + st * by + vy;
         qz = ct * az + st * bz + vz;
@@ -1974,9 +1974,9 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
       sa = -t0 / wd;
       sb = (phi - t0) / wd;
       sa = SHLIGHT_REAL(SHLIGHT_SIGN1(sa)) *
-           SHLIGHT_LOGR(SHLIGHT_ABSR(sa) + SHLIGHT_SQRTR(sa * sa + 1.0));
+           SHLIGHT_MLOG(SHLIGHT_ABSR(sa) + SHLIGHT_SQRTR(sa * sa + 1.0));
       sb = SHLIGHT_REAL(SHLIGHT_SIGN1(sb)) *
-           SHLIGHT_LOGR(SHLIGHT_ABSR(sb) + SHLIGHT_SQRTR(sb * sb + 1.0));
+           SHLIGHT_MLOG(SHLIGHT_ABSR(sb) + SHLIGHT_SQRTR(sb * sb + 1.0));
       shli_ggx_side(sa, sb, t0, wd, ax, ay, az, bx, by, bz, vx, vy, vz, nx, ny, nz, a2, gx, gy, gz,
                     i1, al, ndf, am);
     }

@@ -334,7 +334,37 @@ static void test_polygons(void) {
   TL_CHECK(worst[1] <= 9e-4, "8-gons: %g", worst[1]);
 }
 
+/* the C kernels' own exp, log, sin, cos (shli_mexp, shli_mlog, shli_msincos; GLSL uses the
+   built-ins) against libm on the ranges the GGX and Beckmann bodies use and beyond: measured
+   relative error 3.3e-16 (exp, [-40, 40]), 1.1e-15 (log, [1e-13, 1e17]), absolute 2.2e-16
+   (sin, cos, [-7, 7]) and relative 2.2e-16 for sin near 0 and pi; the clamps of exp */
+static void test_transcendentals(void) {
+  double me = 0, ml = 0, ms = 0, mr = 0, x, e;
+  int i;
+  for (i = 0; i <= 200000; ++i) {
+    x = -40.0 + 80.0 * i / 200000;
+    e = fabs(shli_mexp(x) / exp(x) - 1.0);
+    me = e > me ? e : me;
+    x = exp(-30.0 + 70.0 * i / 200000);
+    e = fabs(shli_mlog(x) - log(x)) / (fabs(log(x)) > 1e-300 ? fabs(log(x)) : 1.0);
+    ml = e > ml ? e : ml;
+    x = -7.0 + 14.0 * i / 200000;
+    e = fabs(shli_msincos(x, 0) - sin(x)) + fabs(shli_msincos(x, 1) - cos(x));
+    ms = e > ms ? e : ms;
+    x = 1e-9 * (i + 1);
+    e = fabs(shli_msincos(x, 0) / sin(x) - 1.0) +
+        fabs(shli_msincos(3.141592653589793 - x, 0) / sin(3.141592653589793 - x) - 1.0);
+    mr = e > mr ? e : mr;
+  }
+  printf("  exp %.2e, log %.2e, sin + cos %.2e (abs), sin near 0 and pi %.2e\n", me, ml, ms, mr);
+  TL_CHECK(me < 1e-15 && ml < 3e-15 && ms < 1e-15 && mr < 1e-15, "transcendentals");
+  TL_CHECK(shli_mexp(-1e300) >= 0.0 && shli_mexp(-1e300) < 1e-300 && shli_mexp(1e300) > 1e307 &&
+               shli_mexp(1e300) < 1.7e308,
+           "exp clamps: %g %g", shli_mexp(-1e300), shli_mexp(1e300));
+}
+
 int main(void) {
+  TL_RUN(test_transcendentals);
   TL_RUN(test_degenerate);
   TL_RUN(test_horizon_winding);
   TL_RUN(test_rotation);
