@@ -6218,6 +6218,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   shli_real ox = 0.0;
   shli_real oy = 0.0;
   shli_real oz = 0.0;
+  int spl;
   int npk;
   int nsp;
   int dmin;
@@ -6588,13 +6589,24 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
           npk = 1;
         }
       }
-      if (dep >= dmin) {
+      /* split: 1 forced (a wide fan triangle), 2 graded or by the estimate (counted); a piece
+         the graded rule splits is not evaluated */
+      spl = 0;
+      if (dep < dmin) {
+        spl = 1;
+      } else if (dep < SHLIGHT_GGX_DEPTH && nsp < SHLIGHT_GGX_SPLITS && npk != 0) {
+        spl = 2;
+      }
+      if (spl == 0) {
         shli_ggx_tri(tr[0], ts[0], tw[0], tr[1], ts[1], tw[1], tr[2], ts[2], tw[2], vx, vy, vz, nx,
                      ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf, rq);
+        if (dep < SHLIGHT_GGX_DEPTH && nsp < SHLIGHT_GGX_SPLITS &&
+            SHLIGHT_ABSR(rq[0] - rq[1]) > tol) {
+          spl = 2;
+        }
       }
-      if (dep < dmin || (dep < SHLIGHT_GGX_DEPTH && nsp < SHLIGHT_GGX_SPLITS &&
-                         (npk != 0 || SHLIGHT_ABSR(rq[0] - rq[1]) > tol))) {
-        if (dep >= dmin) {
+      if (spl != 0) {
+        if (spl == 2) {
           nsp = nsp + 1;
         }
         dg[dep] = 0;
