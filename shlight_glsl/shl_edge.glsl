@@ -2031,6 +2031,9 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
      5 + 4 SHLIGHT_GGX_SPLITS times, all of them together at most 5 nc + 4 SHLIGHT_GGX_SPLITS
      (GLSL's loop budget: docs/area-lights.md). */
   tol = SHLIGHT_GGX_TOL / (1.0 + lamv);
+  if (ndf != 0) { /* Beckmann: the fixed pieces (adaptive ones measured mixed on its sampler) */
+    tol = 1.0e30;
+  }
   rq[0] = 0.0;
   rq[1] = 0.0;
   d = 2.0 * (hx * vx + hy * vy + hz * vz);
@@ -2040,7 +2043,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   /* graded refinement about l* where the lobe is near the horizon (n.l* < SHLIGHT_GGX_HOR alpha):
      pieces near l* are split down to a radius of SHLIGHT_GGX_KAP 2 alpha (h*.v) */
   pc = -2.0;
-  if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && al < 0.25) {
+  if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && al < 0.25 && ndf == 0) {
     q = SHLIGHT_GGX_KAP * al * d;
     pc = 1.0 - 0.5 * q * q;
   }

@@ -95,10 +95,10 @@ static void test_research_sampler(void) {
 }
 
 /* Hard cases, 6 each at alpha 0.01, 0.09, 0.49: max error / albedo. Measured: straddling
-   5.2e-5, grazing 9.2e-3, large 1.7e-2, sliver 6.3e-7 (asserted at ~3x). Grazing views and
-   very large lights are the weak spot: the BRDF apart from D (masking, Jacobian) varies inside
-   the lobe faster than the first-order model and the cubature nodes (7 or 28 per fan triangle)
-   follow. */
+   4.7e-5, grazing 4.2e-3, large 8.1e-3, sliver 6.3e-7 (asserted at ~3x; with a fixed 7- or
+   28-node cubature per fan triangle: 5.2e-5, 9.2e-3, 1.7e-2). Grazing views and very large
+   lights are the weak spot: the BRDF apart from D (masking, Jacobian) varies inside the lobe
+   faster than the first-order model, and the remainder's adaptive pieces follow it. */
 static void hard_case(ggxc_rng *r, int kind, double q[4][3], double view[3]) {
   ggxc_case cs;
   int i, k;
@@ -131,7 +131,7 @@ static void hard_case(ggxc_rng *r, int kind, double q[4][3], double view[3]) {
 static void test_hard_cases(void) {
   static const char *names[4] = {"straddling", "grazing view", "large", "sliver"};
   static const double alphas[3] = {0.01, 0.09, 0.49};
-  static const double tol[4] = {1.6e-4, 2.8e-2, 5.1e-2, 1.9e-6};
+  static const double tol[4] = {1.6e-4, 1.3e-2, 2.5e-2, 1.9e-6};
   int kind, ia, c;
   for (kind = 0; kind < 4; ++kind) {
     ggxc_rng r;
@@ -218,8 +218,9 @@ static void test_grazing_straddling(void) {
 }
 
 /* a light filling the upper hemisphere (a 2e4 x 2e4 quad at height 1) gives the directional
-   albedo; measured error / albedo: alpha 0.04: 3.8e-5 (view 30 deg), 3.7e-3 (75 deg); alpha 1:
-   1.7e-4, 7.4e-4 (asserted at ~3x) */
+   albedo; measured error / albedo: alpha 0.04: 3.8e-5 (view 30 deg), 9.0e-4 (75 deg; 3.7e-3
+   with a fixed cubature); alpha 1: 1.7e-4, 1.1e-3 (asserted at ~3x, the 75-deg ones at the
+   fixed cubature's ~3x) */
 static void test_hemisphere(void) {
   static const double alphas[2] = {0.04, 1.0}, tvs[2] = {30, 75};
   double q[4][3] = {{-1e4, -1e4, 1}, {1e4, -1e4, 1}, {1e4, 1e4, 1}, {-1e4, 1e4, 1}};
