@@ -583,7 +583,7 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    roughness 0.05 to 1 (LTC: 7e-5 to 0.11), p95 below 0.08 %, max error / albedo <= 3.6e-3 at
    every roughness (grazing views, lights straddling the horizon). Cost: 17.8k x86 instructions
    per quad on that sampler's mean, 14.2k where no piece is split (93 % of its quads; 10 Gauss
-   nodes per edge, 7 or 28 cubature nodes per fan triangle), up to ~0.5M at the split budget
+   nodes per edge, 7 or 28 cubature nodes per fan triangle), 0.42M at the split budget
    (grazing views, narrow lobes on the horizon). */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
@@ -5791,8 +5791,9 @@ SHLIGHT_CPU_INLINE double shli_msincos(double t, int odd) {
    k = D (h.n) / (4 h.v) (so that k dl = D (h.n) dh), g the gradient of w at h* (central
    differences), and the remainder by cubature over P: a fan from the direction of the vertex
    centroid, triangles wider than 53 deg split 1 -> 4 at their edge midpoints, a 7-point
-   degree-5 rule on each piece (the remainder is second order where D is narrow and smooth where
-   D is wide).
+   degree-5 rule on each piece, GGX's pieces split further where an estimate or the lobe's
+   closeness to the horizon asks (at the fan loop; the remainder is second order where D is
+   narrow and smooth where D is wide).
    A and M1 by Stokes along the boundary of H(P) (the images of P's great arcs under
    l -> l + v are conics), each edge integral by a graded rule t = t0 + wd sinh(s) about its
    peak with 5 Gauss-Legendre nodes per side; the formulas and the guard on the Newton step
