@@ -561,18 +561,22 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    roughness squared), G2 the height-correlated Smith masking-shadowing; multiply by the
    light's radiance (and a Fresnel or specular colour) outside. No table. Method: the half-vector
    NDF integral and its first moment by Stokes along the edges' images, a first-order Taylor model
-   of the rest of the BRDF and a 7-point cubature of its remainder (derivation above;
-   docs/accuracy.md "GGX polygon lights"). nrm and view any non-zero vectors (normalised inside), nv
+   of the rest of the BRDF and an adaptive cubature of its remainder (7-point pieces split 1 -> 4
+   by an embedded rule's estimate and about the lobe where it meets the horizon, at most 128
+   splits; derivation above; docs/area-lights.md). nrm and view any non-zero vectors (normalised
+   inside), nv
    >= 3 (C: any count, fan pieces above SHLIGHT_POLYGON_MAX; GLSL: above it -1), alpha clamped to
    [1e-4, 1]. Degenerate inputs give 0: nv < 3, NaN or infinite input, zero normal or view, view at
    or below the horizon (nrm.view <= 0), NaN alpha, a light entirely below the horizon (exactly 0:
    the polygon is clipped first, so no light comes from below), a polygon through the shading point.
    Result >= 0. Accuracy against long double cubature (tests/ref/arearef.h) on the LTC comparison's
    sampler (docs/area-lights.md, bench/bench_ggx.c): median relative error 1e-6 to 5e-5 at
-   roughness 0.05 to 1 (LTC: 7e-5 to 0.11), p95 below 0.9 %; weakest at grazing views with very
-   large lights (up to 16 % for a light filling the hemisphere at alpha 0.04, view 85 deg).
-   Cost: 18k x86 instructions per quad (10 Gauss nodes per edge with exp, sincos, log; 7 or 28
-   cubature nodes per fan triangle), about 16x shl_polygon_phong FAST. */
+   roughness 0.05 to 1 (LTC: 7e-5 to 0.11), p95 below 0.08 %, max error / albedo <= 3.6e-3 at
+   every roughness (grazing views, lights straddling the horizon); weakest in the last degrees
+   before grazing (a light filling the hemisphere, alpha 0.04: 0.14 % at view 85 deg, 13 % at
+   88). Cost: 17.8k x86 instructions per quad on that sampler's mean, 14.2k where no piece is
+   split (93 % of its quads; 10 Gauss nodes per edge, 7 or 28 cubature nodes per fan triangle),
+   0.42M at the split budget (grazing views, narrow lobes on the horizon). */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
 
@@ -593,7 +597,7 @@ SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nr
    double cubature (tests/ref/arearef.h) on bench_ggx's sampler (bench/bench_beckmann.c,
    docs/area-lights.md): median relative error 3e-6 to 1e-4 at roughness 0.05 to 1, p95 below 0.7 %,
    max error / albedo <= 4.9e-2 (grazing views, lights straddling the horizon; up to 6.7e-2 in
-   test_microfacet's grazing set). Cost: 33k x86 instructions per quad
+   test_microfacet's grazing set). Cost: 27k x86 instructions per quad
    (shl_polygon_beckmann_subedges k = 8: ~220k).
  */
 SHLIGHT_INLINE float shl_polygon_beckmann(const float (*v)[3], int nv, const float nrm[3],
@@ -647,7 +651,7 @@ SHLIGHT_INLINE float shl_polygon_blinn_phong(const float (*v)[3], int nv, const 
    the held G2; without G2 k = 8 is within 1.1e-2); slivers 1.8e-3 at k = 8. Cost: ~48k / 115k /
    220k instructions per quad at k = 2 / 4 / 8. alpha clamped to [1e-4, 1]; NaN alpha and the
    degenerate inputs of shl_polygon_blinn_phong: 0. shl_polygon_beckmann computes the same integral
-   with G2 not held (worst 4.9e-2 of the albedo on bench_ggx's sampler, 33k instructions): prefer
+   with G2 not held (worst 4.9e-2 of the albedo on bench_ggx's sampler, 27k instructions): prefer
    it. */
 SHLIGHT_INLINE float shl_polygon_beckmann_subedges(const float (*v)[3], int nv, const float nrm[3],
                                                    const float view[3], float alpha, int subedges);
@@ -1233,6 +1237,12 @@ typedef double shli_real;
 #define SHLIGHT_FSQRT(x) shli_fsqrt(x)
 #define SHLIGHT_FLOG1P(x) shli_flog1p(x)
 #define SHLIGHT_FEXP(x) shli_fexp(x)
+/* the microfacet polygon lights' double transcendentals: shlight's own polynomials in C (>>edge),
+   the built-ins in GLSL */
+#define SHLIGHT_MEXP(x) shli_mexp(x)
+#define SHLIGHT_MLOG(x) shli_mlog(x)
+#define SHLIGHT_MSIN(x) shli_msincos((x), 0)
+#define SHLIGHT_MCOS(x) shli_msincos((x), 1)
 #define SHLIGHT_POLYGON_ANY 1 /* C: any nv >= 3 (fan pieces); GLSL 0: above the max gives -1 */
 #define SHLIGHT_CLIP_MAX 20   /* after two plane clips of a non-convex 8-gon (<= 2.25 nv) */
 #define SHLIGHT_EDGE_STOKES_ADAPT 105 /* internal: EXACT's adaptive Stokes rule */
@@ -1242,6 +1252,16 @@ typedef double shli_real;
   1                     /* GLSL: 0 unless the host defines it (compile cost, docs/accuracy.md) */
 #define SHLIGHT_LANES 8 /* edges per block of the FAST edge loop (GLSL: 1) */
 #define SHLIGHT_FAST_PAD (SHLIGHT_CLIP_MAX + SHLIGHT_LANES)
+/* shl_polygon_ggx's and shl_polygon_beckmann's adaptive remainder (internal): a piece is split
+   1 -> 4 where its error estimate exceeds SHLIGHT_GGX_TOL G1(view), or where the lobe is near
+   the horizon (n.l* < SHLIGHT_GGX_HOR alpha, alpha < 0.25) and the piece lies near l* and is
+   wider than SHLIGHT_GGX_KAP times the lobe's narrow width 2 alpha (h*.v); at most
+   SHLIGHT_GGX_SPLITS splits per call, SHLIGHT_GGX_DEPTH levels below a fan triangle */
+#define SHLIGHT_GGX_TOL 3.0e-4
+#define SHLIGHT_GGX_SPLITS 128
+#define SHLIGHT_GGX_DEPTH 8
+#define SHLIGHT_GGX_HOR 4.0
+#define SHLIGHT_GGX_KAP 3.0
 #define SHLIGHT_HALF_K                                                                             \
   8 /* sub-edges per light edge in half-vector space (shl_polygon_blinn_phong) */
 
@@ -5647,6 +5667,93 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
   return SHLIGHT_FLOAT(SHLIGHT_MAXR(par[3] * sum, 0.0) * 0.15915494309189534);
 }
 
+/* The microfacet polygon lights' transcendentals (SHLIGHT_MEXP, SHLIGHT_MLOG, SHLIGHT_MSIN,
+   SHLIGHT_MCOS; GLSL: the built-ins): shlight's own double polynomials in C, relative error
+   below 1e-15 (tests/test_ggx.c), a third of libm's instructions. exp: x clamped to
+   [-708, 709], x = k ln2 + r by a two-part ln2, Taylor to r^12 on |r| <= ln2 / 2, 2^k by the
+   exponent bits. log: x > 0 finite normal, x = 2^e m with m in [sqrt(1/2), sqrt(2)), 2 atanh
+   of s = (m - 1) / (m + 1) to s^17. sin, cos: t = k pi/2 + r by a two-part pi/2 (|t| < 1e5),
+   Taylor to r^15 / r^16 on |r| <= pi/4, the quadrant k mod 4 picking and negating them. */
+SHLIGHT_CPU_INLINE double shli_mexp(double x) {
+  double kd;
+  double r;
+  double p;
+  unsigned long long b;
+  x = x < -708.0 ? -708.0 : (x > 709.0 ? 709.0 : x);
+  kd = (x * 1.4426950408889634 + 6755399441055744.0) - 6755399441055744.0;
+  r = x - kd * 0.6931471803691238 - kd * 1.9082149292705877e-10;
+  p = 2.08767569878681e-09;
+  p = 2.505210838544172e-08 + r * p;
+  p = 2.755731922398589e-07 + r * p;
+  p = 2.7557319223985893e-06 + r * p;
+  p = 2.48015873015873e-05 + r * p;
+  p = 0.0001984126984126984 + r * p;
+  p = 0.001388888888888889 + r * p;
+  p = 0.008333333333333333 + r * p;
+  p = 0.041666666666666664 + r * p;
+  p = 0.16666666666666666 + r * p;
+  p = 0.5 + r * p;
+  p = 1.0 + r * (1.0 + r * p);
+  b = (unsigned long long)((int)kd + 1023) << 52;
+  memcpy(&r, &b, sizeof r);
+  return p * r;
+}
+SHLIGHT_CPU_INLINE double shli_mlog(double x) {
+  unsigned long long b;
+  int e;
+  double m;
+  double s;
+  double z;
+  double p;
+  memcpy(&b, &x, sizeof b);
+  e = (int)(b >> 52) - 1023;
+  b = (b & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL;
+  memcpy(&m, &b, sizeof m);
+  if (m > 1.4142135623730951) {
+    m = 0.5 * m;
+    e = e + 1;
+  }
+  s = (m - 1.0) / (m + 1.0);
+  z = s * s;
+  p = 1.0 / 17.0;
+  p = 1.0 / 15.0 + z * p;
+  p = 1.0 / 13.0 + z * p;
+  p = 1.0 / 11.0 + z * p;
+  p = 1.0 / 9.0 + z * p;
+  p = 1.0 / 7.0 + z * p;
+  p = 0.2 + z * p;
+  p = 1.0 / 3.0 + z * p;
+  return (double)e * 0.6931471803691238 +
+         ((double)e * 1.9082149292705877e-10 + 2.0 * s + 2.0 * s * (z * p));
+}
+/* sin (odd 0) or cos (odd 1) of t: r and the quadrant, then the pair (sin r, cos r) */
+SHLIGHT_CPU_INLINE double shli_msincos(double t, int odd) {
+  double kd = (t * 0.63661977236758134 + 6755399441055744.0) - 6755399441055744.0;
+  double r = t - kd * 1.5707963267341256 - kd * 6.077100506506192e-11;
+  double z = r * r;
+  double s;
+  double c;
+  int q = ((int)kd + odd) & 3;
+  s = -7.647163731819816e-13;
+  s = 1.6059043836821613e-10 + z * s;
+  s = -2.505210838544172e-08 + z * s;
+  s = 2.7557319223985893e-06 + z * s;
+  s = -0.0001984126984126984 + z * s;
+  s = 0.008333333333333333 + z * s;
+  s = -0.16666666666666666 + z * s;
+  s = r + r * (z * s);
+  c = 4.779477332387385e-14;
+  c = -1.1470745597729725e-11 + z * c;
+  c = 2.08767569878681e-09 + z * c;
+  c = -2.755731922398589e-07 + z * c;
+  c = 2.48015873015873e-05 + z * c;
+  c = -0.001388888888888889 + z * c;
+  c = 0.041666666666666664 + z * c;
+  c = 1.0 - 0.5 * z + z * z * c;
+  r = (q & 1) != 0 ? c : s;
+  return (q & 2) != 0 ? -r : r;
+}
+
 /* GGX polygon lights (shl_polygon_ggx). The light's integral
      L = integral over P (clipped to n.l > 0) of f(v, l) (n.l) dl = int D(h) G2(l, v) / (4 n.v) dl
    becomes, with dl = 4 (h.v) dh (h = (l + v) / |l + v|),
@@ -5658,8 +5765,9 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    k = D (h.n) / (4 h.v) (so that k dl = D (h.n) dh), g the gradient of w at h* (central
    differences), and the remainder by cubature over P: a fan from the direction of the vertex
    centroid, triangles wider than 53 deg split 1 -> 4 at their edge midpoints, a 7-point
-   degree-5 rule on each piece (the remainder is second order where D is narrow and smooth where D
-   is wide).
+   degree-5 rule on each piece, GGX's pieces split further where an estimate or the lobe's
+   closeness to the horizon asks (at the fan loop; the remainder is second order where D is
+   narrow and smooth where D is wide).
    A and M1 by Stokes along the boundary of H(P) (the images of P's great arcs under
    l -> l + v are conics), each edge integral by a graded rule t = t0 + wd sinh(s) about its
    peak with 5 Gauss-Legendre nodes per side; the formulas and the guard on the Newton step
@@ -5736,7 +5844,7 @@ SHLIGHT_INLINE shli_real shli_ggx_j(shli_real y, shli_real omy) {
     return p;
   }
   x = SHLIGHT_SQRTR(y);
-  return (1.0 / omy - 0.5 * SHLIGHT_LOGR((1.0 + x) * (1.0 + x) / omy) / x) / (2.0 * y);
+  return (1.0 / omy - 0.5 * SHLIGHT_MLOG((1.0 + x) * (1.0 + x) / omy) / x) / (2.0 * y);
 }
 
 /* w(l) = G2(l, v) (h.v) / ((n.v)(h.n)), h = (l + v) / |l + v|, l unit; 0 below the horizon.
@@ -5841,11 +5949,11 @@ SHLIGHT_INLINE void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli
     }
     hl = 0.5 * (hi - lo);
     s = lo + hl * (xs[j] + 1.0);
-    es = SHLIGHT_EXPR(s);
+    es = SHLIGHT_MEXP(s);
     jw = ws[j] * hl * wd * 0.5 * (es + 1.0 / es);
     s = t0 + wd * 0.5 * (es - 1.0 / es);
-    ct = SHLIGHT_COSR(s);
-    st = SHLIGHT_SINR(s);
+    ct = SHLIGHT_MCOS(s);
+    st = SHLIGHT_MSIN(s);
     /* l = ct a + st b, l' = -st a + ct b, Q = l + v */
     dx = ct * bx - st * ax;
     dy = ct * by - st * ay;
@@ -5874,7 +5982,7 @@ SHLIGHT_INLINE void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli
         /* (1 - exp(-u)) / |Q_xy|^2, u = |Q_xy|^2 / (alpha^2 Q_z^2); a series below u = 0.1
            (truncation u^7 / 8! < 3e-12) */
         u = qxy / (a2 * qn * qn);
-        e = SHLIGHT_EXPR(-u);
+        e = SHLIGHT_MEXP(-u);
         if (u < 0.1) {
           m = 1.0 / 5040.0;
           m = 1.0 / 720.0 - u * m;
@@ -5901,19 +6009,21 @@ SHLIGHT_INLINE void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli
 /* The remainder's integral, k(l) (w(l) - w* - g.(h - h*)) with k = D (h.n) / (4 h.v), over the
    spherical triangle of the directions (a, b, c) (any lengths, a non-negative combination
    spans it) by the 7-point degree-5 rule of Dunavant on the flat triangle and the Jacobian
-   det(a, b, c) / |p|^3 of the radial projection. */
-SHLIGHT_INLINE shli_real shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx,
-                                      shli_real by, shli_real bz, shli_real cx, shli_real cy,
-                                      shli_real cz, shli_real vx, shli_real vy, shli_real vz,
-                                      shli_real nx, shli_real ny, shli_real nz, shli_real a2,
-                                      shli_real lamv, shli_real ws, shli_real hx, shli_real hy,
-                                      shli_real hz, shli_real gx, shli_real gy, shli_real gz,
-                                      shli_real al, int ndf) {
+   det(a, b, c) / |p|^3 of the radial projection: out_q[0]; out_q[1] the same nodes' degree-2
+   rule (the centroid and the three outer nodes), whose difference from out_q[0] is the
+   piece's error estimate. */
+SHLIGHT_INLINE void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx,
+                                 shli_real by, shli_real bz, shli_real cx, shli_real cy,
+                                 shli_real cz, shli_real vx, shli_real vy, shli_real vz,
+                                 shli_real nx, shli_real ny, shli_real nz, shli_real a2,
+                                 shli_real lamv, shli_real ws, shli_real hx, shli_real hy,
+                                 shli_real hz, shli_real gx, shli_real gy, shli_real gz,
+                                 shli_real al, int ndf, shli_real *out_q) {
   shli_real tr[7];
   shli_real ts[7];
   shli_real tw[7];
   shli_real c = 1.0 - a2;
-  shli_real res = 0.0;
+  shli_real f = 0.0;
   shli_real det;
   shli_real qx;
   shli_real qy;
@@ -5955,6 +6065,8 @@ SHLIGHT_INLINE shli_real shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, 
   cx = cx - ax;
   cy = cy - ay;
   cz = cz - az;
+  out_q[0] = 0.0;
+  out_q[1] = 0.0;
   det = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
   for (k = 0; k < 7; ++k) {
     qx = ax + tr[k] * bx + ts[k] * cx;
@@ -5973,18 +6085,25 @@ SHLIGHT_INLINE shli_real shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, 
     f1 = SHLIGHT_SQRTR(f2);
     w = shli_ggx_w(qx, qy, qz, vx, vy, vz, nx, ny, nz, a2, lamv, al, ndf) - ws -
         (gx * (dx / f1 - hx) + gy * (dy / f1 - hy) + gz * (dz / f1 - hz));
+    f = 0.0;
     if (ndf == 0) {
       /* D = alpha^2 / (pi (1 - c (h.n)^2)^2), (h.n) / (h.v) = d / (l + v).v */
-      res = res + tw[k] * det / (q * q * q) * a2 * d /
-                      (12.566370614359173 * d0 * d0 * (dx * vx + dy * vy + dz * vz)) * w;
+      f = det / (q * q * q) * a2 * d /
+          (12.566370614359173 * d0 * d0 * (dx * vx + dy * vy + dz * vz)) * w;
     } else if (d > 0.0) {
       /* D_B (h.n) / (4 h.v) = exp(-(f2 - d^2) / (alpha^2 d^2)) f2^2 / (4 pi alpha^2 d^3 (l + v).v),
          d = (l + v).n, f2 = |l + v|^2 */
-      res = res + tw[k] * det / (q * q * q) * SHLIGHT_EXPR(-(f2 - d * d) / (a2 * d * d)) * f2 * f2 /
-                      (12.566370614359173 * a2 * d * d * d * (dx * vx + dy * vy + dz * vz)) * w;
+      f = det / (q * q * q) * SHLIGHT_MEXP(-(f2 - d * d) / (a2 * d * d)) * f2 * f2 /
+          (12.566370614359173 * a2 * d * d * d * (dx * vx + dy * vy + dz * vz)) * w;
+    }
+    out_q[0] = out_q[0] + tw[k] * f;
+    /* the embedded degree-2 rule: the centroid 0.48412, the three outer nodes 0.17196 each */
+    if (k == 0) {
+      out_q[1] = out_q[1] + 0.24206145913796356 * f;
+    } else if (k > 3) {
+      out_q[1] = out_q[1] + 0.085979513620678810 * f;
     }
   }
-  return res;
 }
 
 /* The body of shl_polygon_ggx (ndf 0) and shl_polygon_beckmann (ndf 1): the same
@@ -5996,6 +6115,8 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   shli_real py[SHLIGHT_CLIP_MAX];
   shli_real pz[SHLIGHT_CLIP_MAX];
   shli_real am[2];
+  shli_real rq[2];
+  int dg[SHLIGHT_GGX_DEPTH];
   shli_real tr[7];
   shli_real ts[7];
   shli_real tw[7];
@@ -6066,12 +6187,22 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   shli_real res = 0.0;
   shli_real w;
   shli_real sp;
+  shli_real lsx;
+  shli_real lsy;
+  shli_real lsz;
+  shli_real pc;
+  shli_real tol;
   shli_real ori = 1.0;
   shli_real ox = 0.0;
   shli_real oy = 0.0;
   shli_real oz = 0.0;
+  int spl;
+  int npk;
+  int nsp;
+  int dmin;
+  int dep;
+  int it;
   int inside = 1;
-  int np;
   int nc;
   int i;
   int j;
@@ -6262,8 +6393,8 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
       bz = ex * ay - ey * ax;
       t0 = shli_atan2r(rx * bx + ry * by + rz * bz, rx * ax + ry * ay + rz * az);
       for (k = 0; k < 2; ++k) {
-        ct = SHLIGHT_COSR(t0);
-        st = SHLIGHT_SINR(t0);
+        ct = SHLIGHT_MCOS(t0);
+        st = SHLIGHT_MSIN(t0);
         qx = ct * ax + st * bx + vx;
         qy = ct * ay + st * by + vy;
         qz = ct * az + st * bz + vz;
@@ -6289,9 +6420,9 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
       sa = -t0 / wd;
       sb = (phi - t0) / wd;
       sa = SHLIGHT_REAL(SHLIGHT_SIGN1(sa)) *
-           SHLIGHT_LOGR(SHLIGHT_ABSR(sa) + SHLIGHT_SQRTR(sa * sa + 1.0));
+           SHLIGHT_MLOG(SHLIGHT_ABSR(sa) + SHLIGHT_SQRTR(sa * sa + 1.0));
       sb = SHLIGHT_REAL(SHLIGHT_SIGN1(sb)) *
-           SHLIGHT_LOGR(SHLIGHT_ABSR(sb) + SHLIGHT_SQRTR(sb * sb + 1.0));
+           SHLIGHT_MLOG(SHLIGHT_ABSR(sb) + SHLIGHT_SQRTR(sb * sb + 1.0));
       shli_ggx_side(sa, sb, t0, wd, ax, ay, az, bx, by, bz, vx, vy, vz, nx, ny, nz, a2, gx, gy, gz,
                     i1, al, ndf, am);
     }
@@ -6300,7 +6431,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   /* the remainder: a fan from the vertex centroid's direction, a triangle with a side over 53
      deg (cos < 0.6; Beckmann: 26 deg, cos < 0.9, halving its worst error / albedo on
      bench_beckmann's sampler from 0.11 to 0.049) split 1 -> 4 at its edge midpoints, the 7-point
-     degree-5 rule (Dunavant) on each piece */
+     degree-5 rule (Dunavant) on each piece, pieces split further by the adaptive rule below */
   sx = ox;
   sy = oy;
   sz = oz;
@@ -6318,6 +6449,30 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   if (ndf != 0) {
     sp = 0.9;
   }
+  /* adaptive pieces (SHLIGHT_GGX_TOL and the rest at >>prelude): a piece is split 1 -> 4 where
+     its estimate |Q7 - Q2| exceeds SHLIGHT_GGX_TOL G1(v) or the graded rule below asks for it;
+     the traversal is depth-first by the digits dg[] of the piece's path, its vertices found by
+     descending from the fan triangle. Each fan triangle's loop runs at most
+     5 + 4 SHLIGHT_GGX_SPLITS times, all of them together at most 5 nc + 4 SHLIGHT_GGX_SPLITS
+     (GLSL's loop budget: docs/area-lights.md). */
+  tol = SHLIGHT_GGX_TOL / (1.0 + lamv);
+  if (ndf != 0) { /* Beckmann: the fixed pieces (adaptive ones measured mixed on its sampler) */
+    tol = 1.0e30;
+  }
+  rq[0] = 0.0;
+  rq[1] = 0.0;
+  d = 2.0 * (hx * vx + hy * vy + hz * vz);
+  lsx = d * hx - vx;
+  lsy = d * hy - vy;
+  lsz = d * hz - vz;
+  /* graded refinement about l* where the lobe is near the horizon (n.l* < SHLIGHT_GGX_HOR alpha):
+     pieces near l* are split down to a radius of SHLIGHT_GGX_KAP 2 alpha (h*.v) */
+  pc = -2.0;
+  if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && al < 0.25 && ndf == 0) {
+    q = SHLIGHT_GGX_KAP * al * d;
+    pc = 1.0 - 0.5 * q * q;
+  }
+  nsp = 0;
   for (i = 0; i < nc; ++i) {
     j = i + 1;
     if (j == nc) {
@@ -6329,66 +6484,127 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
     bx = px[j];
     by = py[j];
     bz = pz[j];
-    tr[0] = sx + ax;
-    ts[0] = sy + ay;
-    tw[0] = sz + az;
-    tr[1] = ax + bx;
-    ts[1] = ay + by;
-    tw[1] = az + bz;
-    tr[2] = bx + sx;
-    ts[2] = by + sy;
-    tw[2] = bz + sz;
-    np = 1;
+    dmin = 0;
     if (sx * ax + sy * ay + sz * az < sp || sx * bx + sy * by + sz * bz < sp ||
         ax * bx + ay * by + az * bz < sp) {
-      np = 4;
+      dmin = 1;
     }
-    for (k = 0; k < np; ++k) {
-      /* (c, m0, m2), (m0, a, m1), (m2, m1, b), (m0, m1, m2): c centroid, a b the edge */
-      tr[3] = tr[0];
-      ts[3] = ts[0];
-      tw[3] = tw[0];
-      tr[4] = tr[1];
-      ts[4] = ts[1];
-      tw[4] = tw[1];
-      tr[5] = tr[2];
-      ts[5] = ts[2];
-      tw[5] = tw[2];
-      if (k == 0) {
-        tr[3] = sx;
-        ts[3] = sy;
-        tw[3] = sz;
-        tr[4] = tr[0];
-        ts[4] = ts[0];
-        tw[4] = tw[0];
-      } else if (k == 1) {
-        tr[3] = tr[0];
-        ts[3] = ts[0];
-        tw[3] = tw[0];
-        tr[4] = ax;
-        ts[4] = ay;
-        tw[4] = az;
-        tr[5] = tr[1];
-        ts[5] = ts[1];
-        tw[5] = tw[1];
-      } else if (k == 2) {
-        tr[3] = tr[2];
-        ts[3] = ts[2];
-        tw[3] = tw[2];
-        tr[5] = bx;
-        ts[5] = by;
-        tw[5] = bz;
+    dep = 0;
+    for (it = 0; it < 5 + 4 * SHLIGHT_GGX_SPLITS; ++it) {
+      /* the piece's vertices (tr, ts, tw)[0..2]: from (centroid, a, b) down its path; the
+         children of (p0, p1, p2) are (p0, m0, m2), (m0, p1, m1), (m2, m1, p2), (m0, m1, m2) with
+         m0 = p0 + p1, m1 = p1 + p2, m2 = p2 + p0 */
+      tr[0] = sx;
+      ts[0] = sy;
+      tw[0] = sz;
+      tr[1] = ax;
+      ts[1] = ay;
+      tw[1] = az;
+      tr[2] = bx;
+      ts[2] = by;
+      tw[2] = bz;
+      for (k = 0; k < dep; ++k) {
+        tr[3] = tr[0] + tr[1];
+        ts[3] = ts[0] + ts[1];
+        tw[3] = tw[0] + tw[1];
+        tr[4] = tr[1] + tr[2];
+        ts[4] = ts[1] + ts[2];
+        tw[4] = tw[1] + tw[2];
+        tr[5] = tr[2] + tr[0];
+        ts[5] = ts[2] + ts[0];
+        tw[5] = tw[2] + tw[0];
+        if (dg[k] != 0) {
+          tr[0] = tr[3];
+          ts[0] = ts[3];
+          tw[0] = tw[3];
+        }
+        if (dg[k] == 2) {
+          tr[0] = tr[5];
+          ts[0] = ts[5];
+          tw[0] = tw[5];
+        }
+        if (dg[k] != 1) {
+          tr[1] = tr[3];
+          ts[1] = ts[3];
+          tw[1] = tw[3];
+        }
+        if (dg[k] >= 2) {
+          tr[1] = tr[4];
+          ts[1] = ts[4];
+          tw[1] = tw[4];
+        }
+        if (dg[k] == 0) {
+          tr[2] = tr[5];
+          ts[2] = ts[5];
+          tw[2] = tw[5];
+        }
+        if (dg[k] == 1) {
+          tr[2] = tr[4];
+          ts[2] = ts[4];
+          tw[2] = tw[4];
+        }
+        if (dg[k] == 3) {
+          tr[2] = tr[5];
+          ts[2] = ts[5];
+          tw[2] = tw[5];
+        }
       }
-      if (np == 1) {
-        tr[4] = ax;
-        ts[4] = ay;
-        tw[4] = az;
-        tr[5] = bx;
-        ts[5] = by;
-        tw[5] = bz;
+      /* near l* (graded refinement only): the piece's centroid direction c within twice its
+         radius (cosine d) of l*, and the radius above the stop */
+      npk = 0;
+      if (pc > -1.0) {
+        ex = tr[0] + tr[1] + tr[2];
+        ey = ts[0] + ts[1] + ts[2];
+        ez = tw[0] + tw[1] + tw[2];
+        q = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
+        ex = ex / q;
+        ey = ey / q;
+        ez = ez / q;
+        d = 1.0;
+        for (k = 0; k < 3; ++k) {
+          q = (ex * tr[k] + ey * ts[k] + ez * tw[k]) /
+              SHLIGHT_SQRTR(tr[k] * tr[k] + ts[k] * ts[k] + tw[k] * tw[k]);
+          d = SHLIGHT_MINR(d, q);
+        }
+        if (ex * lsx + ey * lsy + ez * lsz >= 2.0 * d * d - 1.0 && d < pc) {
+          npk = 1;
+        }
       }
-      res = res + shli_ggx_tri(tr[3], ts[3], tw[3], tr[4], ts[4], tw[4], tr[5], ts[5], tw[5], vx,
-                               vy, vz, nx, ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf);
+      /* split: 1 forced (a wide fan triangle), 2 graded or by the estimate (counted); a piece
+         the graded rule splits is not evaluated */
+      spl = 0;
+      if (dep < dmin) {
+        spl = 1;
+      } else if (dep < SHLIGHT_GGX_DEPTH && nsp < SHLIGHT_GGX_SPLITS && npk != 0) {
+        spl = 2;
+      }
+      if (spl == 0) {
+        shli_ggx_tri(tr[0], ts[0], tw[0], tr[1], ts[1], tw[1], tr[2], ts[2], tw[2], vx, vy, vz, nx,
+                     ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf, rq);
+        if (dep < SHLIGHT_GGX_DEPTH && nsp < SHLIGHT_GGX_SPLITS &&
+            SHLIGHT_ABSR(rq[0] - rq[1]) > tol) {
+          spl = 2;
+        }
+      }
+      if (spl != 0) {
+        if (spl == 2) {
+          nsp = nsp + 1;
+        }
+        dg[dep] = 0;
+        dep = dep + 1;
+      } else {
+        res = res + rq[0];
+        /* the next piece: up past the last children, then the next sibling */
+        for (k = 0; k < SHLIGHT_GGX_DEPTH; ++k) {
+          if (dep > 0 && dg[dep - 1] == 3) {
+            dep = dep - 1;
+          }
+        }
+        if (dep == 0) {
+          break;
+        }
+        dg[dep - 1] = dg[dep - 1] + 1;
+      }
     }
   }
   q = ori * (aa * ws - am[1] * a2 * 0.31830988618379067 - (gx * hx + gy * hy + gz * hz) * aa + res);

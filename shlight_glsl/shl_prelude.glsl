@@ -47,6 +47,10 @@
 #define SHLIGHT_FSQRT(x) sqrt(x)
 #define SHLIGHT_FLOG1P(x) ((x) < 0.01 ? (x) * (1.0 - (x) * (0.5 - (x) * (0.33333333 - 0.25 * (x)))) : log(1.0 + (x)))
 #define SHLIGHT_FEXP(x) exp(x)
+#define SHLIGHT_MEXP(x) exp(x)
+#define SHLIGHT_MLOG(x) log(x)
+#define SHLIGHT_MSIN(x) sin(x)
+#define SHLIGHT_MCOS(x) cos(x)
 #define SHLIGHT_EDGE_EXACT 0
 #define SHLIGHT_EDGE_LORENTZ 1
 #define SHLIGHT_EDGE_LORENTZ_PEARSON 2
@@ -68,4 +72,9 @@
 #define SHLIGHT_LANES 1
 #define SHLIGHT_FAST_PAD (SHLIGHT_CLIP_MAX + SHLIGHT_LANES)
 #define SHLIGHT_HALF_K 8
+#define SHLIGHT_GGX_TOL 3.0e-4
+#define SHLIGHT_GGX_SPLITS 128
+#define SHLIGHT_GGX_DEPTH 8
+#define SHLIGHT_GGX_HOR 4.0
+#define SHLIGHT_GGX_KAP 3.0
 #endif

@@ -178,6 +178,10 @@ precision highp int;
 #define SHLIGHT_FSQRT(x) sqrt(x)
 #define SHLIGHT_FLOG1P(x) ((x) < 0.01 ? (x) * (1.0 - (x) * (0.5 - (x) * (0.33333333 - 0.25 * (x)))) : log(1.0 + (x)))
 #define SHLIGHT_FEXP(x) exp(x)
+#define SHLIGHT_MEXP(x) exp(x)
+#define SHLIGHT_MLOG(x) log(x)
+#define SHLIGHT_MSIN(x) sin(x)
+#define SHLIGHT_MCOS(x) cos(x)
 #define SHLIGHT_EDGE_EXACT 0
 #define SHLIGHT_EDGE_LORENTZ 1
 #define SHLIGHT_EDGE_LORENTZ_PEARSON 2
@@ -199,6 +203,11 @@ precision highp int;
 #define SHLIGHT_LANES 1
 #define SHLIGHT_FAST_PAD (SHLIGHT_CLIP_MAX + SHLIGHT_LANES)
 #define SHLIGHT_HALF_K 8
+#define SHLIGHT_GGX_TOL 3.0e-4
+#define SHLIGHT_GGX_SPLITS 128
+#define SHLIGHT_GGX_DEPTH 8
+#define SHLIGHT_GGX_HOR 4.0
+#define SHLIGHT_GGX_KAP 3.0
 #endif
 
 #ifdef SHLIGHT_GLSL_BASIS
@@ -6087,7 +6096,7 @@ shli_real shli_ggx_j(shli_real y, shli_real omy) {
     return p;
   }
   x = SHLIGHT_SQRTR(y);
-  return (1.0 / omy - 0.5 * SHLIGHT_LOGR((1.0 + x) * (1.0 + x) / omy) / x) / (2.0 * y);
+  return (1.0 / omy - 0.5 * SHLIGHT_MLOG((1.0 + x) * (1.0 + x) / omy) / x) / (2.0 * y);
 }
 
 shli_real shli_ggx_w(shli_real lx, shli_real ly, shli_real lz, shli_real vx, shli_real vy,
@@ -6182,11 +6191,11 @@ void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli_real wd, shli_
     }
     hl = 0.5 * (hi - lo);
     s = lo + hl * (xs[j] + 1.0);
-    es = SHLIGHT_EXPR(s);
+    es = SHLIGHT_MEXP(s);
     jw = ws[j] * hl * wd * 0.5 * (es + 1.0 / es);
     s = t0 + wd * 0.5 * (es - 1.0 / es);
-    ct = SHLIGHT_COSR(s);
-    st = SHLIGHT_SINR(s);
+    ct = SHLIGHT_MCOS(s);
+    st = SHLIGHT_MSIN(s);
     /* l = ct a + st b, l' = -st a + ct b, Q = l + v */
     dx = ct * bx - st * ax;
     dy = ct * by - st * ay;
@@ -6215,7 +6224,7 @@ void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli_real wd, shli_
         /* (1 - exp(-u)) / |Q_xy|^2, u = |Q_xy|^2 / (alpha^2 Q_z^2); a series below u = 0.1
            (truncation u^7 / 8! < 3e-12) */
         u = qxy / (a2 * qn * qn);
-        e = SHLIGHT_EXPR(-u);
+        e = SHLIGHT_MEXP(-u);
         if (u < 0.1) {
           m = 1.0 / 5040.0;
           m = 1.0 / 720.0 - u * m;
@@ -6239,17 +6248,17 @@ void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli_real wd, shli_
   }
 }
 
-shli_real shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
-                       shli_real bz, shli_real cx, shli_real cy, shli_real cz, shli_real vx,
-                       shli_real vy, shli_real vz, shli_real nx, shli_real ny, shli_real nz,
-                       shli_real a2, shli_real lamv, shli_real ws, shli_real hx, shli_real hy,
-                       shli_real hz, shli_real gx, shli_real gy, shli_real gz, shli_real al,
-                       int ndf) {
+void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
+                  shli_real bz, shli_real cx, shli_real cy, shli_real cz, shli_real vx,
+                  shli_real vy, shli_real vz, shli_real nx, shli_real ny, shli_real nz,
+                  shli_real a2, shli_real lamv, shli_real ws, shli_real hx, shli_real hy,
+                  shli_real hz, shli_real gx, shli_real gy, shli_real gz, shli_real al, int ndf,
+                  out shli_real out_q[SHLIGHT_MAX_COEFFS]) {
   shli_real tr[7];
   shli_real ts[7];
   shli_real tw[7];
   shli_real c = 1.0 - a2;
-  shli_real res = 0.0;
+  shli_real f = 0.0;
   shli_real det;
   shli_real qx;
   shli_real qy;
@@ -6291,6 +6300,8 @@ shli_real shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, s
   cx = cx - ax;
   cy = cy - ay;
   cz = cz - az;
+  out_q[0] = 0.0;
+  out_q[1] = 0.0;
   det = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
   for (k = 0; k < 7; ++k) {
     qx = ax + tr[k] * bx + ts[k] * cx;
@@ -6309,18 +6320,25 @@ shli_real shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, s
     f1 = SHLIGHT_SQRTR(f2);
     w = shli_ggx_w(qx, qy, qz, vx, vy, vz, nx, ny, nz, a2, lamv, al, ndf) - ws -
         (gx * (dx / f1 - hx) + gy * (dy / f1 - hy) + gz * (dz / f1 - hz));
+    f = 0.0;
     if (ndf == 0) {
       /* D = alpha^2 / (pi (1 - c (h.n)^2)^2), (h.n) / (h.v) = d / (l + v).v */
-      res = res + tw[k] * det / (q * q * q) * a2 * d /
-                      (12.566370614359173 * d0 * d0 * (dx * vx + dy * vy + dz * vz)) * w;
+      f = det / (q * q * q) * a2 * d /
+          (12.566370614359173 * d0 * d0 * (dx * vx + dy * vy + dz * vz)) * w;
     } else if (d > 0.0) {
       /* D_B (h.n) / (4 h.v) = exp(-(f2 - d^2) / (alpha^2 d^2)) f2^2 / (4 pi alpha^2 d^3 (l + v).v),
          d = (l + v).n, f2 = |l + v|^2 */
-      res = res + tw[k] * det / (q * q * q) * SHLIGHT_EXPR(-(f2 - d * d) / (a2 * d * d)) * f2 * f2 /
-                      (12.566370614359173 * a2 * d * d * d * (dx * vx + dy * vy + dz * vz)) * w;
+      f = det / (q * q * q) * SHLIGHT_MEXP(-(f2 - d * d) / (a2 * d * d)) * f2 * f2 /
+          (12.566370614359173 * a2 * d * d * d * (dx * vx + dy * vy + dz * vz)) * w;
+    }
+    out_q[0] = out_q[0] + tw[k] * f;
+    /* the embedded degree-2 rule: the centroid 0.48412, the three outer nodes 0.17196 each */
+    if (k == 0) {
+      out_q[1] = out_q[1] + 0.24206145913796356 * f;
+    } else if (k > 3) {
+      out_q[1] = out_q[1] + 0.085979513620678810 * f;
     }
   }
-  return res;
 }
 
 float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha,
@@ -6329,6 +6347,8 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   shli_real py[SHLIGHT_CLIP_MAX];
   shli_real pz[SHLIGHT_CLIP_MAX];
   shli_real am[2];
+  shli_real rq[2];
+  int dg[SHLIGHT_GGX_DEPTH];
   shli_real tr[7];
   shli_real ts[7];
   shli_real tw[7];
@@ -6399,12 +6419,22 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   shli_real res = 0.0;
   shli_real w;
   shli_real sp;
+  shli_real lsx;
+  shli_real lsy;
+  shli_real lsz;
+  shli_real pc;
+  shli_real tol;
   shli_real ori = 1.0;
   shli_real ox = 0.0;
   shli_real oy = 0.0;
   shli_real oz = 0.0;
+  int spl;
+  int npk;
+  int nsp;
+  int dmin;
+  int dep;
+  int it;
   int inside = 1;
-  int np;
   int nc;
   int i;
   int j;
@@ -6595,8 +6625,8 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
       bz = ex * ay - ey * ax;
       t0 = shli_atan2r(rx * bx + ry * by + rz * bz, rx * ax + ry * ay + rz * az);
       for (k = 0; k < 2; ++k) {
-        ct = SHLIGHT_COSR(t0);
-        st = SHLIGHT_SINR(t0);
+        ct = SHLIGHT_MCOS(t0);
+        st = SHLIGHT_MSIN(t0);
         qx = ct * ax + st * bx + vx;
         qy = ct * ay + st * by + vy;
         qz = ct * az + st * bz + vz;
@@ -6622,9 +6652,9 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
       sa = -t0 / wd;
       sb = (phi - t0) / wd;
       sa = SHLIGHT_REAL(SHLIGHT_SIGN1(sa)) *
-           SHLIGHT_LOGR(SHLIGHT_ABSR(sa) + SHLIGHT_SQRTR(sa * sa + 1.0));
+           SHLIGHT_MLOG(SHLIGHT_ABSR(sa) + SHLIGHT_SQRTR(sa * sa + 1.0));
       sb = SHLIGHT_REAL(SHLIGHT_SIGN1(sb)) *
-           SHLIGHT_LOGR(SHLIGHT_ABSR(sb) + SHLIGHT_SQRTR(sb * sb + 1.0));
+           SHLIGHT_MLOG(SHLIGHT_ABSR(sb) + SHLIGHT_SQRTR(sb * sb + 1.0));
       shli_ggx_side(sa, sb, t0, wd, ax, ay, az, bx, by, bz, vx, vy, vz, nx, ny, nz, a2, gx, gy, gz,
                     i1, al, ndf, am);
     }
@@ -6633,7 +6663,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   /* the remainder: a fan from the vertex centroid's direction, a triangle with a side over 53
      deg (cos < 0.6; Beckmann: 26 deg, cos < 0.9, halving its worst error / albedo on
      bench_beckmann's sampler from 0.11 to 0.049) split 1 -> 4 at its edge midpoints, the 7-point
-     degree-5 rule (Dunavant) on each piece */
+     degree-5 rule (Dunavant) on each piece, pieces split further by the adaptive rule below */
   sx = ox;
   sy = oy;
   sz = oz;
@@ -6651,6 +6681,30 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   if (ndf != 0) {
     sp = 0.9;
   }
+  /* adaptive pieces (SHLIGHT_GGX_TOL and the rest at >>prelude): a piece is split 1 -> 4 where
+     its estimate |Q7 - Q2| exceeds SHLIGHT_GGX_TOL G1(v) or the graded rule below asks for it;
+     the traversal is depth-first by the digits dg[] of the piece's path, its vertices found by
+     descending from the fan triangle. Each fan triangle's loop runs at most
+     5 + 4 SHLIGHT_GGX_SPLITS times, all of them together at most 5 nc + 4 SHLIGHT_GGX_SPLITS
+     (GLSL's loop budget: docs/area-lights.md). */
+  tol = SHLIGHT_GGX_TOL / (1.0 + lamv);
+  if (ndf != 0) { /* Beckmann: the fixed pieces (adaptive ones measured mixed on its sampler) */
+    tol = 1.0e30;
+  }
+  rq[0] = 0.0;
+  rq[1] = 0.0;
+  d = 2.0 * (hx * vx + hy * vy + hz * vz);
+  lsx = d * hx - vx;
+  lsy = d * hy - vy;
+  lsz = d * hz - vz;
+  /* graded refinement about l* where the lobe is near the horizon (n.l* < SHLIGHT_GGX_HOR alpha):
+     pieces near l* are split down to a radius of SHLIGHT_GGX_KAP 2 alpha (h*.v) */
+  pc = -2.0;
+  if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && al < 0.25 && ndf == 0) {
+    q = SHLIGHT_GGX_KAP * al * d;
+    pc = 1.0 - 0.5 * q * q;
+  }
+  nsp = 0;
   for (i = 0; i < nc; ++i) {
     j = i + 1;
     if (j == nc) {
@@ -6662,66 +6716,127 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
     bx = px[j];
     by = py[j];
     bz = pz[j];
-    tr[0] = sx + ax;
-    ts[0] = sy + ay;
-    tw[0] = sz + az;
-    tr[1] = ax + bx;
-    ts[1] = ay + by;
-    tw[1] = az + bz;
-    tr[2] = bx + sx;
-    ts[2] = by + sy;
-    tw[2] = bz + sz;
-    np = 1;
+    dmin = 0;
     if (sx * ax + sy * ay + sz * az < sp || sx * bx + sy * by + sz * bz < sp ||
         ax * bx + ay * by + az * bz < sp) {
-      np = 4;
+      dmin = 1;
     }
-    for (k = 0; k < np; ++k) {
-      /* (c, m0, m2), (m0, a, m1), (m2, m1, b), (m0, m1, m2): c centroid, a b the edge */
-      tr[3] = tr[0];
-      ts[3] = ts[0];
-      tw[3] = tw[0];
-      tr[4] = tr[1];
-      ts[4] = ts[1];
-      tw[4] = tw[1];
-      tr[5] = tr[2];
-      ts[5] = ts[2];
-      tw[5] = tw[2];
-      if (k == 0) {
-        tr[3] = sx;
-        ts[3] = sy;
-        tw[3] = sz;
-        tr[4] = tr[0];
-        ts[4] = ts[0];
-        tw[4] = tw[0];
-      } else if (k == 1) {
-        tr[3] = tr[0];
-        ts[3] = ts[0];
-        tw[3] = tw[0];
-        tr[4] = ax;
-        ts[4] = ay;
-        tw[4] = az;
-        tr[5] = tr[1];
-        ts[5] = ts[1];
-        tw[5] = tw[1];
-      } else if (k == 2) {
-        tr[3] = tr[2];
-        ts[3] = ts[2];
-        tw[3] = tw[2];
-        tr[5] = bx;
-        ts[5] = by;
-        tw[5] = bz;
+    dep = 0;
+    for (it = 0; it < 5 + 4 * SHLIGHT_GGX_SPLITS; ++it) {
+      /* the piece's vertices (tr, ts, tw)[0..2]: from (centroid, a, b) down its path; the
+         children of (p0, p1, p2) are (p0, m0, m2), (m0, p1, m1), (m2, m1, p2), (m0, m1, m2) with
+         m0 = p0 + p1, m1 = p1 + p2, m2 = p2 + p0 */
+      tr[0] = sx;
+      ts[0] = sy;
+      tw[0] = sz;
+      tr[1] = ax;
+      ts[1] = ay;
+      tw[1] = az;
+      tr[2] = bx;
+      ts[2] = by;
+      tw[2] = bz;
+      for (k = 0; k < dep; ++k) {
+        tr[3] = tr[0] + tr[1];
+        ts[3] = ts[0] + ts[1];
+        tw[3] = tw[0] + tw[1];
+        tr[4] = tr[1] + tr[2];
+        ts[4] = ts[1] + ts[2];
+        tw[4] = tw[1] + tw[2];
+        tr[5] = tr[2] + tr[0];
+        ts[5] = ts[2] + ts[0];
+        tw[5] = tw[2] + tw[0];
+        if (dg[k] != 0) {
+          tr[0] = tr[3];
+          ts[0] = ts[3];
+          tw[0] = tw[3];
+        }
+        if (dg[k] == 2) {
+          tr[0] = tr[5];
+          ts[0] = ts[5];
+          tw[0] = tw[5];
+        }
+        if (dg[k] != 1) {
+          tr[1] = tr[3];
+          ts[1] = ts[3];
+          tw[1] = tw[3];
+        }
+        if (dg[k] >= 2) {
+          tr[1] = tr[4];
+          ts[1] = ts[4];
+          tw[1] = tw[4];
+        }
+        if (dg[k] == 0) {
+          tr[2] = tr[5];
+          ts[2] = ts[5];
+          tw[2] = tw[5];
+        }
+        if (dg[k] == 1) {
+          tr[2] = tr[4];
+          ts[2] = ts[4];
+          tw[2] = tw[4];
+        }
+        if (dg[k] == 3) {
+          tr[2] = tr[5];
+          ts[2] = ts[5];
+          tw[2] = tw[5];
+        }
       }
-      if (np == 1) {
-        tr[4] = ax;
-        ts[4] = ay;
-        tw[4] = az;
-        tr[5] = bx;
-        ts[5] = by;
-        tw[5] = bz;
+      /* near l* (graded refinement only): the piece's centroid direction c within twice its
+         radius (cosine d) of l*, and the radius above the stop */
+      npk = 0;
+      if (pc > -1.0) {
+        ex = tr[0] + tr[1] + tr[2];
+        ey = ts[0] + ts[1] + ts[2];
+        ez = tw[0] + tw[1] + tw[2];
+        q = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
+        ex = ex / q;
+        ey = ey / q;
+        ez = ez / q;
+        d = 1.0;
+        for (k = 0; k < 3; ++k) {
+          q = (ex * tr[k] + ey * ts[k] + ez * tw[k]) /
+              SHLIGHT_SQRTR(tr[k] * tr[k] + ts[k] * ts[k] + tw[k] * tw[k]);
+          d = SHLIGHT_MINR(d, q);
+        }
+        if (ex * lsx + ey * lsy + ez * lsz >= 2.0 * d * d - 1.0 && d < pc) {
+          npk = 1;
+        }
       }
-      res = res + shli_ggx_tri(tr[3], ts[3], tw[3], tr[4], ts[4], tw[4], tr[5], ts[5], tw[5], vx,
-                               vy, vz, nx, ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf);
+      /* split: 1 forced (a wide fan triangle), 2 graded or by the estimate (counted); a piece
+         the graded rule splits is not evaluated */
+      spl = 0;
+      if (dep < dmin) {
+        spl = 1;
+      } else if (dep < SHLIGHT_GGX_DEPTH && nsp < SHLIGHT_GGX_SPLITS && npk != 0) {
+        spl = 2;
+      }
+      if (spl == 0) {
+        shli_ggx_tri(tr[0], ts[0], tw[0], tr[1], ts[1], tw[1], tr[2], ts[2], tw[2], vx, vy, vz, nx,
+                     ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf, rq);
+        if (dep < SHLIGHT_GGX_DEPTH && nsp < SHLIGHT_GGX_SPLITS &&
+            SHLIGHT_ABSR(rq[0] - rq[1]) > tol) {
+          spl = 2;
+        }
+      }
+      if (spl != 0) {
+        if (spl == 2) {
+          nsp = nsp + 1;
+        }
+        dg[dep] = 0;
+        dep = dep + 1;
+      } else {
+        res = res + rq[0];
+        /* the next piece: up past the last children, then the next sibling */
+        for (k = 0; k < SHLIGHT_GGX_DEPTH; ++k) {
+          if (dep > 0 && dg[dep - 1] == 3) {
+            dep = dep - 1;
+          }
+        }
+        if (dep == 0) {
+          break;
+        }
+        dg[dep - 1] = dg[dep - 1] + 1;
+      }
     }
   }
   q = ori * (aa * ws - am[1] * a2 * 0.31830988618379067 - (gx * hx + gy * hy + gz * hz) * aa + res);
