@@ -267,16 +267,15 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
   int m;
   int k;
   int q;
+#if SHLIGHT_ROTATE_FAST
+  if (n >= 1 && n <= SHLI_ROT_FAST_BANDS && shli_sh_rotate_fast(n, R, sh, out_sh)) {
+    return;
+  }
+#endif
   n = shli_bands(n);
   if (n < 1) {
     return;
   }
-#if SHLIGHT_ROTATE_FAST
-  if (n <= SHLI_ROT_FAST_BANDS) {
-    shli_sh_rotate_fast(n, R, sh, out_sh);
-    return;
-  }
-#endif
   /* beta: sin from R's third column (accurate near 0 and pi), cos = R_22 */
   sb = SHLIGHT_SQRTR(SHLIGHT_REAL(R[2]) * SHLIGHT_REAL(R[2]) +
                      SHLIGHT_REAL(R[5]) * SHLIGHT_REAL(R[5]));
