@@ -3074,7 +3074,8 @@ SHLIGHT_CPU_INLINE int shli_sh_rotate_fast(int n, const float R[9], const float 
 }
 #endif
 
-SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh) {
+/* shl_sh_rotate's portable kernel, n in 1..SHLIGHT_MAX_BANDS (the method: see the contract) */
+SHLIGHT_INLINE void shli_sh_rotate_any(int n, const float R[9], const float *sh, float *out_sh) {
   shli_real pc[2 * SHLIGHT_MAX_BANDS];
   shli_real ps[2 * SHLIGHT_MAX_BANDS];
   shli_real ca[SHLIGHT_MAX_BANDS];
@@ -3111,15 +3112,6 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
   int m;
   int k;
   int q;
-#if SHLIGHT_ROTATE_FAST
-  if (n >= 1 && n <= SHLI_ROT_FAST_BANDS && shli_sh_rotate_fast(n, R, sh, out_sh)) {
-    return;
-  }
-#endif
-  n = shli_bands(n);
-  if (n < 1) {
-    return;
-  }
   /* beta: sin from R's third column (accurate near 0 and pi), cos = R_22 */
   sb = SHLIGHT_SQRTR(SHLIGHT_REAL(R[2]) * SHLIGHT_REAL(R[2]) +
                      SHLIGHT_REAL(R[5]) * SHLIGHT_REAL(R[5]));
@@ -3258,6 +3250,21 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
       }
     }
   }
+}
+
+/* shl_sh_rotate's n (1..SHLIGHT_MAX_BANDS) and the vector path's choice made: a function of
+   its own, so that the 7 KB frame of its arrays is set up only where it runs */
+SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh) {
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
+#if SHLIGHT_ROTATE_FAST
+  if (n <= SHLI_ROT_FAST_BANDS && shli_sh_rotate_fast(n, R, sh, out_sh)) {
+    return;
+  }
+#endif
+  shli_sh_rotate_any(n, R, sh, out_sh);
 }
 
 /* >>light -----------------------------------------------------------------------------------

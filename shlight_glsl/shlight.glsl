@@ -3525,8 +3525,8 @@ void shl_zh_rotate(int n, float zh[SHLIGHT_MAX_BANDS], vec3 dir,
   }
 }
 
-void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
-                   out float out_sh[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_rotate_any(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
+                        out float out_sh[SHLIGHT_MAX_COEFFS]) {
   shli_real pc[2 * SHLIGHT_MAX_BANDS];
   shli_real ps[2 * SHLIGHT_MAX_BANDS];
   shli_real ca[SHLIGHT_MAX_BANDS];
@@ -3563,15 +3563,6 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
   int m;
   int k;
   int q;
-#if SHLIGHT_ROTATE_FAST
-  if (n >= 1 && n <= SHLI_ROT_FAST_BANDS && shli_sh_rotate_fast(n, R, sh, out_sh)) {
-    return;
-  }
-#endif
-  n = shli_bands(n);
-  if (n < 1) {
-    return;
-  }
   /* beta: sin from R's third column (accurate near 0 and pi), cos = R_22 */
   sb = SHLIGHT_SQRTR(SHLIGHT_REAL(R[2]) * SHLIGHT_REAL(R[2]) +
                      SHLIGHT_REAL(R[5]) * SHLIGHT_REAL(R[5]));
@@ -3710,6 +3701,22 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
       }
     }
   }
+}
+
+/* shl_sh_rotate's n (1..SHLIGHT_MAX_BANDS) and the vector path's choice made: a function of
+   its own, so that the 7 KB frame of its arrays is set up only where it runs */
+void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
+                   out float out_sh[SHLIGHT_MAX_COEFFS]) {
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
+#if SHLIGHT_ROTATE_FAST
+  if (n <= SHLI_ROT_FAST_BANDS && shli_sh_rotate_fast(n, R, sh, out_sh)) {
+    return;
+  }
+#endif
+  shli_sh_rotate_any(n, R, sh, out_sh);
 }
 
 #endif
