@@ -3068,9 +3068,19 @@ SHLI_ROT_NOINLINE int shli_sh_rotate_small(int n, const float R[9], const float 
   return 1;
 }
 
-SHLIGHT_CPU_INLINE int shli_sh_rotate_fast(int n, const float R[9], const float *sh,
+/* the portable kernel, out of line: its 7 KB frame is set up only where it runs */
+SHLIGHT_INLINE void shli_sh_rotate_any(int n, const float R[9], const float *sh, float *out_sh);
+SHLI_ROT_NOINLINE void shli_sh_rotate_slow(int n, const float R[9], const float *sh,
                                            float *out_sh) {
-  return shli_sh_rotate_small(n, R, sh, out_sh);
+  shli_sh_rotate_any(n, R, sh, out_sh);
+}
+
+/* n in 1..SHLIGHT_MAX_BANDS */
+SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float *sh,
+                                            float *out_sh) {
+  if (n > SHLI_ROT_FAST_BANDS || !shli_sh_rotate_small(n, R, sh, out_sh)) {
+    shli_sh_rotate_slow(n, R, sh, out_sh);
+  }
 }
 #endif
 
@@ -3252,19 +3262,17 @@ SHLIGHT_INLINE void shli_sh_rotate_any(int n, const float R[9], const float *sh,
   }
 }
 
-/* shl_sh_rotate's n (1..SHLIGHT_MAX_BANDS) and the vector path's choice made: a function of
-   its own, so that the 7 KB frame of its arrays is set up only where it runs */
+/* shl_sh_rotate: n clamped, then the vector path (C, GCC / Clang) or the portable kernel */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh) {
   n = shli_bands(n);
   if (n < 1) {
     return;
   }
 #if SHLIGHT_ROTATE_FAST
-  if (n <= SHLI_ROT_FAST_BANDS && shli_sh_rotate_fast(n, R, sh, out_sh)) {
-    return;
-  }
-#endif
+  shli_sh_rotate_fast(n, R, sh, out_sh);
+#else
   shli_sh_rotate_any(n, R, sh, out_sh);
+#endif
 }
 
 /* >>light -----------------------------------------------------------------------------------

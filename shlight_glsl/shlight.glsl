@@ -3703,8 +3703,7 @@ void shli_sh_rotate_any(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
   }
 }
 
-/* shl_sh_rotate's n (1..SHLIGHT_MAX_BANDS) and the vector path's choice made: a function of
-   its own, so that the 7 KB frame of its arrays is set up only where it runs */
+/* shl_sh_rotate: n clamped, then the vector path (C, GCC / Clang) or the portable kernel */
 void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
                    out float out_sh[SHLIGHT_MAX_COEFFS]) {
   n = shli_bands(n);
@@ -3712,11 +3711,10 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
     return;
   }
 #if SHLIGHT_ROTATE_FAST
-  if (n <= SHLI_ROT_FAST_BANDS && shli_sh_rotate_fast(n, R, sh, out_sh)) {
-    return;
-  }
-#endif
+  shli_sh_rotate_fast(n, R, sh, out_sh);
+#else
   shli_sh_rotate_any(n, R, sh, out_sh);
+#endif
 }
 
 #endif
