@@ -2787,6 +2787,11 @@ static const double SHLI_ROT_X90[320] = {
 #else
 #define SHLI_ROT_NOSLP
 #endif
+#if defined(__GNUC__) && !defined(__clang__)
+#define SHLI_ROT_SCALAR __attribute__((optimize("no-tree-slp-vectorize")))
+#else
+#define SHLI_ROT_SCALAR
+#endif
 /* the input group of output group g (0 A, 1 C, 2 D, 3 B) and its lanes k0 .. k1 - 1 */
 #define SHLI_ROT_SRC(l, g)                                                                         \
   ((l) % 2 == 0 ? ((g) == 1 ? 2 : ((g) == 2 ? 1 : (g))) : ((g) == 0 ? 3 : ((g) == 3 ? 0 : (g))))
@@ -2882,12 +2887,13 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   double r10 = (double)R[3];
   double r11 = (double)R[4];
   double r12 = (double)R[5];
-  double e0 = r00 * r00 + r01 * r01 + r02 * r02 - 1.0;
-  double e1 = r10 * r10 + r11 * r11 + r12 * r12 - 1.0;
-  double e2 = r00 * r10 + r01 * r11 + r02 * r12;
-  double x0 = r01 * r12 - r02 * r11 - (double)R[6];
-  double x1 = r02 * r10 - r00 * r12 - (double)R[7];
-  double x2 = r00 * r11 - r01 * r10 - (double)R[8];
+  /* grouped so that each term is a multiply-add */
+  double e0 = r00 * r00 + (r01 * r01 + (r02 * r02 - 1.0));
+  double e1 = r10 * r10 + (r11 * r11 + (r12 * r12 - 1.0));
+  double e2 = r00 * r10 + (r01 * r11 + r02 * r12);
+  double x0 = r01 * r12 - (r02 * r11 + (double)R[6]);
+  double x1 = r02 * r10 - (r00 * r12 + (double)R[7]);
+  double x2 = r00 * r11 - (r01 * r10 + (double)R[8]);
   double s2 = e0 * e0 + e1 * e1 + e2 * e2 + x0 * x0 + x1 * x1 + x2 * x2;
   return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
 }
@@ -3014,8 +3020,8 @@ SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float R[9
 
 /* n in [1, SHLI_ROT_FAST_BANDS]: 0 where R is not a rotation (shli_rot_near), else bands 0..2
    here and the rest in shli_sh_rotate_high, and 1 */
-SHLI_ROT_NOINLINE int shli_sh_rotate_small(int n, const float R[9], const float *sh,
-                                           float *out_sh) {
+SHLI_ROT_NOINLINE SHLI_ROT_SCALAR int shli_sh_rotate_small(int n, const float R[9], const float *sh,
+                                                           float *out_sh) {
   double r00 = (double)R[0];
   double r01 = (double)R[1];
   double r02 = (double)R[2];
