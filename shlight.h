@@ -3018,10 +3018,17 @@ SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float R[9
   }
 }
 
-/* n in [1, SHLI_ROT_FAST_BANDS]: 0 where R is not a rotation (shli_rot_near), else bands 0..2
-   here and the rest in shli_sh_rotate_high, and 1 */
-SHLI_ROT_NOINLINE SHLI_ROT_SCALAR int shli_sh_rotate_small(int n, const float R[9], const float *sh,
-                                                           float *out_sh) {
+/* the portable kernel, out of line: its 7 KB frame is set up only where it runs */
+SHLIGHT_INLINE void shli_sh_rotate_any(int n, const float R[9], const float *sh, float *out_sh);
+SHLI_ROT_NOINLINE void shli_sh_rotate_slow(int n, const float R[9], const float *sh,
+                                           float *out_sh) {
+  shli_sh_rotate_any(n, R, sh, out_sh);
+}
+
+/* n in [1, SHLI_ROT_FAST_BANDS]: where R is a rotation (shli_rot_near), bands 0..2 here and the
+   rest in shli_sh_rotate_high; otherwise the portable kernel */
+SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R[9],
+                                                            const float *sh, float *out_sh) {
   double r00 = (double)R[0];
   double r01 = (double)R[1];
   double r02 = (double)R[2];
@@ -3032,11 +3039,12 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR int shli_sh_rotate_small(int n, const float R[
   double r21 = (double)R[7];
   double r22 = (double)R[8];
   if (!shli_rot_near(R)) {
-    return 0;
+    shli_sh_rotate_slow(n, R, sh, out_sh);
+    return;
   }
   out_sh[0] = sh[0];
   if (n < 2) {
-    return 1;
+    return;
   }
   /* band 1: Y_1 = sqrt(3 / (4 pi)) (-y, z, -x), so R's entries, signed and permuted */
   {
@@ -3048,7 +3056,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR int shli_sh_rotate_small(int n, const float R[
     out_sh[3] = (float)(r01 * am - r02 * a0 + r00 * ap);
   }
   if (n < 3) {
-    return 1;
+    return;
   }
   /* band 2 = w^T C w (scaled by sqrt(15 / pi) / 2), C symmetric and traceless: C_xy = a_-2,
      C_yz = -a_-1, C_xz = -a_1, C_xx = a_2 - a_0 / sqrt 3, C_yy = -a_2 - a_0 / sqrt 3,
@@ -3078,21 +3086,15 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR int shli_sh_rotate_small(int n, const float R[
   if (n > 3) {
     shli_sh_rotate_high(n, R, sh, out_sh);
   }
-  return 1;
-}
-
-/* the portable kernel, out of line: its 7 KB frame is set up only where it runs */
-SHLIGHT_INLINE void shli_sh_rotate_any(int n, const float R[9], const float *sh, float *out_sh);
-SHLI_ROT_NOINLINE void shli_sh_rotate_slow(int n, const float R[9], const float *sh,
-                                           float *out_sh) {
-  shli_sh_rotate_any(n, R, sh, out_sh);
 }
 
 /* n in 1..SHLIGHT_MAX_BANDS */
 SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float *sh,
                                             float *out_sh) {
-  if (n > SHLI_ROT_FAST_BANDS || !shli_sh_rotate_small(n, R, sh, out_sh)) {
+  if (n > SHLI_ROT_FAST_BANDS) {
     shli_sh_rotate_slow(n, R, sh, out_sh);
+  } else {
+    shli_sh_rotate_small(n, R, sh, out_sh);
   }
 }
 #endif
