@@ -2681,6 +2681,9 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
 #endif
 #endif
 #if SHLIGHT_ROTATE_FAST
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #define SHLI_ROT_FAST_BANDS 8
 /* how far from a rotation R may be and still be taken as given (float-rounded rotations, and
    rotations computed in float from a unit quaternion, stay below 6e-7) */
@@ -2898,46 +2901,13 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
 }
 
-/* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of a rotation R (shli_rot_near) */
-SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float R[9], const float *sh,
-                                                          float *out_sh) {
-  double r00 = (double)R[0];
-  double r01 = (double)R[1];
-  double r02 = (double)R[2];
-  double r10 = (double)R[3];
-  double r11 = (double)R[4];
-  double r12 = (double)R[5];
-  double cb = (double)R[8];
-  double s2 = r02 * r02 + r12 * r12;
-  /* (cg, sg) |sin beta|: the second row of Rz(-alpha) R times sin beta */
-  double cg = r11 * r02 - r01 * r12;
-  double sg = r10 * r02 - r00 * r12;
-  double hg = cg * cg + sg * sg;
-  /* 1 / |(cb, sb)| by one Newton step from 1 (|(cb, sb)| = |R's third column| = 1 to within
-     SHLI_ROT_ORTH), off the square roots' path */
-  double fb = 1.5 - 0.5 * (cb * cb + s2);
-  double ca = 1.0;
-  double sa = 0.0;
-  double sb = 0.0;
-  double f;
+/* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of the rotation Rz(alpha) Ry(beta)
+   Rz(gamma), given the cosines and sines of alpha, beta, gamma */
+SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float *sh, float *out_sh,
+                                                          double ca, double sa, double cb,
+                                                          double sb, double cg, double sg) {
   shli_rot_v4 tv[12];
   int q;
-  /* R = Rz(alpha) Ry(beta) Rz(gamma); (cos, sin) of alpha: (R_02, R_12) / sin beta; beta = 0
-     or pi: alpha = 0, gamma from R's second row */
-  cb = cb * fb;
-  if (s2 > 0.0 && hg > 0.0) {
-    f = 1.0 / sqrt(s2);
-    ca = r02 * f;
-    sa = r12 * f;
-    sb = s2 * (f * fb);
-    f = 1.0 / sqrt(hg);
-    cg = cg * f;
-    sg = sg * f;
-  } else {
-    f = 1.5 - 0.5 * (r11 * r11 + r10 * r10);
-    cg = r11 * f;
-    sg = r10 * f;
-  }
   /* z_q = cos + i sin of gamma, beta + pi, alpha + pi (q = 0, 1, 2: the lanes of z); tv[4 q ..
      4 q + 3] hold z_q^m for the even m (0, 2, 4, 6: powers of u = z^2; real, imaginary parts)
      and the odd m (z times those), built lane q at a time and transposed */
@@ -3025,10 +2995,9 @@ SHLI_ROT_NOINLINE void shli_sh_rotate_slow(int n, const float R[9], const float 
   shli_sh_rotate_any(n, R, sh, out_sh);
 }
 
-/* n in [1, SHLI_ROT_FAST_BANDS]: where R is a rotation (shli_rot_near), bands 0..2 here and the
-   rest in shli_sh_rotate_high; otherwise the portable kernel */
-SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R[9],
-                                                            const float *sh, float *out_sh) {
+/* bands 0..2 (n <= 3: those present) of a rotation R (shli_rot_near) as given */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b012(int n, const float R[9], const float *sh,
+                                                     float *out_sh) {
   double r00 = (double)R[0];
   double r01 = (double)R[1];
   double r02 = (double)R[2];
@@ -3038,10 +3007,6 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R
   double r20 = (double)R[6];
   double r21 = (double)R[7];
   double r22 = (double)R[8];
-  if (!shli_rot_near(R)) {
-    shli_sh_rotate_slow(n, R, sh, out_sh);
-    return;
-  }
   out_sh[0] = sh[0];
   if (n < 2) {
     return;
@@ -3083,9 +3048,79 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R
     out_sh[7] = (float)(-(r20 * u0 + r21 * u1 + r22 * u2));
     out_sh[8] = (float)(0.5 * (p00 - p11));
   }
-  if (n > 3) {
-    shli_sh_rotate_high(n, R, sh, out_sh);
+}
+
+/* n in [1, 3]: bands 0..2 where R is a rotation (shli_rot_near), else the portable kernel */
+SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R[9],
+                                                            const float *sh, float *out_sh) {
+  if (!shli_rot_near(R)) {
+    shli_sh_rotate_slow(n, R, sh, out_sh);
+    return;
   }
+  shli_rot_b012(n, R, sh, out_sh);
+}
+
+/* n in [4, SHLI_ROT_FAST_BANDS]: where R is a rotation, the angles of bands 3.. first (their
+   square roots and division take the longest), bands 0..2, then shli_sh_rotate_high; else the
+   portable kernel */
+SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9], const float *sh,
+                                                          float *out_sh) {
+  double r00 = (double)R[0];
+  double r01 = (double)R[1];
+  double r02 = (double)R[2];
+  double r10 = (double)R[3];
+  double r11 = (double)R[4];
+  double r12 = (double)R[5];
+  double r22 = (double)R[8];
+  double ca = 1.0;
+  double sa = 0.0;
+  double sb = 0.0;
+  double cb;
+  double cg;
+  double sg;
+  double s2;
+  double hg;
+  double fb;
+  double f;
+  if (!shli_rot_near(R)) {
+    shli_sh_rotate_slow(n, R, sh, out_sh);
+    return;
+  }
+  /* bands 3..: R = Rz(alpha) Ry(beta) Rz(gamma); (cos, sin) of alpha: (R_02, R_12) / sin
+     beta; of gamma: the second row of Rz(-alpha) R, first as (cg, sg) sin beta; beta = 0 or
+     pi: alpha = 0, gamma from R's second row. 1 / |(cb, sb)| by one Newton step from 1
+     (|(cb, sb)| = |R's third column| = 1 to within SHLI_ROT_ORTH), off the square roots'
+     path. Started before bands 1 and 2, which do not wait for it */
+  s2 = r02 * r02 + r12 * r12;
+  fb = 1.5 - 0.5 * (r22 * r22 + s2);
+  cg = r11 * r02 - r01 * r12;
+  sg = r10 * r02 - r00 * r12;
+  hg = cg * cg + sg * sg;
+  cb = r22 * fb;
+  if (s2 > 0.0 && hg > 0.0) {
+    double fg;
+#if defined(__SSE2__)
+    /* both square roots in one instruction, and no errno branch (whose call would make every
+       live value spill) */
+    __m128d v = _mm_div_pd(_mm_set1_pd(1.0), _mm_sqrt_pd(_mm_set_pd(hg, s2)));
+    f = _mm_cvtsd_f64(v);
+    fg = _mm_cvtsd_f64(_mm_unpackhi_pd(v, v));
+#else
+    f = 1.0 / sqrt(s2);
+    fg = 1.0 / sqrt(hg);
+#endif
+    ca = r02 * f;
+    sa = r12 * f;
+    sb = s2 * (f * fb);
+    cg = cg * fg;
+    sg = sg * fg;
+  } else {
+    f = 1.5 - 0.5 * (r11 * r11 + r10 * r10);
+    cg = r11 * f;
+    sg = r10 * f;
+  }
+  shli_rot_b012(n, R, sh, out_sh);
+  shli_sh_rotate_high(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
 }
 
 /* n in 1..SHLIGHT_MAX_BANDS */
@@ -3093,6 +3128,8 @@ SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float
                                             float *out_sh) {
   if (n > SHLI_ROT_FAST_BANDS) {
     shli_sh_rotate_slow(n, R, sh, out_sh);
+  } else if (n > 3) {
+    shli_sh_rotate_mid(n, R, sh, out_sh);
   } else {
     shli_sh_rotate_small(n, R, sh, out_sh);
   }
