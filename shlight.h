@@ -236,27 +236,34 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    the rotation matrix R (row-major, R[3 i + j] = R_ij): g(w) = f(R^T w), so sh = Y(d) gives
    out_sh = Y(R d). n: bands, 1..SHLIGHT_MAX_BANDS (64 in C; GLSL: written for n <= 16, see
    accuracy); n < 1 writes nothing, n > max is clamped.
-   Method (docs/rotation.md): zyz Euler angles read without inverse trigonometry, the y
-   rotation from Wigner's d by its three-term recurrence in l, one row at a time (O(n) work
-   space); C with GCC or Clang, n <= 8 (SHLIGHT_ROTATE_FAST, default 1 there): the same angles,
-   then constant +90 degree turns about x between z rotations, in double vectors (held to the
-   portable kernel by tests/test_rotate.c).
-   R must be a rotation (orthonormal, det +1; float rounding of one is fine: the kernel uses
-   the exact rotation with R's third column, R_00, R_01, R_10, R_11 as above, within 1e-7 of a
-   float-rounded R); any other finite matrix gives the rotation that decomposition yields (an
-   all-zero R: the identity); R_20, R_21 are not read; NaN in any other entry gives NaN in
-   every band above 0. sh and out_sh must not overlap.
+   Method (docs/rotation.md): portable kernel (any n; GLSL): zyz Euler angles read without
+   inverse trigonometry, the y rotation from Wigner's d by its three-term recurrence in l, one
+   row at a time (O(n) work space). C with GCC or Clang, n <= 8 (SHLIGHT_ROTATE_FAST, default 1
+   there), R within 1e-6 of a rotation (below): R as given for bands 1 (R's entries) and 2
+   (R C R^T, C the band's symmetric traceless matrix), bands 3..7 by z rotations and constant
+   +90 degree turns about x in double vectors, the angles read with 2 square roots and 1
+   division.
+   R: a rotation (orthonormal, det +1). Where the root sum of squares of |r0|^2 - 1, |r1|^2 -
+   1, r0 . r1 and the 3 entries of r0 x r1 - r2 (r_i: R's rows) is <= 1e-6 (float rounding of
+   a rotation: <= 1.6e-7; computed in float from a unit quaternion: <= 8.0e-7), the C n <= 8
+   path takes R as given (bands 1, 2 are then the linear maps R defines, within 1e-6 of the
+   nearest rotation's); any other R, and every R in the portable kernel, is read as the exact
+   rotation given by R's third column and R_00, R_01, R_10, R_11 (within 1e-7 of a
+   float-rounded R; any finite matrix gives a rotation, an all-zero R the identity; R_20, R_21
+   not read). NaN in a read entry gives NaN in every band above 0. sh and out_sh must not
+   overlap.
    Accuracy (C, double inside; against a long-double re-projection by Gauss quadrature,
-   tests/test_rotate.c): per band, |error| / |input band| <= 4.6e-8 for every n = 1..64 and
-   for beta = 0, 1e-6, pi / 2, pi - 1e-6, pi (the float rounding of the output); band energy
-   kept to 1.1e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16 (llvmpipe).
-   Cost: n <= 8 (C, GCC / Clang): 3 square roots and 1 division, then per band 3 z rotations
-   and 2 (2l + 1) multiply-adds of 2- or 4-lane double vectors: 141 / 394 / 721 / 1028
-   instructions at n = 2 / 4 / 6 / 8 (gcc -O3 -march=x86-64-v3), 16 / 50 / 116 ns at n = 2 /
-   4 / 6. Otherwise about n^3 / 3 steps of the two recurrences (one sqrt and one division
-   each) and n^3 / 3 of the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc -O3
-   -march=native; docs/rotation.md has the tables, with DirectXMath's XMSHRotate, n <= 6,
-   still 1.6x to 4.5x faster in time). Stack: about 9 KB at SHLIGHT_MAX_BANDS = 64. */
+   tests/test_rotate.c): per band, |error| / |input band| <= 4.6e-8 in the portable kernel
+   (n = 1..64, beta = 0, 1e-6, pi / 2, pi - 1e-6, pi: the float rounding of the output); the n <=
+   8 path 1.3e-7 on float-rounded rotations, 6e-7 on rotations moved by 3 ulps per entry;
+   band energy kept to 1.1e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16
+   (llvmpipe).
+   Cost: n <= 8 (C, GCC / Clang): 77 / 145 / 356 / 651 / 934 instructions at n = 2 / 3 / 4 / 6
+   / 8 (gcc -O3 -march=x86-64-v3), 7.4 / 15.6 / 40 / 83 / 126 ns; DirectXMath's XMSHRotate
+   (n <= 6) 79 / 222 / 304 / 665 instructions, 4.4 / 18.4 / 30.5 / 68.7 ns. Otherwise about
+   n^3 / 3 steps of the two recurrences (one sqrt and one division each) and n^3 / 3 of the
+   row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc -O3 -march=native). Stack:
+   about 9 KB at SHLIGHT_MAX_BANDS = 64. */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh);
 
 /* ---- light --------------------------------------------------------------------------------- */
@@ -2685,8 +2692,7 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
 #include <emmintrin.h>
 #endif
 #define SHLI_ROT_FAST_BANDS 8
-/* how far from a rotation R may be and still be taken as given (float-rounded rotations, and
-   rotations computed in float from a unit quaternion, stay below 6e-7) */
+/* how far from a rotation R may be and still be taken as given (see the contract) */
 #define SHLI_ROT_ORTH 1e-6
 /* clang-format off */
 static const double SHLI_ROT_X90[320] = {
@@ -2780,11 +2786,10 @@ static const double SHLI_ROT_X90[320] = {
 #define SHLI_ROT_UNROLL
 #endif
 #define SHLI_ROT_FORCE __attribute__((always_inline))
-/* out of line: inlined, its 32-byte-aligned vectors and the portable kernel's 7 KB of arrays
-   would share one frame, set up on every call (about 25 instructions) */
 #define SHLI_ROT_NOINLINE static __attribute__((noinline, unused))
-/* GCC's SLP vectoriser would merge the float stores of a band into 512-bit conversions on
-   AVX-512 targets (-march=native on Ice Lake: n = 5, 6 took 1.4x the time) */
+/* GCC's SLP vectoriser: on AVX-512 targets it merges a band's stores into 512-bit conversions
+   (1.4x the time at n = 5, 6); in the scalar bands 0..2 its lane shuffles cost more than they
+   save */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__AVX512F__)
 #define SHLI_ROT_NOSLP __attribute__((optimize("no-tree-slp-vectorize")))
 #else
@@ -2813,18 +2818,18 @@ typedef long long shli_rot_i4 __attribute__((vector_size(32)));
 
 /* X(+90) for output group g of band l (a literal): from the z-rotated groups w0..w3 (A, C, D,
    B) into out (named variables, not arrays, which GCC keeps in registers) */
-#define SHLI_ROT_X(VT, NL, l, g, out)                                                              \
+#define SHLI_ROT_X(l, g, out)                                                                      \
   do {                                                                                             \
     int src_ = SHLI_ROT_SRC(l, g);                                                                 \
     int k_;                                                                                        \
-    VT ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3));                            \
-    VT c_;                                                                                         \
-    SHLI_ROT_LD(c_, t + (NL) * (NL) * (g) + SHLI_ROT_K0(src_) * (NL));                             \
+    shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3));                   \
+    shli_rot_v4 c_;                                                                                \
+    SHLI_ROT_LD(c_, t + 16 * (g) + SHLI_ROT_K0(src_) * 4);                                         \
     out = c_ * ws_[SHLI_ROT_K0(src_)];                                                             \
     SHLI_ROT_UNROLL                                                                                \
-    for (k_ = 0; k_ < (NL); ++k_) {                                                                \
+    for (k_ = 0; k_ < 4; ++k_) {                                                                   \
       if (k_ > SHLI_ROT_K0(src_) && k_ < SHLI_ROT_K1(l, src_)) {                                   \
-        SHLI_ROT_LD(c_, t + (NL) * (NL) * (g) + k_ * (NL));                                        \
+        SHLI_ROT_LD(c_, t + 16 * (g) + k_ * 4);                                                    \
         out = out + c_ * ws_[k_];                                                                  \
       }                                                                                            \
     }                                                                                              \
@@ -2861,10 +2866,10 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
     if (q == 2) {
       break;
     }
-    SHLI_ROT_X(shli_rot_v4, 4, l, 0, v0);
-    SHLI_ROT_X(shli_rot_v4, 4, l, 1, v1);
-    SHLI_ROT_X(shli_rot_v4, 4, l, 2, v2);
-    SHLI_ROT_X(shli_rot_v4, 4, l, 3, v3);
+    SHLI_ROT_X(l, 0, v0);
+    SHLI_ROT_X(l, 1, v1);
+    SHLI_ROT_X(l, 2, v2);
+    SHLI_ROT_X(l, 3, v3);
   }
   SHLI_ROT_UNROLL
   for (i = 0; i < 4; ++i) {
@@ -2890,7 +2895,6 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   double r10 = (double)R[3];
   double r11 = (double)R[4];
   double r12 = (double)R[5];
-  /* grouped so that each term is a multiply-add */
   double e0 = r00 * r00 + (r01 * r01 + (r02 * r02 - 1.0));
   double e1 = r10 * r10 + (r11 * r11 + (r12 * r12 - 1.0));
   double e2 = r00 * r10 + (r01 * r11 + r02 * r12);
