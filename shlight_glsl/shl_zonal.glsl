@@ -407,7 +407,6 @@ void shli_sh_rotate_any(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
   }
 }
 
-/* shl_sh_rotate: n clamped, then the vector path (C, GCC / Clang) or the portable kernel */
 void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
                    out float out_sh[SHLIGHT_MAX_COEFFS]) {
   n = shli_bands(n);
