@@ -263,7 +263,7 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    (n <= 6) 79 / 222 / 304 / 665 instructions, 4.4 / 18.4 / 30.5 / 68.7 ns. Otherwise about
    n^3 / 3 steps of the two recurrences (one sqrt and one division each) and n^3 / 3 of the
    row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc -O3 -march=native). Stack:
-   about 9 KB at SHLIGHT_MAX_BANDS = 64. */
+   about 7.5 KB at SHLIGHT_MAX_BANDS = 64. */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh);
 
 /* ---- light --------------------------------------------------------------------------------- */
@@ -3027,9 +3027,8 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b012(int n, const float R[9], co
   if (n < 3) {
     return;
   }
-  /* band 2 = w^T C w (scaled by sqrt(15 / pi) / 2), C symmetric and traceless: C_xy = a_-2,
-     C_yz = -a_-1, C_xz = -a_1, C_xx = a_2 - a_0 / sqrt 3, C_yy = -a_2 - a_0 / sqrt 3,
-     C_zz = 2 a_0 / sqrt 3; rotated, C' = R C R^T: C'_ij = r_i . (C r_j), C'_zz = -C'_xx - C'_yy */
+  /* band 2 = w^T C w, C symmetric traceless (docs/rotation.md, method 2), rotated to
+     R C R^T: C'_ij = r_i . (C r_j), C'_zz = -C'_xx - C'_yy */
   {
     double s = (double)sh[6] * 0.57735026918962576;
     double a2 = (double)sh[8];
@@ -3090,11 +3089,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
     shli_sh_rotate_slow(n, R, sh, out_sh);
     return;
   }
-  /* bands 3..: R = Rz(alpha) Ry(beta) Rz(gamma); (cos, sin) of alpha: (R_02, R_12) / sin
-     beta; of gamma: the second row of Rz(-alpha) R, first as (cg, sg) sin beta; beta = 0 or
-     pi: alpha = 0, gamma from R's second row. 1 / |(cb, sb)| by one Newton step from 1
-     (|(cb, sb)| = |R's third column| = 1 to within SHLI_ROT_ORTH), off the square roots'
-     path. Started before bands 1 and 2, which do not wait for it */
+  /* the zyz angles of bands 3.. (docs/rotation.md, method 1), before bands 1 and 2 */
   s2 = r02 * r02 + r12 * r12;
   fb = 1.5 - 0.5 * (r22 * r22 + s2);
   cg = r11 * r02 - r01 * r12;
@@ -3104,8 +3099,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
   if (s2 > 0.0 && hg > 0.0) {
     double fg;
 #if defined(__SSE2__)
-    /* both square roots in one instruction, and no errno branch (whose call would make every
-       live value spill) */
+    /* one instruction for both, no errno branch (its call would spill every live value) */
     __m128d v = _mm_div_pd(_mm_set1_pd(1.0), _mm_sqrt_pd(_mm_set_pd(hg, s2)));
     f = _mm_cvtsd_f64(v);
     fg = _mm_cvtsd_f64(_mm_unpackhi_pd(v, v));
