@@ -233,27 +233,34 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    the rotation matrix R (row-major, R[3 i + j] = R_ij): g(w) = f(R^T w), so sh = Y(d) gives
    out_sh = Y(R d). n: bands, 1..SHLIGHT_MAX_BANDS (64 in C; GLSL: written for n <= 16, see
    accuracy); n < 1 writes nothing, n > max is clamped.
-   Method (docs/rotation.md): zyz Euler angles read without inverse trigonometry, the y
-   rotation from Wigner's d by its three-term recurrence in l, one row at a time (O(n) work
-   space); C with GCC or Clang, n <= 8 (SHLIGHT_ROTATE_FAST, default 1 there): the same angles,
-   then constant +90 degree turns about x between z rotations, in double vectors (held to the
-   portable kernel by tests/test_rotate.c).
-   R must be a rotation (orthonormal, det +1; float rounding of one is fine: the kernel uses
-   the exact rotation with R's third column, R_00, R_01, R_10, R_11 as above, within 1e-7 of a
-   float-rounded R); any other finite matrix gives the rotation that decomposition yields (an
-   all-zero R: the identity); R_20, R_21 are not read; NaN in any other entry gives NaN in
-   every band above 0. sh and out_sh must not overlap.
+   Method (docs/rotation.md): portable kernel (any n; GLSL): zyz Euler angles read without
+   inverse trigonometry, the y rotation from Wigner's d by its three-term recurrence in l, one
+   row at a time (O(n) work space). C with GCC or Clang, n <= 8 (SHLIGHT_ROTATE_FAST, default 1
+   there), R within 1e-6 of a rotation (below): R as given for bands 1 (R's entries) and 2
+   (R C R^T, C the band's symmetric traceless matrix), bands 3..7 by z rotations and constant
+   +90 degree turns about x in double vectors, the angles read with 2 square roots and 1
+   division.
+   R: a rotation (orthonormal, det +1). Where the root sum of squares of |r0|^2 - 1, |r1|^2 -
+   1, r0 . r1 and the 3 entries of r0 x r1 - r2 (r_i: R's rows) is <= 1e-6 (float rounding of
+   a rotation: <= 1.6e-7; computed in float from a unit quaternion: <= 8.0e-7), the C n <= 8
+   path takes R as given (bands 1, 2 are then the linear maps R defines, within 1e-6 of the
+   nearest rotation's); any other R, and every R in the portable kernel, is read as the exact
+   rotation given by R's third column and R_00, R_01, R_10, R_11 (within 1e-7 of a
+   float-rounded R; any finite matrix gives a rotation, an all-zero R the identity; R_20, R_21
+   not read). NaN in a read entry gives NaN in every band above 0. sh and out_sh must not
+   overlap.
    Accuracy (C, double inside; against a long-double re-projection by Gauss quadrature,
-   tests/test_rotate.c): per band, |error| / |input band| <= 4.6e-8 for every n = 1..64 and
-   for beta = 0, 1e-6, pi / 2, pi - 1e-6, pi (the float rounding of the output); band energy
-   kept to 1.1e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16 (llvmpipe).
-   Cost: n <= 8 (C, GCC / Clang): 3 square roots and 1 division, then per band 3 z rotations
-   and 2 (2l + 1) multiply-adds of 2- or 4-lane double vectors: 141 / 394 / 721 / 1028
-   instructions at n = 2 / 4 / 6 / 8 (gcc -O3 -march=x86-64-v3), 16 / 50 / 116 ns at n = 2 /
-   4 / 6. Otherwise about n^3 / 3 steps of the two recurrences (one sqrt and one division
-   each) and n^3 / 3 of the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc -O3
-   -march=native; docs/rotation.md has the tables, with DirectXMath's XMSHRotate, n <= 6,
-   still 1.6x to 4.5x faster in time). Stack: about 9 KB at SHLIGHT_MAX_BANDS = 64. */
+   tests/test_rotate.c): per band, |error| / |input band| <= 4.6e-8 in the portable kernel
+   (n = 1..64, beta = 0, 1e-6, pi / 2, pi - 1e-6, pi: the float rounding of the output); the n <=
+   8 path 1.3e-7 on float-rounded rotations, 6e-7 on rotations moved by 3 ulps per entry;
+   band energy kept to 1.4e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16
+   (llvmpipe).
+   Cost: n <= 8 (C, GCC / Clang): 77 / 145 / 356 / 651 / 934 instructions at n = 2 / 3 / 4 / 6
+   / 8 (gcc -O3 -march=x86-64-v3), 7.4 / 15.6 / 40 / 83 / 126 ns; DirectXMath's XMSHRotate
+   (n <= 6) 79 / 222 / 304 / 665 instructions, 4.4 / 18.4 / 30.5 / 68.7 ns. Otherwise about
+   n^3 / 3 steps of the two recurrences (one sqrt and one division each) and n^3 / 3 of the
+   row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc -O3 -march=native). Stack:
+   about 7.5 KB at SHLIGHT_MAX_BANDS = 64. */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh);
 
 /* ---- light --------------------------------------------------------------------------------- */
@@ -2660,17 +2667,18 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
 
 /* shl_sh_rotate's C-only path for n <= SHLI_ROT_FAST_BANDS (GCC and Clang: it is written in their
    vector extensions; SHLIGHT_ROTATE_FAST 0 sends every n to the portable kernel below, the body
-   the GLSL twin shares; tests/test_rotate.c holds this path to that kernel). The portable
-   kernel's Euler angles, found the same way (so the same rotation for any R), and Ry(beta) =
-   X(-90) Rz(beta) X(+90), X(+90) the rotation by +90 degrees about x, whose band matrices are
-   constants (the "zxzxz" factorisation); X(-90) = Rz(pi) X(+90) Rz(pi), so per band: z
-   rotations by gamma, beta + pi, alpha + pi with X(+90) between them. X(+90) keeps x-parity
-   and m's parity: a band splits into four lane groups (A: m = 0, 2, 4, 6; C: m = 1, 3, 5, 7;
-   D: m = -, -2, -4, -6; B: m = -1, -3, -5, -7), each output group takes one input group (l
-   even: A A, C D, D C, B B; l odd: A B, C C, D D, B A), and a z rotation pairs A with D and C
-   with B lane by lane. Double inside, 2 lanes for bands 2, 3 and 4 lanes for bands 4..7 (one
-   SSE / AVX register); the tables hold each band's four group blocks by columns; band 1 is
-   the signed permutation of the rotation matrix. */
+   the GLSL twin shares; tests/test_rotate.c holds this path to that kernel). R is taken as
+   given where it is a rotation to within SHLI_ROT_ORTH (else the portable kernel): band 1 is R
+   itself, band 2 the symmetric traceless matrix of its coefficients turned as R C R^T. Bands
+   3..7: zyz angles (one square root, one division) and Ry(beta) = X(-90) Rz(beta) X(+90),
+   X(+90) the rotation by +90 degrees about x, whose band matrices are constants (the "zxzxz"
+   factorisation); X(-90) = Rz(pi) X(+90) Rz(pi), so per band: z rotations by gamma, beta + pi,
+   alpha + pi with X(+90) between them. X(+90) keeps x-parity and m's parity: a band splits
+   into four lane groups (A: m = 0, 2, 4, 6; C: m = 1, 3, 5, 7; D: m = -, -2, -4, -6; B: m =
+   -1, -3, -5, -7), each output group takes one input group (l even: A A, C D, D C, B B; l odd:
+   A B, C C, D D, B A), and a z rotation pairs A with D and C with B lane by lane. Double
+   inside, 4 lanes (one AVX register); the table holds each band's four group blocks by
+   columns. */
 #ifndef SHLIGHT_ROTATE_FAST
 #if defined(__GNUC__) || defined(__clang__)
 #define SHLIGHT_ROTATE_FAST 1
@@ -2679,19 +2687,30 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
 #endif
 #endif
 #if SHLIGHT_ROTATE_FAST
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #define SHLI_ROT_FAST_BANDS 8
+/* how far from a rotation R may be and still be taken as given (see the contract) */
+#define SHLI_ROT_ORTH 1e-6
 /* clang-format off */
-static const double SHLI_ROT_X90_2[32] = {
-  -0.5, -0.8660254037844386, -0.8660254037844386, 0.5,
-  0, 0, -1.0, 0,
-  0, 1.0, 0, 0,
-  -1.0, 0, 0, 0,
-  0.61237243569579447, 0.79056941504209488, 0.79056941504209488, -0.61237243569579447,
-  -0.25, -0.96824583655185426, -0.96824583655185426, 0.25,
-  0, 0, 0, -1.0,
-  -0.61237243569579447, -0.79056941504209488, -0.79056941504209488, 0.61237243569579447
-};
-static const double SHLI_ROT_X90_4[256] = {
+static const double SHLI_ROT_X90[320] = {
+  0.61237243569579447, 0.79056941504209488, 0, 0,
+  0.79056941504209488, -0.61237243569579447, 0, 0,
+  0, 0, 0, 0,
+  0, 0, 0, 0,
+  -0.25, -0.96824583655185426, 0, 0,
+  -0.96824583655185426, 0.25, 0, 0,
+  0, 0, 0, 0,
+  0, 0, 0, 0,
+  0, 0, 0, 0,
+  0, -1.0, 0, 0,
+  0, 0, 0, 0,
+  0, 0, 0, 0,
+  -0.61237243569579447, -0.79056941504209488, 0, 0,
+  -0.79056941504209488, 0.61237243569579447, 0, 0,
+  0, 0, 0, 0,
+  0, 0, 0, 0,
   0.375, 0.55901699437494745, 0.73950997288745202, 0,
   0.55901699437494745, 0.5, -0.66143782776614768, 0,
   0.73950997288745202, -0.66143782776614768, 0.125, 0,
@@ -2766,48 +2785,68 @@ static const double SHLI_ROT_X90_4[256] = {
 #define SHLI_ROT_UNROLL
 #endif
 #define SHLI_ROT_FORCE __attribute__((always_inline))
-/* out of line: inlined, its 32-byte-aligned vectors and the portable kernel's 7 KB of arrays
-   would share one frame, set up on every call (about 25 instructions) */
 #define SHLI_ROT_NOINLINE static __attribute__((noinline, unused))
+/* GCC's SLP vectoriser: on AVX-512 targets it merges a band's stores into 512-bit conversions
+   (1.4x the time at n = 5, 6); in the scalar bands 0..2 its lane shuffles cost more than they
+   save */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__AVX512F__)
+#define SHLI_ROT_NOSLP __attribute__((optimize("no-tree-slp-vectorize")))
+#else
+#define SHLI_ROT_NOSLP
+#endif
+#if defined(__GNUC__) && !defined(__clang__)
+#define SHLI_ROT_SCALAR __attribute__((optimize("no-tree-slp-vectorize")))
+#else
+#define SHLI_ROT_SCALAR
+#endif
 /* the input group of output group g (0 A, 1 C, 2 D, 3 B) and its lanes k0 .. k1 - 1 */
 #define SHLI_ROT_SRC(l, g)                                                                         \
   ((l) % 2 == 0 ? ((g) == 1 ? 2 : ((g) == 2 ? 1 : (g))) : ((g) == 0 ? 3 : ((g) == 3 ? 0 : (g))))
 #define SHLI_ROT_K0(src) ((src) == 2 ? 1 : 0)
 #define SHLI_ROT_K1(l, src) ((src) == 0 || (src) == 2 ? (l) / 2 + 1 : ((l) + 1) / 2)
 typedef double shli_rot_v4 __attribute__((vector_size(32)));
-typedef double shli_rot_v2 __attribute__((vector_size(16)));
+typedef long long shli_rot_i4 __attribute__((vector_size(32)));
+/* lanes i, j, k, m of a (0..3) and b (4..7) */
+#if defined(__clang__)
+#define SHLI_ROT_SHUF(a, b, i, j, k, m) __builtin_shufflevector(a, b, i, j, k, m)
+#else
+#define SHLI_ROT_SHUF(a, b, i, j, k, m)                                                            \
+  __builtin_shuffle(a, b, __extension__(shli_rot_i4){i, j, k, m})
+#endif
 #define SHLI_ROT_LD(v, p) memcpy(&(v), (p), sizeof(v))
 
 /* X(+90) for output group g of band l (a literal): from the z-rotated groups w0..w3 (A, C, D,
    B) into out (named variables, not arrays, which GCC keeps in registers) */
-#define SHLI_ROT_X(VT, NL, l, g, out)                                                              \
+#define SHLI_ROT_X(l, g, out)                                                                      \
   do {                                                                                             \
     int src_ = SHLI_ROT_SRC(l, g);                                                                 \
     int k_;                                                                                        \
-    VT ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3));                            \
-    VT c_;                                                                                         \
-    out = ws_ - ws_;                                                                               \
+    shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3));                   \
+    shli_rot_v4 c_;                                                                                \
+    SHLI_ROT_LD(c_, t + 16 * (g) + SHLI_ROT_K0(src_) * 4);                                         \
+    out = c_ * ws_[SHLI_ROT_K0(src_)];                                                             \
     SHLI_ROT_UNROLL                                                                                \
-    for (k_ = 0; k_ < (NL); ++k_) {                                                                \
-      if (k_ >= SHLI_ROT_K0(src_) && k_ < SHLI_ROT_K1(l, src_)) {                                  \
-        SHLI_ROT_LD(c_, t + (NL) * (NL) * (g) + k_ * (NL));                                        \
+    for (k_ = 0; k_ < 4; ++k_) {                                                                   \
+      if (k_ > SHLI_ROT_K0(src_) && k_ < SHLI_ROT_K1(l, src_)) {                                   \
+        SHLI_ROT_LD(c_, t + 16 * (g) + k_ * 4);                                                    \
         out = out + c_ * ws_[k_];                                                                  \
       }                                                                                            \
     }                                                                                              \
   } while (0)
 
-/* band l (4 <= l < SHLI_ROT_FAST_BANDS) of sh rotated into out_sh; tv[4 q + j]: cos, sin of the
+/* band l (3 <= l < SHLI_ROT_FAST_BANDS) of sh rotated into out_sh; tv[4 q + j]: cos, sin of the
    even m, cos, sin of the odd m (j = 0..3) of the q-th z rotation. Inlined with a literal l,
    every loop has a constant trip count and unrolls into straight-line code. */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *tv, const float *sh,
                                                      float *out_sh) {
-  const double *t = SHLI_ROT_X90_4 + 64 * (l - 4);
+  const double *t = SHLI_ROT_X90 + 64 * (l - 3);
   int b = l * l + l;
-  shli_rot_v4 v0 = {(double)sh[b], (double)sh[b + 2], (double)sh[b + 4],
+  shli_rot_v4 v0 = {(double)sh[b], (double)sh[b + 2], l >= 4 ? (double)sh[b + 4] : 0.0,
                     l >= 6 ? (double)sh[b + 6] : 0.0};
   shli_rot_v4 v1 = {(double)sh[b + 1], (double)sh[b + 3], l >= 5 ? (double)sh[b + 5] : 0.0,
                     l >= 7 ? (double)sh[b + 7] : 0.0};
-  shli_rot_v4 v2 = {0.0, (double)sh[b - 2], (double)sh[b - 4], l >= 6 ? (double)sh[b - 6] : 0.0};
+  shli_rot_v4 v2 = {0.0, (double)sh[b - 2], l >= 4 ? (double)sh[b - 4] : 0.0,
+                    l >= 6 ? (double)sh[b - 6] : 0.0};
   shli_rot_v4 v3 = {(double)sh[b - 1], (double)sh[b - 3], l >= 5 ? (double)sh[b - 5] : 0.0,
                     l >= 7 ? (double)sh[b - 7] : 0.0};
   shli_rot_v4 w0;
@@ -2826,10 +2865,10 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
     if (q == 2) {
       break;
     }
-    SHLI_ROT_X(shli_rot_v4, 4, l, 0, v0);
-    SHLI_ROT_X(shli_rot_v4, 4, l, 1, v1);
-    SHLI_ROT_X(shli_rot_v4, 4, l, 2, v2);
-    SHLI_ROT_X(shli_rot_v4, 4, l, 3, v3);
+    SHLI_ROT_X(l, 0, v0);
+    SHLI_ROT_X(l, 1, v1);
+    SHLI_ROT_X(l, 2, v2);
+    SHLI_ROT_X(l, 3, v3);
   }
   SHLI_ROT_UNROLL
   for (i = 0; i < 4; ++i) {
@@ -2846,195 +2885,256 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
   }
 }
 
-/* bands 2 and 3 (two lanes per group: A m = 0, 2; C 1, 3; D -, -2; B -1, -3): the same step
-   on half the lanes, one SSE register; tv: the first two lanes of the above */
-SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band2(int l, const shli_rot_v2 *tv, const float *sh,
-                                                      float *out_sh) {
-  const double *t = SHLI_ROT_X90_2 + 16 * (l - 2);
-  int b = l * l + l;
-  shli_rot_v2 v0 = {(double)sh[b], (double)sh[b + 2]};
-  shli_rot_v2 v1 = {(double)sh[b + 1], l >= 3 ? (double)sh[b + 3] : 0.0};
-  shli_rot_v2 v2 = {0.0, (double)sh[b - 2]};
-  shli_rot_v2 v3 = {(double)sh[b - 1], l >= 3 ? (double)sh[b - 3] : 0.0};
-  shli_rot_v2 w0;
-  shli_rot_v2 w1;
-  shli_rot_v2 w2;
-  shli_rot_v2 w3;
+/* R is a rotation to within SHLI_ROT_ORTH: the root sum of squares of |r0|^2 - 1, |r1|^2 - 1,
+   r0 . r1 and r0 x r1 - r2 (rows r_i) is at most that; NaN fails */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
+  double r00 = (double)R[0];
+  double r01 = (double)R[1];
+  double r02 = (double)R[2];
+  double r10 = (double)R[3];
+  double r11 = (double)R[4];
+  double r12 = (double)R[5];
+  double e0 = r00 * r00 + (r01 * r01 + (r02 * r02 - 1.0));
+  double e1 = r10 * r10 + (r11 * r11 + (r12 * r12 - 1.0));
+  double e2 = r00 * r10 + (r01 * r11 + r02 * r12);
+  double x0 = r01 * r12 - (r02 * r11 + (double)R[6]);
+  double x1 = r02 * r10 - (r00 * r12 + (double)R[7]);
+  double x2 = r00 * r11 - (r01 * r10 + (double)R[8]);
+  double s2 = e0 * e0 + e1 * e1 + e2 * e2 + x0 * x0 + x1 * x1 + x2 * x2;
+  return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
+}
+
+/* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of the rotation Rz(alpha) Ry(beta)
+   Rz(gamma), given the cosines and sines of alpha, beta, gamma */
+SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float *sh, float *out_sh,
+                                                          double ca, double sa, double cb,
+                                                          double sb, double cg, double sg) {
+  shli_rot_v4 tv[12];
   int q;
-  SHLI_ROT_UNROLL
-  for (q = 0; q < 3; ++q) {
-    w0 = v0 * tv[4 * q] - v2 * tv[4 * q + 1];
-    w2 = v0 * tv[4 * q + 1] + v2 * tv[4 * q];
-    w1 = v1 * tv[4 * q + 2] - v3 * tv[4 * q + 3];
-    w3 = v1 * tv[4 * q + 3] + v3 * tv[4 * q + 2];
-    if (q == 2) {
-      break;
+  /* z_q = cos + i sin of gamma, beta + pi, alpha + pi (q = 0, 1, 2: the lanes of z); tv[4 q ..
+     4 q + 3] hold z_q^m for the even m (0, 2, 4, 6: powers of u = z^2; real, imaginary parts)
+     and the odd m (z times those), built lane q at a time and transposed */
+  {
+    shli_rot_v4 zr = {cg, -cb, -ca, 0.0};
+    shli_rot_v4 zi = {sg, -sb, -sa, 0.0};
+    shli_rot_v4 one = {1.0, 1.0, 1.0, 1.0};
+    shli_rot_v4 ur = zr * zr - zi * zi;
+    shli_rot_v4 ui = (zr + zr) * zi;
+    shli_rot_v4 o1r = zr * ur - zi * ui;
+    shli_rot_v4 o1i = zi * ur + zr * ui;
+    shli_rot_v4 u2r;
+    shli_rot_v4 u2i;
+    shli_rot_v4 u3r;
+    shli_rot_v4 u3i;
+    shli_rot_v4 k[16];
+    if (n == 4) {
+      /* band 3 alone: lanes 0 and 1 (m <= 3); lanes 2 and 3 meet zero inputs and table entries */
+      k[0] = SHLI_ROT_SHUF(one, ur, 0, 4, 2, 6);
+      k[1] = SHLI_ROT_SHUF(one - one, ui, 0, 4, 2, 6);
+      k[2] = SHLI_ROT_SHUF(zr, o1r, 0, 4, 2, 6);
+      k[3] = SHLI_ROT_SHUF(zi, o1i, 0, 4, 2, 6);
+      k[4] = SHLI_ROT_SHUF(one, ur, 1, 5, 3, 7);
+      k[5] = SHLI_ROT_SHUF(one - one, ui, 1, 5, 3, 7);
+      k[6] = SHLI_ROT_SHUF(zr, o1r, 1, 5, 3, 7);
+      k[7] = SHLI_ROT_SHUF(zi, o1i, 1, 5, 3, 7);
+      SHLI_ROT_UNROLL
+      for (q = 0; q < 4; ++q) {
+        tv[q] = k[q];
+        tv[4 + q] = k[4 + q];
+        tv[8 + q] = SHLI_ROT_SHUF(k[q], k[q], 2, 3, 2, 3);
+      }
+      shli_rot_band(3, tv, sh, out_sh);
+      return;
     }
-    SHLI_ROT_X(shli_rot_v2, 2, l, 0, v0);
-    SHLI_ROT_X(shli_rot_v2, 2, l, 1, v1);
-    SHLI_ROT_X(shli_rot_v2, 2, l, 2, v2);
-    SHLI_ROT_X(shli_rot_v2, 2, l, 3, v3);
+    u2r = ur * ur - ui * ui;
+    u2i = (ur + ur) * ui;
+    u3r = u2r * ur - u2i * ui;
+    u3i = u2i * ur + u2r * ui;
+    k[0] = one;
+    k[1] = ur;
+    k[2] = u2r;
+    k[3] = u3r;
+    k[4] = one - one;
+    k[5] = ui;
+    k[6] = u2i;
+    k[7] = u3i;
+    SHLI_ROT_UNROLL
+    for (q = 0; q < 4; ++q) {
+      k[8 + q] = zr * k[q] - zi * k[4 + q];
+      k[12 + q] = zi * k[q] + zr * k[4 + q];
+    }
+    /* 4 x 4 transposes: row j of kind g (lanes q) to tv[4 q + g] (lanes j) */
+    SHLI_ROT_UNROLL
+    for (q = 0; q < 4; ++q) {
+      shli_rot_v4 t0 = SHLI_ROT_SHUF(k[4 * q], k[4 * q + 1], 0, 4, 2, 6);
+      shli_rot_v4 t1 = SHLI_ROT_SHUF(k[4 * q], k[4 * q + 1], 1, 5, 3, 7);
+      shli_rot_v4 t2 = SHLI_ROT_SHUF(k[4 * q + 2], k[4 * q + 3], 0, 4, 2, 6);
+      shli_rot_v4 t3 = SHLI_ROT_SHUF(k[4 * q + 2], k[4 * q + 3], 1, 5, 3, 7);
+      tv[q] = SHLI_ROT_SHUF(t0, t2, 0, 1, 4, 5);
+      tv[4 + q] = SHLI_ROT_SHUF(t1, t3, 0, 1, 4, 5);
+      tv[8 + q] = SHLI_ROT_SHUF(t0, t2, 2, 3, 6, 7);
+    }
   }
-  out_sh[b] = (float)w0[0];
-  out_sh[b + 2] = (float)w0[1];
-  out_sh[b + 1] = (float)w1[0];
-  out_sh[b - 1] = (float)w3[0];
-  out_sh[b - 2] = (float)w2[1];
-  if (l >= 3) {
-    out_sh[b + 3] = (float)w1[1];
-    out_sh[b - 3] = (float)w3[1];
+  /* literal band numbers: see shli_rot_band */
+  shli_rot_band(3, tv, sh, out_sh);
+  if (n > 4) {
+    shli_rot_band(4, tv, sh, out_sh);
+  }
+  if (n > 5) {
+    shli_rot_band(5, tv, sh, out_sh);
+  }
+  if (n > 6) {
+    shli_rot_band(6, tv, sh, out_sh);
+  }
+  if (n > 7) {
+    shli_rot_band(7, tv, sh, out_sh);
   }
 }
 
-/* n in [1, SHLI_ROT_FAST_BANDS] */
-SHLI_ROT_NOINLINE void shli_sh_rotate_small(int n, const float R[9], const float *sh,
-                                            float *out_sh) {
-  double zr[3];
-  double zi[3];
-  double r2 = (double)R[2];
-  double r5 = (double)R[5];
-  double s2 = r2 * r2 + r5 * r5;
-  double sb = sqrt(s2);
-  double cb = (double)R[8];
-  double h = sqrt(s2 + cb * cb);
-  /* (t, w): gamma's cos, sin times sin(beta), which needs no division by it */
-  double t = (double)R[4] * r2 - (double)R[1] * r5;
-  double w = (double)R[3] * r2 - (double)R[0] * r5;
-  double hg = sqrt(t * t + w * w);
-  double c1 = 1.0;
-  double s1 = 0.0;
-  int m;
-  int q;
-  shli_rot_v2 tv2[12];
-  /* the portable kernel's angles (the same rotation for any R), its three normalisations side
-     by side; in the common case one vector division for the three (sb, h, hg in [1e-45,
-     1e78]: their reciprocals are finite) */
-  if (sb > 0.0 && hg > 0.0) {
-    shli_rot_v4 nv = {sb, h, hg, 1.0};
-    shli_rot_v4 rv = 1.0 / nv;
-    double ia = rv[0];
-    double ib = rv[1];
-    double ic = rv[2];
-    c1 = r2 * ia;
-    s1 = r5 * ia;
-    cb = cb * ib;
-    sb = sb * ib;
-    t = t * ic;
-    w = w * ic;
-  } else {
-    if (sb > 0.0) {
-      c1 = r2 / sb;
-      s1 = r5 / sb;
-    } else {
-      t = (double)R[4];
-      w = (double)R[3];
-    }
-    if (!(h <= 0.0)) {
-      sb = sb / h;
-      cb = cb / h;
-    } else {
-      cb = 1.0;
-    }
-    hg = sqrt(t * t + w * w);
-    if (!(hg <= 0.0)) {
-      t = t / hg;
-      w = w / hg;
-    } else {
-      t = 1.0;
-    }
-  }
+/* the portable kernel, out of line: its 7 KB frame is set up only where it runs */
+SHLIGHT_INLINE void shli_sh_rotate_any(int n, const float R[9], const float *sh, float *out_sh);
+SHLI_ROT_NOINLINE void shli_sh_rotate_slow(int n, const float R[9], const float *sh,
+                                           float *out_sh) {
+  shli_sh_rotate_any(n, R, sh, out_sh);
+}
+
+/* bands 0..2 (n <= 3: those present) of a rotation R (shli_rot_near) as given */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b012(int n, const float R[9], const float *sh,
+                                                     float *out_sh) {
+  double r00 = (double)R[0];
+  double r01 = (double)R[1];
+  double r02 = (double)R[2];
+  double r10 = (double)R[3];
+  double r11 = (double)R[4];
+  double r12 = (double)R[5];
+  double r20 = (double)R[6];
+  double r21 = (double)R[7];
+  double r22 = (double)R[8];
   out_sh[0] = sh[0];
   if (n < 2) {
     return;
   }
-  /* band 1: the signed permutation of Q = Rz(alpha) Ry(beta) Rz(gamma) (Y_1 = sqrt(3 / (4 pi))
-     (-y, z, -x)) */
+  /* band 1: Y_1 = sqrt(3 / (4 pi)) (-y, z, -x), so R's entries, signed and permuted */
   {
-    double q00 = c1 * cb * t - s1 * w;
-    double q01 = -c1 * cb * w - s1 * t;
-    double q10 = s1 * cb * t + c1 * w;
-    double q11 = c1 * t - s1 * cb * w;
-    double xm = (double)sh[1];
-    double x0 = (double)sh[2];
-    double xp = (double)sh[3];
-    out_sh[1] = (float)(q10 * xp + q11 * xm - s1 * sb * x0);
-    out_sh[2] = (float)(sb * t * xp - sb * w * xm + cb * x0);
-    out_sh[3] = (float)(q00 * xp + q01 * xm - c1 * sb * x0);
+    double am = (double)sh[1];
+    double a0 = (double)sh[2];
+    double ap = (double)sh[3];
+    out_sh[1] = (float)(r11 * am - r12 * a0 + r10 * ap);
+    out_sh[2] = (float)(r22 * a0 - r21 * am - r20 * ap);
+    out_sh[3] = (float)(r01 * am - r02 * a0 + r00 * ap);
   }
   if (n < 3) {
     return;
   }
-  /* z_q = cos + i sin of gamma, beta + pi, alpha + pi (the latter two: -(cos, sin) of beta,
-     alpha); per z rotation q the lanes hold z^m for the even m (0, 2, 4, 6: powers of u = z^2)
-     and the odd m (z times those), real and imaginary parts apart */
-  zr[0] = t;
-  zi[0] = w;
-  zr[1] = -cb;
-  zi[1] = -sb;
-  zr[2] = -c1;
-  zi[2] = -s1;
-  if (n <= 4) {
-    SHLI_ROT_UNROLL
-    for (q = 0; q < 3; ++q) {
-      double ur = zr[q] * zr[q] - zi[q] * zi[q];
-      double ui = 2.0 * zr[q] * zi[q];
-      shli_rot_v2 ce2 = {1.0, ur};
-      shli_rot_v2 se2 = {0.0, ui};
-      shli_rot_v2 co2 = {zr[q], zr[q] * ur - zi[q] * ui};
-      shli_rot_v2 so2 = {zi[q], zi[q] * ur + zr[q] * ui};
-      tv2[4 * q] = ce2;
-      tv2[4 * q + 1] = se2;
-      tv2[4 * q + 2] = co2;
-      tv2[4 * q + 3] = so2;
-    }
-    shli_rot_band2(2, tv2, sh, out_sh);
-    if (n > 3) {
-      shli_rot_band2(3, tv2, sh, out_sh);
-    }
-  } else {
-    shli_rot_v4 tv[12];
-    SHLI_ROT_UNROLL
-    for (q = 0; q < 3; ++q) {
-      double ur = zr[q] * zr[q] - zi[q] * zi[q];
-      double ui = 2.0 * zr[q] * zi[q];
-      double u2r = ur * ur - ui * ui;
-      double u2i = 2.0 * ur * ui;
-      double u3r = u2r * ur - u2i * ui;
-      double u3i = u2i * ur + u2r * ui;
-      shli_rot_v4 ce = {1.0, ur, u2r, u3r};
-      shli_rot_v4 se = {0.0, ui, u2i, u3i};
-      tv[4 * q] = ce;
-      tv[4 * q + 1] = se;
-      tv[4 * q + 2] = zr[q] * ce - zi[q] * se;
-      tv[4 * q + 3] = zi[q] * ce + zr[q] * se;
-      SHLI_ROT_UNROLL
-      for (m = 0; m < 4; ++m) {
-        SHLI_ROT_LD(tv2[4 * q + m], &tv[4 * q + m]);
-      }
-    }
-    /* literal band numbers: see shli_rot_band */
-    shli_rot_band2(2, tv2, sh, out_sh);
-    shli_rot_band2(3, tv2, sh, out_sh);
-    shli_rot_band(4, tv, sh, out_sh);
-    if (n > 5) {
-      shli_rot_band(5, tv, sh, out_sh);
-    }
-    if (n > 6) {
-      shli_rot_band(6, tv, sh, out_sh);
-    }
-    if (n > 7) {
-      shli_rot_band(7, tv, sh, out_sh);
-    }
+  /* band 2 = w^T C w, C symmetric traceless (docs/rotation.md, method 2), rotated to
+     R C R^T: C'_ij = r_i . (C r_j), C'_zz = -C'_xx - C'_yy */
+  {
+    double s = (double)sh[6] * 0.57735026918962576;
+    double a2 = (double)sh[8];
+    double cxy = (double)sh[4];
+    double cyz = -(double)sh[5];
+    double cxz = -(double)sh[7];
+    double cxx = a2 - s;
+    double cyy = -a2 - s;
+    double u0 = cxx * r00 + cxy * r01 + cxz * r02;
+    double u1 = cxy * r00 + cyy * r01 + cyz * r02;
+    double u2 = cxz * r00 + cyz * r01 + 2.0 * s * r02;
+    double v0 = cxx * r10 + cxy * r11 + cxz * r12;
+    double v1 = cxy * r10 + cyy * r11 + cyz * r12;
+    double v2 = cxz * r10 + cyz * r11 + 2.0 * s * r12;
+    double p00 = r00 * u0 + r01 * u1 + r02 * u2;
+    double p11 = r10 * v0 + r11 * v1 + r12 * v2;
+    out_sh[4] = (float)(r10 * u0 + r11 * u1 + r12 * u2);
+    out_sh[5] = (float)(-(r20 * v0 + r21 * v1 + r22 * v2));
+    out_sh[6] = (float)(-0.86602540378443865 * (p00 + p11));
+    out_sh[7] = (float)(-(r20 * u0 + r21 * u1 + r22 * u2));
+    out_sh[8] = (float)(0.5 * (p00 - p11));
   }
 }
 
+/* n in [1, 3]: bands 0..2 where R is a rotation (shli_rot_near), else the portable kernel */
+SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R[9],
+                                                            const float *sh, float *out_sh) {
+  if (!shli_rot_near(R)) {
+    shli_sh_rotate_slow(n, R, sh, out_sh);
+    return;
+  }
+  shli_rot_b012(n, R, sh, out_sh);
+}
+
+/* n in [4, SHLI_ROT_FAST_BANDS]: where R is a rotation, the angles of bands 3.. first (their
+   square roots and division take the longest), bands 0..2, then shli_sh_rotate_high; else the
+   portable kernel */
+SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9], const float *sh,
+                                                          float *out_sh) {
+  double r00 = (double)R[0];
+  double r01 = (double)R[1];
+  double r02 = (double)R[2];
+  double r10 = (double)R[3];
+  double r11 = (double)R[4];
+  double r12 = (double)R[5];
+  double r22 = (double)R[8];
+  double ca = 1.0;
+  double sa = 0.0;
+  double sb = 0.0;
+  double cb;
+  double cg;
+  double sg;
+  double s2;
+  double hg;
+  double fb;
+  double f;
+  if (!shli_rot_near(R)) {
+    shli_sh_rotate_slow(n, R, sh, out_sh);
+    return;
+  }
+  /* the zyz angles of bands 3.. (docs/rotation.md, method 1), before bands 1 and 2 */
+  s2 = r02 * r02 + r12 * r12;
+  fb = 1.5 - 0.5 * (r22 * r22 + s2);
+  cg = r11 * r02 - r01 * r12;
+  sg = r10 * r02 - r00 * r12;
+  hg = cg * cg + sg * sg;
+  cb = r22 * fb;
+  if (s2 > 0.0 && hg > 0.0) {
+    double fg;
+#if defined(__SSE2__)
+    /* one instruction for both, no errno branch (its call would spill every live value) */
+    __m128d v = _mm_div_pd(_mm_set1_pd(1.0), _mm_sqrt_pd(_mm_set_pd(hg, s2)));
+    f = _mm_cvtsd_f64(v);
+    fg = _mm_cvtsd_f64(_mm_unpackhi_pd(v, v));
+#else
+    f = 1.0 / sqrt(s2);
+    fg = 1.0 / sqrt(hg);
+#endif
+    ca = r02 * f;
+    sa = r12 * f;
+    sb = s2 * (f * fb);
+    cg = cg * fg;
+    sg = sg * fg;
+  } else {
+    f = 1.5 - 0.5 * (r11 * r11 + r10 * r10);
+    cg = r11 * f;
+    sg = r10 * f;
+  }
+  shli_rot_b012(n, R, sh, out_sh);
+  shli_sh_rotate_high(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
+}
+
+/* n in 1..SHLIGHT_MAX_BANDS */
 SHLIGHT_CPU_INLINE void shli_sh_rotate_fast(int n, const float R[9], const float *sh,
                                             float *out_sh) {
-  shli_sh_rotate_small(n, R, sh, out_sh);
+  if (n > SHLI_ROT_FAST_BANDS) {
+    shli_sh_rotate_slow(n, R, sh, out_sh);
+  } else if (n > 3) {
+    shli_sh_rotate_mid(n, R, sh, out_sh);
+  } else {
+    shli_sh_rotate_small(n, R, sh, out_sh);
+  }
 }
 #endif
 
-SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh) {
+/* shl_sh_rotate's portable kernel, n in 1..SHLIGHT_MAX_BANDS (the method: see the contract) */
+SHLIGHT_INLINE void shli_sh_rotate_any(int n, const float R[9], const float *sh, float *out_sh) {
   shli_real pc[2 * SHLIGHT_MAX_BANDS];
   shli_real ps[2 * SHLIGHT_MAX_BANDS];
   shli_real ca[SHLIGHT_MAX_BANDS];
@@ -3071,16 +3171,6 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
   int m;
   int k;
   int q;
-  n = shli_bands(n);
-  if (n < 1) {
-    return;
-  }
-#if SHLIGHT_ROTATE_FAST
-  if (n <= SHLI_ROT_FAST_BANDS) {
-    shli_sh_rotate_fast(n, R, sh, out_sh);
-    return;
-  }
-#endif
   /* beta: sin from R's third column (accurate near 0 and pi), cos = R_22 */
   sb = SHLIGHT_SQRTR(SHLIGHT_REAL(R[2]) * SHLIGHT_REAL(R[2]) +
                      SHLIGHT_REAL(R[5]) * SHLIGHT_REAL(R[5]));
@@ -3219,6 +3309,19 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
       }
     }
   }
+}
+
+/* shl_sh_rotate: n clamped, then the vector path (C, GCC / Clang) or the portable kernel */
+SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh) {
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
+#if SHLIGHT_ROTATE_FAST
+  shli_sh_rotate_fast(n, R, sh, out_sh);
+#else
+  shli_sh_rotate_any(n, R, sh, out_sh);
+#endif
 }
 
 /* >>light -----------------------------------------------------------------------------------

@@ -3534,8 +3534,8 @@ void shl_zh_rotate(int n, float zh[SHLIGHT_MAX_BANDS], vec3 dir,
   }
 }
 
-void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
-                   out float out_sh[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_rotate_any(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
+                        out float out_sh[SHLIGHT_MAX_COEFFS]) {
   shli_real pc[2 * SHLIGHT_MAX_BANDS];
   shli_real ps[2 * SHLIGHT_MAX_BANDS];
   shli_real ca[SHLIGHT_MAX_BANDS];
@@ -3572,16 +3572,6 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
   int m;
   int k;
   int q;
-  n = shli_bands(n);
-  if (n < 1) {
-    return;
-  }
-#if SHLIGHT_ROTATE_FAST
-  if (n <= SHLI_ROT_FAST_BANDS) {
-    shli_sh_rotate_fast(n, R, sh, out_sh);
-    return;
-  }
-#endif
   /* beta: sin from R's third column (accurate near 0 and pi), cos = R_22 */
   sb = SHLIGHT_SQRTR(SHLIGHT_REAL(R[2]) * SHLIGHT_REAL(R[2]) +
                      SHLIGHT_REAL(R[5]) * SHLIGHT_REAL(R[5]));
@@ -3720,6 +3710,19 @@ void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
       }
     }
   }
+}
+
+void shl_sh_rotate(int n, float R[9], float sh[SHLIGHT_MAX_COEFFS],
+                   out float out_sh[SHLIGHT_MAX_COEFFS]) {
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
+#if SHLIGHT_ROTATE_FAST
+  shli_sh_rotate_fast(n, R, sh, out_sh);
+#else
+  shli_sh_rotate_any(n, R, sh, out_sh);
+#endif
 }
 
 #endif
