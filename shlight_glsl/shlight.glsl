@@ -6256,7 +6256,7 @@ void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_r
                   shli_real vy, shli_real vz, shli_real nx, shli_real ny, shli_real nz,
                   shli_real a2, shli_real lamv, shli_real ws, shli_real hx, shli_real hy,
                   shli_real hz, shli_real gx, shli_real gy, shli_real gz, shli_real al, int ndf,
-                  out shli_real out_q[SHLIGHT_MAX_COEFFS]) {
+                  out shli_real out_q[2]) {
   shli_real tr[7];
   shli_real ts[7];
   shli_real tw[7];

@@ -733,7 +733,7 @@ ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
                'out_idx': '4', 'out_w': '4', 'tab': 'SHLIGHT_BRDF_TABLE_FLOATS',
                'out_range': '2', 'io_split': 'SHLIGHT_HALF_K', 'io_am': '2', 'out_par': '5',
                'kv': 'SHLIGHT_MAX_BANDS', 'kg': 'SHLIGHT_MAX_BANDS', 'ka': 'SHLIGHT_MAX_BANDS',
-               'kb': 'SHLIGHT_MAX_BANDS', 'wg': '6'}
+               'kb': 'SHLIGHT_MAX_BANDS', 'wg': '6', 'out_q': '2'}
 
 
 def glsl_param(prm, fname):
