@@ -610,21 +610,20 @@ static void test_merl_synth(void) {
 }
 
 /* test_merl_grazing_reconstruction: a table built from a MERL file of an analytic BRDF (GGX
-   alpha 0.3 and 0.6 + Lambert, 90 x 90 x 180) against that BRDF's own table, 18 samples up to
-   cos theta_o = 1e-6 (89.99994 deg), n = 8, q = 32. Error of a sample: max |MERL - analytic|
-   over the coefficients / the analytic sample's L2 norm, for F and F'. MERL has no theta_h
-   sample past 88 deg and no theta_d sample past 89 deg, and near the horizon most cells mix
-   valid with invalid samples; the loader extrapolates there along each axis from the last two
-   valid samples. The grazing samples (theta_o > 80 deg) are held to the interior worst
-   (theta_o <= 80 deg) times the measured ratio + 10%: alpha 0.3 F 2.15x, F' 2.15x; alpha 0.6
-   F 2.8x, F' 2.7x (holding the last sample instead gave 3.7x / 47x at alpha 0.3, and a 1e-6
-   floor on cos theta_h cos theta_d 95x at 0.6). */
+   alpha 0.15, 0.3, 0.6 and 1 + Lambert, 90 x 90 x 180) against that BRDF's own table, 18
+   samples up to cos theta_o = 1e-6 (89.99994 deg), n = 8, q = 32. Error of a sample: max |MERL -
+   analytic| over the coefficients / the analytic sample's L2 norm, for F and F'. MERL has no
+   theta_h sample past 88 deg and no theta_d sample past 89 deg, and near the horizon most cells
+   mix valid with invalid samples; the loader extrapolates there along each axis (quadratic where
+   4 samples see the same curvature). Requirement: every grazing sample (theta_o > 80 deg) within
+   2x the interior worst (theta_o <= 80 deg). Measured F / F': alpha 0.15 1.13x / 0.69x, 0.3
+   0.98x / 0.90x, 0.6 1.28x / 1.93x, 1 1.71x / 1.45x (linear extrapolation: 1.97x / 0.88x, 2.15x
+   / 2.15x, 2.82x / 2.72x, 3.04x / 1.47x; holding the last sample: 3.7x / 47x at alpha 0.3). */
 static void test_merl_grazing_reconstruction(void) {
   const int n = 8, nt = 18;
-  const float alphas[2] = {0.3f, 0.6f};
-  const double ratio[2][2] = {{2.4, 2.4}, {3.1, 3.0}};
+  const float alphas[4] = {0.15f, 0.3f, 0.6f, 1.0f};
   int ia, s, k, i;
-  for (ia = 0; ia < 2; ++ia) {
+  for (ia = 0; ia < 4; ++ia) {
     shl_brdf_params b = mk(SHLIGHT_BRDF_GGX, 0, alphas[ia], alphas[ia], 0.04f);
     size_t len, need = 3u * 90 * 90 * 180;
     unsigned char *file;
@@ -662,13 +661,13 @@ static void test_merl_grazing_reconstruction(void) {
           graz[k] = e[s][k];
         }
       }
-    printf("  MERL of GGX %.1f: error / norm, theta_o <= 80 deg F %.2e F' %.2e; above: F %.2e "
+    printf("  MERL of GGX %.2f: error / norm, theta_o <= 80 deg F %.2e F' %.2e; above: F %.2e "
            "(%.2fx) F' %.2e (%.2fx); last sample F %.2e F' %.2e\n",
            (double)alphas[ia], inner[0], inner[1], graz[0], graz[0] / inner[0], graz[1],
            graz[1] / inner[1], e[nt - 1][0], e[nt - 1][1]);
     for (k = 0; k < 2; ++k)
-      TL_CHECK(graz[k] <= ratio[ia][k] * inner[k],
-               "test_merl_grazing_reconstruction: alpha %.1f %s: grazing %g, interior %g",
+      TL_CHECK(graz[k] <= 2.0 * inner[k],
+               "test_merl_grazing_reconstruction: alpha %.2f %s: grazing %g, interior %g",
                (double)alphas[ia], k ? "F'" : "F", graz[k], inner[k]);
     free(file);
     free(st);
