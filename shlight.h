@@ -1092,7 +1092,7 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
    (docs/brdf-tables.md has the error against quad_order).
    Outgoing samples on the grid of >>brdftab (shl_brdf_table_theta), the last one at
    cos theta_o = SHLIGHT_BRDF_TABLE_GRAZING. Y by shl_sh_eval in float at the float-rounded
-   node; the table rounds to float. Stack: about 14.3 KB deep (gcc -O2 -fstack-usage: 12.6 KB in
+   node; the table rounds to float. Stack: about 15.0 KB deep (gcc -O2 -fstack-usage: 12.6 KB in
    the build loop; the quadrature nodes are made on the fly, no per-arc scratch arrays).
    out_err_est (may be NULL; NULL also skips the extra passes): an estimate of the returned
    table's largest absolute error (table units) from the tables at quad_order / 4 and / 2: per
