@@ -1106,17 +1106,19 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
    floor at q = 24 for every alpha in [1e-3, 4] and theta_o up to cos theta_o = 1e-6, Beckmann
    at q = 24 for alpha <= 1 and q = 48 up to alpha 4 (q = 32: 8e-8), Blinn-Phong at q = 16 up
    to e = 1e6, Phong at q = 32 up to e = 1e6; anisotropic Beckmann / GGX at q = 24 for alphas
-   in [1e-3, 4] (up to 4000:1) and every theta_o, phi_o (docs/brdf-tables.md). quad_order in [2,
-   256]. Returns SHLIGHT_EINVAL (data untouched) for NULL t / data / brdf, n, n_theta, n_phi out of
-   range (see shl_brdf_table_size), flags != (n_phi > 1 ? ANISO : 0), an unknown model, negative or
-   non-finite kd / ks, a Phong / Blinn-Phong exponent outside [0, SHLIGHT_BRDF_MAX_EXPONENT] (larger
-   ones, up to 1e27, used to give non-finite tables), alpha outside [SHLIGHT_BRDF_MIN_ALPHA, 4] for
-   Beckmann / GGX, f0 outside [0, 1] (microfacet models), quad_order out of range; SHLIGHT_ENOMEM
-   when n > 16 and the 2 n^2-double accumulator (on the stack up to 16 bands) cannot be allocated.
-   Cost: per sample, up to ~20 t panels x q x (2q .. 8q) nodes (isotropic microfacet) or ~12 panels
-   x q x (2q .. 14q) (specular frame), x 1.31 with out_err_est, each node one BRDF evaluation, one
-   shl_sh_eval and 2 n^2 FMA. Measured, 90 samples, n = 9, one core of a loaded machine: GGX q = 16
-   0.18 s (alpha 1) .. 0.27 s (alpha 1e-3), q = 32 0.75 .. 1.1 s; Phong 1000 q = 32 0.55 s. */
+   in [1e-3, 1] (any ratio), q = 32 up to 4, every theta_o, phi_o (docs/brdf-tables.md). quad_order
+   in [2, 256]. Returns SHLIGHT_EINVAL (data untouched) for NULL t / data / brdf, n, n_theta, n_phi
+   out of range (see shl_brdf_table_size), flags != (n_phi > 1 ? ANISO : 0), an unknown model,
+   negative or non-finite kd / ks, a Phong / Blinn-Phong exponent outside [0,
+   SHLIGHT_BRDF_MAX_EXPONENT] (larger ones, up to 1e27, used to give non-finite tables), alpha
+   outside [SHLIGHT_BRDF_MIN_ALPHA, 4] for Beckmann / GGX, f0 outside [0, 1] (microfacet models),
+   quad_order out of range; SHLIGHT_ENOMEM when n > 16 and the 2 n^2-double accumulator (on the
+   stack up to 16 bands) cannot be allocated. Cost: per sample, up to ~20 t panels x q x (2q .. 8q)
+   nodes (isotropic microfacet), 4 .. 109 ph panels x q x (up to ~22 u panels x q) (anisotropic)
+   or ~12 panels x q x (2q .. 14q) (specular frame), x 1.31 with
+   out_err_est, each node one BRDF evaluation, one shl_sh_eval and 2 n^2 FMA. Measured, 90 samples,
+   n = 9, one core of a loaded machine: GGX q = 16 0.18 s (alpha 1) .. 0.27 s (alpha 1e-3), q = 32
+   0.75 .. 1.1 s; Phong 1000 q = 32 0.55 s; GGX (0.05, 0.2), 90 x 4 samples, q = 16 3.3 s. */
 SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_params *brdf,
                                             int quad_order, float *out_err_est);
 
