@@ -1080,7 +1080,8 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
      h_y / alpha_y) / h_z = tan(u) (cos(ph), sin(ph)), where D is the isotropic one of width 1:
      outer ph (panels graded towards where the horizon's cut turns, and towards the smaller
      alpha's axis), inner u up to the horizon in closed form (panels at atan(3^k), -2 <= k < 8,
-     graded towards the end), quad_order Gauss-Legendre nodes per panel;
+     graded towards the end; alpha > 1: both graded about w_i = z, where Lambda(w_i) has a
+     near branch point), quad_order Gauss-Legendre nodes per panel;
    - Phong, in the frame whose pole is the mirror direction r of w_o: panels of the angle g from
      r with break points at 2, 6, 18, 54 lobe widths (width: 1/sqrt(e + 1)), where the circle of
      angle g about r first meets the horizon (g = pi/2 - theta_o) and where it leaves it;
@@ -1092,7 +1093,7 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
    (docs/brdf-tables.md has the error against quad_order).
    Outgoing samples on the grid of >>brdftab (shl_brdf_table_theta), the last one at
    cos theta_o = SHLIGHT_BRDF_TABLE_GRAZING. Y by shl_sh_eval in float at the float-rounded
-   node; the table rounds to float. Stack: about 15.0 KB deep (gcc -O2 -fstack-usage: 12.6 KB in
+   node; the table rounds to float. Stack: about 15.3 KB deep (gcc -O2 -fstack-usage: 12.6 KB in
    the build loop; the quadrature nodes are made on the fly, no per-arc scratch arrays).
    out_err_est (may be NULL; NULL also skips the extra passes): an estimate of the returned
    table's largest absolute error (table units) from the tables at quad_order / 4 and / 2: per
@@ -1106,7 +1107,7 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
    floor at q = 24 for every alpha in [1e-3, 4] and theta_o up to cos theta_o = 1e-6, Beckmann
    at q = 24 for alpha <= 1 and q = 48 up to alpha 4 (q = 32: 8e-8), Blinn-Phong at q = 16 up
    to e = 1e6, Phong at q = 32 up to e = 1e6; anisotropic Beckmann / GGX at q = 24 for alphas
-   in [1e-3, 1] (any ratio), q = 32 up to 4, every theta_o, phi_o (docs/brdf-tables.md). quad_order
+   in [1e-3, 4] (any ratio), every theta_o and phi_o (docs/brdf-tables.md). quad_order
    in [2, 256]. Returns SHLIGHT_EINVAL (data untouched) for NULL t / data / brdf, n, n_theta, n_phi
    out of range (see shl_brdf_table_size), flags != (n_phi > 1 ? ANISO : 0), an unknown model,
    negative or non-finite kd / ks, a Phong / Blinn-Phong exponent outside [0,
@@ -1114,7 +1115,7 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
    outside [SHLIGHT_BRDF_MIN_ALPHA, 4] for Beckmann / GGX, f0 outside [0, 1] (microfacet models),
    quad_order out of range; SHLIGHT_ENOMEM when n > 16 and the 2 n^2-double accumulator (on the
    stack up to 16 bands) cannot be allocated. Cost: per sample, up to ~20 t panels x q x (2q .. 8q)
-   nodes (isotropic microfacet), 4 .. 109 ph panels x q x (up to ~22 u panels x q) (anisotropic)
+   nodes (isotropic microfacet), 4 .. 121 ph panels x q x (up to ~34 u panels x q) (anisotropic)
    or ~12 panels x q x (2q .. 14q) (specular frame), x 1.31 with
    out_err_est, each node one BRDF evaluation, one shl_sh_eval and 2 n^2 FMA. Measured, 90 samples,
    n = 9, one core of a loaded machine: GGX q = 16 0.18 s (alpha 1) .. 0.27 s (alpha 1e-3), q = 32
@@ -10143,12 +10144,12 @@ static void shli_tab_snode(int n, const shli_tabsrc *src, const double wo[3], do
    vw = v . w_o. Outer ph: panels at ph0 + k pi/2, where vw = 0 at ph0 and ph0 + pi (there
    r_max changes from ~cos_o / (2 |vw|) to ~2 vw / (cos_o |v|^2) within ~cos_o |v| / |vw'| rad),
    graded geometrically (1/4) towards ph0 and ph0 + pi down to that width. Inner u in
-   [0, atan(r_max)]: panels at atan(3^k), k < 8, graded (1/4) towards the end, where w_i meets
-   the horizon. */
+   [0, atan(r_max)]: panels at atan(3^k), -2 <= k < 8, graded (1/4) towards the end, where w_i
+   meets the horizon. */
 static void shli_tab_aniso(int n, const shli_tabsrc *src, const double wo[3], int q, double *acc,
                            float *y, const double *xg, const double *wg) {
-  double br[112];
-  double ub[24];
+  double br[128];
+  double ub[40];
   double ax = (double)src->brdf->alpha_x;
   double ay = (double)src->brdf->alpha_y;
   double co = wo[2];
@@ -10157,6 +10158,12 @@ static void shli_tab_aniso(int n, const shli_tabsrc *src, const double wo[3], in
   double c0 = cos(ph0);
   double s0 = sin(ph0);
   double w0 = nw > 0.0 ? co * sqrt(ax * ax * c0 * c0 + ay * ay * s0 * s0) / nw : 4.0;
+  double amax = ax > ay ? ax : ay;
+  double xn = wo[0] / ((1.0 + co) * ax);
+  double yn = wo[1] / ((1.0 + co) * ay);
+  double rn = sqrt(xn * xn + yn * yn);
+  double phn = atan2(yn, xn);
+  double dn = 0.25 / (amax * amax);
   int nb = 0;
   int p;
   int i;
@@ -10189,6 +10196,22 @@ static void shli_tab_aniso(int n, const shli_tabsrc *src, const double wo[3], in
       double v = c + (m & 1 ? SHLI_PI : 0.0) + (m & 2 ? -d : d) - ph0;
       v -= 2.0 * SHLI_PI * floor(v / (2.0 * SHLI_PI));
       br[nb++] = ph0 + v;
+    }
+  }
+  /* alpha > 1: Lambda(w_i) has a branch point within ~1 / alpha of w_i = z, whose half vector
+     has the stretched slope (xn, yn) (radius rn, azimuth phn): graded towards it in ph and u */
+  if (amax > 1.0 && rn > dn) {
+    for (k = 0; k < 6; ++k) {
+      double d = atan(dn * pow(3.0, (double)k) / rn);
+      int m;
+      if (d > 0.25 * SHLI_PI) {
+        break;
+      }
+      for (m = 0; m < 2; ++m) {
+        double v = phn + (m ? -d : d) - ph0;
+        v -= 2.0 * SHLI_PI * floor(v / (2.0 * SHLI_PI));
+        br[nb++] = ph0 + v;
+      }
     }
   }
   shli_sort_breaks(br, nb);
@@ -10225,6 +10248,17 @@ static void shli_tab_aniso(int n, const shli_tabsrc *src, const double wo[3], in
       for (k = 0; k < 12 && (umax - top) > 0.5 * co; ++k) {
         top = umax - 0.25 * (umax - top);
         ub[nu++] = top;
+      }
+      if (amax > 1.0) {
+        for (k = 0; k < 6; ++k) {
+          double d = dn * pow(3.0, (double)k);
+          if (rn + d < rmax) {
+            ub[nu++] = atan(rn + d);
+          }
+          if (rn - d > 0.0 && rn - d < rmax) {
+            ub[nu++] = atan(rn - d);
+          }
+        }
       }
       shli_sort_breaks(ub, nu);
       for (pu = 0; pu + 1 < nu; ++pu) {

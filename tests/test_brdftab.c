@@ -1346,7 +1346,8 @@ static void test_brdftab_tiny_alpha_grazing(void) {
 /* anisotropic Beckmann / GGX by the stretched half-vector rule: (1) convergence near grazing
    at small alpha, q = 24 against q = 48, within 8 float ulps of max |T| (the specular-frame rule
    used before was 0.55 of max |T| off at q = 64 for GGX (1e-3, 0.01) at 85.5 deg, phi_o 90
-   deg); (2) with alpha_x = alpha_y, against the isotropic half-vector rule (another
+   deg; GGX (4, 1) at 30 deg, phi_o 30 deg, was 9 ulps off before the grading about w_i = z for
+   alpha > 1); (2) with alpha_x = alpha_y, against the isotropic half-vector rule (another
    parametrisation: circles of the half vector's polar angle, closed-form arcs), 8 float ulps;
    (3) against the specular-frame rule where that converges (GGX (0.05, 0.2), 60 deg, phi_o 30
    deg, q = 128); (4) the albedo bound sqrt(4 pi) F_00 in (0, 1]; (5) the build's error
@@ -1386,16 +1387,17 @@ static void test_brdftab_aniso_grazing(void) {
     int model;
     float ax, ay;
     double th, ph;
-  } cs[6] = {{SHLIGHT_BRDF_GGX, 1e-3f, 0.01f, 85.5, 90.0},
+  } cs[7] = {{SHLIGHT_BRDF_GGX, 1e-3f, 0.01f, 85.5, 90.0},
              {SHLIGHT_BRDF_GGX, 1e-3f, 0.01f, 89.5, 30.0},
              {SHLIGHT_BRDF_GGX, 1e-3f, 0.01f, 90.0, 0.0},
              {SHLIGHT_BRDF_GGX, 1e-3f, 4.0f, 89.9, 60.0},
              {SHLIGHT_BRDF_BECKMANN, 0.01f, 1e-3f, 89.9, 30.0},
-             {SHLIGHT_BRDF_BECKMANN, 0.01f, 1e-3f, 90.0, 90.0}};
+             {SHLIGHT_BRDF_BECKMANN, 0.01f, 1e-3f, 90.0, 90.0},
+             {SHLIGHT_BRDF_GGX, 4.0f, 1.0f, 30.0, 30.0}};
   static double a[162], r[162];
   double worst = 0.0, e, alb_lo = 1.0, alb_hi = 0.0;
   int k;
-  for (k = 0; k < 6; ++k) {
+  for (k = 0; k < 7; ++k) {
     shl_brdf_params b = mk(cs[k].model, 0, cs[k].ax, cs[k].ay, 1);
     double alb;
     aniso_proj(&b, 2, cs[k].th, cs[k].ph, 24, a);
