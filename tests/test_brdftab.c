@@ -1,10 +1,12 @@
 /* test_brdftab.c - >>brdftab: BRDF SH tables, their lookup, the SHLT file and the MERL loader,
  * against independent references:
- *  - Lambert: Ramamoorthi-Hanrahan's factorial closed form (MATH.md sec. 5) for F, and the
- *    hemisphere integral of P_l (seed 000 eq. 13 at alpha = 0) for F';
- *  - Phong: MATH.md's Lambda recurrence rotated to the mirror direction (F'), and F from it by
- *    the exact z Y_l^m recurrence (one band more), Y in binary128 (tests/ref/shref.h); exponents
- *    and angles where the lobe's part below the horizon is < 1e-12;
+ *  - Lambert: Ramamoorthi and Hanrahan's factorial closed form (2001, An Efficient
+ *    Representation for Irradiance Environment Maps) for F, and the hemisphere integral of P_l
+ *    (Mezieres et al. 2022, Harmonics Virtual Lights, eq. 13 at alpha = 0) for F';
+ *  - Phong: the Lambda recurrence of docs/derivations.md rotated to the mirror direction (F'),
+ *    and F from it by the exact z Y_l^m recurrence (one band more), Y in binary128
+ *    (tests/ref/shref.h); exponents and angles where the lobe's part below the horizon is
+ *    < 1e-12;
  *  - reciprocity and albedo <= 1 of the analytic BRDFs; the anisotropic table of an isotropic
  *    BRDF against the isotropic table rotated; the z-rotation against binary128 Y;
  *  - a MERL file synthesised from an analytic BRDF: tables within the MERL sampling error;
@@ -296,7 +298,7 @@ static void test_microfacet_bruteforce(void) {
   }
 }
 
-/* the two halves of issue 5 agree: a Phong F' table sample against >>brdf's shl_zh_phong
+/* the table build and the ZH kernels agree: a Phong F' table sample against >>brdf's shl_zh_phong
    rotated to the mirror direction by shl_zh_rotate (e = 200, theta_o = 7.5 deg: the lobe's part
    below the horizon is < 1e-100) */
 static void test_table_vs_zh_kernels(void) {
@@ -981,7 +983,8 @@ static void test_build_args(void) {
 }
 
 /* ---- shading: sum L_i T_i against direct integration over a cap light ---- */
-/* exact SH (nb bands) of a unit-radiance cap of half-angle a about axis c (seed 000 eq. 14-15) */
+/* exact SH (nb bands) of a unit-radiance cap of half-angle a about axis c (Mezieres et al. 2022,
+ * eq. 14-15) */
 static void cap_sh(int nb, double a, const double c[3], double *out) {
   double ca = cos(a), p[42], y[1600];
   int l, m;
