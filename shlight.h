@@ -1075,9 +1075,14 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
      1 / (cos_i + cos_o)); quad_order Gauss-Legendre nodes per panel after g = g0 + (g1 - g0)
      s^2 (3 - 2 s). Whole circles: 2 quad_order uniform nodes; arcs (closed-form ends): panels
      graded towards the ends (1 - 4^-k, k <= 3), quad_order nodes each;
-   - other specular terms (Phong, anisotropic Beckmann / GGX), in the frame whose pole is the
-     mirror direction r of w_o: panels of the angle g from r with break points at 2, 6, 18, 54
-     lobe widths (width: 1/sqrt(e + 1) Phong, 2 max(alpha) microfacet), where the circle of
+   - anisotropic Beckmann / GGX, over the half vector in stretched slopes (h_x / alpha_x,
+     h_y / alpha_y) / h_z = tan(u) (cos(ph), sin(ph)), where D is the isotropic one of width 1:
+     outer ph (panels graded towards where the horizon's cut turns, and towards the smaller
+     alpha's axis), inner u up to the horizon in closed form (panels at atan(3^k), -2 <= k < 8,
+     graded towards the end; alpha > 1: both graded about w_i = z, where Lambda(w_i) has a
+     near branch point), quad_order Gauss-Legendre nodes per panel;
+   - Phong, in the frame whose pole is the mirror direction r of w_o: panels of the angle g from
+     r with break points at 2, 6, 18, 54 lobe widths (width: 1/sqrt(e + 1)), where the circle of
      angle g about r first meets the horizon (g = pi/2 - theta_o) and where it leaves it;
      quad_order Gauss-Legendre nodes per panel after the same substitution; on each circle only
      the arc above the horizon (end points in closed form): 2 quad_order uniform nodes round a
@@ -1087,7 +1092,7 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
    (docs/brdf-tables.md has the error against quad_order).
    Outgoing samples on the grid of >>brdftab (shl_brdf_table_theta), the last one at
    cos theta_o = SHLIGHT_BRDF_TABLE_GRAZING. Y by shl_sh_eval in float at the float-rounded
-   node; the table rounds to float. Stack: about 13.5 KB deep (gcc -O2 -fstack-usage: 12.6 KB in
+   node; the table rounds to float. Stack: about 15.3 KB deep (gcc -O2 -fstack-usage: 12.6 KB in
    the build loop; the quadrature nodes are made on the fly, no per-arc scratch arrays).
    out_err_est (may be NULL; NULL also skips the extra passes): an estimate of the returned
    table's largest absolute error (table units) from the tables at quad_order / 4 and / 2: per
@@ -1100,19 +1105,20 @@ SHLIGHT_API size_t shl_brdf_table_size(int n, int n_theta, int n_phi);
    independent long-double projection and q = 256): isotropic GGX reaches the float rounding
    floor at q = 24 for every alpha in [1e-3, 4] and theta_o up to cos theta_o = 1e-6, Beckmann
    at q = 24 for alpha <= 1 and q = 48 up to alpha 4 (q = 32: 8e-8), Blinn-Phong at q = 16 up
-   to e = 1e6, Phong at q = 32 up to e = 1e6; anisotropic Beckmann / GGX (the specular-frame rule)
-   reach it at q = 128 for max(alpha) >= 0.05 and do not converge near grazing below that
-   (docs/brdf-tables.md). quad_order in [2, 256]. Returns SHLIGHT_EINVAL (data untouched) for NULL t
-   / data / brdf, n, n_theta, n_phi out of range (see shl_brdf_table_size), flags != (n_phi > 1 ?
-   ANISO : 0), an unknown model, negative or non-finite kd / ks, a Phong / Blinn-Phong exponent
-   outside [0, SHLIGHT_BRDF_MAX_EXPONENT] (larger ones, up to 1e27, used to give non-finite tables),
-   alpha outside [SHLIGHT_BRDF_MIN_ALPHA, 4] for Beckmann / GGX, f0 outside [0, 1] (microfacet
-   models), quad_order out of range; SHLIGHT_ENOMEM when n > 16 and the 2 n^2-double accumulator (on
-   the stack up to 16 bands) cannot be allocated. Cost: per sample, up to ~20 t panels x q x (2q ..
-   8q) nodes (isotropic microfacet) or ~12 panels x q x (2q .. 14q) (specular frame), x 1.31 with
+   to e = 1e6, Phong at q = 32 up to e = 1e6; anisotropic Beckmann / GGX at q = 24 for alphas
+   in [1e-3, 4] (any ratio), every theta_o and phi_o (docs/brdf-tables.md). quad_order
+   in [2, 256]. Returns SHLIGHT_EINVAL (data untouched) for NULL t / data / brdf, n, n_theta, n_phi
+   out of range (see shl_brdf_table_size), flags != (n_phi > 1 ? ANISO : 0), an unknown model,
+   negative or non-finite kd / ks, a Phong / Blinn-Phong exponent outside [0,
+   SHLIGHT_BRDF_MAX_EXPONENT] (larger ones, up to 1e27, used to give non-finite tables), alpha
+   outside [SHLIGHT_BRDF_MIN_ALPHA, 4] for Beckmann / GGX, f0 outside [0, 1] (microfacet models),
+   quad_order out of range; SHLIGHT_ENOMEM when n > 16 and the 2 n^2-double accumulator (on the
+   stack up to 16 bands) cannot be allocated. Cost: per sample, up to ~20 t panels x q x (2q .. 8q)
+   nodes (isotropic microfacet), 4 .. 121 ph panels x q x (up to ~34 u panels x q) (anisotropic)
+   or ~12 panels x q x (2q .. 14q) (specular frame), x 1.31 with
    out_err_est, each node one BRDF evaluation, one shl_sh_eval and 2 n^2 FMA. Measured, 90 samples,
    n = 9, one core of a loaded machine: GGX q = 16 0.18 s (alpha 1) .. 0.27 s (alpha 1e-3), q = 32
-   0.75 .. 1.1 s; Phong 1000 q = 32 0.55 s. */
+   0.75 .. 1.1 s; Phong 1000 q = 32 0.55 s; GGX (0.05, 0.2), 90 x 4 samples, q = 16 3.3 s. */
 SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_params *brdf,
                                             int quad_order, float *out_err_est);
 
@@ -1174,11 +1180,14 @@ SHLIGHT_API shl_result shl_merl_read(const void *buf, size_t len, float *storage
    that the 1 / (cos_i + cos_o) growth of f at grazing is carried by the factor; only valid
    samples (> 0; MERL marks invalid ones negative) are used: where one of the two samples
    along an axis is invalid or beyond the grid (theta_h past the last sample, 88 deg in MERL
-   files; theta_d past 89 deg), linear extrapolation from the valid one and its other
-   neighbour when that is valid, else the valid one held; with none in reach, the theta_d
+   files; theta_d past 89 deg), extrapolation from the valid one and its neighbours on the
+   other side: quadratic through 3 samples where the second differences at the first two agree
+   in sign and differ by at most the first's magnitude (noise does not pass this), else linear
+   through 2, else the valid one held; with none in reach, the theta_d
    coordinate steps down a layer at a time (held along theta_d); 0 if none; negative
    extrapolations give 0. Invalid m or c: 0. Cost: ~100 flops, 2 acos, 2 atan2, 2 cos per
-   sample read (8 inside the grid, up to 64 at its edges). */
+   sample read (8 inside the grid, up to 125 at its edges). Tables of a MERL file of GGX (alpha
+   0.15 .. 1) are within 2x of the interior error at every theta_o (docs/brdf-tables.md). */
 SHLIGHT_API float shl_merl_eval(const shl_merl *m, int c, const float wo[3], const float wi[3]);
 
 /* shl_brdf_table_build_merl: shl_brdf_table_build for channel c of a measured BRDF (tables
@@ -10038,7 +10047,8 @@ typedef struct shli_tabsrc {
   int channel;
   double width; /* lobe width in radians (specular frame break points) */
   double gmax;  /* the lobe is 0 beyond this angle from r (pi: no limit) */
-  int half;     /* 1: an isotropic microfacet lobe, the half-vector quadrature (width: alpha) */
+  int half;     /* 1: an isotropic microfacet lobe, the half-vector quadrature (width: alpha);
+                   2: an anisotropic one (Beckmann / GGX), the stretched half-vector quadrature */
 } shli_tabsrc;
 
 static double shli_merl_f(const shl_merl *m, int c, const double wo[3], const double wi[3]);
@@ -10387,6 +10397,181 @@ static void shli_tab_half(int n, const shli_tabsrc *src, const double wo[3], int
   }
 }
 
+/* one node of the stretched half-vector quadrature: h along (sx, sy, 1) (slopes), w_i the mirror
+   of w_o about h, weight wgt 4 (w_o . h) */
+static void shli_tab_snode(int n, const shli_tabsrc *src, const double wo[3], double sx, double sy,
+                           double wgt, double *acc, float *y) {
+  double hl = 1.0 / sqrt(1.0 + sx * sx + sy * sy);
+  double h[3];
+  double wi[3];
+  double oh;
+  double f;
+  int k;
+  h[0] = sx * hl;
+  h[1] = sy * hl;
+  h[2] = hl;
+  oh = wo[0] * h[0] + wo[1] * h[1] + wo[2] * h[2];
+  for (k = 0; k < 3; ++k) {
+    wi[k] = 2.0 * oh * h[k] - wo[k];
+  }
+  if (!(wi[2] > 0.0) || !(oh > 0.0)) {
+    return;
+  }
+  f = shli_src_f(src, wo, wi);
+  if (f != 0.0) {
+    shli_tab_node(n, acc, y, 4.0 * oh * wgt * f, wi);
+  }
+}
+
+/* the half-vector quadrature of an anisotropic microfacet lobe at order q, in the stretched
+   slopes (x, y) = (h_x / (alpha_x h_z), h_y / (alpha_y h_z)) = tan(u) (cos(ph), sin(ph)), where
+   D is isotropic of width 1: d omega_h = alpha_x alpha_y tan(u) sec(u)^2 cos(theta_h)^3 du dph.
+   In slopes, w_i is above the horizon iff the slope of h lies in the disc of radius 1 / cos_o
+   about w_o's (x, y) / cos_o: the stretched ray of azimuth ph leaves that ellipse once, at
+   r_max(ph) = cos_o / (sqrt(vw^2 + cos_o^2 |v|^2) - vw), v = (alpha_x cos(ph), alpha_y sin(ph)),
+   vw = v . w_o. Outer ph: panels at ph0 + k pi/2, where vw = 0 at ph0 and ph0 + pi (there
+   r_max changes from ~cos_o / (2 |vw|) to ~2 vw / (cos_o |v|^2) within ~cos_o |v| / |vw'| rad),
+   graded geometrically (1/4) towards ph0 and ph0 + pi down to that width. Inner u in
+   [0, atan(r_max)]: panels at atan(3^k), -2 <= k < 8, graded (1/4) towards the end, where w_i
+   meets the horizon. */
+static void shli_tab_aniso(int n, const shli_tabsrc *src, const double wo[3], int q, double *acc,
+                           float *y, const double *xg, const double *wg) {
+  double br[128];
+  double ub[40];
+  double ax = (double)src->brdf->alpha_x;
+  double ay = (double)src->brdf->alpha_y;
+  double co = wo[2];
+  double nw = sqrt(ax * ax * wo[0] * wo[0] + ay * ay * wo[1] * wo[1]);
+  double ph0 = atan2(ax * wo[0], -ay * wo[1]);
+  double c0 = cos(ph0);
+  double s0 = sin(ph0);
+  double w0 = nw > 0.0 ? co * sqrt(ax * ax * c0 * c0 + ay * ay * s0 * s0) / nw : 4.0;
+  double amax = ax > ay ? ax : ay;
+  double xn = wo[0] / ((1.0 + co) * ax);
+  double yn = wo[1] / ((1.0 + co) * ay);
+  double rn = sqrt(xn * xn + yn * yn);
+  double phn = atan2(yn, xn);
+  double dn = 0.25 / (amax * amax);
+  int nb = 0;
+  int p;
+  int i;
+  int j;
+  int k;
+  for (k = 0; k <= 4; ++k) {
+    br[nb++] = ph0 + 0.5 * SHLI_PI * (double)k;
+  }
+  for (k = 1; k < 15; ++k) {
+    double d = 0.5 * SHLI_PI * pow(0.25, (double)k);
+    if (d < 0.25 * w0) {
+      break;
+    }
+    br[nb++] = ph0 + d;
+    br[nb++] = ph0 + 2.0 * SHLI_PI - d;
+    br[nb++] = ph0 + SHLI_PI - d;
+    br[nb++] = ph0 + SHLI_PI + d;
+  }
+  /* the azimuth of h, atan2(alpha_y sin(ph), alpha_x cos(ph)), turns alpha_y / alpha_x times
+     faster than ph about the stretched axis of the smaller alpha: graded towards it (1/3) */
+  for (k = 0; k < 12; ++k) {
+    double rho = ax < ay ? ax / ay : ay / ax;
+    double d = rho * pow(3.0, (double)k);
+    double c = ax < ay ? 0.0 : 0.5 * SHLI_PI;
+    int m;
+    if (d > 0.4 * SHLI_PI) {
+      break;
+    }
+    for (m = 0; m < 4; ++m) {
+      double v = c + (m & 1 ? SHLI_PI : 0.0) + (m & 2 ? -d : d) - ph0;
+      v -= 2.0 * SHLI_PI * floor(v / (2.0 * SHLI_PI));
+      br[nb++] = ph0 + v;
+    }
+  }
+  /* alpha > 1: Lambda(w_i) has a branch point within ~1 / alpha of w_i = z, whose half vector
+     has the stretched slope (xn, yn) (radius rn, azimuth phn): graded towards it in ph and u */
+  if (amax > 1.0 && rn > dn) {
+    for (k = 0; k < 6; ++k) {
+      double d = atan(dn * pow(3.0, (double)k) / rn);
+      int m;
+      if (d > 0.25 * SHLI_PI) {
+        break;
+      }
+      for (m = 0; m < 2; ++m) {
+        double v = phn + (m ? -d : d) - ph0;
+        v -= 2.0 * SHLI_PI * floor(v / (2.0 * SHLI_PI));
+        br[nb++] = ph0 + v;
+      }
+    }
+  }
+  shli_sort_breaks(br, nb);
+  for (p = 0; p + 1 < nb; ++p) {
+    double g0 = br[p];
+    double g1 = br[p + 1];
+    if (!(g1 - g0 > 1e-15)) {
+      continue;
+    }
+    for (i = 0; i < q; ++i) {
+      double ph = 0.5 * (g0 + g1) + 0.5 * (g1 - g0) * xg[i];
+      double wp = 0.5 * (g1 - g0) * wg[i];
+      double cp = cos(ph);
+      double sp = sin(ph);
+      double vx = ax * cp;
+      double vy = ay * sp;
+      double vw = vx * wo[0] + vy * wo[1];
+      double v2 = vx * vx + vy * vy;
+      double sq = sqrt(vw * vw + co * co * v2);
+      double rmax = vw > 0.0 ? (vw + sq) / (co * v2) : co / (sq - vw);
+      double umax = atan(rmax);
+      double top = 0.5 * umax;
+      int nu = 0;
+      int pu;
+      ub[nu++] = 0.0;
+      ub[nu++] = umax;
+      for (k = -2; k < 8; ++k) {
+        double b = atan(pow(3.0, (double)k));
+        if (b < umax) {
+          ub[nu++] = b;
+          top = b > top ? b : top;
+        }
+      }
+      for (k = 0; k < 12 && (umax - top) > 0.5 * co; ++k) {
+        top = umax - 0.25 * (umax - top);
+        ub[nu++] = top;
+      }
+      if (amax > 1.0) {
+        for (k = 0; k < 6; ++k) {
+          double d = dn * pow(3.0, (double)k);
+          if (rn + d < rmax) {
+            ub[nu++] = atan(rn + d);
+          }
+          if (rn - d > 0.0 && rn - d < rmax) {
+            ub[nu++] = atan(rn - d);
+          }
+        }
+      }
+      shli_sort_breaks(ub, nu);
+      for (pu = 0; pu + 1 < nu; ++pu) {
+        double a0 = ub[pu];
+        double a1 = ub[pu + 1];
+        if (!(a1 - a0 > 1e-15)) {
+          continue;
+        }
+        for (j = 0; j < q; ++j) {
+          double s = 0.5 * (xg[j] + 1.0);
+          double u = a0 + (a1 - a0) * s * s * (3.0 - 2.0 * s);
+          double tu = tan(u);
+          double cu = cos(u);
+          double sx = ax * tu * cp;
+          double sy = ay * tu * sp;
+          double c3 = 1.0 / (1.0 + sx * sx + sy * sy);
+          double wu = 0.5 * wg[j] * (a1 - a0) * 6.0 * s * (1.0 - s);
+          shli_tab_snode(n, src, wo, sx, sy, wp * wu * ax * ay * tu / (cu * cu) * c3 * sqrt(c3),
+                         acc, y);
+        }
+      }
+    }
+  }
+}
+
 /* theta_o of sample t of an n_theta-sample grid (see >>brdftab), in double: u(d) = t / (n - 1)
    solved for d by bisection (u is monotone), d = pi/2 - theta_o */
 static double shli_grid_d(int n_theta, int t) {
@@ -10427,7 +10612,9 @@ static void shli_tab_project(int n, const shli_tabsrc *src, double kd, int spec,
   if (kd != 0.0) {
     shli_tab_diffuse(n, kd, acc, y);
   }
-  if (spec && src->half) {
+  if (spec && src->half == 2) {
+    shli_tab_aniso(n, src, wo, q, acc, y, xg, wg);
+  } else if (spec && src->half) {
     shli_tab_half(n, src, wo, q, acc, y, xg, wg);
   } else if (spec) {
     shli_tab_spec(n, src, wo, q, acc, y, xg, wg);
@@ -10564,6 +10751,8 @@ SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_pa
   } else if (micro && brdf->alpha_x == brdf->alpha_y) {
     src.half = 1;
     src.width = (double)brdf->alpha_x;
+  } else if (micro) {
+    src.half = 2; /* anisotropic: the stretched half-vector rule (alphas from brdf) */
   }
   return shli_tab_build(t, &src, (double)brdf->kd, quad_order, out_err_est);
 }
@@ -10571,9 +10760,9 @@ SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_pa
 /* ---- MERL ---- */
 /* MERL reconstruction, one axis at a time (phi_d, then theta_d, then theta_h): the value at
    index coordinate x from samples j0 = floor(x) (at most nj - 2, so that beyond the last sample
-   the last two extrapolate) and j0 + 1, each valid or not; both valid: linear; one valid: linear
-   extrapolation from it and its other neighbour when that is valid, else the valid one held;
-   none: invalid (returns 0). get(j) gives the value of index j and whether it is valid. */
+   the last two extrapolate) and j0 + 1, each valid or not; both valid: linear; one valid:
+   extrapolated from it and its neighbours on its other side (shli_merl_extrap); none: invalid
+   (returns 0). get(j) gives the value of index j and whether it is valid. */
 typedef struct shli_merlq {
   const shl_merl *m;
   int c;
@@ -10584,6 +10773,29 @@ typedef struct shli_merlq {
 
 static int shli_merl_get(const shli_merlq *q, int axis, int j, double *out);
 
+/* the value e cells beyond the valid sample j (value v0), away from its neighbours j + dir,
+   j + 2 dir, j + 3 dir: quadratic through the first three where the curvature is seen by the
+   data (the second differences at j + dir and j + 2 dir have the same sign and differ by at most
+   the first's magnitude), else linear from two, else v0 held */
+static double shli_merl_extrap(const shli_merlq *q, int axis, int j, int dir, double v0, double e) {
+  double v1 = 0.0;
+  double v2 = 0.0;
+  double v3 = 0.0;
+  double d2;
+  double d3;
+  if (!shli_merl_get(q, axis, j + dir, &v1)) {
+    return v0;
+  }
+  if (shli_merl_get(q, axis, j + 2 * dir, &v2) && shli_merl_get(q, axis, j + 3 * dir, &v3)) {
+    d2 = v0 - 2.0 * v1 + v2;
+    d3 = v1 - 2.0 * v2 + v3;
+    if (d2 * d3 > 0.0 && fabs(d2 - d3) <= fabs(d2)) {
+      return v0 + e * (v0 - v1) + 0.5 * e * (e + 1.0) * d2;
+    }
+  }
+  return v0 + e * (v0 - v1);
+}
+
 static int shli_merl_axis(const shli_merlq *q, int axis, double *out) {
   int nj = axis == 0 ? q->m->n_theta_h : (axis == 1 ? q->m->n_theta_d : q->m->n_phi_d);
   double x = q->u[axis];
@@ -10591,7 +10803,6 @@ static int shli_merl_axis(const shli_merlq *q, int axis, double *out) {
   double fr;
   double v0 = 0.0;
   double v1 = 0.0;
-  double vx = 0.0;
   int j0;
   int ok0;
   int ok1;
@@ -10610,11 +10821,11 @@ static int shli_merl_axis(const shli_merlq *q, int axis, double *out) {
     return 1;
   }
   if (ok0) {
-    *out = shli_merl_get(q, axis, j0 - 1, &vx) ? v0 + fr * (v0 - vx) : v0;
+    *out = shli_merl_extrap(q, axis, j0, -1, v0, fr);
     return 1;
   }
   if (ok1) {
-    *out = shli_merl_get(q, axis, j0 + 2, &vx) ? v1 + (fr - 1.0) * (vx - v1) : v1;
+    *out = shli_merl_extrap(q, axis, j0 + 1, 1, v1, 1.0 - fr);
     return 1;
   }
   return 0;
@@ -10709,9 +10920,10 @@ static double shli_merl_f(const shl_merl *m, int c, const double wo[3], const do
      query's factor (cos_i + cos_o) / 2, floored at 1e-9. Where the cell reaches past the valid
      samples (negative in MERL files, 0 where a direction of the sample lies below the surface;
      beyond the last theta_h and theta_d samples, 88 and 89 degrees in MERL files), each axis
-     extrapolates linearly from the last two valid samples. With no valid sample in reach, the
-     theta_d coordinate steps down one layer at a time (held along theta_d, where the sampled
-     configurations end first). */
+     extrapolates from the last valid samples (quadratic where 4 of them agree on the curvature:
+     near the horizon the quantity is curved on the scale of the grid step, linear otherwise). With
+     no valid sample in reach, the theta_d coordinate steps down one layer at a time (held along
+     theta_d, where the sampled configurations end first). */
   for (;;) {
     if (shli_merl_axis(&q, 0, &v)) {
       break;

@@ -1,6 +1,7 @@
 /* bench_brdftab.c - >>brdftab: table build time per material and band count (n = 3..10,
    90 theta_o samples, quad_order 32, CPU time of this thread, best of 2) with the build's error
-   estimate; the lookup kernel's time; and the shading error of sum_i L_i T_i against direct
+   estimate; anisotropic GGX builds (90 x 4 samples, n = 9, q = 16 and 24); the lookup kernel's
+   time; and the shading error of sum_i L_i T_i against direct
    quadrature of L f cos over a cap light (GGX, kd 0.2 + ks 0.8, f0 0.04) as a function of n and
    roughness. Writes bench/out/brdftab.md and bench/out/brdftab.csv. Build and run:
    make bench-brdftab. */
@@ -134,6 +135,39 @@ int main(void) {
     }
     fprintf(md, " %.1e |\n", (double)est);
     fflush(md);
+  }
+  { /* anisotropic GGX (the stretched half-vector rule): 90 x 4 samples, n = 9, one run */
+    const float al[2][2] = {{0.05f, 0.2f}, {1e-3f, 0.01f}};
+    const int qa[2] = {16, 24};
+    float *da = (float *)malloc(shl_brdf_table_size(9, nt, 4) * sizeof(float));
+    int a, j;
+    if (!da) return 1;
+    fprintf(md,
+            "\nTable build, anisotropic GGX (kd 0.2, ks 0.8, f0 0.04), 90 x 4 samples, n = 9: "
+            "ms per table (CPU time, one run) and the estimate\n\n"
+            "| (alpha_x, alpha_y) | q = 16 | q = 24 | estimate (q = 24) |\n|---|---|---|---|\n");
+    for (a = 0; a < 2; ++a) {
+      shl_brdf_params g = mk(SHLIGHT_BRDF_GGX, 0.2f, 0.8f, 0, al[a][0], al[a][1], 0.04f);
+      shl_brdf_table t;
+      float est = 0.0f;
+      t.n = 9;
+      t.n_theta = nt;
+      t.n_phi = 4;
+      t.flags = SHLIGHT_BRDF_TABLE_ANISO;
+      t.data = da;
+      fprintf(md, "| (%g, %g) |", (double)al[a][0], (double)al[a][1]);
+      for (j = 0; j < 2; ++j) {
+        double t0 = cpu_now(), dt;
+        if (shl_brdf_table_build(&t, &g, qa[j], j ? &est : NULL) != SHLIGHT_OK) return 1;
+        dt = cpu_now() - t0;
+        fprintf(md, " %.0f |", 1e3 * dt);
+        fprintf(csv, "build_ms,GGX aniso %g %g q%d,9,%.3f,%.3g\n", (double)al[a][0],
+                (double)al[a][1], qa[j], 1e3 * dt, (double)est);
+      }
+      fprintf(md, " %.1e |\n", (double)est);
+      fflush(md);
+    }
+    free(da);
   }
   { /* lookup kernel: ns per call */
     float o[100], wo[3];

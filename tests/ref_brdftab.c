@@ -7,7 +7,8 @@
  *     error estimate beside the true error.
  * Opt-in (minutes): make brdftab-ref. Ends with "N passed, N failed" (checks: the lookup
  * within 1e-3 of the norm at theta_o <= 89.9 deg for GGX alpha >= 0.05 and Phong e <= 1000,
- * 90 and 128 samples). `l M` runs the lookup rows of model M (0 .. 3) only. */
+ * 90 and 128 samples). `l M` runs the lookup rows of model M (0 .. 3) only, `a` the
+ * anisotropic GGX rows (stretched half-vector rule) only. */
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
 #include "ref/brdfref.h"
@@ -24,6 +25,7 @@ static void ref_at(int model, double par, double theta_deg, long double tol, lon
   r.model = model == SHLIGHT_BRDF_PHONG ? 1 : 0;
   r.alpha = (long double)(float)par;
   r.exponent = (long double)(float)par;
+  r.alpha_y = 0.0L;
   r.f0 = 1.0L;
   r.n = N;
   r.tol = tol;
@@ -205,13 +207,95 @@ static void quad_table(int only_m, int only_k) {
     }
 }
 
+/* anisotropic GGX (the stretched half-vector rule) against the reference, w_o in the xz plane:
+   (ax, ay) and (ay, ax) are phi_o = 0 and 90 deg of one BRDF */
+static void aniso_table(void) {
+  static const float al[3][2] = {{0.05f, 0.2f}, {0.2f, 0.05f}, {0.3f, 1.0f}};
+  static const double degs[2] = {30.0, 89.5};
+  static const int qs[3] = {16, 32, 64};
+  int m, k, j, i, r, w;
+  printf("\n## anisotropic GGX: quadrature error / |ref|_2 (max of F, F'), n = 9, and the build's "
+         "estimate / |ref|_2\n\n| (alpha_x, alpha_y) | theta_o |");
+  for (j = 0; j < 3; ++j)
+    printf(" q = %d: error (estimate) |", qs[j]);
+  printf("\n|---|---|---|---|---|\n");
+  for (m = 0; m < 3; ++m)
+    for (k = 0; k < 2; ++k) {
+      shl_brdf_params b = mkp(SHLIGHT_BRDF_GGX, 0.0);
+      shli_tabsrc src;
+      brdfref rf;
+      long double ref[2 * NN], nrm = 0.0L;
+      double xg[256], wg[256], acc[3][2 * NN], th = degs[k] * 3.14159265358979323846 / 180.0, wo[3];
+      float y[NN];
+      b.alpha_x = al[m][0];
+      b.alpha_y = al[m][1];
+      rf.model = 0;
+      rf.alpha = (long double)al[m][0];
+      rf.alpha_y = (long double)al[m][1];
+      rf.exponent = 0.0L;
+      rf.f0 = 1.0L;
+      rf.n = N;
+      rf.tol = 1e-12L;
+      brdfref_project(&rf, (long double)degs[k] * BRDFREF_PI / 180.0L, ref);
+      src.brdf = &b;
+      src.merl = NULL;
+      src.channel = 0;
+      src.gmax = 3.14159265358979323846;
+      src.half = 2;
+      src.width = 0.0;
+      wo[0] = sin(th);
+      wo[1] = 0.0;
+      wo[2] = cos(th);
+      for (w = 0; w < 2; ++w) {
+        long double nw = 0.0L;
+        for (i = 0; i < NN; ++i)
+          nw += ref[w * NN + i] * ref[w * NN + i];
+        nrm = fmaxl(nrm, sqrtl(nw));
+      }
+      printf("| (%g, %g) | %g |", (double)al[m][0], (double)al[m][1], degs[k]);
+      for (j = 0; j < 3; ++j) {
+        long double e = 0.0L;
+        double e1 = 0.0, e2 = 0.0, mx = 0.0, es;
+        for (r = 0; r < 3; ++r) {
+          int q = qs[j] >> (2 - r);
+          shli_gauss_legendre(q, xg, wg);
+          shli_tab_project(N, &src, 0.0, 1, wo, q, xg, wg, acc[r], y);
+        }
+        for (i = 0; i < 2 * NN; ++i) {
+          double d1 = fabs(acc[1][i] - (double)(float)acc[0][i]);
+          double d2 = fabs(acc[2][i] - (double)(float)acc[1][i]);
+          e1 = d1 > e1 ? d1 : e1;
+          e2 = d2 > e2 ? d2 : e2;
+          mx = fabs(acc[2][i]) > mx ? fabs(acc[2][i]) : mx;
+          e = fmaxl(e, fabsl((long double)(float)acc[2][i] - ref[i]) / nrm);
+        }
+        es = e2 < e1 ? pow(e2, 2.5) / pow(e1, 1.5) : e2;
+        if (es < mx * 5.9604644775390625e-8) es = mx * 5.9604644775390625e-8;
+        printf(" %.1e (%.1e) |", (double)e, es / (double)nrm);
+        if (qs[j] >= 32) { /* the float floor (8 ulps of the largest coefficient) */
+          if (e <= 8.0 * 5.9604644775390625e-8 * mx / (double)nrm)
+            ++npass;
+          else {
+            ++nfail;
+            fprintf(stderr, "FAIL aniso (%g, %g) at %g deg, q = %d: %g\n", (double)al[m][0],
+                    (double)al[m][1], degs[k], qs[j], (double)e);
+          }
+        }
+        fflush(stdout);
+      }
+      printf("\n");
+    }
+}
+
 int main(int argc, char **argv) {
   brdfref_init();
-  if (argc < 2 || argv[1][0] != 'q')
+  if (argc < 2 || argv[1][0] == 'l')
     lookup_table(argc > 2 && argv[1][0] == 'l' ? atoi(argv[2]) : -1);
   /* "q M K": only model M, angle K of the quadrature table (-1: all), to run cases in parallel */
-  if (argc < 2 || argv[1][0] != 'l')
+  if (argc < 2 || argv[1][0] == 'q')
     quad_table(argc > 2 ? atoi(argv[2]) : -1, argc > 3 ? atoi(argv[3]) : -1);
+  if (argc < 2 || argv[1][0] == 'a') /* "a": the anisotropic rows only */
+    aniso_table();
   printf("%d passed, %d failed\n", npass, nfail);
   return nfail != 0;
 }

@@ -1,9 +1,9 @@
 /* brdfref.h - an independent reference for BRDF SH tables, in long double: its own GGX
- * (isotropic, height-correlated Smith, Schlick) and Phong lobe, its own real SH (associated
- * Legendre recurrence, Condon-Shortley phase, the >>basis convention), and the projection of
- * F = cos_i f and F' = f by nested adaptive Gauss-Legendre quadrature over the hemisphere
- * (outer theta_i, inner phi_i; each panel compares the 12- and 24-point rules and bisects until
- * they agree to tol), written without any of shlight's quadrature or BRDF code. */
+ * (isotropic or anisotropic, height-correlated Smith, Schlick) and Phong lobe, its own real SH
+ * (associated Legendre recurrence, Condon-Shortley phase, the >>basis convention), and the
+ * projection of F = cos_i f and F' = f by nested adaptive Gauss-Legendre quadrature over the
+ * hemisphere (outer theta_i, inner phi_i; each panel compares the 12- and 24-point rules and
+ * bisects until they agree to tol), written without any of shlight's quadrature or BRDF code. */
 #ifndef BRDFREF_H
 #define BRDFREF_H
 #include <math.h>
@@ -15,6 +15,7 @@
 typedef struct brdfref {
   int model; /* 0: GGX, 1: Phong */
   long double alpha, f0, exponent;
+  long double alpha_y; /* > 0: anisotropic GGX, alpha along x, alpha_y along y; else isotropic */
   int n;
   long double wo[3];
   long double tol;
@@ -103,10 +104,22 @@ static long double brdfref_f(const brdfref *r, const long double wi[3]) {
     h[0] /= hl;
     h[1] /= hl;
     h[2] /= hl;
-    t = h[2] * h[2] * (a2 - 1.0L) + 1.0L;
-    d = a2 / (BRDFREF_PI * t * t);
-    lo = 0.5L * (sqrtl(1.0L + a2 * (1.0L - wo[2] * wo[2]) / (wo[2] * wo[2])) - 1.0L);
-    li = 0.5L * (sqrtl(1.0L + a2 * (1.0L - wi[2] * wi[2]) / (wi[2] * wi[2])) - 1.0L);
+    if (r->alpha_y > 0.0L) { /* D = 1 / (pi ax ay (hx^2 / ax^2 + hy^2 / ay^2 + hz^2)^2) */
+      long double ax = r->alpha, ay = r->alpha_y, sx = h[0] / ax, sy = h[1] / ay;
+      t = sx * sx + sy * sy + h[2] * h[2];
+      d = 1.0L / (BRDFREF_PI * ax * ay * t * t);
+      lo = 0.5L *
+           (sqrtl(1.0L + (ax * ax * wo[0] * wo[0] + ay * ay * wo[1] * wo[1]) / (wo[2] * wo[2])) -
+            1.0L);
+      li = 0.5L *
+           (sqrtl(1.0L + (ax * ax * wi[0] * wi[0] + ay * ay * wi[1] * wi[1]) / (wi[2] * wi[2])) -
+            1.0L);
+    } else {
+      t = h[2] * h[2] * (a2 - 1.0L) + 1.0L;
+      d = a2 / (BRDFREF_PI * t * t);
+      lo = 0.5L * (sqrtl(1.0L + a2 * (1.0L - wo[2] * wo[2]) / (wo[2] * wo[2])) - 1.0L);
+      li = 0.5L * (sqrtl(1.0L + a2 * (1.0L - wi[2] * wi[2]) / (wi[2] * wi[2])) - 1.0L);
+    }
     c = 1.0L - (wi[0] * h[0] + wi[1] * h[1] + wi[2] * h[2]);
     if (c < 0.0L) c = 0.0L;
     fr = r->f0 + (1.0L - r->f0) * c * c * c * c * c;
