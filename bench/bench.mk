@@ -121,7 +121,7 @@ bench-brdftab: build/bench/bench_brdftab
 bench: bench-brdftab
 .PHONY: bench-brdftab
 
-# issue 3: the GLSL solid angle's float error, reproduced by a float twin of the C kernel
+# the GLSL solid angle's float error, reproduced by a float twin of the C kernel
 SOLID_N ?= 2000000
 build/bench/solid_angle_float: bench/solid_angle_float.c
 	@mkdir -p build/bench

@@ -3,7 +3,7 @@
  *   sh_sh      shl_sh_dot of the two SH vectors (both given: the table / accumulated case)
  *   sh_sh_rot  the same with both SH made per point (two shl_zh_rotate, then shl_sh_dot)
  *   sh_sh_1rot the light's SH made per point (one shl_zh_rotate of the cap), the lobe's SH given
- *              (from a table): seed 000's SH path
+ *              (from a table): [HVL]'s SH path
  *   sh_zh      shl_sh_conv_zh: SH radiance (given) against the ZH lobe turned to r
  *   zh_zh      shl_zh_dot_zh: ZH cap about w against the ZH lobe about r, O(n)
  * each next to its error against the integral of the true (untruncated) lobe over the cap,

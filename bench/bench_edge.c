@@ -1,10 +1,10 @@
 /* bench_edge.c - polygon (quad) lights, single-axis Phong: ns and error per method.
- * For each method of shl_polygon_phong (exact, the paper's three O(1) fits with the MATH.md
- * errata fixed, shlight's Stokes-form quadrature, auto) and exponents 1..1e4: ns per quad light
- * (per-thread CPU time, median of 15 samples of >= 2 ms over 256 configurations) and the error
- * in units of the normalised lobe against long double cubature of the doubly clipped moment
- * (tests/ref/arearef.h): median, p95, max; then the error by configuration (lights straddling
- * the horizon, grazing views, large lights, slivers). Writes bench/out/edge.md.
+ * For each method of shl_polygon_phong (exact, the paper's three O(1) fits with the
+ * docs/derivations.md errata fixed, shlight's Stokes-form quadrature, auto) and exponents 1..1e4:
+ * ns per quad light (per-thread CPU time, median of 15 samples of >= 2 ms over 256 configurations)
+ * and the error in units of the normalised lobe against long double cubature of the doubly clipped
+ * moment (tests/ref/arearef.h): median, p95, max; then the error by configuration (lights
+ * straddling the horizon, grazing views, large lights, slivers). Writes bench/out/edge.md.
  * `--count-only METHOD EXPONENT K` runs K calls of the wrapper bw_phong for callgrind
  * (bench/callgrind_edge.sh). Build and run: make bench-edge. */
 #define _POSIX_C_SOURCE 200809L

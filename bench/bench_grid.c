@@ -1,4 +1,4 @@
-/* bench_grid.c - seed 003 Table 2 workload: SH + gradients of 648 sphere lights on an 8^3 grid,
+/* bench_grid.c - [GRAD] Table 2 workload: SH + gradients of 648 sphere lights on an 8^3 grid,
    n = 5..9, forward / reversed, 1 / 2 threads, median of 5; plus this CPU's measured float
    FMA peak (AVX-512, 1 and 2 threads). Build and run: make bench-grid. */
 #define _POSIX_C_SOURCE 199309L

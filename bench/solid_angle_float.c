@@ -1,4 +1,4 @@
-/* solid_angle_float.c - why the GLSL shl_triangle_solid_angle differs from C (issue 3).
+/* solid_angle_float.c - why the GLSL shl_triangle_solid_angle differs from C .
  * A float twin of the C kernel (the same formula, shli_real = float, no contraction, the own
  * atan2 in float), i.e. what llvmpipe runs, against binary128 at the same float inputs, on the
  * configurations of tests/test_glsl.c (make_lights). Prints, over N configurations:

@@ -1,5 +1,5 @@
 /* pass_area.c - the "area" pass of shlrender: polygon, triangle, disc and sphere area lights
- * without tables (seed 001), Lambert diffuse plus a glossy lobe, unshadowed.
+ * without tables ([AREA]), Lambert diffuse plus a glossy lobe, unshadowed.
  *
  * Per pixel and light (unit radiance, then times the light's RGB radiance):
  *   diffuse   kd / pi * E, E = M^1(light, n) the horizon-clipped cosine moment (the irradiance),

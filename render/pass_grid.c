@@ -1,4 +1,4 @@
-/* pass_grid.c - the "grid" pass of shlrender: sphere and triangle lights through SH (seed 003).
+/* pass_grid.c - the "grid" pass of shlrender: sphere and triangle lights through SH ([GRAD]).
  *
  * Every RD_LIGHT_SPHERE and RD_LIGHT_TRIANGLE of the scene (a triangle as the paper's sphere,
  * shl_triangle_light) is projected to SH (run->bands bands, RGB), convolved with the Lambert

@@ -1,8 +1,8 @@
 /* pass_hvl.c - one-bounce indirect light from a spot light's reflective shadow map (RSM):
- * virtual point lights (VPL) against Harmonics Virtual Lights (HVL, seed 000 sec. 3 and 5).
+ * virtual point lights (VPL) against Harmonics Virtual Lights (HVL, [HVL] sec. 3 and 5).
  *
  * What is rendered. The pass outputs the one-bounce indirect radiance only (no direct light,
- * like seed 000's GI figures): at a camera pixel x with shading normal n_x and albedo kd(x),
+ * like [HVL]'s GI figures): at a camera pixel x with shading normal n_x and albedo kd(x),
  *   L(x) = kd(x) / pi * E_ind(x),
  * E_ind the irradiance from the surfaces that the scene's first spot light lights directly.
  * Visibility: the light's visibility is the RSM's (the first hit from the light); there is no
@@ -41,7 +41,7 @@
  * Methods (each on "cpu", C kernels, and "gl", the GLSL twins in a fragment shader with the
  * light set in an SSBO):
  *   vpl             E = sum Phi max(0, n_y . -w) max(0, n_x . w) / (pi d^2), w = (y - x)/d:
- *                   the 1/d^2 spike is kept (what seed 000 removes);
+ *                   the 1/d^2 spike is kept (what [HVL] removes);
  *   vpl_clamp       the same with d^2 clamped below by r_fov^2 (the texel spacing of the
  *                   fov heuristic at that VPL: the usual distance clamp, made scale-free);
  *   hvl_neighbours  HVLs with radius r1 (eq. 23, shl_hvl_radius_neighbours over the 8-connected
@@ -50,7 +50,7 @@
  *                   field of view 2 angle (erratum E9) and M = w h, the texel spacing).
  * HVL j: L_j = Phi_j (F' . Y(-w_j)) G_j (eq. 20-21, shl_hvl_radiance with the exact H) with F'
  * = 1/pi, the Lambert BRDF of unit albedo (kd(y) is in Phi): it is constant, so the emission
- * needs band 0 only (n = 1, seed 000: "isotropic HVL reconstruction only use band 0"), exact at
+ * needs band 0 only (n = 1, [HVL]: "isotropic HVL reconstruction only use band 0"), exact at
  * any band count. The receiver's lobe is Lambert's ZH (shl_zh_lambert, max(0, cos)/pi) about
  * n_x with run->bands bands, and the contribution lj (cap . lobe) is shl_hvl_contribution_zh;
  * L = kd(x) sum_j Phi_j (...) (in the point limit this is the VPL sum: G_j pi r^2 / d^2 -> 1).

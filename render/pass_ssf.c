@@ -1,5 +1,5 @@
 /* pass_ssf.c - instant global illumination with interleaved virtual point lights (VPLs) and the
- * screen-space SH filter of seed 004 (Segovia & Wald), against the same light filtered as
+ * screen-space SH filter of [SSF] (Segovia & Wald), against the same light filtered as
  * irradiance (classical IGI), through shlight's >>ssf kernels (C) and shl_ssf.glsl (GL).
  *
  * What is rendered. One-bounce indirect light only, unshadowed between the bounce and the
@@ -43,7 +43,7 @@
  *               shl_ssf_weight (geometric normals, cos >= 0.9; plane distance <= 0.02 times the
  *               eye distance): across a normal map it averages irradiances that belong to
  *               different normals;
- *   sh_filter   seed 004: the interleaved SH of the incoming radiance (run->bands bands, RGB),
+ *   sh_filter   [SSF]: the interleaved SH of the incoming radiance (run->bands bands, RGB),
  *               the same filter on the SH, then E at n_s from the filtered SH (the clamped
  *               cosine rotated once, shl_zh_cosine_power + shl_zh_rotate, shl_sh_dot per
  *               channel; shl_ssf_irradiance is the one-channel form). Negative E (SH ringing)
@@ -66,7 +66,7 @@
  * Printed per method (stdout): RMSE, PSNR and SSIM over the pixels whose material has a normal
  * map (bump_freq > 0) and over the others, against gt and against "all" (the same 256 VPLs
  * without interleaving: the error of the filter alone; against gt the VPL discretisation of
- * "all" itself, RMSE ~0.009 on cornell's floor, dominates). Seed 004's claim is that sh_filter
+ * "all" itself, RMSE ~0.009 on cornell's floor, dominates). [SSF]'s claim is that sh_filter
  * keeps the normal-map detail that irr_filter blurs.
  * Measured (cornell, 5 bands, llvmpipe; "vs all" on the normal-mapped floor):
  *   64x48 --gt 1 (gt 128^2; 64^2 differs by RMSE 8.8e-4): RMSE / PSNR / SSIM vs gt: all 0.0060 /

@@ -741,7 +741,7 @@ static int build_spheres(builder *b) {
   return 0;
 }
 
-/* seed 003's setting: many small lights over a plane with objects: 10 x 10 sphere lights and
+/* [GRAD]'s setting: many small lights over a plane with objects: 10 x 10 sphere lights and
  * 20 triangle lights in a layer above. */
 static int build_manylights(builder *b) {
   rd_scene *s = b->s;

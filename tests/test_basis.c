@@ -243,8 +243,8 @@ static void test_ref_explicit(void) {
   printf("  shref_eval_q vs explicit finite sums, n = 20, 300 dirs: max abs diff %.2e\n", maxe);
   TL_CHECK(maxe <= 1e-24, "recurrence vs explicit: %.3e", maxe);
 
-  /* Closed forms for l <= 2 (MATH.md sec. 1, DirectX/Sloan signs). Tolerance 1e-32 (a few
-   * quad ulps). */
+  /* Closed forms for l <= 2 (docs/derivations.md sec. 1, DirectX/Sloan signs). Tolerance 1e-32 (a
+   * few quad ulps). */
   {
     shref_q x = (shref_q)0.3, y = (shref_q)-0.5, z = (shref_q)0.7, r, pi = shref_pi(), e = 0;
     shref_q c[9];
@@ -312,7 +312,7 @@ static void test_ref_orthonormality(void) {
 /* Self-checks of the finite-difference references (in quad, n = 16 and some n = 64 points):
  *  tangency   grad . d = 0 (Y(d/|d|) is homogeneous of degree 0),
  *  Unsold     sum_m |grad Y_lm|^2 |d|^2 = l(l+1)(2l+1)/4pi (relative),
- *  d_phi Y_lm = -m Y_l,-m (exact identity, MATH.md sec. 1 eq. 17),
+ *  d_phi Y_lm = -m Y_l,-m (exact identity, docs/derivations.md sec. 1 eq. 17),
  *  chain rule grad = dtheta * e_theta/|d| + dphi * e_phi/(|d| sin theta) (away from the pole),
  * all within 1e-20 (scaled by |d|): the stencil bound in shref.h is ~1e-22. */
 static void test_ref_fd_self(void) {

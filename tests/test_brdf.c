@@ -7,7 +7,7 @@
  *  - Lambda_l(e) = (e+1) int_0^1 x^e P_l(x) dx: composite Gauss-Legendre quadrature in theta,
  *    in binary128 (nodes refined by Newton in binary128), so the cosine-power kernels can be held
  *    to one float rounding (the kernels run the recurrence in double).
- *  - Lambert: Ramamoorthi-Hanrahan's factorial form (MATH.md sec. 5) in long double.
+ *  - Lambert: Ramamoorthi-Hanrahan's factorial form (docs/derivations.md sec. 5) in long double.
  *  - GGX / Beckmann: D(h)(n.h) integrated in theta (long double), panels graded geometrically
  *    around the lobe width alpha and around the grazing end 1/alpha.
  *  - Convolutions and irradiance: product quadrature on the sphere (Gauss-Legendre in z or theta,
@@ -233,7 +233,7 @@ static void test_lambert_closed_form(void) {
     }
   }
   TL_CHECK(fabs((double)z[2] - 0.1576958) < 1e-7 && fabs((double)z[4] + 0.0352618) < 1e-7,
-           "MATH.md table values");
+           "docs/derivations.md table values");
 }
 
 static void test_cosine_power_hard(void) {
@@ -730,7 +730,7 @@ static void test_horizon(void) {
     }
   printf("  exact H: max |error| %.2e (float output) over s in [1e-6, 1]\n", worst);
   {
-    /* smoothstep variant: its max error against the exact H (MATH.md table) */
+    /* smoothstep variant: its max error against the exact H (docs/derivations.md table) */
     static const double as[] = {0.01, 0.1, 0.3, 0.5, 0.8, 1.2, 1.5};
     static const double tab[] = {0.039, 0.040, 0.041, 0.044, 0.051, 0.068, 0.089};
     int k;
@@ -746,8 +746,8 @@ static void test_horizon(void) {
         if (e > m) m = e;
       }
       printf(" a=%g %.3f", as[k], m);
-      TL_CHECK(fabs(m - tab[k]) <= 0.0015, "smoothstep a=%g: %.4f vs MATH.md %.3f", as[k], m,
-               tab[k]);
+      TL_CHECK(fabs(m - tab[k]) <= 0.0015, "smoothstep a=%g: %.4f vs docs/derivations.md %.3f",
+               as[k], m, tab[k]);
     }
     printf("\n");
   }
@@ -781,7 +781,7 @@ static void test_hvl(void) {
     double d = 10.0;
     shl_zh_cap(1, 1.0f, (float)d, zh);
     TL_CHECK(fabs((double)zh[0] / 0.28209479177387814 / M_PI * d * d - 1.0025) < 2e-4,
-             "Omega / (pi r^2) d^2 = 1.0025 at d/r = 10 (MATH.md)");
+             "Omega / (pi r^2) d^2 = 1.0025 at d/r = 10 (docs/derivations.md)");
   }
   /* G against its definition with an independent H */
   {

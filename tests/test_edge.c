@@ -1,12 +1,12 @@
 /* test_edge.c - shlight's >>edge section (edge integrals, polygon axial moments, Phong) against
  * references that do not share its formulas:
  *  - the edge integral F against long double Gauss-Legendre quadrature of its definition
- *    (seed 001 eq. 3: sum over k of c^k cos^k), composite, 64 panels x 16 nodes;
+ *    ([AREA] eq. 3: sum over k of c^k cos^k), composite, 64 panels x 16 nodes;
  *  - polygon moments against tests/ref/arearef.h: adaptive Duffy-Gauss cubature over the
  *    spherical polygon in long double (independent of any edge formula), and, for the large
  *    random sets, that file's long double Arvo recurrence (cross-checked against the cubature
  *    by tests/selftest_arearef.c and here on a subset).
- * Errors are in units of the normalised lobe, (e+1)/(2 pi) |M - M_ref| (MATH.md sec. 7,
+ * Errors are in units of the normalised lobe, (e+1)/(2 pi) |M - M_ref| (docs/derivations.md sec. 7,
  * research note: relative errors of tiny moments measure cancellation, not the method).
  * Build: make build/tests/test_edge. Run: build/tests/test_edge (ends "N passed, N failed"). */
 #define SHLIGHT_IMPLEMENTATION
@@ -102,7 +102,8 @@ static void test_edge_integral(void) {
   printf("  F max error / peak: exact %.2e  Lorentzian %.2e  Lorentzian-Pearson %.2e  ellipsoid "
          "%.2e\n",
          worst[0], worst[1], worst[2], worst[3]);
-  /* the paper's fits, corrected (MATH.md 7.2 measured 0.118, 0.028, 0.42 on a wider grid) */
+  /* the paper's fits, corrected (docs/derivations.md 7.2 measured 0.118, 0.028, 0.42 on a wider
+   * grid) */
   TL_CHECK(worst[1] < 0.13, "Lorentzian worst %g", worst[1]);
   TL_CHECK(worst[2] < 0.03, "Lorentzian-Pearson worst %g", worst[2]);
   TL_CHECK(worst[3] < 0.45, "ellipsoid worst %g", worst[3]);
@@ -537,7 +538,8 @@ static void test_phong2(void) {
     }
     printf("  double-axis Phong, view %2.0f deg: error mean %.2e max %.2e (normalised lobe)\n",
            tvs[it], sum / cnt, worst);
-    /* the lobe-product approximation's own error (MATH.md 7.3: a few % aligned, -57 %+ at 90 deg)
+    /* the lobe-product approximation's own error (docs/derivations.md 7.3: a few % aligned, -57 %+
+     * at 90 deg)
      */
     TL_CHECK(worst < (tvs[it] <= 40 ? 1e-2 : 0.05), "view %g: max error %g", tvs[it], worst);
   }

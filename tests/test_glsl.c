@@ -246,8 +246,8 @@ static void check_eval_fragment(int n, const char *version) {
 /* >>zonal / >>light on the compute path: sphere lights (values + gradient), the cap ZH, the
  * triangle light and the solid angle, at random configurations with d >= 1.05 r. Tolerance:
  * GLSL forms c - x and the cap in float; the relative rounding of c - x and of alpha is a few
- * 1e-7, amplified near the surface by r / (d - r) <= 20 here (MATH.md section 2), so values
- * agree to TOL_L = 2e-6 of max|coef| and gradients to 20 * TOL_L of max|grad| (the gradient
+ * 1e-7, amplified near the surface by r / (d - r) <= 20 here (docs/derivations.md section 2), so
+ * values agree to TOL_L = 2e-6 of max|coef| and gradients to 20 * TOL_L of max|grad| (the gradient
  * carries 1/alpha). Triangles: the float condition number of N = R0 . (e1 x e2) is 1/|cos| of
  * the viewing angle, so float errors scale with the face-on solid angle A/d^2, not with the
  * (possibly edge-on, tiny) result: the solid angle and the triangle light are compared relative
@@ -401,7 +401,7 @@ static void check_light_compute(int n) {
    * float error grows like k eps near alpha = 1, so the error grows like l^2 eps: 2.5e-7 n^2 */
   TL_CHECK(ez <= 2.5e-7 * n * n, "cap ZH n=%d: %.3e", n, ez);
   TL_CHECK(et <= 1e-5, "triangle light n=%d: %.3e", n, et);
-  /* Solid angle (issue 3): GLSL differs from C by up to 9.3e-5 of the face-on scale A/d^2 on
+  /* Solid angle : GLSL differs from C by up to 9.3e-5 of the face-on scale A/d^2 on
    * configurations where D = |R0||R1||R2| + (R0.R1)|R2| + ... cancels: two pairs of the R_i
    * nearly opposite (x close to a vertex with the other two seen almost behind each other, or
    * x near an edge). The cause is D's float evaluation: bench/solid_angle_float.c (make

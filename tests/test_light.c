@@ -183,8 +183,8 @@ static void test_zh_cap(void) {
 }
 
 /* The printed form (eq. 9, float alpha = sqrt(1 - s^2)) fails for small caps: documented by
- * asserting that it IS far off (>= 1e-3 of max|L|) for s < 1e-3 (MATH.md: every L = 0 below
- * s = 2.4e-4), and worse than shl_zh_cap wherever s <= 1e-2. */
+ * asserting that it IS far off (>= 1e-3 of max|L|) for s < 1e-3 (docs/derivations.md: every L = 0
+ * below s = 2.4e-4), and worse than shl_zh_cap wherever s <= 1e-2. */
 static void test_zh_cap_printed_fails(void) {
   int i, l;
   printf("  s        printed err    stable err   (max_l |err| / max|L|, n = 16)\n");
@@ -667,20 +667,21 @@ static void sa_case(const char *name, const float x[3], const float p0[3], const
 }
 
 static void test_solid_angle(void) {
-  /* MATH.md 4's triangle */
+  /* docs/derivations.md 4's triangle */
   float p0[3] = {0.1f, 0.0f, 0.0f}, p1[3] = {1.3f, 0.2f, 0.0f}, p2[3] = {0.4f, 1.1f, 0.0f};
   float off[3] = {1000.0f, -500.0f, 20.0f};
   int k;
   {
     float x[3] = {0.55f, 0.45f, 0.05f};
     sa_case("h=0.05 above (Omega > pi)", x, p0, p1, p2);
-    TL_CHECK(fabs(sa_ref(x, p0, p1, p2) - 5.536260) < 1e-6, "reference != MATH.md 5.536260");
+    TL_CHECK(fabs(sa_ref(x, p0, p1, p2) - 5.536260) < 1e-6,
+             "reference != docs/derivations.md 5.536260");
     x[2] = -0.05f;
     sa_case("h=0.05 below", x, p0, p1, p2);
     x[2] = 0.3f;
     sa_case("h=0.3 above", x, p0, p1, p2);
   }
-  { /* distance 1e2 .. 3e4 along MATH.md's direction, world offset 1e3 */
+  { /* distance 1e2 .. 3e4 along docs/derivations.md's direction, world offset 1e3 */
     static const double Ds[4] = {1e2, 1e3, 1e4, 3e4};
     double dir[3] = {0.2, 0.3, 1.0}, nd = sqrt(1.13);
     int j;
@@ -744,7 +745,8 @@ static void test_solid_angle(void) {
 /* ============================================================== triangle as a sphere */
 
 /* Kernel vs the quad model (eq. 24-26), target 1e-5 of max|coef|, and the modelling error vs
- * the exact projection as a function of distance / sqrt(area), printed like MATH.md 4. */
+ * the exact projection as a function of distance / sqrt(area), printed like docs/derivations.md 4.
+ */
 static void tri_setup(int shape, float T[3][3]) {
   static const double S[3][3][3] = {{{0, 0, 0}, {1, 0, 0}, {0.5, 0.86602540378443865, 0}},
                                     {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
@@ -758,7 +760,7 @@ static void tri_setup(int shape, float T[3][3]) {
 static void test_triangle_as_sphere(void) {
   static const char *names[3] = {"equilateral", "right isosceles", "sliver 10:1"};
   static const double dists[5] = {1, 2, 5, 20, 100};
-  /* MATH.md 4, rel L2 (l <= 4), max over 6 random upper-half-space views */
+  /* docs/derivations.md 4, rel L2 (l <= 4), max over 6 random upper-half-space views */
   static const double mathmd[3][5] = {{0.57, 0.15, 2.4e-2, 1.5e-3, 5.8e-5},
                                       {0.56, 0.27, 3.7e-2, 2.4e-3, 1.1e-4},
                                       {1.04, 0.91, 0.19, 1.1e-2, 4.4e-4}};
@@ -839,15 +841,17 @@ static void test_triangle_as_sphere(void) {
         }
       }
       printf(" %.1e (%.1e) [%.1e]", worst, worst0, mathmd[sh][di]);
-      /* "same range": within a factor 3 of MATH.md's value either way (decided before looking
-       * at the numbers; the maxima are over 6 random views that differ from MATH.md's). */
+      /* "same range": within a factor 3 of docs/derivations.md's value either way (decided before
+       * looking at the numbers; the maxima are over 6 random views that differ from
+       * docs/derivations.md's). */
       TL_CHECK(worst <= 3 * mathmd[sh][di] && worst >= mathmd[sh][di] / 3,
-               "%s d/sqrt(A)=%g: rel L2 %.2e outside [1/3, 3] x MATH.md %.1e", names[sh], dists[di],
-               worst, mathmd[sh][di]);
+               "%s d/sqrt(A)=%g: rel L2 %.2e outside [1/3, 3] x docs/derivations.md %.1e",
+               names[sh], dists[di], worst, mathmd[sh][di]);
     }
     printf("\n");
   }
-  printf("  [MATH.md 4 in brackets]; kernel vs quad model: max %.2e of max|coef|; without |cos "
+  printf("  [docs/derivations.md 4 in brackets]; kernel vs quad model: max %.2e of max|coef|; "
+         "without |cos "
          "gamma| at 100: %.2e\n",
          kworst, nocos);
   TL_CHECK(nocos > 0.1, "negative control: dropping |cos gamma| should be O(1) wrong, got %.2e",

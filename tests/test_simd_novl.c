@@ -7,7 +7,7 @@
  * CI's machine has VL, so without this build those paths
  * would compile but never run. Without AVX-512 the build selects the portable paths and the
  * test checks those. Reference: binary128 (tests/ref/shref.h, theta/phi formulation, shares
- * nothing with the kernels). Bounds: issue 2's float targets (n <= 4: 3e-7, n = 16: 2e-6)
+ * nothing with the kernels). Bounds: the float targets (n <= 4: 3e-7, n = 16: 2e-6)
  * interpolated linearly in n between, and 1e-5 of max|grad| for the gradient; measured in a
  * comment. ~2.5 s. */
 #define SHLIGHT_IMPLEMENTATION

@@ -1,4 +1,4 @@
-/* test_ssf.c - shlight's >>ssf section (screen-space SH filter for VPLs, seed 004) against
+/* test_ssf.c - shlight's >>ssf section (screen-space SH filter for VPLs, [SSF]) against
  * independent references.
  *
  * Build: make build/tests/test_ssf (gcc -std=c99 -O2 ... -lquadmath -lm); run it, it ends with
@@ -9,7 +9,7 @@
  *    double straight from the definition (>>ssf), and Y_i(w) from tests/ref/shref.h (binary128,
  *    angle-based associated Legendre recurrence);
  *  - the n-band irradiance of a delta: e sum_{l<n} (2l+1)/(4 pi) A_l P_l(z) with
- *    Ramamoorthi-Hanrahan's factorial A_l (MATH.md sec. 5) and the three-term Legendre
+ *    Ramamoorthi-Hanrahan's factorial A_l (docs/derivations.md sec. 5) and the three-term Legendre
  *    recurrence in long double, and its limit e max(0, z);
  *  - the irradiance of a band-limited SH radiance: product quadrature over the hemisphere of the
  *    normal (Gauss-Legendre in cos theta, uniform in phi, exact for these polynomials) with the
@@ -80,7 +80,7 @@ static ld ref_vpl(const float *x, const float *nx, const float *y, const float *
   return (ld)flux * cy / (PI_L * den);
 }
 
-static ld ref_A(int l) { /* Ramamoorthi-Hanrahan, MATH.md sec. 5 */
+static ld ref_A(int l) { /* Ramamoorthi-Hanrahan, docs/derivations.md sec. 5 */
   ld f = 1, h = 1;
   int k;
   if (l == 0) return PI_L;

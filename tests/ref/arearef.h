@@ -932,7 +932,7 @@ ARREF_FN long double arref_ellipse_ggx(const double c[3], const double a1[3], co
    kind 1: Beckmann with the height-correlated Smith G2 = 1 / (1 + Lambda(v) + Lambda(l)),
            Lambda(c) = (erf(a) - 1)/2 + exp(-a^2)/(2 a sqrt(pi)), a = c / (alpha sqrt(1 - c^2)),
            integrand D_B G2 / (4 (n.v)), D_B = exp(-tan^2 t / alpha^2) / (pi alpha^2 cos^4 t);
-   kind 2: the half-vector measure of seed 001 eq. 23-24, D_Blinn(h) / (4 (h.l)): its integral
+   kind 2: the half-vector measure of [AREA] eq. 23-24, D_Blinn(h) / (4 (h.l)): its integral
            over the light is int over H(light) of D_Blinn(h) dh;
    kind 3: D_B(h) (h.n) / (4 (h.l)): int over H(light) of D_B(h) (h.n) dh;
    kind 4: D_B / (4 (n.v)), kind 1 without G2.

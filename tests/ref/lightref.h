@@ -4,8 +4,8 @@
  *
  * Independence from the kernels under test.  The kernels evaluate the cap zonal harmonics with
  * L_l = sqrt(pi(2l+1))/(l(l+1)) s^2 P'_l(alpha) (P'_l by P'_{l+1} = P'_{l-1} + (2l+1) P_l),
- * gradients analytically (MATH.md sec. 3) and the triangle solid angle by van Oosterom's edge
- * formula.  This file uses none of that:
+ * gradients analytically (docs/derivations.md sec. 3) and the triangle solid angle by van
+ * Oosterom's edge formula.  This file uses none of that:
  *
  *   - cap ZH (lref_cap_zh_q): the defining integral L_l = 2 pi K_l int_0^a P_l(cos t) sin t dt,
  *     by composite Gauss-Legendre in the angle t on [0, a] (P_l(cos t) by Bonnet's three-term
@@ -30,7 +30,7 @@
  *     subdivision near the shading point; and (lref_tri_solid_angle_unit_q) by the unit-vector
  *     form Omega = 2 atan2(|u1.(u2 x u3)|, 1 + u1.u2 + u2.u3 + u3.u1) in quad.
  *   - exact triangle SH projection (lref_tri_sh_q): int_T Y(R/|R|) |R.n| / |R|^3 dA with the same
- *     quadrature.  Its difference to the sphere approximation (seed 003 eq. 26) is a modelling
+ *     quadrature.  Its difference to the sphere approximation ([GRAD] eq. 26) is a modelling
  *     error, measured, not a bug.
  *   - the sphere approximation itself in quad (lref_tri_as_sphere_q, eq. 24-26) and its gradient
  *     by the same FD stencil (lref_tri_as_sphere_grad_q).
@@ -472,7 +472,7 @@ LREF_FN long lref_tri_sh_q(int n, lref_q p[3][3], const lref_q x[3], lref_q *out
   return lref_tri_integrate_q(p, x, n, out);
 }
 
-/* The triangle-as-sphere approximation (seed 003 eq. 24-26) in quad: centroid c, radius
+/* The triangle-as-sphere approximation ([GRAD] eq. 24-26) in quad: centroid c, radius
  * r_s = sqrt(|e1 x e2| / (2 pi)), out = sphere(c, r_s, x) * |cos gamma|, cos gamma = n_t.(-w). */
 LREF_FN void lref_tri_as_sphere_q(int n, lref_q p[3][3], const lref_q x[3], lref_q *out) {
   lref_q c[3], e1[3], e2[3], cr[3], A2, rs, d[3], dist, cg;

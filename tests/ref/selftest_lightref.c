@@ -150,7 +150,7 @@ int main(void) {
     report("sphere-light FD gradient vs analytic chain rule in quad, n=16, 4 cfgs", (double)worst,
            1e-18);
   }
-  /* 7. solid angle: octant, MATH.md's close point, hemisphere limit, far triangle */
+  /* 7. solid angle: octant, docs/derivations.md's close point, hemisphere limit, far triangle */
   {
     Q p[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, x[3] = {0, 0, 0};
     Q o1 = lref_tri_solid_angle_q(p, x), o2 = lref_tri_solid_angle_unit_q(p, x);
@@ -160,11 +160,12 @@ int main(void) {
   {
     Q p[3][3] = {{0.1, 0.0, 0.0}, {1.3, 0.2, 0.0}, {0.4, 1.1, 0.0}}, x[3] = {0.55, 0.45, 0.05};
     Q o1 = lref_tri_solid_angle_q(p, x), o2 = lref_tri_solid_angle_unit_q(p, x);
-    printf("  h=0.05 point: quadrature %.12f  unit-vector %.12f (MATH.md 5.536260)\n", (double)o1,
-           (double)o2);
+    printf("  h=0.05 point: quadrature %.12f  unit-vector %.12f (docs/derivations.md 5.536260)\n",
+           (double)o1, (double)o2);
     report("h=0.05 above triangle: quadrature vs unit-vector form, rel",
            (double)(fabsq(o1 - o2) / o2), 1e-30);
-    report("h=0.05: vs MATH.md 5.536260 (6 decimals)", fabs((double)o1 - 5.536260), 5e-7);
+    report("h=0.05: vs docs/derivations.md 5.536260 (6 decimals)", fabs((double)o1 - 5.536260),
+           5e-7);
   }
   {
     /* equilateral triangle of inradius 1 centred at 0, x at height h: Omega -> 2pi - O(h) */
