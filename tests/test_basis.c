@@ -782,6 +782,53 @@ static void make_sph(void) {
   }
 }
 
+/* The mirrored gradient kernel (shli_sh_grad_bands: one loop body per band, its coefficients
+ * computed in double on the way; the GLSL gradient) against the C straight-line kernel
+ * (shli_sh_grad_lines, literal float coefficients), bit for bit (== : the two may differ only
+ * in the sign of a zero): n = 1..16, random and near-pole directions, 1 / |d| from 1e-3 to
+ * 1e30 and the split factors of tiny |d| (ir = ib = 1e20, outputs that overflow included). */
+static void test_grad_bands_match_lines(void) {
+  static float dr[64][3], dp[64][3];
+  static const float irs[4][2] = {
+      {1.0f, 1.0f}, {1.0e-3f, 1.0f}, {1.0e30f, 1.0f}, {1.0e20f, 1.0e20f}};
+  float ga[256][3], gb[256][3];
+  int n, j, s, i, c;
+  long bad = 0, cmp = 0, inf = 0;
+  gen_random(dr, 64);
+  gen_nearpole(dp, 64);
+  for (n = 1; n <= 16; n++) {
+    for (j = 0; j < 128; j++) {
+      float *d = j < 64 ? dr[j] : dp[j - 64];
+      fnormalize(d);
+      shl_sh_eval(n, d, g_y);
+      for (s = 0; s < 4; s++) {
+        fill_canary(&ga[0][0], 768);
+        fill_canary(&gb[0][0], 768);
+        shli_sh_grad_lines(n, g_y, d[0], d[1], d[2], irs[s][0], irs[s][1], ga);
+        shli_sh_grad_bands(n, g_y, d[0], d[1], d[2], irs[s][0], irs[s][1], gb);
+        for (i = 0; i < n * n; i++) {
+          for (c = 0; c < 3; c++) {
+            cmp++;
+            inf += isinf(ga[i][c]) ? 1 : 0;
+            if (!(ga[i][c] == gb[i][c])) {
+              if (bad++ < 5) {
+                printf("  n=%d dir %d scale %d i=%d c=%d: lines %.9g bands %.9g\n", n, j, s, i, c,
+                       (double)ga[i][c], (double)gb[i][c]);
+              }
+            }
+          }
+        }
+        TL_CHECK(count_written(&gb[n * n][0], (size_t)(3 * (256 - n * n))) == 0,
+                 "n=%d bands wrote past", n);
+      }
+    }
+  }
+  printf("  shli_sh_grad_bands vs shli_sh_grad_lines: %ld of %ld components differ (%ld inf)\n",
+         bad, cmp, inf);
+  TL_CHECK(bad == 0, "%ld components differ", bad);
+  TL_CHECK(inf > 0, "the overflowing case was not reached");
+}
+
 /* shl_sh_eval_grad_spherical vs shref_dtheta_dphi_d (sin theta >= 0.1).
  * Metric as for the Cartesian gradient: max abs error over dtheta and dphi relative to the
  * largest |dY| of the set; tolerance target_grad_rel(n) * max + 1e-7.  Report-only: the same
@@ -1503,6 +1550,7 @@ int main(void) {
   TL_RUN(test_addition_theorem);
   TL_RUN(test_grad_accuracy);
   TL_RUN(test_grad_values_match_eval);
+  TL_RUN(test_grad_bands_match_lines);
   TL_RUN(test_grad_spherical);
   TL_RUN(test_grad_from_spherical);
   TL_RUN(test_grad_spherical_pole);
