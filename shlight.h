@@ -11307,8 +11307,8 @@ SHLIGHT_INLINE void shli_sh_poly_6(float x, float y, float z, float *out_y) {
   out_y[25] = -0.656382057f * ps;
 }
 
-SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t,
-                                 float sg, float *out_y) {
+SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli_real t, float sg,
+                                           float *out_y) {
   shli_real pc = x;
   shli_real ps = y;
   shli_real qc;
@@ -11320,13 +11320,6 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
   shli_real xb = 0.0;
   shli_real dd = 0.0;
   float xf;
-  SHLIGHT_UNUSED(z);
-#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
-  if (n > SHLIGHT_UNROLLED_BANDS) {
-    shli_sh_core_loop(n, x, y, z, t, sg, out_y);
-    return;
-  }
-#endif
   out_y[0] = 0.282094792f;
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
@@ -12567,6 +12560,360 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
     out_y[255] = -0.844250651f * fc;
     out_y[225] = -0.844250651f * fs;
   }
+#endif
+}
+
+SHLIGHT_INLINE void shli_sh_core_col(int m, shli_real t, shli_real k, float *out_xs) {
+  shli_real dd = 0.0;
+  shli_real xa = 0.0;
+  shli_real gp = 1.0;
+  shli_real al;
+  shli_real g;
+  int l;
+  for (l = 0; l < 16; ++l) {
+    out_xs[l] = 0.0f;
+    if (l > m) {
+      al = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (2 * l - 1)) / SHLIGHT_ITOR((l - m) * (l + m)));
+      g = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m)) / SHLIGHT_ITOR((2 * l - 1) * (l - m)));
+      if (l == m + 1) {
+        dd = -al * k * t;
+        xa = g * k + dd;
+      } else {
+        dd = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m - 1) * (l - m - 1)) /
+                           SHLIGHT_ITOR((2 * l - 3) * (l - m) * (l + m))) /
+                 gp * dd -
+             al * (t * xa);
+        xa = g * xa + dd;
+      }
+      gp = g;
+      out_xs[l] = SHLIGHT_FLOAT(xa);
+    }
+  }
+}
+
+SHLIGHT_INLINE void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
+                                       float *out_y) {
+  shli_real pc = x;
+  shli_real ps = y;
+  shli_real qc;
+  float fc = 0.0f;
+  float fs = 0.0f;
+  float gc = 0.0f;
+  float gs = 0.0f;
+  float xs[16];
+  int l;
+  out_y[0] = 0.282094792f;
+#if SHLIGHT_MAX_BANDS > 1
+  shli_sh_core_col(0, t, 0.28209479177387814, xs);
+  for (l = 1; l < SHLIGHT_MAX_BANDS; ++l) {
+    if (n > l) {
+      out_y[l * l + l] = l % 2 == 1 ? sg * xs[l] : xs[l];
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 1
+  if (n > 1) {
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[3] = -0.488602512f * fc;
+    out_y[1] = -0.488602512f * fs;
+    gc = sg * fc;
+    gs = sg * fs;
+    shli_sh_core_col(1, t, -0.48860251190291987, xs);
+    for (l = 2; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 1] = xs[l] * ((l - 1) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 1] = xs[l] * ((l - 1) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 2
+  if (n > 2) {
+    qc = x * pc - y * ps;
+    ps = x * ps + y * pc;
+    pc = qc;
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[8] = 0.546274215f * fc;
+    out_y[4] = 0.546274215f * fs;
+    gc = sg * fc;
+    gs = sg * fs;
+    shli_sh_core_col(2, t, 0.5462742152960395, xs);
+    for (l = 3; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 2] = xs[l] * ((l - 2) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 2] = xs[l] * ((l - 2) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 3
+  if (n > 3) {
+    qc = x * pc - y * ps;
+    ps = x * ps + y * pc;
+    pc = qc;
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[15] = -0.59004359f * fc;
+    out_y[9] = -0.59004359f * fs;
+    gc = sg * fc;
+    gs = sg * fs;
+    shli_sh_core_col(3, t, -0.5900435899266435, xs);
+    for (l = 4; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 3] = xs[l] * ((l - 3) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 3] = xs[l] * ((l - 3) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    qc = x * pc - y * ps;
+    ps = x * ps + y * pc;
+    pc = qc;
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[24] = 0.625835735f * fc;
+    out_y[16] = 0.625835735f * fs;
+    gc = sg * fc;
+    gs = sg * fs;
+    shli_sh_core_col(4, t, 0.625835735449176, xs);
+    for (l = 5; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 4] = xs[l] * ((l - 4) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 4] = xs[l] * ((l - 4) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    qc = x * pc - y * ps;
+    ps = x * ps + y * pc;
+    pc = qc;
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[35] = -0.656382057f * fc;
+    out_y[25] = -0.656382057f * fs;
+    gc = sg * fc;
+    gs = sg * fs;
+    shli_sh_core_col(5, t, -0.65638205684017, xs);
+    for (l = 6; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 5] = xs[l] * ((l - 5) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 5] = xs[l] * ((l - 5) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    qc = x * pc - y * ps;
+    ps = x * ps + y * pc;
+    pc = qc;
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[48] = 0.683184105f * fc;
+    out_y[36] = 0.683184105f * fs;
+    gc = sg * fc;
+    gs = sg * fs;
+    shli_sh_core_col(6, t, 0.6831841051919142, xs);
+    for (l = 7; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 6] = xs[l] * ((l - 6) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 6] = xs[l] * ((l - 6) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 7
+  if (n > 7) {
+    qc = x * pc - y * ps;
+    ps = x * ps + y * pc;
+    pc = qc;
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[63] = -0.707162733f * fc;
+    out_y[49] = -0.707162733f * fs;
+    gc = sg * fc;
+    gs = sg * fs;
+    shli_sh_core_col(7, t, -0.707162732524596, xs);
+    for (l = 8; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 7] = xs[l] * ((l - 7) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 7] = xs[l] * ((l - 7) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 8
+  if (n > 8) {
+    qc = x * pc - y * ps;
+    ps = x * ps + y * pc;
+    pc = qc;
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[80] = 0.72892666f * fc;
+    out_y[64] = 0.72892666f * fs;
+    gc = sg * fc;
+    gs = sg * fs;
+    shli_sh_core_col(8, t, 0.7289266601748298, xs);
+    for (l = 9; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 8] = xs[l] * ((l - 8) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 8] = xs[l] * ((l - 8) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 9
+  if (n > 9) {
+    qc = x * pc - y * ps;
+    ps = x * ps + y * pc;
+    pc = qc;
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[99] = -0.748900952f * fc;
+    out_y[81] = -0.748900952f * fs;
+    gc = sg * fc;
+    gs = sg * fs;
+    shli_sh_core_col(9, t, -0.7489009518531883, xs);
+    for (l = 10; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 9] = xs[l] * ((l - 9) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 9] = xs[l] * ((l - 9) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 10
+  if (n > 10) {
+    qc = x * pc - y * ps;
+    ps = x * ps + y * pc;
+    pc = qc;
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[120] = 0.767395118f * fc;
+    out_y[100] = 0.767395118f * fs;
+    gc = sg * fc;
+    gs = sg * fs;
+    shli_sh_core_col(10, t, 0.76739511822199, xs);
+    for (l = 11; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 10] = xs[l] * ((l - 10) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 10] = xs[l] * ((l - 10) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 11
+  if (n > 11) {
+    qc = x * pc - y * ps;
+    ps = x * ps + y * pc;
+    pc = qc;
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[143] = -0.784642106f * fc;
+    out_y[121] = -0.784642106f * fs;
+    gc = sg * fc;
+    gs = sg * fs;
+    shli_sh_core_col(11, t, -0.7846421057871968, xs);
+    for (l = 12; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 11] = xs[l] * ((l - 11) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 11] = xs[l] * ((l - 11) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 12
+  if (n > 12) {
+    qc = x * pc - y * ps;
+    ps = x * ps + y * pc;
+    pc = qc;
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[168] = 0.800821996f * fc;
+    out_y[144] = 0.800821996f * fs;
+    gc = sg * fc;
+    gs = sg * fs;
+    shli_sh_core_col(12, t, 0.8008219957839717, xs);
+    for (l = 13; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 12] = xs[l] * ((l - 12) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 12] = xs[l] * ((l - 12) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 13
+  if (n > 13) {
+    qc = x * pc - y * ps;
+    ps = x * ps + y * pc;
+    pc = qc;
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[195] = -0.816077119f * fc;
+    out_y[169] = -0.816077119f * fs;
+    gc = sg * fc;
+    gs = sg * fs;
+    shli_sh_core_col(13, t, -0.8160771188376283, xs);
+    for (l = 14; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 13] = xs[l] * ((l - 13) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 13] = xs[l] * ((l - 13) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 14
+  if (n > 14) {
+    qc = x * pc - y * ps;
+    ps = x * ps + y * pc;
+    pc = qc;
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[224] = 0.830522083f * fc;
+    out_y[196] = 0.830522083f * fs;
+    gc = sg * fc;
+    gs = sg * fs;
+    shli_sh_core_col(14, t, 0.8305220830645241, xs);
+    for (l = 15; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 14] = xs[l] * ((l - 14) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 14] = xs[l] * ((l - 14) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 15
+  if (n > 15) {
+    qc = x * pc - y * ps;
+    ps = x * ps + y * pc;
+    pc = qc;
+    fc = SHLIGHT_FLOAT(pc);
+    fs = SHLIGHT_FLOAT(ps);
+    out_y[255] = -0.844250651f * fc;
+    out_y[225] = -0.844250651f * fs;
+  }
+#endif
+}
+
+SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t,
+                                 float sg, float *out_y) {
+  SHLIGHT_UNUSED(z);
+#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
+  if (n > SHLIGHT_UNROLLED_BANDS) {
+    shli_sh_core_loop(n, x, y, z, t, sg, out_y);
+    return;
+  }
+#endif
+#if SHLIGHT_BY_BANDS
+  shli_sh_core_bands(n, x, y, t, sg, out_y);
+#else
+  shli_sh_core_lines(n, x, y, t, sg, out_y);
 #endif
 }
 /* @generated end basis */

@@ -176,22 +176,15 @@ def gen_core(n):
 
 
 def gen_core_any(nmax):
-    """shli_sh_core(n, x, y, z, t, sg, out_y): any 1 <= n <= nmax in one body, the column-m
+    """shli_sh_core_lines(n, x, y, t, sg, out_y) (C only): any 1 <= n <= nmax in one body, the column-m
     recurrence of gen_core with each band's step under `if (n > l)` and, for GLSL (and C
     builds with a smaller SHLIGHT_MAX_BANDS), under `#if SHLIGHT_MAX_BANDS > l`: a shader
     compiles only the bands it can use, and a constant n folds every test away."""
     L = []
     w = L.append
-    w('SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t,')
-    w('                                 float sg, float *out_y) {')
+    w('SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli_real t,')
+    w('                                           float sg, float *out_y) {')
     w('@DECLS@')
-    w('  SHLIGHT_UNUSED(z);')
-    w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
-    w('  if (n > SHLIGHT_UNROLLED_BANDS) {')
-    w('    shli_sh_core_loop(n, x, y, z, t, sg, out_y);')
-    w('    return;')
-    w('  }')
-    w('#endif')
     for m in range(nmax):
         k = diag(m)
         if m == 0:
@@ -240,7 +233,115 @@ def gen_core_any(nmax):
     return declare(L, [('shli_real', 'pc', 'x'), ('shli_real', 'ps', 'y'), ('shli_real', 'qc', None),
                        ('float', 'fc', '0.0f'), ('float', 'fs', '0.0f'), ('float', 'gc', '0.0f'),
                        ('float', 'gs', '0.0f'), ('shli_real', 'xa', '0.0'), ('shli_real', 'xb', '0.0'),
-                       ('shli_real', 'dd', '0.0'), ('float', 'xf', None)])
+                       ('shli_real', 'dd', '0.0'), ('float', 'xf', None)]) + gen_core_bands(nmax)
+
+
+def gen_core_bands(nmax):
+    """shli_sh_core_col, shli_sh_core_bands and the dispatch shli_sh_core (mirrored): the
+    column recurrence of shli_sh_core_lines as one loop body (shli_sh_core_col, the Reinsch
+    coefficients in closed form: g_l = X_l(1) / X_(l-1)(1) = sqrt((2l+1)(l+m) / ((2l-1)(l-m))),
+    c_l = beta_l / g_(l-1)), called per column, which shader compilers unroll and fold; C runs
+    shli_sh_core_lines (SHLIGHT_BY_BANDS 0)."""
+    L = ['']
+    w = L.append
+    w(CORE_COL)
+    w('')
+    w('SHLIGHT_INLINE void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,')
+    w('                                       float *out_y) {')
+    w('  shli_real pc = x;')
+    w('  shli_real ps = y;')
+    w('  shli_real qc;')
+    w('  float fc = 0.0f;')
+    w('  float fs = 0.0f;')
+    w('  float gc = 0.0f;')
+    w('  float gs = 0.0f;')
+    w('  float xs[%d];' % nmax)
+    w('  int l;')
+    w('  out_y[0] = %s;' % lit_f(diag(0)))
+    w('#if SHLIGHT_MAX_BANDS > 1')
+    w('  shli_sh_core_col(0, t, %s, xs);' % lit_d(diag(0)))
+    w('  for (l = 1; l < SHLIGHT_MAX_BANDS; ++l) {')
+    w('    if (n > l) {')
+    w('      out_y[l * l + l] = l % 2 == 1 ? sg * xs[l] : xs[l];')
+    w('    }')
+    w('  }')
+    w('#endif')
+    for m in range(1, nmax):
+        k = diag(m)
+        w('#if SHLIGHT_MAX_BANDS > %d' % m)
+        w('  if (n > %d) {' % m)
+        if m >= 2:
+            w('    qc = x * pc - y * ps;')
+            w('    ps = x * ps + y * pc;')
+            w('    pc = qc;')
+        w('    fc = SHLIGHT_FLOAT(pc);')
+        w('    fs = SHLIGHT_FLOAT(ps);')
+        w('    out_y[%d] = %s * fc;' % (idx(m, m), lit_f(k)))
+        w('    out_y[%d] = %s * fs;' % (idx(m, -m), lit_f(k)))
+        if m + 1 < nmax:
+            w('    gc = sg * fc;')
+            w('    gs = sg * fs;')
+            w('    shli_sh_core_col(%d, t, %s, xs);' % (m, lit_d(k)))
+            w('    for (l = %d; l < SHLIGHT_MAX_BANDS; ++l) {' % (m + 1))
+            w('      if (n > l) {')
+            w('        out_y[l * l + l + %d] = xs[l] * ((l - %d) %% 2 == 1 ? gc : fc);' % (m, m))
+            w('        out_y[l * l + l - %d] = xs[l] * ((l - %d) %% 2 == 1 ? gs : fs);' % (m, m))
+            w('      }')
+            w('    }')
+        w('  }')
+        w('#endif')
+    w('}')
+    w('')
+    w('SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t,')
+    w('                                 float sg, float *out_y) {')
+    w('  SHLIGHT_UNUSED(z);')
+    w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
+    w('  if (n > SHLIGHT_UNROLLED_BANDS) {')
+    w('    shli_sh_core_loop(n, x, y, z, t, sg, out_y);')
+    w('    return;')
+    w('  }')
+    w('#endif')
+    w('#if SHLIGHT_BY_BANDS')
+    w('  shli_sh_core_bands(n, x, y, t, sg, out_y);')
+    w('#else')
+    w('  shli_sh_core_lines(n, x, y, t, sg, out_y);')
+    w('#endif')
+    w('}')
+    return L
+
+
+# column m of the basis (1 <= l < 16 in order, l <= m zero): the recurrence of
+# shli_sh_core_lines with its coefficients computed on the way; xs[l], 16 entries, indexed by
+# the counter of a 16-trip loop makes shader compilers unroll it whatever the body costs.
+CORE_COL = '''SHLIGHT_INLINE void shli_sh_core_col(int m, shli_real t, shli_real k, float *out_xs) {
+  shli_real dd = 0.0;
+  shli_real xa = 0.0;
+  shli_real gp = 1.0;
+  shli_real al;
+  shli_real g;
+  int l;
+  for (l = 0; l < 16; ++l) {
+    out_xs[l] = 0.0f;
+    if (l > m) {
+      al = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (2 * l - 1)) / SHLIGHT_ITOR((l - m) * (l + m)));
+      g = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m)) / SHLIGHT_ITOR((2 * l - 1) * (l - m)));
+      if (l == m + 1) {
+        dd = -al * k * t;
+        xa = g * k + dd;
+      } else {
+        dd = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m - 1) * (l - m - 1)) /
+                           SHLIGHT_ITOR((2 * l - 3) * (l - m) * (l + m))) /
+                 gp * dd -
+             al * (t * xa);
+        xa = g * xa + dd;
+      }
+      gp = g;
+      out_xs[l] = SHLIGHT_FLOAT(xa);
+    }
+  }
+}'''
+
+
 
 
 def fmt_table_packed(ctype, name, size, vals, lit, per_row):
@@ -830,7 +931,8 @@ ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
                'out_idx': '4', 'out_w': '4', 'tab': 'SHLIGHT_BRDF_TABLE_FLOATS',
                'out_range': '2', 'io_split': 'SHLIGHT_HALF_K', 'io_am': '2', 'out_par': '5',
                'kv': 'SHLIGHT_MAX_BANDS', 'kg': 'SHLIGHT_MAX_BANDS', 'ka': 'SHLIGHT_MAX_BANDS',
-               'kb': 'SHLIGHT_MAX_BANDS', 'wg': '6', 'out_gb': '93'}
+               'kb': 'SHLIGHT_MAX_BANDS', 'wg': '6', 'out_gb': '93',
+               'out_xs': '16'}
 
 
 def glsl_param(prm, fname):
