@@ -255,6 +255,10 @@ def gen_core_bands(nmax):
     w('  float fs = 0.0f;')
     w('  float gc = 0.0f;')
     w('  float gs = 0.0f;')
+    w('  shli_real xa = 0.0;')
+    w('  shli_real xb = 0.0;')
+    w('  shli_real dd = 0.0;')
+    w('  float xf;')
     w('  float xs[%d];' % nmax)
     w('  int l;')
     w('  out_y[0] = %s;' % lit_f(diag(0)))
@@ -281,6 +285,12 @@ def gen_core_bands(nmax):
         if m + 1 < nmax:
             w('    gc = sg * fc;')
             w('    gs = sg * fs;')
+        if m >= CORE_LOOP_COLS:
+            w('  }')
+            w('#endif')
+            L.extend(core_steps(m, nmax))
+            continue
+        if m + 1 < nmax:
             w('    shli_sh_core_col(%d, t, %s, xs);' % (m, lit_d(k)))
             w('    for (l = %d; l < SHLIGHT_MAX_BANDS; ++l) {' % (m + 1))
             w('      if (n > l) {')
@@ -307,6 +317,35 @@ def gen_core_bands(nmax):
     w('  shli_sh_core_lines(n, x, y, t, sg, out_y);')
     w('#endif')
     w('}')
+    return L
+
+
+CORE_LOOP_COLS = 6  # columns m < 6 (75 of the 120 steps at 16 bands) run shli_sh_core_col
+
+
+def core_steps(m, nmax):
+    """the straight-line steps l = m+1.. of column m (those of shli_sh_core_lines)"""
+    L = []
+    w = L.append
+    k = diag(m)
+    prev, cur = 'xa', 'xb'
+    for l in range(m + 1, nmax):
+        w('#if SHLIGHT_MAX_BANDS > %d' % l)
+        w('  if (n > %d) {' % l)
+        a, g, c = reinsch(l, m)
+        if l == m + 1:
+            w('    dd = %s * t;' % lit_d(-a * k))
+            w('    xa = %s + dd;' % lit_d(g * k))
+        else:
+            w('    dd = %s * dd - %s * (t * %s);' % (lit_d(c), lit_d(a), prev))
+            w('    %s = %s * %s + dd;' % (cur, lit_d(g), prev))
+            prev, cur = cur, prev
+        odd = (l - m) % 2 == 1
+        w('    xf = SHLIGHT_FLOAT(%s);' % prev)
+        w('    out_y[%d] = xf * %s;' % (idx(l, m), 'gc' if odd else 'fc'))
+        w('    out_y[%d] = xf * %s;' % (idx(l, -m), 'gs' if odd else 'fs'))
+        w('  }')
+        w('#endif')
     return L
 
 
