@@ -11307,8 +11307,8 @@ SHLIGHT_INLINE void shli_sh_poly_6(float x, float y, float z, float *out_y) {
   out_y[25] = -0.656382057f * ps;
 }
 
-SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli_real t, float sg,
-                                           float *out_y) {
+SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli_real z,
+                                           shli_real t, float sg, float *out_y) {
   shli_real pc = x;
   shli_real ps = y;
   shli_real qc;
@@ -11320,6 +11320,13 @@ SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli
   shli_real xb = 0.0;
   shli_real dd = 0.0;
   float xf;
+  SHLIGHT_UNUSED(z);
+#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
+  if (n > SHLIGHT_UNROLLED_BANDS) {
+    shli_sh_core_loop(n, x, y, z, t, sg, out_y);
+    return;
+  }
+#endif
   out_y[0] = 0.282094792f;
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
@@ -13249,6 +13256,7 @@ SHLIGHT_INLINE void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_rea
 
 SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t,
                                  float sg, float *out_y) {
+#if SHLIGHT_BY_BANDS
   SHLIGHT_UNUSED(z);
 #if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
   if (n > SHLIGHT_UNROLLED_BANDS) {
@@ -13256,10 +13264,9 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
     return;
   }
 #endif
-#if SHLIGHT_BY_BANDS
   shli_sh_core_bands(n, x, y, t, sg, out_y);
 #else
-  shli_sh_core_lines(n, x, y, t, sg, out_y);
+  shli_sh_core_lines(n, x, y, z, t, sg, out_y);
 #endif
 }
 /* @generated end basis */
@@ -13650,6 +13657,12 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
   float r[29];
   float lr;
   float q;
+#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
+  if (n > SHLIGHT_UNROLLED_BANDS) {
+    shli_sh_grad_loop(n, y, nx, ny, nz, ir, ib, out_grad);
+    return;
+  }
+#endif
   lr = 0.0f;
   q = 0.0f;
   SHLIGHT_SET3(out_grad[0], 0.0f, 0.0f, 0.0f);
@@ -15064,13 +15077,13 @@ SHLIGHT_INLINE void shli_sh_grad_bands(int n, const float *y, float nx, float ny
 
 SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir,
                                  float ib, float (*out_grad)[3]) {
+#if SHLIGHT_BY_BANDS
 #if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
   if (n > SHLIGHT_UNROLLED_BANDS) {
     shli_sh_grad_loop(n, y, nx, ny, nz, ir, ib, out_grad);
     return;
   }
 #endif
-#if SHLIGHT_BY_BANDS
   shli_sh_grad_bands(n, y, nx, ny, nz, ir, ib, out_grad);
 #else
   shli_sh_grad_lines(n, y, nx, ny, nz, ir, ib, out_grad);

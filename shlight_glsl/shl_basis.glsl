@@ -893,6 +893,7 @@ void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
 
 void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, float sg,
                   out float out_y[SHLIGHT_MAX_COEFFS]) {
+#if SHLIGHT_BY_BANDS
   SHLIGHT_UNUSED(z);
 #if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
   if (n > SHLIGHT_UNROLLED_BANDS) {
@@ -900,10 +901,9 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     return;
   }
 #endif
-#if SHLIGHT_BY_BANDS
   shli_sh_core_bands(n, x, y, t, sg, out_y);
 #else
-  shli_sh_core_lines(n, x, y, t, sg, out_y);
+  shli_sh_core_lines(n, x, y, z, t, sg, out_y);
 #endif
 }
 

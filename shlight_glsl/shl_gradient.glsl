@@ -182,13 +182,13 @@ void shli_sh_grad_bands(int n, float y[SHLIGHT_MAX_COEFFS], float nx, float ny, 
 
 void shli_sh_grad(int n, float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
                   float ib, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+#if SHLIGHT_BY_BANDS
 #if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
   if (n > SHLIGHT_UNROLLED_BANDS) {
     shli_sh_grad_loop(n, y, nx, ny, nz, ir, ib, out_grad);
     return;
   }
 #endif
-#if SHLIGHT_BY_BANDS
   shli_sh_grad_bands(n, y, nx, ny, nz, ir, ib, out_grad);
 #else
   shli_sh_grad_lines(n, y, nx, ny, nz, ir, ib, out_grad);

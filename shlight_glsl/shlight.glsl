@@ -1097,6 +1097,7 @@ void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
 
 void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, float sg,
                   out float out_y[SHLIGHT_MAX_COEFFS]) {
+#if SHLIGHT_BY_BANDS
   SHLIGHT_UNUSED(z);
 #if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
   if (n > SHLIGHT_UNROLLED_BANDS) {
@@ -1104,10 +1105,9 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     return;
   }
 #endif
-#if SHLIGHT_BY_BANDS
   shli_sh_core_bands(n, x, y, t, sg, out_y);
 #else
-  shli_sh_core_lines(n, x, y, t, sg, out_y);
+  shli_sh_core_lines(n, x, y, z, t, sg, out_y);
 #endif
 }
 
@@ -1431,13 +1431,13 @@ void shli_sh_grad_bands(int n, float y[SHLIGHT_MAX_COEFFS], float nx, float ny, 
 
 void shli_sh_grad(int n, float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
                   float ib, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+#if SHLIGHT_BY_BANDS
 #if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
   if (n > SHLIGHT_UNROLLED_BANDS) {
     shli_sh_grad_loop(n, y, nx, ny, nz, ir, ib, out_grad);
     return;
   }
 #endif
-#if SHLIGHT_BY_BANDS
   shli_sh_grad_bands(n, y, nx, ny, nz, ir, ib, out_grad);
 #else
   shli_sh_grad_lines(n, y, nx, ny, nz, ir, ib, out_grad);

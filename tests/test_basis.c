@@ -806,7 +806,7 @@ static void test_core_bands_match_lines(void) {
       t = (x * x + y * y) / (1.0 + fabs(z));
       fill_canary(ya, 256);
       fill_canary(yb, 256);
-      shli_sh_core_lines(n, x, y, t, sg, ya);
+      shli_sh_core_lines(n, x, y, z, t, sg, ya);
       shli_sh_core_bands(n, x, y, t, sg, yb);
       for (i = 0; i < n * n; i++) {
         cmp++;
