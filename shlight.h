@@ -1220,7 +1220,10 @@ typedef double shli_real;
 #define SHLIGHT_UNUSED(x) ((void)(x))
 /* 1 (GLSL): zeroing an output array by constant-trip per-band code, which shader compilers keep
    in registers; 0 (C): the plain loop */
+#ifndef SHLIGHT_BY_BANDS /* 1 in a C build: the GLSL shapes (tests/bands_impl.c holds them to C)   \
+                          */
 #define SHLIGHT_BY_BANDS 0
+#endif
 /* 1 (GLSL): per-coefficient sums over several arrays as one flat run-time loop, which shader
    compilers do not unroll into huge bodies; 0 (C): nested loops (the same sums, same order) */
 #define SHLIGHT_FLAT_LOOPS 0
@@ -11307,8 +11310,36 @@ SHLIGHT_INLINE void shli_sh_poly_6(float x, float y, float z, float *out_y) {
   out_y[25] = -0.656382057f * ps;
 }
 
-SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli_real z,
-                                           shli_real t, float sg, float *out_y) {
+SHLIGHT_INLINE void shli_sh_core_col(int m, shli_real t, shli_real k, float *out_xs) {
+  shli_real dd = 0.0;
+  shli_real xa = 0.0;
+  shli_real gp = 1.0;
+  shli_real al;
+  shli_real g;
+  int l;
+  for (l = 0; l < 16; ++l) {
+    out_xs[l] = 0.0f;
+    if (l > m) {
+      al = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (2 * l - 1)) / SHLIGHT_ITOR((l - m) * (l + m)));
+      g = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m)) / SHLIGHT_ITOR((2 * l - 1) * (l - m)));
+      if (l == m + 1) {
+        dd = -al * k * t;
+        xa = g * k + dd;
+      } else {
+        dd = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m - 1) * (l - m - 1)) /
+                           SHLIGHT_ITOR((2 * l - 3) * (l - m) * (l + m))) /
+                 gp * dd -
+             al * (t * xa);
+        xa = g * xa + dd;
+      }
+      gp = g;
+      out_xs[l] = SHLIGHT_FLOAT(xa);
+    }
+  }
+}
+
+SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t,
+                                 float sg, float *out_y) {
   shli_real pc = x;
   shli_real ps = y;
   shli_real qc;
@@ -11328,6 +11359,20 @@ SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli
   }
 #endif
   out_y[0] = 0.282094792f;
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 1
+  if (n > 1) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(0, t, 0.28209479177387814, xs);
+    for (l = 1; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l] = l % 2 == 1 ? sg * xs[l] : xs[l];
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
     dd = -0.48860251190291987 * t;
@@ -11433,6 +11478,7 @@ SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli
     out_y[240] = sg * SHLIGHT_FLOAT(xa);
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
     fc = SHLIGHT_FLOAT(pc);
@@ -11443,6 +11489,21 @@ SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 2
+  if (n > 2) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(1, t, -0.48860251190291987, xs);
+    for (l = 2; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 1] = xs[l] * ((l - 1) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 1] = xs[l] * ((l - 1) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 2
   if (n > 2) {
     dd = 1.092548430592079 * t;
@@ -11569,6 +11630,7 @@ SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli
     out_y[239] = xf * fs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 2
   if (n > 2) {
     qc = x * pc - y * ps;
@@ -11582,6 +11644,21 @@ SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 3
+  if (n > 3) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(2, t, 0.5462742152960395, xs);
+    for (l = 3; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 2] = xs[l] * ((l - 2) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 2] = xs[l] * ((l - 2) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 3
   if (n > 3) {
     dd = -1.445305721320277 * t;
@@ -11699,6 +11776,7 @@ SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli
     out_y[238] = xf * gs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 3
   if (n > 3) {
     qc = x * pc - y * ps;
@@ -11712,6 +11790,21 @@ SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(3, t, -0.5900435899266435, xs);
+    for (l = 4; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 3] = xs[l] * ((l - 3) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 3] = xs[l] * ((l - 3) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 4
   if (n > 4) {
     dd = 1.7701307697799304 * t;
@@ -11820,6 +11913,7 @@ SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli
     out_y[237] = xf * fs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 4
   if (n > 4) {
     qc = x * pc - y * ps;
@@ -11833,6 +11927,21 @@ SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(4, t, 0.625835735449176, xs);
+    for (l = 5; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 4] = xs[l] * ((l - 4) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 4] = xs[l] * ((l - 4) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 5
   if (n > 5) {
     dd = -2.075662314881041 * t;
@@ -11932,6 +12041,7 @@ SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli
     out_y[236] = xf * gs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 5
   if (n > 5) {
     qc = x * pc - y * ps;
@@ -11945,6 +12055,21 @@ SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(5, t, -0.65638205684017, xs);
+    for (l = 6; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 5] = xs[l] * ((l - 5) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 5] = xs[l] * ((l - 5) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 6
   if (n > 6) {
     dd = 2.3666191622317516 * t;
@@ -12035,689 +12160,6 @@ SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli
     out_y[235] = xf * fs;
   }
 #endif
-#if SHLIGHT_MAX_BANDS > 6
-  if (n > 6) {
-    qc = x * pc - y * ps;
-    ps = x * ps + y * pc;
-    pc = qc;
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[48] = 0.683184105f * fc;
-    out_y[36] = 0.683184105f * fs;
-    gc = sg * fc;
-    gs = sg * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 7
-  if (n > 7) {
-    dd = -2.6459606618018996 * t;
-    xa = 2.6459606618018996 + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[62] = xf * gc;
-    out_y[50] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 8
-  if (n > 8) {
-    dd = 0.20118695404073914 * dd - 3.017804310611087 * (t * xa);
-    xb = 2.816617356570348 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[78] = xf * fc;
-    out_y[66] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 9
-  if (n > 9) {
-    dd = 0.31519264780251166 * dd - 2.679137506321349 * (t * xb);
-    xa = 2.363944858518838 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[96] = xf * gc;
-    out_y[84] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 10
-  if (n > 10) {
-    dd = 0.39424311227838504 * dd - 2.496873044429772 * (t * xa);
-    xb = 2.102629932151387 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[116] = xf * fc;
-    out_y[104] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 11
-  if (n > 11) {
-    dd = 0.45405117000839723 * dd - 2.3837686425440854 * (t * xb);
-    xa = 1.9297174725356883 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[138] = xf * gc;
-    out_y[126] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 12
-  if (n > 12) {
-    dd = 0.501607721190705 * dd - 2.307395517477243 * (t * xa);
-    xb = 1.805787796286538 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[162] = xf * fc;
-    out_y[150] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 13
-  if (n > 13) {
-    dd = 0.5406762682674995 * dd - 2.252817784447915 * (t * xb);
-    xa = 1.7121415161804154 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[188] = xf * gc;
-    out_y[176] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 14
-  if (n > 14) {
-    dd = 0.5735287134792688 * dd - 2.212182180562894 * (t * xa);
-    xb = 1.638653467083625 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[216] = xf * fc;
-    out_y[204] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 15
-  if (n > 15) {
-    dd = 0.6016458603598018 * dd - 2.1809662438042814 * (t * xb);
-    xa = 1.5793203834444796 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[246] = xf * gc;
-    out_y[234] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 7
-  if (n > 7) {
-    qc = x * pc - y * ps;
-    ps = x * ps + y * pc;
-    pc = qc;
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[63] = -0.707162733f * fc;
-    out_y[49] = -0.707162733f * fs;
-    gc = sg * fc;
-    gs = sg * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 8
-  if (n > 8) {
-    dd = 2.915706640699319 * t;
-    xa = -2.915706640699319 + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[79] = xf * gc;
-    out_y[65] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 9
-  if (n > 9) {
-    dd = 0.18688625039910048 * dd - 3.1770662567847086 * (t * xa);
-    xb = 2.990180006385608 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[97] = xf * fc;
-    out_y[83] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 10
-  if (n > 10) {
-    dd = 0.29442708180727534 * dd - 2.7970572771691153 * (t * xb);
-    xa = 2.50263019536184 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[117] = xf * gc;
-    out_y[103] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 11
-  if (n > 11) {
-    dd = 0.37000643495047747 * dd - 2.5900450446533423 * (t * xa);
-    xb = 2.220038609702865 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[139] = xf * fc;
-    out_y[125] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 12
-  if (n > 12) {
-    dd = 0.4278625498405581 * dd - 2.460209661583209 * (t * xb);
-    xa = 2.032347111742651 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[163] = xf * gc;
-    out_y[149] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 13
-  if (n > 13) {
-    dd = 0.47434164902525694 * dd - 2.3717082451262845 * (t * xa);
-    xb = 1.8973665961010275 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[189] = xf * fc;
-    out_y[175] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 14
-  if (n > 14) {
-    dd = 0.5128728387747147 * dd - 2.307927774486216 * (t * xb);
-    xa = 1.795054935711501 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[217] = xf * gc;
-    out_y[203] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 15
-  if (n > 15) {
-    dd = 0.5455361746651991 * dd - 2.260078437898682 * (t * xa);
-    xb = 1.7145422632334826 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[247] = xf * fc;
-    out_y[233] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 8
-  if (n > 8) {
-    qc = x * pc - y * ps;
-    ps = x * ps + y * pc;
-    pc = qc;
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[80] = 0.72892666f * fc;
-    out_y[64] = 0.72892666f * fs;
-    gc = sg * fc;
-    gs = sg * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 9
-  if (n > 9) {
-    dd = -3.1773176489546975 * t;
-    xa = 3.1773176489546975 + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[98] = xf * gc;
-    out_y[82] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 10
-  if (n > 10) {
-    dd = 0.1752191610126156 * dd - 3.3291640592396967 * (t * xa);
-    xb = 3.1539448982270817 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[118] = xf * fc;
-    out_y[102] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 11
-  if (n > 11) {
-    dd = 0.2772342217348337 * dd - 2.910959328215754 * (t * xb);
-    xa = 2.63372510648092 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[140] = xf * gc;
-    out_y[124] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 12
-  if (n > 12) {
-    dd = 0.34968930309011775 * dd - 2.680951323690902 * (t * xa);
-    xb = 2.3312620206007844 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[164] = xf * fc;
-    out_y[148] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 13
-  if (n > 13) {
-    dd = 0.40567404226968795 * dd - 2.53546276418555 * (t * xb);
-    xa = 2.129788721915862 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[190] = xf * gc;
-    out_y[174] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 14
-  if (n > 14) {
-    dd = 0.4510245227144381 * dd - 2.435532422657966 * (t * xa);
-    xb = 1.9845078999435284 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[218] = xf * fc;
-    out_y[202] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 15
-  if (n > 15) {
-    dd = 0.48890013854582 * dd - 2.363017336304797 * (t * xb);
-    xa = 1.874117197758977 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[248] = xf * gc;
-    out_y[232] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 9
-  if (n > 9) {
-    qc = x * pc - y * ps;
-    ps = x * ps + y * pc;
-    pc = qc;
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[99] = -0.748900952f * fc;
-    out_y[81] = -0.748900952f * fs;
-    gc = sg * fc;
-    gs = sg * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 10
-  if (n > 10) {
-    dd = 3.431895299891714 * t;
-    xa = -3.431895299891714 + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[119] = xf * gc;
-    out_y[101] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 11
-  if (n > 11) {
-    dd = 0.16547190813232432 * dd - 3.4749100707788108 * (t * xa);
-    xb = 3.309438162646486 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[141] = xf * fc;
-    out_y[123] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 12
-  if (n > 12) {
-    dd = 0.2627034687463669 * dd - 3.021089890583219 * (t * xb);
-    xa = 2.7583864218368523 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[165] = xf * gc;
-    out_y[147] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 13
-  if (n > 13) {
-    dd = 0.3323470256441984 * dd - 2.7695585470349866 * (t * xa);
-    xb = 2.437211521390789 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[191] = xf * fc;
-    out_y[173] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 14
-  if (n > 14) {
-    dd = 0.3865700362349023 * dd - 2.6093477445855915 * (t * xb);
-    xa = 2.2227777083506894 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[219] = xf * gc;
-    out_y[201] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 15
-  if (n > 15) {
-    dd = 0.430794952602441 * dd - 2.4986107250941583 * (t * xa);
-    xb = 2.067815772491717 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[249] = xf * fc;
-    out_y[231] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 10
-  if (n > 10) {
-    qc = x * pc - y * ps;
-    ps = x * ps + y * pc;
-    pc = qc;
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[120] = 0.767395118f * fc;
-    out_y[100] = 0.767395118f * fs;
-    gc = sg * fc;
-    gs = sg * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 11
-  if (n > 11) {
-    dd = -3.6802976988053104 * t;
-    xa = 3.6802976988053104 + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[142] = xf * gc;
-    out_y[122] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 12
-  if (n > 12) {
-    dd = 0.1571736533654829 * dd - 3.614994027406106 * (t * xa);
-    xb = 3.4578203740406233 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[166] = xf * fc;
-    out_y[146] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 13
-  if (n > 13) {
-    dd = 0.2502172968684897 * dd - 3.1277162108561214 * (t * xb);
-    xa = 2.8774989139876315 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[192] = xf * gc;
-    out_y[172] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 14
-  if (n > 14) {
-    dd = 0.3173238794109962 * dd - 2.8559149146989657 * (t * xa);
-    xb = 2.5385910352879693 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[220] = xf * fc;
-    out_y[200] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 15
-  if (n > 15) {
-    dd = 0.3699021305790176 * dd - 2.6817904466978773 * (t * xb);
-    xa = 2.3118883161188597 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[250] = xf * gc;
-    out_y[230] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 11
-  if (n > 11) {
-    qc = x * pc - y * ps;
-    ps = x * ps + y * pc;
-    pc = qc;
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[143] = -0.784642106f * fc;
-    out_y[121] = -0.784642106f * fs;
-    gc = sg * fc;
-    gs = sg * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 12
-  if (n > 12) {
-    dd = 3.923210528935984 * t;
-    xa = -3.923210528935984 + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[167] = xf * gc;
-    out_y[145] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 13
-  if (n > 13) {
-    dd = 0.15 * dd - 3.75 * (t * xa);
-    xb = 3.6 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[193] = xf * fc;
-    out_y[171] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 14
-  if (n > 14) {
-    dd = 0.23934065809486682 * dd - 3.2310988842807022 * (t * xb);
-    xa = 2.9917582261858353 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[221] = xf * gc;
-    out_y[199] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 15
-  if (n > 15) {
-    dd = 0.3041490281091405 * dd - 2.9401072717216916 * (t * xa);
-    xb = 2.635958243612551 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[251] = xf * fc;
-    out_y[229] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 12
-  if (n > 12) {
-    qc = x * pc - y * ps;
-    ps = x * ps + y * pc;
-    pc = qc;
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[168] = 0.800821996f * fc;
-    out_y[144] = 0.800821996f * fs;
-    gc = sg * fc;
-    gs = sg * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 13
-  if (n > 13) {
-    dd = -4.161193153549645 * t;
-    xa = 4.161193153549645 + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[194] = xf * gc;
-    out_y[170] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 14
-  if (n > 14) {
-    dd = 0.14371941641709604 * dd - 3.880424243261593 * (t * xa);
-    xb = 3.7367048268444973 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[222] = xf * fc;
-    out_y[198] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 15
-  if (n > 15) {
-    dd = 0.2297573080546352 * dd - 3.331480966792211 * (t * xb);
-    xa = 3.101723658737576 * xb + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[252] = xf * gc;
-    out_y[228] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 13
-  if (n > 13) {
-    qc = x * pc - y * ps;
-    ps = x * ps + y * pc;
-    pc = qc;
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[195] = -0.816077119f * fc;
-    out_y[169] = -0.816077119f * fs;
-    gc = sg * fc;
-    gs = sg * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 14
-  if (n > 14) {
-    dd = 4.394709780272119 * t;
-    xa = -4.394709780272119 + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[223] = xf * gc;
-    out_y[197] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 15
-  if (n > 15) {
-    dd = 0.1381617528505589 * dd - 4.006690832666208 * (t * xa);
-    xb = 3.868529079815649 * xa + dd;
-    xf = SHLIGHT_FLOAT(xb);
-    out_y[253] = xf * fc;
-    out_y[227] = xf * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 14
-  if (n > 14) {
-    qc = x * pc - y * ps;
-    ps = x * ps + y * pc;
-    pc = qc;
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[224] = 0.830522083f * fc;
-    out_y[196] = 0.830522083f * fs;
-    gc = sg * fc;
-    gs = sg * fs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 15
-  if (n > 15) {
-    dd = -4.624151256630013 * t;
-    xa = 4.624151256630013 + dd;
-    xf = SHLIGHT_FLOAT(xa);
-    out_y[254] = xf * gc;
-    out_y[226] = xf * gs;
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 15
-  if (n > 15) {
-    qc = x * pc - y * ps;
-    ps = x * ps + y * pc;
-    pc = qc;
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[255] = -0.844250651f * fc;
-    out_y[225] = -0.844250651f * fs;
-  }
-#endif
-}
-
-SHLIGHT_INLINE void shli_sh_core_col(int m, shli_real t, shli_real k, float *out_xs) {
-  shli_real dd = 0.0;
-  shli_real xa = 0.0;
-  shli_real gp = 1.0;
-  shli_real al;
-  shli_real g;
-  int l;
-  for (l = 0; l < 16; ++l) {
-    out_xs[l] = 0.0f;
-    if (l > m) {
-      al = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (2 * l - 1)) / SHLIGHT_ITOR((l - m) * (l + m)));
-      g = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m)) / SHLIGHT_ITOR((2 * l - 1) * (l - m)));
-      if (l == m + 1) {
-        dd = -al * k * t;
-        xa = g * k + dd;
-      } else {
-        dd = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m - 1) * (l - m - 1)) /
-                           SHLIGHT_ITOR((2 * l - 3) * (l - m) * (l + m))) /
-                 gp * dd -
-             al * (t * xa);
-        xa = g * xa + dd;
-      }
-      gp = g;
-      out_xs[l] = SHLIGHT_FLOAT(xa);
-    }
-  }
-}
-
-SHLIGHT_INLINE void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
-                                       float *out_y) {
-  shli_real pc = x;
-  shli_real ps = y;
-  shli_real qc;
-  float fc = 0.0f;
-  float fs = 0.0f;
-  float gc = 0.0f;
-  float gs = 0.0f;
-  shli_real xa = 0.0;
-  shli_real xb = 0.0;
-  shli_real dd = 0.0;
-  float xf;
-  float xs[16];
-  int l;
-  out_y[0] = 0.282094792f;
-#if SHLIGHT_MAX_BANDS > 1
-  shli_sh_core_col(0, t, 0.28209479177387814, xs);
-  for (l = 1; l < SHLIGHT_MAX_BANDS; ++l) {
-    if (n > l) {
-      out_y[l * l + l] = l % 2 == 1 ? sg * xs[l] : xs[l];
-    }
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 1
-  if (n > 1) {
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[3] = -0.488602512f * fc;
-    out_y[1] = -0.488602512f * fs;
-    gc = sg * fc;
-    gs = sg * fs;
-    shli_sh_core_col(1, t, -0.48860251190291987, xs);
-    for (l = 2; l < SHLIGHT_MAX_BANDS; ++l) {
-      if (n > l) {
-        out_y[l * l + l + 1] = xs[l] * ((l - 1) % 2 == 1 ? gc : fc);
-        out_y[l * l + l - 1] = xs[l] * ((l - 1) % 2 == 1 ? gs : fs);
-      }
-    }
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 2
-  if (n > 2) {
-    qc = x * pc - y * ps;
-    ps = x * ps + y * pc;
-    pc = qc;
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[8] = 0.546274215f * fc;
-    out_y[4] = 0.546274215f * fs;
-    gc = sg * fc;
-    gs = sg * fs;
-    shli_sh_core_col(2, t, 0.5462742152960395, xs);
-    for (l = 3; l < SHLIGHT_MAX_BANDS; ++l) {
-      if (n > l) {
-        out_y[l * l + l + 2] = xs[l] * ((l - 2) % 2 == 1 ? gc : fc);
-        out_y[l * l + l - 2] = xs[l] * ((l - 2) % 2 == 1 ? gs : fs);
-      }
-    }
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 3
-  if (n > 3) {
-    qc = x * pc - y * ps;
-    ps = x * ps + y * pc;
-    pc = qc;
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[15] = -0.59004359f * fc;
-    out_y[9] = -0.59004359f * fs;
-    gc = sg * fc;
-    gs = sg * fs;
-    shli_sh_core_col(3, t, -0.5900435899266435, xs);
-    for (l = 4; l < SHLIGHT_MAX_BANDS; ++l) {
-      if (n > l) {
-        out_y[l * l + l + 3] = xs[l] * ((l - 3) % 2 == 1 ? gc : fc);
-        out_y[l * l + l - 3] = xs[l] * ((l - 3) % 2 == 1 ? gs : fs);
-      }
-    }
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 4
-  if (n > 4) {
-    qc = x * pc - y * ps;
-    ps = x * ps + y * pc;
-    pc = qc;
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[24] = 0.625835735f * fc;
-    out_y[16] = 0.625835735f * fs;
-    gc = sg * fc;
-    gs = sg * fs;
-    shli_sh_core_col(4, t, 0.625835735449176, xs);
-    for (l = 5; l < SHLIGHT_MAX_BANDS; ++l) {
-      if (n > l) {
-        out_y[l * l + l + 4] = xs[l] * ((l - 4) % 2 == 1 ? gc : fc);
-        out_y[l * l + l - 4] = xs[l] * ((l - 4) % 2 == 1 ? gs : fs);
-      }
-    }
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 5
-  if (n > 5) {
-    qc = x * pc - y * ps;
-    ps = x * ps + y * pc;
-    pc = qc;
-    fc = SHLIGHT_FLOAT(pc);
-    fs = SHLIGHT_FLOAT(ps);
-    out_y[35] = -0.656382057f * fc;
-    out_y[25] = -0.656382057f * fs;
-    gc = sg * fc;
-    gs = sg * fs;
-    shli_sh_core_col(5, t, -0.65638205684017, xs);
-    for (l = 6; l < SHLIGHT_MAX_BANDS; ++l) {
-      if (n > l) {
-        out_y[l * l + l + 5] = xs[l] * ((l - 5) % 2 == 1 ? gc : fc);
-        out_y[l * l + l - 5] = xs[l] * ((l - 5) % 2 == 1 ? gs : fs);
-      }
-    }
-  }
 #endif
 #if SHLIGHT_MAX_BANDS > 6
   if (n > 6) {
@@ -13251,22 +12693,6 @@ SHLIGHT_INLINE void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_rea
     out_y[255] = -0.844250651f * fc;
     out_y[225] = -0.844250651f * fs;
   }
-#endif
-}
-
-SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t,
-                                 float sg, float *out_y) {
-#if SHLIGHT_BY_BANDS
-  SHLIGHT_UNUSED(z);
-#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
-  if (n > SHLIGHT_UNROLLED_BANDS) {
-    shli_sh_core_loop(n, x, y, z, t, sg, out_y);
-    return;
-  }
-#endif
-  shli_sh_core_bands(n, x, y, t, sg, out_y);
-#else
-  shli_sh_core_lines(n, x, y, z, t, sg, out_y);
 #endif
 }
 /* @generated end basis */

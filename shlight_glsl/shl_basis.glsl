@@ -235,8 +235,8 @@ void shli_sh_core_col(int m, shli_real t, shli_real k, out float out_xs[16]) {
   }
 }
 
-void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
-                        out float out_y[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, float sg,
+                  out float out_y[SHLIGHT_MAX_COEFFS]) {
   shli_real pc = x;
   shli_real ps = y;
   shli_real qc;
@@ -248,16 +248,133 @@ void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
   shli_real xb = 0.0;
   shli_real dd = 0.0;
   float xf;
-  float xs[16];
-  int l;
+  SHLIGHT_UNUSED(z);
+#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
+  if (n > SHLIGHT_UNROLLED_BANDS) {
+    shli_sh_core_loop(n, x, y, z, t, sg, out_y);
+    return;
+  }
+#endif
   out_y[0] = 0.282094792f;
+#if SHLIGHT_BY_BANDS
 #if SHLIGHT_MAX_BANDS > 1
-  shli_sh_core_col(0, t, 0.28209479177387814, xs);
-  for (l = 1; l < SHLIGHT_MAX_BANDS; ++l) {
-    if (n > l) {
-      out_y[l * l + l] = l % 2 == 1 ? sg * xs[l] : xs[l];
+  if (n > 1) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(0, t, 0.28209479177387814, xs);
+    for (l = 1; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l] = l % 2 == 1 ? sg * xs[l] : xs[l];
+      }
     }
   }
+#endif
+#else
+#if SHLIGHT_MAX_BANDS > 1
+  if (n > 1) {
+    dd = -0.48860251190291987 * t;
+    xa = 0.48860251190291987 + dd;
+    out_y[2] = sg * SHLIGHT_FLOAT(xa);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 2
+  if (n > 2) {
+    dd = 0.6454972243679029 * dd - 1.9364916731037085 * (t * xa);
+    xb = 1.2909944487358056 * xa + dd;
+    out_y[6] = SHLIGHT_FLOAT(xb);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 3
+  if (n > 3) {
+    dd = 0.7888106377466155 * dd - 1.9720265943665387 * (t * xb);
+    xa = 1.1832159566199232 * xb + dd;
+    out_y[12] = sg * SHLIGHT_FLOAT(xa);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    dd = 0.8504200642707612 * dd - 1.984313483298443 * (t * xa);
+    xb = 1.133893419027682 * xa + dd;
+    out_y[20] = SHLIGHT_FLOAT(xb);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    dd = 0.8844332774281064 * dd - 1.98997487421324 * (t * xb);
+    xa = 1.1055415967851334 * xb + dd;
+    out_y[30] = sg * SHLIGHT_FLOAT(xa);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    dd = 0.9059288441743482 * dd - 1.9930434571835665 * (t * xa);
+    xb = 1.0871146130092184 * xa + dd;
+    out_y[42] = SHLIGHT_FLOAT(xb);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 7
+  if (n > 7) {
+    dd = 0.9207191237649848 * dd - 1.9948914348241344 * (t * xb);
+    xa = 1.0741723110591497 * xb + dd;
+    out_y[56] = sg * SHLIGHT_FLOAT(xa);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 8
+  if (n > 8) {
+    dd = 0.9315086329891595 * dd - 1.996089927833914 * (t * xa);
+    xb = 1.0645812948447546 * xa + dd;
+    out_y[72] = SHLIGHT_FLOAT(xb);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 9
+  if (n > 9) {
+    dd = 0.9397229153260873 * dd - 1.9969111950679366 * (t * xb);
+    xa = 1.0571882797418493 * xb + dd;
+    out_y[90] = sg * SHLIGHT_FLOAT(xa);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 10
+  if (n > 10) {
+    dd = 0.9461834694681237 * dd - 1.997498435543818 * (t * xa);
+    xb = 1.0513149660756942 * xa + dd;
+    out_y[110] = SHLIGHT_FLOAT(xb);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 11
+  if (n > 11) {
+    dd = 0.9513965790405152 * dd - 1.9979328159850827 * (t * xb);
+    xa = 1.0465362369445674 * xb + dd;
+    out_y[132] = sg * SHLIGHT_FLOAT(xa);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 12
+  if (n > 12) {
+    dd = 0.9556910644282591 * dd - 1.998263134713633 * (t * xa);
+    xb = 1.042572070285374 * xa + dd;
+    out_y[156] = SHLIGHT_FLOAT(xb);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 13
+  if (n > 13) {
+    dd = 0.9592896780381471 * dd - 1.998520162579474 * (t * xb);
+    xa = 1.039230484541327 * xb + dd;
+    out_y[182] = sg * SHLIGHT_FLOAT(xa);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 14
+  if (n > 14) {
+    dd = 0.9623486324615438 * dd - 1.9987240828047461 * (t * xa);
+    xb = 1.036375450343202 * xa + dd;
+    out_y[210] = SHLIGHT_FLOAT(xb);
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 15
+  if (n > 15) {
+    dd = 0.9649806938294676 * dd - 1.9988885800753267 * (t * xb);
+    xa = 1.0339078862458588 * xb + dd;
+    out_y[240] = sg * SHLIGHT_FLOAT(xa);
+  }
+#endif
 #endif
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
@@ -267,6 +384,13 @@ void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
     out_y[1] = -0.488602512f * fs;
     gc = sg * fc;
     gs = sg * fs;
+  }
+#endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 2
+  if (n > 2) {
+    float xs[16];
+    int l;
     shli_sh_core_col(1, t, -0.48860251190291987, xs);
     for (l = 2; l < SHLIGHT_MAX_BANDS; ++l) {
       if (n > l) {
@@ -275,6 +399,134 @@ void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
       }
     }
   }
+#endif
+#else
+#if SHLIGHT_MAX_BANDS > 2
+  if (n > 2) {
+    dd = 1.092548430592079 * t;
+    xa = -1.092548430592079 + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[7] = xf * gc;
+    out_y[5] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 3
+  if (n > 3) {
+    dd = 0.4183300132670377 * dd - 2.091650066335189 * (t * xa);
+    xb = 1.673320053068151 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[13] = xf * fc;
+    out_y[11] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    dd = 0.5855400437691199 * dd - 2.04939015319192 * (t * xb);
+    xa = 1.4638501094228 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[21] = xf * gc;
+    out_y[19] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    dd = 0.6770032003863299 * dd - 2.03100960115899 * (t * xa);
+    xb = 1.3540064007726604 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[31] = xf * fc;
+    out_y[29] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    dd = 0.7350236324498282 * dd - 2.0213149892370277 * (t * xb);
+    xa = 1.2862913567871994 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[43] = xf * gc;
+    out_y[41] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 7
+  if (n > 7) {
+    dd = 0.7752170911825529 * dd - 2.0155644370746373 * (t * xa);
+    xb = 1.2403473458920844 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[57] = xf * fc;
+    out_y[55] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 8
+  if (n > 8) {
+    dd = 0.8047478161629565 * dd - 2.011869540407391 * (t * xb);
+    xa = 1.2071217242444345 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[73] = xf * gc;
+    out_y[71] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 9
+  if (n > 9) {
+    dd = 0.8273807004815933 * dd - 2.0093531297410117 * (t * xa);
+    xb = 1.1819724292594185 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[91] = xf * fc;
+    out_y[89] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 10
+  if (n > 10) {
+    dd = 0.8452890373232224 * dd - 2.0075614636426526 * (t * xb);
+    xa = 1.1622724263194302 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[111] = xf * gc;
+    out_y[109] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 11
+  if (n > 11) {
+    dd = 0.8598172563316665 * dd - 2.006240264773888 * (t * xa);
+    xb = 1.1464230084422218 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[133] = xf * fc;
+    out_y[131] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 12
+  if (n > 12) {
+    dd = 0.8718425636326949 * dd - 2.0052378963551982 * (t * xb);
+    xa = 1.1333953327225033 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[157] = xf * gc;
+    out_y[155] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 13
+  if (n > 13) {
+    dd = 0.8819620983110006 * dd - 2.004459314343183 * (t * xa);
+    xb = 1.1224972160321822 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[183] = xf * fc;
+    out_y[181] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 14
+  if (n > 14) {
+    dd = 0.890596650096099 * dd - 2.0038424627162224 * (t * xb);
+    xa = 1.1132458126201232 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[211] = xf * gc;
+    out_y[209] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 15
+  if (n > 15) {
+    dd = 0.8980513935286331 * dd - 2.003345416333104 * (t * xa);
+    xb = 1.105294022804471 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[241] = xf * fc;
+    out_y[239] = xf * fs;
+  }
+#endif
 #endif
 #if SHLIGHT_MAX_BANDS > 2
   if (n > 2) {
@@ -287,6 +539,13 @@ void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
     out_y[4] = 0.546274215f * fs;
     gc = sg * fc;
     gs = sg * fs;
+  }
+#endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 3
+  if (n > 3) {
+    float xs[16];
+    int l;
     shli_sh_core_col(2, t, 0.5462742152960395, xs);
     for (l = 3; l < SHLIGHT_MAX_BANDS; ++l) {
       if (n > l) {
@@ -295,6 +554,125 @@ void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
       }
     }
   }
+#endif
+#else
+#if SHLIGHT_MAX_BANDS > 3
+  if (n > 3) {
+    dd = -1.445305721320277 * t;
+    xa = 1.445305721320277 + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[14] = xf * gc;
+    out_y[10] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    dd = 0.32732683535398854 * dd - 2.29128784747792 * (t * xa);
+    xb = 1.9639610121239315 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[22] = xf * fc;
+    out_y[18] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    dd = 0.48249790963716394 * dd - 2.1712405933672376 * (t * xb);
+    xa = 1.6887426837300736 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[32] = xf * gc;
+    out_y[28] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    dd = 0.5765295860893556 * dd - 2.1139418156609704 * (t * xa);
+    xb = 1.5374122295716148 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[44] = xf * fc;
+    out_y[40] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 7
+  if (n > 7) {
+    dd = 0.6405126152203485 * dd - 2.0816659994661326 * (t * xb);
+    xa = 1.4411533842457838 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[58] = xf * gc;
+    out_y[54] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 8
+  if (n > 8) {
+    dd = 0.687184270936277 * dd - 2.0615528128088303 * (t * xa);
+    xb = 1.3743685418725533 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[74] = xf * fc;
+    out_y[70] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 9
+  if (n > 9) {
+    dd = 0.7228667147145245 * dd - 2.048122358357819 * (t * xb);
+    xa = 1.325255643643295 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[92] = xf * gc;
+    out_y[88] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 10
+  if (n > 10) {
+    dd = 0.751095690869083 * dd - 2.038688303787511 * (t * xa);
+    xb = 1.2875926129184283 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[112] = xf * fc;
+    out_y[108] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 11
+  if (n > 11) {
+    dd = 0.7740184746532857 * dd - 2.031798495964875 * (t * xb);
+    xa = 1.2577800213115895 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[134] = xf * gc;
+    out_y[130] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 12
+  if (n > 12) {
+    dd = 0.7930207989565214 * dd - 2.026608708444444 * (t * xa);
+    xb = 1.2335879094879225 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[158] = xf * fc;
+    out_y[154] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 13
+  if (n > 13) {
+    dd = 0.8090398349558905 * dd - 2.0225995873897262 * (t * xb);
+    xa = 1.213559752433836 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[184] = xf * gc;
+    out_y[180] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 14
+  if (n > 14) {
+    dd = 0.8227335122011046 * dd - 2.019436802675439 * (t * xa);
+    xb = 1.1967032904743342 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[212] = xf * fc;
+    out_y[208] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 15
+  if (n > 15) {
+    dd = 0.834578047890988 * dd - 2.0168969490698876 * (t * xb);
+    xa = 1.1823189011788997 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[242] = xf * gc;
+    out_y[238] = xf * gs;
+  }
+#endif
 #endif
 #if SHLIGHT_MAX_BANDS > 3
   if (n > 3) {
@@ -307,6 +685,13 @@ void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
     out_y[9] = -0.59004359f * fs;
     gc = sg * fc;
     gs = sg * fs;
+  }
+#endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    float xs[16];
+    int l;
     shli_sh_core_col(3, t, -0.5900435899266435, xs);
     for (l = 4; l < SHLIGHT_MAX_BANDS; ++l) {
       if (n > l) {
@@ -315,6 +700,116 @@ void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
       }
     }
   }
+#endif
+#else
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    dd = 1.7701307697799304 * t;
+    xa = -1.7701307697799304 + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[23] = xf * gc;
+    out_y[17] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    dd = 0.2763853991962833 * dd - 2.48746859276655 * (t * xa);
+    xb = 2.2110831935702664 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[33] = xf * fc;
+    out_y[27] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    dd = 0.4184306096405653 * dd - 2.301368353023109 * (t * xb);
+    xa = 1.882937743382544 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[45] = xf * gc;
+    out_y[39] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 7
+  if (n > 7) {
+    dd = 0.5095246653650679 * dd - 2.207940216581962 * (t * xa);
+    xb = 1.698415551216894 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[59] = xf * fc;
+    out_y[53] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 8
+  if (n > 8) {
+    dd = 0.5741924500522186 * dd - 2.15322168769582 * (t * xb);
+    xa = 1.5790292376436015 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[75] = xf * gc;
+    out_y[69] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 9
+  if (n > 9) {
+    dd = 0.6229541679970017 * dd - 2.1180441711898057 * (t * xa);
+    xb = 1.495090003192804 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[93] = xf * fc;
+    out_y[87] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 10
+  if (n > 10) {
+    dd = 0.6612465225335805 * dd - 2.0939473213563384 * (t * xb);
+    xa = 1.4327007988227578 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[113] = xf * gc;
+    out_y[107] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 11
+  if (n > 11) {
+    dd = 0.6922186552431729 * dd - 2.0766559657295187 * (t * xa);
+    xb = 1.3844373104863459 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[135] = xf * fc;
+    out_y[129] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 12
+  if (n > 12) {
+    dd = 0.717842536077554 * dd - 2.0637972912229676 * (t * xb);
+    xa = 1.3459547551454134 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[159] = xf * gc;
+    out_y[153] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 13
+  if (n > 13) {
+    dd = 0.7394254526319745 * dd - 2.053959590644373 * (t * xa);
+    xb = 1.3145341380123985 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[185] = xf * fc;
+    out_y[179] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 14
+  if (n > 14) {
+    dd = 0.7578727878783199 * dd - 2.0462565272714635 * (t * xb);
+    xa = 1.2883837393931434 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[213] = xf * gc;
+    out_y[207] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 15
+  if (n > 15) {
+    dd = 0.773833732937793 * dd - 2.040107114108727 * (t * xa);
+    xb = 1.2662733811709337 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[243] = xf * fc;
+    out_y[237] = xf * fs;
+  }
+#endif
 #endif
 #if SHLIGHT_MAX_BANDS > 4
   if (n > 4) {
@@ -327,6 +822,13 @@ void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
     out_y[16] = 0.625835735f * fs;
     gc = sg * fc;
     gs = sg * fs;
+  }
+#endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    float xs[16];
+    int l;
     shli_sh_core_col(4, t, 0.625835735449176, xs);
     for (l = 5; l < SHLIGHT_MAX_BANDS; ++l) {
       if (n > l) {
@@ -335,6 +837,107 @@ void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
       }
     }
   }
+#endif
+#else
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    dd = -2.075662314881041 * t;
+    xa = 2.075662314881041 + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[34] = xf * gc;
+    out_y[26] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    dd = 0.24308621740219885 * dd - 2.6739483914241875 * (t * xa);
+    xb = 2.4308621740219887 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[46] = xf * fc;
+    out_y[38] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 7
+  if (n > 7) {
+    dd = 0.37397879600338285 * dd - 2.4308621740219887 * (t * xb);
+    xa = 2.0568833780186058 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[60] = xf * gc;
+    out_y[52] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 8
+  if (n > 8) {
+    dd = 0.4609772228646444 * dd - 2.3048861143232218 * (t * xa);
+    xb = 1.8439088914585773 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[76] = xf * fc;
+    out_y[68] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 9
+  if (n > 9) {
+    dd = 0.5245122707544083 * dd - 2.229177150706235 * (t * xb);
+    xa = 1.7046648799518267 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[94] = xf * gc;
+    out_y[86] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 10
+  if (n > 10) {
+    dd = 0.5735393346764045 * dd - 2.179449471770337 * (t * xa);
+    xb = 1.6059101370939326 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[114] = xf * fc;
+    out_y[106] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 11
+  if (n > 11) {
+    dd = 0.6127888739864918 * dd - 2.1447610589527217 * (t * xb);
+    xa = 1.53197218496623 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[136] = xf * gc;
+    out_y[128] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 12
+  if (n > 12) {
+    dd = 0.6450585581776749 * dd - 2.1194781197266463 * (t * xa);
+    xb = 1.4744195615489715 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[160] = xf * fc;
+    out_y[152] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 13
+  if (n > 13) {
+    dd = 0.6721344403334446 * dd - 2.100420126042015 * (t * xb);
+    xa = 1.4282856857085702 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[186] = xf * gc;
+    out_y[178] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 14
+  if (n > 14) {
+    dd = 0.6952217871538069 * dd - 2.085665361461421 * (t * xa);
+    xb = 1.390443574307614 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[214] = xf * fc;
+    out_y[206] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 15
+  if (n > 15) {
+    dd = 0.7151690392214606 * dd - 2.0739902137422357 * (t * xb);
+    xa = 1.3588211745207752 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[244] = xf * gc;
+    out_y[236] = xf * gs;
+  }
+#endif
 #endif
 #if SHLIGHT_MAX_BANDS > 5
   if (n > 5) {
@@ -347,6 +950,13 @@ void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
     out_y[25] = -0.656382057f * fs;
     gc = sg * fc;
     gs = sg * fs;
+  }
+#endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    float xs[16];
+    int l;
     shli_sh_core_col(5, t, -0.65638205684017, xs);
     for (l = 6; l < SHLIGHT_MAX_BANDS; ++l) {
       if (n > l) {
@@ -355,6 +965,98 @@ void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
       }
     }
   }
+#endif
+#else
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    dd = 2.3666191622317516 * t;
+    xa = -2.3666191622317516 + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[47] = xf * gc;
+    out_y[37] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 7
+  if (n > 7) {
+    dd = 0.21926450482675733 * dd - 2.850438562747845 * (t * xa);
+    xb = 2.6311740579210876 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[61] = xf * fc;
+    out_y[51] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 8
+  if (n > 8) {
+    dd = 0.34093887463783923 * dd - 2.557041559783794 * (t * xb);
+    xa = 2.216102685145955 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[77] = xf * gc;
+    out_y[67] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 9
+  if (n > 9) {
+    dd = 0.423818178868599 * dd - 2.401636346922061 * (t * xa);
+    xb = 1.9778181680534621 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[95] = xf * fc;
+    out_y[85] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 10
+  if (n > 10) {
+    dd = 0.4855815829335072 * dd - 2.3065125189341593 * (t * xb);
+    xa = 1.820930936000652 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[115] = xf * gc;
+    out_y[105] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 11
+  if (n > 11) {
+    dd = 0.5340582870513797 * dd - 2.2430448056157952 * (t * xa);
+    xb = 1.7089865185644153 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[137] = xf * fc;
+    out_y[127] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 12
+  if (n > 12) {
+    dd = 0.5734345499245157 * dd - 2.1981657747106436 * (t * xb);
+    xa = 1.624731224786128 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[161] = xf * gc;
+    out_y[151] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 13
+  if (n > 13) {
+    dd = 0.606217782649107 * dd - 2.165063509461097 * (t * xa);
+    xb = 1.5588457268119897 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[187] = xf * fc;
+    out_y[177] = xf * fs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 14
+  if (n > 14) {
+    dd = 0.6340288920157854 * dd - 2.1398475105532757 * (t * xb);
+    xa = 1.5058186185374902 * xb + dd;
+    xf = SHLIGHT_FLOAT(xa);
+    out_y[215] = xf * gc;
+    out_y[205] = xf * gs;
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 15
+  if (n > 15) {
+    dd = 0.6579749497380267 * dd - 2.120141504711419 * (t * xa);
+    xb = 1.4621665549733924 * xa + dd;
+    xf = SHLIGHT_FLOAT(xb);
+    out_y[245] = xf * fc;
+    out_y[235] = xf * fs;
+  }
+#endif
 #endif
 #if SHLIGHT_MAX_BANDS > 6
   if (n > 6) {
@@ -888,22 +1590,6 @@ void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,
     out_y[255] = -0.844250651f * fc;
     out_y[225] = -0.844250651f * fs;
   }
-#endif
-}
-
-void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, float sg,
-                  out float out_y[SHLIGHT_MAX_COEFFS]) {
-#if SHLIGHT_BY_BANDS
-  SHLIGHT_UNUSED(z);
-#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
-  if (n > SHLIGHT_UNROLLED_BANDS) {
-    shli_sh_core_loop(n, x, y, z, t, sg, out_y);
-    return;
-  }
-#endif
-  shli_sh_core_bands(n, x, y, t, sg, out_y);
-#else
-  shli_sh_core_lines(n, x, y, z, t, sg, out_y);
 #endif
 }
 

@@ -782,11 +782,14 @@ static void make_sph(void) {
   }
 }
 
-/* The mirrored basis kernel (shli_sh_core_bands: the column recurrence as one loop body, its
- * Reinsch coefficients in closed form, computed in double on the way; the GLSL basis) against
- * the C straight-line kernel (shli_sh_core_lines, the coefficients of the recurrence that
- * tools/gen_basis.py runs): the doubles differ in the last bits, so each value within one float
- * ulp of the other; n = 1..16, random and near-pole directions (both hemispheres). */
+/* shli_sh_core of the GLSL shape (tests/bands_impl.c, SHLIGHT_BY_BANDS 1: the first columns
+ * of the recurrence as one loop body, their Reinsch coefficients in closed form, computed in
+ * double on the way) against the C build's (the coefficients of the recurrence that
+ * tools/gen_basis.py runs, as literals): the doubles may differ in the last bits, so each value
+ * within one float ulp of the other; n = 1..16, random and near-pole directions. */
+void bands_sh_core(int n, double x, double y, double z, double t, float sg, float *out_y);
+void bands_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir, float ib,
+                   float (*out_grad)[3]);
 static void test_core_bands_match_lines(void) {
   static float dr[64][3], dp[64][3];
   float ya[256], yb[256];
@@ -806,8 +809,8 @@ static void test_core_bands_match_lines(void) {
       t = (x * x + y * y) / (1.0 + fabs(z));
       fill_canary(ya, 256);
       fill_canary(yb, 256);
-      shli_sh_core_lines(n, x, y, z, t, sg, ya);
-      shli_sh_core_bands(n, x, y, t, sg, yb);
+      shli_sh_core(n, x, y, z, t, sg, ya);
+      bands_sh_core(n, x, y, z, t, sg, yb);
       for (i = 0; i < n * n; i++) {
         cmp++;
         same += ya[i] == yb[i] ? 1 : 0;
@@ -821,8 +824,8 @@ static void test_core_bands_match_lines(void) {
       TL_CHECK(count_written(yb + n * n, (size_t)(256 - n * n)) == 0, "n=%d bands wrote past", n);
     }
   }
-  printf("  shli_sh_core_bands vs shli_sh_core_lines: %ld of %ld values equal, %ld over 1 ulp\n",
-         same, cmp, bad);
+  printf("  shli_sh_core, GLSL shape vs C: %ld of %ld values equal, %ld over 1 ulp\n", same, cmp,
+         bad);
   TL_CHECK(bad == 0, "%ld values differ by more than 1 ulp", bad);
 }
 
@@ -851,7 +854,7 @@ static void test_grad_bands_match_lines(void) {
         fill_canary(&ga[0][0], 768);
         fill_canary(&gb[0][0], 768);
         shli_sh_grad_lines(n, g_y, d[0], d[1], d[2], irs[s][0], irs[s][1], ga);
-        shli_sh_grad_bands(n, g_y, d[0], d[1], d[2], irs[s][0], irs[s][1], gb);
+        bands_sh_grad(n, g_y, d[0], d[1], d[2], irs[s][0], irs[s][1], gb);
         for (i = 0; i < n * n; i++) {
           int l = (int)sqrt((double)i), k;
           double ym = 0.0;

@@ -176,14 +176,14 @@ def gen_core(n):
 
 
 def gen_core_any(nmax):
-    """shli_sh_core_lines(n, x, y, t, sg, out_y) (C only): any 1 <= n <= nmax in one body, the column-m
+    """shli_sh_core(n, x, y, z, t, sg, out_y): any 1 <= n <= nmax in one body, the column-m
     recurrence of gen_core with each band's step under `if (n > l)` and, for GLSL (and C
     builds with a smaller SHLIGHT_MAX_BANDS), under `#if SHLIGHT_MAX_BANDS > l`: a shader
     compiles only the bands it can use, and a constant n folds every test away."""
     L = []
     w = L.append
-    w('SHLIGHT_CPU_INLINE void shli_sh_core_lines(int n, shli_real x, shli_real y, shli_real z,')
-    w('                                           shli_real t, float sg, float *out_y) {')
+    w('SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t,')
+    w('                                 float sg, float *out_y) {')
     w('@DECLS@')
     w('  SHLIGHT_UNUSED(z);')
     w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
@@ -213,6 +213,8 @@ def gen_core_any(nmax):
             w('  }')
             w('#endif')
         prev, cur = 'xa', 'xb'
+        if m < CORE_LOOP_COLS and m + 1 < nmax:
+            L.extend(core_col_call(m))
         for l in range(m + 1, nmax):
             w('#if SHLIGHT_MAX_BANDS > %d' % l)
             w('  if (n > %d) {' % l)
@@ -236,124 +238,37 @@ def gen_core_any(nmax):
                 w('    out_y[%d] = xf * %s;' % (idx(l, -m), 'gs' if odd else 'fs'))
             w('  }')
             w('#endif')
+        if m < CORE_LOOP_COLS and m + 1 < nmax:
+            w('#endif')
     w('}')
     return declare(L, [('shli_real', 'pc', 'x'), ('shli_real', 'ps', 'y'), ('shli_real', 'qc', None),
                        ('float', 'fc', '0.0f'), ('float', 'fs', '0.0f'), ('float', 'gc', '0.0f'),
                        ('float', 'gs', '0.0f'), ('shli_real', 'xa', '0.0'), ('shli_real', 'xb', '0.0'),
-                       ('shli_real', 'dd', '0.0'), ('float', 'xf', None)]) + gen_core_bands(nmax)
+                       ('shli_real', 'dd', '0.0'), ('float', 'xf', None)])
 
 
-def gen_core_bands(nmax):
-    """shli_sh_core_col, shli_sh_core_bands and the dispatch shli_sh_core (mirrored): the
-    column recurrence of shli_sh_core_lines as one loop body (shli_sh_core_col, the Reinsch
-    coefficients in closed form: g_l = X_l(1) / X_(l-1)(1) = sqrt((2l+1)(l+m) / ((2l-1)(l-m))),
-    c_l = beta_l / g_(l-1)), called per column, which shader compilers unroll and fold; C runs
-    shli_sh_core_lines (SHLIGHT_BY_BANDS 0)."""
-    L = ['']
-    w = L.append
-    w(CORE_COL)
-    w('')
-    w('SHLIGHT_INLINE void shli_sh_core_bands(int n, shli_real x, shli_real y, shli_real t, float sg,')
-    w('                                       float *out_y) {')
-    w('  shli_real pc = x;')
-    w('  shli_real ps = y;')
-    w('  shli_real qc;')
-    w('  float fc = 0.0f;')
-    w('  float fs = 0.0f;')
-    w('  float gc = 0.0f;')
-    w('  float gs = 0.0f;')
-    w('  shli_real xa = 0.0;')
-    w('  shli_real xb = 0.0;')
-    w('  shli_real dd = 0.0;')
-    w('  float xf;')
-    w('  float xs[%d];' % nmax)
-    w('  int l;')
-    w('  out_y[0] = %s;' % lit_f(diag(0)))
-    w('#if SHLIGHT_MAX_BANDS > 1')
-    w('  shli_sh_core_col(0, t, %s, xs);' % lit_d(diag(0)))
-    w('  for (l = 1; l < SHLIGHT_MAX_BANDS; ++l) {')
-    w('    if (n > l) {')
-    w('      out_y[l * l + l] = l % 2 == 1 ? sg * xs[l] : xs[l];')
-    w('    }')
-    w('  }')
-    w('#endif')
-    for m in range(1, nmax):
-        k = diag(m)
-        w('#if SHLIGHT_MAX_BANDS > %d' % m)
-        w('  if (n > %d) {' % m)
-        if m >= 2:
-            w('    qc = x * pc - y * ps;')
-            w('    ps = x * ps + y * pc;')
-            w('    pc = qc;')
-        w('    fc = SHLIGHT_FLOAT(pc);')
-        w('    fs = SHLIGHT_FLOAT(ps);')
-        w('    out_y[%d] = %s * fc;' % (idx(m, m), lit_f(k)))
-        w('    out_y[%d] = %s * fs;' % (idx(m, -m), lit_f(k)))
-        if m + 1 < nmax:
-            w('    gc = sg * fc;')
-            w('    gs = sg * fs;')
-        if m >= CORE_LOOP_COLS:
-            w('  }')
-            w('#endif')
-            L.extend(core_steps(m, nmax))
-            continue
-        if m + 1 < nmax:
-            w('    shli_sh_core_col(%d, t, %s, xs);' % (m, lit_d(k)))
-            w('    for (l = %d; l < SHLIGHT_MAX_BANDS; ++l) {' % (m + 1))
-            w('      if (n > l) {')
-            w('        out_y[l * l + l + %d] = xs[l] * ((l - %d) %% 2 == 1 ? gc : fc);' % (m, m))
-            w('        out_y[l * l + l - %d] = xs[l] * ((l - %d) %% 2 == 1 ? gs : fs);' % (m, m))
-            w('      }')
-            w('    }')
-        w('  }')
-        w('#endif')
-    w('}')
-    w('')
-    w('SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t,')
-    w('                                 float sg, float *out_y) {')
-    w('#if SHLIGHT_BY_BANDS')
-    w('  SHLIGHT_UNUSED(z);')
-    w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
-    w('  if (n > SHLIGHT_UNROLLED_BANDS) {')
-    w('    shli_sh_core_loop(n, x, y, z, t, sg, out_y);')
-    w('    return;')
-    w('  }')
-    w('#endif')
-    w('  shli_sh_core_bands(n, x, y, t, sg, out_y);')
-    w('#else')
-    w('  shli_sh_core_lines(n, x, y, z, t, sg, out_y);')
-    w('#endif')
-    w('}')
+def core_col_call(m):
+    """GLSL (SHLIGHT_BY_BANDS 1): column m < CORE_LOOP_COLS through shli_sh_core_col and a
+    copy loop; C: the straight-line steps that follow, up to the matching #endif"""
+    k = diag(m)
+    L = ['#if SHLIGHT_BY_BANDS',
+         '#if SHLIGHT_MAX_BANDS > %d' % (m + 1),
+         '  if (n > %d) {' % (m + 1),
+         '    float xs[16];',
+         '    int l;',
+         '    shli_sh_core_col(%d, t, %s, xs);' % (m, lit_d(k)),
+         '    for (l = %d; l < SHLIGHT_MAX_BANDS; ++l) {' % (m + 1),
+         '      if (n > l) {']
+    if m == 0:
+        L.append('        out_y[l * l + l] = l % 2 == 1 ? sg * xs[l] : xs[l];')
+    else:
+        L.append('        out_y[l * l + l + %d] = xs[l] * ((l - %d) %% 2 == 1 ? gc : fc);' % (m, m))
+        L.append('        out_y[l * l + l - %d] = xs[l] * ((l - %d) %% 2 == 1 ? gs : fs);' % (m, m))
+    L += ['      }', '    }', '  }', '#endif', '#else']
     return L
 
 
 CORE_LOOP_COLS = 6  # columns m < 6 (75 of the 120 steps at 16 bands) run shli_sh_core_col
-
-
-def core_steps(m, nmax):
-    """the straight-line steps l = m+1.. of column m (those of shli_sh_core_lines)"""
-    L = []
-    w = L.append
-    k = diag(m)
-    prev, cur = 'xa', 'xb'
-    for l in range(m + 1, nmax):
-        w('#if SHLIGHT_MAX_BANDS > %d' % l)
-        w('  if (n > %d) {' % l)
-        a, g, c = reinsch(l, m)
-        if l == m + 1:
-            w('    dd = %s * t;' % lit_d(-a * k))
-            w('    xa = %s + dd;' % lit_d(g * k))
-        else:
-            w('    dd = %s * dd - %s * (t * %s);' % (lit_d(c), lit_d(a), prev))
-            w('    %s = %s * %s + dd;' % (cur, lit_d(g), prev))
-            prev, cur = cur, prev
-        odd = (l - m) % 2 == 1
-        w('    xf = SHLIGHT_FLOAT(%s);' % prev)
-        w('    out_y[%d] = xf * %s;' % (idx(l, m), 'gc' if odd else 'fc'))
-        w('    out_y[%d] = xf * %s;' % (idx(l, -m), 'gs' if odd else 'fs'))
-        w('  }')
-        w('#endif')
-    return L
 
 
 # column m of the basis (1 <= l < 16 in order, l <= m zero): the recurrence of
@@ -948,7 +863,7 @@ def c_regions():
     body = []
     for n in range(1, POLY_BANDS + 1):
         body += [''] + gen_poly(n)
-    body += [''] + gen_core_any(UNROLLED)
+    body += ['', CORE_COL, ''] + gen_core_any(UNROLLED)
     R['basis'] = body
     R['gradient'] = gen_grad_any(UNROLLED)
     R['batch'] = gen_batch_tables()
