@@ -829,10 +829,10 @@ static void test_core_bands_match_lines(void) {
   TL_CHECK(bad == 0, "%ld values differ by more than 1 ulp", bad);
 }
 
-/* The mirrored gradient kernel (shli_sh_grad_bands: one loop body per band, its coefficients
- * computed in double on the way; the GLSL gradient) against the C straight-line kernel
- * (shli_sh_grad_lines, literal float coefficients), bit for bit (== : the two may differ only
- * in the sign of a zero) where the target has no FMA to contract into; with FMA (the
+/* shli_sh_grad of the GLSL shape (tests/bands_impl.c, SHLIGHT_BY_BANDS 1: shli_sh_grad_bands,
+ * one loop body per band, its coefficients computed in double on the way) against the C
+ * build's (shli_sh_grad_lines, literal float coefficients), bit for bit (== : the two may differ
+ * only in the sign of a zero) where the target has no FMA to contract into; with FMA (the
  * -march=native build) within 8 float epsilons of (l + 1) ir ib max|y| of bands l-1 and l, the
  * size of the terms: n = 1..16, random and near-pole directions, 1 / |d| from 1e-3 to 1e30 and
  * the split factors of tiny |d| (ir = ib = 1e20, outputs that overflow included). */
@@ -882,7 +882,7 @@ static void test_grad_bands_match_lines(void) {
       }
     }
   }
-  printf("  shli_sh_grad_bands vs shli_sh_grad_lines: %ld of %ld components differ, %ld past the "
+  printf("  shli_sh_grad, GLSL shape vs C: %ld of %ld components differ, %ld past the "
          "FMA bound (%ld inf)\n",
          bad, cmp, far, inf);
   TL_CHECK(far == 0, "%ld components past the FMA bound", far);
