@@ -271,8 +271,8 @@ def core_col_call(m):
 CORE_LOOP_COLS = 6  # columns m < 6 (75 of the 120 steps at 16 bands) run shli_sh_core_col
 
 
-# column m of the basis (1 <= l < 16 in order, l <= m zero): the recurrence of
-# shli_sh_core's straight-line steps with the coefficients computed on the way; xs[l], 16 entries, indexed by
+# column m of the basis (1 <= l < 16 in order, l <= m zero): the recurrence of shli_sh_core's
+# straight-line steps with the coefficients computed on the way; xs[l], 16 entries, indexed by
 # the counter of a 16-trip loop makes shader compilers unroll it whatever the body costs.
 CORE_COL = '''SHLIGHT_INLINE void shli_sh_core_col(int m, shli_real t, shli_real k, float *out_xs) {
   shli_real dd = 0.0;
