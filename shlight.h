@@ -1228,7 +1228,10 @@ typedef double shli_real;
 #define SHLIGHT_UNUSED(x) ((void)(x))
 /* 1 (GLSL): zeroing an output array by constant-trip per-band code, which shader compilers keep
    in registers; 0 (C): the plain loop */
+#ifndef SHLIGHT_BY_BANDS /* 1 in a C build: the GLSL shapes (tests/bands_impl.c holds them to C)   \
+                          */
 #define SHLIGHT_BY_BANDS 0
+#endif
 /* 1 (GLSL): per-coefficient sums over several arrays as one flat run-time loop, which shader
    compilers do not unroll into huge bodies; 0 (C): nested loops (the same sums, same order) */
 #define SHLIGHT_FLAT_LOOPS 0
@@ -11805,6 +11808,34 @@ SHLIGHT_INLINE void shli_sh_poly_6(float x, float y, float z, float *out_y) {
   out_y[25] = -0.656382057f * ps;
 }
 
+SHLIGHT_INLINE void shli_sh_core_col(int m, shli_real t, shli_real k, float *out_xs) {
+  shli_real dd = 0.0;
+  shli_real xa = 0.0;
+  shli_real gp = 1.0;
+  shli_real al;
+  shli_real g;
+  int l;
+  for (l = 0; l < 16; ++l) {
+    out_xs[l] = 0.0f;
+    if (l > m) {
+      al = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (2 * l - 1)) / SHLIGHT_ITOR((l - m) * (l + m)));
+      g = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m)) / SHLIGHT_ITOR((2 * l - 1) * (l - m)));
+      if (l == m + 1) {
+        dd = -al * k * t;
+        xa = g * k + dd;
+      } else {
+        dd = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m - 1) * (l - m - 1)) /
+                           SHLIGHT_ITOR((2 * l - 3) * (l - m) * (l + m))) /
+                 gp * dd -
+             al * (t * xa);
+        xa = g * xa + dd;
+      }
+      gp = g;
+      out_xs[l] = SHLIGHT_FLOAT(xa);
+    }
+  }
+}
+
 SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t,
                                  float sg, float *out_y) {
   shli_real pc = x;
@@ -11826,6 +11857,20 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
   }
 #endif
   out_y[0] = 0.282094792f;
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 1
+  if (n > 1) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(0, t, 0.28209479177387814, xs);
+    for (l = 1; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l] = l % 2 == 1 ? sg * xs[l] : xs[l];
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
     dd = -0.48860251190291987 * t;
@@ -11931,6 +11976,7 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
     out_y[240] = sg * SHLIGHT_FLOAT(xa);
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
     fc = SHLIGHT_FLOAT(pc);
@@ -11941,6 +11987,21 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 2
+  if (n > 2) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(1, t, -0.48860251190291987, xs);
+    for (l = 2; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 1] = xs[l] * ((l - 1) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 1] = xs[l] * ((l - 1) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 2
   if (n > 2) {
     dd = 1.092548430592079 * t;
@@ -12067,6 +12128,7 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
     out_y[239] = xf * fs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 2
   if (n > 2) {
     qc = x * pc - y * ps;
@@ -12080,6 +12142,21 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 3
+  if (n > 3) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(2, t, 0.5462742152960395, xs);
+    for (l = 3; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 2] = xs[l] * ((l - 2) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 2] = xs[l] * ((l - 2) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 3
   if (n > 3) {
     dd = -1.445305721320277 * t;
@@ -12197,6 +12274,7 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
     out_y[238] = xf * gs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 3
   if (n > 3) {
     qc = x * pc - y * ps;
@@ -12210,6 +12288,21 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(3, t, -0.5900435899266435, xs);
+    for (l = 4; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 3] = xs[l] * ((l - 3) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 3] = xs[l] * ((l - 3) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 4
   if (n > 4) {
     dd = 1.7701307697799304 * t;
@@ -12318,6 +12411,7 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
     out_y[237] = xf * fs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 4
   if (n > 4) {
     qc = x * pc - y * ps;
@@ -12331,6 +12425,21 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(4, t, 0.625835735449176, xs);
+    for (l = 5; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 4] = xs[l] * ((l - 4) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 4] = xs[l] * ((l - 4) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 5
   if (n > 5) {
     dd = -2.075662314881041 * t;
@@ -12430,6 +12539,7 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
     out_y[236] = xf * gs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 5
   if (n > 5) {
     qc = x * pc - y * ps;
@@ -12443,6 +12553,21 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(5, t, -0.65638205684017, xs);
+    for (l = 6; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 5] = xs[l] * ((l - 5) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 5] = xs[l] * ((l - 5) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 6
   if (n > 6) {
     dd = 2.3666191622317516 * t;
@@ -12532,6 +12657,7 @@ SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, s
     out_y[245] = xf * fc;
     out_y[235] = xf * fs;
   }
+#endif
 #endif
 #if SHLIGHT_MAX_BANDS > 6
   if (n > 6) {
@@ -13306,21 +13432,21 @@ SHLI_GRADV_ALIGN static const float SHLI_GRADV_COEF[SHLI_GRADV_CHUNKS * 32] = {
     4.1231055f, 0, 2.3804762f, 5.582711f, 0, 1.8439089f, 6.115554f, 0, 1.3038405f, 6.6483083f, 0,
     0.7527726f, 7.1809936f, 0, 0, 7.7136245f, 0, -8.246211f, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
     0, 0, 0, 0, 8.246211f, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, -9.246621f, 0, 0,
-    -8.717798f, 4.358899f, 0.747545f, -8.188945f, 5.98036f, 1.294786f, -7.660057f, 7.0918345f,
+    -8.717798f, 4.358899f, 0.747545f, -8.188945f, 5.98036f, 1.294786f, -7.6600566f, 7.0918345f,
     1.8311038f, -7.131125f, 7.9112725f, 2.3639448f, -9.246621f, 0, 0, -8.717798f, 0, 0,
-    -8.188945f, -0.747545f, 0, -7.660057f, -1.294786f, 0, -7.131125f, -1.8311038f, 0, -6.6021385f,
-    -6.6021385f, 8.523324f, 2.8952293f, -6.0730844f, 8.97054f, 3.4256816f, -5.543942f, 9.27679f,
-    3.9556363f, -7.0918345f, 9.455779f, 0, 6.3431296f, 9.514694f, -7.0918345f, 3.9556363f,
-    -2.3639448f, 0, -6.0730844f, -2.8952293f, 0, -5.543942f, -3.4256816f, 0, 0, -3.9556363f, 0,
-    6.3431296f, 0, 0, 3.9556363f, 0, 9.455779f, -5.543942f, 3.4256816f, 9.27679f, -6.0730844f,
-    2.8952293f, 8.97054f, -6.6021385f, 2.3639448f, 8.523324f, -7.131125f, 1.8311038f, 7.9112725f,
-    -7.660057f, 1.294786f, 7.0918345f, 0, 3.4256816f, 5.543942f, 0, 2.8952293f, 6.0730844f, 0,
-    2.3639448f, 6.6021385f, 0, 1.8311038f, 7.131125f, 0, 1.294786f, 7.660057f, 0, -8.188945f,
-    0.747545f, 5.98036f, -8.717798f, 0, 4.358899f, -9.246621f, 0, 0, 0, 0, 0, 0, 0, 0, 0,
-    0.747545f, 8.188945f, 0, 0, 8.717798f, 0, 0, 9.246621f, 0, 0, 0, 0, 0, 0, 0, 0, 0,
-    -10.246951f, 0, 0, -9.721111f, 4.582576f, 0.74339193f, -9.1952505f, 6.30789f, 1.2875926f,
-    -8.669365f, 7.5078907f, 1.820931f, -8.143451f, 8.41052f, 2.3508117f, -10.246951f, 0, 0,
-    -9.721111f, 0, 0, -9.1952505f, -0.74339193f, 0, -8.669365f, -1.2875926f, 0, -8.143451f,
+    -8.188945f, -0.747545f, 0, -7.6600566f, -1.294786f, 0, -7.131125f, -1.8311038f, 0,
+    -6.6021385f, -6.6021385f, 8.523324f, 2.8952293f, -6.0730844f, 8.97054f, 3.4256816f,
+    -5.543942f, 9.27679f, 3.9556363f, -7.0918345f, 9.455779f, 0, 6.3431296f, 9.514694f,
+    -7.0918345f, 3.9556363f, -2.3639448f, 0, -6.0730844f, -2.8952293f, 0, -5.543942f, -3.4256816f,
+    0, 0, -3.9556363f, 0, 6.3431296f, 0, 0, 3.9556363f, 0, 9.455779f, -5.543942f, 3.4256816f,
+    9.27679f, -6.0730844f, 2.8952293f, 8.97054f, -6.6021385f, 2.3639448f, 8.523324f, -7.131125f,
+    1.8311038f, 7.9112725f, -7.6600566f, 1.294786f, 7.0918345f, 0, 3.4256816f, 5.543942f, 0,
+    2.8952293f, 6.0730844f, 0, 2.3639448f, 6.6021385f, 0, 1.8311038f, 7.131125f, 0, 1.294786f,
+    7.6600566f, 0, -8.188945f, 0.747545f, 5.98036f, -8.717798f, 0, 4.358899f, -9.246621f, 0, 0, 0,
+    0, 0, 0, 0, 0, 0, 0.747545f, 8.188945f, 0, 0, 8.717798f, 0, 0, 9.246621f, 0, 0, 0, 0, 0, 0, 0,
+    0, 0, -10.246951f, 0, 0, -9.721111f, 4.582576f, 0.74339193f, -9.1952505f, 6.30789f,
+    1.2875926f, -8.669365f, 7.5078907f, 1.820931f, -8.143451f, 8.41052f, 2.3508117f, -10.246951f,
+    0, 0, -9.721111f, 0, 0, -9.1952505f, -0.74339193f, 0, -8.669365f, -1.2875926f, 0, -8.143451f,
     -1.820931f, 0, -7.617501f, -7.617501f, 9.104654f, 2.8791447f, -7.091507f, 9.635461f,
     3.4066498f, -6.5654597f, 10.028906f, 3.9336605f, -6.039345f, 10.300741f, 4.4603515f,
     -7.7967606f, 10.460452f, 0, 7.0524354f, -2.3508117f, 0, -7.091507f, -2.8791447f, 0,
@@ -13336,10 +13462,10 @@ SHLI_GRADV_ALIGN static const float SHLI_GRADV_COEF[SHLI_GRADV_CHUNKS * 32] = {
     7.9011755f, 1.8126539f, -9.153454f, 8.880155f, 2.3401263f, -11.247222f, 0, 0, -10.723805f, 0,
     0, -10.200374f, -0.7400129f, 0, -9.676924f, -1.2817398f, 0, -9.153454f, -1.8126539f, 0,
     -8.629959f, -8.629959f, 9.648587f, 2.8660576f, -8.106435f, 10.253919f, 3.391165f, -7.5828753f,
-    10.723805f, 3.91578f, -7.059273f, 11.075499f, 4.4400773f, -6.535617f, 11.320021f, 4.964157f,
+    10.723805f, 3.91578f, -7.059273f, 11.075499f, 4.4400773f, -6.535617f, 11.32002f, 4.964157f,
     -8.502101f, -2.3401263f, 0, -8.106435f, -2.8660576f, 0, -7.5828753f, -3.391165f, 0,
     -7.059273f, -3.91578f, 0, -6.535617f, -4.4400773f, 0, 0, -4.964157f, 11.464231f, 0,
-    7.7613206f, 11.511899f, -8.502101f, 4.964157f, 11.464231f, -6.535617f, 4.4400773f, 11.320021f,
+    7.7613206f, 11.511899f, -8.502101f, 4.964157f, 11.464231f, -6.535617f, 4.4400773f, 11.32002f,
     -7.059273f, 3.91578f, 11.075499f, -7.5828753f, 3.391165f, 10.723805f, 0, 7.7613206f, 0, 0,
     4.964157f, 0, 0, 4.4400773f, 6.535617f, 0, 3.91578f, 7.059273f, 0, 3.391165f, 7.5828753f, 0,
     -8.106435f, 2.8660576f, 10.253919f, -8.629959f, 2.3401263f, 9.648587f, -9.153454f, 1.8126539f,
@@ -13350,17 +13476,17 @@ SHLI_GRADV_ALIGN static const float SHLI_GRADV_COEF[SHLI_GRADV_CHUNKS * 32] = {
     0, 0, -12.247449f, 0, 0, -11.726039f, 5, 0.7372098f, -11.204618f, 6.915641f, 1.2768848f,
     -10.683185f, 8.275159f, 1.8057878f, -10.161736f, 9.325048f, 2.331262f, -12.247449f, 0, 0,
     -11.726039f, 0, 0, -11.204618f, -0.7372098f, 0, -10.683185f, -1.2768848f, 0, -10.161736f,
-    -1.8057878f, 0, -9.640268f, -9.640268f, 10.161736f, 2.8552012f, -9.118781f, 10.834726f,
-    3.3783195f, -8.59727f, 11.373118f, 3.9009476f, -8.075728f, 11.795357f, 4.423259f, -7.5541525f,
+    -1.8057878f, 0, -9.640269f, -9.640269f, 10.161736f, 2.8552012f, -9.118781f, 10.834726f,
+    3.3783197f, -8.59727f, 11.373118f, 3.9009476f, -8.075728f, 11.795357f, 4.423259f, -7.5541525f,
     12.113593f, 4.9453535f, -7.032533f, -2.331262f, 0, -9.118781f, -2.8552012f, 0, -8.59727f,
-    -3.3783195f, 0, -8.075728f, -3.9009476f, 0, -7.5541525f, -4.423259f, 0, -7.032533f,
+    -3.3783197f, 0, -8.075728f, -3.9009476f, 0, -7.5541525f, -4.423259f, 0, -7.032533f,
     -4.9453535f, 12.335879f, 5.467294f, -9.207747f, 12.467349f, 0, 8.469895f, 12.510865f,
     -9.207747f, 5.467294f, 12.467349f, -7.032533f, 4.9453535f, 12.335879f, -7.5541525f, 4.423259f,
     12.113593f, 0, 0, -5.467294f, 0, 8.469895f, 0, 0, 5.467294f, 0, 0, 4.9453535f, 7.032533f, 0,
-    4.423259f, 7.5541525f, 0, -8.075728f, 3.9009476f, 11.795357f, -8.59727f, 3.3783195f,
-    11.373118f, -9.118781f, 2.8552012f, 10.834726f, -9.640268f, 2.331262f, 10.161736f,
-    -10.161736f, 1.8057878f, 9.325048f, -10.683185f, 3.9009476f, 8.075728f, 0, 3.3783195f,
-    8.59727f, 0, 2.8552012f, 9.118781f, 0, 2.331262f, 9.640268f, 0, 1.8057878f, 10.161736f, 0,
+    4.423259f, 7.5541525f, 0, -8.075728f, 3.9009476f, 11.795357f, -8.59727f, 3.3783197f,
+    11.373118f, -9.118781f, 2.8552012f, 10.834726f, -9.640269f, 2.331262f, 10.161736f,
+    -10.161736f, 1.8057878f, 9.325048f, -10.683185f, 3.9009476f, 8.075728f, 0, 3.3783197f,
+    8.59727f, 0, 2.8552012f, 9.118781f, 0, 2.331262f, 9.640269f, 0, 1.8057878f, 10.161736f, 0,
     1.2768848f, 1.2768848f, 8.275159f, -11.204618f, 0.7372098f, 6.915641f, -11.726039f, 0, 5,
     -12.247449f, 0, 0, 0, 0, 0, 0, 0, 10.683185f, 0, 0.7372098f, 11.204618f, 0, 0, 11.726039f, 0,
     0, 12.247449f, 0, 0, 0, 0, 0, 0, 0, -13.247642f, 0, 0, -12.727922f, 5.196152f, 0.73484695f,
@@ -13370,10 +13496,10 @@ SHLI_GRADV_ALIGN static const float SHLI_GRADV_COEF[SHLI_GRADV_CHUNKS * 32] = {
     11.384199f, 3.3674917f, -9.60937f, 11.984991f, 3.8884444f, -9.089555f, 12.470766f, 4.4090815f,
     -8.569715f, 12.854571f, 4.929503f, -8.049845f, -2.32379f, 0, -10.129166f, -2.8460498f, 0,
     -9.60937f, -3.3674917f, 0, -9.089555f, -3.8884444f, 0, -8.569715f, -4.4090815f, 0, -8.049845f,
-    -4.929503f, 13.145342f, 5.4497705f, -7.52994f, 13.349157f, 5.9699244f, -9.913627f, 13.469967f,
+    -4.929503f, 13.145341f, 5.4497705f, -7.52994f, 13.349157f, 5.9699244f, -9.913627f, 13.469967f,
     0, 9.178235f, 13.509996f, -9.913627f, 5.9699244f, 13.469967f, -7.52994f, 5.4497705f,
     13.349157f, 0, -7.52994f, -5.4497705f, 0, 0, -5.9699244f, 0, 9.178235f, 0, 0, 5.9699244f, 0,
-    0, 5.4497705f, 7.52994f, 0, -8.049845f, 4.929503f, 13.145342f, -8.569715f, 4.4090815f,
+    0, 5.4497705f, 7.52994f, 0, -8.049845f, 4.929503f, 13.145341f, -8.569715f, 4.4090815f,
     12.854571f, -9.089555f, 3.8884444f, 12.470766f, -9.60937f, 3.3674917f, 11.984991f,
     -10.129166f, 2.8460498f, 11.384199f, -10.648944f, 4.929503f, 8.049845f, 0, 4.4090815f,
     8.569715f, 0, 3.8884444f, 9.089555f, 0, 3.3674917f, 9.60937f, 0, 2.8460498f, 10.129166f, 0,
@@ -13383,7 +13509,7 @@ SHLI_GRADV_ALIGN static const float SHLI_GRADV_COEF[SHLI_GRADV_CHUNKS * 32] = {
     12.727922f, 0, 0, 13.247642f, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
     0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, -14.247807f, 0, 0, -13.72953f, 5.3851647f, 0.7328281f,
     -13.2112465f, 7.4734097f, 1.2692956f, -12.692955f, 8.975275f, 1.7950549f, -12.174655f,
-    10.154364f, 2.317406f, -14.247807f, 0, 0, -13.72953f, 0, 0, -13.2112465f, -0.7328281f, 0,
+    10.154365f, 2.317406f, -14.247807f, 0, 0, -13.72953f, 0, 0, -13.2112465f, -0.7328281f, 0,
     -12.692955f, -1.2692956f, 0, -12.174655f, -1.7950549f, 0, -11.656344f, -11.656344f,
     11.113889f, 2.838231f, -11.138023f, 11.907047f, 3.3582404f, -10.619688f, 12.565385f,
     3.8777618f, -10.101338f, 13.109228f, 4.396969f, -9.582971f, 13.552367f, 4.9159603f,
@@ -13397,7 +13523,7 @@ SHLI_GRADV_ALIGN static const float SHLI_GRADV_COEF[SHLI_GRADV_CHUNKS * 32] = {
     3.8777618f, 13.109228f, -10.619688f, 5.9535236f, 8.02773f, 0, 5.4347987f, 8.546171f, 0,
     4.9159603f, 9.064583f, 0, 4.396969f, 9.582971f, 0, 3.8777618f, 10.101338f, 0, 3.3582404f,
     3.3582404f, 12.565385f, -11.138023f, 2.838231f, 11.907047f, -11.656344f, 2.317406f,
-    11.113889f, -12.174655f, 1.7950549f, 10.154364f, -12.692955f, 1.2692956f, 8.975275f,
+    11.113889f, -12.174655f, 1.7950549f, 10.154365f, -12.692955f, 1.2692956f, 8.975275f,
     -13.2112465f, 0.7328281f, 10.619688f, 0, 2.838231f, 11.138023f, 0, 2.317406f, 11.656344f, 0,
     1.7950549f, 12.174655f, 0, 1.2692956f, 12.692955f, 0, 0.7328281f, 13.2112465f, 7.4734097f,
     -13.72953f, 0, 5.3851647f, -14.247807f, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 13.72953f, 0,
@@ -13450,8 +13576,8 @@ SHLI_TAB_FN(gradv_coef) {
 #endif
 
 /* @generated begin gradient */
-SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir,
-                                 float ib, float (*out_grad)[3]) {
+SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, float ny, float nz,
+                                           float ir, float ib, float (*out_grad)[3]) {
   float r[29];
   float lr;
   float q;
@@ -13872,8 +13998,8 @@ SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, floa
                  (-8.1889452f * r[14] + -0.747545002f * r[16] - q * ny) * ib,
                  (5.98036001f * r[1] - q * nz) * ib);
     q = lr * y[84];
-    SHLIGHT_SET3(out_grad[84], (-7.66005683f * r[3] + 1.29478592f * r[1] - q * nx) * ib,
-                 (-7.66005683f * r[13] + -1.29478592f * r[15] - q * ny) * ib,
+    SHLIGHT_SET3(out_grad[84], (-7.66005659f * r[3] + 1.29478592f * r[1] - q * nx) * ib,
+                 (-7.66005659f * r[13] + -1.29478592f * r[15] - q * ny) * ib,
                  (7.09183458f * r[2] - q * nz) * ib);
     q = lr * y[85];
     SHLIGHT_SET3(out_grad[85], (-7.13112482f * r[4] + 1.83110381f * r[2] - q * nx) * ib,
@@ -13918,8 +14044,8 @@ SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, floa
                  (7.13112482f * r[4] + 1.83110381f * r[2] - q * ny) * ib,
                  (7.91127267f * r[13] - q * nz) * ib);
     q = lr * y[96];
-    SHLIGHT_SET3(out_grad[96], (-7.66005683f * r[13] + 1.29478592f * r[15] - q * nx) * ib,
-                 (7.66005683f * r[3] + 1.29478592f * r[1] - q * ny) * ib,
+    SHLIGHT_SET3(out_grad[96], (-7.66005659f * r[13] + 1.29478592f * r[15] - q * nx) * ib,
+                 (7.66005659f * r[3] + 1.29478592f * r[1] - q * ny) * ib,
                  (7.09183458f * r[14] - q * nz) * ib);
     q = lr * y[97];
     SHLIGHT_SET3(out_grad[97], (-8.1889452f * r[14] + 0.747545002f * r[16] - q * nx) * ib,
@@ -14096,7 +14222,7 @@ SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, floa
     q = lr * y[130];
     SHLIGHT_SET3(out_grad[130], (-6.5356167f * r[9] + 4.44007722f * r[7] - q * nx) * ib,
                  (-6.5356167f * r[11] + -4.44007722f * r[13] - q * ny) * ib,
-                 (11.3200202f * r[8] - q * nz) * ib);
+                 (11.3200197f * r[8] - q * nz) * ib);
     q = lr * y[131];
     SHLIGHT_SET3(out_grad[131], (4.96415724f * r[8] - q * nx) * ib,
                  (-8.50210058f * r[10] + -4.96415724f * r[12] - q * ny) * ib,
@@ -14110,7 +14236,7 @@ SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, floa
     q = lr * y[134];
     SHLIGHT_SET3(out_grad[134], (-6.5356167f * r[11] + 4.44007722f * r[13] - q * nx) * ib,
                  (6.5356167f * r[9] + 4.44007722f * r[7] - q * ny) * ib,
-                 (11.3200202f * r[12] - q * nz) * ib);
+                 (11.3200197f * r[12] - q * nz) * ib);
     q = lr * y[135];
     SHLIGHT_SET3(out_grad[135], (-7.05927286f * r[12] + 3.91578004f * r[14] - q * nx) * ib,
                  (7.05927286f * r[8] + 3.91578004f * r[6] - q * ny) * ib,
@@ -14192,16 +14318,16 @@ SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, floa
                  (-10.1617356f * r[18] + -1.8057878f * r[20] - q * ny) * ib,
                  (9.32504808f * r[3] - q * nz) * ib);
     q = lr * y[149];
-    SHLIGHT_SET3(out_grad[149], (-9.6402688f * r[5] + 2.33126202f * r[3] - q * nx) * ib,
-                 (-9.6402688f * r[17] + -2.33126202f * r[19] - q * ny) * ib,
+    SHLIGHT_SET3(out_grad[149], (-9.64026928f * r[5] + 2.33126202f * r[3] - q * nx) * ib,
+                 (-9.64026928f * r[17] + -2.33126202f * r[19] - q * ny) * ib,
                  (10.1617356f * r[4] - q * nz) * ib);
     q = lr * y[150];
     SHLIGHT_SET3(out_grad[150], (-9.11878138f * r[6] + 2.8552012f * r[4] - q * nx) * ib,
                  (-9.11878138f * r[16] + -2.8552012f * r[18] - q * ny) * ib,
                  (10.8347268f * r[5] - q * nz) * ib);
     q = lr * y[151];
-    SHLIGHT_SET3(out_grad[151], (-8.59726954f * r[7] + 3.37831962f * r[5] - q * nx) * ib,
-                 (-8.59726954f * r[15] + -3.37831962f * r[17] - q * ny) * ib,
+    SHLIGHT_SET3(out_grad[151], (-8.59726954f * r[7] + 3.37831974f * r[5] - q * nx) * ib,
+                 (-8.59726954f * r[15] + -3.37831974f * r[17] - q * ny) * ib,
                  (11.3731186f * r[6] - q * nz) * ib);
     q = lr * y[152];
     SHLIGHT_SET3(out_grad[152], (-8.07572853f * r[8] + 3.90094749f * r[6] - q * nx) * ib,
@@ -14238,16 +14364,16 @@ SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, floa
                  (8.07572853f * r[8] + 3.90094749f * r[6] - q * ny) * ib,
                  (11.7953565f * r[15] - q * nz) * ib);
     q = lr * y[161];
-    SHLIGHT_SET3(out_grad[161], (-8.59726954f * r[15] + 3.37831962f * r[17] - q * nx) * ib,
-                 (8.59726954f * r[7] + 3.37831962f * r[5] - q * ny) * ib,
+    SHLIGHT_SET3(out_grad[161], (-8.59726954f * r[15] + 3.37831974f * r[17] - q * nx) * ib,
+                 (8.59726954f * r[7] + 3.37831974f * r[5] - q * ny) * ib,
                  (11.3731186f * r[16] - q * nz) * ib);
     q = lr * y[162];
     SHLIGHT_SET3(out_grad[162], (-9.11878138f * r[16] + 2.8552012f * r[18] - q * nx) * ib,
                  (9.11878138f * r[6] + 2.8552012f * r[4] - q * ny) * ib,
                  (10.8347268f * r[17] - q * nz) * ib);
     q = lr * y[163];
-    SHLIGHT_SET3(out_grad[163], (-9.6402688f * r[17] + 2.33126202f * r[19] - q * nx) * ib,
-                 (9.6402688f * r[5] + 2.33126202f * r[3] - q * ny) * ib,
+    SHLIGHT_SET3(out_grad[163], (-9.64026928f * r[17] + 2.33126202f * r[19] - q * nx) * ib,
+                 (9.64026928f * r[5] + 2.33126202f * r[3] - q * ny) * ib,
                  (10.1617356f * r[18] - q * nz) * ib);
     q = lr * y[164];
     SHLIGHT_SET3(out_grad[164], (-10.1617356f * r[18] + 1.8057878f * r[20] - q * nx) * ib,
@@ -14338,7 +14464,7 @@ SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, floa
     q = lr * y[179];
     SHLIGHT_SET3(out_grad[179], (-8.04984472f * r[10] + 4.92950302f * r[8] - q * nx) * ib,
                  (-8.04984472f * r[14] + -4.92950302f * r[16] - q * ny) * ib,
-                 (13.1453414f * r[9] - q * nz) * ib);
+                 (13.1453409f * r[9] - q * nz) * ib);
     q = lr * y[180];
     SHLIGHT_SET3(out_grad[180], (-7.52994024f * r[11] + 5.44977064f * r[9] - q * nx) * ib,
                  (-7.52994024f * r[13] + -5.44977064f * r[15] - q * ny) * ib,
@@ -14360,7 +14486,7 @@ SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, floa
     q = lr * y[185];
     SHLIGHT_SET3(out_grad[185], (-8.04984472f * r[14] + 4.92950302f * r[16] - q * nx) * ib,
                  (8.04984472f * r[10] + 4.92950302f * r[8] - q * ny) * ib,
-                 (13.1453414f * r[15] - q * nz) * ib);
+                 (13.1453409f * r[15] - q * nz) * ib);
     q = lr * y[186];
     SHLIGHT_SET3(out_grad[186], (-8.56971411f * r[15] + 4.40908154f * r[17] - q * nx) * ib,
                  (8.56971411f * r[9] + 4.40908154f * r[7] - q * ny) * ib,
@@ -14448,7 +14574,7 @@ SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, floa
     q = lr * y[200];
     SHLIGHT_SET3(out_grad[200], (-12.1746549f * r[4] + 1.79505494f * r[2] - q * nx) * ib,
                  (-12.1746549f * r[22] + -1.79505494f * r[24] - q * ny) * ib,
-                 (10.1543641f * r[3] - q * nz) * ib);
+                 (10.1543646f * r[3] - q * nz) * ib);
     q = lr * y[201];
     SHLIGHT_SET3(out_grad[201], (-11.6563446f * r[5] + 2.31740596f * r[3] - q * nx) * ib,
                  (-11.6563446f * r[21] + -2.31740596f * r[23] - q * ny) * ib,
@@ -14526,7 +14652,7 @@ SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, floa
     q = lr * y[220];
     SHLIGHT_SET3(out_grad[220], (-12.1746549f * r[22] + 1.79505494f * r[24] - q * nx) * ib,
                  (12.1746549f * r[4] + 1.79505494f * r[2] - q * ny) * ib,
-                 (10.1543641f * r[23] - q * nz) * ib);
+                 (10.1543646f * r[23] - q * nz) * ib);
     q = lr * y[221];
     SHLIGHT_SET3(out_grad[221], (-12.6929552f * r[23] + 1.26929552f * r[25] - q * nx) * ib,
                  (12.6929552f * r[3] + 1.26929552f * r[1] - q * ny) * ib,
@@ -14694,6 +14820,197 @@ SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, floa
     SHLIGHT_SET3(out_grad[255], (-15.2479507f * r[28] - q * nx) * ib,
                  (15.2479507f * r[0] - q * ny) * ib, -q * nz * ib);
   }
+#endif
+}
+
+SHLIGHT_INLINE void shli_sh_grad_band(int l, const float *y, float nx, float ny, float nz, float ir,
+                                      float ib, float *out_gb) {
+  float rb[31];
+  shli_real f = SHLIGHT_ITOR(2 * l + 1) / SHLIGHT_ITOR(2 * l - 1);
+  shli_real a;
+  float lr = SHLIGHT_ITOF(l) * ir;
+  float ca;
+  float cb;
+  float cc;
+  float ap;
+  float bp;
+  float q;
+  float gx;
+  float gy;
+  int k;
+  int m;
+  int am;
+  for (k = 0; k < 31; ++k) {
+    rb[k] = 0.0f;
+    if (k >= 16 - l && k <= 14 + l) {
+      rb[k] = y[l * l - l + k - 15] * ir;
+    }
+  }
+  for (k = 0; k < 31; ++k) {
+    m = k - 15;
+    am = m < 0 ? -m : m;
+    if (am <= l) {
+      a = -0.5 * SHLIGHT_SQRTR(f * SHLIGHT_ITOR(l + am) * SHLIGHT_ITOR(l + am - 1));
+      ca = SHLIGHT_FLOAT(a);
+      ap = am == 1 ? SHLIGHT_FLOAT(a * 1.4142135623730951) : ca;
+      a = 0.5 * SHLIGHT_SQRTR(f * SHLIGHT_ITOR((l - am) * (l - am - 1)));
+      cb = SHLIGHT_FLOAT(a);
+      bp = am == 0 ? SHLIGHT_FLOAT(a * 1.4142135623730951) : cb;
+      cc = SHLIGHT_FLOAT(SHLIGHT_SQRTR(f * SHLIGHT_ITOR(l - am) * SHLIGHT_ITOR(l + am)));
+      if (m >= 0) {
+        gx = (am >= 1 ? ap * rb[k - 1] : 0.0f) + (am + 1 < l ? bp * rb[k + 1] : 0.0f);
+        gy = (am >= 2 ? -ca * rb[31 - k] : 0.0f) + (am + 1 < l ? bp * rb[29 - k] : 0.0f);
+      } else {
+        gx = (am >= 2 ? ca * rb[k + 1] : 0.0f) + (am + 1 < l ? cb * rb[k - 1] : 0.0f);
+        gy = ap * rb[29 - k] + (am + 1 < l ? -cb * rb[31 - k] : 0.0f);
+      }
+      q = lr * y[l * l + l + m];
+      out_gb[3 * k] = (gx - q * nx) * ib;
+      out_gb[3 * k + 1] = (gy - q * ny) * ib;
+      out_gb[3 * k + 2] = (cc * rb[k] - q * nz) * ib;
+    }
+  }
+}
+
+SHLIGHT_INLINE void shli_sh_grad_bands(int n, const float *y, float nx, float ny, float nz,
+                                       float ir, float ib, float (*out_grad)[3]) {
+  float gb[93];
+  int k;
+  SHLIGHT_SET3(out_grad[0], 0.0f, 0.0f, 0.0f);
+#if SHLIGHT_MAX_BANDS > 1
+  if (n > 1) {
+    shli_sh_grad_band(1, y, nx, ny, nz, ir, ib, gb);
+    for (k = 14; k <= 16; ++k) {
+      SHLIGHT_SET3(out_grad[k - 13], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 2
+  if (n > 2) {
+    shli_sh_grad_band(2, y, nx, ny, nz, ir, ib, gb);
+    for (k = 13; k <= 17; ++k) {
+      SHLIGHT_SET3(out_grad[k - 9], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 3
+  if (n > 3) {
+    shli_sh_grad_band(3, y, nx, ny, nz, ir, ib, gb);
+    for (k = 12; k <= 18; ++k) {
+      SHLIGHT_SET3(out_grad[k - 3], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    shli_sh_grad_band(4, y, nx, ny, nz, ir, ib, gb);
+    for (k = 11; k <= 19; ++k) {
+      SHLIGHT_SET3(out_grad[k + 5], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    shli_sh_grad_band(5, y, nx, ny, nz, ir, ib, gb);
+    for (k = 10; k <= 20; ++k) {
+      SHLIGHT_SET3(out_grad[k + 15], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    shli_sh_grad_band(6, y, nx, ny, nz, ir, ib, gb);
+    for (k = 9; k <= 21; ++k) {
+      SHLIGHT_SET3(out_grad[k + 27], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 7
+  if (n > 7) {
+    shli_sh_grad_band(7, y, nx, ny, nz, ir, ib, gb);
+    for (k = 8; k <= 22; ++k) {
+      SHLIGHT_SET3(out_grad[k + 41], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 8
+  if (n > 8) {
+    shli_sh_grad_band(8, y, nx, ny, nz, ir, ib, gb);
+    for (k = 7; k <= 23; ++k) {
+      SHLIGHT_SET3(out_grad[k + 57], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 9
+  if (n > 9) {
+    shli_sh_grad_band(9, y, nx, ny, nz, ir, ib, gb);
+    for (k = 6; k <= 24; ++k) {
+      SHLIGHT_SET3(out_grad[k + 75], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 10
+  if (n > 10) {
+    shli_sh_grad_band(10, y, nx, ny, nz, ir, ib, gb);
+    for (k = 5; k <= 25; ++k) {
+      SHLIGHT_SET3(out_grad[k + 95], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 11
+  if (n > 11) {
+    shli_sh_grad_band(11, y, nx, ny, nz, ir, ib, gb);
+    for (k = 4; k <= 26; ++k) {
+      SHLIGHT_SET3(out_grad[k + 117], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 12
+  if (n > 12) {
+    shli_sh_grad_band(12, y, nx, ny, nz, ir, ib, gb);
+    for (k = 3; k <= 27; ++k) {
+      SHLIGHT_SET3(out_grad[k + 141], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 13
+  if (n > 13) {
+    shli_sh_grad_band(13, y, nx, ny, nz, ir, ib, gb);
+    for (k = 2; k <= 28; ++k) {
+      SHLIGHT_SET3(out_grad[k + 167], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 14
+  if (n > 14) {
+    shli_sh_grad_band(14, y, nx, ny, nz, ir, ib, gb);
+    for (k = 1; k <= 29; ++k) {
+      SHLIGHT_SET3(out_grad[k + 195], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 15
+  if (n > 15) {
+    shli_sh_grad_band(15, y, nx, ny, nz, ir, ib, gb);
+    for (k = 0; k <= 30; ++k) {
+      SHLIGHT_SET3(out_grad[k + 225], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+}
+
+SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir,
+                                 float ib, float (*out_grad)[3]) {
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
+  if (n > SHLIGHT_UNROLLED_BANDS) {
+    shli_sh_grad_loop(n, y, nx, ny, nz, ir, ib, out_grad);
+    return;
+  }
+#endif
+  shli_sh_grad_bands(n, y, nx, ny, nz, ir, ib, out_grad);
+#else
+  shli_sh_grad_lines(n, y, nx, ny, nz, ir, ib, out_grad);
 #endif
 }
 /* @generated end gradient */

@@ -2,13 +2,23 @@
 # bench/glsl_spirv.sh [GLSL_DIR] - glslang SPIR-V size (glslangValidator -G: OpenGL SPIR-V,
 # plain and -Os) of a fragment shader that calls shl_sh_eval (values) or shl_sh_eval_grad
 # (values + gradient) at n = 4, 9, 16 bands and consumes every output with a constant index.
+#   bench/glsl_spirv.sh [--check F] [GLSL_DIR]
+# --check F: exit 1 when a row with a budget (values + gradient, n = 16: 150,000 bytes, plain)
+# is over F times it (CI: F = 2); ends with "N passed, N failed".
 set -eu
 cd "$(dirname "$0")/.."
+factor=""
+if [ "${1:-}" = "--check" ]; then
+  factor=$2
+  shift 2
+fi
 dir=${1:-shlight_glsl}
+passed=0
+failed=0
 validator=${GLSLANG_VALIDATOR:-glslangValidator}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-printf '%-28s %10s %10s\n' "shader" "bytes" "-Os bytes"
+printf '%-28s %10s %10s %10s\n' "shader" "bytes" "-Os bytes" "budget"
 for kind in values gradient; do
   for n in 4 9 16; do
     {
@@ -31,6 +41,21 @@ for kind in values gradient; do
     "$validator" -G -Os -o "$tmp/b.spv" "$tmp/s.frag" >/dev/null
     label="values"
     [ "$kind" = gradient ] && label="values + gradient"
-    printf '%-28s %10d %10d\n' "$label, n = $n" "$(stat -c %s "$tmp/a.spv")" "$(stat -c %s "$tmp/b.spv")"
+    bytes=$(stat -c %s "$tmp/a.spv")
+    budget=""
+    [ "$kind" = gradient ] && [ "$n" = 16 ] && budget=150000
+    printf '%-28s %10d %10d %10s\n' "$label, n = $n" "$bytes" "$(stat -c %s "$tmp/b.spv")" "$budget"
+    if [ -n "$factor" ] && [ -n "$budget" ]; then
+      if awk -v b="$bytes" -v l="$budget" -v f="$factor" 'BEGIN { exit !(b <= l * f) }'; then
+        passed=$((passed + 1))
+      else
+        echo "FAIL $label, n = $n: $bytes bytes > $factor x $budget"
+        failed=$((failed + 1))
+      fi
+    fi
   done
 done
+if [ -n "$factor" ]; then
+  echo "$passed passed, $failed failed"
+  [ "$failed" -eq 0 ]
+fi

@@ -207,6 +207,34 @@ void shli_sh_poly_6(float x, float y, float z, out float out_y[SHLIGHT_MAX_COEFF
 }
 #endif
 
+void shli_sh_core_col(int m, shli_real t, shli_real k, out float out_xs[16]) {
+  shli_real dd = 0.0;
+  shli_real xa = 0.0;
+  shli_real gp = 1.0;
+  shli_real al;
+  shli_real g;
+  int l;
+  for (l = 0; l < 16; ++l) {
+    out_xs[l] = 0.0f;
+    if (l > m) {
+      al = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (2 * l - 1)) / SHLIGHT_ITOR((l - m) * (l + m)));
+      g = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m)) / SHLIGHT_ITOR((2 * l - 1) * (l - m)));
+      if (l == m + 1) {
+        dd = -al * k * t;
+        xa = g * k + dd;
+      } else {
+        dd = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m - 1) * (l - m - 1)) /
+                           SHLIGHT_ITOR((2 * l - 3) * (l - m) * (l + m))) /
+                 gp * dd -
+             al * (t * xa);
+        xa = g * xa + dd;
+      }
+      gp = g;
+      out_xs[l] = SHLIGHT_FLOAT(xa);
+    }
+  }
+}
+
 void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, float sg,
                   out float out_y[SHLIGHT_MAX_COEFFS]) {
   shli_real pc = x;
@@ -228,6 +256,20 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
   }
 #endif
   out_y[0] = 0.282094792f;
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 1
+  if (n > 1) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(0, t, 0.28209479177387814, xs);
+    for (l = 1; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l] = l % 2 == 1 ? sg * xs[l] : xs[l];
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
     dd = -0.48860251190291987 * t;
@@ -333,6 +375,7 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     out_y[240] = sg * SHLIGHT_FLOAT(xa);
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
     fc = SHLIGHT_FLOAT(pc);
@@ -343,6 +386,21 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 2
+  if (n > 2) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(1, t, -0.48860251190291987, xs);
+    for (l = 2; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 1] = xs[l] * ((l - 1) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 1] = xs[l] * ((l - 1) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 2
   if (n > 2) {
     dd = 1.092548430592079 * t;
@@ -469,6 +527,7 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     out_y[239] = xf * fs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 2
   if (n > 2) {
     qc = x * pc - y * ps;
@@ -482,6 +541,21 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 3
+  if (n > 3) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(2, t, 0.5462742152960395, xs);
+    for (l = 3; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 2] = xs[l] * ((l - 2) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 2] = xs[l] * ((l - 2) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 3
   if (n > 3) {
     dd = -1.445305721320277 * t;
@@ -599,6 +673,7 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     out_y[238] = xf * gs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 3
   if (n > 3) {
     qc = x * pc - y * ps;
@@ -612,6 +687,21 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(3, t, -0.5900435899266435, xs);
+    for (l = 4; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 3] = xs[l] * ((l - 3) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 3] = xs[l] * ((l - 3) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 4
   if (n > 4) {
     dd = 1.7701307697799304 * t;
@@ -720,6 +810,7 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     out_y[237] = xf * fs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 4
   if (n > 4) {
     qc = x * pc - y * ps;
@@ -733,6 +824,21 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(4, t, 0.625835735449176, xs);
+    for (l = 5; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 4] = xs[l] * ((l - 4) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 4] = xs[l] * ((l - 4) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 5
   if (n > 5) {
     dd = -2.075662314881041 * t;
@@ -832,6 +938,7 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     out_y[236] = xf * gs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 5
   if (n > 5) {
     qc = x * pc - y * ps;
@@ -845,6 +952,21 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(5, t, -0.65638205684017, xs);
+    for (l = 6; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 5] = xs[l] * ((l - 5) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 5] = xs[l] * ((l - 5) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 6
   if (n > 6) {
     dd = 2.3666191622317516 * t;
@@ -934,6 +1056,7 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     out_y[245] = xf * fc;
     out_y[235] = xf * fs;
   }
+#endif
 #endif
 #if SHLIGHT_MAX_BANDS > 6
   if (n > 6) {

@@ -420,6 +420,34 @@ void shli_sh_poly_6(float x, float y, float z, out float out_y[SHLIGHT_MAX_COEFF
 }
 #endif
 
+void shli_sh_core_col(int m, shli_real t, shli_real k, out float out_xs[16]) {
+  shli_real dd = 0.0;
+  shli_real xa = 0.0;
+  shli_real gp = 1.0;
+  shli_real al;
+  shli_real g;
+  int l;
+  for (l = 0; l < 16; ++l) {
+    out_xs[l] = 0.0f;
+    if (l > m) {
+      al = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (2 * l - 1)) / SHLIGHT_ITOR((l - m) * (l + m)));
+      g = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m)) / SHLIGHT_ITOR((2 * l - 1) * (l - m)));
+      if (l == m + 1) {
+        dd = -al * k * t;
+        xa = g * k + dd;
+      } else {
+        dd = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m - 1) * (l - m - 1)) /
+                           SHLIGHT_ITOR((2 * l - 3) * (l - m) * (l + m))) /
+                 gp * dd -
+             al * (t * xa);
+        xa = g * xa + dd;
+      }
+      gp = g;
+      out_xs[l] = SHLIGHT_FLOAT(xa);
+    }
+  }
+}
+
 void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, float sg,
                   out float out_y[SHLIGHT_MAX_COEFFS]) {
   shli_real pc = x;
@@ -441,6 +469,20 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
   }
 #endif
   out_y[0] = 0.282094792f;
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 1
+  if (n > 1) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(0, t, 0.28209479177387814, xs);
+    for (l = 1; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l] = l % 2 == 1 ? sg * xs[l] : xs[l];
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
     dd = -0.48860251190291987 * t;
@@ -546,6 +588,7 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     out_y[240] = sg * SHLIGHT_FLOAT(xa);
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 1
   if (n > 1) {
     fc = SHLIGHT_FLOAT(pc);
@@ -556,6 +599,21 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 2
+  if (n > 2) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(1, t, -0.48860251190291987, xs);
+    for (l = 2; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 1] = xs[l] * ((l - 1) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 1] = xs[l] * ((l - 1) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 2
   if (n > 2) {
     dd = 1.092548430592079 * t;
@@ -682,6 +740,7 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     out_y[239] = xf * fs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 2
   if (n > 2) {
     qc = x * pc - y * ps;
@@ -695,6 +754,21 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 3
+  if (n > 3) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(2, t, 0.5462742152960395, xs);
+    for (l = 3; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 2] = xs[l] * ((l - 2) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 2] = xs[l] * ((l - 2) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 3
   if (n > 3) {
     dd = -1.445305721320277 * t;
@@ -812,6 +886,7 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     out_y[238] = xf * gs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 3
   if (n > 3) {
     qc = x * pc - y * ps;
@@ -825,6 +900,21 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(3, t, -0.5900435899266435, xs);
+    for (l = 4; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 3] = xs[l] * ((l - 3) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 3] = xs[l] * ((l - 3) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 4
   if (n > 4) {
     dd = 1.7701307697799304 * t;
@@ -933,6 +1023,7 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     out_y[237] = xf * fs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 4
   if (n > 4) {
     qc = x * pc - y * ps;
@@ -946,6 +1037,21 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(4, t, 0.625835735449176, xs);
+    for (l = 5; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 4] = xs[l] * ((l - 4) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 4] = xs[l] * ((l - 4) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 5
   if (n > 5) {
     dd = -2.075662314881041 * t;
@@ -1045,6 +1151,7 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     out_y[236] = xf * gs;
   }
 #endif
+#endif
 #if SHLIGHT_MAX_BANDS > 5
   if (n > 5) {
     qc = x * pc - y * ps;
@@ -1058,6 +1165,21 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     gs = sg * fs;
   }
 #endif
+#if SHLIGHT_BY_BANDS
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    float xs[16];
+    int l;
+    shli_sh_core_col(5, t, -0.65638205684017, xs);
+    for (l = 6; l < SHLIGHT_MAX_BANDS; ++l) {
+      if (n > l) {
+        out_y[l * l + l + 5] = xs[l] * ((l - 5) % 2 == 1 ? gc : fc);
+        out_y[l * l + l - 5] = xs[l] * ((l - 5) % 2 == 1 ? gs : fs);
+      }
+    }
+  }
+#endif
+#else
 #if SHLIGHT_MAX_BANDS > 6
   if (n > 6) {
     dd = 2.3666191622317516 * t;
@@ -1147,6 +1269,7 @@ void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t, flo
     out_y[245] = xf * fc;
     out_y[235] = xf * fs;
   }
+#endif
 #endif
 #if SHLIGHT_MAX_BANDS > 6
   if (n > 6) {
@@ -1825,1250 +1948,194 @@ void shl_sh_eval(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS]) {
 #ifndef SHL_GRADIENT_GLSL
 #define SHL_GRADIENT_GLSL
 
+void shli_sh_grad_band(int l, float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                       float ib, out float out_gb[93]) {
+  float rb[31];
+  shli_real f = SHLIGHT_ITOR(2 * l + 1) / SHLIGHT_ITOR(2 * l - 1);
+  shli_real a;
+  float lr = SHLIGHT_ITOF(l) * ir;
+  float ca;
+  float cb;
+  float cc;
+  float ap;
+  float bp;
+  float q;
+  float gx;
+  float gy;
+  int k;
+  int m;
+  int am;
+  for (k = 0; k < 31; ++k) {
+    rb[k] = 0.0f;
+    if (k >= 16 - l && k <= 14 + l) {
+      rb[k] = y[l * l - l + k - 15] * ir;
+    }
+  }
+  for (k = 0; k < 31; ++k) {
+    m = k - 15;
+    am = m < 0 ? -m : m;
+    if (am <= l) {
+      a = -0.5 * SHLIGHT_SQRTR(f * SHLIGHT_ITOR(l + am) * SHLIGHT_ITOR(l + am - 1));
+      ca = SHLIGHT_FLOAT(a);
+      ap = am == 1 ? SHLIGHT_FLOAT(a * 1.4142135623730951) : ca;
+      a = 0.5 * SHLIGHT_SQRTR(f * SHLIGHT_ITOR((l - am) * (l - am - 1)));
+      cb = SHLIGHT_FLOAT(a);
+      bp = am == 0 ? SHLIGHT_FLOAT(a * 1.4142135623730951) : cb;
+      cc = SHLIGHT_FLOAT(SHLIGHT_SQRTR(f * SHLIGHT_ITOR(l - am) * SHLIGHT_ITOR(l + am)));
+      if (m >= 0) {
+        gx = (am >= 1 ? ap * rb[k - 1] : 0.0f) + (am + 1 < l ? bp * rb[k + 1] : 0.0f);
+        gy = (am >= 2 ? -ca * rb[31 - k] : 0.0f) + (am + 1 < l ? bp * rb[29 - k] : 0.0f);
+      } else {
+        gx = (am >= 2 ? ca * rb[k + 1] : 0.0f) + (am + 1 < l ? cb * rb[k - 1] : 0.0f);
+        gy = ap * rb[29 - k] + (am + 1 < l ? -cb * rb[31 - k] : 0.0f);
+      }
+      q = lr * y[l * l + l + m];
+      out_gb[3 * k] = (gx - q * nx) * ib;
+      out_gb[3 * k + 1] = (gy - q * ny) * ib;
+      out_gb[3 * k + 2] = (cc * rb[k] - q * nz) * ib;
+    }
+  }
+}
+
+void shli_sh_grad_bands(int n, float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
+                        float ib, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+  float gb[93];
+  int k;
+  SHLIGHT_SET3(out_grad[0], 0.0f, 0.0f, 0.0f);
+#if SHLIGHT_MAX_BANDS > 1
+  if (n > 1) {
+    shli_sh_grad_band(1, y, nx, ny, nz, ir, ib, gb);
+    for (k = 14; k <= 16; ++k) {
+      SHLIGHT_SET3(out_grad[k - 13], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 2
+  if (n > 2) {
+    shli_sh_grad_band(2, y, nx, ny, nz, ir, ib, gb);
+    for (k = 13; k <= 17; ++k) {
+      SHLIGHT_SET3(out_grad[k - 9], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 3
+  if (n > 3) {
+    shli_sh_grad_band(3, y, nx, ny, nz, ir, ib, gb);
+    for (k = 12; k <= 18; ++k) {
+      SHLIGHT_SET3(out_grad[k - 3], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 4
+  if (n > 4) {
+    shli_sh_grad_band(4, y, nx, ny, nz, ir, ib, gb);
+    for (k = 11; k <= 19; ++k) {
+      SHLIGHT_SET3(out_grad[k + 5], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 5
+  if (n > 5) {
+    shli_sh_grad_band(5, y, nx, ny, nz, ir, ib, gb);
+    for (k = 10; k <= 20; ++k) {
+      SHLIGHT_SET3(out_grad[k + 15], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 6
+  if (n > 6) {
+    shli_sh_grad_band(6, y, nx, ny, nz, ir, ib, gb);
+    for (k = 9; k <= 21; ++k) {
+      SHLIGHT_SET3(out_grad[k + 27], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 7
+  if (n > 7) {
+    shli_sh_grad_band(7, y, nx, ny, nz, ir, ib, gb);
+    for (k = 8; k <= 22; ++k) {
+      SHLIGHT_SET3(out_grad[k + 41], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 8
+  if (n > 8) {
+    shli_sh_grad_band(8, y, nx, ny, nz, ir, ib, gb);
+    for (k = 7; k <= 23; ++k) {
+      SHLIGHT_SET3(out_grad[k + 57], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 9
+  if (n > 9) {
+    shli_sh_grad_band(9, y, nx, ny, nz, ir, ib, gb);
+    for (k = 6; k <= 24; ++k) {
+      SHLIGHT_SET3(out_grad[k + 75], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 10
+  if (n > 10) {
+    shli_sh_grad_band(10, y, nx, ny, nz, ir, ib, gb);
+    for (k = 5; k <= 25; ++k) {
+      SHLIGHT_SET3(out_grad[k + 95], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 11
+  if (n > 11) {
+    shli_sh_grad_band(11, y, nx, ny, nz, ir, ib, gb);
+    for (k = 4; k <= 26; ++k) {
+      SHLIGHT_SET3(out_grad[k + 117], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 12
+  if (n > 12) {
+    shli_sh_grad_band(12, y, nx, ny, nz, ir, ib, gb);
+    for (k = 3; k <= 27; ++k) {
+      SHLIGHT_SET3(out_grad[k + 141], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 13
+  if (n > 13) {
+    shli_sh_grad_band(13, y, nx, ny, nz, ir, ib, gb);
+    for (k = 2; k <= 28; ++k) {
+      SHLIGHT_SET3(out_grad[k + 167], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 14
+  if (n > 14) {
+    shli_sh_grad_band(14, y, nx, ny, nz, ir, ib, gb);
+    for (k = 1; k <= 29; ++k) {
+      SHLIGHT_SET3(out_grad[k + 195], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+#if SHLIGHT_MAX_BANDS > 15
+  if (n > 15) {
+    shli_sh_grad_band(15, y, nx, ny, nz, ir, ib, gb);
+    for (k = 0; k <= 30; ++k) {
+      SHLIGHT_SET3(out_grad[k + 225], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);
+    }
+  }
+#endif
+}
+
 void shli_sh_grad(int n, float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float nz, float ir,
                   float ib, out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  float r[29];
-  float lr;
-  float q;
+#if SHLIGHT_BY_BANDS
 #if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
   if (n > SHLIGHT_UNROLLED_BANDS) {
     shli_sh_grad_loop(n, y, nx, ny, nz, ir, ib, out_grad);
     return;
   }
 #endif
-  lr = 0.0f;
-  q = 0.0f;
-  SHLIGHT_SET3(out_grad[0], 0.0f, 0.0f, 0.0f);
-#if SHLIGHT_MAX_BANDS > 1
-  if (n > 1) {
-    lr = 1.0f * ir;
-    r[0] = y[0] * ir;
-    q = lr * y[1];
-    SHLIGHT_SET3(out_grad[1], -q * nx * ib, (-1.73205081f * r[0] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[2];
-    SHLIGHT_SET3(out_grad[2], -q * nx * ib, -q * ny * ib, (1.73205081f * r[0] - q * nz) * ib);
-    q = lr * y[3];
-    SHLIGHT_SET3(out_grad[3], (-1.73205081f * r[0] - q * nx) * ib, -q * ny * ib, -q * nz * ib);
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 2
-  if (n > 2) {
-    lr = 2.0f * ir;
-    r[0] = y[1] * ir;
-    r[1] = y[2] * ir;
-    r[2] = y[3] * ir;
-    q = lr * y[4];
-    SHLIGHT_SET3(out_grad[4], (-2.23606798f * r[0] - q * nx) * ib,
-                 (-2.23606798f * r[2] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[5];
-    SHLIGHT_SET3(out_grad[5], -q * nx * ib, (-2.23606798f * r[1] - q * ny) * ib,
-                 (2.23606798f * r[0] - q * nz) * ib);
-    q = lr * y[6];
-    SHLIGHT_SET3(out_grad[6], (1.29099445f * r[2] - q * nx) * ib,
-                 (1.29099445f * r[0] - q * ny) * ib, (2.5819889f * r[1] - q * nz) * ib);
-    q = lr * y[7];
-    SHLIGHT_SET3(out_grad[7], (-2.23606798f * r[1] - q * nx) * ib, -q * ny * ib,
-                 (2.23606798f * r[2] - q * nz) * ib);
-    q = lr * y[8];
-    SHLIGHT_SET3(out_grad[8], (-2.23606798f * r[2] - q * nx) * ib,
-                 (2.23606798f * r[0] - q * ny) * ib, -q * nz * ib);
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 3
-  if (n > 3) {
-    lr = 3.0f * ir;
-    r[0] = y[4] * ir;
-    r[1] = y[5] * ir;
-    r[2] = y[6] * ir;
-    r[3] = y[7] * ir;
-    r[4] = y[8] * ir;
-    q = lr * y[9];
-    SHLIGHT_SET3(out_grad[9], (-3.24037035f * r[0] - q * nx) * ib,
-                 (-3.24037035f * r[4] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[10];
-    SHLIGHT_SET3(out_grad[10], (-2.64575131f * r[1] - q * nx) * ib,
-                 (-2.64575131f * r[3] - q * ny) * ib, (2.64575131f * r[0] - q * nz) * ib);
-    q = lr * y[11];
-    SHLIGHT_SET3(out_grad[11], (0.836660027f * r[0] - q * nx) * ib,
-                 (-2.89827535f * r[2] + -0.836660027f * r[4] - q * ny) * ib,
-                 (3.34664011f * r[1] - q * nz) * ib);
-    q = lr * y[12];
-    SHLIGHT_SET3(out_grad[12], (2.04939015f * r[3] - q * nx) * ib,
-                 (2.04939015f * r[1] - q * ny) * ib, (3.54964787f * r[2] - q * nz) * ib);
-    q = lr * y[13];
-    SHLIGHT_SET3(out_grad[13], (-2.89827535f * r[2] + 0.836660027f * r[4] - q * nx) * ib,
-                 (0.836660027f * r[0] - q * ny) * ib, (3.34664011f * r[3] - q * nz) * ib);
-    q = lr * y[14];
-    SHLIGHT_SET3(out_grad[14], (-2.64575131f * r[3] - q * nx) * ib,
-                 (2.64575131f * r[1] - q * ny) * ib, (2.64575131f * r[4] - q * nz) * ib);
-    q = lr * y[15];
-    SHLIGHT_SET3(out_grad[15], (-3.24037035f * r[4] - q * nx) * ib,
-                 (3.24037035f * r[0] - q * ny) * ib, -q * nz * ib);
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 4
-  if (n > 4) {
-    lr = 4.0f * ir;
-    r[0] = y[9] * ir;
-    r[1] = y[10] * ir;
-    r[2] = y[11] * ir;
-    r[3] = y[12] * ir;
-    r[4] = y[13] * ir;
-    r[5] = y[14] * ir;
-    r[6] = y[15] * ir;
-    q = lr * y[16];
-    SHLIGHT_SET3(out_grad[16], (-4.24264069f * r[0] - q * nx) * ib,
-                 (-4.24264069f * r[6] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[17];
-    SHLIGHT_SET3(out_grad[17], (-3.67423461f * r[1] - q * nx) * ib,
-                 (-3.67423461f * r[5] - q * ny) * ib, (3.0f * r[0] - q * nz) * ib);
-    q = lr * y[18];
-    SHLIGHT_SET3(out_grad[18], (-3.10529502f * r[2] + 0.801783726f * r[0] - q * nx) * ib,
-                 (-3.10529502f * r[4] + -0.801783726f * r[6] - q * ny) * ib,
-                 (3.92792202f * r[1] - q * nz) * ib);
-    q = lr * y[19];
-    SHLIGHT_SET3(out_grad[19], (1.38873015f * r[1] - q * nx) * ib,
-                 (-3.58568583f * r[3] + -1.38873015f * r[5] - q * ny) * ib,
-                 (4.39155033f * r[2] - q * nz) * ib);
-    q = lr * y[20];
-    SHLIGHT_SET3(out_grad[20], (2.7774603f * r[4] - q * nx) * ib, (2.7774603f * r[2] - q * ny) * ib,
-                 (4.53557368f * r[3] - q * nz) * ib);
-    q = lr * y[21];
-    SHLIGHT_SET3(out_grad[21], (-3.58568583f * r[3] + 1.38873015f * r[5] - q * nx) * ib,
-                 (1.38873015f * r[1] - q * ny) * ib, (4.39155033f * r[4] - q * nz) * ib);
-    q = lr * y[22];
-    SHLIGHT_SET3(out_grad[22], (-3.10529502f * r[4] + 0.801783726f * r[6] - q * nx) * ib,
-                 (3.10529502f * r[2] + 0.801783726f * r[0] - q * ny) * ib,
-                 (3.92792202f * r[5] - q * nz) * ib);
-    q = lr * y[23];
-    SHLIGHT_SET3(out_grad[23], (-3.67423461f * r[5] - q * nx) * ib,
-                 (3.67423461f * r[1] - q * ny) * ib, (3.0f * r[6] - q * nz) * ib);
-    q = lr * y[24];
-    SHLIGHT_SET3(out_grad[24], (-4.24264069f * r[6] - q * nx) * ib,
-                 (4.24264069f * r[0] - q * ny) * ib, -q * nz * ib);
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 5
-  if (n > 5) {
-    lr = 5.0f * ir;
-    r[0] = y[16] * ir;
-    r[1] = y[17] * ir;
-    r[2] = y[18] * ir;
-    r[3] = y[19] * ir;
-    r[4] = y[20] * ir;
-    r[5] = y[21] * ir;
-    r[6] = y[22] * ir;
-    r[7] = y[23] * ir;
-    r[8] = y[24] * ir;
-    q = lr * y[25];
-    SHLIGHT_SET3(out_grad[25], (-5.24404424f * r[0] - q * nx) * ib,
-                 (-5.24404424f * r[8] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[26];
-    SHLIGHT_SET3(out_grad[26], (-4.69041576f * r[1] - q * nx) * ib,
-                 (-4.69041576f * r[7] - q * ny) * ib, (3.31662479f * r[0] - q * nz) * ib);
-    q = lr * y[27];
-    SHLIGHT_SET3(out_grad[27], (-4.13655788f * r[2] + 0.78173596f * r[0] - q * nx) * ib,
-                 (-4.13655788f * r[6] + -0.78173596f * r[8] - q * ny) * ib,
-                 (4.42216639f * r[1] - q * nz) * ib);
-    q = lr * y[28];
-    SHLIGHT_SET3(out_grad[28], (-3.58236421f * r[3] + 1.3540064f * r[1] - q * nx) * ib,
-                 (-3.58236421f * r[5] + -1.3540064f * r[7] - q * ny) * ib,
-                 (5.06622805f * r[2] - q * nz) * ib);
-    q = lr * y[29];
-    SHLIGHT_SET3(out_grad[29], (1.91485422f * r[2] - q * nx) * ib,
-                 (-4.28174419f * r[4] + -1.91485422f * r[6] - q * ny) * ib,
-                 (5.4160256f * r[3] - q * nz) * ib);
-    q = lr * y[30];
-    SHLIGHT_SET3(out_grad[30], (3.49602949f * r[5] - q * nx) * ib,
-                 (3.49602949f * r[3] - q * ny) * ib, (5.52770798f * r[4] - q * nz) * ib);
-    q = lr * y[31];
-    SHLIGHT_SET3(out_grad[31], (-4.28174419f * r[4] + 1.91485422f * r[6] - q * nx) * ib,
-                 (1.91485422f * r[2] - q * ny) * ib, (5.4160256f * r[5] - q * nz) * ib);
-    q = lr * y[32];
-    SHLIGHT_SET3(out_grad[32], (-3.58236421f * r[5] + 1.3540064f * r[7] - q * nx) * ib,
-                 (3.58236421f * r[3] + 1.3540064f * r[1] - q * ny) * ib,
-                 (5.06622805f * r[6] - q * nz) * ib);
-    q = lr * y[33];
-    SHLIGHT_SET3(out_grad[33], (-4.13655788f * r[6] + 0.78173596f * r[8] - q * nx) * ib,
-                 (4.13655788f * r[2] + 0.78173596f * r[0] - q * ny) * ib,
-                 (4.42216639f * r[7] - q * nz) * ib);
-    q = lr * y[34];
-    SHLIGHT_SET3(out_grad[34], (-4.69041576f * r[7] - q * nx) * ib,
-                 (4.69041576f * r[1] - q * ny) * ib, (3.31662479f * r[8] - q * nz) * ib);
-    q = lr * y[35];
-    SHLIGHT_SET3(out_grad[35], (-5.24404424f * r[8] - q * nx) * ib,
-                 (5.24404424f * r[0] - q * ny) * ib, -q * nz * ib);
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 6
-  if (n > 6) {
-    lr = 6.0f * ir;
-    r[0] = y[25] * ir;
-    r[1] = y[26] * ir;
-    r[2] = y[27] * ir;
-    r[3] = y[28] * ir;
-    r[4] = y[29] * ir;
-    r[5] = y[30] * ir;
-    r[6] = y[31] * ir;
-    r[7] = y[32] * ir;
-    r[8] = y[33] * ir;
-    r[9] = y[34] * ir;
-    r[10] = y[35] * ir;
-    q = lr * y[36];
-    SHLIGHT_SET3(out_grad[36], (-6.244998f * r[0] - q * nx) * ib,
-                 (-6.244998f * r[10] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[37];
-    SHLIGHT_SET3(out_grad[37], (-5.70087713f * r[1] - q * nx) * ib,
-                 (-5.70087713f * r[9] - q * ny) * ib, (3.60555128f * r[0] - q * nz) * ib);
-    q = lr * y[38];
-    SHLIGHT_SET3(out_grad[38], (-5.15663738f * r[2] + 0.768706115f * r[0] - q * nx) * ib,
-                 (-5.15663738f * r[8] + -0.768706115f * r[10] - q * ny) * ib,
-                 (4.86172435f * r[1] - q * nz) * ib);
-    q = lr * y[39];
-    SHLIGHT_SET3(out_grad[39], (-4.61223669f * r[3] + 1.33143805f * r[1] - q * nx) * ib,
-                 (-4.61223669f * r[7] + -1.33143805f * r[9] - q * ny) * ib,
-                 (5.64881323f * r[2] - q * nz) * ib);
-    q = lr * y[40];
-    SHLIGHT_SET3(out_grad[40], (-4.06761042f * r[4] + 1.88293774f * r[2] - q * nx) * ib,
-                 (-4.06761042f * r[6] + -1.88293774f * r[8] - q * ny) * ib,
-                 (6.14964892f * r[3] - q * nz) * ib);
-    q = lr * y[41];
-    SHLIGHT_SET3(out_grad[41], (2.43086217f * r[3] - q * nx) * ib,
-                 (-4.981785f * r[5] + -2.43086217f * r[7] - q * ny) * ib,
-                 (6.43145678f * r[4] - q * nz) * ib);
-    q = lr * y[42];
-    SHLIGHT_SET3(out_grad[42], (4.21037679f * r[6] - q * nx) * ib,
-                 (4.21037679f * r[4] - q * ny) * ib, (6.52268768f * r[5] - q * nz) * ib);
-    q = lr * y[43];
-    SHLIGHT_SET3(out_grad[43], (-4.981785f * r[5] + 2.43086217f * r[7] - q * nx) * ib,
-                 (2.43086217f * r[3] - q * ny) * ib, (6.43145678f * r[6] - q * nz) * ib);
-    q = lr * y[44];
-    SHLIGHT_SET3(out_grad[44], (-4.06761042f * r[6] + 1.88293774f * r[8] - q * nx) * ib,
-                 (4.06761042f * r[4] + 1.88293774f * r[2] - q * ny) * ib,
-                 (6.14964892f * r[7] - q * nz) * ib);
-    q = lr * y[45];
-    SHLIGHT_SET3(out_grad[45], (-4.61223669f * r[7] + 1.33143805f * r[9] - q * nx) * ib,
-                 (4.61223669f * r[3] + 1.33143805f * r[1] - q * ny) * ib,
-                 (5.64881323f * r[8] - q * nz) * ib);
-    q = lr * y[46];
-    SHLIGHT_SET3(out_grad[46], (-5.15663738f * r[8] + 0.768706115f * r[10] - q * nx) * ib,
-                 (5.15663738f * r[2] + 0.768706115f * r[0] - q * ny) * ib,
-                 (4.86172435f * r[9] - q * nz) * ib);
-    q = lr * y[47];
-    SHLIGHT_SET3(out_grad[47], (-5.70087713f * r[9] - q * nx) * ib,
-                 (5.70087713f * r[1] - q * ny) * ib, (3.60555128f * r[10] - q * nz) * ib);
-    q = lr * y[48];
-    SHLIGHT_SET3(out_grad[48], (-6.244998f * r[10] - q * nx) * ib, (6.244998f * r[0] - q * ny) * ib,
-                 -q * nz * ib);
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 7
-  if (n > 7) {
-    lr = 7.0f * ir;
-    r[0] = y[36] * ir;
-    r[1] = y[37] * ir;
-    r[2] = y[38] * ir;
-    r[3] = y[39] * ir;
-    r[4] = y[40] * ir;
-    r[5] = y[41] * ir;
-    r[6] = y[42] * ir;
-    r[7] = y[43] * ir;
-    r[8] = y[44] * ir;
-    r[9] = y[45] * ir;
-    r[10] = y[46] * ir;
-    r[11] = y[47] * ir;
-    r[12] = y[48] * ir;
-    q = lr * y[49];
-    SHLIGHT_SET3(out_grad[49], (-7.24568837f * r[0] - q * nx) * ib,
-                 (-7.24568837f * r[12] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[50];
-    SHLIGHT_SET3(out_grad[50], (-6.70820393f * r[1] - q * nx) * ib,
-                 (-6.70820393f * r[11] - q * ny) * ib, (3.87298335f * r[0] - q * nz) * ib);
-    q = lr * y[51];
-    SHLIGHT_SET3(out_grad[51], (-6.17065013f * r[2] + 0.759554525f * r[0] - q * nx) * ib,
-                 (-6.17065013f * r[10] + -0.759554525f * r[12] - q * ny) * ib,
-                 (5.26234812f * r[1] - q * nz) * ib);
-    q = lr * y[52];
-    SHLIGHT_SET3(out_grad[52], (-5.63300712f * r[3] + 1.31558703f * r[1] - q * nx) * ib,
-                 (-5.63300712f * r[9] + -1.31558703f * r[11] - q * ny) * ib,
-                 (6.17065013f * r[2] - q * nz) * ib);
-    q = lr * y[53];
-    SHLIGHT_SET3(out_grad[53], (-5.09524665f * r[4] + 1.86052102f * r[2] - q * nx) * ib,
-                 (-5.09524665f * r[8] + -1.86052102f * r[10] - q * ny) * ib,
-                 (6.7936622f * r[3] - q * nz) * ib);
-    q = lr * y[54];
-    SHLIGHT_SET3(out_grad[54], (-4.55732715f * r[5] + 2.40192231f * r[3] - q * nx) * ib,
-                 (-4.55732715f * r[7] + -2.40192231f * r[9] - q * ny) * ib,
-                 (7.20576692f * r[4] - q * nz) * ib);
-    q = lr * y[55];
-    SHLIGHT_SET3(out_grad[55], (2.94174203f * r[4] - q * nx) * ib,
-                 (-5.6839856f * r[6] + -2.94174203f * r[8] - q * ny) * ib,
-                 (7.44208408f * r[5] - q * nz) * ib);
-    q = lr * y[56];
-    SHLIGHT_SET3(out_grad[56], (4.92247592f * r[7] - q * nx) * ib,
-                 (4.92247592f * r[5] - q * ny) * ib, (7.51920618f * r[6] - q * nz) * ib);
-    q = lr * y[57];
-    SHLIGHT_SET3(out_grad[57], (-5.6839856f * r[6] + 2.94174203f * r[8] - q * nx) * ib,
-                 (2.94174203f * r[4] - q * ny) * ib, (7.44208408f * r[7] - q * nz) * ib);
-    q = lr * y[58];
-    SHLIGHT_SET3(out_grad[58], (-4.55732715f * r[7] + 2.40192231f * r[9] - q * nx) * ib,
-                 (4.55732715f * r[5] + 2.40192231f * r[3] - q * ny) * ib,
-                 (7.20576692f * r[8] - q * nz) * ib);
-    q = lr * y[59];
-    SHLIGHT_SET3(out_grad[59], (-5.09524665f * r[8] + 1.86052102f * r[10] - q * nx) * ib,
-                 (5.09524665f * r[4] + 1.86052102f * r[2] - q * ny) * ib,
-                 (6.7936622f * r[9] - q * nz) * ib);
-    q = lr * y[60];
-    SHLIGHT_SET3(out_grad[60], (-5.63300712f * r[9] + 1.31558703f * r[11] - q * nx) * ib,
-                 (5.63300712f * r[3] + 1.31558703f * r[1] - q * ny) * ib,
-                 (6.17065013f * r[10] - q * nz) * ib);
-    q = lr * y[61];
-    SHLIGHT_SET3(out_grad[61], (-6.17065013f * r[10] + 0.759554525f * r[12] - q * nx) * ib,
-                 (6.17065013f * r[2] + 0.759554525f * r[0] - q * ny) * ib,
-                 (5.26234812f * r[11] - q * nz) * ib);
-    q = lr * y[62];
-    SHLIGHT_SET3(out_grad[62], (-6.70820393f * r[11] - q * nx) * ib,
-                 (6.70820393f * r[1] - q * ny) * ib, (3.87298335f * r[12] - q * nz) * ib);
-    q = lr * y[63];
-    SHLIGHT_SET3(out_grad[63], (-7.24568837f * r[12] - q * nx) * ib,
-                 (7.24568837f * r[0] - q * ny) * ib, -q * nz * ib);
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 8
-  if (n > 8) {
-    lr = 8.0f * ir;
-    r[0] = y[49] * ir;
-    r[1] = y[50] * ir;
-    r[2] = y[51] * ir;
-    r[3] = y[52] * ir;
-    r[4] = y[53] * ir;
-    r[5] = y[54] * ir;
-    r[6] = y[55] * ir;
-    r[7] = y[56] * ir;
-    r[8] = y[57] * ir;
-    r[9] = y[58] * ir;
-    r[10] = y[59] * ir;
-    r[11] = y[60] * ir;
-    r[12] = y[61] * ir;
-    r[13] = y[62] * ir;
-    r[14] = y[63] * ir;
-    q = lr * y[64];
-    SHLIGHT_SET3(out_grad[64], (-8.24621125f * r[0] - q * nx) * ib,
-                 (-8.24621125f * r[14] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[65];
-    SHLIGHT_SET3(out_grad[65], (-7.71362431f * r[1] - q * nx) * ib,
-                 (-7.71362431f * r[13] - q * ny) * ib, (4.12310563f * r[0] - q * nz) * ib);
-    q = lr * y[66];
-    SHLIGHT_SET3(out_grad[66], (-7.18099343f * r[2] + 0.752772653f * r[0] - q * nx) * ib,
-                 (-7.18099343f * r[12] + -0.752772653f * r[14] - q * ny) * ib,
-                 (5.63323471f * r[1] - q * nz) * ib);
-    q = lr * y[67];
-    SHLIGHT_SET3(out_grad[67], (-6.64830806f * r[3] + 1.30384048f * r[1] - q * nx) * ib,
-                 (-6.64830806f * r[11] + -1.30384048f * r[13] - q * ny) * ib,
-                 (6.64830806f * r[2] - q * nz) * ib);
-    q = lr * y[68];
-    SHLIGHT_SET3(out_grad[68], (-6.11555394f * r[4] + 1.84390889f * r[2] - q * nx) * ib,
-                 (-6.11555394f * r[10] + -1.84390889f * r[12] - q * ny) * ib,
-                 (7.37563557f * r[3] - q * nz) * ib);
-    q = lr * y[69];
-    SHLIGHT_SET3(out_grad[69], (-5.58271141f * r[5] + 2.38047614f * r[3] - q * nx) * ib,
-                 (-5.58271141f * r[9] + -2.38047614f * r[11] - q * ny) * ib,
-                 (7.89514619f * r[4] - q * nz) * ib);
-    q = lr * y[70];
-    SHLIGHT_SET3(out_grad[70], (-5.04975247f * r[6] + 2.91547595f * r[4] - q * nx) * ib,
-                 (-5.04975247f * r[8] + -2.91547595f * r[10] - q * ny) * ib,
-                 (8.24621125f * r[5] - q * nz) * ib);
-    q = lr * y[71];
-    SHLIGHT_SET3(out_grad[71], (3.44963766f * r[5] - q * nx) * ib,
-                 (-6.38748777f * r[7] + -3.44963766f * r[9] - q * ny) * ib,
-                 (8.44985207f * r[6] - q * nz) * ib);
-    q = lr * y[72];
-    SHLIGHT_SET3(out_grad[72], (5.63323471f * r[8] - q * nx) * ib,
-                 (5.63323471f * r[6] - q * ny) * ib, (8.51665036f * r[7] - q * nz) * ib);
-    q = lr * y[73];
-    SHLIGHT_SET3(out_grad[73], (-6.38748777f * r[7] + 3.44963766f * r[9] - q * nx) * ib,
-                 (3.44963766f * r[5] - q * ny) * ib, (8.44985207f * r[8] - q * nz) * ib);
-    q = lr * y[74];
-    SHLIGHT_SET3(out_grad[74], (-5.04975247f * r[8] + 2.91547595f * r[10] - q * nx) * ib,
-                 (5.04975247f * r[6] + 2.91547595f * r[4] - q * ny) * ib,
-                 (8.24621125f * r[9] - q * nz) * ib);
-    q = lr * y[75];
-    SHLIGHT_SET3(out_grad[75], (-5.58271141f * r[9] + 2.38047614f * r[11] - q * nx) * ib,
-                 (5.58271141f * r[5] + 2.38047614f * r[3] - q * ny) * ib,
-                 (7.89514619f * r[10] - q * nz) * ib);
-    q = lr * y[76];
-    SHLIGHT_SET3(out_grad[76], (-6.11555394f * r[10] + 1.84390889f * r[12] - q * nx) * ib,
-                 (6.11555394f * r[4] + 1.84390889f * r[2] - q * ny) * ib,
-                 (7.37563557f * r[11] - q * nz) * ib);
-    q = lr * y[77];
-    SHLIGHT_SET3(out_grad[77], (-6.64830806f * r[11] + 1.30384048f * r[13] - q * nx) * ib,
-                 (6.64830806f * r[3] + 1.30384048f * r[1] - q * ny) * ib,
-                 (6.64830806f * r[12] - q * nz) * ib);
-    q = lr * y[78];
-    SHLIGHT_SET3(out_grad[78], (-7.18099343f * r[12] + 0.752772653f * r[14] - q * nx) * ib,
-                 (7.18099343f * r[2] + 0.752772653f * r[0] - q * ny) * ib,
-                 (5.63323471f * r[13] - q * nz) * ib);
-    q = lr * y[79];
-    SHLIGHT_SET3(out_grad[79], (-7.71362431f * r[13] - q * nx) * ib,
-                 (7.71362431f * r[1] - q * ny) * ib, (4.12310563f * r[14] - q * nz) * ib);
-    q = lr * y[80];
-    SHLIGHT_SET3(out_grad[80], (-8.24621125f * r[14] - q * nx) * ib,
-                 (8.24621125f * r[0] - q * ny) * ib, -q * nz * ib);
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 9
-  if (n > 9) {
-    lr = 9.0f * ir;
-    r[0] = y[64] * ir;
-    r[1] = y[65] * ir;
-    r[2] = y[66] * ir;
-    r[3] = y[67] * ir;
-    r[4] = y[68] * ir;
-    r[5] = y[69] * ir;
-    r[6] = y[70] * ir;
-    r[7] = y[71] * ir;
-    r[8] = y[72] * ir;
-    r[9] = y[73] * ir;
-    r[10] = y[74] * ir;
-    r[11] = y[75] * ir;
-    r[12] = y[76] * ir;
-    r[13] = y[77] * ir;
-    r[14] = y[78] * ir;
-    r[15] = y[79] * ir;
-    r[16] = y[80] * ir;
-    q = lr * y[81];
-    SHLIGHT_SET3(out_grad[81], (-9.246621f * r[0] - q * nx) * ib,
-                 (-9.246621f * r[16] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[82];
-    SHLIGHT_SET3(out_grad[82], (-8.71779789f * r[1] - q * nx) * ib,
-                 (-8.71779789f * r[15] - q * ny) * ib, (4.35889894f * r[0] - q * nz) * ib);
-    q = lr * y[83];
-    SHLIGHT_SET3(out_grad[83], (-8.1889452f * r[2] + 0.747545002f * r[0] - q * nx) * ib,
-                 (-8.1889452f * r[14] + -0.747545002f * r[16] - q * ny) * ib,
-                 (5.98036001f * r[1] - q * nz) * ib);
-    q = lr * y[84];
-    SHLIGHT_SET3(out_grad[84], (-7.66005683f * r[3] + 1.29478592f * r[1] - q * nx) * ib,
-                 (-7.66005683f * r[13] + -1.29478592f * r[15] - q * ny) * ib,
-                 (7.09183458f * r[2] - q * nz) * ib);
-    q = lr * y[85];
-    SHLIGHT_SET3(out_grad[85], (-7.13112482f * r[4] + 1.83110381f * r[2] - q * nx) * ib,
-                 (-7.13112482f * r[12] + -1.83110381f * r[14] - q * ny) * ib,
-                 (7.91127267f * r[3] - q * nz) * ib);
-    q = lr * y[86];
-    SHLIGHT_SET3(out_grad[86], (-6.60213869f * r[5] + 2.36394486f * r[3] - q * nx) * ib,
-                 (-6.60213869f * r[11] + -2.36394486f * r[13] - q * ny) * ib,
-                 (8.5233244f * r[4] - q * nz) * ib);
-    q = lr * y[87];
-    SHLIGHT_SET3(out_grad[87], (-6.0730843f * r[6] + 2.89522934f * r[4] - q * nx) * ib,
-                 (-6.0730843f * r[10] + -2.89522934f * r[12] - q * ny) * ib,
-                 (8.97054002f * r[5] - q * nz) * ib);
-    q = lr * y[88];
-    SHLIGHT_SET3(out_grad[88], (-5.54394211f * r[7] + 3.42568156f * r[5] - q * nx) * ib,
-                 (-5.54394211f * r[9] + -3.42568156f * r[11] - q * ny) * ib,
-                 (9.27678951f * r[6] - q * nz) * ib);
-    q = lr * y[89];
-    SHLIGHT_SET3(out_grad[89], (3.95563634f * r[6] - q * nx) * ib,
-                 (-7.09183458f * r[8] + -3.95563634f * r[10] - q * ny) * ib,
-                 (9.45577943f * r[7] - q * nz) * ib);
-    q = lr * y[90];
-    SHLIGHT_SET3(out_grad[90], (6.34312968f * r[9] - q * nx) * ib,
-                 (6.34312968f * r[7] - q * ny) * ib, (9.51469452f * r[8] - q * nz) * ib);
-    q = lr * y[91];
-    SHLIGHT_SET3(out_grad[91], (-7.09183458f * r[8] + 3.95563634f * r[10] - q * nx) * ib,
-                 (3.95563634f * r[6] - q * ny) * ib, (9.45577943f * r[9] - q * nz) * ib);
-    q = lr * y[92];
-    SHLIGHT_SET3(out_grad[92], (-5.54394211f * r[9] + 3.42568156f * r[11] - q * nx) * ib,
-                 (5.54394211f * r[7] + 3.42568156f * r[5] - q * ny) * ib,
-                 (9.27678951f * r[10] - q * nz) * ib);
-    q = lr * y[93];
-    SHLIGHT_SET3(out_grad[93], (-6.0730843f * r[10] + 2.89522934f * r[12] - q * nx) * ib,
-                 (6.0730843f * r[6] + 2.89522934f * r[4] - q * ny) * ib,
-                 (8.97054002f * r[11] - q * nz) * ib);
-    q = lr * y[94];
-    SHLIGHT_SET3(out_grad[94], (-6.60213869f * r[11] + 2.36394486f * r[13] - q * nx) * ib,
-                 (6.60213869f * r[5] + 2.36394486f * r[3] - q * ny) * ib,
-                 (8.5233244f * r[12] - q * nz) * ib);
-    q = lr * y[95];
-    SHLIGHT_SET3(out_grad[95], (-7.13112482f * r[12] + 1.83110381f * r[14] - q * nx) * ib,
-                 (7.13112482f * r[4] + 1.83110381f * r[2] - q * ny) * ib,
-                 (7.91127267f * r[13] - q * nz) * ib);
-    q = lr * y[96];
-    SHLIGHT_SET3(out_grad[96], (-7.66005683f * r[13] + 1.29478592f * r[15] - q * nx) * ib,
-                 (7.66005683f * r[3] + 1.29478592f * r[1] - q * ny) * ib,
-                 (7.09183458f * r[14] - q * nz) * ib);
-    q = lr * y[97];
-    SHLIGHT_SET3(out_grad[97], (-8.1889452f * r[14] + 0.747545002f * r[16] - q * nx) * ib,
-                 (8.1889452f * r[2] + 0.747545002f * r[0] - q * ny) * ib,
-                 (5.98036001f * r[15] - q * nz) * ib);
-    q = lr * y[98];
-    SHLIGHT_SET3(out_grad[98], (-8.71779789f * r[15] - q * nx) * ib,
-                 (8.71779789f * r[1] - q * ny) * ib, (4.35889894f * r[16] - q * nz) * ib);
-    q = lr * y[99];
-    SHLIGHT_SET3(out_grad[99], (-9.246621f * r[16] - q * nx) * ib, (9.246621f * r[0] - q * ny) * ib,
-                 -q * nz * ib);
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 10
-  if (n > 10) {
-    lr = 10.0f * ir;
-    r[0] = y[81] * ir;
-    r[1] = y[82] * ir;
-    r[2] = y[83] * ir;
-    r[3] = y[84] * ir;
-    r[4] = y[85] * ir;
-    r[5] = y[86] * ir;
-    r[6] = y[87] * ir;
-    r[7] = y[88] * ir;
-    r[8] = y[89] * ir;
-    r[9] = y[90] * ir;
-    r[10] = y[91] * ir;
-    r[11] = y[92] * ir;
-    r[12] = y[93] * ir;
-    r[13] = y[94] * ir;
-    r[14] = y[95] * ir;
-    r[15] = y[96] * ir;
-    r[16] = y[97] * ir;
-    r[17] = y[98] * ir;
-    r[18] = y[99] * ir;
-    q = lr * y[100];
-    SHLIGHT_SET3(out_grad[100], (-10.2469508f * r[0] - q * nx) * ib,
-                 (-10.2469508f * r[18] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[101];
-    SHLIGHT_SET3(out_grad[101], (-9.72111105f * r[1] - q * nx) * ib,
-                 (-9.72111105f * r[17] - q * ny) * ib, (4.58257569f * r[0] - q * nz) * ib);
-    q = lr * y[102];
-    SHLIGHT_SET3(out_grad[102], (-9.19525049f * r[2] + 0.743391942f * r[0] - q * nx) * ib,
-                 (-9.19525049f * r[16] + -0.743391942f * r[18] - q * ny) * ib,
-                 (6.3078898f * r[1] - q * nz) * ib);
-    q = lr * y[103];
-    SHLIGHT_SET3(out_grad[103], (-8.6693653f * r[3] + 1.28759261f * r[1] - q * nx) * ib,
-                 (-8.6693653f * r[15] + -1.28759261f * r[17] - q * ny) * ib,
-                 (7.50789059f * r[2] - q * nz) * ib);
-    q = lr * y[104];
-    SHLIGHT_SET3(out_grad[104], (-8.14345071f * r[4] + 1.82093094f * r[2] - q * nx) * ib,
-                 (-8.14345071f * r[14] + -1.82093094f * r[16] - q * ny) * ib,
-                 (8.41051973f * r[3] - q * nz) * ib);
-    q = lr * y[105];
-    SHLIGHT_SET3(out_grad[105], (-7.61750063f * r[5] + 2.35081173f * r[3] - q * nx) * ib,
-                 (-7.61750063f * r[13] + -2.35081173f * r[15] - q * ny) * ib,
-                 (9.10465468f * r[4] - q * nz) * ib);
-    q = lr * y[106];
-    SHLIGHT_SET3(out_grad[106], (-7.09150715f * r[6] + 2.87914461f * r[4] - q * nx) * ib,
-                 (-7.09150715f * r[12] + -2.87914461f * r[14] - q * ny) * ib,
-                 (9.63546082f * r[5] - q * nz) * ib);
-    q = lr * y[107];
-    SHLIGHT_SET3(out_grad[107], (-6.56545986f * r[7] + 3.40664984f * r[5] - q * nx) * ib,
-                 (-6.56545986f * r[11] + -3.40664984f * r[13] - q * ny) * ib,
-                 (10.0289056f * r[6] - q * nz) * ib);
-    q = lr * y[108];
-    SHLIGHT_SET3(out_grad[108], (-6.03934468f * r[8] + 3.93366041f * r[6] - q * nx) * ib,
-                 (-6.03934468f * r[10] + -3.93366041f * r[12] - q * ny) * ib,
-                 (10.3007409f * r[7] - q * nz) * ib);
-    q = lr * y[109];
-    SHLIGHT_SET3(out_grad[109], (4.46035165f * r[7] - q * nx) * ib,
-                 (-7.79676046f * r[9] + -4.46035165f * r[11] - q * ny) * ib,
-                 (10.4604518f * r[8] - q * nz) * ib);
-    q = lr * y[110];
-    SHLIGHT_SET3(out_grad[110], (7.05243519f * r[10] - q * nx) * ib,
-                 (7.05243519f * r[8] - q * ny) * ib, (10.5131497f * r[9] - q * nz) * ib);
-    q = lr * y[111];
-    SHLIGHT_SET3(out_grad[111], (-7.79676046f * r[9] + 4.46035165f * r[11] - q * nx) * ib,
-                 (4.46035165f * r[7] - q * ny) * ib, (10.4604518f * r[10] - q * nz) * ib);
-    q = lr * y[112];
-    SHLIGHT_SET3(out_grad[112], (-6.03934468f * r[10] + 3.93366041f * r[12] - q * nx) * ib,
-                 (6.03934468f * r[8] + 3.93366041f * r[6] - q * ny) * ib,
-                 (10.3007409f * r[11] - q * nz) * ib);
-    q = lr * y[113];
-    SHLIGHT_SET3(out_grad[113], (-6.56545986f * r[11] + 3.40664984f * r[13] - q * nx) * ib,
-                 (6.56545986f * r[7] + 3.40664984f * r[5] - q * ny) * ib,
-                 (10.0289056f * r[12] - q * nz) * ib);
-    q = lr * y[114];
-    SHLIGHT_SET3(out_grad[114], (-7.09150715f * r[12] + 2.87914461f * r[14] - q * nx) * ib,
-                 (7.09150715f * r[6] + 2.87914461f * r[4] - q * ny) * ib,
-                 (9.63546082f * r[13] - q * nz) * ib);
-    q = lr * y[115];
-    SHLIGHT_SET3(out_grad[115], (-7.61750063f * r[13] + 2.35081173f * r[15] - q * nx) * ib,
-                 (7.61750063f * r[5] + 2.35081173f * r[3] - q * ny) * ib,
-                 (9.10465468f * r[14] - q * nz) * ib);
-    q = lr * y[116];
-    SHLIGHT_SET3(out_grad[116], (-8.14345071f * r[14] + 1.82093094f * r[16] - q * nx) * ib,
-                 (8.14345071f * r[4] + 1.82093094f * r[2] - q * ny) * ib,
-                 (8.41051973f * r[15] - q * nz) * ib);
-    q = lr * y[117];
-    SHLIGHT_SET3(out_grad[117], (-8.6693653f * r[15] + 1.28759261f * r[17] - q * nx) * ib,
-                 (8.6693653f * r[3] + 1.28759261f * r[1] - q * ny) * ib,
-                 (7.50789059f * r[16] - q * nz) * ib);
-    q = lr * y[118];
-    SHLIGHT_SET3(out_grad[118], (-9.19525049f * r[16] + 0.743391942f * r[18] - q * nx) * ib,
-                 (9.19525049f * r[2] + 0.743391942f * r[0] - q * ny) * ib,
-                 (6.3078898f * r[17] - q * nz) * ib);
-    q = lr * y[119];
-    SHLIGHT_SET3(out_grad[119], (-9.72111105f * r[17] - q * nx) * ib,
-                 (9.72111105f * r[1] - q * ny) * ib, (4.58257569f * r[18] - q * nz) * ib);
-    q = lr * y[120];
-    SHLIGHT_SET3(out_grad[120], (-10.2469508f * r[18] - q * nx) * ib,
-                 (10.2469508f * r[0] - q * ny) * ib, -q * nz * ib);
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 11
-  if (n > 11) {
-    lr = 11.0f * ir;
-    r[0] = y[100] * ir;
-    r[1] = y[101] * ir;
-    r[2] = y[102] * ir;
-    r[3] = y[103] * ir;
-    r[4] = y[104] * ir;
-    r[5] = y[105] * ir;
-    r[6] = y[106] * ir;
-    r[7] = y[107] * ir;
-    r[8] = y[108] * ir;
-    r[9] = y[109] * ir;
-    r[10] = y[110] * ir;
-    r[11] = y[111] * ir;
-    r[12] = y[112] * ir;
-    r[13] = y[113] * ir;
-    r[14] = y[114] * ir;
-    r[15] = y[115] * ir;
-    r[16] = y[116] * ir;
-    r[17] = y[117] * ir;
-    r[18] = y[118] * ir;
-    r[19] = y[119] * ir;
-    r[20] = y[120] * ir;
-    q = lr * y[121];
-    SHLIGHT_SET3(out_grad[121], (-11.2472219f * r[0] - q * nx) * ib,
-                 (-11.2472219f * r[20] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[122];
-    SHLIGHT_SET3(out_grad[122], (-10.7238053f * r[1] - q * nx) * ib,
-                 (-10.7238053f * r[19] - q * ny) * ib, (4.79583152f * r[0] - q * nz) * ib);
-    q = lr * y[123];
-    SHLIGHT_SET3(out_grad[123], (-10.2003735f * r[2] + 0.74001287f * r[0] - q * nx) * ib,
-                 (-10.2003735f * r[18] + -0.74001287f * r[20] - q * ny) * ib,
-                 (6.61887633f * r[1] - q * nz) * ib);
-    q = lr * y[124];
-    SHLIGHT_SET3(out_grad[124], (-9.67692395f * r[3] + 1.28173989f * r[1] - q * nx) * ib,
-                 (-9.67692395f * r[17] + -1.28173989f * r[19] - q * ny) * ib,
-                 (7.90117532f * r[2] - q * nz) * ib);
-    q = lr * y[125];
-    SHLIGHT_SET3(out_grad[125], (-9.15345368f * r[4] + 1.81265393f * r[2] - q * nx) * ib,
-                 (-9.15345368f * r[16] + -1.81265393f * r[18] - q * ny) * ib,
-                 (8.88015444f * r[3] - q * nz) * ib);
-    q = lr * y[126];
-    SHLIGHT_SET3(out_grad[126], (-8.62995889f * r[5] + 2.34012617f * r[3] - q * nx) * ib,
-                 (-8.62995889f * r[15] + -2.34012617f * r[17] - q * ny) * ib,
-                 (9.64858736f * r[4] - q * nz) * ib);
-    q = lr * y[127];
-    SHLIGHT_SET3(out_grad[127], (-8.10643483f * r[6] + 2.86605752f * r[4] - q * nx) * ib,
-                 (-8.10643483f * r[14] + -2.86605752f * r[16] - q * ny) * ib,
-                 (10.2539191f * r[5] - q * nz) * ib);
-    q = lr * y[128];
-    SHLIGHT_SET3(out_grad[128], (-7.58287544f * r[7] + 3.39116499f * r[5] - q * nx) * ib,
-                 (-7.58287544f * r[13] + -3.39116499f * r[15] - q * ny) * ib,
-                 (10.7238053f * r[6] - q * nz) * ib);
-    q = lr * y[129];
-    SHLIGHT_SET3(out_grad[129], (-7.05927286f * r[8] + 3.91578004f * r[6] - q * nx) * ib,
-                 (-7.05927286f * r[12] + -3.91578004f * r[14] - q * ny) * ib,
-                 (11.0754985f * r[7] - q * nz) * ib);
-    q = lr * y[130];
-    SHLIGHT_SET3(out_grad[130], (-6.5356167f * r[9] + 4.44007722f * r[7] - q * nx) * ib,
-                 (-6.5356167f * r[11] + -4.44007722f * r[13] - q * ny) * ib,
-                 (11.3200202f * r[8] - q * nz) * ib);
-    q = lr * y[131];
-    SHLIGHT_SET3(out_grad[131], (4.96415724f * r[8] - q * nx) * ib,
-                 (-8.50210058f * r[10] + -4.96415724f * r[12] - q * ny) * ib,
-                 (11.4642301f * r[9] - q * nz) * ib);
-    q = lr * y[132];
-    SHLIGHT_SET3(out_grad[132], (7.76132046f * r[11] - q * nx) * ib,
-                 (7.76132046f * r[9] - q * ny) * ib, (11.5118986f * r[10] - q * nz) * ib);
-    q = lr * y[133];
-    SHLIGHT_SET3(out_grad[133], (-8.50210058f * r[10] + 4.96415724f * r[12] - q * nx) * ib,
-                 (4.96415724f * r[8] - q * ny) * ib, (11.4642301f * r[11] - q * nz) * ib);
-    q = lr * y[134];
-    SHLIGHT_SET3(out_grad[134], (-6.5356167f * r[11] + 4.44007722f * r[13] - q * nx) * ib,
-                 (6.5356167f * r[9] + 4.44007722f * r[7] - q * ny) * ib,
-                 (11.3200202f * r[12] - q * nz) * ib);
-    q = lr * y[135];
-    SHLIGHT_SET3(out_grad[135], (-7.05927286f * r[12] + 3.91578004f * r[14] - q * nx) * ib,
-                 (7.05927286f * r[8] + 3.91578004f * r[6] - q * ny) * ib,
-                 (11.0754985f * r[13] - q * nz) * ib);
-    q = lr * y[136];
-    SHLIGHT_SET3(out_grad[136], (-7.58287544f * r[13] + 3.39116499f * r[15] - q * nx) * ib,
-                 (7.58287544f * r[7] + 3.39116499f * r[5] - q * ny) * ib,
-                 (10.7238053f * r[14] - q * nz) * ib);
-    q = lr * y[137];
-    SHLIGHT_SET3(out_grad[137], (-8.10643483f * r[14] + 2.86605752f * r[16] - q * nx) * ib,
-                 (8.10643483f * r[6] + 2.86605752f * r[4] - q * ny) * ib,
-                 (10.2539191f * r[15] - q * nz) * ib);
-    q = lr * y[138];
-    SHLIGHT_SET3(out_grad[138], (-8.62995889f * r[15] + 2.34012617f * r[17] - q * nx) * ib,
-                 (8.62995889f * r[5] + 2.34012617f * r[3] - q * ny) * ib,
-                 (9.64858736f * r[16] - q * nz) * ib);
-    q = lr * y[139];
-    SHLIGHT_SET3(out_grad[139], (-9.15345368f * r[16] + 1.81265393f * r[18] - q * nx) * ib,
-                 (9.15345368f * r[4] + 1.81265393f * r[2] - q * ny) * ib,
-                 (8.88015444f * r[17] - q * nz) * ib);
-    q = lr * y[140];
-    SHLIGHT_SET3(out_grad[140], (-9.67692395f * r[17] + 1.28173989f * r[19] - q * nx) * ib,
-                 (9.67692395f * r[3] + 1.28173989f * r[1] - q * ny) * ib,
-                 (7.90117532f * r[18] - q * nz) * ib);
-    q = lr * y[141];
-    SHLIGHT_SET3(out_grad[141], (-10.2003735f * r[18] + 0.74001287f * r[20] - q * nx) * ib,
-                 (10.2003735f * r[2] + 0.74001287f * r[0] - q * ny) * ib,
-                 (6.61887633f * r[19] - q * nz) * ib);
-    q = lr * y[142];
-    SHLIGHT_SET3(out_grad[142], (-10.7238053f * r[19] - q * nx) * ib,
-                 (10.7238053f * r[1] - q * ny) * ib, (4.79583152f * r[20] - q * nz) * ib);
-    q = lr * y[143];
-    SHLIGHT_SET3(out_grad[143], (-11.2472219f * r[20] - q * nx) * ib,
-                 (11.2472219f * r[0] - q * ny) * ib, -q * nz * ib);
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 12
-  if (n > 12) {
-    lr = 12.0f * ir;
-    r[0] = y[121] * ir;
-    r[1] = y[122] * ir;
-    r[2] = y[123] * ir;
-    r[3] = y[124] * ir;
-    r[4] = y[125] * ir;
-    r[5] = y[126] * ir;
-    r[6] = y[127] * ir;
-    r[7] = y[128] * ir;
-    r[8] = y[129] * ir;
-    r[9] = y[130] * ir;
-    r[10] = y[131] * ir;
-    r[11] = y[132] * ir;
-    r[12] = y[133] * ir;
-    r[13] = y[134] * ir;
-    r[14] = y[135] * ir;
-    r[15] = y[136] * ir;
-    r[16] = y[137] * ir;
-    r[17] = y[138] * ir;
-    r[18] = y[139] * ir;
-    r[19] = y[140] * ir;
-    r[20] = y[141] * ir;
-    r[21] = y[142] * ir;
-    r[22] = y[143] * ir;
-    q = lr * y[144];
-    SHLIGHT_SET3(out_grad[144], (-12.2474487f * r[0] - q * nx) * ib,
-                 (-12.2474487f * r[22] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[145];
-    SHLIGHT_SET3(out_grad[145], (-11.7260394f * r[1] - q * nx) * ib,
-                 (-11.7260394f * r[21] - q * ny) * ib, (5.0f * r[0] - q * nz) * ib);
-    q = lr * y[146];
-    SHLIGHT_SET3(out_grad[146], (-11.2046186f * r[2] + 0.737209781f * r[0] - q * nx) * ib,
-                 (-11.2046186f * r[20] + -0.737209781f * r[22] - q * ny) * ib,
-                 (6.91564075f * r[1] - q * nz) * ib);
-    q = lr * y[147];
-    SHLIGHT_SET3(out_grad[147], (-10.6831847f * r[3] + 1.2768848f * r[1] - q * nx) * ib,
-                 (-10.6831847f * r[19] + -1.2768848f * r[21] - q * ny) * ib,
-                 (8.27515927f * r[2] - q * nz) * ib);
-    q = lr * y[148];
-    SHLIGHT_SET3(out_grad[148], (-10.1617356f * r[4] + 1.8057878f * r[2] - q * nx) * ib,
-                 (-10.1617356f * r[18] + -1.8057878f * r[20] - q * ny) * ib,
-                 (9.32504808f * r[3] - q * nz) * ib);
-    q = lr * y[149];
-    SHLIGHT_SET3(out_grad[149], (-9.6402688f * r[5] + 2.33126202f * r[3] - q * nx) * ib,
-                 (-9.6402688f * r[17] + -2.33126202f * r[19] - q * ny) * ib,
-                 (10.1617356f * r[4] - q * nz) * ib);
-    q = lr * y[150];
-    SHLIGHT_SET3(out_grad[150], (-9.11878138f * r[6] + 2.8552012f * r[4] - q * nx) * ib,
-                 (-9.11878138f * r[16] + -2.8552012f * r[18] - q * ny) * ib,
-                 (10.8347268f * r[5] - q * nz) * ib);
-    q = lr * y[151];
-    SHLIGHT_SET3(out_grad[151], (-8.59726954f * r[7] + 3.37831962f * r[5] - q * nx) * ib,
-                 (-8.59726954f * r[15] + -3.37831962f * r[17] - q * ny) * ib,
-                 (11.3731186f * r[6] - q * nz) * ib);
-    q = lr * y[152];
-    SHLIGHT_SET3(out_grad[152], (-8.07572853f * r[8] + 3.90094749f * r[6] - q * nx) * ib,
-                 (-8.07572853f * r[14] + -3.90094749f * r[16] - q * ny) * ib,
-                 (11.7953565f * r[7] - q * nz) * ib);
-    q = lr * y[153];
-    SHLIGHT_SET3(out_grad[153], (-7.55415233f * r[9] + 4.42325868f * r[7] - q * nx) * ib,
-                 (-7.55415233f * r[13] + -4.42325868f * r[15] - q * ny) * ib,
-                 (12.1135928f * r[8] - q * nz) * ib);
-    q = lr * y[154];
-    SHLIGHT_SET3(out_grad[154], (-7.0325331f * r[10] + 4.94535355f * r[8] - q * nx) * ib,
-                 (-7.0325331f * r[12] + -4.94535355f * r[14] - q * ny) * ib,
-                 (12.3358791f * r[9] - q * nz) * ib);
-    q = lr * y[155];
-    SHLIGHT_SET3(out_grad[155], (5.46729406f * r[9] - q * nx) * ib,
-                 (-9.20774721f * r[11] + -5.46729406f * r[13] - q * ny) * ib,
-                 (12.4673487f * r[10] - q * nz) * ib);
-    q = lr * y[156];
-    SHLIGHT_SET3(out_grad[156], (8.46989554f * r[12] - q * nx) * ib,
-                 (8.46989554f * r[10] - q * ny) * ib, (12.5108648f * r[11] - q * nz) * ib);
-    q = lr * y[157];
-    SHLIGHT_SET3(out_grad[157], (-9.20774721f * r[11] + 5.46729406f * r[13] - q * nx) * ib,
-                 (5.46729406f * r[9] - q * ny) * ib, (12.4673487f * r[12] - q * nz) * ib);
-    q = lr * y[158];
-    SHLIGHT_SET3(out_grad[158], (-7.0325331f * r[12] + 4.94535355f * r[14] - q * nx) * ib,
-                 (7.0325331f * r[10] + 4.94535355f * r[8] - q * ny) * ib,
-                 (12.3358791f * r[13] - q * nz) * ib);
-    q = lr * y[159];
-    SHLIGHT_SET3(out_grad[159], (-7.55415233f * r[13] + 4.42325868f * r[15] - q * nx) * ib,
-                 (7.55415233f * r[9] + 4.42325868f * r[7] - q * ny) * ib,
-                 (12.1135928f * r[14] - q * nz) * ib);
-    q = lr * y[160];
-    SHLIGHT_SET3(out_grad[160], (-8.07572853f * r[14] + 3.90094749f * r[16] - q * nx) * ib,
-                 (8.07572853f * r[8] + 3.90094749f * r[6] - q * ny) * ib,
-                 (11.7953565f * r[15] - q * nz) * ib);
-    q = lr * y[161];
-    SHLIGHT_SET3(out_grad[161], (-8.59726954f * r[15] + 3.37831962f * r[17] - q * nx) * ib,
-                 (8.59726954f * r[7] + 3.37831962f * r[5] - q * ny) * ib,
-                 (11.3731186f * r[16] - q * nz) * ib);
-    q = lr * y[162];
-    SHLIGHT_SET3(out_grad[162], (-9.11878138f * r[16] + 2.8552012f * r[18] - q * nx) * ib,
-                 (9.11878138f * r[6] + 2.8552012f * r[4] - q * ny) * ib,
-                 (10.8347268f * r[17] - q * nz) * ib);
-    q = lr * y[163];
-    SHLIGHT_SET3(out_grad[163], (-9.6402688f * r[17] + 2.33126202f * r[19] - q * nx) * ib,
-                 (9.6402688f * r[5] + 2.33126202f * r[3] - q * ny) * ib,
-                 (10.1617356f * r[18] - q * nz) * ib);
-    q = lr * y[164];
-    SHLIGHT_SET3(out_grad[164], (-10.1617356f * r[18] + 1.8057878f * r[20] - q * nx) * ib,
-                 (10.1617356f * r[4] + 1.8057878f * r[2] - q * ny) * ib,
-                 (9.32504808f * r[19] - q * nz) * ib);
-    q = lr * y[165];
-    SHLIGHT_SET3(out_grad[165], (-10.6831847f * r[19] + 1.2768848f * r[21] - q * nx) * ib,
-                 (10.6831847f * r[3] + 1.2768848f * r[1] - q * ny) * ib,
-                 (8.27515927f * r[20] - q * nz) * ib);
-    q = lr * y[166];
-    SHLIGHT_SET3(out_grad[166], (-11.2046186f * r[20] + 0.737209781f * r[22] - q * nx) * ib,
-                 (11.2046186f * r[2] + 0.737209781f * r[0] - q * ny) * ib,
-                 (6.91564075f * r[21] - q * nz) * ib);
-    q = lr * y[167];
-    SHLIGHT_SET3(out_grad[167], (-11.7260394f * r[21] - q * nx) * ib,
-                 (11.7260394f * r[1] - q * ny) * ib, (5.0f * r[22] - q * nz) * ib);
-    q = lr * y[168];
-    SHLIGHT_SET3(out_grad[168], (-12.2474487f * r[22] - q * nx) * ib,
-                 (12.2474487f * r[0] - q * ny) * ib, -q * nz * ib);
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 13
-  if (n > 13) {
-    lr = 13.0f * ir;
-    r[0] = y[144] * ir;
-    r[1] = y[145] * ir;
-    r[2] = y[146] * ir;
-    r[3] = y[147] * ir;
-    r[4] = y[148] * ir;
-    r[5] = y[149] * ir;
-    r[6] = y[150] * ir;
-    r[7] = y[151] * ir;
-    r[8] = y[152] * ir;
-    r[9] = y[153] * ir;
-    r[10] = y[154] * ir;
-    r[11] = y[155] * ir;
-    r[12] = y[156] * ir;
-    r[13] = y[157] * ir;
-    r[14] = y[158] * ir;
-    r[15] = y[159] * ir;
-    r[16] = y[160] * ir;
-    r[17] = y[161] * ir;
-    r[18] = y[162] * ir;
-    r[19] = y[163] * ir;
-    r[20] = y[164] * ir;
-    r[21] = y[165] * ir;
-    r[22] = y[166] * ir;
-    r[23] = y[167] * ir;
-    r[24] = y[168] * ir;
-    q = lr * y[169];
-    SHLIGHT_SET3(out_grad[169], (-13.2476413f * r[0] - q * nx) * ib,
-                 (-13.2476413f * r[24] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[170];
-    SHLIGHT_SET3(out_grad[170], (-12.7279221f * r[1] - q * nx) * ib,
-                 (-12.7279221f * r[23] - q * ny) * ib, (5.19615242f * r[0] - q * nz) * ib);
-    q = lr * y[171];
-    SHLIGHT_SET3(out_grad[171], (-12.208194f * r[2] + 0.734846923f * r[0] - q * nx) * ib,
-                 (-12.208194f * r[22] + -0.734846923f * r[24] - q * ny) * ib,
-                 (7.2f * r[1] - q * nz) * ib);
-    q = lr * y[172];
-    SHLIGHT_SET3(out_grad[172], (-11.6884558f * r[3] + 1.27279221f * r[1] - q * nx) * ib,
-                 (-11.6884558f * r[21] + -1.27279221f * r[23] - q * ny) * ib,
-                 (8.63249674f * r[2] - q * nz) * ib);
-    q = lr * y[173];
-    SHLIGHT_SET3(out_grad[173], (-11.1687063f * r[4] + 1.8f * r[2] - q * nx) * ib,
-                 (-11.1687063f * r[20] + -1.8f * r[22] - q * ny) * ib,
-                 (9.74884609f * r[3] - q * nz) * ib);
-    q = lr * y[174];
-    SHLIGHT_SET3(out_grad[174], (-10.6489436f * r[5] + 2.32379001f * r[3] - q * nx) * ib,
-                 (-10.6489436f * r[19] + -2.32379001f * r[21] - q * ny) * ib,
-                 (10.6489436f * r[4] - q * nz) * ib);
-    q = lr * y[175];
-    SHLIGHT_SET3(out_grad[175], (-10.1291658f * r[6] + 2.84604989f * r[4] - q * nx) * ib,
-                 (-10.1291658f * r[18] + -2.84604989f * r[20] - q * ny) * ib,
-                 (11.3841996f * r[5] - q * nz) * ib);
-    q = lr * y[176];
-    SHLIGHT_SET3(out_grad[176], (-9.60937043f * r[7] + 3.36749165f * r[5] - q * nx) * ib,
-                 (-9.60937043f * r[17] + -3.36749165f * r[19] - q * ny) * ib,
-                 (11.9849906f * r[6] - q * nz) * ib);
-    q = lr * y[177];
-    SHLIGHT_SET3(out_grad[177], (-9.08955444f * r[8] + 3.88844442f * r[6] - q * nx) * ib,
-                 (-9.08955444f * r[16] + -3.88844442f * r[18] - q * ny) * ib,
-                 (12.4707658f * r[7] - q * nz) * ib);
-    q = lr * y[178];
-    SHLIGHT_SET3(out_grad[178], (-8.56971411f * r[9] + 4.40908154f * r[7] - q * nx) * ib,
-                 (-8.56971411f * r[15] + -4.40908154f * r[17] - q * ny) * ib,
-                 (12.8545712f * r[8] - q * nz) * ib);
-    q = lr * y[179];
-    SHLIGHT_SET3(out_grad[179], (-8.04984472f * r[10] + 4.92950302f * r[8] - q * nx) * ib,
-                 (-8.04984472f * r[14] + -4.92950302f * r[16] - q * ny) * ib,
-                 (13.1453414f * r[9] - q * nz) * ib);
-    q = lr * y[180];
-    SHLIGHT_SET3(out_grad[180], (-7.52994024f * r[11] + 5.44977064f * r[9] - q * nx) * ib,
-                 (-7.52994024f * r[13] + -5.44977064f * r[15] - q * ny) * ib,
-                 (13.3491573f * r[10] - q * nz) * ib);
-    q = lr * y[181];
-    SHLIGHT_SET3(out_grad[181], (5.96992462f * r[10] - q * nx) * ib,
-                 (-9.91362699f * r[12] + -5.96992462f * r[14] - q * ny) * ib,
-                 (13.4699666f * r[11] - q * nz) * ib);
-    q = lr * y[182];
-    SHLIGHT_SET3(out_grad[182], (9.17823512f * r[13] - q * nx) * ib,
-                 (9.17823512f * r[11] - q * ny) * ib, (13.5099963f * r[12] - q * nz) * ib);
-    q = lr * y[183];
-    SHLIGHT_SET3(out_grad[183], (-9.91362699f * r[12] + 5.96992462f * r[14] - q * nx) * ib,
-                 (5.96992462f * r[10] - q * ny) * ib, (13.4699666f * r[13] - q * nz) * ib);
-    q = lr * y[184];
-    SHLIGHT_SET3(out_grad[184], (-7.52994024f * r[13] + 5.44977064f * r[15] - q * nx) * ib,
-                 (7.52994024f * r[11] + 5.44977064f * r[9] - q * ny) * ib,
-                 (13.3491573f * r[14] - q * nz) * ib);
-    q = lr * y[185];
-    SHLIGHT_SET3(out_grad[185], (-8.04984472f * r[14] + 4.92950302f * r[16] - q * nx) * ib,
-                 (8.04984472f * r[10] + 4.92950302f * r[8] - q * ny) * ib,
-                 (13.1453414f * r[15] - q * nz) * ib);
-    q = lr * y[186];
-    SHLIGHT_SET3(out_grad[186], (-8.56971411f * r[15] + 4.40908154f * r[17] - q * nx) * ib,
-                 (8.56971411f * r[9] + 4.40908154f * r[7] - q * ny) * ib,
-                 (12.8545712f * r[16] - q * nz) * ib);
-    q = lr * y[187];
-    SHLIGHT_SET3(out_grad[187], (-9.08955444f * r[16] + 3.88844442f * r[18] - q * nx) * ib,
-                 (9.08955444f * r[8] + 3.88844442f * r[6] - q * ny) * ib,
-                 (12.4707658f * r[17] - q * nz) * ib);
-    q = lr * y[188];
-    SHLIGHT_SET3(out_grad[188], (-9.60937043f * r[17] + 3.36749165f * r[19] - q * nx) * ib,
-                 (9.60937043f * r[7] + 3.36749165f * r[5] - q * ny) * ib,
-                 (11.9849906f * r[18] - q * nz) * ib);
-    q = lr * y[189];
-    SHLIGHT_SET3(out_grad[189], (-10.1291658f * r[18] + 2.84604989f * r[20] - q * nx) * ib,
-                 (10.1291658f * r[6] + 2.84604989f * r[4] - q * ny) * ib,
-                 (11.3841996f * r[19] - q * nz) * ib);
-    q = lr * y[190];
-    SHLIGHT_SET3(out_grad[190], (-10.6489436f * r[19] + 2.32379001f * r[21] - q * nx) * ib,
-                 (10.6489436f * r[5] + 2.32379001f * r[3] - q * ny) * ib,
-                 (10.6489436f * r[20] - q * nz) * ib);
-    q = lr * y[191];
-    SHLIGHT_SET3(out_grad[191], (-11.1687063f * r[20] + 1.8f * r[22] - q * nx) * ib,
-                 (11.1687063f * r[4] + 1.8f * r[2] - q * ny) * ib,
-                 (9.74884609f * r[21] - q * nz) * ib);
-    q = lr * y[192];
-    SHLIGHT_SET3(out_grad[192], (-11.6884558f * r[21] + 1.27279221f * r[23] - q * nx) * ib,
-                 (11.6884558f * r[3] + 1.27279221f * r[1] - q * ny) * ib,
-                 (8.63249674f * r[22] - q * nz) * ib);
-    q = lr * y[193];
-    SHLIGHT_SET3(out_grad[193], (-12.208194f * r[22] + 0.734846923f * r[24] - q * nx) * ib,
-                 (12.208194f * r[2] + 0.734846923f * r[0] - q * ny) * ib,
-                 (7.2f * r[23] - q * nz) * ib);
-    q = lr * y[194];
-    SHLIGHT_SET3(out_grad[194], (-12.7279221f * r[23] - q * nx) * ib,
-                 (12.7279221f * r[1] - q * ny) * ib, (5.19615242f * r[24] - q * nz) * ib);
-    q = lr * y[195];
-    SHLIGHT_SET3(out_grad[195], (-13.2476413f * r[24] - q * nx) * ib,
-                 (13.2476413f * r[0] - q * ny) * ib, -q * nz * ib);
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 14
-  if (n > 14) {
-    lr = 14.0f * ir;
-    r[0] = y[169] * ir;
-    r[1] = y[170] * ir;
-    r[2] = y[171] * ir;
-    r[3] = y[172] * ir;
-    r[4] = y[173] * ir;
-    r[5] = y[174] * ir;
-    r[6] = y[175] * ir;
-    r[7] = y[176] * ir;
-    r[8] = y[177] * ir;
-    r[9] = y[178] * ir;
-    r[10] = y[179] * ir;
-    r[11] = y[180] * ir;
-    r[12] = y[181] * ir;
-    r[13] = y[182] * ir;
-    r[14] = y[183] * ir;
-    r[15] = y[184] * ir;
-    r[16] = y[185] * ir;
-    r[17] = y[186] * ir;
-    r[18] = y[187] * ir;
-    r[19] = y[188] * ir;
-    r[20] = y[189] * ir;
-    r[21] = y[190] * ir;
-    r[22] = y[191] * ir;
-    r[23] = y[192] * ir;
-    r[24] = y[193] * ir;
-    r[25] = y[194] * ir;
-    r[26] = y[195] * ir;
-    q = lr * y[196];
-    SHLIGHT_SET3(out_grad[196], (-14.2478068f * r[0] - q * nx) * ib,
-                 (-14.2478068f * r[26] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[197];
-    SHLIGHT_SET3(out_grad[197], (-13.7295302f * r[1] - q * nx) * ib,
-                 (-13.7295302f * r[25] - q * ny) * ib, (5.38516481f * r[0] - q * nz) * ib);
-    q = lr * y[198];
-    SHLIGHT_SET3(out_grad[198], (-13.2112466f * r[2] + 0.732828109f * r[0] - q * nx) * ib,
-                 (-13.2112466f * r[24] + -0.732828109f * r[26] - q * ny) * ib,
-                 (7.47340965f * r[1] - q * nz) * ib);
-    q = lr * y[199];
-    SHLIGHT_SET3(out_grad[199], (-12.6929552f * r[3] + 1.26929552f * r[1] - q * nx) * ib,
-                 (-12.6929552f * r[23] + -1.26929552f * r[25] - q * ny) * ib,
-                 (8.97527468f * r[2] - q * nz) * ib);
-    q = lr * y[200];
-    SHLIGHT_SET3(out_grad[200], (-12.1746549f * r[4] + 1.79505494f * r[2] - q * nx) * ib,
-                 (-12.1746549f * r[22] + -1.79505494f * r[24] - q * ny) * ib,
-                 (10.1543641f * r[3] - q * nz) * ib);
-    q = lr * y[201];
-    SHLIGHT_SET3(out_grad[201], (-11.6563446f * r[5] + 2.31740596f * r[3] - q * nx) * ib,
-                 (-11.6563446f * r[21] + -2.31740596f * r[23] - q * ny) * ib,
-                 (11.1138885f * r[4] - q * nz) * ib);
-    q = lr * y[202];
-    SHLIGHT_SET3(out_grad[202], (-11.138023f * r[6] + 2.83823106f * r[4] - q * nx) * ib,
-                 (-11.138023f * r[20] + -2.83823106f * r[22] - q * ny) * ib,
-                 (11.9070474f * r[5] - q * nz) * ib);
-    q = lr * y[203];
-    SHLIGHT_SET3(out_grad[203], (-10.6196882f * r[7] + 3.35824028f * r[5] - q * nx) * ib,
-                 (-10.6196882f * r[19] + -3.35824028f * r[21] - q * ny) * ib,
-                 (12.5653845f * r[6] - q * nz) * ib);
-    q = lr * y[204];
-    SHLIGHT_SET3(out_grad[204], (-10.1013384f * r[8] + 3.87776186f * r[6] - q * nx) * ib,
-                 (-10.1013384f * r[18] + -3.87776186f * r[20] - q * ny) * ib,
-                 (13.1092277f * r[7] - q * nz) * ib);
-    q = lr * y[205];
-    SHLIGHT_SET3(out_grad[205], (-9.58297101f * r[9] + 4.39696865f * r[7] - q * nx) * ib,
-                 (-9.58297101f * r[17] + -4.39696865f * r[19] - q * ny) * ib,
-                 (13.5523676f * r[8] - q * nz) * ib);
-    q = lr * y[206];
-    SHLIGHT_SET3(out_grad[206], (-9.06458309f * r[10] + 4.9159604f * r[8] - q * nx) * ib,
-                 (-9.06458309f * r[16] + -4.9159604f * r[18] - q * ny) * ib,
-                 (13.9044357f * r[9] - q * nz) * ib);
-    q = lr * y[207];
-    SHLIGHT_SET3(out_grad[207], (-8.5461709f * r[11] + 5.43479871f * r[9] - q * nx) * ib,
-                 (-8.5461709f * r[15] + -5.43479871f * r[17] - q * ny) * ib,
-                 (14.1722211f * r[10] - q * nz) * ib);
-    q = lr * y[208];
-    SHLIGHT_SET3(out_grad[208], (-8.02772972f * r[12] + 5.9535237f * r[10] - q * nx) * ib,
-                 (-8.02772972f * r[14] + -5.9535237f * r[16] - q * ny) * ib,
-                 (14.3604395f * r[11] - q * nz) * ib);
-    q = lr * y[209];
-    SHLIGHT_SET3(out_grad[209], (6.47216261f * r[11] - q * nx) * ib,
-                 (-10.6196882f * r[13] + -6.47216261f * r[15] - q * ny) * ib,
-                 (14.4721956f * r[12] - q * nz) * ib);
-    q = lr * y[210];
-    SHLIGHT_SET3(out_grad[210], (9.88639169f * r[14] - q * nx) * ib,
-                 (9.88639169f * r[12] - q * ny) * ib, (14.5092563f * r[13] - q * nz) * ib);
-    q = lr * y[211];
-    SHLIGHT_SET3(out_grad[211], (-10.6196882f * r[13] + 6.47216261f * r[15] - q * nx) * ib,
-                 (6.47216261f * r[11] - q * ny) * ib, (14.4721956f * r[14] - q * nz) * ib);
-    q = lr * y[212];
-    SHLIGHT_SET3(out_grad[212], (-8.02772972f * r[14] + 5.9535237f * r[16] - q * nx) * ib,
-                 (8.02772972f * r[12] + 5.9535237f * r[10] - q * ny) * ib,
-                 (14.3604395f * r[15] - q * nz) * ib);
-    q = lr * y[213];
-    SHLIGHT_SET3(out_grad[213], (-8.5461709f * r[15] + 5.43479871f * r[17] - q * nx) * ib,
-                 (8.5461709f * r[11] + 5.43479871f * r[9] - q * ny) * ib,
-                 (14.1722211f * r[16] - q * nz) * ib);
-    q = lr * y[214];
-    SHLIGHT_SET3(out_grad[214], (-9.06458309f * r[16] + 4.9159604f * r[18] - q * nx) * ib,
-                 (9.06458309f * r[10] + 4.9159604f * r[8] - q * ny) * ib,
-                 (13.9044357f * r[17] - q * nz) * ib);
-    q = lr * y[215];
-    SHLIGHT_SET3(out_grad[215], (-9.58297101f * r[17] + 4.39696865f * r[19] - q * nx) * ib,
-                 (9.58297101f * r[9] + 4.39696865f * r[7] - q * ny) * ib,
-                 (13.5523676f * r[18] - q * nz) * ib);
-    q = lr * y[216];
-    SHLIGHT_SET3(out_grad[216], (-10.1013384f * r[18] + 3.87776186f * r[20] - q * nx) * ib,
-                 (10.1013384f * r[8] + 3.87776186f * r[6] - q * ny) * ib,
-                 (13.1092277f * r[19] - q * nz) * ib);
-    q = lr * y[217];
-    SHLIGHT_SET3(out_grad[217], (-10.6196882f * r[19] + 3.35824028f * r[21] - q * nx) * ib,
-                 (10.6196882f * r[7] + 3.35824028f * r[5] - q * ny) * ib,
-                 (12.5653845f * r[20] - q * nz) * ib);
-    q = lr * y[218];
-    SHLIGHT_SET3(out_grad[218], (-11.138023f * r[20] + 2.83823106f * r[22] - q * nx) * ib,
-                 (11.138023f * r[6] + 2.83823106f * r[4] - q * ny) * ib,
-                 (11.9070474f * r[21] - q * nz) * ib);
-    q = lr * y[219];
-    SHLIGHT_SET3(out_grad[219], (-11.6563446f * r[21] + 2.31740596f * r[23] - q * nx) * ib,
-                 (11.6563446f * r[5] + 2.31740596f * r[3] - q * ny) * ib,
-                 (11.1138885f * r[22] - q * nz) * ib);
-    q = lr * y[220];
-    SHLIGHT_SET3(out_grad[220], (-12.1746549f * r[22] + 1.79505494f * r[24] - q * nx) * ib,
-                 (12.1746549f * r[4] + 1.79505494f * r[2] - q * ny) * ib,
-                 (10.1543641f * r[23] - q * nz) * ib);
-    q = lr * y[221];
-    SHLIGHT_SET3(out_grad[221], (-12.6929552f * r[23] + 1.26929552f * r[25] - q * nx) * ib,
-                 (12.6929552f * r[3] + 1.26929552f * r[1] - q * ny) * ib,
-                 (8.97527468f * r[24] - q * nz) * ib);
-    q = lr * y[222];
-    SHLIGHT_SET3(out_grad[222], (-13.2112466f * r[24] + 0.732828109f * r[26] - q * nx) * ib,
-                 (13.2112466f * r[2] + 0.732828109f * r[0] - q * ny) * ib,
-                 (7.47340965f * r[25] - q * nz) * ib);
-    q = lr * y[223];
-    SHLIGHT_SET3(out_grad[223], (-13.7295302f * r[25] - q * nx) * ib,
-                 (13.7295302f * r[1] - q * ny) * ib, (5.38516481f * r[26] - q * nz) * ib);
-    q = lr * y[224];
-    SHLIGHT_SET3(out_grad[224], (-14.2478068f * r[26] - q * nx) * ib,
-                 (14.2478068f * r[0] - q * ny) * ib, -q * nz * ib);
-  }
-#endif
-#if SHLIGHT_MAX_BANDS > 15
-  if (n > 15) {
-    lr = 15.0f * ir;
-    r[0] = y[196] * ir;
-    r[1] = y[197] * ir;
-    r[2] = y[198] * ir;
-    r[3] = y[199] * ir;
-    r[4] = y[200] * ir;
-    r[5] = y[201] * ir;
-    r[6] = y[202] * ir;
-    r[7] = y[203] * ir;
-    r[8] = y[204] * ir;
-    r[9] = y[205] * ir;
-    r[10] = y[206] * ir;
-    r[11] = y[207] * ir;
-    r[12] = y[208] * ir;
-    r[13] = y[209] * ir;
-    r[14] = y[210] * ir;
-    r[15] = y[211] * ir;
-    r[16] = y[212] * ir;
-    r[17] = y[213] * ir;
-    r[18] = y[214] * ir;
-    r[19] = y[215] * ir;
-    r[20] = y[216] * ir;
-    r[21] = y[217] * ir;
-    r[22] = y[218] * ir;
-    r[23] = y[219] * ir;
-    r[24] = y[220] * ir;
-    r[25] = y[221] * ir;
-    r[26] = y[222] * ir;
-    r[27] = y[223] * ir;
-    r[28] = y[224] * ir;
-    q = lr * y[225];
-    SHLIGHT_SET3(out_grad[225], (-15.2479507f * r[0] - q * nx) * ib,
-                 (-15.2479507f * r[28] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[226];
-    SHLIGHT_SET3(out_grad[226], (-14.7309199f * r[1] - q * nx) * ib,
-                 (-14.7309199f * r[27] - q * ny) * ib, (5.56776436f * r[0] - q * nz) * ib);
-    q = lr * y[227];
-    SHLIGHT_SET3(out_grad[227], (-14.2138835f * r[2] + 0.731083277f * r[0] - q * nx) * ib,
-                 (-14.2138835f * r[26] + -0.731083277f * r[28] - q * ny) * ib,
-                 (7.73705816f * r[1] - q * nz) * ib);
-    q = lr * y[228];
-    SHLIGHT_SET3(out_grad[228], (-13.6968408f * r[3] + 1.26627338f * r[1] - q * nx) * ib,
-                 (-13.6968408f * r[25] + -1.26627338f * r[27] - q * ny) * ib,
-                 (9.30517098f * r[2] - q * nz) * ib);
-    q = lr * y[229];
-    SHLIGHT_SET3(out_grad[229], (-13.1797912f * r[4] + 1.79078099f * r[2] - q * nx) * ib,
-                 (-13.1797912f * r[24] + -1.79078099f * r[26] - q * ny) * ib,
-                 (10.543833f * r[3] - q * nz) * ib);
-    q = lr * y[230];
-    SHLIGHT_SET3(out_grad[230], (-12.6627338f * r[5] + 2.31188832f * r[3] - q * nx) * ib,
-                 (-12.6627338f * r[23] + -2.31188832f * r[25] - q * ny) * ib,
-                 (11.5594416f * r[4] - q * nz) * ib);
-    q = lr * y[231];
-    SHLIGHT_SET3(out_grad[231], (-12.1456676f * r[6] + 2.83147336f * r[4] - q * nx) * ib,
-                 (-12.1456676f * r[22] + -2.83147336f * r[24] - q * ny) * ib,
-                 (12.4068946f * r[5] - q * nz) * ib);
-    q = lr * y[232];
-    SHLIGHT_SET3(out_grad[232], (-11.6285914f * r[7] + 3.35024446f * r[5] - q * nx) * ib,
-                 (-11.6285914f * r[21] + -3.35024446f * r[23] - q * ny) * ib,
-                 (13.1188204f * r[6] - q * nz) * ib);
-    q = lr * y[233];
-    SHLIGHT_SET3(out_grad[233], (-11.1115038f * r[8] + 3.86852908f * r[6] - q * nx) * ib,
-                 (-11.1115038f * r[20] + -3.86852908f * r[22] - q * ny) * ib,
-                 (13.7163381f * r[7] - q * nz) * ib);
-    q = lr * y[234];
-    SHLIGHT_SET3(out_grad[234], (-10.5944032f * r[9] + 4.38649966f * r[7] - q * nx) * ib,
-                 (-10.5944032f * r[19] + -4.38649966f * r[21] - q * ny) * ib,
-                 (14.2138835f * r[8] - q * nz) * ib);
-    q = lr * y[235];
-    SHLIGHT_SET3(out_grad[235], (-10.0772875f * r[10] + 4.90425572f * r[8] - q * nx) * ib,
-                 (-10.0772875f * r[18] + -4.90425572f * r[20] - q * ny) * ib,
-                 (14.6216655f * r[9] - q * nz) * ib);
-    q = lr * y[236];
-    SHLIGHT_SET3(out_grad[236], (-9.56015438f * r[11] + 5.4218587f * r[9] - q * nx) * ib,
-                 (-9.56015438f * r[17] + -5.4218587f * r[19] - q * ny) * ib,
-                 (14.9470329f * r[10] - q * nz) * ib);
-    q = lr * y[237];
-    SHLIGHT_SET3(out_grad[237], (-9.04300072f * r[12] + 5.93934862f * r[10] - q * nx) * ib,
-                 (-9.04300072f * r[16] + -5.93934862f * r[18] - q * ny) * ib,
-                 (15.1952806f * r[11] - q * nz) * ib);
-    q = lr * y[238];
-    SHLIGHT_SET3(out_grad[238], (-8.52582284f * r[13] + 6.45675268f * r[11] - q * nx) * ib,
-                 (-8.52582284f * r[15] + -6.45675268f * r[17] - q * ny) * ib,
-                 (15.3701457f * r[12] - q * nz) * ib);
-    q = lr * y[239];
-    SHLIGHT_SET3(out_grad[239], (6.97408998f * r[12] - q * nx) * ib,
-                 (-11.3258934f * r[14] + -6.97408998f * r[16] - q * ny) * ib,
-                 (15.4741163f * r[13] - q * nz) * ib);
-    q = lr * y[240];
-    SHLIGHT_SET3(out_grad[240], (10.5944032f * r[15] - q * nx) * ib,
-                 (10.5944032f * r[13] - q * ny) * ib, (15.5086183f * r[14] - q * nz) * ib);
-    q = lr * y[241];
-    SHLIGHT_SET3(out_grad[241], (-11.3258934f * r[14] + 6.97408998f * r[16] - q * nx) * ib,
-                 (6.97408998f * r[12] - q * ny) * ib, (15.4741163f * r[15] - q * nz) * ib);
-    q = lr * y[242];
-    SHLIGHT_SET3(out_grad[242], (-8.52582284f * r[15] + 6.45675268f * r[17] - q * nx) * ib,
-                 (8.52582284f * r[13] + 6.45675268f * r[11] - q * ny) * ib,
-                 (15.3701457f * r[16] - q * nz) * ib);
-    q = lr * y[243];
-    SHLIGHT_SET3(out_grad[243], (-9.04300072f * r[16] + 5.93934862f * r[18] - q * nx) * ib,
-                 (9.04300072f * r[12] + 5.93934862f * r[10] - q * ny) * ib,
-                 (15.1952806f * r[17] - q * nz) * ib);
-    q = lr * y[244];
-    SHLIGHT_SET3(out_grad[244], (-9.56015438f * r[17] + 5.4218587f * r[19] - q * nx) * ib,
-                 (9.56015438f * r[11] + 5.4218587f * r[9] - q * ny) * ib,
-                 (14.9470329f * r[18] - q * nz) * ib);
-    q = lr * y[245];
-    SHLIGHT_SET3(out_grad[245], (-10.0772875f * r[18] + 4.90425572f * r[20] - q * nx) * ib,
-                 (10.0772875f * r[10] + 4.90425572f * r[8] - q * ny) * ib,
-                 (14.6216655f * r[19] - q * nz) * ib);
-    q = lr * y[246];
-    SHLIGHT_SET3(out_grad[246], (-10.5944032f * r[19] + 4.38649966f * r[21] - q * nx) * ib,
-                 (10.5944032f * r[9] + 4.38649966f * r[7] - q * ny) * ib,
-                 (14.2138835f * r[20] - q * nz) * ib);
-    q = lr * y[247];
-    SHLIGHT_SET3(out_grad[247], (-11.1115038f * r[20] + 3.86852908f * r[22] - q * nx) * ib,
-                 (11.1115038f * r[8] + 3.86852908f * r[6] - q * ny) * ib,
-                 (13.7163381f * r[21] - q * nz) * ib);
-    q = lr * y[248];
-    SHLIGHT_SET3(out_grad[248], (-11.6285914f * r[21] + 3.35024446f * r[23] - q * nx) * ib,
-                 (11.6285914f * r[7] + 3.35024446f * r[5] - q * ny) * ib,
-                 (13.1188204f * r[22] - q * nz) * ib);
-    q = lr * y[249];
-    SHLIGHT_SET3(out_grad[249], (-12.1456676f * r[22] + 2.83147336f * r[24] - q * nx) * ib,
-                 (12.1456676f * r[6] + 2.83147336f * r[4] - q * ny) * ib,
-                 (12.4068946f * r[23] - q * nz) * ib);
-    q = lr * y[250];
-    SHLIGHT_SET3(out_grad[250], (-12.6627338f * r[23] + 2.31188832f * r[25] - q * nx) * ib,
-                 (12.6627338f * r[5] + 2.31188832f * r[3] - q * ny) * ib,
-                 (11.5594416f * r[24] - q * nz) * ib);
-    q = lr * y[251];
-    SHLIGHT_SET3(out_grad[251], (-13.1797912f * r[24] + 1.79078099f * r[26] - q * nx) * ib,
-                 (13.1797912f * r[4] + 1.79078099f * r[2] - q * ny) * ib,
-                 (10.543833f * r[25] - q * nz) * ib);
-    q = lr * y[252];
-    SHLIGHT_SET3(out_grad[252], (-13.6968408f * r[25] + 1.26627338f * r[27] - q * nx) * ib,
-                 (13.6968408f * r[3] + 1.26627338f * r[1] - q * ny) * ib,
-                 (9.30517098f * r[26] - q * nz) * ib);
-    q = lr * y[253];
-    SHLIGHT_SET3(out_grad[253], (-14.2138835f * r[26] + 0.731083277f * r[28] - q * nx) * ib,
-                 (14.2138835f * r[2] + 0.731083277f * r[0] - q * ny) * ib,
-                 (7.73705816f * r[27] - q * nz) * ib);
-    q = lr * y[254];
-    SHLIGHT_SET3(out_grad[254], (-14.7309199f * r[27] - q * nx) * ib,
-                 (14.7309199f * r[1] - q * ny) * ib, (5.56776436f * r[28] - q * nz) * ib);
-    q = lr * y[255];
-    SHLIGHT_SET3(out_grad[255], (-15.2479507f * r[28] - q * nx) * ib,
-                 (15.2479507f * r[0] - q * ny) * ib, -q * nz * ib);
-  }
+  shli_sh_grad_bands(n, y, nx, ny, nz, ir, ib, out_grad);
+#else
+  shli_sh_grad_lines(n, y, nx, ny, nz, ir, ib, out_grad);
 #endif
 }
 

@@ -176,6 +176,8 @@ for b in $backends; do
 done
 # GLSL compile budgets (llvmpipe, compile + link + first draw, CPU s) at 2x, the one include
 step glsl-compile-budget bash bench/glsl_budget.sh --no-run --check 2 --one-include
+# glslang SPIR-V size of values + gradient at n = 16 at 2x its budget
+step glsl-spirv-budget bash bench/glsl_spirv.sh --check 2
 # the second lane's steps, in its order (the -march=native variants run the same tests on this
 # machine's SIMD paths, AVX-512 / AVX2 kernels, with FMA contraction)
 wait "$lane_pid"

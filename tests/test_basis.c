@@ -782,6 +782,116 @@ static void make_sph(void) {
   }
 }
 
+/* shli_sh_core of the GLSL shape (tests/bands_impl.c, SHLIGHT_BY_BANDS 1: the first columns
+ * of the recurrence as one loop body, their Reinsch coefficients in closed form, computed in
+ * double on the way) against the C build's (the coefficients of the recurrence that
+ * tools/gen_basis.py runs, as literals): the doubles may differ in the last bits, so each value
+ * within one float ulp of the other; n = 1..16, random and near-pole directions. */
+void bands_sh_core(int n, double x, double y, double z, double t, float sg, float *out_y);
+void bands_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir, float ib,
+                   float (*out_grad)[3]);
+static void test_core_bands_match_lines(void) {
+  static float dr[64][3], dp[64][3];
+  float ya[256], yb[256];
+  int n, j, i;
+  long bad = 0, cmp = 0, same = 0;
+  gen_random(dr, 64);
+  gen_nearpole(dp, 64);
+  for (n = 1; n <= 16; n++) {
+    for (j = 0; j < 128; j++) {
+      const float *d = j < 64 ? dr[j] : dp[j - 64];
+      double x = d[0], y = d[1], z = d[2], r = sqrt(x * x + y * y + z * z);
+      double t;
+      float sg = z < 0.0 ? -1.0f : 1.0f;
+      x /= r;
+      y /= r;
+      z /= r;
+      t = (x * x + y * y) / (1.0 + fabs(z));
+      fill_canary(ya, 256);
+      fill_canary(yb, 256);
+      shli_sh_core(n, x, y, z, t, sg, ya);
+      bands_sh_core(n, x, y, z, t, sg, yb);
+      for (i = 0; i < n * n; i++) {
+        cmp++;
+        same += ya[i] == yb[i] ? 1 : 0;
+        if (!(yb[i] >= nextafterf(ya[i], -INFINITY) && yb[i] <= nextafterf(ya[i], INFINITY))) {
+          if (bad++ < 5) {
+            printf("  n=%d dir %d i=%d: lines %.9g bands %.9g\n", n, j, i, (double)ya[i],
+                   (double)yb[i]);
+          }
+        }
+      }
+      TL_CHECK(count_written(yb + n * n, (size_t)(256 - n * n)) == 0, "n=%d bands wrote past", n);
+    }
+  }
+  printf("  shli_sh_core, GLSL shape vs C: %ld of %ld values equal, %ld over 1 ulp\n", same, cmp,
+         bad);
+  TL_CHECK(bad == 0, "%ld values differ by more than 1 ulp", bad);
+}
+
+/* shli_sh_grad of the GLSL shape (tests/bands_impl.c, SHLIGHT_BY_BANDS 1: shli_sh_grad_bands,
+ * one loop body per band, its coefficients computed in double on the way) against the C
+ * build's (shli_sh_grad_lines, literal float coefficients), bit for bit (== : the two may differ
+ * only in the sign of a zero) where the target has no FMA to contract into; with FMA (the
+ * -march=native build) within 8 float epsilons of (l + 1) ir ib max|y| of bands l-1 and l, the
+ * size of the terms: n = 1..16, random and near-pole directions, 1 / |d| from 1e-3 to 1e30 and
+ * the split factors of tiny |d| (ir = ib = 1e20, outputs that overflow included). */
+static void test_grad_bands_match_lines(void) {
+  static float dr[64][3], dp[64][3];
+  static const float irs[4][2] = {
+      {1.0f, 1.0f}, {1.0e-3f, 1.0f}, {1.0e30f, 1.0f}, {1.0e20f, 1.0e20f}};
+  float ga[256][3], gb[256][3];
+  int n, j, s, i, c;
+  long bad = 0, cmp = 0, inf = 0, far = 0;
+  gen_random(dr, 64);
+  gen_nearpole(dp, 64);
+  for (n = 1; n <= 16; n++) {
+    for (j = 0; j < 128; j++) {
+      float *d = j < 64 ? dr[j] : dp[j - 64];
+      fnormalize(d);
+      shl_sh_eval(n, d, g_y);
+      for (s = 0; s < 4; s++) {
+        fill_canary(&ga[0][0], 768);
+        fill_canary(&gb[0][0], 768);
+        shli_sh_grad_lines(n, g_y, d[0], d[1], d[2], irs[s][0], irs[s][1], ga);
+        bands_sh_grad(n, g_y, d[0], d[1], d[2], irs[s][0], irs[s][1], gb);
+        for (i = 0; i < n * n; i++) {
+          int l = (int)sqrt((double)i), k;
+          double ym = 0.0;
+          for (k = l > 0 ? (l - 1) * (l - 1) : 0; k < (l + 1) * (l + 1); k++) {
+            ym = fmax(ym, fabs((double)g_y[k]));
+          }
+          for (c = 0; c < 3; c++) {
+            double tol =
+                8.0 * (double)FLT_EPSILON * (l + 1) * (double)irs[s][0] * (double)irs[s][1] * ym;
+            cmp++;
+            inf += isinf(ga[i][c]) ? 1 : 0;
+            if (!(ga[i][c] == gb[i][c] || fabs((double)ga[i][c] - (double)gb[i][c]) <= tol)) {
+              far++;
+            }
+            if (!(ga[i][c] == gb[i][c])) {
+              if (bad++ < 5) {
+                printf("  n=%d dir %d scale %d i=%d c=%d: lines %.9g bands %.9g\n", n, j, s, i, c,
+                       (double)ga[i][c], (double)gb[i][c]);
+              }
+            }
+          }
+        }
+        TL_CHECK(count_written(&gb[0][0] + 3 * n * n, (size_t)(3 * (256 - n * n))) == 0,
+                 "n=%d bands wrote past", n);
+      }
+    }
+  }
+  printf("  shli_sh_grad, GLSL shape vs C: %ld of %ld components differ, %ld past the "
+         "FMA bound (%ld inf)\n",
+         bad, cmp, far, inf);
+  TL_CHECK(far == 0, "%ld components past the FMA bound", far);
+#ifndef __FMA__
+  TL_CHECK(bad == 0, "%ld components differ", bad);
+#endif
+  TL_CHECK(inf > 0, "the overflowing case was not reached");
+}
+
 /* shl_sh_eval_grad_spherical vs shref_dtheta_dphi_d (sin theta >= 0.1).
  * Metric as for the Cartesian gradient: max abs error over dtheta and dphi relative to the
  * largest |dY| of the set; tolerance target_grad_rel(n) * max + 1e-7.  Report-only: the same
@@ -1503,6 +1613,8 @@ int main(void) {
   TL_RUN(test_addition_theorem);
   TL_RUN(test_grad_accuracy);
   TL_RUN(test_grad_values_match_eval);
+  TL_RUN(test_grad_bands_match_lines);
+  TL_RUN(test_core_bands_match_lines);
   TL_RUN(test_grad_spherical);
   TL_RUN(test_grad_from_spherical);
   TL_RUN(test_grad_spherical_pole);

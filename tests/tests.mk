@@ -29,13 +29,13 @@ TESTS_ASAN ?= -O1 -g1 -fsanitize=address,undefined -fno-sanitize-recover=undefin
 TESTS_QUADLIBS ?= -lquadmath -lm
 FUZZ_SECONDS ?= 60
 
-TESTS_BASIS_DEPS := tests/test_basis.c tests/ref/shref.h tests/tl.h shlight.h
+TESTS_BASIS_DEPS := tests/test_basis.c tests/bands_impl.c tests/ref/shref.h tests/tl.h shlight.h
 TESTS_GLM_DEPS := tests/test_glm.cpp tests/impl_c.c tests/tl.h shlight.h
 TESTS_FUZZ_DEPS := tests/fuzz_replay.c tests/fuzz_basis.c shlight.h
 
 $(TESTS_BUILD)/test_basis: $(TESTS_BASIS_DEPS)
 	@mkdir -p $(@D)
-	$(CC) $(TESTS_CFLAGS) -o $@ tests/test_basis.c $(TESTS_QUADLIBS)
+	$(CC) $(TESTS_CFLAGS) -o $@ tests/test_basis.c tests/bands_impl.c $(TESTS_QUADLIBS)
 
 $(TESTS_BUILD)/test_glm: $(TESTS_GLM_DEPS)
 	@mkdir -p $(@D)
@@ -49,7 +49,7 @@ $(TESTS_BUILD)/fuzz_replay: $(TESTS_FUZZ_DEPS)
 # sanitizer builds (gcc's ASan/UBSan; clang works too: make CC=clang CXX=clang++)
 $(TESTS_BUILD)/asan/test_basis: $(TESTS_BASIS_DEPS)
 	@mkdir -p $(@D)
-	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/test_basis.c $(TESTS_QUADLIBS)
+	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/test_basis.c tests/bands_impl.c $(TESTS_QUADLIBS)
 
 $(TESTS_BUILD)/asan/test_glm: $(TESTS_GLM_DEPS)
 	@mkdir -p $(@D)
@@ -100,7 +100,7 @@ fuzz: $(TESTS_BUILD)/fuzz_basis
 # batch), with FMA contraction as a user's -O3 -march=native build would have it.
 $(TESTS_BUILD)/native/test_basis: $(TESTS_BASIS_DEPS)
 	@mkdir -p $(@D)
-	$(CC) $(TESTS_CFLAGS) -march=native -ffp-contract=fast -o $@ tests/test_basis.c $(TESTS_QUADLIBS)
+	$(CC) $(TESTS_CFLAGS) -march=native -ffp-contract=fast -o $@ tests/test_basis.c tests/bands_impl.c $(TESTS_QUADLIBS)
 
 # The AVX-512F kernels a machine without AVX-512VL runs (512-bit across-m core, Horner forms),
 # on this machine's SIMD with VL turned off; elsewhere the portable paths.

@@ -40,6 +40,17 @@ def lit_d(v):
     return s
 
 
+def f32(v):
+    """v rounded to float"""
+    import struct
+    return struct.unpack('f', struct.pack('f', v))[0]
+
+
+def lit_fr(v):
+    """lit_f(v), or lit_f of the float nearest v where 9 digits of v round to another float"""
+    return lit_f(v) if f32(float(lit_f(v)[:-1])) == f32(v) else lit_f(f32(v))
+
+
 def lit_f(v):
     s = '%.9g' % float(v)
     if 'e' in s:
@@ -202,6 +213,8 @@ def gen_core_any(nmax):
             w('  }')
             w('#endif')
         prev, cur = 'xa', 'xb'
+        if m < CORE_LOOP_COLS and m + 1 < nmax:
+            L.extend(core_col_call(m))
         for l in range(m + 1, nmax):
             w('#if SHLIGHT_MAX_BANDS > %d' % l)
             w('  if (n > %d) {' % l)
@@ -225,11 +238,71 @@ def gen_core_any(nmax):
                 w('    out_y[%d] = xf * %s;' % (idx(l, -m), 'gs' if odd else 'fs'))
             w('  }')
             w('#endif')
+        if m < CORE_LOOP_COLS and m + 1 < nmax:
+            w('#endif')
     w('}')
     return declare(L, [('shli_real', 'pc', 'x'), ('shli_real', 'ps', 'y'), ('shli_real', 'qc', None),
                        ('float', 'fc', '0.0f'), ('float', 'fs', '0.0f'), ('float', 'gc', '0.0f'),
                        ('float', 'gs', '0.0f'), ('shli_real', 'xa', '0.0'), ('shli_real', 'xb', '0.0'),
                        ('shli_real', 'dd', '0.0'), ('float', 'xf', None)])
+
+
+def core_col_call(m):
+    """GLSL (SHLIGHT_BY_BANDS 1): column m < CORE_LOOP_COLS through shli_sh_core_col and a
+    copy loop; C: the straight-line steps that follow, up to the matching #endif"""
+    k = diag(m)
+    L = ['#if SHLIGHT_BY_BANDS',
+         '#if SHLIGHT_MAX_BANDS > %d' % (m + 1),
+         '  if (n > %d) {' % (m + 1),
+         '    float xs[16];',
+         '    int l;',
+         '    shli_sh_core_col(%d, t, %s, xs);' % (m, lit_d(k)),
+         '    for (l = %d; l < SHLIGHT_MAX_BANDS; ++l) {' % (m + 1),
+         '      if (n > l) {']
+    if m == 0:
+        L.append('        out_y[l * l + l] = l % 2 == 1 ? sg * xs[l] : xs[l];')
+    else:
+        L.append('        out_y[l * l + l + %d] = xs[l] * ((l - %d) %% 2 == 1 ? gc : fc);' % (m, m))
+        L.append('        out_y[l * l + l - %d] = xs[l] * ((l - %d) %% 2 == 1 ? gs : fs);' % (m, m))
+    L += ['      }', '    }', '  }', '#endif', '#else']
+    return L
+
+
+CORE_LOOP_COLS = 6  # columns m < 6 (75 of the 120 steps at 16 bands) run shli_sh_core_col
+
+
+# column m of the basis (1 <= l < 16 in order, l <= m zero): the recurrence of shli_sh_core's
+# straight-line steps with the coefficients computed on the way; xs[l], 16 entries, indexed by
+# the counter of a 16-trip loop makes shader compilers unroll it whatever the body costs.
+CORE_COL = '''SHLIGHT_INLINE void shli_sh_core_col(int m, shli_real t, shli_real k, float *out_xs) {
+  shli_real dd = 0.0;
+  shli_real xa = 0.0;
+  shli_real gp = 1.0;
+  shli_real al;
+  shli_real g;
+  int l;
+  for (l = 0; l < 16; ++l) {
+    out_xs[l] = 0.0f;
+    if (l > m) {
+      al = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (2 * l - 1)) / SHLIGHT_ITOR((l - m) * (l + m)));
+      g = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m)) / SHLIGHT_ITOR((2 * l - 1) * (l - m)));
+      if (l == m + 1) {
+        dd = -al * k * t;
+        xa = g * k + dd;
+      } else {
+        dd = SHLIGHT_SQRTR(SHLIGHT_ITOR((2 * l + 1) * (l + m - 1) * (l - m - 1)) /
+                           SHLIGHT_ITOR((2 * l - 3) * (l - m) * (l + m))) /
+                 gp * dd -
+             al * (t * xa);
+        xa = g * xa + dd;
+      }
+      gp = g;
+      out_xs[l] = SHLIGHT_FLOAT(xa);
+    }
+  }
+}'''
+
+
 
 
 def fmt_table_packed(ctype, name, size, vals, lit, per_row):
@@ -343,15 +416,16 @@ def gen_grad(n):
 
 
 def gen_grad_any(nmax):
-    """shli_sh_grad(n, y, nx, ny, nz, ir, out_grad): any 1 <= n <= nmax in one body, band l
-    under `if (n > l)` and `#if SHLIGHT_MAX_BANDS > l`; each output one SHLIGHT_SET3 (a vec3
-    store in GLSL, not three component writes), band l-1 times ir in r (a local: no reloads
-    in C, where y may alias out_grad), so c (y_j ir) rounds as before, each
-    output times ib (1: exact; shl_sh_eval_grad's second factor of 1 / |d| for tiny |d|)."""
+    """shli_sh_grad_lines(n, y, nx, ny, nz, ir, ib, out_grad) (C only): any 1 <= n <= nmax in
+    one straight-line body, band l under `if (n > l)` and `#if SHLIGHT_MAX_BANDS > l`; band l-1
+    times ir in r (a local: no reloads, y may alias out_grad), so c (y_j ir) rounds as the
+    table's coefficients do, each output times ib (1: exact; shl_sh_eval_grad's second factor
+    of 1 / |d| for tiny |d|). The mirrored kernel (GLSL) is shli_sh_grad_bands: one loop body per
+    band, computing the same coefficients, which shader compilers unroll and fold."""
     L = []
     w = L.append
-    w('SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir,')
-    w('                                 float ib, float (*out_grad)[3]) {')
+    w('SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, float ny, float nz,')
+    w('                                           float ir, float ib, float (*out_grad)[3]) {')
     w('  float r[%d];' % (2 * nmax - 3))
     w('  float lr;')
     w('  float q;')
@@ -376,13 +450,104 @@ def gen_grad_any(nmax):
             w('    q = lr * y[%d];' % i)
             ex = []
             for g, nk in zip(grad_terms(l, m), ('nx', 'ny', 'nz')):
-                expr = ' + '.join('%s * r[%d]' % (lit_f(cf), j - p0) for cf, j in g)
+                expr = ' + '.join('%s * r[%d]' % (lit_fr(cf), j - p0) for cf, j in g)
                 ex.append(('(%s - q * %s) * ib' % (expr, nk)) if expr else ('-q * %s * ib' % nk))
             w('    SHLIGHT_SET3(out_grad[%d], %s, %s, %s);' % (i, ex[0], ex[1], ex[2]))
         w('  }')
         w('#endif')
     w('}')
+    w('')
+    w(GRAD_BAND)
+    w('')
+    w('SHLIGHT_INLINE void shli_sh_grad_bands(int n, const float *y, float nx, float ny, float nz,')
+    w('                                       float ir, float ib, float (*out_grad)[3]) {')
+    w('  float gb[%d];' % (3 * (2 * nmax - 1)))
+    w('  int k;')
+    w('  SHLIGHT_SET3(out_grad[0], 0.0f, 0.0f, 0.0f);')
+    h = nmax - 1
+    for l in range(1, nmax):
+        w('#if SHLIGHT_MAX_BANDS > %d' % l)
+        w('  if (n > %d) {' % l)
+        w('    shli_sh_grad_band(%d, y, nx, ny, nz, ir, ib, gb);' % l)
+        w('    for (k = %d; k <= %d; ++k) {' % (h - l, h + l))
+        off = l * l + l - h
+        w('      SHLIGHT_SET3(out_grad[k %s %d], gb[3 * k], gb[3 * k + 1], gb[3 * k + 2]);'
+          % ('+' if off >= 0 else '-', abs(off)))
+        w('    }')
+        w('  }')
+        w('#endif')
+    w('}')
+    w('')
+    w('SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir,')
+    w('                                 float ib, float (*out_grad)[3]) {')
+    w('#if SHLIGHT_BY_BANDS')
+    w('#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS')
+    w('  if (n > SHLIGHT_UNROLLED_BANDS) {')
+    w('    shli_sh_grad_loop(n, y, nx, ny, nz, ir, ib, out_grad);')
+    w('    return;')
+    w('  }')
+    w('#endif')
+    w('  shli_sh_grad_bands(n, y, nx, ny, nz, ir, ib, out_grad);')
+    w('#else')
+    w('  shli_sh_grad_lines(n, y, nx, ny, nz, ir, ib, out_grad);')
+    w('#endif')
+    w('}')
     return L
+
+
+# band l (1..15) of the gradient as one loop over the orders m = k - 15, k < 31: band l-1
+# times ir in rb (zero outside it), the coefficients of grad_abc and grad_terms computed in
+# shli_real in the order grad_abc uses (so in C they round to the constants of
+# shli_sh_grad_lines), outputs at out_gb[3 k ..]. rb[k], 31 entries, indexed by the counter of
+# a 31-trip loop makes shader compilers unroll both loops whatever the body costs.
+GRAD_BAND = '''SHLIGHT_INLINE void shli_sh_grad_band(int l, const float *y, float nx, float ny, float nz,
+                                      float ir, float ib, float *out_gb) {
+  float rb[31];
+  shli_real f = SHLIGHT_ITOR(2 * l + 1) / SHLIGHT_ITOR(2 * l - 1);
+  shli_real a;
+  float lr = SHLIGHT_ITOF(l) * ir;
+  float ca;
+  float cb;
+  float cc;
+  float ap;
+  float bp;
+  float q;
+  float gx;
+  float gy;
+  int k;
+  int m;
+  int am;
+  for (k = 0; k < 31; ++k) {
+    rb[k] = 0.0f;
+    if (k >= 16 - l && k <= 14 + l) {
+      rb[k] = y[l * l - l + k - 15] * ir;
+    }
+  }
+  for (k = 0; k < 31; ++k) {
+    m = k - 15;
+    am = m < 0 ? -m : m;
+    if (am <= l) {
+      a = -0.5 * SHLIGHT_SQRTR(f * SHLIGHT_ITOR(l + am) * SHLIGHT_ITOR(l + am - 1));
+      ca = SHLIGHT_FLOAT(a);
+      ap = am == 1 ? SHLIGHT_FLOAT(a * 1.4142135623730951) : ca;
+      a = 0.5 * SHLIGHT_SQRTR(f * SHLIGHT_ITOR((l - am) * (l - am - 1)));
+      cb = SHLIGHT_FLOAT(a);
+      bp = am == 0 ? SHLIGHT_FLOAT(a * 1.4142135623730951) : cb;
+      cc = SHLIGHT_FLOAT(SHLIGHT_SQRTR(f * SHLIGHT_ITOR(l - am) * SHLIGHT_ITOR(l + am)));
+      if (m >= 0) {
+        gx = (am >= 1 ? ap * rb[k - 1] : 0.0f) + (am + 1 < l ? bp * rb[k + 1] : 0.0f);
+        gy = (am >= 2 ? -ca * rb[31 - k] : 0.0f) + (am + 1 < l ? bp * rb[29 - k] : 0.0f);
+      } else {
+        gx = (am >= 2 ? ca * rb[k + 1] : 0.0f) + (am + 1 < l ? cb * rb[k - 1] : 0.0f);
+        gy = ap * rb[29 - k] + (am + 1 < l ? -cb * rb[31 - k] : 0.0f);
+      }
+      q = lr * y[l * l + l + m];
+      out_gb[3 * k] = (gx - q * nx) * ib;
+      out_gb[3 * k + 1] = (gy - q * ny) * ib;
+      out_gb[3 * k + 2] = (cc * rb[k] - q * nz) * ib;
+    }
+  }
+}'''
 
 
 def gen_grad_tables():
@@ -698,7 +863,7 @@ def c_regions():
     body = []
     for n in range(1, POLY_BANDS + 1):
         body += [''] + gen_poly(n)
-    body += [''] + gen_core_any(UNROLLED)
+    body += ['', CORE_COL, ''] + gen_core_any(UNROLLED)
     R['basis'] = body
     R['gradient'] = gen_grad_any(UNROLLED)
     R['batch'] = gen_batch_tables()
@@ -733,7 +898,8 @@ ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
                'out_idx': '4', 'out_w': '4', 'tab': 'SHLIGHT_BRDF_TABLE_FLOATS',
                'out_range': '2', 'io_split': 'SHLIGHT_HALF_K', 'io_am': '2', 'out_par': '5',
                'kv': 'SHLIGHT_MAX_BANDS', 'kg': 'SHLIGHT_MAX_BANDS', 'ka': 'SHLIGHT_MAX_BANDS',
-               'kb': 'SHLIGHT_MAX_BANDS', 'wg': '6', 'out_q': '2'}
+               'kb': 'SHLIGHT_MAX_BANDS', 'wg': '6', 'out_gb': '93',
+               'out_xs': '16', 'out_q': '2'}
 
 
 def glsl_param(prm, fname):

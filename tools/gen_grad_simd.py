@@ -21,6 +21,7 @@ l-1 (index < 0 or > 2l-2) has coefficient 0; the permute then reads some finite 
 (P is zero beyond its 2l-1 lanes, and the index is taken mod 16 or mod 32), so the product is 0.
 """
 import math
+import struct
 import sys
 
 NB = 16  # bands
@@ -64,6 +65,9 @@ def lit(v):
     if v == 0.0:
         return '0.0f'
     s = '%.9g' % v
+    f = struct.unpack('f', struct.pack('f', v))[0]
+    if struct.unpack('f', struct.pack('f', float(s)))[0] != f:
+        s = '%.9g' % f  # 9 digits of v round to another float: the float nearest v
     if '.' not in s and 'e' not in s:
         s += '.0'
     return s + 'f'
