@@ -2817,7 +2817,7 @@ static const double SHLI_ROT_X90[320] = {
 #define SHLI_ROT_K0(src) ((src) == 2 ? 1 : 0)
 #define SHLI_ROT_K1(l, src) ((src) == 0 || (src) == 2 ? (l) / 2 + 1 : ((l) + 1) / 2)
 typedef double shli_rot_v4 __attribute__((vector_size(32)));
-typedef long long shli_rot_i4 __attribute__((vector_size(32)));
+typedef __INT64_TYPE__ shli_rot_i4 __attribute__((vector_size(32)));
 /* lanes i, j, k, m of a (0..3) and b (4..7) */
 #if defined(__clang__)
 #define SHLI_ROT_SHUF(a, b, i, j, k, m) __builtin_shufflevector(a, b, i, j, k, m)
@@ -5782,6 +5782,13 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
   return SHLIGHT_FLOAT(SHLIGHT_MAXR(par[3] * sum, 0.0) * 0.15915494309189534);
 }
 
+/* 64-bit unsigned for the bit patterns of doubles (the compiler's own name where it has one:
+   long long is not C++98) */
+#if defined(__UINT64_TYPE__)
+typedef __UINT64_TYPE__ shli_u64;
+#else
+typedef unsigned long long shli_u64;
+#endif
 /* The microfacet polygon lights' transcendentals (SHLIGHT_MEXP, SHLIGHT_MLOG, SHLIGHT_MSIN,
    SHLIGHT_MCOS; GLSL: the built-ins): shlight's own double polynomials in C, relative error
    below 1e-15 (tests/test_ggx.c), a third of libm's instructions. exp: x clamped to
@@ -5793,7 +5800,7 @@ SHLIGHT_CPU_INLINE double shli_mexp(double x) {
   double kd;
   double r;
   double p;
-  unsigned long long b;
+  shli_u64 b;
   x = x < -708.0 ? -708.0 : (x > 709.0 ? 709.0 : x);
   kd = (x * 1.4426950408889634 + 6755399441055744.0) - 6755399441055744.0;
   r = x - kd * 0.6931471803691238 - kd * 1.9082149292705877e-10;
@@ -5809,12 +5816,12 @@ SHLIGHT_CPU_INLINE double shli_mexp(double x) {
   p = 0.16666666666666666 + r * p;
   p = 0.5 + r * p;
   p = 1.0 + r * (1.0 + r * p);
-  b = (unsigned long long)((int)kd + 1023) << 52;
+  b = (shli_u64)((int)kd + 1023) << 52;
   memcpy(&r, &b, sizeof r);
   return p * r;
 }
 SHLIGHT_CPU_INLINE double shli_mlog(double x) {
-  unsigned long long b;
+  shli_u64 b;
   int e;
   double m;
   double s;
@@ -5822,7 +5829,7 @@ SHLIGHT_CPU_INLINE double shli_mlog(double x) {
   double p;
   memcpy(&b, &x, sizeof b);
   e = (int)(b >> 52) - 1023;
-  b = (b & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL;
+  b = (b & (((shli_u64)0xfffffu << 32) | 0xffffffffu)) | ((shli_u64)0x3ff00000u << 32);
   memcpy(&m, &b, sizeof m);
   if (m > 1.4142135623730951) {
     m = 0.5 * m;
