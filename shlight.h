@@ -1302,8 +1302,9 @@ SHLIGHT_CPU_INLINE void shli_sh_reinsch(int l, int m, shli_real *out_a, shli_rea
 }
 
 /* Run-time loop for any n: the same recurrence as the generated code, constants from
-   shli_sh_reinsch. x, y, z: unit direction; t = 1 - |z| computed without cancellation; sg: sign
-   of z (the recurrence runs at |z| and the parity (-1)^(l-m) is restored through U, V). */
+   shli_sh_reinsch (the same products, walked by pointers and counters along the column). x, y,
+   z: unit direction; t = 1 - |z| computed without cancellation; sg: sign of z (the recurrence
+   runs at |z| and the parity (-1)^(l-m) is restored through U, V). */
 SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_real z, shli_real t,
                                           float sg, float *out_y) {
   shli_real pc = 1.0;
@@ -1311,6 +1312,14 @@ SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_
   shli_real qc;
   shli_real xa;
   shli_real dd;
+  shli_real q;
+  shli_real gq;
+  shli_real fg;
+  shli_real fc;
+  const shli_real *qa;
+  const shli_real *qb;
+  const shli_real *sl;
+  float *o;
   float ec;
   float es;
   float oc;
@@ -1318,12 +1327,8 @@ SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_
   float sw;
   float k;
   float xf;
-  shli_real ra;
-  shli_real rg;
-  shli_real rc;
   int m;
   int l;
-  int b;
   SHLIGHT_UNUSED(z);
   for (m = 0; m < n; ++m) {
     if (m > 0) {
@@ -1342,10 +1347,19 @@ SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_
     }
     xa = SHLIGHT_REAL(k);
     dd = 0.0;
+    /* step l: q = RSQ[l - m] RSQ[l + m], s1_l = S12[2l], s2_l = S12[2l + 1], l + m and
+       l - m - 1 as counters; o = out_y + l (l + 1) */
+    qa = SHLI_SH_RSQ + 1;
+    qb = SHLI_SH_RSQ + 2 * m + 1;
+    sl = SHLI_SH_S12 + 2 * m + 2;
+    fg = SHLIGHT_REAL(2 * m + 1);
+    fc = 0.0;
+    o = out_y + (m + 1) * (m + 2);
     for (l = m + 1; l < n; ++l) {
-      shli_sh_reinsch(l, m, &ra, &rg, &rc);
-      dd = rc * dd - (ra * t) * xa;
-      xa = rg * xa + dd;
+      q = qa[0] * qb[0];
+      gq = sl[1] * q;
+      dd = (gq * fc) * dd - ((sl[0] * q) * t) * xa;
+      xa = (gq * fg) * xa + dd;
       xf = SHLIGHT_FLOAT(xa);
       sw = ec;
       ec = oc;
@@ -1353,11 +1367,16 @@ SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_
       sw = es;
       es = os;
       os = sw;
-      b = l * (l + 1);
-      out_y[b + m] = xf * ec;
+      o[m] = xf * ec;
       if (m > 0) {
-        out_y[b - m] = xf * es;
+        o[-m] = xf * es;
       }
+      qa = qa + 1;
+      qb = qb + 1;
+      sl = sl + 2;
+      fg = fg + 1.0;
+      fc = fc + 1.0;
+      o = o + 2 * (l + 1);
     }
   }
 }
