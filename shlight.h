@@ -8829,8 +8829,8 @@ SHLI_BATCH_INLINE void shli_sh_batch_poly(int n, int nv, int nt, const float *px
       (dd) = SHLI_VMULS(SHLI_VSET(c_[0]), t[v]);                                                   \
       (xa) = SHLI_VADD(SHLI_VSET(c_[1]), (dd));                                                    \
     } else {                                                                                       \
-      SHLI_V e_ = SHLI_VMULS(t[v], (xa));                                                          \
-      (dd) = SHLI_VFMS2(SHLI_VSET(c_[2]), (dd), SHLI_VSET(c_[0]), e_);                             \
+      SHLI_V a_ = SHLI_VMULS(SHLI_VSET(c_[0]), t[v]);                                              \
+      (dd) = SHLI_VNMADD(a_, (xa), SHLI_VMULS(SHLI_VSET(c_[2]), (dd)));                            \
       (xa) = SHLI_VMADDS(SHLI_VSET(c_[1]), (xa), (dd));                                            \
     }                                                                                              \
   } while (0)
@@ -8913,13 +8913,14 @@ SHLI_BATCH_INLINE void shli_sh_batch_rsu(int n, int nv, const float *px, const f
 #undef SHLI_COL0
 #endif
 #undef SHLI_BSTOREI
-/* one Reinsch step of every vector: X~, D~ of the previous band to this one's (constants c) */
+/* one Reinsch step of every vector: X~, D~ of the previous band to this one's (constants c),
+   D = c D - (alpha t) X with alpha t off the chain: two FMA latencies a band, not four */
 #define SHLI_BSTEP(c, xa, dd)                                                                      \
   do {                                                                                             \
     SHLI_UNROLL_BATCH                                                                              \
     for (v = 0; v < nv; ++v) {                                                                     \
-      SHLI_V e_ = SHLI_VMULS(t[v], (xa)[v]);                                                       \
-      (dd)[v] = SHLI_VFMS2(SHLI_VSET((c)[2]), (dd)[v], SHLI_VSET((c)[0]), e_);                     \
+      SHLI_V a_ = SHLI_VMULS(SHLI_VSET((c)[0]), t[v]);                                             \
+      (dd)[v] = SHLI_VNMADD(a_, (xa)[v], SHLI_VMULS(SHLI_VSET((c)[2]), (dd)[v]));                  \
       (xa)[v] = SHLI_VMADDS(SHLI_VSET((c)[1]), (xa)[v], (dd)[v]);                                  \
     }                                                                                              \
   } while (0)
