@@ -1348,13 +1348,13 @@ SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_
     xa = SHLIGHT_REAL(k);
     dd = 0.0;
     /* step l: q = RSQ[l - m] RSQ[l + m], s1_l = S12[2l], s2_l = S12[2l + 1], l + m and
-       l - m - 1 as counters; o = out_y + l (l + 1) */
+       l - m - 1 as counters; o = out_y + l (l + 1), moved before the stores */
     qa = SHLI_SH_RSQ + 1;
     qb = SHLI_SH_RSQ + 2 * m + 1;
     sl = SHLI_SH_S12 + 2 * m + 2;
     fg = SHLIGHT_REAL(2 * m + 1);
     fc = 0.0;
-    o = out_y + (m + 1) * (m + 2);
+    o = out_y + m * (m + 1);
     for (l = m + 1; l < n; ++l) {
       q = qa[0] * qb[0];
       gq = sl[1] * q;
@@ -1367,6 +1367,7 @@ SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_
       sw = es;
       es = os;
       os = sw;
+      o = o + 2 * l;
       o[m] = xf * ec;
       if (m > 0) {
         o[-m] = xf * es;
@@ -1376,7 +1377,6 @@ SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_
       sl = sl + 2;
       fg = fg + 1.0;
       fc = fc + 1.0;
-      o = o + 2 * (l + 1);
     }
   }
 }
