@@ -1657,13 +1657,11 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16(int n, float x, float y, float z,
   }
 }
 
-/* n > 16: up to four registers (chunks of 16 orders) per band. Band l's step in chunk h: the
-   constants (shli_sh_reinsch) in float from s2_l q (SHLI_SH_LANEQ, one masked load: orders
-   m >= l get 0, and g = 1 by the mask, the identity step (0, 1, 0)) and the integers l + m,
-   m - l + 1 of the chunk's orders (SHLI_SH_LANEK); then the outputs: cosines at l (l + 1) + m,
-   sines (Y_l^-m) at l (l + 1) - m, ascending addresses for descending m. xv, dd: the chunk's
-   X, D (named registers: an array indexed by a run-time chunk number lives on the stack and
-   puts a store and a reload on the band chain); cc, ss: its order lanes for band l's parity. */
+/* n > 16: up to four registers (chunks of 16 orders) per band. Band l's step in chunk h, the
+   constants as in shli_sh_reinsch (float: s2_l q from SHLI_SH_LANEQ, masked: orders m >= l get
+   the identity step; l + m, m - l + 1 from SHLI_SH_LANEK), then the cosines and the sines
+   (descending m). xv, dd, cc, ss: named registers (arrays indexed by a run-time chunk number
+   went to the stack, on the band chain). */
 #define SHLI_SH_CHUNK512(h, xv, dd, cc, ss)                                                        \
   do {                                                                                             \
     __mmask16 mk = (__mmask16) ~((__mmask64)0xFFFF << (l - 16 * (h)));                             \
