@@ -1335,8 +1335,9 @@ SHLIGHT_CPU_INLINE void shli_sh_reinsch(int l, int m, shli_real *out_a, shli_rea
 }
 
 /* Run-time loop for any n: the same recurrence as the generated code, constants from
-   shli_sh_reinsch. x, y, z: unit direction; t = 1 - |z| computed without cancellation; sg: sign
-   of z (the recurrence runs at |z| and the parity (-1)^(l-m) is restored through U, V). */
+   shli_sh_reinsch (the same products, walked by pointers and counters along the column). x, y,
+   z: unit direction; t = 1 - |z| computed without cancellation; sg: sign of z (the recurrence
+   runs at |z| and the parity (-1)^(l-m) is restored through U, V). */
 SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_real z, shli_real t,
                                           float sg, float *out_y) {
   shli_real pc = 1.0;
@@ -1344,6 +1345,14 @@ SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_
   shli_real qc;
   shli_real xa;
   shli_real dd;
+  shli_real q;
+  shli_real gq;
+  shli_real fg;
+  shli_real fc;
+  const shli_real *qa;
+  const shli_real *qb;
+  const shli_real *sl;
+  float *o;
   float ec;
   float es;
   float oc;
@@ -1351,12 +1360,8 @@ SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_
   float sw;
   float k;
   float xf;
-  shli_real ra;
-  shli_real rg;
-  shli_real rc;
   int m;
   int l;
-  int b;
   SHLIGHT_UNUSED(z);
   for (m = 0; m < n; ++m) {
     if (m > 0) {
@@ -1375,10 +1380,19 @@ SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_
     }
     xa = SHLIGHT_REAL(k);
     dd = 0.0;
+    /* step l: q = RSQ[l - m] RSQ[l + m], s1_l = S12[2l], s2_l = S12[2l + 1], l + m and
+       l - m - 1 as counters; o = out_y + l (l + 1), moved before the stores */
+    qa = SHLI_SH_RSQ + 1;
+    qb = SHLI_SH_RSQ + 2 * m + 1;
+    sl = SHLI_SH_S12 + 2 * m + 2;
+    fg = SHLIGHT_REAL(2 * m + 1);
+    fc = 0.0;
+    o = out_y + m * (m + 1);
     for (l = m + 1; l < n; ++l) {
-      shli_sh_reinsch(l, m, &ra, &rg, &rc);
-      dd = rc * dd - (ra * t) * xa;
-      xa = rg * xa + dd;
+      q = qa[0] * qb[0];
+      gq = sl[1] * q;
+      dd = (gq * fc) * dd - ((sl[0] * q) * t) * xa;
+      xa = (gq * fg) * xa + dd;
       xf = SHLIGHT_FLOAT(xa);
       sw = ec;
       ec = oc;
@@ -1386,11 +1400,16 @@ SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_
       sw = es;
       es = os;
       os = sw;
-      b = l * (l + 1);
-      out_y[b + m] = xf * ec;
+      o = o + 2 * l;
+      o[m] = xf * ec;
       if (m > 0) {
-        out_y[b - m] = xf * es;
+        o[-m] = xf * es;
       }
+      qa = qa + 1;
+      qb = qb + 1;
+      sl = sl + 2;
+      fg = fg + 1.0;
+      fc = fc + 1.0;
     }
   }
 }
@@ -1665,81 +1684,134 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16(int n, float x, float y, float z,
   }
 }
 
-/* n > 16: up to four registers (chunks of 16 orders) per band */
+/* n > 16: up to four registers (chunks of 16 orders) per band. Band l's step in chunk h, the
+   constants as in shli_sh_reinsch (float: s2_l q from SHLI_SH_LANEQ, masked: orders m >= l get
+   the identity step; l + m, m - l + 1 from SHLI_SH_LANEK), then the cosines and the sines
+   (descending m). xv, dd, cc, ss: named registers (arrays indexed by a run-time chunk number
+   went to the stack, on the band chain). */
+#define SHLI_SH_CHUNK512(h, xv, dd, cc, ss)                                                        \
+  do {                                                                                             \
+    __mmask16 mk = (__mmask16) ~((__mmask64)0xFFFF << (l - 16 * (h)));                             \
+    __m512 gq = _mm512_maskz_loadu_ps(mk, lq + 16 * (h)), ys;                                      \
+    __m512 at = _mm512_mul_ps(gq, wt);                                                             \
+    __m512 cn = _mm512_mul_ps(gq, _mm512_loadu_ps(SHLI_SH_LANEK + 64 + 16 * (h)-l));               \
+    __m512 gg =                                                                                    \
+        _mm512_mask_mul_ps(one, mk, gq, _mm512_loadu_ps(SHLI_SH_LANEK + 63 + 16 * (h) + l));       \
+    int top = l < 16 * (h) + 15 ? l : 16 * (h) + 15; /* largest order of the chunk in band l */    \
+    int lo = (h) > 0 ? 16 * (h) : 1;                 /* smallest sine order of the chunk */        \
+    dd = _mm512_fnmsub_ps(at, xv, _mm512_mul_ps(cn, dd)); /* D = c D - alpha t X, cn = -c */       \
+    xv = _mm512_fmadd_ps(gg, xv, dd);                                                              \
+    ys = _mm512_permutexvar_ps(                                                                    \
+        _mm512_loadu_si512((const void *)(SHLI_SH_LANER + 15 - (top - 16 * (h)))),                 \
+        _mm512_mul_ps(xv, ss));                                                                    \
+    _mm512_mask_storeu_ps(out_y + l * l + l - top, (__mmask16)((2u << (top - lo)) - 1u), ys);      \
+    _mm512_mask_storeu_ps(out_y + l * l + l + 16 * (h),                                            \
+                          (__mmask16)((2u << (top - 16 * (h))) - 1u), _mm512_mul_ps(xv, cc));      \
+  } while (0)
+/* band l (then l + 1) in the chunks 0 .. nk - 1; P: the parity's order lanes, c or co */
+#define SHLI_SH_BAND512(nk, P)                                                                     \
+  do {                                                                                             \
+    const float *lq = SHLI_SH_LANEQ + (l * (l - 1)) / 2;                                           \
+    __m512 wt = _mm512_mul_ps(_mm512_set1_ps((float)(2 * l - 1)), vt);                             \
+    SHLI_SH_CHUNK512(0, x0, d0, P##0, P##s0);                                                      \
+    if ((nk) > 1) {                                                                                \
+      SHLI_SH_CHUNK512(1, x1, d1, P##1, P##s1);                                                    \
+    }                                                                                              \
+    if ((nk) > 2) {                                                                                \
+      SHLI_SH_CHUNK512(2, x2, d2, P##2, P##s2);                                                    \
+    }                                                                                              \
+    if ((nk) > 3) {                                                                                \
+      SHLI_SH_CHUNK512(3, x3, d3, P##3, P##s3);                                                    \
+    }                                                                                              \
+    ++l;                                                                                           \
+  } while (0)
+/* bands up to e (exclusive) with nk chunks, two a trip (even, odd) from an even l */
+#define SHLI_SH_BANDS512(nk, end)                                                                  \
+  for (; l + 1 < (end);) {                                                                         \
+    SHLI_SH_BAND512(nk, e);                                                                        \
+    SHLI_SH_BAND512(nk, o);                                                                        \
+  }                                                                                                \
+  if (l < (end)) {                                                                                 \
+    SHLI_SH_BAND512(nk, e);                                                                        \
+  }
 SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, float *out_y) {
   static const unsigned short bits[4] = {0xAAAA, 0xCCCC, 0xF0F0, 0xFF00};
   /* float prologue, short latency: t = 1 - |z| / |d| = s2 / (|d| (|d| + |z|)) is s2 / (1 + |z|)
      to a relative O(|d| - 1), no normalisation needed; (x + iy) is renormalised to second
      order with e = |d|^2 - 1 formed without cancellation near the poles */
   float s2 = x * x + y * y;
-  float e = (z - 1.0f) * (z + 1.0f) + s2;
-  float k = 1.0f + e * (-0.5f + 0.375f * e);
-  float cr = x * k, ci = y * k, sg, q;
-  /* up to 4 chunks of 16 orders: lanes j of chunk h hold m = 16 h + j */
-  __m512 c[4], s[4], co[4], so[4], xv[4], dd[4], vs, vt, one = _mm512_set1_ps(1.0f);
-  int b, l, h, nh = (n + 15) >> 4;
+  float ez = (z - 1.0f) * (z + 1.0f) + s2;
+  float k = 1.0f + ez * (-0.5f + 0.375f * ez);
+  float cr = x * k, ci = y * k, q;
+  /* chunk h: lanes j hold m = 16 h + j; e0.., es0..: (x + iy)^m times sg^m (even bands),
+     o0.., os0..: times sg^(m + 1) (odd bands) */
+  __m512 e0, e1, e2, e3, es0, es1, es2, es3, o0, o1, o2, o3, os0, os1, os2, os3;
+  __m512 x0, x1, x2, x3, d0, d1, d2, d3, vs, vt, vc, vi, one = _mm512_set1_ps(1.0f);
+  __mmask16 odd = (__mmask16)0xAAAA;
+  int b, l;
   vt = _mm512_set1_ps(s2 / (1.0f + fabsf(z)));
-  sg = copysignf(1.0f, z);
-  vs = _mm512_set1_ps(sg);
-  c[0] = _mm512_set1_ps(1.0f);
-  s[0] = _mm512_setzero_ps();
-  /* lane j gets (x + iy)^j as the product of (x + iy)^(2^b) over the set bits b of j */
-  for (b = 0; b < 4 && (1 << b) < n; ++b) {
-    __m512 vc = _mm512_set1_ps(cr), vi = _mm512_set1_ps(ci);
-    __m512 nc = _mm512_fmsub_ps(c[0], vc, _mm512_mul_ps(s[0], vi));
-    __m512 ns = _mm512_fmadd_ps(s[0], vc, _mm512_mul_ps(c[0], vi));
-    c[0] = _mm512_mask_mov_ps(c[0], (__mmask16)bits[b], nc);
-    s[0] = _mm512_mask_mov_ps(s[0], (__mmask16)bits[b], ns);
+  vs = _mm512_set1_ps(copysignf(1.0f, z));
+  e0 = one;
+  es0 = _mm512_setzero_ps();
+  /* lane j gets (x + iy)^j as the product of (x + iy)^(2^b) over the set bits b of j; chunk h
+     is chunk h - 1 times (x + iy)^16 (cr, ci hold it after four squarings) */
+  for (b = 0; b < 4; ++b) {
+    __m512 nc, ns;
+    vc = _mm512_set1_ps(cr);
+    vi = _mm512_set1_ps(ci);
+    nc = _mm512_fmsub_ps(e0, vc, _mm512_mul_ps(es0, vi));
+    ns = _mm512_fmadd_ps(es0, vc, _mm512_mul_ps(e0, vi));
+    e0 = _mm512_mask_mov_ps(e0, (__mmask16)bits[b], nc);
+    es0 = _mm512_mask_mov_ps(es0, (__mmask16)bits[b], ns);
     q = cr * cr - ci * ci;
     ci = 2.0f * cr * ci;
     cr = q;
   }
-  /* chunk h = chunk h-1 times (x + iy)^16 (cr, ci hold it after four squarings) */
-  for (h = 1; h < nh; ++h) {
-    __m512 vc = _mm512_set1_ps(cr), vi = _mm512_set1_ps(ci);
-    c[h] = _mm512_fmsub_ps(c[h - 1], vc, _mm512_mul_ps(s[h - 1], vi));
-    s[h] = _mm512_fmadd_ps(s[h - 1], vc, _mm512_mul_ps(c[h - 1], vi));
-  }
+  vc = _mm512_set1_ps(cr);
+  vi = _mm512_set1_ps(ci);
+  e1 = _mm512_fmsub_ps(e0, vc, _mm512_mul_ps(es0, vi));
+  es1 = _mm512_fmadd_ps(es0, vc, _mm512_mul_ps(e0, vi));
+  e2 = _mm512_fmsub_ps(e1, vc, _mm512_mul_ps(es1, vi));
+  es2 = _mm512_fmadd_ps(es1, vc, _mm512_mul_ps(e1, vi));
+  e3 = _mm512_fmsub_ps(e2, vc, _mm512_mul_ps(es2, vi));
+  es3 = _mm512_fmadd_ps(es2, vc, _mm512_mul_ps(e2, vi));
   /* parity: X_l^m(z) = sg^(l-m) X_l^m(|z|); sg^m into the odd lanes (16 h is even), sg^l per
-     band through the odd-band copies co, so */
-  for (h = 0; h < nh; ++h) {
-    c[h] = _mm512_mask_mul_ps(c[h], (__mmask16)0xAAAA, c[h], vs);
-    s[h] = _mm512_mask_mul_ps(s[h], (__mmask16)0xAAAA, s[h], vs);
-    co[h] = _mm512_mul_ps(c[h], vs);
-    so[h] = _mm512_mul_ps(s[h], vs);
-    xv[h] = _mm512_loadu_ps(SHLI_SH_DIAG + 16 * h);
-    dd[h] = _mm512_setzero_ps();
-  }
+     band through the odd-band copies */
+  e0 = _mm512_mask_mul_ps(e0, odd, e0, vs);
+  e1 = _mm512_mask_mul_ps(e1, odd, e1, vs);
+  e2 = _mm512_mask_mul_ps(e2, odd, e2, vs);
+  e3 = _mm512_mask_mul_ps(e3, odd, e3, vs);
+  es0 = _mm512_mask_mul_ps(es0, odd, es0, vs);
+  es1 = _mm512_mask_mul_ps(es1, odd, es1, vs);
+  es2 = _mm512_mask_mul_ps(es2, odd, es2, vs);
+  es3 = _mm512_mask_mul_ps(es3, odd, es3, vs);
+  o0 = _mm512_mul_ps(e0, vs);
+  o1 = _mm512_mul_ps(e1, vs);
+  o2 = _mm512_mul_ps(e2, vs);
+  o3 = _mm512_mul_ps(e3, vs);
+  os0 = _mm512_mul_ps(es0, vs);
+  os1 = _mm512_mul_ps(es1, vs);
+  os2 = _mm512_mul_ps(es2, vs);
+  os3 = _mm512_mul_ps(es3, vs);
+  x0 = _mm512_loadu_ps(SHLI_SH_DIAG);
+  x1 = _mm512_loadu_ps(SHLI_SH_DIAG + 16);
+  x2 = _mm512_loadu_ps(SHLI_SH_DIAG + 32);
+  x3 = _mm512_loadu_ps(SHLI_SH_DIAG + 48);
+  d0 = _mm512_setzero_ps();
+  d1 = d0;
+  d2 = d0;
+  d3 = d0;
   out_y[0] = SHLI_SH_DIAG[0];
-  for (l = 1; l < n; ++l) {
-    /* the step's constants (shli_sh_reinsch) in float from s2_l q (SHLI_SH_LANEQ, one
-       masked load: orders m >= l get 0, and g = 1 by the mask, the identity step (0, 1, 0))
-       and the integers l + m, m - l + 1 of the chunk's orders (SHLI_SH_LANEK) */
-    __m512 wt = _mm512_mul_ps(_mm512_set1_ps((float)(2 * l - 1)), vt);
-    const float *lq = SHLI_SH_LANEQ + (l * (l - 1)) / 2;
-    for (h = 0; h <= (l >> 4); ++h) { /* chunks whose lowest order m = 16 h has started */
-      /* orders m < l (a 64-bit shift: l - 16 h <= 63; __mmask64, no long long literal) */
-      __mmask16 mk = (__mmask16) ~((__mmask64)0xFFFF << (l - 16 * h));
-      __m512 gq = _mm512_maskz_loadu_ps(mk, lq + 16 * h), yc, ys;
-      __m512 at = _mm512_mul_ps(gq, wt);
-      __m512 cn = _mm512_mul_ps(gq, _mm512_loadu_ps(SHLI_SH_LANEK + 64 + 16 * h - l));
-      __m512 gg = _mm512_mask_mul_ps(one, mk, gq, _mm512_loadu_ps(SHLI_SH_LANEK + 63 + 16 * h + l));
-      int top = l < 16 * h + 15 ? l : 16 * h + 15; /* largest order of the chunk in band l */
-      int lo = h > 0 ? 16 * h : 1;                 /* smallest sine order of the chunk */
-      /* D = c D - alpha t X with cn = -c */
-      dd[h] = _mm512_fnmsub_ps(at, xv[h], _mm512_mul_ps(cn, dd[h]));
-      xv[h] = _mm512_fmadd_ps(gg, xv[h], dd[h]);
-      yc = _mm512_mul_ps(xv[h], (l & 1) ? co[h] : c[h]);
-      ys = _mm512_mul_ps(xv[h], (l & 1) ? so[h] : s[h]);
-      /* sines: Y_l^-m at l (l + 1) - m, ascending addresses for descending m */
-      ys = _mm512_permutexvar_ps(
-          _mm512_loadu_si512((const void *)(SHLI_SH_LANER + 15 - (top - 16 * h))), ys);
-      _mm512_mask_storeu_ps(out_y + l * l + l - top, (__mmask16)((2u << (top - lo)) - 1u), ys);
-      _mm512_mask_storeu_ps(out_y + l * l + l + 16 * h, (__mmask16)((2u << (top - 16 * h)) - 1u),
-                            yc);
-    }
-  }
+  l = 1;
+  SHLI_SH_BAND512(1, o); /* bands 1..15: chunk 0 */
+  SHLI_SH_BANDS512(1, 16)
+  SHLI_SH_BANDS512(2, n < 32 ? n : 32)
+  SHLI_SH_BANDS512(3, n < 48 ? n : 48)
+  SHLI_SH_BANDS512(4, n)
 }
+#undef SHLI_SH_BANDS512
+#undef SHLI_SH_BAND512
+#undef SHLI_SH_CHUNK512
 /* AVX-512 gradient pass for 2..16 bands (C only; shl_sh_eval_grad uses it for n >= 5): lanes
    follow the output array (band order), so each 16-float chunk of the AoS gradient is three
    permutes and three multiply-adds from the previous band P (times (l-1)/|d|) and this band Q
@@ -9062,8 +9134,8 @@ SHLI_BATCH_INLINE void shli_sh_batch_poly(int n, int nv, int nt, const float *px
       (dd) = SHLI_VMULS(SHLI_VSET(c_[0]), t[v]);                                                   \
       (xa) = SHLI_VADD(SHLI_VSET(c_[1]), (dd));                                                    \
     } else {                                                                                       \
-      SHLI_V e_ = SHLI_VMULS(t[v], (xa));                                                          \
-      (dd) = SHLI_VFMS2(SHLI_VSET(c_[2]), (dd), SHLI_VSET(c_[0]), e_);                             \
+      SHLI_V a_ = SHLI_VMULS(SHLI_VSET(c_[0]), t[v]);                                              \
+      (dd) = SHLI_VNMADD(a_, (xa), SHLI_VMULS(SHLI_VSET(c_[2]), (dd)));                            \
       (xa) = SHLI_VMADDS(SHLI_VSET(c_[1]), (xa), (dd));                                            \
     }                                                                                              \
   } while (0)
@@ -9146,13 +9218,14 @@ SHLI_BATCH_INLINE void shli_sh_batch_rsu(int n, int nv, const float *px, const f
 #undef SHLI_COL0
 #endif
 #undef SHLI_BSTOREI
-/* one Reinsch step of every vector: X~, D~ of the previous band to this one's (constants c) */
+/* one Reinsch step of every vector: X~, D~ of the previous band to this one's (constants c),
+   D = c D - (alpha t) X with alpha t off the chain: two FMA latencies a band, not four */
 #define SHLI_BSTEP(c, xa, dd)                                                                      \
   do {                                                                                             \
     SHLI_UNROLL_BATCH                                                                              \
     for (v = 0; v < nv; ++v) {                                                                     \
-      SHLI_V e_ = SHLI_VMULS(t[v], (xa)[v]);                                                       \
-      (dd)[v] = SHLI_VFMS2(SHLI_VSET((c)[2]), (dd)[v], SHLI_VSET((c)[0]), e_);                     \
+      SHLI_V a_ = SHLI_VMULS(SHLI_VSET((c)[0]), t[v]);                                             \
+      (dd)[v] = SHLI_VNMADD(a_, (xa)[v], SHLI_VMULS(SHLI_VSET((c)[2]), (dd)[v]));                  \
       (xa)[v] = SHLI_VMADDS(SHLI_VSET((c)[1]), (xa)[v], (dd)[v]);                                  \
     }                                                                                              \
   } while (0)

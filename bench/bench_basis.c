@@ -188,8 +188,9 @@ NOINL void bw_batch16(int n, const float *d, bufs *b) { /* the 16 directions fro
 }
 
 /* one wrapper per n for the static-inline kernels (n a literal, as in user code) */
-#define NLIST(X)                                                                                   \
-  X(1) X(2) X(3) X(4) X(5) X(6) X(7) X(8) X(9) X(10) X(11) X(12) X(13) X(14) X(15) X(16) X(32) X(64)
+#define NLIST16(X)                                                                                 \
+  X(1) X(2) X(3) X(4) X(5) X(6) X(7) X(8) X(9) X(10) X(11) X(12) X(13) X(14) X(15) X(16)
+#define NLIST(X) NLIST16(X) X(17) X(20) X(24) X(32) X(48) X(64)
 #define W_EVAL(N)                                                                                  \
   NOINL void bw_eval_##N(int n, const float *d, bufs *b) {                                         \
     (void)n;                                                                                       \
@@ -651,7 +652,8 @@ static void usage(void) {
       "usage: bench_basis [--quick] [--n LIST] [--variants LIST] [--samples S] [--sample-ms T]\n"
       "                   [--no-error] [--callgrind FILE] [--out DIR]\n"
       "       bench_basis --count-only VARIANT N K\n"
-      "  LIST: comma separated; n from 1..16,32,64; variants: eval,eval_rt,accurate,batch,\n"
+      "  LIST: comma separated; n from 1..17,20,24,32,48,64; variants: "
+      "eval,eval_rt,accurate,batch,\n"
       "  batch16,batch32,grad,grad_sph,loop,empty (loop and eval are always timed: they are the "
       "ratios' "
       "bases)\n");
@@ -731,9 +733,9 @@ int main(int argc, char **argv) {
     for (a = 0; a < g_nn; a++) /* ascending */
       for (ii = a + 1; ii < g_nn; ii++)
         if (g_nlist[ii] < g_nlist[a]) v = g_nlist[a], g_nlist[a] = g_nlist[ii], g_nlist[ii] = v;
-  } else
-    for (g_nn = 0; g_nn < NNS; g_nn++)
-      g_nlist[g_nn] = g_nn;
+  } else /* the default set: 1..16, 32, 64 (17, 20, 24, 48 on request) */
+    for (g_nn = 0, ii = 0; ii < NNS; ii++)
+      if (NSET[ii] <= 16 || NSET[ii] == 32 || NSET[ii] == 64) g_nlist[g_nn++] = ii;
   if (vl) {
     char buf[256], *t;
     strncpy(buf, vl, sizeof buf - 1);
