@@ -585,6 +585,20 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
 
+/* shl_polygon_ggx_fast: the same integral as shl_polygon_ggx (GGX microfacet BRDF, F = 1,
+   height-correlated G2, over the polygon clipped to nrm.l > 0), approximated by a linearly
+   transformed cosine (Heitz et al. 2016) with no table: the transform (4 parameters in the view
+   frame) and the magnitude (the directional albedo times a factor) are closed-form polynomials
+   in sqrt(alpha) and nrm.view, fitted by tools/fit_ggx_fast.c to polygon integrals of
+   shl_polygon_ggx. The polygon is clipped to the horizon before the transform: no light comes
+   from below it. Inputs and degenerate results as shl_polygon_ggx (nv < 3, NaN / Inf input, zero
+   normal or view, view at or below the horizon, NaN alpha, a light wholly below the horizon
+   (exactly 0), a polygon through the shading point: 0; C: any nv, GLSL: above
+   SHLIGHT_POLYGON_MAX -1); alpha clamped to [1e-4, 1]. Result >= 0. Accuracy and cost: see
+   docs/area-lights.md "Fast GGX polygon lights" (measured on the LTC comparison's sampler). */
+SHLIGHT_INLINE float shl_polygon_ggx_fast(const float (*v)[3], int nv, const float nrm[3],
+                                          const float view[3], float alpha);
+
 /* shl_polygon_beckmann: the Beckmann microfacet specular from a unit-radiance polygon
    light, the integral over the polygon (vertices relative to the shading point, any winding,
    two-sided) clipped to nrm.l > 0 of D_B(h) G2(l, v) / (4 (n.v)) dl, the same integrand as
@@ -4108,6 +4122,8 @@ SHLIGHT_CPU_INLINE float shli_fan_ggx(const float (*v)[3], int nv, const float n
                                       const float view[3], float alpha);
 SHLIGHT_CPU_INLINE float shli_fan_beckmann_taylor(const float (*v)[3], int nv, const float nrm[3],
                                                   const float view[3], float alpha);
+SHLIGHT_CPU_INLINE float shli_fan_ggx_fast(const float (*v)[3], int nv, const float nrm[3],
+                                           const float view[3], float alpha);
 SHLIGHT_CPU_INLINE float shli_fan_beckmann_ndf(const float (*v)[3], int nv, const float axis[3],
                                                float alpha);
 SHLIGHT_CPU_INLINE float shli_fan_blinn_phong(const float (*v)[3], int nv, const float nrm[3],
@@ -6448,6 +6464,456 @@ SHLIGHT_INLINE float shl_polygon_beckmann(const float (*v)[3], int nv, const flo
   return shli_mf_taylor(v, nv, nrm, view, alpha, 1);
 }
 
+/* ---- fast GGX polygon lights (shl_polygon_ggx_fast; docs/area-lights.md "Fast GGX"): a linearly
+   transformed cosine (Heitz et al. 2016) with no table. In the view frame (x toward the view,
+   z = nrm) the lobe is M = R S, R the rotation in the xz-plane taking z to the unit axis
+   (ux, 0, uz), S = ((a, 0, 0), (0, c, 0), (d, 0, 1)); the polygon is mapped by M^-1 =
+   S^-1 R^T, clipped to the shading horizon (the plane (M^T z).y >= 0 in the mapped space, so no
+   light from below the horizon) and to the cosine's z >= 0, and its cosine integral taken.
+   a, c, d, the axis and the magnitude (the directional albedo) are closed-form fits in alpha
+   and n.v (tools/fit_ggx_fast.c, fitted to polygon integrals of shl_polygon_ggx). */
+
+/* The cosine integral over the polygon (io_px, io_py, io_pz)[0..nv-1] (the view frame's
+   coordinates, overwritten) mapped by M^-1 as above, divided by pi: in [0, 1]. */
+SHLIGHT_INLINE shli_real shli_ltc_ff(shli_real *io_px, shli_real *io_py, shli_real *io_pz, int nv,
+                                     shli_real a, shli_real c, shli_real d, shli_real ux,
+                                     shli_real uz) {
+  shli_real wx;
+  shli_real wz;
+  shli_real cx;
+  shli_real cy;
+  shli_real cz;
+  shli_real sp;
+  shli_real sum = 0.0;
+  int nc;
+  int i;
+  int j;
+  for (i = 0; i < nv; ++i) {
+    wx = (uz * io_px[i] - ux * io_pz[i]) / a;
+    wz = ux * io_px[i] + uz * io_pz[i];
+    io_px[i] = wx;
+    io_py[i] = io_py[i] / c;
+    io_pz[i] = wz - d * wx;
+  }
+  nc = shli_poly_clip_unit2(io_px, io_py, io_pz, nv, uz * d - ux * a, 0.0, uz, 1, 0.0, 0.0, 1.0);
+  for (i = 0; i < nc || i < -nc; ++i) {
+    j = i + 1;
+    if (j == nc || j == -nc) {
+      j = 0;
+    }
+    cx = io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+    cy = io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+    cz = io_px[i] * io_py[j] - io_py[i] * io_px[j];
+    sp = SHLIGHT_SQRTR(cx * cx + cy * cy + cz * cz);
+    if (sp > 1.0e-30) {
+      sum = sum + shli_atan2r(sp, io_px[i] * io_px[j] + io_py[i] * io_py[j] + io_pz[i] * io_pz[j]) *
+                      cz / sp;
+    }
+  }
+  if (nc < 0) {
+    sum = -sum;
+  }
+  return SHLIGHT_MAXR(sum, 0.0) * 0.15915494309189534;
+}
+
+/* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its --check */
+/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_p[0] log(a / alpha), [1] g (c = a (mu +
+   (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, cos theta_v)), [4] log of the
+   magnitude's factor, each a polynomial of degree 5 in 2 r - 1 (r = sqrt(alpha)) and 5 in 2 mu - 1 (mu = n.v); [5] the
+   directional albedo, E0 + r^2 times a polynomial of degree 8 in r and 6 in tau = alpha
+   sin(theta_v) / (mu + alpha sin(theta_v)), E0 = (1 - tau) / sqrt((1 - tau)^2 + tau^2) =
+   1 / sqrt(1 + alpha^2 tan^2 theta_v) (G2 at the mirror direction as alpha -> 0). */
+SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,
+                                      shli_real *out_p) {
+  shli_real x = 2.0 * r - 1.0;
+  shli_real y = 2.0 * mu - 1.0;
+  shli_real u;
+  shli_real t;
+  u = 1.145346832e+01;
+  u = 2.389028072e+00 + y * u;
+  u = -1.680815506e+01 + y * u;
+  u = -2.343626738e+00 + y * u;
+  u = 5.255959034e+00 + y * u;
+  u = 7.142049670e-01 + y * u;
+  t = u;
+  u = -4.128005505e+00;
+  u = -1.640052080e+00 + y * u;
+  u = 6.563858032e+00 + y * u;
+  u = 1.566277981e+00 + y * u;
+  u = -2.058736801e+00 + y * u;
+  u = -4.744149446e-01 + y * u;
+  t = u + x * t;
+  u = -1.318161583e+01;
+  u = -2.389258862e+00 + y * u;
+  u = 1.895929909e+01 + y * u;
+  u = 2.483412027e+00 + y * u;
+  u = -5.806741238e+00 + y * u;
+  u = -9.210931659e-01 + y * u;
+  t = u + x * t;
+  u = 3.111153364e+00;
+  u = 1.462932706e+00 + y * u;
+  u = -5.050045013e+00 + y * u;
+  u = -1.458132744e+00 + y * u;
+  u = 1.557019353e+00 + y * u;
+  u = 2.437269986e-01 + y * u;
+  t = u + x * t;
+  u = 3.418363810e+00;
+  u = 3.544866145e-01 + y * u;
+  u = -4.664719105e+00 + y * u;
+  u = -4.534991980e-01 + y * u;
+  u = 1.280481696e+00 + y * u;
+  u = 6.088904291e-02 + y * u;
+  t = u + x * t;
+  u = -4.528201818e-01;
+  u = -6.885691732e-02 + y * u;
+  u = 5.793135166e-01 + y * u;
+  u = 2.104464620e-01 + y * u;
+  u = -2.061287016e-01 + y * u;
+  u = 5.751223564e-01 + y * u;
+  t = u + x * t;
+  out_p[0] = t;
+  u = -2.528548813e+01;
+  u = -4.578426361e+00 + y * u;
+  u = 3.420252609e+01 + y * u;
+  u = 7.920964241e+00 + y * u;
+  u = -9.969550133e+00 + y * u;
+  u = -2.403481483e+00 + y * u;
+  t = u;
+  u = 1.253335857e+01;
+  u = 2.894300938e+00 + y * u;
+  u = -1.581384087e+01 + y * u;
+  u = -3.926106453e+00 + y * u;
+  u = 4.337746143e+00 + y * u;
+  u = 1.174408793e+00 + y * u;
+  t = u + x * t;
+  u = 2.816065598e+01;
+  u = 5.445178032e+00 + y * u;
+  u = -3.796764755e+01 + y * u;
+  u = -9.251158714e+00 + y * u;
+  u = 1.107751179e+01 + y * u;
+  u = 2.607801676e+00 + y * u;
+  t = u + x * t;
+  u = -1.146001053e+01;
+  u = -2.814211845e+00 + y * u;
+  u = 1.404199409e+01 + y * u;
+  u = 3.473264933e+00 + y * u;
+  u = -3.711051226e+00 + y * u;
+  u = -7.749885321e-01 + y * u;
+  t = u + x * t;
+  u = -6.710307121e+00;
+  u = -1.476758003e+00 + y * u;
+  u = 8.944379807e+00 + y * u;
+  u = 2.431481361e+00 + y * u;
+  u = -2.601059914e+00 + y * u;
+  u = -6.535850465e-02 + y * u;
+  t = u + x * t;
+  u = 2.051179171e+00;
+  u = 5.296193361e-01 + y * u;
+  u = -2.388197899e+00 + y * u;
+  u = -5.196891427e-01 + y * u;
+  u = 5.821188688e-01 + y * u;
+  u = 4.199734032e-01 + y * u;
+  t = u + x * t;
+  out_p[1] = t;
+  u = -1.282742977e+00;
+  u = -2.499029636e-01 + y * u;
+  u = 1.942435741e+00 + y * u;
+  u = 4.869379103e-01 + y * u;
+  u = -5.883504748e-01 + y * u;
+  u = -4.310228229e-01 + y * u;
+  t = u;
+  u = 7.092418671e-01;
+  u = 2.381721288e-01 + y * u;
+  u = -1.128238440e+00 + y * u;
+  u = -2.418826967e-01 + y * u;
+  u = 5.387676954e-01 + y * u;
+  u = -6.616693735e-02 + y * u;
+  t = u + x * t;
+  u = 1.189693451e+00;
+  u = 2.914324701e-01 + y * u;
+  u = -1.949398756e+00 + y * u;
+  u = -7.634930015e-01 + y * u;
+  u = 5.125444531e-01 + y * u;
+  u = 9.166172147e-01 + y * u;
+  t = u + x * t;
+  u = -6.840785146e-01;
+  u = -2.496784329e-01 + y * u;
+  u = 1.021642089e+00 + y * u;
+  u = 2.662450969e-01 + y * u;
+  u = -7.915718555e-01 + y * u;
+  u = 4.178866446e-01 + y * u;
+  t = u + x * t;
+  u = -1.766734123e-01;
+  u = -1.464243792e-02 + y * u;
+  u = 3.330851197e-01 + y * u;
+  u = 2.910934389e-01 + y * u;
+  u = -2.773418464e-02 + y * u;
+  u = -4.926061034e-01 + y * u;
+  t = u + x * t;
+  u = 1.822024882e-01;
+  u = 5.170994624e-02 + y * u;
+  u = -1.975168288e-01 + y * u;
+  u = -6.551892310e-02 + y * u;
+  u = 3.334997296e-01 + y * u;
+  u = -3.236826062e-01 + y * u;
+  t = u + x * t;
+  out_p[2] = t;
+  u = -1.955668069e-02;
+  u = 7.820131779e-01 + y * u;
+  u = -1.260449409e+00 + y * u;
+  u = 2.521153092e-01 + y * u;
+  u = 6.539504528e-01 + y * u;
+  u = -1.961798221e-01 + y * u;
+  t = u;
+  u = -5.796523690e-01;
+  u = 3.852835000e-01 + y * u;
+  u = 5.414839983e-01 + y * u;
+  u = -6.546353102e-01 + y * u;
+  u = 3.711158633e-01 + y * u;
+  u = 1.486652792e-01 + y * u;
+  t = u + x * t;
+  u = 4.915349483e-01;
+  u = -1.634989023e+00 + y * u;
+  u = 1.718149781e+00 + y * u;
+  u = -2.257410735e-01 + y * u;
+  u = -1.188724518e+00 + y * u;
+  u = 4.782587886e-01 + y * u;
+  t = u + x * t;
+  u = 5.062524080e-01;
+  u = -2.253416628e-01 + y * u;
+  u = -6.614978313e-01 + y * u;
+  u = 8.233818412e-01 + y * u;
+  u = -7.353420258e-01 + y * u;
+  u = -3.651740253e-01 + y * u;
+  t = u + x * t;
+  u = -4.303378165e-01;
+  u = 8.372234702e-01 + y * u;
+  u = -5.129526854e-01 + y * u;
+  u = -5.315160844e-03 + y * u;
+  u = 5.473908186e-01 + y * u;
+  u = -7.839096785e-01 + y * u;
+  t = u + x * t;
+  u = 1.965714991e-02;
+  u = -1.188861951e-01 + y * u;
+  u = 1.610988975e-01 + y * u;
+  u = -2.058707327e-01 + y * u;
+  u = 3.682696223e-01 + y * u;
+  u = 7.208238840e-01 + y * u;
+  t = u + x * t;
+  out_p[3] = t;
+  u = -2.325863689e-01;
+  u = 1.548028588e-01 + y * u;
+  u = 1.670276970e-01 + y * u;
+  u = -9.217273444e-02 + y * u;
+  u = 1.121653523e-02 + y * u;
+  u = -1.697102375e-02 + y * u;
+  t = u;
+  u = 1.090569198e-01;
+  u = -1.123448759e-01 + y * u;
+  u = -4.143499210e-02 + y * u;
+  u = 2.460566722e-02 + y * u;
+  u = 1.947263256e-02 + y * u;
+  u = -5.450537428e-03 + y * u;
+  t = u + x * t;
+  u = 3.237085640e-01;
+  u = -2.491613328e-01 + y * u;
+  u = -2.240723670e-01 + y * u;
+  u = 1.783356071e-01 + y * u;
+  u = -2.992987819e-02 + y * u;
+  u = 1.328016445e-02 + y * u;
+  t = u + x * t;
+  u = -9.500081837e-02;
+  u = 1.239939108e-01 + y * u;
+  u = -3.871486289e-03 + y * u;
+  u = 3.900995478e-03 + y * u;
+  u = -1.563506946e-02 + y * u;
+  u = -1.524897525e-03 + y * u;
+  t = u + x * t;
+  u = -8.703362197e-02;
+  u = 8.853264898e-02 + y * u;
+  u = 5.280471593e-02 + y * u;
+  u = -7.642767578e-02 + y * u;
+  u = 1.908889785e-02 + y * u;
+  u = -5.009576562e-04 + y * u;
+  t = u + x * t;
+  u = 1.505601779e-02;
+  u = -2.489894442e-02 + y * u;
+  u = 1.694126241e-02 + y * u;
+  u = -1.908466592e-02 + y * u;
+  u = 2.414298011e-03 + y * u;
+  u = 4.423030186e-03 + y * u;
+  t = u + x * t;
+  out_p[4] = t;
+  u = 1.614603191e+05;
+  u = -8.974569892e+04 + tau * u;
+  u = -2.576381760e+05 + tau * u;
+  u = 2.283508580e+05 + tau * u;
+  u = -3.756042104e+04 + tau * u;
+  u = -1.596182986e+03 + tau * u;
+  u = 7.721077667e+01 + tau * u;
+  t = u;
+  u = -1.016121836e+06;
+  u = 9.261252658e+05 + tau * u;
+  u = 9.395503532e+05 + tau * u;
+  u = -1.063355882e+06 + tau * u;
+  u = 1.919327076e+05 + tau * u;
+  u = 5.464926316e+03 + tau * u;
+  u = -3.031539393e+02 + tau * u;
+  t = u + r * t;
+  u = 2.690583333e+06;
+  u = -3.196628202e+06 + tau * u;
+  u = -1.081449298e+06 + tau * u;
+  u = 2.038710062e+06 + tau * u;
+  u = -4.099041253e+05 + tau * u;
+  u = -6.584189050e+03 + tau * u;
+  u = 4.731932848e+02 + tau * u;
+  t = u + r * t;
+  u = -3.921742855e+06;
+  u = 5.532538056e+06 + tau * u;
+  u = -7.384464523e+04 + tau * u;
+  u = -2.053704430e+06 + tau * u;
+  u = 4.740210224e+05 + tau * u;
+  u = 2.360754232e+03 + tau * u;
+  u = -3.759867053e+02 + tau * u;
+  t = u + r * t;
+  u = 3.444902434e+06;
+  u = -5.496480393e+06 + tau * u;
+  u = 1.266360876e+06 + tau * u;
+  u = 1.132399344e+06 + tau * u;
+  u = -3.205889625e+05 + tau * u;
+  u = 1.613258384e+03 + tau * u;
+  u = 1.644553981e+02 + tau * u;
+  t = u + r * t;
+  u = -1.870067053e+06;
+  u = 3.279812490e+06 + tau * u;
+  u = -1.244375856e+06 + tau * u;
+  u = -3.028705989e+05 + tau * u;
+  u = 1.269780201e+05 + tau * u;
+  u = -1.812924520e+03 + tau * u;
+  u = -3.926351267e+01 + tau * u;
+  t = u + r * t;
+  u = 6.151702990e+05;
+  u = -1.165421987e+06 + tau * u;
+  u = 5.713139140e+05 + tau * u;
+  u = 9.201290932e+03 + tau * u;
+  u = -2.738724251e+04 + tau * u;
+  u = 6.392914547e+02 + tau * u;
+  u = 2.835631707e+00 + tau * u;
+  t = u + r * t;
+  u = -1.134286679e+05;
+  u = 2.296827768e+05 + tau * u;
+  u = -1.329058082e+05 + tau * u;
+  u = 1.352954185e+04 + tau * u;
+  u = 2.518686419e+03 + tau * u;
+  u = -8.728059261e+01 + tau * u;
+  u = 2.252824814e-02 + tau * u;
+  t = u + r * t;
+  u = 9.253465891e+03;
+  u = -1.990570371e+04 + tau * u;
+  u = 1.300791007e+04 + tau * u;
+  u = -2.265693764e+03 + tau * u;
+  u = -7.684982525e+00 + tau * u;
+  u = 2.211063277e+00 + tau * u;
+  u = -5.604975052e-03 + tau * u;
+  t = u + r * t;
+  u = 1.0 - tau;
+  out_p[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;
+}
+/* @fit ggx_fast end */
+
+SHLIGHT_INLINE float shl_polygon_ggx_fast(const float (*v)[3], int nv, const float nrm[3],
+                                          const float view[3], float alpha) {
+  shli_real px[SHLIGHT_CLIP_MAX];
+  shli_real py[SHLIGHT_CLIP_MAX];
+  shli_real pz[SHLIGHT_CLIP_MAX];
+  shli_real par[6];
+  shli_real nx = SHLIGHT_REAL(nrm[0]);
+  shli_real ny = SHLIGHT_REAL(nrm[1]);
+  shli_real nz = SHLIGHT_REAL(nrm[2]);
+  shli_real vx = SHLIGHT_REAL(view[0]);
+  shli_real vy = SHLIGHT_REAL(view[1]);
+  shli_real vz = SHLIGHT_REAL(view[2]);
+  shli_real ln = SHLIGHT_SQRTR(nx * nx + ny * ny + nz * nz);
+  shli_real lv = SHLIGHT_SQRTR(vx * vx + vy * vy + vz * vz);
+  shli_real al = SHLIGHT_REAL(alpha);
+  shli_real mu;
+  shli_real s;
+  shli_real tx;
+  shli_real ty;
+  shli_real tz;
+  shli_real bx;
+  shli_real by;
+  shli_real bz;
+  shli_real x;
+  shli_real y;
+  shli_real z;
+  shli_real ux;
+  shli_real q;
+  int i;
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_ggx_fast(v, nv, nrm, view, alpha);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
+  if (nv < 3 || !(ln > 0.0) || !(ln < SHLIGHT_REAL_MAX) || !(lv > 0.0) ||
+      !(lv < SHLIGHT_REAL_MAX) || !(al == al)) {
+    return 0.0f;
+  }
+  nx = nx / ln;
+  ny = ny / ln;
+  nz = nz / ln;
+  vx = vx / lv;
+  vy = vy / lv;
+  vz = vz / lv;
+  mu = nx * vx + ny * vy + nz * vz;
+  if (!(mu > 0.0)) {
+    return 0.0f;
+  }
+  mu = SHLIGHT_MINR(mu, 1.0);
+  al = SHLIGHT_MINR(SHLIGHT_MAXR(al, 1.0e-4), 1.0);
+  /* the view frame: t toward the view in the tangent plane (any tangent at normal view, the
+     frame of Duff et al. 2017), b = n x t */
+  tx = vx - mu * nx;
+  ty = vy - mu * ny;
+  tz = vz - mu * nz;
+  s = SHLIGHT_SQRTR(tx * tx + ty * ty + tz * tz);
+  if (s > 1.0e-7) {
+    tx = tx / s;
+    ty = ty / s;
+    tz = tz / s;
+  } else {
+    q = -1.0 / (SHLIGHT_REAL(SHLIGHT_SIGN1(nz)) + nz);
+    tx = 1.0 + SHLIGHT_REAL(SHLIGHT_SIGN1(nz)) * nx * nx * q;
+    ty = SHLIGHT_REAL(SHLIGHT_SIGN1(nz)) * nx * ny * q;
+    tz = -SHLIGHT_REAL(SHLIGHT_SIGN1(nz)) * nx;
+  }
+  bx = ny * tz - nz * ty;
+  by = nz * tx - nx * tz;
+  bz = nx * ty - ny * tx;
+  s = SHLIGHT_SQRTR(SHLIGHT_MAXR(1.0 - mu * mu, 0.0));
+  for (i = 0; i < nv; ++i) {
+    x = SHLIGHT_REAL(v[i][0]);
+    y = SHLIGHT_REAL(v[i][1]);
+    z = SHLIGHT_REAL(v[i][2]);
+    if (!(SHLIGHT_ABSR(x) + SHLIGHT_ABSR(y) + SHLIGHT_ABSR(z) < SHLIGHT_REAL_MAX)) {
+      return 0.0f;
+    }
+    px[i] = x * tx + y * ty + z * tz;
+    py[i] = x * bx + y * by + z * bz;
+    pz[i] = x * nx + y * ny + z * nz;
+  }
+  shli_ggx_fast_fit(SHLIGHT_SQRTR(al), mu, al * s / (mu + al * s), par);
+  ux = -s * par[3];
+  q = SHLIGHT_SQRTR(ux * ux + mu * mu);
+  x = al * SHLIGHT_EXPR(par[0]);
+  q = shli_ltc_ff(px, py, pz, nv, x, x * SHLIGHT_MAXR(mu + (1.0 - mu) * par[1], 1.0e-3), par[2],
+                  ux / q, mu / q);
+  return SHLIGHT_FLOAT(SHLIGHT_MAXR(SHLIGHT_EXPR(par[4]) * par[5] * q, 0.0));
+}
+
 /* ---- microfacet polygon lights in half-vector space ([AREA] sec. 8; docs/area-lights.md). With h
    = (l + v) / |l + v| and dl = 4 (h.l) dh, the reflected radiance of a unit-radiance polygon
    becomes an integral over the image H(P) of the light in half-vector space: integral over P of
@@ -7190,6 +7656,10 @@ SHLIGHT_CPU_INLINE float shli_fan_ggx_ndf(const float (*v)[3], int nv, const flo
 SHLIGHT_CPU_INLINE float shli_fan_ggx(const float (*v)[3], int nv, const float nrm[3],
                                       const float view[3], float alpha) {
   SHLIGHT_FAN_SUM_(shl_polygon_ggx(SHLIGHT_FAN_P_, f.np, nrm, view, alpha));
+}
+SHLIGHT_CPU_INLINE float shli_fan_ggx_fast(const float (*v)[3], int nv, const float nrm[3],
+                                           const float view[3], float alpha) {
+  SHLIGHT_FAN_SUM_(shl_polygon_ggx_fast(SHLIGHT_FAN_P_, f.np, nrm, view, alpha));
 }
 SHLIGHT_CPU_INLINE float shli_fan_beckmann_taylor(const float (*v)[3], int nv, const float nrm[3],
                                                   const float view[3], float alpha) {
