@@ -6485,17 +6485,52 @@ SHLIGHT_INLINE shli_real shli_ltc_ff(shli_real *io_px, shli_real *io_py, shli_re
   shli_real cz;
   shli_real sp;
   shli_real sum = 0.0;
-  int nc;
+  shli_real ia = 1.0 / a;
+  shli_real ic = 1.0 / c;
+  shli_real hx = uz * d - ux * a;
+  int nc = nv;
   int i;
   int j;
   for (i = 0; i < nv; ++i) {
-    wx = (uz * io_px[i] - ux * io_pz[i]) / a;
+    wx = (uz * io_px[i] - ux * io_pz[i]) * ia;
     wz = ux * io_px[i] + uz * io_pz[i];
     io_px[i] = wx;
-    io_py[i] = io_py[i] / c;
+    io_py[i] = io_py[i] * ic;
     io_pz[i] = wz - d * wx;
+    if (!(hx * wx + uz * io_pz[i] >= 0.0) || !(io_pz[i] >= 0.0)) {
+      nc = 0;
+    }
   }
-  nc = shli_poly_clip_unit2(io_px, io_py, io_pz, nv, uz * d - ux * a, 0.0, uz, 1, 0.0, 0.0, 1.0);
+  if (nc == 0) { /* a vertex below either plane: clip */
+    nc = shli_poly_clip_unit2(io_px, io_py, io_pz, nv, hx, 0.0, uz, 1, 0.0, 0.0, 1.0);
+  } else { /* nothing to clip: orientation (shli_poly_clip_unit2's) and unit vertices */
+    cx = 0.0;
+    cy = 0.0;
+    cz = 0.0;
+    for (i = 0; i < nv; ++i) {
+      j = i + 1;
+      if (j == nv) {
+        j = 0;
+      }
+      cx = cx + io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+      cy = cy + io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+      cz = cz + io_px[i] * io_py[j] - io_py[i] * io_px[j];
+    }
+    sp = cx * io_px[0] + cy * io_py[0] + cz * io_pz[0];
+    for (i = 0; i < nv; ++i) {
+      wx = SHLIGHT_SQRTR(io_px[i] * io_px[i] + io_py[i] * io_py[i] + io_pz[i] * io_pz[i]);
+      if (!(wx > 0.0) || !(sp != 0.0)) {
+        return 0.0;
+      }
+      wx = 1.0 / wx;
+      io_px[i] = io_px[i] * wx;
+      io_py[i] = io_py[i] * wx;
+      io_pz[i] = io_pz[i] * wx;
+    }
+    if (sp < 0.0) {
+      nc = -nv;
+    }
+  }
   for (i = 0; i < nc || i < -nc; ++i) {
     j = i + 1;
     if (j == nc || j == -nc) {
@@ -6517,59 +6552,60 @@ SHLIGHT_INLINE shli_real shli_ltc_ff(shli_real *io_px, shli_real *io_py, shli_re
 }
 
 /* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its --check */
-/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_p[0] log(a / alpha), [1] g (c = a (mu +
-   (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, cos theta_v)), [4] log of the
+/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_p[0] a / alpha, [1] g (c = a (mu +
+   (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, cos theta_v)), [4] the
    magnitude's factor, each a polynomial of degree 5 in 2 r - 1 (r = sqrt(alpha)) and 5 in 2 mu - 1 (mu = n.v); [5] the
-   directional albedo, E0 + r^2 times a polynomial of degree 8 in r and 6 in tau = alpha
+   directional albedo, E0 + r^2 times a polynomial of degree 8 in 2 r - 1 and 6 in 2 tau - 1, tau = alpha
    sin(theta_v) / (mu + alpha sin(theta_v)), E0 = (1 - tau) / sqrt((1 - tau)^2 + tau^2) =
    1 / sqrt(1 + alpha^2 tan^2 theta_v) (G2 at the mirror direction as alpha -> 0). */
 SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,
                                       shli_real *out_p) {
   shli_real x = 2.0 * r - 1.0;
   shli_real y = 2.0 * mu - 1.0;
+  shli_real z = 2.0 * tau - 1.0;
   shli_real u;
   shli_real t;
-  u = 1.145346832e+01;
-  u = 2.389028072e+00 + y * u;
-  u = -1.680815506e+01 + y * u;
-  u = -2.343626738e+00 + y * u;
-  u = 5.255959034e+00 + y * u;
-  u = 7.142049670e-01 + y * u;
+  u = 1.212711906e+01;
+  u = 3.432265520e+00 + y * u;
+  u = -1.893261147e+01 + y * u;
+  u = -2.764900684e+00 + y * u;
+  u = 6.193352699e+00 + y * u;
+  u = 6.080175042e-01 + y * u;
   t = u;
-  u = -4.128005505e+00;
-  u = -1.640052080e+00 + y * u;
-  u = 6.563858032e+00 + y * u;
-  u = 1.566277981e+00 + y * u;
-  u = -2.058736801e+00 + y * u;
-  u = -4.744149446e-01 + y * u;
+  u = -3.683760166e+00;
+  u = -2.894252300e+00 + y * u;
+  u = 7.114413261e+00 + y * u;
+  u = 2.338359833e+00 + y * u;
+  u = -2.417986155e+00 + y * u;
+  u = -4.808912575e-01 + y * u;
   t = u + x * t;
-  u = -1.318161583e+01;
-  u = -2.389258862e+00 + y * u;
-  u = 1.895929909e+01 + y * u;
-  u = 2.483412027e+00 + y * u;
-  u = -5.806741238e+00 + y * u;
-  u = -9.210931659e-01 + y * u;
+  u = -1.446102047e+01;
+  u = -2.999265909e+00 + y * u;
+  u = 2.150658798e+01 + y * u;
+  u = 2.662729025e+00 + y * u;
+  u = -6.755777836e+00 + y * u;
+  u = -8.035508990e-01 + y * u;
   t = u + x * t;
-  u = 3.111153364e+00;
-  u = 1.462932706e+00 + y * u;
-  u = -5.050045013e+00 + y * u;
-  u = -1.458132744e+00 + y * u;
-  u = 1.557019353e+00 + y * u;
-  u = 2.437269986e-01 + y * u;
+  u = 2.649357080e+00;
+  u = 2.515956640e+00 + y * u;
+  u = -5.315926552e+00 + y * u;
+  u = -2.249121428e+00 + y * u;
+  u = 1.818679810e+00 + y * u;
+  u = 1.900183558e-01 + y * u;
   t = u + x * t;
-  u = 3.418363810e+00;
-  u = 3.544866145e-01 + y * u;
-  u = -4.664719105e+00 + y * u;
-  u = -4.534991980e-01 + y * u;
-  u = 1.280481696e+00 + y * u;
-  u = 6.088904291e-02 + y * u;
+  u = 4.099138737e+00;
+  u = 1.330896616e-01 + y * u;
+  u = -5.438644409e+00 + y * u;
+  u = -2.838157415e-01 + y * u;
+  u = 1.434872389e+00 + y * u;
+  u = -1.130518019e-01 + y * u;
   t = u + x * t;
-  u = -4.528201818e-01;
-  u = -6.885691732e-02 + y * u;
-  u = 5.793135166e-01 + y * u;
-  u = 2.104464620e-01 + y * u;
-  u = -2.061287016e-01 + y * u;
-  u = 5.751223564e-01 + y * u;
+  u = -5.439761281e-01;
+  u = -2.028998174e-02 + y * u;
+  u = 6.121315956e-01 + y * u;
+  u = 3.068119586e-01 + y * u;
+  u = -2.544111907e-01 + y * u;
+  u = 1.809529424e+00 + y * u;
   t = u + x * t;
   out_p[0] = t;
   u = -2.528548813e+01;
@@ -6701,121 +6737,121 @@ SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,
   u = 7.208238840e-01 + y * u;
   t = u + x * t;
   out_p[3] = t;
-  u = -2.325863689e-01;
-  u = 1.548028588e-01 + y * u;
-  u = 1.670276970e-01 + y * u;
-  u = -9.217273444e-02 + y * u;
-  u = 1.121653523e-02 + y * u;
-  u = -1.697102375e-02 + y * u;
+  u = -2.423511297e-01;
+  u = 1.567256749e-01 + y * u;
+  u = 1.800846905e-01 + y * u;
+  u = -9.569764137e-02 + y * u;
+  u = 8.637528867e-03 + y * u;
+  u = -1.658957079e-02 + y * u;
   t = u;
-  u = 1.090569198e-01;
-  u = -1.123448759e-01 + y * u;
-  u = -4.143499210e-02 + y * u;
-  u = 2.460566722e-02 + y * u;
-  u = 1.947263256e-02 + y * u;
-  u = -5.450537428e-03 + y * u;
+  u = 1.151706129e-01;
+  u = -1.161726117e-01 + y * u;
+  u = -4.709672183e-02 + y * u;
+  u = 2.795867436e-02 + y * u;
+  u = 1.988605037e-02 + y * u;
+  u = -5.579470657e-03 + y * u;
   t = u + x * t;
-  u = 3.237085640e-01;
-  u = -2.491613328e-01 + y * u;
-  u = -2.240723670e-01 + y * u;
-  u = 1.783356071e-01 + y * u;
-  u = -2.992987819e-02 + y * u;
-  u = 1.328016445e-02 + y * u;
+  u = 3.327584267e-01;
+  u = -2.472874522e-01 + y * u;
+  u = -2.403969616e-01 + y * u;
+  u = 1.812654436e-01 + y * u;
+  u = -2.642498165e-02 + y * u;
+  u = 1.282383595e-02 + y * u;
   t = u + x * t;
-  u = -9.500081837e-02;
-  u = 1.239939108e-01 + y * u;
-  u = -3.871486289e-03 + y * u;
-  u = 3.900995478e-03 + y * u;
-  u = -1.563506946e-02 + y * u;
-  u = -1.524897525e-03 + y * u;
+  u = -1.002762541e-01;
+  u = 1.261417866e-01 + y * u;
+  u = 2.550897421e-03 + y * u;
+  u = 6.944268243e-04 + y * u;
+  u = -1.609654725e-02 + y * u;
+  u = -1.428071060e-03 + y * u;
   t = u + x * t;
-  u = -8.703362197e-02;
-  u = 8.853264898e-02 + y * u;
-  u = 5.280471593e-02 + y * u;
-  u = -7.642767578e-02 + y * u;
-  u = 1.908889785e-02 + y * u;
-  u = -5.009576562e-04 + y * u;
+  u = -8.710061014e-02;
+  u = 8.521705121e-02 + y * u;
+  u = 5.675000325e-02 + y * u;
+  u = -7.615226507e-02 + y * u;
+  u = 1.804977655e-02 + y * u;
+  u = -3.997024032e-04 + y * u;
   t = u + x * t;
-  u = 1.505601779e-02;
-  u = -2.489894442e-02 + y * u;
-  u = 1.694126241e-02 + y * u;
-  u = -1.908466592e-02 + y * u;
-  u = 2.414298011e-03 + y * u;
-  u = 4.423030186e-03 + y * u;
+  u = 1.471141912e-02;
+  u = -2.360001579e-02 + y * u;
+  u = 1.582669094e-02 + y * u;
+  u = -1.899206825e-02 + y * u;
+  u = 2.488899045e-03 + y * u;
+  u = 1.004449129e+00 + y * u;
   t = u + x * t;
   out_p[4] = t;
-  u = 1.614603191e+05;
-  u = -8.974569892e+04 + tau * u;
-  u = -2.576381760e+05 + tau * u;
-  u = 2.283508580e+05 + tau * u;
-  u = -3.756042104e+04 + tau * u;
-  u = -1.596182986e+03 + tau * u;
-  u = 7.721077667e+01 + tau * u;
+  u = 9.835902186e+00;
+  u = 4.815816315e+01 + z * u;
+  u = 3.016645875e+01 + z * u;
+  u = -5.254129555e+01 + z * u;
+  u = -4.131686923e+01 + z * u;
+  u = 1.076998664e+01 + z * u;
+  u = 8.002906556e+00 + z * u;
   t = u;
-  u = -1.016121836e+06;
-  u = 9.261252658e+05 + tau * u;
-  u = 9.395503532e+05 + tau * u;
-  u = -1.063355882e+06 + tau * u;
-  u = 1.919327076e+05 + tau * u;
-  u = 5.464926316e+03 + tau * u;
-  u = -3.031539393e+02 + tau * u;
-  t = u + r * t;
-  u = 2.690583333e+06;
-  u = -3.196628202e+06 + tau * u;
-  u = -1.081449298e+06 + tau * u;
-  u = 2.038710062e+06 + tau * u;
-  u = -4.099041253e+05 + tau * u;
-  u = -6.584189050e+03 + tau * u;
-  u = 4.731932848e+02 + tau * u;
-  t = u + r * t;
-  u = -3.921742855e+06;
-  u = 5.532538056e+06 + tau * u;
-  u = -7.384464523e+04 + tau * u;
-  u = -2.053704430e+06 + tau * u;
-  u = 4.740210224e+05 + tau * u;
-  u = 2.360754232e+03 + tau * u;
-  u = -3.759867053e+02 + tau * u;
-  t = u + r * t;
-  u = 3.444902434e+06;
-  u = -5.496480393e+06 + tau * u;
-  u = 1.266360876e+06 + tau * u;
-  u = 1.132399344e+06 + tau * u;
-  u = -3.205889625e+05 + tau * u;
-  u = 1.613258384e+03 + tau * u;
-  u = 1.644553981e+02 + tau * u;
-  t = u + r * t;
-  u = -1.870067053e+06;
-  u = 3.279812490e+06 + tau * u;
-  u = -1.244375856e+06 + tau * u;
-  u = -3.028705989e+05 + tau * u;
-  u = 1.269780201e+05 + tau * u;
-  u = -1.812924520e+03 + tau * u;
-  u = -3.926351267e+01 + tau * u;
-  t = u + r * t;
-  u = 6.151702990e+05;
-  u = -1.165421987e+06 + tau * u;
-  u = 5.713139140e+05 + tau * u;
-  u = 9.201290932e+03 + tau * u;
-  u = -2.738724251e+04 + tau * u;
-  u = 6.392914547e+02 + tau * u;
-  u = 2.835631707e+00 + tau * u;
-  t = u + r * t;
-  u = -1.134286679e+05;
-  u = 2.296827768e+05 + tau * u;
-  u = -1.329058082e+05 + tau * u;
-  u = 1.352954185e+04 + tau * u;
-  u = 2.518686419e+03 + tau * u;
-  u = -8.728059261e+01 + tau * u;
-  u = 2.252824814e-02 + tau * u;
-  t = u + r * t;
-  u = 9.253465891e+03;
-  u = -1.990570371e+04 + tau * u;
-  u = 1.300791007e+04 + tau * u;
-  u = -2.265693764e+03 + tau * u;
-  u = -7.684982525e+00 + tau * u;
-  u = 2.211063277e+00 + tau * u;
-  u = -5.604975052e-03 + tau * u;
-  t = u + r * t;
+  u = -4.517718273e+01;
+  u = -1.327191734e+02 + z * u;
+  u = -3.015429468e+01 + z * u;
+  u = 1.564169442e+02 + z * u;
+  u = 8.213006476e+01 + z * u;
+  u = -3.667465959e+01 + z * u;
+  u = -1.973095451e+01 + z * u;
+  t = u + x * t;
+  u = 6.456231521e+01;
+  u = 1.024200233e+02 + z * u;
+  u = -6.211461723e+01 + z * u;
+  u = -1.467570816e+02 + z * u;
+  u = -1.590913984e+01 + z * u;
+  u = 4.596160970e+01 + z * u;
+  u = 1.434589623e+01 + z * u;
+  t = u + x * t;
+  u = -2.659266839e+01;
+  u = 1.302195064e+01 + z * u;
+  u = 9.459040183e+01 + z * u;
+  u = 2.219007812e+01 + z * u;
+  u = -5.761072135e+01 + z * u;
+  u = -2.612346033e+01 + z * u;
+  u = -1.532581752e+00 + z * u;
+  t = u + x * t;
+  u = -8.703993119e+00;
+  u = -3.918667259e+01 + z * u;
+  u = -2.758862821e+01 + z * u;
+  u = 3.054379187e+01 + z * u;
+  u = 3.805665447e+01 + z * u;
+  u = 1.003282046e+01 + z * u;
+  u = 2.797771967e-01 + z * u;
+  t = u + x * t;
+  u = 3.186377897e+00;
+  u = 1.391254303e+00 + z * u;
+  u = -5.538621202e+00 + z * u;
+  u = -4.184491630e+00 + z * u;
+  u = -6.486797598e+00 + z * u;
+  u = -9.401535433e+00 + z * u;
+  u = -2.776535210e+00 + z * u;
+  t = u + x * t;
+  u = 5.763624995e+00;
+  u = 1.048772557e+01 + z * u;
+  u = -2.921178913e+00 + z * u;
+  u = -9.704074130e+00 + z * u;
+  u = 4.380060798e+00 + z * u;
+  u = 9.091201017e+00 + z * u;
+  u = 2.425775951e+00 + z * u;
+  t = u + x * t;
+  u = -3.631340058e+00;
+  u = -4.346143737e+00 + z * u;
+  u = 5.216727987e+00 + z * u;
+  u = 5.481951502e+00 + z * u;
+  u = -5.079844776e+00 + z * u;
+  u = -5.767862346e+00 + z * u;
+  u = -1.870434043e+00 + z * u;
+  t = u + x * t;
+  u = 9.043915155e-01;
+  u = 9.265270929e-01 + z * u;
+  u = -1.895346216e+00 + z * u;
+  u = -1.678486433e+00 + z * u;
+  u = 2.398216734e+00 + z * u;
+  u = 3.025214100e+00 + z * u;
+  u = 5.283581523e-01 + z * u;
+  t = u + x * t;
   u = 1.0 - tau;
   out_p[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;
 }
@@ -6908,10 +6944,10 @@ SHLIGHT_INLINE float shl_polygon_ggx_fast(const float (*v)[3], int nv, const flo
   shli_ggx_fast_fit(SHLIGHT_SQRTR(al), mu, al * s / (mu + al * s), par);
   ux = -s * par[3];
   q = SHLIGHT_SQRTR(ux * ux + mu * mu);
-  x = al * SHLIGHT_EXPR(par[0]);
+  x = al * SHLIGHT_MAXR(par[0], 0.05);
   q = shli_ltc_ff(px, py, pz, nv, x, x * SHLIGHT_MAXR(mu + (1.0 - mu) * par[1], 1.0e-3), par[2],
                   ux / q, mu / q);
-  return SHLIGHT_FLOAT(SHLIGHT_MAXR(SHLIGHT_EXPR(par[4]) * par[5] * q, 0.0));
+  return SHLIGHT_FLOAT(SHLIGHT_MAXR(par[4] * par[5] * q, 0.0));
 }
 
 /* ---- microfacet polygon lights in half-vector space ([AREA] sec. 8; docs/area-lights.md). With h

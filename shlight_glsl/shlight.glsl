@@ -6752,6 +6752,493 @@ float shl_polygon_beckmann(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 v
   return shli_mf_taylor(v, nv, nrm, view, alpha, 1);
 }
 
+/* ---- fast GGX polygon lights (shl_polygon_ggx_fast; docs/area-lights.md "Fast GGX"): a linearly
+   transformed cosine (Heitz et al. 2016) with no table. In the view frame (x toward the view,
+   z = nrm) the lobe is M = R S, R the rotation in the xz-plane taking z to the unit axis
+   (ux, 0, uz), S = ((a, 0, 0), (0, c, 0), (d, 0, 1)); the polygon is mapped by M^-1 =
+   S^-1 R^T, clipped to the shading horizon (the plane (M^T z).y >= 0 in the mapped space, so no
+   light from below the horizon) and to the cosine's z >= 0, and its cosine integral taken.
+   a, c, d, the axis and the magnitude (the directional albedo) are closed-form fits in alpha
+   and n.v (tools/fit_ggx_fast.c, fitted to polygon integrals of shl_polygon_ggx). */
+
+/* The cosine integral over the polygon (io_px, io_py, io_pz)[0..nv-1] (the view frame's
+   coordinates, overwritten) mapped by M^-1 as above, divided by pi: in [0, 1]. */
+shli_real shli_ltc_ff(inout shli_real io_px[SHLIGHT_CLIP_MAX],
+                      inout shli_real io_py[SHLIGHT_CLIP_MAX],
+                      inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real a, shli_real c,
+                      shli_real d, shli_real ux, shli_real uz) {
+  shli_real wx;
+  shli_real wz;
+  shli_real cx;
+  shli_real cy;
+  shli_real cz;
+  shli_real sp;
+  shli_real sum = 0.0;
+  shli_real ia = 1.0 / a;
+  shli_real ic = 1.0 / c;
+  shli_real hx = uz * d - ux * a;
+  int nc = nv;
+  int i;
+  int j;
+  for (i = 0; i < nv; ++i) {
+    wx = (uz * io_px[i] - ux * io_pz[i]) * ia;
+    wz = ux * io_px[i] + uz * io_pz[i];
+    io_px[i] = wx;
+    io_py[i] = io_py[i] * ic;
+    io_pz[i] = wz - d * wx;
+    if (!(hx * wx + uz * io_pz[i] >= 0.0) || !(io_pz[i] >= 0.0)) {
+      nc = 0;
+    }
+  }
+  if (nc == 0) { /* a vertex below either plane: clip */
+    nc = shli_poly_clip_unit2(io_px, io_py, io_pz, nv, hx, 0.0, uz, 1, 0.0, 0.0, 1.0);
+  } else { /* nothing to clip: orientation (shli_poly_clip_unit2's) and unit vertices */
+    cx = 0.0;
+    cy = 0.0;
+    cz = 0.0;
+    for (i = 0; i < nv; ++i) {
+      j = i + 1;
+      if (j == nv) {
+        j = 0;
+      }
+      cx = cx + io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+      cy = cy + io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+      cz = cz + io_px[i] * io_py[j] - io_py[i] * io_px[j];
+    }
+    sp = cx * io_px[0] + cy * io_py[0] + cz * io_pz[0];
+    for (i = 0; i < nv; ++i) {
+      wx = SHLIGHT_SQRTR(io_px[i] * io_px[i] + io_py[i] * io_py[i] + io_pz[i] * io_pz[i]);
+      if (!(wx > 0.0) || !(sp != 0.0)) {
+        return 0.0;
+      }
+      wx = 1.0 / wx;
+      io_px[i] = io_px[i] * wx;
+      io_py[i] = io_py[i] * wx;
+      io_pz[i] = io_pz[i] * wx;
+    }
+    if (sp < 0.0) {
+      nc = -nv;
+    }
+  }
+  for (i = 0; i < nc || i < -nc; ++i) {
+    j = i + 1;
+    if (j == nc || j == -nc) {
+      j = 0;
+    }
+    cx = io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+    cy = io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+    cz = io_px[i] * io_py[j] - io_py[i] * io_px[j];
+    sp = SHLIGHT_SQRTR(cx * cx + cy * cy + cz * cz);
+    if (sp > 1.0e-30) {
+      sum = sum + shli_atan2r(sp, io_px[i] * io_px[j] + io_py[i] * io_py[j] + io_pz[i] * io_pz[j]) *
+                      cz / sp;
+    }
+  }
+  if (nc < 0) {
+    sum = -sum;
+  }
+  return SHLIGHT_MAXR(sum, 0.0) * 0.15915494309189534;
+}
+
+/* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its --check */
+/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_p[0] a / alpha, [1] g (c = a (mu +
+   (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, cos theta_v)), [4] the
+   magnitude's factor, each a polynomial of degree 5 in 2 r - 1 (r = sqrt(alpha)) and 5 in 2 mu - 1 (mu = n.v); [5] the
+   directional albedo, E0 + r^2 times a polynomial of degree 8 in 2 r - 1 and 6 in 2 tau - 1, tau = alpha
+   sin(theta_v) / (mu + alpha sin(theta_v)), E0 = (1 - tau) / sqrt((1 - tau)^2 + tau^2) =
+   1 / sqrt(1 + alpha^2 tan^2 theta_v) (G2 at the mirror direction as alpha -> 0). */
+void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, out shli_real out_p[6]) {
+  shli_real x = 2.0 * r - 1.0;
+  shli_real y = 2.0 * mu - 1.0;
+  shli_real z = 2.0 * tau - 1.0;
+  shli_real u;
+  shli_real t;
+  u = 1.212711906e+01;
+  u = 3.432265520e+00 + y * u;
+  u = -1.893261147e+01 + y * u;
+  u = -2.764900684e+00 + y * u;
+  u = 6.193352699e+00 + y * u;
+  u = 6.080175042e-01 + y * u;
+  t = u;
+  u = -3.683760166e+00;
+  u = -2.894252300e+00 + y * u;
+  u = 7.114413261e+00 + y * u;
+  u = 2.338359833e+00 + y * u;
+  u = -2.417986155e+00 + y * u;
+  u = -4.808912575e-01 + y * u;
+  t = u + x * t;
+  u = -1.446102047e+01;
+  u = -2.999265909e+00 + y * u;
+  u = 2.150658798e+01 + y * u;
+  u = 2.662729025e+00 + y * u;
+  u = -6.755777836e+00 + y * u;
+  u = -8.035508990e-01 + y * u;
+  t = u + x * t;
+  u = 2.649357080e+00;
+  u = 2.515956640e+00 + y * u;
+  u = -5.315926552e+00 + y * u;
+  u = -2.249121428e+00 + y * u;
+  u = 1.818679810e+00 + y * u;
+  u = 1.900183558e-01 + y * u;
+  t = u + x * t;
+  u = 4.099138737e+00;
+  u = 1.330896616e-01 + y * u;
+  u = -5.438644409e+00 + y * u;
+  u = -2.838157415e-01 + y * u;
+  u = 1.434872389e+00 + y * u;
+  u = -1.130518019e-01 + y * u;
+  t = u + x * t;
+  u = -5.439761281e-01;
+  u = -2.028998174e-02 + y * u;
+  u = 6.121315956e-01 + y * u;
+  u = 3.068119586e-01 + y * u;
+  u = -2.544111907e-01 + y * u;
+  u = 1.809529424e+00 + y * u;
+  t = u + x * t;
+  out_p[0] = t;
+  u = -2.528548813e+01;
+  u = -4.578426361e+00 + y * u;
+  u = 3.420252609e+01 + y * u;
+  u = 7.920964241e+00 + y * u;
+  u = -9.969550133e+00 + y * u;
+  u = -2.403481483e+00 + y * u;
+  t = u;
+  u = 1.253335857e+01;
+  u = 2.894300938e+00 + y * u;
+  u = -1.581384087e+01 + y * u;
+  u = -3.926106453e+00 + y * u;
+  u = 4.337746143e+00 + y * u;
+  u = 1.174408793e+00 + y * u;
+  t = u + x * t;
+  u = 2.816065598e+01;
+  u = 5.445178032e+00 + y * u;
+  u = -3.796764755e+01 + y * u;
+  u = -9.251158714e+00 + y * u;
+  u = 1.107751179e+01 + y * u;
+  u = 2.607801676e+00 + y * u;
+  t = u + x * t;
+  u = -1.146001053e+01;
+  u = -2.814211845e+00 + y * u;
+  u = 1.404199409e+01 + y * u;
+  u = 3.473264933e+00 + y * u;
+  u = -3.711051226e+00 + y * u;
+  u = -7.749885321e-01 + y * u;
+  t = u + x * t;
+  u = -6.710307121e+00;
+  u = -1.476758003e+00 + y * u;
+  u = 8.944379807e+00 + y * u;
+  u = 2.431481361e+00 + y * u;
+  u = -2.601059914e+00 + y * u;
+  u = -6.535850465e-02 + y * u;
+  t = u + x * t;
+  u = 2.051179171e+00;
+  u = 5.296193361e-01 + y * u;
+  u = -2.388197899e+00 + y * u;
+  u = -5.196891427e-01 + y * u;
+  u = 5.821188688e-01 + y * u;
+  u = 4.199734032e-01 + y * u;
+  t = u + x * t;
+  out_p[1] = t;
+  u = -1.282742977e+00;
+  u = -2.499029636e-01 + y * u;
+  u = 1.942435741e+00 + y * u;
+  u = 4.869379103e-01 + y * u;
+  u = -5.883504748e-01 + y * u;
+  u = -4.310228229e-01 + y * u;
+  t = u;
+  u = 7.092418671e-01;
+  u = 2.381721288e-01 + y * u;
+  u = -1.128238440e+00 + y * u;
+  u = -2.418826967e-01 + y * u;
+  u = 5.387676954e-01 + y * u;
+  u = -6.616693735e-02 + y * u;
+  t = u + x * t;
+  u = 1.189693451e+00;
+  u = 2.914324701e-01 + y * u;
+  u = -1.949398756e+00 + y * u;
+  u = -7.634930015e-01 + y * u;
+  u = 5.125444531e-01 + y * u;
+  u = 9.166172147e-01 + y * u;
+  t = u + x * t;
+  u = -6.840785146e-01;
+  u = -2.496784329e-01 + y * u;
+  u = 1.021642089e+00 + y * u;
+  u = 2.662450969e-01 + y * u;
+  u = -7.915718555e-01 + y * u;
+  u = 4.178866446e-01 + y * u;
+  t = u + x * t;
+  u = -1.766734123e-01;
+  u = -1.464243792e-02 + y * u;
+  u = 3.330851197e-01 + y * u;
+  u = 2.910934389e-01 + y * u;
+  u = -2.773418464e-02 + y * u;
+  u = -4.926061034e-01 + y * u;
+  t = u + x * t;
+  u = 1.822024882e-01;
+  u = 5.170994624e-02 + y * u;
+  u = -1.975168288e-01 + y * u;
+  u = -6.551892310e-02 + y * u;
+  u = 3.334997296e-01 + y * u;
+  u = -3.236826062e-01 + y * u;
+  t = u + x * t;
+  out_p[2] = t;
+  u = -1.955668069e-02;
+  u = 7.820131779e-01 + y * u;
+  u = -1.260449409e+00 + y * u;
+  u = 2.521153092e-01 + y * u;
+  u = 6.539504528e-01 + y * u;
+  u = -1.961798221e-01 + y * u;
+  t = u;
+  u = -5.796523690e-01;
+  u = 3.852835000e-01 + y * u;
+  u = 5.414839983e-01 + y * u;
+  u = -6.546353102e-01 + y * u;
+  u = 3.711158633e-01 + y * u;
+  u = 1.486652792e-01 + y * u;
+  t = u + x * t;
+  u = 4.915349483e-01;
+  u = -1.634989023e+00 + y * u;
+  u = 1.718149781e+00 + y * u;
+  u = -2.257410735e-01 + y * u;
+  u = -1.188724518e+00 + y * u;
+  u = 4.782587886e-01 + y * u;
+  t = u + x * t;
+  u = 5.062524080e-01;
+  u = -2.253416628e-01 + y * u;
+  u = -6.614978313e-01 + y * u;
+  u = 8.233818412e-01 + y * u;
+  u = -7.353420258e-01 + y * u;
+  u = -3.651740253e-01 + y * u;
+  t = u + x * t;
+  u = -4.303378165e-01;
+  u = 8.372234702e-01 + y * u;
+  u = -5.129526854e-01 + y * u;
+  u = -5.315160844e-03 + y * u;
+  u = 5.473908186e-01 + y * u;
+  u = -7.839096785e-01 + y * u;
+  t = u + x * t;
+  u = 1.965714991e-02;
+  u = -1.188861951e-01 + y * u;
+  u = 1.610988975e-01 + y * u;
+  u = -2.058707327e-01 + y * u;
+  u = 3.682696223e-01 + y * u;
+  u = 7.208238840e-01 + y * u;
+  t = u + x * t;
+  out_p[3] = t;
+  u = -2.423511297e-01;
+  u = 1.567256749e-01 + y * u;
+  u = 1.800846905e-01 + y * u;
+  u = -9.569764137e-02 + y * u;
+  u = 8.637528867e-03 + y * u;
+  u = -1.658957079e-02 + y * u;
+  t = u;
+  u = 1.151706129e-01;
+  u = -1.161726117e-01 + y * u;
+  u = -4.709672183e-02 + y * u;
+  u = 2.795867436e-02 + y * u;
+  u = 1.988605037e-02 + y * u;
+  u = -5.579470657e-03 + y * u;
+  t = u + x * t;
+  u = 3.327584267e-01;
+  u = -2.472874522e-01 + y * u;
+  u = -2.403969616e-01 + y * u;
+  u = 1.812654436e-01 + y * u;
+  u = -2.642498165e-02 + y * u;
+  u = 1.282383595e-02 + y * u;
+  t = u + x * t;
+  u = -1.002762541e-01;
+  u = 1.261417866e-01 + y * u;
+  u = 2.550897421e-03 + y * u;
+  u = 6.944268243e-04 + y * u;
+  u = -1.609654725e-02 + y * u;
+  u = -1.428071060e-03 + y * u;
+  t = u + x * t;
+  u = -8.710061014e-02;
+  u = 8.521705121e-02 + y * u;
+  u = 5.675000325e-02 + y * u;
+  u = -7.615226507e-02 + y * u;
+  u = 1.804977655e-02 + y * u;
+  u = -3.997024032e-04 + y * u;
+  t = u + x * t;
+  u = 1.471141912e-02;
+  u = -2.360001579e-02 + y * u;
+  u = 1.582669094e-02 + y * u;
+  u = -1.899206825e-02 + y * u;
+  u = 2.488899045e-03 + y * u;
+  u = 1.004449129e+00 + y * u;
+  t = u + x * t;
+  out_p[4] = t;
+  u = 9.835902186e+00;
+  u = 4.815816315e+01 + z * u;
+  u = 3.016645875e+01 + z * u;
+  u = -5.254129555e+01 + z * u;
+  u = -4.131686923e+01 + z * u;
+  u = 1.076998664e+01 + z * u;
+  u = 8.002906556e+00 + z * u;
+  t = u;
+  u = -4.517718273e+01;
+  u = -1.327191734e+02 + z * u;
+  u = -3.015429468e+01 + z * u;
+  u = 1.564169442e+02 + z * u;
+  u = 8.213006476e+01 + z * u;
+  u = -3.667465959e+01 + z * u;
+  u = -1.973095451e+01 + z * u;
+  t = u + x * t;
+  u = 6.456231521e+01;
+  u = 1.024200233e+02 + z * u;
+  u = -6.211461723e+01 + z * u;
+  u = -1.467570816e+02 + z * u;
+  u = -1.590913984e+01 + z * u;
+  u = 4.596160970e+01 + z * u;
+  u = 1.434589623e+01 + z * u;
+  t = u + x * t;
+  u = -2.659266839e+01;
+  u = 1.302195064e+01 + z * u;
+  u = 9.459040183e+01 + z * u;
+  u = 2.219007812e+01 + z * u;
+  u = -5.761072135e+01 + z * u;
+  u = -2.612346033e+01 + z * u;
+  u = -1.532581752e+00 + z * u;
+  t = u + x * t;
+  u = -8.703993119e+00;
+  u = -3.918667259e+01 + z * u;
+  u = -2.758862821e+01 + z * u;
+  u = 3.054379187e+01 + z * u;
+  u = 3.805665447e+01 + z * u;
+  u = 1.003282046e+01 + z * u;
+  u = 2.797771967e-01 + z * u;
+  t = u + x * t;
+  u = 3.186377897e+00;
+  u = 1.391254303e+00 + z * u;
+  u = -5.538621202e+00 + z * u;
+  u = -4.184491630e+00 + z * u;
+  u = -6.486797598e+00 + z * u;
+  u = -9.401535433e+00 + z * u;
+  u = -2.776535210e+00 + z * u;
+  t = u + x * t;
+  u = 5.763624995e+00;
+  u = 1.048772557e+01 + z * u;
+  u = -2.921178913e+00 + z * u;
+  u = -9.704074130e+00 + z * u;
+  u = 4.380060798e+00 + z * u;
+  u = 9.091201017e+00 + z * u;
+  u = 2.425775951e+00 + z * u;
+  t = u + x * t;
+  u = -3.631340058e+00;
+  u = -4.346143737e+00 + z * u;
+  u = 5.216727987e+00 + z * u;
+  u = 5.481951502e+00 + z * u;
+  u = -5.079844776e+00 + z * u;
+  u = -5.767862346e+00 + z * u;
+  u = -1.870434043e+00 + z * u;
+  t = u + x * t;
+  u = 9.043915155e-01;
+  u = 9.265270929e-01 + z * u;
+  u = -1.895346216e+00 + z * u;
+  u = -1.678486433e+00 + z * u;
+  u = 2.398216734e+00 + z * u;
+  u = 3.025214100e+00 + z * u;
+  u = 5.283581523e-01 + z * u;
+  t = u + x * t;
+  u = 1.0 - tau;
+  out_p[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;
+}
+/* @fit ggx_fast end */
+
+float shl_polygon_ggx_fast(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha) {
+  shli_real px[SHLIGHT_CLIP_MAX];
+  shli_real py[SHLIGHT_CLIP_MAX];
+  shli_real pz[SHLIGHT_CLIP_MAX];
+  shli_real par[6];
+  shli_real nx = SHLIGHT_REAL(nrm[0]);
+  shli_real ny = SHLIGHT_REAL(nrm[1]);
+  shli_real nz = SHLIGHT_REAL(nrm[2]);
+  shli_real vx = SHLIGHT_REAL(view[0]);
+  shli_real vy = SHLIGHT_REAL(view[1]);
+  shli_real vz = SHLIGHT_REAL(view[2]);
+  shli_real ln = SHLIGHT_SQRTR(nx * nx + ny * ny + nz * nz);
+  shli_real lv = SHLIGHT_SQRTR(vx * vx + vy * vy + vz * vz);
+  shli_real al = SHLIGHT_REAL(alpha);
+  shli_real mu;
+  shli_real s;
+  shli_real tx;
+  shli_real ty;
+  shli_real tz;
+  shli_real bx;
+  shli_real by;
+  shli_real bz;
+  shli_real x;
+  shli_real y;
+  shli_real z;
+  shli_real ux;
+  shli_real q;
+  int i;
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_ggx_fast(v, nv, nrm, view, alpha);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
+  if (nv < 3 || !(ln > 0.0) || !(ln < SHLIGHT_REAL_MAX) || !(lv > 0.0) ||
+      !(lv < SHLIGHT_REAL_MAX) || !(al == al)) {
+    return 0.0f;
+  }
+  nx = nx / ln;
+  ny = ny / ln;
+  nz = nz / ln;
+  vx = vx / lv;
+  vy = vy / lv;
+  vz = vz / lv;
+  mu = nx * vx + ny * vy + nz * vz;
+  if (!(mu > 0.0)) {
+    return 0.0f;
+  }
+  mu = SHLIGHT_MINR(mu, 1.0);
+  al = SHLIGHT_MINR(SHLIGHT_MAXR(al, 1.0e-4), 1.0);
+  /* the view frame: t toward the view in the tangent plane (any tangent at normal view, the
+     frame of Duff et al. 2017), b = n x t */
+  tx = vx - mu * nx;
+  ty = vy - mu * ny;
+  tz = vz - mu * nz;
+  s = SHLIGHT_SQRTR(tx * tx + ty * ty + tz * tz);
+  if (s > 1.0e-7) {
+    tx = tx / s;
+    ty = ty / s;
+    tz = tz / s;
+  } else {
+    q = -1.0 / (SHLIGHT_REAL(SHLIGHT_SIGN1(nz)) + nz);
+    tx = 1.0 + SHLIGHT_REAL(SHLIGHT_SIGN1(nz)) * nx * nx * q;
+    ty = SHLIGHT_REAL(SHLIGHT_SIGN1(nz)) * nx * ny * q;
+    tz = -SHLIGHT_REAL(SHLIGHT_SIGN1(nz)) * nx;
+  }
+  bx = ny * tz - nz * ty;
+  by = nz * tx - nx * tz;
+  bz = nx * ty - ny * tx;
+  s = SHLIGHT_SQRTR(SHLIGHT_MAXR(1.0 - mu * mu, 0.0));
+  for (i = 0; i < nv; ++i) {
+    x = SHLIGHT_REAL(v[i][0]);
+    y = SHLIGHT_REAL(v[i][1]);
+    z = SHLIGHT_REAL(v[i][2]);
+    if (!(SHLIGHT_ABSR(x) + SHLIGHT_ABSR(y) + SHLIGHT_ABSR(z) < SHLIGHT_REAL_MAX)) {
+      return 0.0f;
+    }
+    px[i] = x * tx + y * ty + z * tz;
+    py[i] = x * bx + y * by + z * bz;
+    pz[i] = x * nx + y * ny + z * nz;
+  }
+  shli_ggx_fast_fit(SHLIGHT_SQRTR(al), mu, al * s / (mu + al * s), par);
+  ux = -s * par[3];
+  q = SHLIGHT_SQRTR(ux * ux + mu * mu);
+  x = al * SHLIGHT_MAXR(par[0], 0.05);
+  q = shli_ltc_ff(px, py, pz, nv, x, x * SHLIGHT_MAXR(mu + (1.0 - mu) * par[1], 1.0e-3), par[2],
+                  ux / q, mu / q);
+  return SHLIGHT_FLOAT(SHLIGHT_MAXR(par[4] * par[5] * q, 0.0));
+}
+
+/* @glsl fast ggx end */
+
 shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
                              shli_real bz, shli_real rx, shli_real ry, shli_real rz,
                              shli_real alpha, shli_real sa) {

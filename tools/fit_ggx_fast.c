@@ -48,8 +48,8 @@ static double ltc(const double q[4][3], const double *m, double mu, double s) {
 static double gmu; /* mu of the point p2m is called for */
 static void p2m(const double *p, double alpha, double *m) {
   double g = gmu + (1 - gmu) * p[1];
-  m[0] = alpha * exp(p[0]), m[1] = m[0] * (g > 1e-3 ? g : 1e-3), m[2] = p[2], m[3] = p[3];
-  m[4] = exp(p[4]);
+  m[0] = alpha * (p[0] > 0.05 ? p[0] : 0.05), m[1] = m[0] * (g > 1e-3 ? g : 1e-3), m[2] = p[2];
+  m[3] = p[3], m[4] = p[4];
 }
 static double prior[5];
 static double obj(const double *p) {
@@ -58,7 +58,12 @@ static double obj(const double *p) {
   if (p[1] < -0.5 || p[1] > 3 || fabs(p[2]) > 3 || p[3] < 0 || p[3] > 3 || fabs(p[4]) > 1)
     return 1e30;
   gmu = P.mu;
-  p2m(p, P.alpha, m);
+  {
+    double q[5];
+    memcpy(q, p, sizeof q);
+    q[0] = exp(p[0]), q[4] = exp(p[4]); /* the optimiser works on the logs */
+    p2m(q, P.alpha, m);
+  }
   for (i = 0; i < NQ; ++i) {
     double f = m[4] * P.alb * ltc((const double(*)[3])P.q[i], m, P.mu, P.s);
     double e = (f - P.gt[i]) / (P.gt[i] + 0.02 * P.alb);
@@ -169,9 +174,9 @@ static double model_alb(double r, double mu) {
   for (i = 0; i <= AI; ++i) {
     double t = 0;
     for (j = AJ; j >= 0; --j)
-      t = t * tau + CA[i][j];
+      t = t * (2 * tau - 1) + CA[i][j];
     e += ri * t;
-    ri *= r;
+    ri *= 2 * r - 1;
   }
   return e;
 }
@@ -242,8 +247,8 @@ static void fit_albedo(void) {
       R[row] = r, M[row] = mu, W[row] = 1 / (2e-5 + 3e-3 * al);
       for (i = 0; i <= AI; ++i) {
         for (j = 0; j <= AJ; ++j)
-          A[row * n + i * (AJ + 1) + j] = W[row] * ri * pow(tau, j);
-        ri *= r;
+          A[row * n + i * (AJ + 1) + j] = W[row] * ri * pow(2 * tau - 1, j);
+        ri *= 2 * r - 1;
       }
       b[row] = W[row] * (e - e0(tau));
       b[row] = b[row];
@@ -301,7 +306,7 @@ static void fit_params(const char *fn) {
       for (i = 0; i <= DI; ++i)
         for (j = 0; j <= DJ; ++j)
           A[row * n + i * (DJ + 1) + j] = pw[row] * pow(2 * pr[row] - 1, i) * pow(2 * pm[row] - 1, j);
-      b[row] = pw[row] * pv[row][k];
+      b[row] = pw[row] * (k == 0 || k == 4 ? exp(pv[row][k]) : pv[row][k]);
     }
     lsq(A, b, np, n, x);
     for (i = 0; i <= DI; ++i)
@@ -309,7 +314,8 @@ static void fit_params(const char *fn) {
         CO[k][i][j] = (double)(float)x[i * (DJ + 1) + j];
     for (row = 0; row < np; ++row) {
       model_p(pr[row], pm[row], p);
-      if (fabs(p[k] - pv[row][k]) > emax) emax = fabs(p[k] - pv[row][k]);
+      if (fabs(p[k] - (k == 0 || k == 4 ? exp(pv[row][k]) : pv[row][k])) > emax)
+        emax = fabs(p[k] - (k == 0 || k == 4 ? exp(pv[row][k]) : pv[row][k]));
     }
     fprintf(stderr, "param %d: %d points, max abs deviation %.3g\n", k, np, emax);
     free(A), free(b);
@@ -554,16 +560,16 @@ static char *emit_text(void) {
   char *o = buf;
   o += sprintf(o, "/* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its --check */\n");
   o += sprintf(o,
-               "/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_p[0] log(a / alpha), [1] g "
+               "/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_p[0] a / alpha, [1] g "
                "(c = a (mu +\n   (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, cos theta_v)), "
-               "[4] log of the\n   magnitude's factor, each a polynomial of degree %d in 2 r - 1 (r = sqrt(alpha)) "
+               "[4] the\n   magnitude's factor, each a polynomial of degree %d in 2 r - 1 (r = sqrt(alpha)) "
                "and %d in 2 mu - 1 (mu = n.v); [5] the\n   directional albedo, E0 + r^2 times a polynomial of degree "
-               "%d in r and %d in tau = alpha\n   sin(theta_v) / (mu + alpha sin(theta_v)), E0 = (1 - tau) "
+               "%d in 2 r - 1 and %d in 2 tau - 1, tau = alpha\n   sin(theta_v) / (mu + alpha sin(theta_v)), E0 = (1 - tau) "
                "/ sqrt((1 - tau)^2 + tau^2) =\n   1 / sqrt(1 + alpha^2 tan^2 theta_v) (G2 at the mirror "
                "direction as alpha -> 0). */\n",
                DI, DJ, AI, AJ);
   o += sprintf(o, "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,\n"
-                  "                                      shli_real *out_p) {\n  shli_real x = 2.0 * r - 1.0;\n  shli_real y = 2.0 * mu - 1.0;\n  shli_real u;\n  shli_real t;\n");
+                  "                                      shli_real *out_p) {\n  shli_real x = 2.0 * r - 1.0;\n  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n  shli_real u;\n  shli_real t;\n");
   for (k = 0; k < 5; ++k) {
     for (i = DI; i >= 0; --i) {
       lit(l1, CO[k][i][DJ]);
@@ -584,12 +590,12 @@ static char *emit_text(void) {
     o += sprintf(o, "  u = %s;\n", l1);
     for (j = AJ - 1; j >= 0; --j) {
       lit(l1, CA[i][j]);
-      o += sprintf(o, "  u = %s + tau * u;\n", l1);
+      o += sprintf(o, "  u = %s + z * u;\n", l1);
     }
     if (i == AI)
       o += sprintf(o, "  t = u;\n");
     else
-      o += sprintf(o, "  t = u + r * t;\n");
+      o += sprintf(o, "  t = u + x * t;\n");
   }
   o += sprintf(o, "  u = 1.0 - tau;\n  out_p[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;\n}\n");
   o += sprintf(o, "/* @fit ggx_fast end */\n");
