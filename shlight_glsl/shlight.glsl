@@ -6841,12 +6841,13 @@ shli_real shli_ltc_ff(inout shli_real io_px[SHLIGHT_CLIP_MAX],
 }
 
 /* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its --check */
-/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_p[0] a / alpha, [1] g (c = a (mu +
-   (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, cos theta_v)), [4] the
-   magnitude's factor, each a polynomial of degree 5 in 2 r - 1 (r = sqrt(alpha)) and 5 in 2 mu - 1 (mu = n.v); [5] the
-   directional albedo, E0 + r^2 times a polynomial of degree 8 in 2 r - 1 and 6 in 2 tau - 1, tau = alpha
-   sin(theta_v) / (mu + alpha sin(theta_v)), E0 = (1 - tau) / sqrt((1 - tau)^2 + tau^2) =
-   1 / sqrt(1 + alpha^2 tan^2 theta_v) (G2 at the mirror direction as alpha -> 0). */
+/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_p[0] a / alpha, [1] g (c =
+   a (mu + (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, cos theta_v)), [4] k
+   (the magnitude's factor), each a polynomial of degree 5 in 2 r - 1 (r = sqrt(alpha)) and
+   5 in 2 mu - 1 (mu = n.v); [5] the directional albedo, E0 + r^2 times a polynomial of
+   degree 8 in 2 r - 1 and 6 in 2 tau - 1, tau = alpha sin(theta_v) / (mu + alpha sin(theta_v)),
+   E0 = (1 - tau) / sqrt((1 - tau)^2 + tau^2) = 1 / sqrt(1 + alpha^2 tan^2 theta_v) (G2 at the
+   mirror direction as alpha -> 0). */
 void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, out shli_real out_p[6]) {
   shli_real x = 2.0 * r - 1.0;
   shli_real y = 2.0 * mu - 1.0;

@@ -22,7 +22,7 @@
 #define NQ 160
 #define NRG 17
 #define NTH 15
-static const double RG[NRG] = {0.01, 0.025, 0.05, 0.075, 0.1, 0.15, 0.2, 0.25, 0.3,
+static const double RG[NRG] = {0.01, 0.025, 0.05, 0.075, 0.1, 0.15, 0.2,  0.25, 0.3,
                                0.4,  0.5,   0.6,  0.7,   0.8, 0.9,  0.95, 1.0};
 static const double TH[NTH] = {0, 10, 20, 30, 40, 50, 60, 65, 70, 75, 80, 83, 86, 88, 89};
 
@@ -43,8 +43,8 @@ static double ltc(const double q[4][3], const double *m, double mu, double s) {
   return shli_ltc_ff(px, py, pz, 4, m[0], m[1], m[2], ux / l, uz / l);
 }
 
-/* the per-point parameters p: log(a / alpha), g (c = a (mu + (1 - mu) g)), d, P, log k; the transform
-   m: a, c, d, P (the axis (-s P, 0, mu) normalised), k */
+/* the per-point parameters p: log(a / alpha), g (c = a (mu + (1 - mu) g)), d, P, log k; the
+   transform m: a, c, d, P (the axis (-s P, 0, mu) normalised), k */
 static double gmu; /* mu of the point p2m is called for */
 static void p2m(const double *p, double alpha, double *m) {
   double g = gmu + (1 - gmu) * p[1];
@@ -305,7 +305,8 @@ static void fit_params(const char *fn) {
     for (row = 0; row < np; ++row) {
       for (i = 0; i <= DI; ++i)
         for (j = 0; j <= DJ; ++j)
-          A[row * n + i * (DJ + 1) + j] = pw[row] * pow(2 * pr[row] - 1, i) * pow(2 * pm[row] - 1, j);
+          A[row * n + i * (DJ + 1) + j] =
+              pw[row] * pow(2 * pr[row] - 1, i) * pow(2 * pm[row] - 1, j);
       b[row] = pw[row] * (k == 0 || k == 4 ? exp(pv[row][k]) : pv[row][k]);
     }
     lsq(A, b, np, n, x);
@@ -392,8 +393,6 @@ static void check(void) {
            pct(rel, nv, 0.5), pct(rel, nv, 0.95), pct(rel, nv, 1), emax);
   }
 }
-
-
 
 /* ---- Levenberg-Marquardt on the polynomial coefficients against every training quad at once
    (the per-point optima only start it): residual psi((k E F - gt) / (gt + 0.02 E)), psi a soft
@@ -558,18 +557,22 @@ static char *emit_text(void) {
   char l1[64];
   int k, i, j;
   char *o = buf;
-  o += sprintf(o, "/* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its --check */\n");
+  o += sprintf(o, "/* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its "
+                  "--check */\n");
   o += sprintf(o,
-               "/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_p[0] a / alpha, [1] g "
-               "(c = a (mu +\n   (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, cos theta_v)), "
-               "[4] the\n   magnitude's factor, each a polynomial of degree %d in 2 r - 1 (r = sqrt(alpha)) "
-               "and %d in 2 mu - 1 (mu = n.v); [5] the\n   directional albedo, E0 + r^2 times a polynomial of degree "
-               "%d in 2 r - 1 and %d in 2 tau - 1, tau = alpha\n   sin(theta_v) / (mu + alpha sin(theta_v)), E0 = (1 - tau) "
-               "/ sqrt((1 - tau)^2 + tau^2) =\n   1 / sqrt(1 + alpha^2 tan^2 theta_v) (G2 at the mirror "
-               "direction as alpha -> 0). */\n",
+               "/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_p[0] a / alpha, "
+               "[1] g (c =\n   a (mu + (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, "
+               "cos theta_v)), [4] k\n   (the magnitude's factor), each a polynomial of degree "
+               "%d in 2 r - 1 (r = sqrt(alpha)) and\n   %d in 2 mu - 1 (mu = n.v); [5] the "
+               "directional albedo, E0 + r^2 times a polynomial of\n   degree %d in 2 r - 1 and "
+               "%d in 2 tau - 1, tau = alpha sin(theta_v) / (mu + alpha sin(theta_v)),\n   E0 = "
+               "(1 - tau) / sqrt((1 - tau)^2 + tau^2) = 1 / sqrt(1 + alpha^2 tan^2 theta_v) (G2 "
+               "at the\n   mirror direction as alpha -> 0). */\n",
                DI, DJ, AI, AJ);
-  o += sprintf(o, "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,\n"
-                  "                                      shli_real *out_p) {\n  shli_real x = 2.0 * r - 1.0;\n  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n  shli_real u;\n  shli_real t;\n");
+  o += sprintf(o, "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, "
+                  "shli_real *out_p) {\n  shli_real x = 2.0 * "
+                  "r - 1.0;\n  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n  "
+                  "shli_real u;\n  shli_real t;\n");
   for (k = 0; k < 5; ++k) {
     for (i = DI; i >= 0; --i) {
       lit(l1, CO[k][i][DJ]);
@@ -597,7 +600,8 @@ static char *emit_text(void) {
     else
       o += sprintf(o, "  t = u + x * t;\n");
   }
-  o += sprintf(o, "  u = 1.0 - tau;\n  out_p[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;\n}\n");
+  o += sprintf(
+      o, "  u = 1.0 - tau;\n  out_p[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;\n}\n");
   o += sprintf(o, "/* @fit ggx_fast end */\n");
   return buf;
 }
@@ -644,8 +648,7 @@ int main(int argc, char **argv) {
       for (it = 0; it < NTH; ++it) {
         double x[5], y[5], fx, fy;
         setup(ir, TH[it], 0x5EEDull * 1000003ull + (unsigned long long)(ir * 97 + it * 7 + 1));
-        prior[0] = log(2.0), prior[1] = 0, prior[2] = 0, prior[3] = 1,
-        prior[4] = 0;
+        prior[0] = log(2.0), prior[1] = 0, prior[2] = 0, prior[3] = 1, prior[4] = 0;
         if (ir > lo) {
           memcpy(prior, prev[it], sizeof prior);
         }
@@ -698,7 +701,8 @@ int main(int argc, char **argv) {
     int rc;
     load(argv[2]);
     rc = region(argv[3], 0);
-    printf("%s: shli_ggx_fast_fit %s %s\n", rc == 0 ? "ok" : "FAIL", rc == 0 ? "matches" : "differs from", argv[2]);
+    printf("%s: shli_ggx_fast_fit %s %s\n", rc == 0 ? "ok" : "FAIL",
+           rc == 0 ? "matches" : "differs from", argv[2]);
     return rc;
   }
   fprintf(stderr, "usage: fit_ggx_fast points [ir0 ir1] | smooth POINTS COEF | check COEF |\n"
