@@ -6556,14 +6556,15 @@ SHLIGHT_INLINE shli_real shli_ltc_ff(shli_real *io_px, shli_real *io_py, shli_re
 }
 
 /* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its --check */
-/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_p[0] a / alpha, [1] g (c =
+/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_fit[0] a / alpha, [1] g (c =
    a (mu + (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, cos theta_v)), [4] k
    (the magnitude's factor), each a polynomial of degree 5 in 2 r - 1 (r = sqrt(alpha)) and
    5 in 2 mu - 1 (mu = n.v); [5] the directional albedo, E0 + r^2 times a polynomial of
    degree 8 in 2 r - 1 and 6 in 2 tau - 1, tau = alpha sin(theta_v) / (mu + alpha sin(theta_v)),
    E0 = (1 - tau) / sqrt((1 - tau)^2 + tau^2) = 1 / sqrt(1 + alpha^2 tan^2 theta_v) (G2 at the
    mirror direction as alpha -> 0). */
-SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, shli_real *out_p) {
+SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,
+                                      shli_real *out_fit) {
   shli_real x = 2.0 * r - 1.0;
   shli_real y = 2.0 * mu - 1.0;
   shli_real z = 2.0 * tau - 1.0;
@@ -6611,7 +6612,7 @@ SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, 
   u = -2.544111907e-01 + y * u;
   u = 1.809529424e+00 + y * u;
   t = u + x * t;
-  out_p[0] = t;
+  out_fit[0] = t;
   u = -2.528548813e+01;
   u = -4.578426361e+00 + y * u;
   u = 3.420252609e+01 + y * u;
@@ -6654,7 +6655,7 @@ SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, 
   u = 5.821188688e-01 + y * u;
   u = 4.199734032e-01 + y * u;
   t = u + x * t;
-  out_p[1] = t;
+  out_fit[1] = t;
   u = -1.282742977e+00;
   u = -2.499029636e-01 + y * u;
   u = 1.942435741e+00 + y * u;
@@ -6697,7 +6698,7 @@ SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, 
   u = 3.334997296e-01 + y * u;
   u = -3.236826062e-01 + y * u;
   t = u + x * t;
-  out_p[2] = t;
+  out_fit[2] = t;
   u = -1.955668069e-02;
   u = 7.820131779e-01 + y * u;
   u = -1.260449409e+00 + y * u;
@@ -6740,7 +6741,7 @@ SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, 
   u = 3.682696223e-01 + y * u;
   u = 7.208238840e-01 + y * u;
   t = u + x * t;
-  out_p[3] = t;
+  out_fit[3] = t;
   u = -2.423511297e-01;
   u = 1.567256749e-01 + y * u;
   u = 1.800846905e-01 + y * u;
@@ -6783,7 +6784,7 @@ SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, 
   u = 2.488899045e-03 + y * u;
   u = 1.004449129e+00 + y * u;
   t = u + x * t;
-  out_p[4] = t;
+  out_fit[4] = t;
   u = 9.835902186e+00;
   u = 4.815816315e+01 + z * u;
   u = 3.016645875e+01 + z * u;
@@ -6857,7 +6858,7 @@ SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, 
   u = 5.283581523e-01 + z * u;
   t = u + x * t;
   u = 1.0 - tau;
-  out_p[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;
+  out_fit[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;
 }
 /* @fit ggx_fast end */
 

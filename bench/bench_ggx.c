@@ -212,8 +212,9 @@ int main(int argc, char **argv) {
             pct(ea, NPER, 0.5), pct(ea, NPER, 0.95), pct(ea, NPER, 1), LTC[ir][0], LTC[ir][1],
             LTC[ir][2], LTC[ir][3], LTC[ir][4], LTC[ir][5]);
   }
-  fprintf(o, "\n| roughness (alpha = r^2) | vis. | shl_polygon_ggx_fast rel. err vis. median / p95 / "
-             "max | err/albedo median / p95 / max |\n|---|---|---|---|\n");
+  fprintf(o,
+          "\n| roughness (alpha = r^2) | vis. | shl_polygon_ggx_fast rel. err vis. median / p95 / "
+          "max | err/albedo median / p95 / max |\n|---|---|---|---|\n");
   for (ir = 0; ir < NR; ++ir) {
     static double rel[NPER], ea[NPER];
     int nv = 0;

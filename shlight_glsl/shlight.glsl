@@ -6752,17 +6752,6 @@ float shl_polygon_beckmann(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 v
   return shli_mf_taylor(v, nv, nrm, view, alpha, 1);
 }
 
-/* ---- fast GGX polygon lights (shl_polygon_ggx_fast; docs/area-lights.md "Fast GGX"): a linearly
-   transformed cosine (Heitz et al. 2016) with no table. In the view frame (x toward the view,
-   z = nrm) the lobe is M = R S, R the rotation in the xz-plane taking z to the unit axis
-   (ux, 0, uz), S = ((a, 0, 0), (0, c, 0), (d, 0, 1)); the polygon is mapped by M^-1 =
-   S^-1 R^T, clipped to the shading horizon (the plane (M^T z).y >= 0 in the mapped space, so no
-   light from below the horizon) and to the cosine's z >= 0, and its cosine integral taken.
-   a, c, d, the axis and the magnitude (the directional albedo) are closed-form fits in alpha
-   and n.v (tools/fit_ggx_fast.c, fitted to polygon integrals of shl_polygon_ggx). */
-
-/* The cosine integral over the polygon (io_px, io_py, io_pz)[0..nv-1] (the view frame's
-   coordinates, overwritten) mapped by M^-1 as above, divided by pi: in [0, 1]. */
 shli_real shli_ltc_ff(inout shli_real io_px[SHLIGHT_CLIP_MAX],
                       inout shli_real io_py[SHLIGHT_CLIP_MAX],
                       inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real a, shli_real c,
@@ -6840,15 +6829,7 @@ shli_real shli_ltc_ff(inout shli_real io_px[SHLIGHT_CLIP_MAX],
   return SHLIGHT_MAXR(sum, 0.0) * 0.15915494309189534;
 }
 
-/* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its --check */
-/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_p[0] a / alpha, [1] g (c =
-   a (mu + (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, cos theta_v)), [4] k
-   (the magnitude's factor), each a polynomial of degree 5 in 2 r - 1 (r = sqrt(alpha)) and
-   5 in 2 mu - 1 (mu = n.v); [5] the directional albedo, E0 + r^2 times a polynomial of
-   degree 8 in 2 r - 1 and 6 in 2 tau - 1, tau = alpha sin(theta_v) / (mu + alpha sin(theta_v)),
-   E0 = (1 - tau) / sqrt((1 - tau)^2 + tau^2) = 1 / sqrt(1 + alpha^2 tan^2 theta_v) (G2 at the
-   mirror direction as alpha -> 0). */
-void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, out shli_real out_p[6]) {
+void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, out shli_real out_fit[6]) {
   shli_real x = 2.0 * r - 1.0;
   shli_real y = 2.0 * mu - 1.0;
   shli_real z = 2.0 * tau - 1.0;
@@ -6896,7 +6877,7 @@ void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, out shli_real o
   u = -2.544111907e-01 + y * u;
   u = 1.809529424e+00 + y * u;
   t = u + x * t;
-  out_p[0] = t;
+  out_fit[0] = t;
   u = -2.528548813e+01;
   u = -4.578426361e+00 + y * u;
   u = 3.420252609e+01 + y * u;
@@ -6939,7 +6920,7 @@ void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, out shli_real o
   u = 5.821188688e-01 + y * u;
   u = 4.199734032e-01 + y * u;
   t = u + x * t;
-  out_p[1] = t;
+  out_fit[1] = t;
   u = -1.282742977e+00;
   u = -2.499029636e-01 + y * u;
   u = 1.942435741e+00 + y * u;
@@ -6982,7 +6963,7 @@ void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, out shli_real o
   u = 3.334997296e-01 + y * u;
   u = -3.236826062e-01 + y * u;
   t = u + x * t;
-  out_p[2] = t;
+  out_fit[2] = t;
   u = -1.955668069e-02;
   u = 7.820131779e-01 + y * u;
   u = -1.260449409e+00 + y * u;
@@ -7025,7 +7006,7 @@ void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, out shli_real o
   u = 3.682696223e-01 + y * u;
   u = 7.208238840e-01 + y * u;
   t = u + x * t;
-  out_p[3] = t;
+  out_fit[3] = t;
   u = -2.423511297e-01;
   u = 1.567256749e-01 + y * u;
   u = 1.800846905e-01 + y * u;
@@ -7068,7 +7049,7 @@ void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, out shli_real o
   u = 2.488899045e-03 + y * u;
   u = 1.004449129e+00 + y * u;
   t = u + x * t;
-  out_p[4] = t;
+  out_fit[4] = t;
   u = 9.835902186e+00;
   u = 4.815816315e+01 + z * u;
   u = 3.016645875e+01 + z * u;
@@ -7142,9 +7123,8 @@ void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, out shli_real o
   u = 5.283581523e-01 + z * u;
   t = u + x * t;
   u = 1.0 - tau;
-  out_p[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;
+  out_fit[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;
 }
-/* @fit ggx_fast end */
 
 float shl_polygon_ggx_fast(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha) {
   shli_real px[SHLIGHT_CLIP_MAX];
@@ -7237,8 +7217,6 @@ float shl_polygon_ggx_fast(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 v
                   ux / q, mu / q);
   return SHLIGHT_FLOAT(SHLIGHT_MAXR(par[4] * par[5] * q, 0.0));
 }
-
-/* @glsl fast ggx end */
 
 shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
                              shli_real bz, shli_real rx, shli_real ry, shli_real rz,

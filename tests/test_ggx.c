@@ -339,9 +339,12 @@ static void test_polygons(void) {
    0.2: 6.2e-3 / 2.3e-2, 0.3: 1.6e-2 / 2.0e-2, 0.5: 1.4e-2 / 2.6e-2, 0.7: 2.1e-2 / 3.0e-2,
    1.0: 1.4e-2 / 2.1e-2; hard cases (max err/albedo): straddling 1.3e-2, grazing 2.4e-2, large
    4.3e-2, sliver 1.6e-3; 9..64 vertices 3.3e-3 */
-#define FAST_MED {1.1e-3, 1.9e-2, 9.3e-3, 2.4e-2, 2.2e-2, 3.1e-2, 2.1e-2}
-#define FAST_MAX {5.5e-3, 9e-2, 3.5e-2, 3.1e-2, 3.9e-2, 4.5e-2, 3.2e-2}
-#define FAST_HARD {1.9e-2, 3.7e-2, 6.5e-2, 2.4e-3}
+#define FAST_MED                                                                                   \
+  { 1.1e-3, 1.9e-2, 9.3e-3, 2.4e-2, 2.2e-2, 3.1e-2, 2.1e-2 }
+#define FAST_MAX                                                                                   \
+  { 5.5e-3, 9e-2, 3.5e-2, 3.1e-2, 3.9e-2, 4.5e-2, 3.2e-2 }
+#define FAST_HARD                                                                                  \
+  { 1.9e-2, 3.7e-2, 6.5e-2, 2.4e-3 }
 #define FAST_MANY 4.9e-3
 /* ---- shl_polygon_ggx_fast (the table-free linearly transformed cosine) against the same long
    double cubature. The fit (tools/fit_ggx_fast.c) never saw these quads (its training quads come
@@ -481,7 +484,7 @@ static void test_fast_many(void) {
   for (in = 0; in < 4; ++in)
     for (ic = 0; ic < 2; ++ic) {
       double q[64][3], view[3] = {sin(0.6), 0, cos(0.6)}, c[3], t1[3] = {0, 1, 0}, t2[3], alb, gt,
-                                                                      got;
+                       got;
       int i, k;
       c[0] = -view[0], c[1] = 0, c[2] = ic == 0 ? view[2] : 0.05;
       ggxc_unit(c);

@@ -560,7 +560,7 @@ static char *emit_text(void) {
   o += sprintf(o, "/* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its "
                   "--check */\n");
   o += sprintf(o,
-               "/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_p[0] a / alpha, "
+               "/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_fit[0] a / alpha, "
                "[1] g (c =\n   a (mu + (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, "
                "cos theta_v)), [4] k\n   (the magnitude's factor), each a polynomial of degree "
                "%d in 2 r - 1 (r = sqrt(alpha)) and\n   %d in 2 mu - 1 (mu = n.v); [5] the "
@@ -569,10 +569,11 @@ static char *emit_text(void) {
                "(1 - tau) / sqrt((1 - tau)^2 + tau^2) = 1 / sqrt(1 + alpha^2 tan^2 theta_v) (G2 "
                "at the\n   mirror direction as alpha -> 0). */\n",
                DI, DJ, AI, AJ);
-  o += sprintf(o, "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, "
-                  "shli_real *out_p) {\n  shli_real x = 2.0 * "
-                  "r - 1.0;\n  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n  "
-                  "shli_real u;\n  shli_real t;\n");
+  o += sprintf(
+      o, "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,"
+         "\n                                      shli_real *out_fit) {\n  shli_real x = 2.0 * "
+         "r - 1.0;\n  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n  "
+         "shli_real u;\n  shli_real t;\n");
   for (k = 0; k < 5; ++k) {
     for (i = DI; i >= 0; --i) {
       lit(l1, CO[k][i][DJ]);
@@ -586,7 +587,7 @@ static char *emit_text(void) {
       else
         o += sprintf(o, "  t = u + x * t;\n");
     }
-    o += sprintf(o, "  out_p[%d] = t;\n", k);
+    o += sprintf(o, "  out_fit[%d] = t;\n", k);
   }
   for (i = AI; i >= 0; --i) {
     lit(l1, CA[i][AJ]);
@@ -601,7 +602,7 @@ static char *emit_text(void) {
       o += sprintf(o, "  t = u + x * t;\n");
   }
   o += sprintf(
-      o, "  u = 1.0 - tau;\n  out_p[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;\n}\n");
+      o, "  u = 1.0 - tau;\n  out_fit[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;\n}\n");
   o += sprintf(o, "/* @fit ggx_fast end */\n");
   return buf;
 }
