@@ -1,13 +1,26 @@
 /* fit_ggx_fast.c - the fit behind shl_polygon_ggx_fast (shlight.h, >>edge "fast GGX polygon
  * lights"): a linearly transformed cosine whose transform and magnitude are closed-form
  * functions of (alpha, n.v), fitted to what a user sees, the polygon integrals of the accurate
- * shl_polygon_ggx, not to the lobe's shape.
+ * shl_polygon_ggx, not to the lobe's shape (docs/area-lights.md "Fast GGX polygon lights").
  *
- *   build: cc -O2 -std=c99 -o build/fit_ggx_fast tools/fit_ggx_fast.c -lm
- *   points: build/fit_ggx_fast points > build/ggx_fast_points.txt   (per grid point optimum)
+ *   build:  cc -O2 -std=c99 -o build/fit_ggx_fast tools/fit_ggx_fast.c -lm
+ *   points: build/fit_ggx_fast points > build/ggx_fast_points.txt
+ *           the optimum (Nelder-Mead) of the 5 parameters at each of 17 x 15 grid points
+ *           (roughness x view angle), 160 training quads each (~1.5 min)
+ *   smooth: build/fit_ggx_fast smooth build/ggx_fast_points.txt tools/ggx_fast_coef.txt
+ *           the albedo fit and the weighted least-squares polynomials through the points
+ *   check:  build/fit_ggx_fast check tools/ggx_fast_coef.txt
+ *           median / p95 / max relative error and max error / albedo on the bench sampler
+ *   lm:     build/fit_ggx_fast lm COEF_IN COEF_OUT ITERATIONS
+ *           Levenberg-Marquardt on all coefficients against every training quad (tried, not
+ *           used: it lowered the training cost but raised the median at low roughness)
+ *   emit:   build/fit_ggx_fast emit tools/ggx_fast_coef.txt shlight.h
+ *           writes shli_ggx_fast_fit between the @fit ggx_fast markers; then
+ *           python3 tools/gen_basis.py (the GLSL twin) and python3 tools/gen_glsl_one.py
+ *   --check build/fit_ggx_fast --check tools/ggx_fast_coef.txt shlight.h   (tests/run.sh)
  *
  * Training quads: tests/ref/ggxcases.h's sampler at a fixed view angle with its own seeds
- * (never the seed 2017 of the test and bench sampler). */
+ * (never the seed 2017 of the bench sampler nor the seeds of tests/test_ggx.c). */
 #define _POSIX_C_SOURCE 200809L
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
