@@ -81,7 +81,7 @@ static void test_glsl_ggx(void) {
   TL_CHECK(nz == 0, "%d lights below the horizon gave light", nz);
 }
 
-#define FAST_TOL 5e-6 /* measured 1.5e-6 (llvmpipe, float inside vs C's double) */
+#define FAST_TOL 5e-6 /* measured 8.6e-7 (llvmpipe, float inside vs C's double) */
 /* the same for shl_polygon_ggx_fast (the table-free LTC): |GLSL - C| below FAST_TOL */
 static void test_glsl_ggx_fast(void) {
   static float in[NI * IN], out[NI * OUTS], ref[NI * OUTS];

@@ -172,7 +172,7 @@ static void setup(int ir, double th, unsigned long long seed) {
 
 /* ---- the closed-form model: 5 polynomials in (r, mu) of degree DI in r and DJ in mu, and the
    albedo E0(tau) + sum_{i=1..AI, j=0..AJ} e_ij r^i tau^j, tau = alpha s / (mu + alpha s) */
-#define DI 5
+#define DI 7
 #define DJ 5
 #define AI 8
 #define AJ 6
