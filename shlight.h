@@ -596,9 +596,9 @@ SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nr
    (exactly 0), a polygon through the shading point: 0; C: any nv, GLSL: above
    SHLIGHT_POLYGON_MAX -1); alpha clamped to [1e-4, 1]. Result >= 0. Accuracy against long
    double cubature on the LTC comparison's sampler (docs/area-lights.md "Fast GGX polygon
-   lights"): median relative error 3.5e-4, 2.5e-3, 7.8e-3, 1.2e-2, 2.1e-2, 2.0e-2, 1.5e-2 at
-   roughness 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1; max error / albedo 1.8e-2 to 0.13 (worst at
-   roughness 0.5, grazing views). Cost: 1,240 to 1,310 x86 instructions per quad (~15x fewer
+   lights"): median relative error 5.8e-4, 2.3e-3, 9.8e-3, 6.3e-3, 1.7e-2, 1.9e-2, 1.1e-2 at
+   roughness 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1; max error / albedo 9.7e-3 to 5.8e-2 (worst at
+   roughness 0.1, grazing views). Cost: 1,310 to 1,370 x86 instructions per quad (~14x fewer
    than shl_polygon_ggx). */
 SHLIGHT_INLINE float shl_polygon_ggx_fast(const float (*v)[3], int nv, const float nrm[3],
                                           const float view[3], float alpha);
