@@ -11,7 +11,8 @@
  * instructions per quad of each roughness from bench/out/ggx_instr_rough.txt, written by
  * callgrind_ggx.sh; ns per quad of each roughness timed here; LTC's row measured externally),
  * which bench/readme_tables.py copies into docs/area-lights.md and bench/plot_ggx.py plots.
- * Build and run: make bench-ggx. */
+ * The same tables carry shl_polygon_ggx_fast (the table-free LTC; `--count-only K R fast` counts
+ * its wrapper bw_ggx_fast). Build and run: make bench-ggx. */
 #define _POSIX_C_SOURCE 200809L
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
@@ -54,9 +55,16 @@ __attribute__((noinline)) float yard_phong(const cfg *c) {
   return shl_polygon_phong((const float(*)[3])c->q, 4, NZ, c->view, 2.0f / (c->alpha * c->alpha),
                            SHLIGHT_EDGE_FAST);
 }
-/* the wrapper callgrind counts */
+/* the wrappers callgrind counts */
 __attribute__((noinline)) float bw_ggx(const cfg *c) {
   return shl_polygon_ggx((const float(*)[3])c->q, 4, NZ, c->view, c->alpha);
+}
+__attribute__((noinline)) float bw_ggx_fast(const cfg *c) {
+  return shl_polygon_ggx_fast((const float(*)[3])c->q, 4, NZ, c->view, c->alpha);
+}
+static int FAST; /* 1: the timing loops run shl_polygon_ggx_fast */
+static float call(const cfg *c) {
+  return FAST ? bw_ggx_fast(c) : bw_ggx(c);
 }
 
 /* ns per quad of roughness index ir: median of 15 samples of >= 2 ms over its NPER quads */
@@ -68,7 +76,7 @@ static double ns_rough(int ir) {
     float acc = 0;
     for (k = 0; k < reps; ++k)
       for (i = ir * NPER; i < (ir + 1) * NPER; ++i)
-        acc += bw_ggx(&C[i]);
+        acc += call(&C[i]);
     sink = acc;
     if (now() - t0 > 2e-3) break;
     reps *= 2;
@@ -78,7 +86,7 @@ static double ns_rough(int ir) {
     float acc = 0;
     for (k = 0; k < reps; ++k)
       for (i = ir * NPER; i < (ir + 1) * NPER; ++i)
-        acc += bw_ggx(&C[i]);
+        acc += call(&C[i]);
     sink = acc;
     ns[s] = (now() - t0) * 1e9 / ((double)reps * NPER);
   }
@@ -87,11 +95,15 @@ static double ns_rough(int ir) {
 
 /* bench/out/ggx_speed.md: per roughness, every GGX road's cost and error side by side */
 static void speed_table(void) {
-  double instr[NR];
-  int ir, i, have = 1;
+  double instr[NR], finstr[NR];
+  int ir, i, have = 1, fhave = 1;
   FILE *f = fopen("bench/out/ggx_instr_rough.txt", "r"), *o;
   for (ir = 0; ir < NR; ++ir)
     if (!f || fscanf(f, "%lf", &instr[ir]) != 1) have = 0;
+  if (f) fclose(f);
+  f = fopen("bench/out/ggx_fast_instr_rough.txt", "r");
+  for (ir = 0; ir < NR; ++ir)
+    if (!f || fscanf(f, "%lf", &finstr[ir]) != 1) fhave = 0;
   if (f) fclose(f);
   o = fopen("bench/out/ggx_speed.md", "w");
   if (!o) return;
@@ -114,6 +126,25 @@ static void speed_table(void) {
       snprintf(ins, sizeof ins, "-");
     fprintf(o, "| %.2f | shl_polygon_ggx | %s | %.0f | %.1e / %.1e / %.1e | %.1e |\n", ROUGH[ir],
             ins, ns, pct(rel, nv, 0.5), pct(rel, nv, 0.95), pct(rel, nv, 1), emax);
+    {
+      double fmax = 0, fns;
+      int fv = 0;
+      FAST = 1;
+      fns = ns_rough(ir);
+      FAST = 0;
+      for (i = ir * NPER; i < (ir + 1) * NPER; ++i) {
+        double got = shl_polygon_ggx_fast((const float(*)[3])C[i].q, 4, NZ, C[i].view, C[i].alpha);
+        double d = fabs(got - C[i].gt);
+        if (d / C[i].alb > fmax) fmax = d / C[i].alb;
+        if (C[i].gt >= 0.05 * C[i].alb) rel[fv++] = d / C[i].gt;
+      }
+      if (fhave)
+        snprintf(ins, sizeof ins, "%.0f", finstr[ir]);
+      else
+        snprintf(ins, sizeof ins, "-");
+      fprintf(o, "| %.2f | shl_polygon_ggx_fast | %s | %.0f | %.1e / %.1e / %.1e | %.1e |\n",
+              ROUGH[ir], ins, fns, pct(rel, fv, 0.5), pct(rel, fv, 0.95), pct(rel, fv, 1), fmax);
+    }
     fprintf(o, "| %.2f | LTC (measured externally) | %.0f | %.0f | %.1e / - / - | %.1e |\n",
             ROUGH[ir], LTC_X_INSTR, LTC_X_NS, LTC_X[ir][0], LTC_X[ir][1]);
   }
@@ -125,7 +156,8 @@ int main(int argc, char **argv) {
   int i, ir, k, K = 0, R = -1;
   FILE *o;
   if (argc >= 3 && strcmp(argv[1], "--count-only") == 0) K = atoi(argv[2]);
-  if (argc == 4 && K > 0) R = atoi(argv[3]);
+  if (argc >= 4 && K > 0) R = atoi(argv[3]);
+  if (argc == 5 && strcmp(argv[4], "fast") == 0) FAST = 1;
   rg.s = 2017u;
   for (i = 0; i < NCFG; ++i) {
     cfg *c = &C[i];
@@ -140,7 +172,7 @@ int main(int argc, char **argv) {
     float s = 0;
     for (k = 0; k < K; ++k)
       for (i = R < 0 ? 0 : R * NPER; i < (R < 0 ? NCFG : (R + 1) * NPER); ++i)
-        s += bw_ggx(&C[i]);
+        s += call(&C[i]);
     sink = s;
     return 0;
   }
@@ -179,6 +211,22 @@ int main(int argc, char **argv) {
             ROUGH[ir], nv, pct(rel, nv, 0.5), pct(rel, nv, 0.95), pct(rel, nv, 1),
             pct(ea, NPER, 0.5), pct(ea, NPER, 0.95), pct(ea, NPER, 1), LTC[ir][0], LTC[ir][1],
             LTC[ir][2], LTC[ir][3], LTC[ir][4], LTC[ir][5]);
+  }
+  fprintf(o,
+          "\n| roughness (alpha = r^2) | vis. | shl_polygon_ggx_fast rel. err vis. median / p95 / "
+          "max | err/albedo median / p95 / max |\n|---|---|---|---|\n");
+  for (ir = 0; ir < NR; ++ir) {
+    static double rel[NPER], ea[NPER];
+    int nv = 0;
+    for (i = ir * NPER; i < (ir + 1) * NPER; ++i) {
+      double got = shl_polygon_ggx_fast((const float(*)[3])C[i].q, 4, NZ, C[i].view, C[i].alpha);
+      double d = fabs(got - C[i].gt);
+      ea[i - ir * NPER] = d / C[i].alb;
+      if (C[i].gt >= 0.05 * C[i].alb) rel[nv++] = d / C[i].gt;
+    }
+    fprintf(o, "| %.2f | %d | %.1e / %.1e / %.1e | %.1e / %.1e / %.1e |\n", ROUGH[ir], nv,
+            pct(rel, nv, 0.5), pct(rel, nv, 0.95), pct(rel, nv, 1), pct(ea, NPER, 0.5),
+            pct(ea, NPER, 0.95), pct(ea, NPER, 1));
   }
   fprintf(o, "\nBy configuration, all roughness values pooled: err/albedo median / p95 / max "
              "(rel. err vis. median)\n\n| configuration | quads | shl_polygon_ggx | LTC "

@@ -5937,6 +5937,542 @@ float shl_polygon_beckmann(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 v
   return shli_mf_taylor(v, nv, nrm, view, alpha, 1);
 }
 
+shli_real shli_ltc_ff(inout shli_real io_px[SHLIGHT_CLIP_MAX],
+                      inout shli_real io_py[SHLIGHT_CLIP_MAX],
+                      inout shli_real io_pz[SHLIGHT_CLIP_MAX], int nv, shli_real a, shli_real c,
+                      shli_real d, shli_real ux, shli_real uz) {
+  shli_real wx;
+  shli_real wz;
+  shli_real cx;
+  shli_real cy;
+  shli_real cz;
+  shli_real sp;
+  shli_real sum = 0.0;
+  shli_real ia = 1.0 / a;
+  shli_real ic = 1.0 / c;
+  shli_real hx = uz * d - ux * a;
+  int nc = nv;
+  int i;
+  int j;
+  for (i = 0; i < nv; ++i) {
+    wx = (uz * io_px[i] - ux * io_pz[i]) * ia;
+    wz = ux * io_px[i] + uz * io_pz[i];
+    io_px[i] = wx;
+    io_py[i] = io_py[i] * ic;
+    io_pz[i] = wz - d * wx;
+    if (!(hx * wx + uz * io_pz[i] >= 0.0) || !(io_pz[i] >= 0.0)) {
+      nc = 0;
+    }
+  }
+  if (nc == 0) { /* a vertex below either plane: clip */
+    nc = shli_poly_clip_unit2(io_px, io_py, io_pz, nv, hx, 0.0, uz, 1, 0.0, 0.0, 1.0);
+  } else { /* nothing to clip: orientation (shli_poly_clip_unit2's) and unit vertices */
+    cx = 0.0;
+    cy = 0.0;
+    cz = 0.0;
+    for (i = 0; i < nv; ++i) {
+      j = i + 1;
+      if (j == nv) {
+        j = 0;
+      }
+      cx = cx + io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+      cy = cy + io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+      cz = cz + io_px[i] * io_py[j] - io_py[i] * io_px[j];
+    }
+    sp = cx * io_px[0] + cy * io_py[0] + cz * io_pz[0];
+    for (i = 0; i < nv; ++i) {
+      wx = SHLIGHT_SQRTR(io_px[i] * io_px[i] + io_py[i] * io_py[i] + io_pz[i] * io_pz[i]);
+      if (!(wx > 0.0) || !(sp != 0.0)) {
+        return 0.0;
+      }
+      wx = 1.0 / wx;
+      io_px[i] = io_px[i] * wx;
+      io_py[i] = io_py[i] * wx;
+      io_pz[i] = io_pz[i] * wx;
+    }
+    if (sp < 0.0) {
+      nc = -nv;
+    }
+  }
+  for (i = 0; i < nc || i < -nc; ++i) {
+    j = i + 1;
+    if (j == nc || j == -nc) {
+      j = 0;
+    }
+    cx = io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
+    cy = io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
+    cz = io_px[i] * io_py[j] - io_py[i] * io_px[j];
+    sp = SHLIGHT_SQRTR(cx * cx + cy * cy + cz * cz);
+    if (sp > 1.0e-30) {
+      sum = sum + shli_atan2r(sp, io_px[i] * io_px[j] + io_py[i] * io_py[j] + io_pz[i] * io_pz[j]) *
+                      cz / sp;
+    }
+  }
+  if (nc < 0) {
+    sum = -sum;
+  }
+  return SHLIGHT_MAXR(sum, 0.0) * 0.15915494309189534;
+}
+
+void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, out shli_real out_fit[6]) {
+  shli_real x = 2.0 * r - 1.0;
+  shli_real y = 2.0 * mu - 1.0;
+  shli_real z = 2.0 * tau - 1.0;
+  shli_real u;
+  shli_real t;
+  u = 4.823431778e+01;
+  u = 1.408317471e+01 + y * u;
+  u = -7.758525085e+01 + y * u;
+  u = -9.565445900e+00 + y * u;
+  u = 2.494421959e+01 + y * u;
+  u = 2.185309887e+00 + y * u;
+  t = u;
+  u = -1.711576843e+01;
+  u = -5.204072952e+00 + y * u;
+  u = 2.815275383e+01 + y * u;
+  u = 3.485319614e+00 + y * u;
+  u = -9.806125641e+00 + y * u;
+  u = -3.161379099e-01 + y * u;
+  t = u + x * t;
+  u = -7.955719757e+01;
+  u = -2.387139320e+01 + y * u;
+  u = 1.291955414e+02 + y * u;
+  u = 1.555067062e+01 + y * u;
+  u = -4.168195724e+01 + y * u;
+  u = -3.379956484e+00 + y * u;
+  t = u + x * t;
+  u = 2.144336700e+01;
+  u = 6.208292961e+00 + y * u;
+  u = -3.561645508e+01 + y * u;
+  u = -3.514214993e+00 + y * u;
+  u = 1.276280308e+01 + y * u;
+  u = -9.192495048e-02 + y * u;
+  t = u + x * t;
+  u = 3.847836685e+01;
+  u = 1.281861591e+01 + y * u;
+  u = -6.421918488e+01 + y * u;
+  u = -7.840120792e+00 + y * u;
+  u = 2.115081787e+01 + y * u;
+  u = 1.332001925e+00 + y * u;
+  t = u + x * t;
+  u = -7.036427498e+00;
+  u = -1.993518472e+00 + y * u;
+  u = 1.209192371e+01 + y * u;
+  u = 5.286030173e-01 + y * u;
+  u = -4.558747768e+00 + y * u;
+  u = 8.479368687e-02 + y * u;
+  t = u + x * t;
+  u = -4.670230389e+00;
+  u = -2.329775333e+00 + y * u;
+  u = 8.658129692e+00 + y * u;
+  u = 1.356783748e+00 + y * u;
+  u = -3.200036764e+00 + y * u;
+  u = -4.120126367e-01 + y * u;
+  t = u + x * t;
+  u = 2.279601991e-01;
+  u = 4.497420788e-01 + y * u;
+  u = -8.715609908e-01 + y * u;
+  u = 1.973755285e-02 + y * u;
+  u = 3.149669766e-01 + y * u;
+  u = 1.810478330e+00 + y * u;
+  t = u + x * t;
+  out_fit[0] = t;
+  u = -1.037939224e+02;
+  u = -2.291932869e+01 + y * u;
+  u = 1.362488251e+02 + y * u;
+  u = 3.340542984e+01 + y * u;
+  u = -3.810549545e+01 + y * u;
+  u = -1.015694714e+01 + y * u;
+  t = u;
+  u = 1.625774574e+01;
+  u = 8.454121351e-01 + y * u;
+  u = -2.865211296e+01 + y * u;
+  u = -6.996869564e+00 + y * u;
+  u = 1.042807102e+01 + y * u;
+  u = 3.306925774e+00 + y * u;
+  t = u + x * t;
+  u = 1.667293549e+02;
+  u = 3.911183929e+01 + y * u;
+  u = -2.193283234e+02 + y * u;
+  u = -5.571576691e+01 + y * u;
+  u = 6.140324783e+01 + y * u;
+  u = 1.697500610e+01 + y * u;
+  t = u + x * t;
+  u = -9.995289803e+00;
+  u = 1.220144629e+00 + y * u;
+  u = 2.533568573e+01 + y * u;
+  u = 7.036264420e+00 + y * u;
+  u = -1.098281097e+01 + y * u;
+  u = -3.888074636e+00 + y * u;
+  t = u + x * t;
+  u = -7.741376495e+01;
+  u = -1.965489578e+01 + y * u;
+  u = 1.027759399e+02 + y * u;
+  u = 2.739825821e+01 + y * u;
+  u = -2.898397446e+01 + y * u;
+  u = -8.593892097e+00 + y * u;
+  t = u + x * t;
+  u = -3.171235323e+00;
+  u = -1.643871069e+00 + y * u;
+  u = -1.685737967e+00 + y * u;
+  u = -1.385899305e+00 + y * u;
+  u = 2.273280382e+00 + y * u;
+  u = 1.325763226e+00 + y * u;
+  t = u + x * t;
+  u = 9.102374077e+00;
+  u = 2.590673447e+00 + y * u;
+  u = -1.250033951e+01 + y * u;
+  u = -3.550181866e+00 + y * u;
+  u = 3.628412485e+00 + y * u;
+  u = 1.772880673e+00 + y * u;
+  t = u + x * t;
+  u = 1.325463772e+00;
+  u = 2.902811170e-01 + y * u;
+  u = -1.065488219e+00 + y * u;
+  u = -4.904779489e-04 + y * u;
+  u = 9.401061386e-02 + y * u;
+  u = 2.349778265e-01 + y * u;
+  t = u + x * t;
+  out_fit[1] = t;
+  u = -6.527443886e+00;
+  u = -3.014821112e-01 + y * u;
+  u = 8.549859047e+00 + y * u;
+  u = 7.890438437e-01 + y * u;
+  u = -2.740655184e+00 + y * u;
+  u = -1.481223851e-01 + y * u;
+  t = u;
+  u = 1.974483013e+00;
+  u = 2.146150768e-01 + y * u;
+  u = -2.413561821e+00 + y * u;
+  u = -6.803398728e-01 + y * u;
+  u = 7.731568813e-01 + y * u;
+  u = 1.709009707e-01 + y * u;
+  t = u + x * t;
+  u = 1.090509510e+01;
+  u = 5.243554115e-01 + y * u;
+  u = -1.416356850e+01 + y * u;
+  u = -1.178371906e+00 + y * u;
+  u = 4.636964321e+00 + y * u;
+  u = -1.429621577e-01 + y * u;
+  t = u + x * t;
+  u = -2.203327894e+00;
+  u = -1.141273528e-01 + y * u;
+  u = 2.396221161e+00 + y * u;
+  u = 8.639343977e-01 + y * u;
+  u = -6.117777228e-01 + y * u;
+  u = -3.352966011e-01 + y * u;
+  t = u + x * t;
+  u = -5.588889599e+00;
+  u = -3.583875895e-01 + y * u;
+  u = 7.152234554e+00 + y * u;
+  u = 3.598783016e-01 + y * u;
+  u = -2.498464823e+00 + y * u;
+  u = 7.419113517e-01 + y * u;
+  t = u + x * t;
+  u = 4.364615679e-01;
+  u = -7.357993722e-02 + y * u;
+  u = -3.241628706e-01 + y * u;
+  u = -2.363126427e-01 + y * u;
+  u = -3.331761658e-01 + y * u;
+  u = 5.317018628e-01 + y * u;
+  t = u + x * t;
+  u = 8.460238576e-01;
+  u = 1.610638499e-01 + y * u;
+  u = -1.091450691e+00 + y * u;
+  u = 5.443511158e-02 + y * u;
+  u = 4.620280564e-01 + y * u;
+  u = -4.610215724e-01 + y * u;
+  t = u + x * t;
+  u = 1.068362519e-01;
+  u = 2.097506635e-02 + y * u;
+  u = -1.002113745e-01 + y * u;
+  u = -1.009290107e-02 + y * u;
+  u = 2.947257459e-01 + y * u;
+  u = -3.333729506e-01 + y * u;
+  t = u + x * t;
+  out_fit[2] = t;
+  u = -3.465834379e+00;
+  u = 3.373411179e+00 + y * u;
+  u = 3.114547253e+00 + y * u;
+  u = -3.214624405e+00 + y * u;
+  u = -3.755767345e-01 + y * u;
+  u = 3.390447795e-01 + y * u;
+  t = u;
+  u = 1.655289054e+00;
+  u = -2.944802523e+00 + y * u;
+  u = 2.833455503e-01 + y * u;
+  u = 1.897862196e+00 + y * u;
+  u = -8.982180357e-01 + y * u;
+  u = -1.269344538e-01 + y * u;
+  t = u + x * t;
+  u = 6.537312031e+00;
+  u = -5.732599258e+00 + y * u;
+  u = -7.065485954e+00 + y * u;
+  u = 6.492435455e+00 + y * u;
+  u = 1.228892207e+00 + y * u;
+  u = -8.498405218e-01 + y * u;
+  t = u + x * t;
+  u = -3.443586588e+00;
+  u = 5.338556290e+00 + y * u;
+  u = 1.698462367e-01 + y * u;
+  u = -3.835000992e+00 + y * u;
+  u = 1.842203021e+00 + y * u;
+  u = 3.467678428e-01 + y * u;
+  t = u + x * t;
+  u = -3.205645323e+00;
+  u = 2.167233229e+00 + y * u;
+  u = 4.912310600e+00 + y * u;
+  u = -3.907463312e+00 + y * u;
+  u = -1.382417202e+00 + y * u;
+  u = 8.597669005e-01 + y * u;
+  t = u + x * t;
+  u = 1.898267031e+00;
+  u = -2.524555445e+00 + y * u;
+  u = -5.900170803e-01 + y * u;
+  u = 2.309752941e+00 + y * u;
+  u = -1.383742690e+00 + y * u;
+  u = -4.487989247e-01 + y * u;
+  t = u + x * t;
+  u = 1.293994635e-01;
+  u = 2.248674482e-01 + y * u;
+  u = -9.818219543e-01 + y * u;
+  u = 6.088613272e-01 + y * u;
+  u = 5.392537713e-01 + y * u;
+  u = -8.465124369e-01 + y * u;
+  t = u + x * t;
+  u = -1.227970570e-01;
+  u = 9.867319465e-02 + y * u;
+  u = 1.778370291e-01 + y * u;
+  u = -3.558409810e-01 + y * u;
+  u = 4.244568348e-01 + y * u;
+  u = 7.278760672e-01 + y * u;
+  t = u + x * t;
+  out_fit[3] = t;
+  u = 2.492761165e-01;
+  u = -8.422532082e-01 + y * u;
+  u = 5.282658339e-01 + y * u;
+  u = 2.912329733e-01 + y * u;
+  u = -2.741943896e-01 + y * u;
+  u = 4.509079829e-02 + y * u;
+  t = u;
+  u = 8.441562951e-02;
+  u = 1.669517010e-01 + y * u;
+  u = -2.305230945e-01 + y * u;
+  u = -2.249873616e-02 + y * u;
+  u = 2.121216245e-02 + y * u;
+  u = 1.900077984e-02 + y * u;
+  t = u + x * t;
+  u = -6.646749973e-01;
+  u = 1.735805511e+00 + y * u;
+  u = -8.744421601e-01 + y * u;
+  u = -6.301568151e-01 + y * u;
+  u = 5.372205377e-01 + y * u;
+  u = -1.020875797e-01 + y * u;
+  t = u + x * t;
+  u = 4.603692330e-03;
+  u = -3.935841024e-01 + y * u;
+  u = 3.056210876e-01 + y * u;
+  u = 6.025421619e-02 + y * u;
+  u = -4.142245278e-03 + y * u;
+  u = -3.773592785e-02 + y * u;
+  t = u + x * t;
+  u = 5.091679096e-01;
+  u = -1.109788179e+00 + y * u;
+  u = 4.136175513e-01 + y * u;
+  u = 4.599985182e-01 + y * u;
+  u = -3.339299858e-01 + y * u;
+  u = 6.153457239e-02 + y * u;
+  t = u + x * t;
+  u = -6.532856077e-02;
+  u = 2.517253458e-01 + y * u;
+  u = -1.444122195e-01 + y * u;
+  u = -9.109741077e-03 + y * u;
+  u = -1.054108795e-02 + y * u;
+  u = 1.290231571e-02 + y * u;
+  t = u + x * t;
+  u = -8.833923936e-02;
+  u = 2.020544261e-01 + y * u;
+  u = -6.514818966e-02 + y * u;
+  u = -1.085664183e-01 + y * u;
+  u = 6.843580306e-02 + y * u;
+  u = -8.327058516e-03 + y * u;
+  t = u + x * t;
+  u = 9.661042131e-03;
+  u = -3.179473802e-02 + y * u;
+  u = 3.044329956e-02 + y * u;
+  u = -2.094007656e-02 + y * u;
+  u = 2.348345006e-03 + y * u;
+  u = 1.003413200e+00 + y * u;
+  t = u + x * t;
+  out_fit[4] = t;
+  u = 9.835902186e+00;
+  u = 4.815816315e+01 + z * u;
+  u = 3.016645875e+01 + z * u;
+  u = -5.254129555e+01 + z * u;
+  u = -4.131686923e+01 + z * u;
+  u = 1.076998664e+01 + z * u;
+  u = 8.002906556e+00 + z * u;
+  t = u;
+  u = -4.517718273e+01;
+  u = -1.327191734e+02 + z * u;
+  u = -3.015429468e+01 + z * u;
+  u = 1.564169442e+02 + z * u;
+  u = 8.213006476e+01 + z * u;
+  u = -3.667465959e+01 + z * u;
+  u = -1.973095451e+01 + z * u;
+  t = u + x * t;
+  u = 6.456231521e+01;
+  u = 1.024200233e+02 + z * u;
+  u = -6.211461723e+01 + z * u;
+  u = -1.467570816e+02 + z * u;
+  u = -1.590913984e+01 + z * u;
+  u = 4.596160970e+01 + z * u;
+  u = 1.434589623e+01 + z * u;
+  t = u + x * t;
+  u = -2.659266839e+01;
+  u = 1.302195064e+01 + z * u;
+  u = 9.459040183e+01 + z * u;
+  u = 2.219007812e+01 + z * u;
+  u = -5.761072135e+01 + z * u;
+  u = -2.612346033e+01 + z * u;
+  u = -1.532581752e+00 + z * u;
+  t = u + x * t;
+  u = -8.703993119e+00;
+  u = -3.918667259e+01 + z * u;
+  u = -2.758862821e+01 + z * u;
+  u = 3.054379187e+01 + z * u;
+  u = 3.805665447e+01 + z * u;
+  u = 1.003282046e+01 + z * u;
+  u = 2.797771967e-01 + z * u;
+  t = u + x * t;
+  u = 3.186377897e+00;
+  u = 1.391254303e+00 + z * u;
+  u = -5.538621202e+00 + z * u;
+  u = -4.184491630e+00 + z * u;
+  u = -6.486797598e+00 + z * u;
+  u = -9.401535433e+00 + z * u;
+  u = -2.776535210e+00 + z * u;
+  t = u + x * t;
+  u = 5.763624995e+00;
+  u = 1.048772557e+01 + z * u;
+  u = -2.921178913e+00 + z * u;
+  u = -9.704074130e+00 + z * u;
+  u = 4.380060798e+00 + z * u;
+  u = 9.091201017e+00 + z * u;
+  u = 2.425775951e+00 + z * u;
+  t = u + x * t;
+  u = -3.631340058e+00;
+  u = -4.346143737e+00 + z * u;
+  u = 5.216727987e+00 + z * u;
+  u = 5.481951502e+00 + z * u;
+  u = -5.079844776e+00 + z * u;
+  u = -5.767862346e+00 + z * u;
+  u = -1.870434043e+00 + z * u;
+  t = u + x * t;
+  u = 9.043915155e-01;
+  u = 9.265270929e-01 + z * u;
+  u = -1.895346216e+00 + z * u;
+  u = -1.678486433e+00 + z * u;
+  u = 2.398216734e+00 + z * u;
+  u = 3.025214100e+00 + z * u;
+  u = 5.283581523e-01 + z * u;
+  t = u + x * t;
+  u = 1.0 - tau;
+  out_fit[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;
+}
+
+float shl_polygon_ggx_fast(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha) {
+  shli_real px[SHLIGHT_CLIP_MAX];
+  shli_real py[SHLIGHT_CLIP_MAX];
+  shli_real pz[SHLIGHT_CLIP_MAX];
+  shli_real par[6];
+  shli_real nx = SHLIGHT_REAL(nrm[0]);
+  shli_real ny = SHLIGHT_REAL(nrm[1]);
+  shli_real nz = SHLIGHT_REAL(nrm[2]);
+  shli_real vx = SHLIGHT_REAL(view[0]);
+  shli_real vy = SHLIGHT_REAL(view[1]);
+  shli_real vz = SHLIGHT_REAL(view[2]);
+  shli_real ln = SHLIGHT_SQRTR(nx * nx + ny * ny + nz * nz);
+  shli_real lv = SHLIGHT_SQRTR(vx * vx + vy * vy + vz * vz);
+  shli_real al = SHLIGHT_REAL(alpha);
+  shli_real mu;
+  shli_real s;
+  shli_real tx;
+  shli_real ty;
+  shli_real tz;
+  shli_real bx;
+  shli_real by;
+  shli_real bz;
+  shli_real x;
+  shli_real y;
+  shli_real z;
+  shli_real ux;
+  shli_real q;
+  int i;
+#if SHLIGHT_POLYGON_ANY
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return shli_fan_ggx_fast(v, nv, nrm, view, alpha);
+  }
+#endif
+  if (nv > SHLIGHT_POLYGON_MAX) {
+    return -1.0f;
+  }
+  if (nv < 3 || !(ln > 0.0) || !(ln < SHLIGHT_REAL_MAX) || !(lv > 0.0) ||
+      !(lv < SHLIGHT_REAL_MAX) || !(al == al)) {
+    return 0.0f;
+  }
+  nx = nx / ln;
+  ny = ny / ln;
+  nz = nz / ln;
+  vx = vx / lv;
+  vy = vy / lv;
+  vz = vz / lv;
+  mu = nx * vx + ny * vy + nz * vz;
+  if (!(mu > 0.0)) {
+    return 0.0f;
+  }
+  mu = SHLIGHT_MINR(mu, 1.0);
+  al = SHLIGHT_MINR(SHLIGHT_MAXR(al, 1.0e-4), 1.0);
+  /* the view frame: t toward the view in the tangent plane (any tangent at normal view, the
+     frame of Duff et al. 2017), b = n x t */
+  tx = vx - mu * nx;
+  ty = vy - mu * ny;
+  tz = vz - mu * nz;
+  s = SHLIGHT_SQRTR(tx * tx + ty * ty + tz * tz);
+  if (s > 1.0e-7) {
+    tx = tx / s;
+    ty = ty / s;
+    tz = tz / s;
+  } else {
+    q = -1.0 / (SHLIGHT_REAL(SHLIGHT_SIGN1(nz)) + nz);
+    tx = 1.0 + SHLIGHT_REAL(SHLIGHT_SIGN1(nz)) * nx * nx * q;
+    ty = SHLIGHT_REAL(SHLIGHT_SIGN1(nz)) * nx * ny * q;
+    tz = -SHLIGHT_REAL(SHLIGHT_SIGN1(nz)) * nx;
+  }
+  bx = ny * tz - nz * ty;
+  by = nz * tx - nx * tz;
+  bz = nx * ty - ny * tx;
+  s = SHLIGHT_SQRTR(SHLIGHT_MAXR(1.0 - mu * mu, 0.0));
+  for (i = 0; i < nv; ++i) {
+    x = SHLIGHT_REAL(v[i][0]);
+    y = SHLIGHT_REAL(v[i][1]);
+    z = SHLIGHT_REAL(v[i][2]);
+    if (!(SHLIGHT_ABSR(x) + SHLIGHT_ABSR(y) + SHLIGHT_ABSR(z) < SHLIGHT_REAL_MAX)) {
+      return 0.0f;
+    }
+    px[i] = x * tx + y * ty + z * tz;
+    py[i] = x * bx + y * by + z * bz;
+    pz[i] = x * nx + y * ny + z * nz;
+  }
+  shli_ggx_fast_fit(SHLIGHT_SQRTR(al), mu, al * s / (mu + al * s), par);
+  ux = -s * par[3];
+  q = SHLIGHT_SQRTR(ux * ux + mu * mu);
+  x = al * SHLIGHT_MAXR(par[0], 0.05);
+  q = shli_ltc_ff(px, py, pz, nv, x, x * SHLIGHT_MAXR(mu + (1.0 - mu) * par[1], 1.0e-3), par[2],
+                  ux / q, mu / q);
+  return SHLIGHT_FLOAT(SHLIGHT_MAXR(par[4] * par[5] * q, 0.0));
+}
+
 shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_real by,
                              shli_real bz, shli_real rx, shli_real ry, shli_real rz,
                              shli_real alpha, shli_real sa) {

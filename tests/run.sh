@@ -115,7 +115,7 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/tests/test_grid build/tests/native/test_grid build/tests/test_grid_glsl \
   build/tests/test_edge build/tests/selftest_arearef build/tests/test_edge_glsl \
   build/tests/test_microfacet build/tests/test_microfacet_glsl \
-  build/tests/test_ggx build/tests/test_ggx_glsl \
+  build/tests/test_ggx build/tests/test_ggx_glsl build/tests/fit_ggx_fast \
   build/tests/test_brdf build/tests/native/test_brdf build/tests/test_brdf_glsl \
   build/tests/test_brdftab build/tests/fuzz_replay_brdftab build/tests/test_brdftab_glsl \
   build/tests/test_rotate build/tests/test_rotate_glsl \
@@ -130,6 +130,7 @@ step test_grid build/tests/test_grid
 step test_edge build/tests/test_edge
 step test_microfacet build/tests/test_microfacet
 step test_ggx build/tests/test_ggx
+step ggx-fast-fit-fresh build/tests/fit_ggx_fast --check tools/ggx_fast_coef.txt shlight.h
 step arearef-selftest build/tests/selftest_arearef
 step test_brdf build/tests/test_brdf
 step test_ssf build/tests/test_ssf

@@ -431,6 +431,210 @@ static void test_transcendentals(void) {
            "exp clamps: %g %g", shli_mexp(-1e300), shli_mexp(1e300));
 }
 
+/* shl_polygon_ggx_fast, measured on this fit (gcc -O2, x86-64), asserted at ~1.5x. Sampler,
+   median rel. error / max err/albedo: roughness 0.05: 3.0e-4 / 1.3e-3, 0.1: 9.6e-3 / 5.6e-2,
+   0.2: 8.0e-3 / 8.7e-3, 0.3: 5.1e-3 / 9.8e-3, 0.5: 1.9e-2 / 4.0e-2, 0.7: 2.4e-2 / 2.6e-2,
+   1.0: 2.2e-2 / 9.9e-3 (24 quads each; the bench's 250 give the figures of the docs); hard
+   cases (max err/albedo): straddling 9.3e-3, grazing 4.0e-2, large 6.7e-2, sliver 7.0e-4;
+   9..64 vertices 9.6e-4 */
+#define FAST_MED                                                                                   \
+  { 4.5e-4, 1.5e-2, 1.2e-2, 7.7e-3, 2.9e-2, 3.6e-2, 3.3e-2 }
+#define FAST_MAX                                                                                   \
+  { 2e-3, 8.4e-2, 1.3e-2, 1.5e-2, 6e-2, 3.9e-2, 1.5e-2 }
+#define FAST_HARD                                                                                  \
+  { 1.4e-2, 6e-2, 1e-1, 1.05e-3 }
+#define FAST_MANY 1.4e-3
+/* ---- shl_polygon_ggx_fast (the table-free linearly transformed cosine) against the same long
+   double cubature. The fit (tools/fit_ggx_fast.c) never saw these quads (its training quads come
+   from the sampler with other seeds and fixed view angles). */
+static double kern_fast(const double (*q)[3], int nv, const double nrm[3], const double view[3],
+                        double alpha) {
+  float fv[64][3], fn[3], fw[3];
+  int i, k;
+  for (i = 0; i < nv; ++i)
+    for (k = 0; k < 3; ++k)
+      fv[i][k] = (float)q[i][k];
+  for (k = 0; k < 3; ++k)
+    fn[k] = (float)nrm[k], fw[k] = (float)view[k];
+  return shl_polygon_ggx_fast((const float(*)[3])fv, nv, fn, fw, (float)alpha);
+}
+static double ref_n(const double (*q)[3], int nv, const double nrm[3], const double view[3],
+                    double alpha, double *alb) {
+  double rq[64][3], rn[3], rv[3];
+  int i, k;
+  for (i = 0; i < nv; ++i)
+    for (k = 0; k < 3; ++k)
+      rq[i][k] = (double)(float)q[i][k];
+  for (k = 0; k < 3; ++k)
+    rn[k] = (double)(float)nrm[k], rv[k] = (double)(float)view[k];
+  if (alb) *alb = (double)arref_ggx_albedo(rn, rv, alpha);
+  return (double)arref_polygon_ggx((const double(*)[3])rq, nv, rn, rv, alpha);
+}
+
+/* The research sampler (the quads of test_research_sampler), 24 per roughness: median
+   relative error (visible: >= 5 % of the albedo) and max error / albedo, asserted at the
+   measured values x ~1.5 (FAST_MED, FAST_MAX below); LTC's published medians printed beside. */
+static void test_fast_sampler(void) {
+  static const double rough[7] = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0};
+  static const double ltc[7] = {7.3e-5, 1.0e-3, 3.8e-3, 1.6e-2, 0.11, 6.8e-2, 1.1e-2};
+  static const double tol_med[7] = FAST_MED;
+  static const double tol_max[7] = FAST_MAX;
+  int ir, c;
+  for (ir = 0; ir < 7; ++ir) {
+    ggxc_rng r;
+    double rel[64], emax = 0, med;
+    int nvis = 0;
+    r.s = 1000u + (unsigned)ir;
+    for (c = 0; c < 24; ++c) {
+      ggxc_case cs;
+      double alb, gt, got, a = rough[ir] * rough[ir];
+      ggxc_make(&r, &cs, -1);
+      got = kern_fast((const double(*)[3])cs.q, 4, ZN, cs.view, a);
+      gt = ref((const double(*)[3])cs.q, 4, ZN, cs.view, a, &alb);
+      if (fabs(got - gt) / alb > emax) emax = fabs(got - gt) / alb;
+      if (gt >= 0.05 * alb) rel[nvis++] = fabs(got - gt) / gt;
+    }
+    qsort(rel, (size_t)nvis, sizeof rel[0], cmpd);
+    med = nvis ? rel[nvis / 2] : 0;
+    printf("  fast, roughness %.2f: %2d visible, median rel. error %.2e (LTC %.1e), max "
+           "err/albedo %.2e\n",
+           rough[ir], nvis, med, ltc[ir], emax);
+    TL_CHECK(med <= tol_med[ir], "fast, roughness %g: median %g", rough[ir], med);
+    TL_CHECK(emax <= tol_max[ir], "fast, roughness %g: max err/albedo %g", rough[ir], emax);
+  }
+}
+
+/* The hard cases of test_hard_cases (straddling, grazing view 85-88 deg, large, sliver) */
+static void test_fast_hard(void) {
+  static const char *names[4] = {"straddling", "grazing view", "large", "sliver"};
+  static const double alphas[3] = {0.01, 0.09, 0.49};
+  static const double tol[4] = FAST_HARD;
+  int kind, ia, c;
+  for (kind = 0; kind < 4; ++kind) {
+    ggxc_rng r;
+    double worst = 0;
+    r.s = 77u + (unsigned)kind;
+    for (ia = 0; ia < 3; ++ia)
+      for (c = 0; c < 6; ++c) {
+        double q[4][3], view[3], alb, gt, got;
+        hard_case(&r, kind, q, view);
+        got = kern_fast((const double(*)[3])q, 4, ZN, view, alphas[ia]);
+        gt = ref((const double(*)[3])q, 4, ZN, view, alphas[ia], &alb);
+        if (fabs(got - gt) / alb > worst) worst = fabs(got - gt) / alb;
+      }
+    printf("  fast, %-12s max err/albedo %.2e\n", names[kind], worst);
+    TL_CHECK(worst <= tol[kind], "fast, %s: %g", names[kind], worst);
+  }
+}
+
+/* Lights wholly below the horizon give exactly 0, also under a grazing view where a lobe
+   transformed before clipping would reach below the horizon (a light 1e-3 below it, spanning
+   the mirror direction's azimuth); winding and start vertex change nothing but rounding. */
+static void test_fast_horizon(void) {
+  ggxc_rng r;
+  int c, bad = 0, i, k;
+  double worst = 0;
+  float g[4][3] = {{-3, -2, -1e-3f}, {-0.2f, -2, -1e-3f}, {-0.2f, 2, -1e-3f}, {-3, 2, -1e-3f}};
+  float fn[3] = {0, 0, 1}, fw[3] = {0.999f, 0, 0.045f};
+  for (k = 0; k < 5; ++k)
+    if (shl_polygon_ggx_fast((const float(*)[3])g, 4, fn, fw, (float)(0.05 + 0.2 * k)) != 0.0f)
+      bad++;
+  r.s = 99u;
+  for (c = 0; c < 200; ++c) {
+    ggxc_case cs;
+    float fv[4][3], rv[4][3], sv[4][3], a = (float)(0.01 + ggxc_rnd(&r)), g0, g1, g2;
+    double top = -1e30;
+    ggxc_make(&r, &cs, -1);
+    for (i = 0; i < 4; ++i)
+      if (cs.q[i][2] > top) top = cs.q[i][2];
+    for (i = 0; i < 4; ++i)
+      for (k = 0; k < 3; ++k) {
+        fv[i][k] = (float)(cs.q[i][k] - (k == 2 ? top + 1e-3 : 0));
+        rv[3 - i][k] = (float)cs.q[i][k];
+        sv[(i + 1) % 4][k] = (float)cs.q[i][k];
+      }
+    for (k = 0; k < 3; ++k)
+      fw[k] = (float)cs.view[k];
+    if (shl_polygon_ggx_fast((const float(*)[3])fv, 4, fn, fw, a) != 0.0f) bad++;
+    for (i = 0; i < 4; ++i)
+      for (k = 0; k < 3; ++k)
+        fv[i][k] = (float)cs.q[i][k];
+    g0 = shl_polygon_ggx_fast((const float(*)[3])fv, 4, fn, fw, a);
+    g1 = shl_polygon_ggx_fast((const float(*)[3])rv, 4, fn, fw, a);
+    g2 = shl_polygon_ggx_fast((const float(*)[3])sv, 4, fn, fw, a);
+    if (fabsf(g1 - g0) > worst * (g0 + 1e-6f)) worst = fabsf(g1 - g0) / (g0 + 1e-6f);
+    if (fabsf(g2 - g0) > worst * (g0 + 1e-6f)) worst = fabsf(g2 - g0) / (g0 + 1e-6f);
+  }
+  printf("  fast, below the horizon: %d of 205 non-zero; winding / start vertex: max rel. change "
+         "%.2e\n",
+         bad, worst);
+  TL_CHECK(bad == 0, "fast: %d lights below the horizon gave light", bad);
+  TL_CHECK(worst < 1e-5, "fast, winding: %g", worst);
+}
+
+/* 9 to 64 vertices: regular polygons (discs of half-angle 20 deg about the mirror direction and
+   a tilted one straddling the horizon), against the cubature; above SHLIGHT_POLYGON_MAX the C
+   kernel sums fan pieces, which must agree with the 8-vertex pieces' sum to rounding. */
+static void test_fast_many(void) {
+  static const int ns[4] = {9, 16, 33, 64};
+  double worst = 0;
+  int in, ic;
+  for (in = 0; in < 4; ++in)
+    for (ic = 0; ic < 2; ++ic) {
+      double q[64][3], view[3] = {sin(0.6), 0, cos(0.6)}, c[3], t1[3] = {0, 1, 0}, t2[3], alb, gt,
+                       got;
+      int i, k;
+      c[0] = -view[0], c[1] = 0, c[2] = ic == 0 ? view[2] : 0.05;
+      ggxc_unit(c);
+      ggxc_cross(c, t1, t2);
+      for (i = 0; i < ns[in]; ++i) {
+        double t = 2 * 3.14159265358979323846 * i / ns[in];
+        for (k = 0; k < 3; ++k)
+          q[i][k] = 2 * (c[k] + 0.364 * (cos(t) * t1[k] + sin(t) * t2[k]));
+      }
+      got = kern_fast((const double(*)[3])q, ns[in], ZN, view, 0.09);
+      gt = ref_n((const double(*)[3])q, ns[in], ZN, view, 0.09, &alb);
+      if (fabs(got - gt) / alb > worst) worst = fabs(got - gt) / alb;
+    }
+  printf("  fast, 9..64 vertices: max err/albedo %.2e\n", worst);
+  TL_CHECK(worst <= FAST_MANY, "fast, 9..64 vertices: %g", worst);
+}
+
+static void test_fast_degenerate(void) {
+  float q[9][3] = {{-1, -1, 2}, {1, -1, 2}, {1, 1, 2}, {-1, 1, 2}, {0, 0, 2},
+                   {0, 0, 2},   {0, 0, 2},  {0, 0, 2}, {0, 0, 2}};
+  float n[3] = {0, 0, 1}, v[3] = {0.3f, 0, 1}, z[3] = {0, 0, 0}, below[3] = {0.3f, 0, -1};
+  float good = shl_polygon_ggx_fast((const float(*)[3])q, 4, n, v, 0.2f), nan = (float)NAN;
+  float n2[3] = {0, 0, 7}, v2[3] = {0.6f, 0, 2};
+  TL_CHECK(good > 0.0f && good < 1.0f, "fast reference value %g", good);
+  TL_CHECK(shl_polygon_ggx_fast((const float(*)[3])q, 2, n, v, 0.2f) == 0.0f, "fast nv = 2");
+  TL_CHECK(shl_polygon_ggx_fast((const float(*)[3])q, 4, z, v, 0.2f) == 0.0f, "fast zero normal");
+  TL_CHECK(shl_polygon_ggx_fast((const float(*)[3])q, 4, n, z, 0.2f) == 0.0f, "fast zero view");
+  TL_CHECK(shl_polygon_ggx_fast((const float(*)[3])q, 4, n, below, 0.2f) == 0.0f,
+           "fast view below");
+  TL_CHECK(shl_polygon_ggx_fast((const float(*)[3])q, 4, n, v, nan) == 0.0f, "fast NaN alpha");
+  TL_CHECK(shl_polygon_ggx_fast((const float(*)[3])q, 4, n2, v2, 0.2f) == good ||
+               fabsf(shl_polygon_ggx_fast((const float(*)[3])q, 4, n2, v2, 0.2f) - good) <=
+                   1e-6f * good,
+           "fast scaled vectors");
+  TL_CHECK(shl_polygon_ggx_fast((const float(*)[3])q, 4, n, v, 0.0f) ==
+               shl_polygon_ggx_fast((const float(*)[3])q, 4, n, v, 1e-4f),
+           "fast alpha 0 clamps to 1e-4");
+  TL_CHECK(shl_polygon_ggx_fast((const float(*)[3])q, 4, n, v, 7.0f) ==
+               shl_polygon_ggx_fast((const float(*)[3])q, 4, n, v, 1.0f),
+           "fast alpha 7 clamps to 1");
+  q[2][1] = nan;
+  TL_CHECK(shl_polygon_ggx_fast((const float(*)[3])q, 4, n, v, 0.2f) == 0.0f, "fast NaN vertex");
+  q[2][1] = (float)INFINITY;
+  TL_CHECK(shl_polygon_ggx_fast((const float(*)[3])q, 4, n, v, 0.2f) == 0.0f, "fast Inf vertex");
+  q[2][1] = 1;
+  n2[0] = nan;
+  TL_CHECK(shl_polygon_ggx_fast((const float(*)[3])q, 4, n2, v, 0.2f) == 0.0f, "fast NaN normal");
+  q[1][0] = 0, q[1][1] = 0, q[1][2] = 0;
+  TL_CHECK(shl_polygon_ggx_fast((const float(*)[3])q, 4, n, v, 0.2f) == 0.0f,
+           "fast vertex at the point");
+}
+
 int main(void) {
   TL_RUN(test_transcendentals);
   TL_RUN(test_degenerate);
@@ -441,5 +645,10 @@ int main(void) {
   TL_RUN(test_grazing_straddling);
   TL_RUN(test_polygons);
   TL_RUN(test_research_sampler);
+  TL_RUN(test_fast_degenerate);
+  TL_RUN(test_fast_horizon);
+  TL_RUN(test_fast_many);
+  TL_RUN(test_fast_hard);
+  TL_RUN(test_fast_sampler);
   return tl_summary();
 }

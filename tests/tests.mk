@@ -163,6 +163,11 @@ $(TESTS_BUILD)/test_ggx: $(TESTS_GGX_DEPS)
 $(TESTS_BUILD)/asan/test_ggx: $(TESTS_GGX_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion $(TESTS_ASAN) -o $@ tests/test_ggx.c -lm
+# the fit behind shl_polygon_ggx_fast: --check compares the header's generated shli_ggx_fast_fit
+# with tools/ggx_fast_coef.txt
+$(TESTS_BUILD)/fit_ggx_fast: tools/fit_ggx_fast.c tests/ref/arearef.h tests/ref/ggxcases.h shlight.h
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O1 -Wall -Wextra -o $@ tools/fit_ggx_fast.c -lm
 $(TESTS_BUILD)/selftest_arearef: tests/selftest_arearef.c tests/ref/arearef.h
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g1 -o $@ tests/selftest_arearef.c -lm

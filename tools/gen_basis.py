@@ -896,7 +896,7 @@ ARRAY_SIZES = {'zh': 'SHLIGHT_MAX_BANDS', 'out_zh': 'SHLIGHT_MAX_BANDS',
                'v': 'SHLIGHT_POLYGON_MAX', 'io_px': 'SHLIGHT_CLIP_MAX', 'io_py': 'SHLIGHT_CLIP_MAX',
                'io_pz': 'SHLIGHT_CLIP_MAX', 'out_axis': '3', 'out_exponent': '1',
                'out_idx': '4', 'out_w': '4', 'tab': 'SHLIGHT_BRDF_TABLE_FLOATS',
-               'out_range': '2', 'io_split': 'SHLIGHT_HALF_K', 'io_am': '2', 'out_par': '5',
+               'out_range': '2', 'io_split': 'SHLIGHT_HALF_K', 'io_am': '2', 'out_par': '5', 'out_fit': '6',
                'kv': 'SHLIGHT_MAX_BANDS', 'kg': 'SHLIGHT_MAX_BANDS', 'ka': 'SHLIGHT_MAX_BANDS',
                'kb': 'SHLIGHT_MAX_BANDS', 'wg': '6', 'out_gb': '93',
                'out_xs': '16', 'out_q': '2'}

@@ -1,0 +1,725 @@
+/* fit_ggx_fast.c - the fit behind shl_polygon_ggx_fast (shlight.h, >>edge "fast GGX polygon
+ * lights"): a linearly transformed cosine whose transform and magnitude are closed-form
+ * functions of (alpha, n.v), fitted to what a user sees, the polygon integrals of the accurate
+ * shl_polygon_ggx, not to the lobe's shape (docs/area-lights.md "Fast GGX polygon lights").
+ *
+ *   build:  cc -O2 -std=c99 -o build/fit_ggx_fast tools/fit_ggx_fast.c -lm
+ *   points: build/fit_ggx_fast points > build/ggx_fast_points.txt
+ *           the optimum (Nelder-Mead) of the 5 parameters at each of 17 x 15 grid points
+ *           (roughness x view angle), 160 training quads each (~1.5 min)
+ *   smooth: build/fit_ggx_fast smooth build/ggx_fast_points.txt tools/ggx_fast_coef.txt
+ *           the albedo fit and the weighted least-squares polynomials through the points
+ *   check:  build/fit_ggx_fast check tools/ggx_fast_coef.txt
+ *           median / p95 / max relative error and max error / albedo on the bench sampler
+ *   lm:     build/fit_ggx_fast lm COEF_IN COEF_OUT ITERATIONS
+ *           Levenberg-Marquardt on all coefficients against every training quad (tried, not
+ *           used: it lowered the training cost but raised the median at low roughness)
+ *   emit:   build/fit_ggx_fast emit tools/ggx_fast_coef.txt shlight.h
+ *           writes shli_ggx_fast_fit between the @fit ggx_fast markers; then
+ *           python3 tools/gen_basis.py (the GLSL twin) and python3 tools/gen_glsl_one.py
+ *   --check build/fit_ggx_fast --check tools/ggx_fast_coef.txt shlight.h   (tests/run.sh)
+ *
+ * Training quads: tests/ref/ggxcases.h's sampler at a fixed view angle with its own seeds
+ * (never the seed 2017 of the bench sampler nor the seeds of tests/test_ggx.c). */
+#define _POSIX_C_SOURCE 200809L
+#define SHLIGHT_IMPLEMENTATION
+#include "../shlight.h"
+#include "../tests/ref/arearef.h"
+#include "../tests/ref/ggxcases.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define NQ 160
+#define NRG 17
+#define NTH 15
+static const double RG[NRG] = {0.01, 0.025, 0.05, 0.075, 0.1, 0.15, 0.2,  0.25, 0.3,
+                               0.4,  0.5,   0.6,  0.7,   0.8, 0.9,  0.95, 1.0};
+static const double TH[NTH] = {0, 10, 20, 30, 40, 50, 60, 65, 70, 75, 80, 83, 86, 88, 89};
+
+typedef struct {
+  double q[NQ][4][3];
+  double gt[NQ];
+  double alb, mu, s, alpha;
+} pt;
+
+static pt P;
+
+static double ltc(const double q[4][3], const double *m, double mu, double s) {
+  double px[SHLIGHT_CLIP_MAX], py[SHLIGHT_CLIP_MAX], pz[SHLIGHT_CLIP_MAX];
+  double ux = -s * m[3], uz = mu, l = sqrt(ux * ux + uz * uz);
+  int i;
+  for (i = 0; i < 4; ++i)
+    px[i] = q[i][0], py[i] = q[i][1], pz[i] = q[i][2];
+  return shli_ltc_ff(px, py, pz, 4, m[0], m[1], m[2], ux / l, uz / l);
+}
+
+/* the per-point parameters p: log(a / alpha), g (c = a (mu + (1 - mu) g)), d, P, log k; the
+   transform m: a, c, d, P (the axis (-s P, 0, mu) normalised), k */
+static double gmu; /* mu of the point p2m is called for */
+static void p2m(const double *p, double alpha, double *m) {
+  double g = gmu + (1 - gmu) * p[1];
+  m[0] = alpha * (p[0] > 0.05 ? p[0] : 0.05), m[1] = m[0] * (g > 1e-3 ? g : 1e-3), m[2] = p[2];
+  m[3] = p[3], m[4] = p[4];
+}
+static double prior[5];
+static double obj(const double *p) {
+  double sum = 0, mx = 0, m[5], reg = 0;
+  int i;
+  if (p[1] < -0.5 || p[1] > 3 || fabs(p[2]) > 3 || p[3] < 0 || p[3] > 3 || fabs(p[4]) > 1)
+    return 1e30;
+  gmu = P.mu;
+  {
+    double q[5];
+    memcpy(q, p, sizeof q);
+    q[0] = exp(p[0]), q[4] = exp(p[4]); /* the optimiser works on the logs */
+    p2m(q, P.alpha, m);
+  }
+  for (i = 0; i < NQ; ++i) {
+    double f = m[4] * P.alb * ltc((const double(*)[3])P.q[i], m, P.mu, P.s);
+    double e = (f - P.gt[i]) / (P.gt[i] + 0.02 * P.alb);
+    double ea = fabs(f - P.gt[i]) / P.alb;
+    sum += e * e;
+    if (ea > mx) mx = ea;
+  }
+  for (i = 0; i < 5; ++i)
+    reg += (p[i] - prior[i]) * (p[i] - prior[i]);
+  return sum / NQ + mx * mx + 1e-10 * reg;
+}
+
+static double nm(double *x, int n, double step, int iters) {
+  double s[6][5], f[6], c[5], xr[5], xe[5], fr, fe;
+  int i, j, it;
+  for (i = 0; i <= n; ++i) {
+    for (j = 0; j < n; ++j)
+      s[i][j] = x[j] + (i == j + 1 ? step : 0);
+    f[i] = obj(s[i]);
+  }
+  for (it = 0; it < iters; ++it) {
+    int hi = 0, lo = 0, sh;
+    for (i = 1; i <= n; ++i) {
+      if (f[i] > f[hi]) hi = i;
+      if (f[i] < f[lo]) lo = i;
+    }
+    sh = lo;
+    for (i = 0; i <= n; ++i)
+      if (i != hi && f[i] > f[sh]) sh = i;
+    for (j = 0; j < n; ++j) {
+      c[j] = 0;
+      for (i = 0; i <= n; ++i)
+        if (i != hi) c[j] += s[i][j] / n;
+    }
+    for (j = 0; j < n; ++j)
+      xr[j] = c[j] + (c[j] - s[hi][j]);
+    fr = obj(xr);
+    if (fr < f[lo]) {
+      for (j = 0; j < n; ++j)
+        xe[j] = c[j] + 2 * (c[j] - s[hi][j]);
+      fe = obj(xe);
+      if (fe < fr)
+        memcpy(s[hi], xe, sizeof xe), f[hi] = fe;
+      else
+        memcpy(s[hi], xr, sizeof xr), f[hi] = fr;
+    } else if (fr < f[sh]) {
+      memcpy(s[hi], xr, sizeof xr), f[hi] = fr;
+    } else {
+      for (j = 0; j < n; ++j)
+        xe[j] = c[j] + 0.5 * (s[hi][j] - c[j]);
+      fe = obj(xe);
+      if (fe < f[hi]) {
+        memcpy(s[hi], xe, sizeof xe), f[hi] = fe;
+      } else {
+        for (i = 0; i <= n; ++i)
+          if (i != lo) {
+            for (j = 0; j < n; ++j)
+              s[i][j] = s[lo][j] + 0.5 * (s[i][j] - s[lo][j]);
+            f[i] = obj(s[i]);
+          }
+      }
+    }
+  }
+  {
+    int lo = 0;
+    for (i = 1; i <= n; ++i)
+      if (f[i] < f[lo]) lo = i;
+    memcpy(x, s[lo], sizeof(double) * (size_t)n);
+    return f[lo];
+  }
+}
+
+static void setup(int ir, double th, unsigned long long seed) {
+  ggxc_rng rg;
+  double n[3] = {0, 0, 1}, v[3];
+  int i, k;
+  rg.s = seed;
+  P.alpha = RG[ir] * RG[ir];
+  P.mu = cos(th * 3.14159265358979323846 / 180);
+  P.s = sin(th * 3.14159265358979323846 / 180);
+  v[0] = P.s, v[1] = 0, v[2] = P.mu;
+  P.alb = (double)arref_ggx_albedo(n, v, P.alpha);
+  for (i = 0; i < NQ; ++i) {
+    ggxc_case cs;
+    float fq[4][3], fv[3], fn[3] = {0, 0, 1};
+    fv[0] = (float)P.s, fv[1] = 0.0f, fv[2] = (float)P.mu;
+    ggxc_make(&rg, &cs, th);
+    for (k = 0; k < 12; ++k)
+      fq[k / 3][k % 3] = (float)cs.q[k / 3][k % 3], P.q[i][k / 3][k % 3] = fq[k / 3][k % 3];
+    P.gt[i] = shl_polygon_ggx((const float(*)[3])fq, 4, fn, fv, (float)P.alpha);
+  }
+}
+
+/* ---- the closed-form model: 5 polynomials in (r, mu) of degree DI in r and DJ in mu, and the
+   albedo E0(tau) + sum_{i=1..AI, j=0..AJ} e_ij r^i tau^j, tau = alpha s / (mu + alpha s) */
+#define DI 7
+#define DJ 5
+#define AI 8
+#define AJ 6
+static double CO[5][DI + 1][DJ + 1], CA[AI + 1][AJ + 1];
+
+static double e0(double tau) {
+  return (1 - tau) / sqrt((1 - tau) * (1 - tau) + tau * tau);
+}
+static double model_alb(double r, double mu) {
+  double al = r * r, s = sqrt(1 - mu * mu), tau = al * s / (mu + al * s), e = e0(tau), ri = al;
+  int i, j;
+  for (i = 0; i <= AI; ++i) {
+    double t = 0;
+    for (j = AJ; j >= 0; --j)
+      t = t * (2 * tau - 1) + CA[i][j];
+    e += ri * t;
+    ri *= 2 * r - 1;
+  }
+  return e;
+}
+static void model_p(double r, double mu, double *p) {
+  int k, i, j;
+  double x = 2 * r - 1, y = 2 * mu - 1;
+  for (k = 0; k < 5; ++k) {
+    double t = 0;
+    for (i = DI; i >= 0; --i) {
+      double u = 0;
+      for (j = DJ; j >= 0; --j)
+        u = u * y + CO[k][i][j];
+      t = t * x + u;
+    }
+    p[k] = t;
+  }
+}
+
+/* least squares by modified Gram-Schmidt: A (m x n, row-major, destroyed), b (m) -> x (n) */
+static void lsq(double *A, double *b, int m, int n, double *x) {
+  double *R = calloc((size_t)(n * n), sizeof *R);
+  int i, j, k;
+  for (j = 0; j < n; ++j) {
+    double nr = 0;
+    for (k = 0; k < j; ++k) {
+      double d = 0;
+      for (i = 0; i < m; ++i)
+        d += A[i * n + k] * A[i * n + j];
+      R[k * n + j] = d;
+      for (i = 0; i < m; ++i)
+        A[i * n + j] -= d * A[i * n + k];
+    }
+    for (i = 0; i < m; ++i)
+      nr += A[i * n + j] * A[i * n + j];
+    nr = sqrt(nr);
+    R[j * n + j] = nr;
+    for (i = 0; i < m; ++i)
+      A[i * n + j] /= nr;
+  }
+  for (j = 0; j < n; ++j) {
+    double d = 0;
+    for (i = 0; i < m; ++i)
+      d += A[i * n + j] * b[i];
+    x[j] = d;
+  }
+  for (j = n - 1; j >= 0; --j) {
+    for (k = j + 1; k < n; ++k)
+      x[j] -= R[j * n + k] * x[k];
+    x[j] /= R[j * n + j];
+  }
+  free(R);
+}
+
+static void fit_albedo(void) {
+  enum { NR_ = 40, NT_ = 40 };
+  int m = NR_ * NT_, n = (AI + 1) * (AJ + 1), ir, it, i, j, row = 0;
+  double *A = malloc(sizeof(double) * (size_t)(m * n)), *b = malloc(sizeof(double) * (size_t)m),
+         x[(AI + 1) * (AJ + 1)], nrm[3] = {0, 0, 1}, emax = 0, erel = 0;
+  double *W = malloc(sizeof(double) * (size_t)m), *R = malloc(sizeof(double) * (size_t)m),
+         *M = malloc(sizeof(double) * (size_t)m);
+  for (ir = 0; ir < NR_; ++ir)
+    for (it = 0; it < NT_; ++it) {
+      double r = 0.01 + 0.99 * ir / (NR_ - 1.0), th = 88.5 * pow(it / (NT_ - 1.0), 0.7), v[3];
+      double mu = cos(th * 3.14159265358979323846 / 180), s = sqrt(1 - mu * mu), al = r * r;
+      double tau = al * s / (mu + al * s), ri = al, e;
+      v[0] = s, v[1] = 0, v[2] = mu;
+      e = (double)arref_ggx_albedo(nrm, v, al);
+      R[row] = r, M[row] = mu, W[row] = 1 / (2e-5 + 3e-3 * al);
+      for (i = 0; i <= AI; ++i) {
+        for (j = 0; j <= AJ; ++j)
+          A[row * n + i * (AJ + 1) + j] = W[row] * ri * pow(2 * tau - 1, j);
+        ri *= 2 * r - 1;
+      }
+      b[row] = W[row] * (e - e0(tau));
+      b[row] = b[row];
+      M[row] = mu;
+      R[row] = r;
+      W[row] = e;
+      row++;
+    }
+  lsq(A, b, m, n, x);
+  for (i = 0; i <= AI; ++i)
+    for (j = 0; j <= AJ; ++j)
+      CA[i][j] = x[i * (AJ + 1) + j];
+  for (row = 0; row < m; ++row) {
+    double d = fabs(model_alb(R[row], M[row]) - W[row]);
+    if (d > emax) emax = d;
+    if (d / W[row] > erel) erel = d / W[row];
+  }
+  fprintf(stderr, "albedo fit: max abs err %.2e, max rel err %.2e (%d points)\n", emax, erel, m);
+  {
+    double rb[4] = {0.0, 0.075, 0.15, 0.35}, mxs[4] = {0, 0, 0, 0};
+    int b;
+    for (row = 0; row < m; ++row)
+      for (b = 3; b >= 0; --b)
+        if (R[row] >= rb[b]) {
+          double d = fabs(model_alb(R[row], M[row]) - W[row]);
+          if (d > mxs[b]) mxs[b] = d;
+          break;
+        }
+    fprintf(stderr, "  max abs err by r from 0, 0.075, 0.15, 0.35: %.2e %.2e %.2e %.2e\n", mxs[0],
+            mxs[1], mxs[2], mxs[3]);
+    if (getenv("ALBDBG"))
+      for (row = 0; row < m; ++row)
+        fprintf(stderr, "%g %g %g %g\n", R[row], acos(M[row]) * 57.29577951308232, W[row],
+                model_alb(R[row], M[row]) - W[row]);
+  }
+  free(A), free(b), free(W), free(R), free(M);
+}
+
+static void fit_params(const char *fn) {
+  FILE *f = fopen(fn, "r");
+  static double pr[1000], pm[1000], pv[1000][5], pw[1000];
+  int np = 0, n = (DI + 1) * (DJ + 1), k, i, j, row;
+  double th, alb, fx;
+  while (f && fscanf(f, "%lf %lf %lf %lf %lf %lf %lf %lf %lf %lf", &pr[np], &th, &pm[np], &alb,
+                     &pv[np][0], &pv[np][1], &pv[np][2], &pv[np][3], &pv[np][4], &fx) == 10) {
+    pw[np] = 1 / (fx + 0.02);
+    if (th < 1e-9) pw[np] *= 0.01; /* the axis is free at normal view */
+    np++;
+  }
+  if (f) fclose(f);
+  for (k = 0; k < 5; ++k) {
+    double *A = malloc(sizeof(double) * (size_t)(np * n)), *b = malloc(sizeof(double) * (size_t)np),
+           x[(DI + 1) * (DJ + 1)], emax = 0, p[5];
+    for (row = 0; row < np; ++row) {
+      for (i = 0; i <= DI; ++i)
+        for (j = 0; j <= DJ; ++j)
+          A[row * n + i * (DJ + 1) + j] =
+              pw[row] * pow(2 * pr[row] - 1, i) * pow(2 * pm[row] - 1, j);
+      b[row] = pw[row] * (k == 0 || k == 4 ? exp(pv[row][k]) : pv[row][k]);
+    }
+    lsq(A, b, np, n, x);
+    for (i = 0; i <= DI; ++i)
+      for (j = 0; j <= DJ; ++j)
+        CO[k][i][j] = (double)(float)x[i * (DJ + 1) + j];
+    for (row = 0; row < np; ++row) {
+      model_p(pr[row], pm[row], p);
+      if (fabs(p[k] - (k == 0 || k == 4 ? exp(pv[row][k]) : pv[row][k])) > emax)
+        emax = fabs(p[k] - (k == 0 || k == 4 ? exp(pv[row][k]) : pv[row][k]));
+    }
+    fprintf(stderr, "param %d: %d points, max abs deviation %.3g\n", k, np, emax);
+    free(A), free(b);
+  }
+}
+
+static void save(const char *fn) {
+  FILE *f = fopen(fn, "w");
+  int k, i, j;
+  for (k = 0; k < 5; ++k)
+    for (i = 0; i <= DI; ++i)
+      for (j = 0; j <= DJ; ++j)
+        fprintf(f, "%.17g\n", CO[k][i][j]);
+  for (i = 0; i <= AI; ++i)
+    for (j = 0; j <= AJ; ++j)
+      fprintf(f, "%.17g\n", CA[i][j]);
+  fclose(f);
+}
+static void load(const char *fn) {
+  FILE *f = fopen(fn, "r");
+  int k, i, j;
+  for (k = 0; k < 5; ++k)
+    for (i = 0; i <= DI; ++i)
+      for (j = 0; j <= DJ; ++j)
+        if (fscanf(f, "%lf", &CO[k][i][j]) != 1) exit(3);
+  for (i = 0; i <= AI; ++i)
+    for (j = 0; j <= AJ; ++j)
+      if (fscanf(f, "%lf", &CA[i][j]) != 1) exit(3);
+  fclose(f);
+}
+
+static int cmpd(const void *a, const void *b) {
+  double x = *(const double *)a, y = *(const double *)b;
+  return x < y ? -1 : x > y;
+}
+static double pct(double *a, int n, double p) {
+  if (n == 0) return 0;
+  qsort(a, (size_t)n, sizeof *a, cmpd);
+  return a[(int)floor(p * (n - 1) + 0.5)];
+}
+
+/* the model on the bench sampler (seed 2017, 250 quads per roughness), against shl_polygon_ggx
+   and the long double albedo */
+static void check(void) {
+  static const double RO[7] = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0};
+  ggxc_rng rg;
+  int ir, i, k;
+  rg.s = 2017u;
+  for (ir = 0; ir < 7; ++ir) {
+    static double rel[250];
+    double emax = 0, al = (double)(float)(RO[ir] * RO[ir]);
+    int nv = 0;
+    for (i = 0; i < 250; ++i) {
+      ggxc_case cs;
+      float fq[4][3], fv[3], fn[3] = {0, 0, 1};
+      double q[4][3], nrm[3] = {0, 0, 1}, v[3], alb, gt, p[5], m[5], mu, s, got;
+      ggxc_make(&rg, &cs, -1);
+      for (k = 0; k < 12; ++k)
+        fq[k / 3][k % 3] = (float)cs.q[k / 3][k % 3], q[k / 3][k % 3] = fq[k / 3][k % 3];
+      for (k = 0; k < 3; ++k)
+        fv[k] = (float)cs.view[k], v[k] = fv[k];
+      alb = (double)arref_ggx_albedo(nrm, v, al);
+      gt = shl_polygon_ggx((const float(*)[3])fq, 4, fn, fv, (float)al);
+      mu = v[2] / sqrt(v[0] * v[0] + v[2] * v[2]);
+      s = sqrt(1 - mu * mu);
+      model_p(sqrt(al), mu, p);
+      gmu = mu;
+      p2m(p, al, m);
+      got = m[4] * model_alb(sqrt(al), mu) * ltc((const double(*)[3])q, m, mu, s);
+      if (fabs(got - gt) / alb > emax) emax = fabs(got - gt) / alb;
+      if (gt >= 0.05 * alb) rel[nv++] = fabs(got - gt) / gt;
+    }
+    printf("r %.2f: vis %d rel median %.2e p95 %.2e max %.2e; max err/albedo %.3g\n", RO[ir], nv,
+           pct(rel, nv, 0.5), pct(rel, nv, 0.95), pct(rel, nv, 1), emax);
+  }
+}
+
+/* ---- Levenberg-Marquardt on the polynomial coefficients against every training quad at once
+   (the per-point optima only start it): residual psi((k E F - gt) / (gt + 0.02 E)), psi a soft
+   clip at 0.3 (a few quads where the 4-parameter lobe cannot follow must not steer the rest) */
+#define NPT (NRG * NTH)
+#define NC (5 * (DI + 1) * (DJ + 1))
+static double (*TQ)[4][3], *TG, TA[NPT], TM[NPT], TS[NPT], TL[NPT], TE[NPT], TW[NPT];
+
+static void load_train(void) {
+  int ir, it, i;
+  TQ = malloc(sizeof(*TQ) * (size_t)(NPT * NQ));
+  TG = malloc(sizeof(double) * (size_t)(NPT * NQ));
+  for (ir = 0; ir < NRG; ++ir)
+    for (it = 0; it < NTH; ++it) {
+      int pi = ir * NTH + it;
+      setup(ir, TH[it], 0x5EEDull * 1000003ull + (unsigned long long)(ir * 97 + it * 7 + 1));
+      TA[pi] = P.alpha, TM[pi] = P.mu, TS[pi] = P.s, TL[pi] = P.alb;
+      TE[pi] = model_alb(RG[ir], P.mu);
+      /* the targets scale with roughness (LTC's median relative error grows from 7e-5 at
+         r = 0.05 to 1e-2 and more): weigh each point by the inverse of such a scale */
+      TW[pi] = sqrt(0.01 / (1e-4 + 0.03 * P.alpha));
+      for (i = 0; i < NQ; ++i) {
+        memcpy(TQ[pi * NQ + i], P.q[i], sizeof P.q[i]);
+        TG[pi * NQ + i] = P.gt[i];
+      }
+    }
+}
+static double psi(double e) {
+  return e / sqrt(1 + (e / 0.3) * (e / 0.3));
+}
+/* residuals of point pi with parameters p into out[NQ] */
+static void point_res(int pi, const double *p, double *out) {
+  double m[5];
+  int i;
+  gmu = TM[pi];
+  p2m(p, TA[pi], m);
+  for (i = 0; i < NQ; ++i) {
+    double f = m[4] * TE[pi] * ltc((const double(*)[3])TQ[pi * NQ + i], m, TM[pi], TS[pi]);
+    double g = TG[pi * NQ + i];
+    out[i] = TW[pi] * psi((f - g) / (g + 0.02 * TL[pi]));
+  }
+}
+static double total(const double *co, double *res) {
+  int pi, k, i;
+  double sum = 0;
+  for (pi = 0; pi < NPT; ++pi) {
+    double p[5];
+    memcpy(CO, co, sizeof CO);
+    model_p(sqrt(TA[pi]), TM[pi], p);
+    point_res(pi, p, res + pi * NQ);
+    for (i = 0; i < NQ; ++i)
+      sum += res[pi * NQ + i] * res[pi * NQ + i];
+  }
+  (void)k;
+  return sum;
+}
+static void lm(int iters) {
+  static double co[NC], trial[NC], JtJ[NC][NC], Jtr[NC], A[NC][NC], dl[NC];
+  double *res = malloc(sizeof(double) * NPT * NQ), *r2 = malloc(sizeof(double) * NPT * NQ);
+  double lam = 1e-3, cost;
+  int itn, pi, k, i, j, q, kk, n1 = (DI + 1) * (DJ + 1);
+  memcpy(co, CO, sizeof co);
+  cost = total(co, res);
+  fprintf(stderr, "lm start cost %.6g\n", cost);
+  for (itn = 0; itn < iters; ++itn) {
+    memset(JtJ, 0, sizeof JtJ);
+    memset(Jtr, 0, sizeof Jtr);
+    for (pi = 0; pi < NPT; ++pi) {
+      double p[5], dp[5][NQ], basis[(DI + 1) * (DJ + 1)], rr = sqrt(TA[pi]), mu = TM[pi];
+      memcpy(CO, co, sizeof CO);
+      model_p(rr, mu, p);
+      for (k = 0; k < 5; ++k) {
+        double pp[5], h = 1e-5;
+        memcpy(pp, p, sizeof pp);
+        pp[k] += h;
+        point_res(pi, pp, dp[k]);
+        for (q = 0; q < NQ; ++q)
+          dp[k][q] = (dp[k][q] - res[pi * NQ + q]) / h;
+      }
+      for (i = 0; i <= DI; ++i)
+        for (j = 0; j <= DJ; ++j)
+          basis[i * (DJ + 1) + j] = pow(2 * rr - 1, i) * pow(2 * mu - 1, j);
+      /* J row q: column (k, b) = dp[k][q] basis[b]; JtJ += outer, per point by the 5x5 block */
+      {
+        double G[5][5], g[5];
+        memset(G, 0, sizeof G);
+        memset(g, 0, sizeof g);
+        for (q = 0; q < NQ; ++q)
+          for (k = 0; k < 5; ++k) {
+            g[k] += dp[k][q] * res[pi * NQ + q];
+            for (kk = 0; kk < 5; ++kk)
+              G[k][kk] += dp[k][q] * dp[kk][q];
+          }
+        for (k = 0; k < 5; ++k)
+          for (i = 0; i < n1; ++i) {
+            Jtr[k * n1 + i] += g[k] * basis[i];
+            for (kk = 0; kk < 5; ++kk)
+              for (j = 0; j < n1; ++j)
+                JtJ[k * n1 + i][kk * n1 + j] += G[k][kk] * basis[i] * basis[j];
+          }
+      }
+    }
+    for (;;) {
+      double c2;
+      /* solve (JtJ + lam diag) dl = -Jtr by Cholesky */
+      for (i = 0; i < NC; ++i) {
+        for (j = 0; j < NC; ++j)
+          A[i][j] = JtJ[i][j];
+        A[i][i] += lam * (JtJ[i][i] + 1e-12);
+      }
+      for (j = 0; j < NC; ++j) {
+        double d = A[j][j];
+        for (k = 0; k < j; ++k)
+          d -= A[j][k] * A[j][k];
+        d = sqrt(d > 1e-300 ? d : 1e-300);
+        A[j][j] = d;
+        for (i = j + 1; i < NC; ++i) {
+          double t = A[i][j];
+          for (k = 0; k < j; ++k)
+            t -= A[i][k] * A[j][k];
+          A[i][j] = t / d;
+        }
+      }
+      for (i = 0; i < NC; ++i) {
+        double t = -Jtr[i];
+        for (k = 0; k < i; ++k)
+          t -= A[i][k] * dl[k];
+        dl[i] = t / A[i][i];
+      }
+      for (i = NC - 1; i >= 0; --i) {
+        double t = dl[i];
+        for (k = i + 1; k < NC; ++k)
+          t -= A[k][i] * dl[k];
+        dl[i] = t / A[i][i];
+      }
+      for (i = 0; i < NC; ++i)
+        trial[i] = co[i] + dl[i];
+      c2 = total(trial, r2);
+      if (c2 < cost) {
+        memcpy(co, trial, sizeof co);
+        memcpy(res, r2, sizeof(double) * NPT * NQ);
+        cost = c2;
+        lam = lam / 3 > 1e-9 ? lam / 3 : 1e-9;
+        break;
+      }
+      lam *= 4;
+      if (lam > 1e8) break;
+    }
+    fprintf(stderr, "lm %d cost %.6g lam %.2g\n", itn, cost, lam);
+    if (lam > 1e8) break;
+  }
+  memcpy(CO, co, sizeof CO);
+  free(res), free(r2);
+}
+
+/* ---- the kernel text: shli_ggx_fast_fit, straight-line Horner forms of the model above */
+static void lit(char *o, double c) {
+  sprintf(o, "%.9e", c);
+}
+static char *emit_text(void) {
+  static char buf[65536];
+  char l1[64];
+  int k, i, j;
+  char *o = buf;
+  o += sprintf(o, "/* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its "
+                  "--check */\n");
+  o += sprintf(o,
+               "/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_fit[0] a / alpha, "
+               "[1] g (c =\n   a (mu + (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, "
+               "cos theta_v)), [4] k\n   (the magnitude's factor), each a polynomial of degree "
+               "%d in 2 r - 1 (r = sqrt(alpha)) and\n   %d in 2 mu - 1 (mu = n.v); [5] the "
+               "directional albedo, E0 + r^2 times a polynomial of\n   degree %d in 2 r - 1 and "
+               "%d in 2 tau - 1, tau = alpha sin(theta_v) / (mu + alpha sin(theta_v)),\n   E0 = "
+               "(1 - tau) / sqrt((1 - tau)^2 + tau^2) = 1 / sqrt(1 + alpha^2 tan^2 theta_v) (G2 "
+               "at the\n   mirror direction as alpha -> 0). */\n",
+               DI, DJ, AI, AJ);
+  o += sprintf(
+      o, "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,"
+         "\n                                      shli_real *out_fit) {\n  shli_real x = 2.0 * "
+         "r - 1.0;\n  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n  "
+         "shli_real u;\n  shli_real t;\n");
+  for (k = 0; k < 5; ++k) {
+    for (i = DI; i >= 0; --i) {
+      lit(l1, CO[k][i][DJ]);
+      o += sprintf(o, "  u = %s;\n", l1);
+      for (j = DJ - 1; j >= 0; --j) {
+        lit(l1, CO[k][i][j]);
+        o += sprintf(o, "  u = %s + y * u;\n", l1);
+      }
+      if (i == DI)
+        o += sprintf(o, "  t = u;\n");
+      else
+        o += sprintf(o, "  t = u + x * t;\n");
+    }
+    o += sprintf(o, "  out_fit[%d] = t;\n", k);
+  }
+  for (i = AI; i >= 0; --i) {
+    lit(l1, CA[i][AJ]);
+    o += sprintf(o, "  u = %s;\n", l1);
+    for (j = AJ - 1; j >= 0; --j) {
+      lit(l1, CA[i][j]);
+      o += sprintf(o, "  u = %s + z * u;\n", l1);
+    }
+    if (i == AI)
+      o += sprintf(o, "  t = u;\n");
+    else
+      o += sprintf(o, "  t = u + x * t;\n");
+  }
+  o += sprintf(
+      o, "  u = 1.0 - tau;\n  out_fit[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;\n}\n");
+  o += sprintf(o, "/* @fit ggx_fast end */\n");
+  return buf;
+}
+static char *slurp(const char *fn, long *n) {
+  FILE *f = fopen(fn, "rb");
+  char *b;
+  if (!f) return NULL;
+  fseek(f, 0, SEEK_END);
+  *n = ftell(f);
+  fseek(f, 0, SEEK_SET);
+  b = malloc((size_t)*n + 1);
+  if (fread(b, 1, (size_t)*n, f) != (size_t)*n) *n = 0;
+  b[*n] = 0;
+  fclose(f);
+  return b;
+}
+/* write (w = 1) or compare (w = 0) the region of shlight.h; returns 0 when fresh / written */
+static int region(const char *hdr, int w) {
+  long n;
+  char *h = slurp(hdr, &n), *a, *b, *t = emit_text();
+  const char *endm = "/* @fit ggx_fast end */\n";
+  if (!h) return 2;
+  a = strstr(h, "/* @fit ggx_fast begin");
+  b = a ? strstr(a, endm) : NULL;
+  if (!a || !b) return 2;
+  b += strlen(endm);
+  if (!w) return (long)strlen(t) == b - a && memcmp(a, t, strlen(t)) == 0 ? 0 : 1;
+  {
+    FILE *f = fopen(hdr, "wb");
+    fwrite(h, 1, (size_t)(a - h), f);
+    fputs(t, f);
+    fputs(b, f);
+    fclose(f);
+  }
+  return 0;
+}
+
+int main(int argc, char **argv) {
+  if (argc >= 2 && strcmp(argv[1], "points") == 0) {
+    int ir, it, lo = 0, hi = NRG;
+    static double prev[NTH][5];
+    if (argc >= 4) lo = atoi(argv[2]), hi = atoi(argv[3]);
+    for (ir = lo; ir < hi; ++ir) {
+      for (it = 0; it < NTH; ++it) {
+        double x[5], y[5], fx, fy;
+        setup(ir, TH[it], 0x5EEDull * 1000003ull + (unsigned long long)(ir * 97 + it * 7 + 1));
+        prior[0] = log(2.0), prior[1] = 0, prior[2] = 0, prior[3] = 1, prior[4] = 0;
+        if (ir > lo) {
+          memcpy(prior, prev[it], sizeof prior);
+        }
+        memcpy(x, prior, sizeof x);
+        fx = nm(x, 5, 0.2, 400);
+        fx = nm(x, 5, 0.03, 300);
+        y[0] = log(2.0), y[1] = 0, y[2] = 0, y[3] = 1, y[4] = 0;
+        fy = nm(y, 5, 0.2, 400);
+        fy = nm(y, 5, 0.03, 300);
+        if (fy < fx) memcpy(x, y, sizeof x), fx = fy;
+        if (it > 0) {
+          memcpy(y, prev[it - 1], sizeof y);
+          fy = nm(y, 5, 0.2, 400);
+          fy = nm(y, 5, 0.03, 300);
+          if (fy < fx) memcpy(x, y, sizeof x), fx = fy;
+        }
+        memcpy(prev[it], x, sizeof x);
+        printf("%g %g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.4g\n", RG[ir], TH[it], P.mu, P.alb, x[0],
+               x[1], x[2], x[3], x[4], sqrt(fx));
+        fflush(stdout);
+      }
+    }
+    return 0;
+  }
+  if (argc >= 4 && strcmp(argv[1], "smooth") == 0) {
+    fit_albedo();
+    fit_params(argv[2]);
+    save(argv[3]);
+    return 0;
+  }
+  if (argc >= 3 && strcmp(argv[1], "check") == 0) {
+    load(argv[2]);
+    check();
+    return 0;
+  }
+  if (argc >= 5 && strcmp(argv[1], "lm") == 0) {
+    load(argv[2]);
+    if (argc >= 6) fit_albedo();
+    load_train();
+    lm(atoi(argv[4]));
+    save(argv[3]);
+    check();
+    return 0;
+  }
+  if (argc >= 4 && strcmp(argv[1], "emit") == 0) {
+    load(argv[2]);
+    return region(argv[3], 1);
+  }
+  if (argc >= 4 && strcmp(argv[1], "--check") == 0) {
+    int rc;
+    load(argv[2]);
+    rc = region(argv[3], 0);
+    printf("%s: shli_ggx_fast_fit %s %s\n", rc == 0 ? "ok" : "FAIL",
+           rc == 0 ? "matches" : "differs from", argv[2]);
+    return rc;
+  }
+  fprintf(stderr, "usage: fit_ggx_fast points [ir0 ir1] | smooth POINTS COEF | check COEF |\n"
+                  "       emit COEF HEADER | --check COEF HEADER\n");
+  return 2;
+}
