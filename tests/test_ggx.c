@@ -63,34 +63,49 @@ static double ref(const double (*q)[3], int nv, const double nrm[3], const doubl
      roughness 1.0:  1.8e-4 / 3.0e-4
    asserted at ~3x; the medians also against LTC's published ones (7e-5, 1e-3, 4e-3, 1.6e-2,
    0.11, 6.8e-2, 1.1e-2). The full 1,750-quad comparison: bench/bench_ggx.c. */
+typedef double (*ggx_kern)(const double (*q)[3], int nv, const double nrm[3], const double view[3],
+                           double alpha);
+
+/* k on the research sampler's 24 quads at one roughness: the median relative error over the
+   visible ones (light >= 5 % of the albedo) and the max error / albedo; returns the number
+   of visible quads */
+static int sampler_errors(ggx_kern k, double roughness, unsigned seed, double *out_med,
+                          double *out_emax) {
+  ggxc_rng r;
+  double rel[64], emax = 0;
+  int nvis = 0, c;
+  r.s = seed;
+  for (c = 0; c < 24; ++c) {
+    ggxc_case cs;
+    double alb, gt, got, a = roughness * roughness;
+    ggxc_make(&r, &cs, -1);
+    got = k((const double(*)[3])cs.q, 4, ZN, cs.view, a);
+    gt = ref((const double(*)[3])cs.q, 4, ZN, cs.view, a, &alb);
+    if (fabs(got - gt) / alb > emax) emax = fabs(got - gt) / alb;
+    if (gt >= 0.05 * alb) rel[nvis++] = fabs(got - gt) / gt;
+  }
+  qsort(rel, (size_t)nvis, sizeof rel[0], cmpd);
+  *out_med = nvis ? rel[nvis / 2] : 0;
+  *out_emax = emax;
+  return nvis;
+}
+
+static const double sampler_rough[7] = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0};
+static const double sampler_ltc[7] = {7.3e-5, 1.0e-3, 3.8e-3, 1.6e-2, 0.11, 6.8e-2, 1.1e-2};
+
 static void test_research_sampler(void) {
-  static const double rough[7] = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0};
-  static const double ltc[7] = {7.3e-5, 1.0e-3, 3.8e-3, 1.6e-2, 0.11, 6.8e-2, 1.1e-2};
   static const double tol_med[7] = {4.8e-6, 1.7e-5, 1.7e-6, 3.9e-5, 1.6e-5, 9e-5, 5.3e-4};
   static const double tol_max[7] = {3e-3, 2.3e-2, 6.4e-3, 4e-4, 5.7e-4, 3.9e-4, 9.1e-4};
-  int ir, c;
+  int ir;
   for (ir = 0; ir < 7; ++ir) {
-    ggxc_rng r;
-    double rel[64], emax = 0, med;
-    int nvis = 0;
-    r.s = 1000u + (unsigned)ir;
-    for (c = 0; c < 24; ++c) {
-      ggxc_case cs;
-      double alb, gt, got, a = rough[ir] * rough[ir];
-      ggxc_make(&r, &cs, -1);
-      got = kern((const double(*)[3])cs.q, 4, ZN, cs.view, a);
-      gt = ref((const double(*)[3])cs.q, 4, ZN, cs.view, a, &alb);
-      if (fabs(got - gt) / alb > emax) emax = fabs(got - gt) / alb;
-      if (gt >= 0.05 * alb) rel[nvis++] = fabs(got - gt) / gt;
-    }
-    qsort(rel, (size_t)nvis, sizeof rel[0], cmpd);
-    med = nvis ? rel[nvis / 2] : 0;
+    double med, emax, rgh = sampler_rough[ir];
+    int nvis = sampler_errors(kern, rgh, 1000u + (unsigned)ir, &med, &emax);
     printf("  roughness %.2f: %2d visible, median rel. error %.2e (LTC %.1e), max err/albedo "
            "%.2e\n",
-           rough[ir], nvis, med, ltc[ir], emax);
-    TL_CHECK(nvis >= 5, "roughness %g: only %d visible", rough[ir], nvis);
-    TL_CHECK(med <= tol_med[ir] && med <= ltc[ir], "roughness %g: median %g", rough[ir], med);
-    TL_CHECK(emax <= tol_max[ir], "roughness %g: max err/albedo %g", rough[ir], emax);
+           rgh, nvis, med, sampler_ltc[ir], emax);
+    TL_CHECK(nvis >= 5, "roughness %g: only %d visible", rgh, nvis);
+    TL_CHECK(med <= tol_med[ir] && med <= sampler_ltc[ir], "roughness %g: median %g", rgh, med);
+    TL_CHECK(emax <= tol_max[ir], "roughness %g: max err/albedo %g", rgh, emax);
   }
 }
 
@@ -475,32 +490,17 @@ static double ref_n(const double (*q)[3], int nv, const double nrm[3], const dou
    relative error (visible: >= 5 % of the albedo) and max error / albedo, asserted at the
    measured values x ~1.5 (FAST_MED, FAST_MAX below); LTC's published medians printed beside. */
 static void test_fast_sampler(void) {
-  static const double rough[7] = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0};
-  static const double ltc[7] = {7.3e-5, 1.0e-3, 3.8e-3, 1.6e-2, 0.11, 6.8e-2, 1.1e-2};
   static const double tol_med[7] = FAST_MED;
   static const double tol_max[7] = FAST_MAX;
-  int ir, c;
+  int ir;
   for (ir = 0; ir < 7; ++ir) {
-    ggxc_rng r;
-    double rel[64], emax = 0, med;
-    int nvis = 0;
-    r.s = 1000u + (unsigned)ir;
-    for (c = 0; c < 24; ++c) {
-      ggxc_case cs;
-      double alb, gt, got, a = rough[ir] * rough[ir];
-      ggxc_make(&r, &cs, -1);
-      got = kern_fast((const double(*)[3])cs.q, 4, ZN, cs.view, a);
-      gt = ref((const double(*)[3])cs.q, 4, ZN, cs.view, a, &alb);
-      if (fabs(got - gt) / alb > emax) emax = fabs(got - gt) / alb;
-      if (gt >= 0.05 * alb) rel[nvis++] = fabs(got - gt) / gt;
-    }
-    qsort(rel, (size_t)nvis, sizeof rel[0], cmpd);
-    med = nvis ? rel[nvis / 2] : 0;
+    double med, emax, rgh = sampler_rough[ir];
+    int nvis = sampler_errors(kern_fast, rgh, 1000u + (unsigned)ir, &med, &emax);
     printf("  fast, roughness %.2f: %2d visible, median rel. error %.2e (LTC %.1e), max "
            "err/albedo %.2e\n",
-           rough[ir], nvis, med, ltc[ir], emax);
-    TL_CHECK(med <= tol_med[ir], "fast, roughness %g: median %g", rough[ir], med);
-    TL_CHECK(emax <= tol_max[ir], "fast, roughness %g: max err/albedo %g", rough[ir], emax);
+           rgh, nvis, med, sampler_ltc[ir], emax);
+    TL_CHECK(med <= tol_med[ir], "fast, roughness %g: median %g", rgh, med);
+    TL_CHECK(emax <= tol_max[ir], "fast, roughness %g: max err/albedo %g", rgh, emax);
   }
 }
 
