@@ -10,6 +10,7 @@
 #include "ref/ggxcases.h"
 #include "tl.h"
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -17,32 +18,39 @@
 #define IN 16 /* 12 vertex floats, view (3), alpha */
 #define OUTS 2
 
-static void test_glsl_ggx(void) {
+typedef float (*ggx_fn)(const float (*v)[3], int nv, const float nrm[3], const float view[3],
+                        float alpha);
+
+/* the GLSL function `name` against its C kernel f on NI quads (seed: the sampler's), both
+   passes (the quad, then moved below the horizon); |GLSL - C| asserted below tol */
+static void glsl_vs_c(const char *name, ggx_fn f, unsigned seed, double tol) {
   static float in[NI * IN], out[NI * OUTS], ref[NI * OUTS];
+  static char main_src[1024];
   const char *files[6] = {"shlight_glsl/shl_prelude.glsl",  "shlight_glsl/shl_basis.glsl",
                           "shlight_glsl/shl_gradient.glsl", "shlight_glsl/shl_zonal.glsl",
                           "shlight_glsl/shl_light.glsl",    "shlight_glsl/shl_edge.glsl"};
-  const char *main_src =
-      "void glrun_main(int item) {\n"
-      "  vec3 v[SHLIGHT_POLYGON_MAX];\n"
-      "  int k;\n"
-      "  for (k = 0; k < SHLIGHT_POLYGON_MAX; ++k) v[k] = vec3(0.0);\n"
-      "  for (k = 0; k < 4; ++k)\n"
-      "    v[k] = vec3(in_float(3 * k), in_float(3 * k + 1), in_float(3 * k + 2));\n"
-      "  vec3 vw = vec3(in_float(12), in_float(13), in_float(14));\n"
-      "  float a = in_float(15);\n"
-      "  float top = max(max(v[0].z, v[1].z), max(v[2].z, v[3].z)) + 0.01;\n"
-      "  int pass;\n"
-      "  for (pass = 0; pass < 2; ++pass) { /* one call site: llvmpipe inlines each */\n"
-      "    out_float(pass, shl_polygon_ggx(v, 4, vec3(0.0, 0.0, 1.0), vw, a));\n"
-      "    for (k = 0; k < 4; ++k) v[k].z = v[k].z - top; /* all below the horizon */\n"
-      "  }\n"
-      "}\n";
   const float nrm[3] = {0, 0, 1};
   ggxc_rng r;
   int i, k, bad = 0, nz = 0;
   double worst = 0, worst_rel = 0;
-  r.s = 31337u;
+  snprintf(main_src, sizeof main_src,
+           "void glrun_main(int item) {\n"
+           "  vec3 v[SHLIGHT_POLYGON_MAX];\n"
+           "  int k;\n"
+           "  for (k = 0; k < SHLIGHT_POLYGON_MAX; ++k) v[k] = vec3(0.0);\n"
+           "  for (k = 0; k < 4; ++k)\n"
+           "    v[k] = vec3(in_float(3 * k), in_float(3 * k + 1), in_float(3 * k + 2));\n"
+           "  vec3 vw = vec3(in_float(12), in_float(13), in_float(14));\n"
+           "  float a = in_float(15);\n"
+           "  float top = max(max(v[0].z, v[1].z), max(v[2].z, v[3].z)) + 0.01;\n"
+           "  int pass;\n"
+           "  for (pass = 0; pass < 2; ++pass) { /* one call site: llvmpipe inlines each */\n"
+           "    out_float(pass, %s(v, 4, vec3(0.0, 0.0, 1.0), vw, a));\n"
+           "    for (k = 0; k < 4; ++k) v[k].z = v[k].z - top; /* all below the horizon */\n"
+           "  }\n"
+           "}\n",
+           name);
+  r.s = seed;
   for (i = 0; i < NI; ++i) {
     ggxc_case cs;
     float *p = in + i * IN, below[4][3], top;
@@ -53,11 +61,11 @@ static void test_glsl_ggx(void) {
     for (k = 0; k < 3; ++k)
       p[12 + k] = (float)cs.view[k];
     p[15] = (float)(rough * rough);
-    ref[i * OUTS] = shl_polygon_ggx((const float(*)[3])p, 4, nrm, p + 12, p[15]);
+    ref[i * OUTS] = f((const float(*)[3])p, 4, nrm, p + 12, p[15]);
     top = fmaxf(fmaxf(p[2], p[5]), fmaxf(p[8], p[11])) + 0.01f;
     for (k = 0; k < 12; ++k)
       below[k / 3][k % 3] = p[k] - (k % 3 == 2 ? top : 0.0f);
-    ref[i * OUTS + 1] = shl_polygon_ggx((const float(*)[3])below, 4, nrm, p + 12, p[15]);
+    ref[i * OUTS + 1] = f((const float(*)[3])below, 4, nrm, p + 12, p[15]);
   }
   TL_CHECK(glrun_compute("#define SHLIGHT_MAX_BANDS 3\n", files, 6, main_src, in, (size_t)NI * IN,
                          out, (size_t)NI * OUTS, NI) == 0,
@@ -66,7 +74,7 @@ static void test_glsl_ggx(void) {
     double c = ref[i * OUTS], g = out[i * OUTS], d = fabs(g - c);
     if (d > worst) worst = d;
     if (c >= 0.01 && d / c > worst_rel) worst_rel = d / c;
-    if (!(d <= 7.5e-5)) { /* measured 2.5e-5 (llvmpipe, float inside vs C's double) */
+    if (!(d <= tol)) {
       bad++;
       if (bad < 6)
         printf("  item %d: GLSL %.7g C %.7g (alpha %g, view z %g)\n", i, g, c, in[i * IN + 15],
@@ -74,77 +82,21 @@ static void test_glsl_ggx(void) {
     }
     if (out[i * OUTS + 1] != 0.0f || ref[i * OUTS + 1] != 0.0f) nz++;
   }
-  printf("  %s: max |GLSL - C| %.2e, max relative (C >= 0.01) %.2e; below the horizon: %d "
+  printf("  %s, %s: max |GLSL - C| %.2e, max relative (C >= 0.01) %.2e; below the horizon: %d "
          "non-zero\n",
-         glrun_renderer(), worst, worst_rel, nz);
-  TL_CHECK(bad == 0, "%d outputs differ beyond 7.5e-5", bad);
-  TL_CHECK(nz == 0, "%d lights below the horizon gave light", nz);
+         name, glrun_renderer(), worst, worst_rel, nz);
+  TL_CHECK(bad == 0, "%s: %d outputs differ beyond %g", name, bad, tol);
+  TL_CHECK(nz == 0, "%s: %d lights below the horizon gave light", name, nz);
 }
 
-#define FAST_TOL 5e-6 /* measured 8.6e-7 (llvmpipe, float inside vs C's double) */
-/* the same for shl_polygon_ggx_fast (the table-free LTC): |GLSL - C| below FAST_TOL */
+/* measured 2.5e-5 (llvmpipe, float inside vs C's double) */
+static void test_glsl_ggx(void) {
+  glsl_vs_c("shl_polygon_ggx", shl_polygon_ggx, 31337u, 7.5e-5);
+}
+
+/* the table-free LTC: measured 8.6e-7 */
 static void test_glsl_ggx_fast(void) {
-  static float in[NI * IN], out[NI * OUTS], ref[NI * OUTS];
-  const char *files[6] = {"shlight_glsl/shl_prelude.glsl",  "shlight_glsl/shl_basis.glsl",
-                          "shlight_glsl/shl_gradient.glsl", "shlight_glsl/shl_zonal.glsl",
-                          "shlight_glsl/shl_light.glsl",    "shlight_glsl/shl_edge.glsl"};
-  const char *main_src =
-      "void glrun_main(int item) {\n"
-      "  vec3 v[SHLIGHT_POLYGON_MAX];\n"
-      "  int k;\n"
-      "  for (k = 0; k < SHLIGHT_POLYGON_MAX; ++k) v[k] = vec3(0.0);\n"
-      "  for (k = 0; k < 4; ++k)\n"
-      "    v[k] = vec3(in_float(3 * k), in_float(3 * k + 1), in_float(3 * k + 2));\n"
-      "  vec3 vw = vec3(in_float(12), in_float(13), in_float(14));\n"
-      "  float a = in_float(15);\n"
-      "  float top = max(max(v[0].z, v[1].z), max(v[2].z, v[3].z)) + 0.01;\n"
-      "  int pass;\n"
-      "  for (pass = 0; pass < 2; ++pass) { /* one call site: llvmpipe inlines each */\n"
-      "    out_float(pass, shl_polygon_ggx_fast(v, 4, vec3(0.0, 0.0, 1.0), vw, a));\n"
-      "    for (k = 0; k < 4; ++k) v[k].z = v[k].z - top; /* all below the horizon */\n"
-      "  }\n"
-      "}\n";
-  const float nrm[3] = {0, 0, 1};
-  ggxc_rng r;
-  int i, k, bad = 0, nz = 0;
-  double worst = 0, worst_rel = 0;
-  r.s = 31338u;
-  for (i = 0; i < NI; ++i) {
-    ggxc_case cs;
-    float *p = in + i * IN, below[4][3], top;
-    double rough = 0.03 + 0.97 * ggxc_rnd(&r);
-    ggxc_make(&r, &cs, i % 4 == 3 ? 80 + 8 * ggxc_rnd(&r) : -1);
-    for (k = 0; k < 12; ++k)
-      p[k] = (float)cs.q[k / 3][k % 3];
-    for (k = 0; k < 3; ++k)
-      p[12 + k] = (float)cs.view[k];
-    p[15] = (float)(rough * rough);
-    ref[i * OUTS] = shl_polygon_ggx_fast((const float(*)[3])p, 4, nrm, p + 12, p[15]);
-    top = fmaxf(fmaxf(p[2], p[5]), fmaxf(p[8], p[11])) + 0.01f;
-    for (k = 0; k < 12; ++k)
-      below[k / 3][k % 3] = p[k] - (k % 3 == 2 ? top : 0.0f);
-    ref[i * OUTS + 1] = shl_polygon_ggx_fast((const float(*)[3])below, 4, nrm, p + 12, p[15]);
-  }
-  TL_CHECK(glrun_compute("#define SHLIGHT_MAX_BANDS 3\n", files, 6, main_src, in, (size_t)NI * IN,
-                         out, (size_t)NI * OUTS, NI) == 0,
-           "glrun: %s", glrun_last_log());
-  for (i = 0; i < NI; ++i) {
-    double c = ref[i * OUTS], g = out[i * OUTS], d = fabs(g - c);
-    if (d > worst) worst = d;
-    if (c >= 0.01 && d / c > worst_rel) worst_rel = d / c;
-    if (!(d <= FAST_TOL)) {
-      bad++;
-      if (bad < 6)
-        printf("  item %d: GLSL %.7g C %.7g (alpha %g, view z %g)\n", i, g, c, in[i * IN + 15],
-               in[i * IN + 14]);
-    }
-    if (out[i * OUTS + 1] != 0.0f || ref[i * OUTS + 1] != 0.0f) nz++;
-  }
-  printf("  fast, %s: max |GLSL - C| %.2e, max relative (C >= 0.01) %.2e; below the horizon: %d "
-         "non-zero\n",
-         glrun_renderer(), worst, worst_rel, nz);
-  TL_CHECK(bad == 0, "fast: %d outputs differ beyond %g", bad, FAST_TOL);
-  TL_CHECK(nz == 0, "fast: %d lights below the horizon gave light", nz);
+  glsl_vs_c("shl_polygon_ggx_fast", shl_polygon_ggx_fast, 31338u, 5e-6);
 }
 
 int main(void) {
