@@ -2789,9 +2789,7 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
 #endif
 #endif
 #if SHLIGHT_ROTATE_FAST
-#if defined(__AVX__)
-#include <immintrin.h>
-#elif defined(__SSE2__)
+#if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 #define SHLI_ROT_FAST_BANDS 8
@@ -2910,13 +2908,6 @@ static const double SHLI_ROT_X90[320] = {
 #define SHLI_ROT_K1(l, src) ((src) == 0 || (src) == 2 ? (l) / 2 + 1 : ((l) + 1) / 2)
 typedef double shli_rot_v4 __attribute__((vector_size(32)));
 typedef __INT64_TYPE__ shli_rot_i4 __attribute__((vector_size(32)));
-/* band 3 without angles (shli_rot_b3) needs __builtin_convertvector */
-#if defined(__clang__) || __GNUC__ >= 9
-#define SHLI_ROT_B3 1
-typedef float shli_rot_f4 __attribute__((vector_size(16)));
-#else
-#define SHLI_ROT_B3 0
-#endif
 /* lanes i, j, k, m of a (0..3) and b (4..7) */
 #if defined(__clang__)
 #define SHLI_ROT_SHUF(a, b, i, j, k, m) __builtin_shufflevector(a, b, i, j, k, m)
@@ -3163,132 +3154,6 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b012(int n, const float R[9], co
   }
 }
 
-#if SHLI_ROT_B3
-/* band 3 of a rotation R (shli_rot_near) as given, no angles: the band is a harmonic cubic f,
-   g(w) = f(R^T w) is known at the 7 points d_k (x, y, z, x + y + z, x + y, y + z, z - x) from f
-   at R^T d_k (rows of R and their sums), and the coefficients are a fixed linear map of those 7
-   values (the inverse of the basis at the d_k; per k: m = -3..0, then m = 1..3) */
-/* clang-format off */
-static const double SHLI_ROT_B3W[56] = {
-  -0.029880715233359841, 0.097590007294853329, 0.038575837490522978, 0,
-  0.11572751247156893, -0.048795003647426664, -0.1494035761667992, 0,
-  0.1494035761667992, 0.097590007294853329, 0.11572751247156893, 0,
-  0.038575837490522978, -0.048795003647426664, 0.029880715233359841, 0,
-  0.029880715233359841, 0.097590007294853329, -0.038575837490522978, 0.1889822365046136,
-  0.038575837490522978, 0, 0.029880715233359841, 0,
-  0, 0.048795003647426664, 0, 0,
-  0, 0, 0, 0,
-  -0.029880715233359841, 0, 0.038575837490522978, 0,
-  0.038575837490522978, -0.048795003647426664, 0.029880715233359841, 0,
-  0.029880715233359841, 0, -0.038575837490522978, 0,
-  0.038575837490522978, -0.048795003647426664, 0.029880715233359841, 0,
-  0.029880715233359841, 0, -0.038575837490522978, 0,
-  0.038575837490522978, 0.048795003647426664, 0.029880715233359841, 0
-};
-/* clang-format on */
-SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_rot_b3(const float R[9], const float *sh,
-                                                  float *out_sh) {
-  double q00 = (double)R[0];
-  double q01 = (double)R[1];
-  double q02 = (double)R[2];
-  double q10 = (double)R[3];
-  double q11 = (double)R[4];
-  double q12 = (double)R[5];
-  /* the cubic would triple R's distance from a rotation: rows 0, 1 orthonormalised to first
-     order (Gram matrix G, G^(-1/2) ~ (3 I - G) / 2), row 2 their cross product */
-  double h0 = 1.5 - 0.5 * (q00 * q00 + q01 * q01 + q02 * q02);
-  double h1 = 1.5 - 0.5 * (q10 * q10 + q11 * q11 + q12 * q12);
-  double h2 = -0.5 * (q00 * q10 + q01 * q11 + q02 * q12);
-  double r00 = h0 * q00 + h2 * q10;
-  double r01 = h0 * q01 + h2 * q11;
-  double r02 = h0 * q02 + h2 * q12;
-  double r10 = h1 * q10 + h2 * q00;
-  double r11 = h1 * q11 + h2 * q01;
-  double r12 = h1 * q12 + h2 * q02;
-  double r20 = r01 * r12 - r02 * r11;
-  double r21 = r02 * r10 - r00 * r12;
-  double r22 = r00 * r11 - r01 * r10;
-  /* f = x (e1 q + e3 (3 y^2 - x^2)) + y (e-1 q + e-3 (y^2 - 3 x^2)) + z (e2 (x^2 - y^2)
-     + e0 (2 z^2 - 3 x^2 - 3 y^2) + e-2 x y), q = x^2 + y^2 - 4 z^2: e_m the band's coefficients
-     times sqrt(35 / 2), 2 sqrt(105), sqrt(21 / 2), sqrt(7), sqrt(21 / 2), sqrt(105), sqrt(35 / 2)
-     (m = -3..3; the common 1 / (4 sqrt(pi)) cancels); vectors of 4 points */
-  shli_rot_v4 k0 = {4.1833001326703778, 20.493901531919196, 3.2403703492039302, 2.6457513110645907};
-  shli_rot_v4 k1 = {2.6457513110645907, 3.2403703492039302, 10.246950765959598, 4.1833001326703778};
-  shli_rot_f4 f0;
-  shli_rot_f4 f1;
-  shli_rot_v4 a0;
-  shli_rot_v4 a1;
-  shli_rot_v4 e3m;
-  shli_rot_v4 e2m;
-  shli_rot_v4 e1m;
-  shli_rot_v4 e0;
-  shli_rot_v4 e1;
-  shli_rot_v4 e2;
-  shli_rot_v4 e3;
-  shli_rot_v4 sg = {1.0, 1.0, -1.0, 0.0};
-  shli_rot_v4 px[2] = {{r00, r10, r20, r00 + r10 + r20}};
-  shli_rot_v4 py[2] = {{r01, r11, r21, r01 + r11 + r21}};
-  shli_rot_v4 pz[2] = {{r02, r12, r22, r02 + r12 + r22}};
-  shli_rot_v4 g[2];
-  shli_rot_v4 lo;
-  shli_rot_v4 hi;
-  shli_rot_v4 c;
-  int k;
-  memcpy(&f0, sh + 9, sizeof(f0));
-  memcpy(&f1, sh + 12, sizeof(f1));
-#if defined(__AVX__)
-  /* one conversion each (GCC splits __builtin_convertvector's into halves) */
-  a0 = (shli_rot_v4)_mm256_cvtps_pd((__m128)f0) * k0;
-  a1 = (shli_rot_v4)_mm256_cvtps_pd((__m128)f1) * k1;
-#else
-  a0 = __builtin_convertvector(f0, shli_rot_v4) * k0;
-  a1 = __builtin_convertvector(f1, shli_rot_v4) * k1;
-#endif
-  e3m = SHLI_ROT_SHUF(a0, a0, 0, 0, 0, 0);
-  e2m = SHLI_ROT_SHUF(a0, a0, 1, 1, 1, 1);
-  e1m = SHLI_ROT_SHUF(a0, a0, 2, 2, 2, 2);
-  e0 = SHLI_ROT_SHUF(a0, a0, 3, 3, 3, 3);
-  e1 = SHLI_ROT_SHUF(a1, a1, 1, 1, 1, 1);
-  e2 = SHLI_ROT_SHUF(a1, a1, 2, 2, 2, 2);
-  e3 = SHLI_ROT_SHUF(a1, a1, 3, 3, 3, 3);
-  px[1] = px[0] + sg * SHLI_ROT_SHUF(px[0], px[0], 1, 2, 0, 3);
-  py[1] = py[0] + sg * SHLI_ROT_SHUF(py[0], py[0], 1, 2, 0, 3);
-  pz[1] = pz[0] + sg * SHLI_ROT_SHUF(pz[0], pz[0], 1, 2, 0, 3);
-  SHLI_ROT_UNROLL
-  for (k = 0; k < 2; ++k) {
-    shli_rot_v4 xx = px[k] * px[k];
-    shli_rot_v4 yy = py[k] * py[k];
-    shli_rot_v4 zz = pz[k] * pz[k];
-    shli_rot_v4 s = xx + yy;
-    shli_rot_v4 q = s - 4.0 * zz;
-    g[k] = px[k] * (e1 * q + e3 * (3.0 * yy - xx)) + py[k] * (e1m * q + e3m * (yy - 3.0 * xx)) +
-           pz[k] * (e2 * (xx - yy) + e0 * (2.0 * zz - 3.0 * s) + e2m * (px[k] * py[k]));
-  }
-  SHLI_ROT_LD(lo, SHLI_ROT_B3W);
-  SHLI_ROT_LD(hi, SHLI_ROT_B3W + 4);
-  lo = lo * g[0][0];
-  hi = hi * g[0][0];
-  SHLI_ROT_UNROLL
-  for (k = 1; k < 7; ++k) {
-    double gk = k < 4 ? g[0][k] : g[1][k - 4];
-    SHLI_ROT_LD(c, SHLI_ROT_B3W + 8 * k);
-    lo = lo + c * gk;
-    if (k != 3) {
-      SHLI_ROT_LD(c, SHLI_ROT_B3W + 8 * k + 4);
-      hi = hi + c * gk;
-    }
-  }
-  {
-    shli_rot_f4 flo = __builtin_convertvector(lo, shli_rot_f4);
-    shli_rot_f4 fhi = __builtin_convertvector(hi, shli_rot_f4);
-    memcpy(out_sh + 9, &flo, sizeof(flo));
-    memcpy(out_sh + 13, &fhi, 2 * sizeof(float));
-    out_sh[15] = fhi[2];
-  }
-}
-
-#endif
-
 /* n in [1, 3]: bands 0..2 where R is a rotation (shli_rot_near), else the portable kernel */
 SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R[9],
                                                             const float *sh, float *out_sh) {
@@ -3325,13 +3190,6 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
     shli_sh_rotate_slow(n, R, sh, out_sh);
     return;
   }
-#if SHLI_ROT_B3
-  if (n == 4) {
-    shli_rot_b012(n, R, sh, out_sh);
-    shli_rot_b3(R, sh, out_sh);
-    return;
-  }
-#endif
   /* the zyz angles of bands 3.. (docs/rotation.md, method 1), before bands 1 and 2 */
   s2 = r02 * r02 + r12 * r12;
   fb = 1.5 - 0.5 * (r22 * r22 + s2);
