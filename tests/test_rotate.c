@@ -644,6 +644,32 @@ static void test_fast_accuracy(void) {
   }
 }
 
+/* n = 4 (the small-n path's bands 0..3) on 2000 random float-rounded rotations and the hard
+ * ones against the long-double reference (the 1.3e-7 the small-n path is held to), and against
+ * the portable kernel */
+static void test_fast_n4_random(void) {
+  double worst = 0.0, worst_p = 0.0;
+  int k;
+  for (k = 0; k < 2000 + NHARD; ++k) {
+    float R[9];
+    double e;
+    if (k < NHARD) {
+      axis_angle(HARD[k][0], HARD[k][1], HARD[k][2], HARD[k][3], R);
+    } else {
+      rand_R(R);
+    }
+    e = check_against_ref(4, R);
+    TL_CHECK(e <= 1.3e-7, "rotation %d: %g against the reference", k, e);
+    worst = e > worst ? e : worst;
+    e = fast_vs_portable(4, R);
+    TL_CHECK(e <= 2e-7, "rotation %d: fast vs portable %g", k, e);
+    worst_p = e > worst_p ? e : worst_p;
+  }
+  printf("  n = 4: worst band error %.3g against the reference, %.3g "
+         "against the portable kernel (%d rotations)\n",
+         worst, worst_p, 2000 + NHARD);
+}
+
 /* R a rotation scaled by 1 + d: d = 2e-7 (within 1e-6 of a rotation: taken as given, the
  * result within 1e-6 of the rotation's, also against the reference), d = 1e-5 and 1e-3 (not:
  * the portable kernel's result to the bit); a rotation with one entry moved by 1e-4: the
@@ -692,6 +718,7 @@ int main(void) {
   TL_RUN(test_fast_bad_matrices);
   TL_RUN(test_fast_near_rotation);
   TL_RUN(test_fast_accuracy);
+  TL_RUN(test_fast_n4_random);
   TL_RUN(test_agrees_rotate_z);
   TL_RUN(test_delta_direction);
   TL_RUN(test_band_energy);
