@@ -1246,14 +1246,14 @@ typedef double shli_real;
 #define SHLIGHT_UNUSED(x) ((void)(x))
 /* 1 (GLSL): zeroing an output array by constant-trip per-band code, which shader compilers keep
    in registers; 0 (C): the plain loop */
-#ifndef SHLIGHT_BY_BANDS /* 1 in a C build: the GLSL shapes (tests/bands_impl.c holds them to C)   \
+#ifndef SHLIGHT_BY_BANDS /* 1 in a C build: the GLSL shapes (tests/bands_impl.c holds them to C) \
                           */
 #define SHLIGHT_BY_BANDS 0
 #endif
 /* 1 (GLSL): per-coefficient sums over several arrays as one flat run-time loop, which shader
    compilers do not unroll into huge bodies; 0 (C): nested loops (the same sums, same order) */
 #define SHLIGHT_FLAT_LOOPS 0
-#define SHLIGHT_SET3(o, a, b, c)                                                                   \
+#define SHLIGHT_SET3(o, a, b, c) \
   ((o)[0] = (a), (o)[1] = (b), (o)[2] = (c))         /* GLSL: o = vec3(a, b, c) */
 #define SHLIGHT_SIGN1(x) ((float)copysign(1.0, (x))) /* +-1 with the sign bit of x, branch-free */
 #define SHLIGHT_FTOI(x) ((int)(x))                   /* truncation toward zero, as GLSL int() */
@@ -1285,7 +1285,7 @@ typedef double shli_real;
 #define SHLIGHT_EDGE_STOKES_ADAPT 105 /* internal: EXACT's adaptive Stokes rule */
 #define SHLIGHT_ADAPT_LEVELS 7        /* its most halvings (128 panels of 5 nodes per half-arc) */
 #define SHLIGHT_ADAPT_TOL 1.0e-9      /* its stop: two successive levels this close (GLSL 2e-6) */
-#define SHLIGHT_EDGE_FAST_ON                                                                       \
+#define SHLIGHT_EDGE_FAST_ON \
   1                     /* GLSL: 0 unless the host defines it (compile cost, docs/accuracy.md) */
 #define SHLIGHT_LANES 8 /* edges per block of the FAST edge loop (GLSL: 1) */
 #define SHLIGHT_FAST_PAD (SHLIGHT_CLIP_MAX + SHLIGHT_LANES)
@@ -1299,7 +1299,7 @@ typedef double shli_real;
 #define SHLIGHT_GGX_DEPTH 8
 #define SHLIGHT_GGX_HOR 4.0
 #define SHLIGHT_GGX_KAP 3.0
-#define SHLIGHT_HALF_K                                                                             \
+#define SHLIGHT_HALF_K \
   8 /* sub-edges per light edge in half-vector space (shl_polygon_blinn_phong) */
 
 /* >>basis -----------------------------------------------------------------------------------
@@ -1325,8 +1325,8 @@ SHLIGHT_INLINE int shli_bands(int n) {
    sections read the table as SHLI_NAME through a #define; >>generated defines the accessor
    after the table (SHLI_TAB_FN). */
 #define SHLI_TAB_FN(name) SHLIGHT_CPU_INLINE const shli_tab_##name##_t *shli_tab_##name(void)
-#define SHLI_TAB_DECL(T, name, N)                                                                  \
-  typedef T shli_tab_##name##_t[N];                                                                \
+#define SHLI_TAB_DECL(T, name, N) \
+  typedef T shli_tab_##name##_t[N]; \
   SHLI_TAB_FN(name)
 
 /* @generated sh_tab: defined in >>generated at the end of the file */
@@ -1707,50 +1707,50 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16(int n, float x, float y, float z,
    the identity step; l + m, m - l + 1 from SHLI_SH_LANEK), then the cosines and the sines
    (descending m). xv, dd, cc, ss: named registers (arrays indexed by a run-time chunk number
    went to the stack, on the band chain). */
-#define SHLI_SH_CHUNK512(h, xv, dd, cc, ss)                                                        \
-  do {                                                                                             \
-    __mmask16 mk = (__mmask16) ~((__mmask64)0xFFFF << (l - 16 * (h)));                             \
-    __m512 gq = _mm512_maskz_loadu_ps(mk, lq + 16 * (h)), ys;                                      \
-    __m512 at = _mm512_mul_ps(gq, wt);                                                             \
-    __m512 cn = _mm512_mul_ps(gq, _mm512_loadu_ps(SHLI_SH_LANEK + 64 + 16 * (h)-l));               \
-    __m512 gg =                                                                                    \
-        _mm512_mask_mul_ps(one, mk, gq, _mm512_loadu_ps(SHLI_SH_LANEK + 63 + 16 * (h) + l));       \
-    int top = l < 16 * (h) + 15 ? l : 16 * (h) + 15; /* largest order of the chunk in band l */    \
-    int lo = (h) > 0 ? 16 * (h) : 1;                 /* smallest sine order of the chunk */        \
-    dd = _mm512_fnmsub_ps(at, xv, _mm512_mul_ps(cn, dd)); /* D = c D - alpha t X, cn = -c */       \
-    xv = _mm512_fmadd_ps(gg, xv, dd);                                                              \
-    ys = _mm512_permutexvar_ps(                                                                    \
-        _mm512_loadu_si512((const void *)(SHLI_SH_LANER + 15 - (top - 16 * (h)))),                 \
-        _mm512_mul_ps(xv, ss));                                                                    \
-    _mm512_mask_storeu_ps(out_y + l * l + l - top, (__mmask16)((2u << (top - lo)) - 1u), ys);      \
-    _mm512_mask_storeu_ps(out_y + l * l + l + 16 * (h),                                            \
-                          (__mmask16)((2u << (top - 16 * (h))) - 1u), _mm512_mul_ps(xv, cc));      \
+#define SHLI_SH_CHUNK512(h, xv, dd, cc, ss) \
+  do { \
+    __mmask16 mk = (__mmask16) ~((__mmask64)0xFFFF << (l - 16 * (h))); \
+    __m512 gq = _mm512_maskz_loadu_ps(mk, lq + 16 * (h)), ys; \
+    __m512 at = _mm512_mul_ps(gq, wt); \
+    __m512 cn = _mm512_mul_ps(gq, _mm512_loadu_ps(SHLI_SH_LANEK + 64 + 16 * (h)-l)); \
+    __m512 gg = \
+        _mm512_mask_mul_ps(one, mk, gq, _mm512_loadu_ps(SHLI_SH_LANEK + 63 + 16 * (h) + l)); \
+    int top = l < 16 * (h) + 15 ? l : 16 * (h) + 15; /* largest order of the chunk in band l */ \
+    int lo = (h) > 0 ? 16 * (h) : 1;                 /* smallest sine order of the chunk */ \
+    dd = _mm512_fnmsub_ps(at, xv, _mm512_mul_ps(cn, dd)); /* D = c D - alpha t X, cn = -c */ \
+    xv = _mm512_fmadd_ps(gg, xv, dd); \
+    ys = _mm512_permutexvar_ps( \
+        _mm512_loadu_si512((const void *)(SHLI_SH_LANER + 15 - (top - 16 * (h)))), \
+        _mm512_mul_ps(xv, ss)); \
+    _mm512_mask_storeu_ps(out_y + l * l + l - top, (__mmask16)((2u << (top - lo)) - 1u), ys); \
+    _mm512_mask_storeu_ps(out_y + l * l + l + 16 * (h), \
+                          (__mmask16)((2u << (top - 16 * (h))) - 1u), _mm512_mul_ps(xv, cc)); \
   } while (0)
 /* band l (then l + 1) in the chunks 0 .. nk - 1; P: the parity's order lanes, c or co */
-#define SHLI_SH_BAND512(nk, P)                                                                     \
-  do {                                                                                             \
-    const float *lq = SHLI_SH_LANEQ + (l * (l - 1)) / 2;                                           \
-    __m512 wt = _mm512_mul_ps(_mm512_set1_ps((float)(2 * l - 1)), vt);                             \
-    SHLI_SH_CHUNK512(0, x0, d0, P##0, P##s0);                                                      \
-    if ((nk) > 1) {                                                                                \
-      SHLI_SH_CHUNK512(1, x1, d1, P##1, P##s1);                                                    \
-    }                                                                                              \
-    if ((nk) > 2) {                                                                                \
-      SHLI_SH_CHUNK512(2, x2, d2, P##2, P##s2);                                                    \
-    }                                                                                              \
-    if ((nk) > 3) {                                                                                \
-      SHLI_SH_CHUNK512(3, x3, d3, P##3, P##s3);                                                    \
-    }                                                                                              \
-    ++l;                                                                                           \
+#define SHLI_SH_BAND512(nk, P) \
+  do { \
+    const float *lq = SHLI_SH_LANEQ + (l * (l - 1)) / 2; \
+    __m512 wt = _mm512_mul_ps(_mm512_set1_ps((float)(2 * l - 1)), vt); \
+    SHLI_SH_CHUNK512(0, x0, d0, P##0, P##s0); \
+    if ((nk) > 1) { \
+      SHLI_SH_CHUNK512(1, x1, d1, P##1, P##s1); \
+    } \
+    if ((nk) > 2) { \
+      SHLI_SH_CHUNK512(2, x2, d2, P##2, P##s2); \
+    } \
+    if ((nk) > 3) { \
+      SHLI_SH_CHUNK512(3, x3, d3, P##3, P##s3); \
+    } \
+    ++l; \
   } while (0)
 /* bands up to e (exclusive) with nk chunks, two a trip (even, odd) from an even l */
-#define SHLI_SH_BANDS512(nk, end)                                                                  \
-  for (; l + 1 < (end);) {                                                                         \
-    SHLI_SH_BAND512(nk, e);                                                                        \
-    SHLI_SH_BAND512(nk, o);                                                                        \
-  }                                                                                                \
-  if (l < (end)) {                                                                                 \
-    SHLI_SH_BAND512(nk, e);                                                                        \
+#define SHLI_SH_BANDS512(nk, end) \
+  for (; l + 1 < (end);) { \
+    SHLI_SH_BAND512(nk, e); \
+    SHLI_SH_BAND512(nk, o); \
+  } \
+  if (l < (end)) { \
+    SHLI_SH_BAND512(nk, e); \
   }
 SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, float *out_y) {
   static const unsigned short bits[4] = {0xAAAA, 0xCCCC, 0xF0F0, 0xFF00};
@@ -1861,44 +1861,44 @@ SHLI_TAB_DECL(float, gradv_coef, 1760);
    (P = a_l Y_{l-1}, Y = band l, both band order; w lane j = the per-band vector's component
    (16 c + j) % 3). The taps are SHLI_GRADV_TAP plus ly = 2l on the y lanes (one vector per
    c % 3), so only the coefficients are per band. */
-#define SHLI_GRADV_TAPS(c, t, ly)                                                                  \
+#define SHLI_GRADV_TAPS(c, t, ly) \
   _mm512_add_epi32(_mm512_loadu_si512((const void *)(SHLI_GRADV_TAP + 32 * (c) + 16 * (t))), (ly))
 /* bands 1..7: P (<= 13 lanes) and Y (<= 15 lanes) in one zmm each */
-#define SHLI_GRADV_CHUNK1(c, w, ly)                                                                \
-  r = _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c)),                                              \
-                      _mm512_permutexvar_ps(SHLI_GRADV_TAPS(c, 0, ly), p0),                        \
-                      _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c) + 16),                         \
-                                      _mm512_permutexvar_ps(SHLI_GRADV_TAPS(c, 1, ly), p0),        \
+#define SHLI_GRADV_CHUNK1(c, w, ly) \
+  r = _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c)), \
+                      _mm512_permutexvar_ps(SHLI_GRADV_TAPS(c, 0, ly), p0), \
+                      _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c) + 16), \
+                                      _mm512_permutexvar_ps(SHLI_GRADV_TAPS(c, 1, ly), p0), \
                                       _mm512_mul_ps(_mm512_permutexvar_ps(iy##c, q0), (w))))
 /* bands 8..15: two zmm each */
-#define SHLI_GRADV_CHUNK2(c, w, ly)                                                                \
-  r = _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c)),                                              \
-                      _mm512_permutex2var_ps(p0, SHLI_GRADV_TAPS(c, 0, ly), p1),                   \
-                      _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c) + 16),                         \
-                                      _mm512_permutex2var_ps(p0, SHLI_GRADV_TAPS(c, 1, ly), p1),   \
+#define SHLI_GRADV_CHUNK2(c, w, ly) \
+  r = _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c)), \
+                      _mm512_permutex2var_ps(p0, SHLI_GRADV_TAPS(c, 0, ly), p1), \
+                      _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c) + 16), \
+                                      _mm512_permutex2var_ps(p0, SHLI_GRADV_TAPS(c, 1, ly), p1), \
                                       _mm512_mul_ps(_mm512_permutex2var_ps(q0, iy##c, q1), (w))))
-#define SHLI_GRADV_STORE(c)                                                                        \
-  if (nc == (c) + 1) {                                                                             \
-    _mm512_mask_storeu_ps(ol + 16 * (c), SHLI_GRADV_MASK(SHLI_GRADV_LASTM + l), r);                \
-    break;                                                                                         \
-  }                                                                                                \
+#define SHLI_GRADV_STORE(c) \
+  if (nc == (c) + 1) { \
+    _mm512_mask_storeu_ps(ol + 16 * (c), SHLI_GRADV_MASK(SHLI_GRADV_LASTM + l), r); \
+    break; \
+  } \
   _mm512_storeu_ps(ol + 16 * (c), r)
 /* per band: w lanes for chunks c % 3 == 0, 1, 2 (b u + e v; vK lane j = v[(K + j) % 3]), and 2l
    on the y lanes */
-#define SHLI_GRADV_BAND(l, b, e)                                                                   \
-  w0 = _mm512_mul_ps(_mm512_set1_ps(b), u0);                                                       \
-  w1 = _mm512_mul_ps(_mm512_set1_ps(b), u1);                                                       \
-  w2 = _mm512_mul_ps(_mm512_set1_ps(b), u2);                                                       \
-  if (v3) {                                                                                        \
-    w0 = _mm512_fmadd_ps(_mm512_set1_ps(e), s0, w0);                                               \
-    w1 = _mm512_fmadd_ps(_mm512_set1_ps(e), s1, w1);                                               \
-    w2 = _mm512_fmadd_ps(_mm512_set1_ps(e), s2, w2);                                               \
-  }                                                                                                \
-  ly0 = _mm512_maskz_set1_epi32((__mmask16)0x2492, 2 * (l));                                       \
-  ly1 = _mm512_maskz_set1_epi32((__mmask16)0x9249, 2 * (l));                                       \
+#define SHLI_GRADV_BAND(l, b, e) \
+  w0 = _mm512_mul_ps(_mm512_set1_ps(b), u0); \
+  w1 = _mm512_mul_ps(_mm512_set1_ps(b), u1); \
+  w2 = _mm512_mul_ps(_mm512_set1_ps(b), u2); \
+  if (v3) { \
+    w0 = _mm512_fmadd_ps(_mm512_set1_ps(e), s0, w0); \
+    w1 = _mm512_fmadd_ps(_mm512_set1_ps(e), s1, w1); \
+    w2 = _mm512_fmadd_ps(_mm512_set1_ps(e), s2, w2); \
+  } \
+  ly0 = _mm512_maskz_set1_epi32((__mmask16)0x2492, 2 * (l)); \
+  ly1 = _mm512_maskz_set1_epi32((__mmask16)0x9249, 2 * (l)); \
   ly2 = _mm512_maskz_set1_epi32((__mmask16)0x4924, 2 * (l))
 /* lane j = (a, b, c)[j % 3] */
-#define SHLI_GRADV_AOS(a, b, c)                                                                    \
+#define SHLI_GRADV_AOS(a, b, c) \
   _mm512_mask_blend_ps((__mmask16)0x4924, _mm512_mask_blend_ps((__mmask16)0x2492, (a), (b)), (c))
 
 /* AVX-512 gradient pass for 1..16 bands (C only), with optional per-band weights: from Y (y,
@@ -2902,7 +2902,7 @@ static const double SHLI_ROT_X90[320] = {
 #define SHLI_ROT_SCALAR
 #endif
 /* the input group of output group g (0 A, 1 C, 2 D, 3 B) and its lanes k0 .. k1 - 1 */
-#define SHLI_ROT_SRC(l, g)                                                                         \
+#define SHLI_ROT_SRC(l, g) \
   ((l) % 2 == 0 ? ((g) == 1 ? 2 : ((g) == 2 ? 1 : (g))) : ((g) == 0 ? 3 : ((g) == 3 ? 0 : (g))))
 #define SHLI_ROT_K0(src) ((src) == 2 ? 1 : 0)
 #define SHLI_ROT_K1(l, src) ((src) == 0 || (src) == 2 ? (l) / 2 + 1 : ((l) + 1) / 2)
@@ -2912,28 +2912,28 @@ typedef __INT64_TYPE__ shli_rot_i4 __attribute__((vector_size(32)));
 #if defined(__clang__)
 #define SHLI_ROT_SHUF(a, b, i, j, k, m) __builtin_shufflevector(a, b, i, j, k, m)
 #else
-#define SHLI_ROT_SHUF(a, b, i, j, k, m)                                                            \
+#define SHLI_ROT_SHUF(a, b, i, j, k, m) \
   __builtin_shuffle(a, b, __extension__(shli_rot_i4){i, j, k, m})
 #endif
 #define SHLI_ROT_LD(v, p) memcpy(&(v), (p), sizeof(v))
 
 /* X(+90) for output group g of band l (a literal): from the z-rotated groups w0..w3 (A, C, D,
    B) into out (named variables, not arrays, which GCC keeps in registers) */
-#define SHLI_ROT_X(l, g, out)                                                                      \
-  do {                                                                                             \
-    int src_ = SHLI_ROT_SRC(l, g);                                                                 \
-    int k_;                                                                                        \
-    shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3));                   \
-    shli_rot_v4 c_;                                                                                \
-    SHLI_ROT_LD(c_, t + 16 * (g) + SHLI_ROT_K0(src_) * 4);                                         \
-    out = c_ * ws_[SHLI_ROT_K0(src_)];                                                             \
-    SHLI_ROT_UNROLL                                                                                \
-    for (k_ = 0; k_ < 4; ++k_) {                                                                   \
-      if (k_ > SHLI_ROT_K0(src_) && k_ < SHLI_ROT_K1(l, src_)) {                                   \
-        SHLI_ROT_LD(c_, t + 16 * (g) + k_ * 4);                                                    \
-        out = out + c_ * ws_[k_];                                                                  \
-      }                                                                                            \
-    }                                                                                              \
+#define SHLI_ROT_X(l, g, out) \
+  do { \
+    int src_ = SHLI_ROT_SRC(l, g); \
+    int k_; \
+    shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3)); \
+    shli_rot_v4 c_; \
+    SHLI_ROT_LD(c_, t + 16 * (g) + SHLI_ROT_K0(src_) * 4); \
+    out = c_ * ws_[SHLI_ROT_K0(src_)]; \
+    SHLI_ROT_UNROLL \
+    for (k_ = 0; k_ < 4; ++k_) { \
+      if (k_ > SHLI_ROT_K0(src_) && k_ < SHLI_ROT_K1(l, src_)) { \
+        SHLI_ROT_LD(c_, t + 16 * (g) + k_ * 4); \
+        out = out + c_ * ws_[k_]; \
+      } \
+    } \
   } while (0)
 
 /* band l (3 <= l < SHLI_ROT_FAST_BANDS) of sh rotated into out_sh; tv[4 q + j]: cos, sin of the
@@ -8118,14 +8118,14 @@ SHLIGHT_INLINE float shl_polygon_beckmann_subedges(const float (*v)[3], int nv, 
 
 /* the fan pieces of the polygon functions above SHLIGHT_POLYGON_MAX vertices (C only; see the
    start of >>edge) */
-#define SHLIGHT_FAN_SUM_(call)                                                                     \
-  shli_fan f;                                                                                      \
-  shli_fan_begin(&f, v, nv);                                                                       \
-  while (shli_fan_next(&f, v, nv)) {                                                               \
-    if (f.sg != 0) {                                                                               \
-      f.sum = f.sum + (double)f.sg * (double)(call);                                               \
-    }                                                                                              \
-  }                                                                                                \
+#define SHLIGHT_FAN_SUM_(call) \
+  shli_fan f; \
+  shli_fan_begin(&f, v, nv); \
+  while (shli_fan_next(&f, v, nv)) { \
+    if (f.sg != 0) { \
+      f.sum = f.sum + (double)f.sg * (double)(call); \
+    } \
+  } \
   return shli_fan_end(&f)
 #define SHLIGHT_FAN_P_ ((const float(*)[3])f.p)
 SHLIGHT_CPU_INLINE float shli_fan_moment(const float (*v)[3], int nv, const float axis[3],
@@ -9527,23 +9527,23 @@ typedef __m512 SHLI_V;
    ports (bench: 8 FMA + 8 stores take 23 cycles, 8 multiplies + 8 stores 17), and the batch
    kernels of 7..16 bands are store-heavy, so there products and sums stay separate */
 #define SHLI_VMULS(a, b) _mm512_mul_round_ps((a), (b), _MM_FROUND_CUR_DIRECTION)
-#define SHLI_VMADDS(a, b, c)                                                                       \
+#define SHLI_VMADDS(a, b, c) \
   _mm512_add_round_ps(SHLI_VMULS((a), (b)), (c), _MM_FROUND_CUR_DIRECTION)
-#define SHLI_VFMS2(a, b, c, d)                                                                     \
+#define SHLI_VFMS2(a, b, c, d) \
   _mm512_sub_round_ps(SHLI_VMULS((a), (b)), SHLI_VMULS((c), (d)), _MM_FROUND_CUR_DIRECTION)
-#define SHLI_VFMA2(a, b, c, d)                                                                     \
+#define SHLI_VFMA2(a, b, c, d) \
   _mm512_add_round_ps(SHLI_VMULS((a), (b)), SHLI_VMULS((c), (d)), _MM_FROUND_CUR_DIRECTION)
 /* SHLI_VSGN(a): the sign of a in a form that SHLI_VFLIP(v, s) applies to v (v times sign(a),
    bit-exact): the sign bit and a XOR on the SIMD paths, which leaves the multiply pipes free */
-#define SHLI_VSGN(a)                                                                               \
+#define SHLI_VSGN(a) \
   _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(a), _mm512_set1_epi32((int)0x80000000u)))
-#define SHLI_VFLIP(v, s)                                                                           \
+#define SHLI_VFLIP(v, s) \
   _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(v), _mm512_castps_si512(s)))
-#define SHLI_VABS(a)                                                                               \
+#define SHLI_VABS(a) \
   _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(a), _mm512_set1_epi32(0x7fffffff)))
-#define SHLI_VSIGN1(a)                                                                             \
-  _mm512_castsi512_ps(_mm512_or_si512(                                                             \
-      _mm512_and_si512(_mm512_castps_si512(a), _mm512_set1_epi32((int)0x80000000u)),               \
+#define SHLI_VSIGN1(a) \
+  _mm512_castsi512_ps(_mm512_or_si512( \
+      _mm512_and_si512(_mm512_castps_si512(a), _mm512_set1_epi32((int)0x80000000u)), \
       _mm512_castps_si512(_mm512_set1_ps(1.0f))))
 #elif !defined(SHLIGHT_NO_SIMD) && defined(__AVX2__) && defined(__FMA__)
 #include <immintrin.h>
@@ -9645,12 +9645,12 @@ SHLI_TAB_DECL(float, sh_bpoly, 63);
 #define SHLI_UNROLL_BATCH
 #define SHLI_BATCH_INLINE SHLIGHT_CPU_INLINE
 #endif
-#define SHLI_BSTORE(p, e)                                                                          \
-  do {                                                                                             \
-    if (nt)                                                                                        \
-      SHLI_VSTREAM((p), (e));                                                                      \
-    else                                                                                           \
-      SHLI_VSTORE((p), (e));                                                                       \
+#define SHLI_BSTORE(p, e) \
+  do { \
+    if (nt) \
+      SHLI_VSTREAM((p), (e)); \
+    else \
+      SHLI_VSTORE((p), (e)); \
   } while (0)
 SHLI_BATCH_INLINE void shli_sh_batch_poly(int n, int nv, int nt, const float *px, const float *py,
                                           const float *pz, float *out, ptrdiff_t stride) {
@@ -9708,28 +9708,28 @@ SHLI_BATCH_INLINE void shli_sh_batch_poly(int n, int nv, int nt, const float *px
    the decode-bound kernel needs): the loop below with every band of every column spelled out */
 #define SHLI_BSTOREI(i, v, e) SHLI_VSTORE(out + (ptrdiff_t)(i)*stride + (v)*SHLI_W, (e))
 /* one Reinsch step (band l, column m) of vector v: from the state xa, dd of band l - 1 */
-#define SHLI_BSTEPU(l, m, v, xa, dd)                                                               \
-  do {                                                                                             \
-    const float *c_ = SHLI_SH_BRS + 16 + 3 * (((l) * ((l)-1)) / 2 + (m));                          \
-    if ((l) == (m) + 1) {                                                                          \
-      (dd) = SHLI_VMULS(SHLI_VSET(c_[0]), t[v]);                                                   \
-      (xa) = SHLI_VADD(SHLI_VSET(c_[1]), (dd));                                                    \
-    } else {                                                                                       \
-      SHLI_V a_ = SHLI_VMULS(SHLI_VSET(c_[0]), t[v]);                                              \
-      (dd) = SHLI_VNMADD(a_, (xa), SHLI_VMULS(SHLI_VSET(c_[2]), (dd)));                            \
-      (xa) = SHLI_VMADDS(SHLI_VSET(c_[1]), (xa), (dd));                                            \
-    }                                                                                              \
+#define SHLI_BSTEPU(l, m, v, xa, dd) \
+  do { \
+    const float *c_ = SHLI_SH_BRS + 16 + 3 * (((l) * ((l)-1)) / 2 + (m)); \
+    if ((l) == (m) + 1) { \
+      (dd) = SHLI_VMULS(SHLI_VSET(c_[0]), t[v]); \
+      (xa) = SHLI_VADD(SHLI_VSET(c_[1]), (dd)); \
+    } else { \
+      SHLI_V a_ = SHLI_VMULS(SHLI_VSET(c_[0]), t[v]); \
+      (dd) = SHLI_VNMADD(a_, (xa), SHLI_VMULS(SHLI_VSET(c_[2]), (dd))); \
+      (xa) = SHLI_VMADDS(SHLI_VSET(c_[1]), (xa), (dd)); \
+    } \
   } while (0)
 /* the column-0 steps due before unit u of the other columns */
-#define SHLI_COL0()                                                                                \
-  while (s0 < n - 1 && s0 * nu < (n - 1) * u) {                                                    \
-    ++s0;                                                                                          \
-    SHLI_UNROLL_BATCH                                                                              \
-    for (v = 0; v < nv; ++v)                                                                       \
-      SHLI_BSTEPU(s0, 0, v, x0[v], d0[v]);                                                         \
-    SHLI_UNROLL_BATCH                                                                              \
-    for (v = 0; v < nv; ++v)                                                                       \
-      SHLI_BSTOREI(s0 *(s0 + 1), v, (s0 & 1) ? SHLI_VFLIP(x0[v], sg[v]) : x0[v]);                  \
+#define SHLI_COL0() \
+  while (s0 < n - 1 && s0 * nu < (n - 1) * u) { \
+    ++s0; \
+    SHLI_UNROLL_BATCH \
+    for (v = 0; v < nv; ++v) \
+      SHLI_BSTEPU(s0, 0, v, x0[v], d0[v]); \
+    SHLI_UNROLL_BATCH \
+    for (v = 0; v < nv; ++v) \
+      SHLI_BSTOREI(s0 *(s0 + 1), v, (s0 & 1) ? SHLI_VFLIP(x0[v], sg[v]) : x0[v]); \
   }
 SHLI_BATCH_INLINE void shli_sh_batch_rsu(int n, int nv, const float *px, const float *py,
                                          const float *pz, float *out, ptrdiff_t stride) {
@@ -9801,27 +9801,27 @@ SHLI_BATCH_INLINE void shli_sh_batch_rsu(int n, int nv, const float *px, const f
 #undef SHLI_BSTOREI
 /* one Reinsch step of every vector: X~, D~ of the previous band to this one's (constants c),
    D = c D - (alpha t) X with alpha t off the chain: two FMA latencies a band, not four */
-#define SHLI_BSTEP(c, xa, dd)                                                                      \
-  do {                                                                                             \
-    SHLI_UNROLL_BATCH                                                                              \
-    for (v = 0; v < nv; ++v) {                                                                     \
-      SHLI_V a_ = SHLI_VMULS(SHLI_VSET((c)[0]), t[v]);                                             \
-      (dd)[v] = SHLI_VNMADD(a_, (xa)[v], SHLI_VMULS(SHLI_VSET((c)[2]), (dd)[v]));                  \
-      (xa)[v] = SHLI_VMADDS(SHLI_VSET((c)[1]), (xa)[v], (dd)[v]);                                  \
-    }                                                                                              \
+#define SHLI_BSTEP(c, xa, dd) \
+  do { \
+    SHLI_UNROLL_BATCH \
+    for (v = 0; v < nv; ++v) { \
+      SHLI_V a_ = SHLI_VMULS(SHLI_VSET((c)[0]), t[v]); \
+      (dd)[v] = SHLI_VNMADD(a_, (xa)[v], SHLI_VMULS(SHLI_VSET((c)[2]), (dd)[v])); \
+      (xa)[v] = SHLI_VMADDS(SHLI_VSET((c)[1]), (xa)[v], (dd)[v]); \
+    } \
   } while (0)
 /* rows l (l + 1) + m (at po) and - m (at pq) of band l, then po, pq to band l + 1 */
-#define SHLI_BROWS(cu, su)                                                                         \
-  do {                                                                                             \
-    SHLI_UNROLL_BATCH                                                                              \
-    for (v = 0; v < nv; ++v)                                                                       \
-      SHLI_BSTORE(po + v * SHLI_W, SHLI_VMULS(xa[v], (cu)[v]));                                    \
-    SHLI_UNROLL_BATCH                                                                              \
-    for (v = 0; v < nv; ++v)                                                                       \
-      SHLI_BSTORE(pq + v * SHLI_W, SHLI_VMULS(xa[v], (su)[v]));                                    \
-    po += dl;                                                                                      \
-    pq += dl;                                                                                      \
-    dl += 2 * stride;                                                                              \
+#define SHLI_BROWS(cu, su) \
+  do { \
+    SHLI_UNROLL_BATCH \
+    for (v = 0; v < nv; ++v) \
+      SHLI_BSTORE(po + v * SHLI_W, SHLI_VMULS(xa[v], (cu)[v])); \
+    SHLI_UNROLL_BATCH \
+    for (v = 0; v < nv; ++v) \
+      SHLI_BSTORE(pq + v * SHLI_W, SHLI_VMULS(xa[v], (su)[v])); \
+    po += dl; \
+    pq += dl; \
+    dl += 2 * stride; \
   } while (0)
 SHLI_BATCH_INLINE void shli_sh_batch_rs(int n, int nv, int nt, const float *px, const float *py,
                                         const float *pz, float *out, ptrdiff_t stride) {
@@ -9906,18 +9906,18 @@ SHLI_BATCH_INLINE void shli_sh_batch_rs(int n, int nv, int nt, const float *px, 
 #undef SHLI_BSTORE
 typedef void (*shli_sh_batch_fn)(const float *, const float *, const float *, float *, ptrdiff_t);
 /* [0]: one vector, [1]: two, [2]: two with streaming stores */
-#define SHLI_SH_BATCH_N(N)                                                                         \
-  static void shli_sh_batch1_##N(const float *x, const float *y, const float *z, float *out,       \
-                                 ptrdiff_t stride) {                                               \
-    shli_sh_batch_poly((N), 1, 0, x, y, z, out, stride);                                           \
-  }                                                                                                \
-  static void shli_sh_batch2_##N(const float *x, const float *y, const float *z, float *out,       \
-                                 ptrdiff_t stride) {                                               \
-    shli_sh_batch_poly((N), 2, 0, x, y, z, out, stride);                                           \
-  }                                                                                                \
-  static void shli_sh_batch2s_##N(const float *x, const float *y, const float *z, float *out,      \
-                                  ptrdiff_t stride) {                                              \
-    shli_sh_batch_poly((N), 2, 1, x, y, z, out, stride);                                           \
+#define SHLI_SH_BATCH_N(N) \
+  static void shli_sh_batch1_##N(const float *x, const float *y, const float *z, float *out, \
+                                 ptrdiff_t stride) { \
+    shli_sh_batch_poly((N), 1, 0, x, y, z, out, stride); \
+  } \
+  static void shli_sh_batch2_##N(const float *x, const float *y, const float *z, float *out, \
+                                 ptrdiff_t stride) { \
+    shli_sh_batch_poly((N), 2, 0, x, y, z, out, stride); \
+  } \
+  static void shli_sh_batch2s_##N(const float *x, const float *y, const float *z, float *out, \
+                                  ptrdiff_t stride) { \
+    shli_sh_batch_poly((N), 2, 1, x, y, z, out, stride); \
   }
 SHLI_SH_BATCH_N(1)
 SHLI_SH_BATCH_N(2)
@@ -9944,24 +9944,24 @@ static void shli_sh_batch_rs2(int n, const float *x, const float *y, const float
                               ptrdiff_t stride) {
   shli_sh_batch_rs(n, 2, 0, x, y, z, out, stride);
 }
-#define SHLI_SH_BATCH_N(N)                                                                         \
-  static void shli_sh_batch1_##N(const float *x, const float *y, const float *z, float *out,       \
-                                 ptrdiff_t stride) {                                               \
-    shli_sh_batch_rs1((N), x, y, z, out, stride);                                                  \
-  }                                                                                                \
-  static void shli_sh_batch2_##N(const float *x, const float *y, const float *z, float *out,       \
-                                 ptrdiff_t stride) {                                               \
-    shli_sh_batch_rs2((N), x, y, z, out, stride);                                                  \
+#define SHLI_SH_BATCH_N(N) \
+  static void shli_sh_batch1_##N(const float *x, const float *y, const float *z, float *out, \
+                                 ptrdiff_t stride) { \
+    shli_sh_batch_rs1((N), x, y, z, out, stride); \
+  } \
+  static void shli_sh_batch2_##N(const float *x, const float *y, const float *z, float *out, \
+                                 ptrdiff_t stride) { \
+    shli_sh_batch_rs2((N), x, y, z, out, stride); \
   }
 #else
-#define SHLI_SH_BATCH_N(N)                                                                         \
-  static void shli_sh_batch1_##N(const float *x, const float *y, const float *z, float *out,       \
-                                 ptrdiff_t stride) {                                               \
-    shli_sh_batch_rsu((N), 1, x, y, z, out, stride);                                               \
-  }                                                                                                \
-  static void shli_sh_batch2_##N(const float *x, const float *y, const float *z, float *out,       \
-                                 ptrdiff_t stride) {                                               \
-    shli_sh_batch_rsu((N), 2, x, y, z, out, stride);                                               \
+#define SHLI_SH_BATCH_N(N) \
+  static void shli_sh_batch1_##N(const float *x, const float *y, const float *z, float *out, \
+                                 ptrdiff_t stride) { \
+    shli_sh_batch_rsu((N), 1, x, y, z, out, stride); \
+  } \
+  static void shli_sh_batch2_##N(const float *x, const float *y, const float *z, float *out, \
+                                 ptrdiff_t stride) { \
+    shli_sh_batch_rsu((N), 2, x, y, z, out, stride); \
   }
 #endif
 SHLI_SH_BATCH_N(7)
@@ -14238,11 +14238,11 @@ SHLI_TAB_FN(gradv_coef) {
 
 /* @generated begin gradient */
 /* output i of shli_sh_grad_lines from its terms in band l-1 (a: x, b: y, c: z) */
-#define SHLI_G3(i, a, b, c)                                                                        \
-  q = lr * y[i];                                                                                   \
+#define SHLI_G3(i, a, b, c) \
+  q = lr * y[i]; \
   SHLIGHT_SET3(out_grad[i], (a - q * nx) * ib, (b - q * ny) * ib, (c - q * nz) * ib)
-#define SHLI_G2(i, a, b)                                                                           \
-  q = lr * y[i];                                                                                   \
+#define SHLI_G2(i, a, b) \
+  q = lr * y[i]; \
   SHLIGHT_SET3(out_grad[i], (a - q * nx) * ib, (b - q * ny) * ib, -q * nz * ib)
 SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, float ny, float nz,
                                            float ir, float ib, float (*out_grad)[3]) {
