@@ -1319,11 +1319,9 @@ SHLIGHT_INLINE int shli_bands(int n) {
   return n;
 }
 
-/* The tables of >>generated are read through accessors (a C++ static const array cannot be
-   declared before its definition): SHLI_TAB_DECL(T, name, N) declares shli_tab_name(), which
-   returns a pointer to the whole T[N] table (after inlining, the same array access), and the
-   sections read the table as SHLI_NAME through a #define; >>generated defines the accessor
-   after the table (SHLI_TAB_FN). */
+/* Tables of >>generated are read through accessors: SHLI_TAB_DECL(T, name, N) declares
+   shli_tab_name() (a pointer to the whole T[N]), SHLI_NAME #defines read it, SHLI_TAB_FN defines it
+   after the table. (docs/derivations.md sec. 13.1) */
 #define SHLI_TAB_FN(name) SHLIGHT_CPU_INLINE const shli_tab_##name##_t *shli_tab_##name(void)
 #define SHLI_TAB_DECL(T, name, N) \
   typedef T shli_tab_##name##_t[N]; \
@@ -1442,13 +1440,9 @@ SHLIGHT_INLINE void shli_sh_poly_6(float x, float y, float z, float *out_y);
 SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t,
                                  float sg, float *out_y);
 
-/* Across-m SIMD core (C only, AVX-512): one 16-lane register holds X_l^m of every order m of
-   band l, so a band costs one Reinsch step (4 vector ops) and its outputs two multiplies, one
-   lane reversal and two masked stores. Float lanes: the Reinsch form keeps the float error
-   within the stated targets (docs/accuracy.md, tests/test_basis); the scalar kernel (double) stays
-   the reference and SHLIGHT_NO_SIMD selects it. Used by shl_sh_eval for 7 <= n <= 64 (n <= 16: the
-   rescaled step of SHLI_SH_LANES_S, 256-bit lanes with AVX-512VL), and the Horner forms across the
-   outputs for n = 4..6 (AVX-512VL). */
+/* Across-m SIMD core (C only, AVX-512): one 16-lane register holds X_l^m of every order m of band
+   l; float lanes, SHLIGHT_NO_SIMD selects the double scalar kernel.
+   (docs/derivations.md sec. 13.2) */
 #if !defined(SHLIGHT_NO_SIMD) && defined(__AVX512F__)
 #define SHLIGHT_SIMD_EVAL 1
 #include <immintrin.h>
@@ -1471,13 +1465,8 @@ SHLI_TAB_DECL(int, sh_podd, 5);
 #define SHLI_SH_PODD (*shli_tab_sh_podd())
 #endif
 #ifdef __AVX512VL__
-/* n = 4..6 (C only, AVX-512VL): the Horner forms of shli_sh_poly_<n> evaluated across the
-   outputs, lane i = output i, so that the n^2 results leave in ceil(n^2 / 8) 256-bit stores (a
-   float store per output bounds the scalar form at n^2 cycles on Zen 4): per vector two FMAs in
-   z^2, a multiply by z on the odd lanes and one by (x + iy)^|m| (a two-source permute of the
-   powers, lane m of c and s). Same coefficients and the same float input as shli_sh_poly_<n>.
-   256-bit vectors: on Zen 4 they issue on both FMA pipes and store in one cycle (bench: n = 6 at
-   0.37 of the loop, 0.47-0.48 with 512-bit vectors, 0.47-0.55 scalar). */
+/* n = 4..6 (C only, AVX-512VL): the Horner forms of shli_sh_poly_<n> across the outputs, lane i =
+   output i; same coefficients and input as shli_sh_poly_<n>. (docs/derivations.md sec. 13.3) */
 SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_poly(int n, float x, float y, float z, float *out_y) {
   __m256 vz = _mm256_set1_ps(z), z2 = _mm256_set1_ps(z * z), one = _mm256_set1_ps(1.0f);
   __m256 c = _mm256_mask_blend_ps((__mmask8)0xAA, one, _mm256_set1_ps(x));
@@ -1632,13 +1621,8 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16y(int n, float x, float y, float z
   }
 }
 
-/* The order lanes of the 512-bit across-m cores for n <= 16 bands at (x, y, z), |d| ~ 1:
-   lv[0] + i lv[1] has (x + iy)^m in lane m (from the raw x, y, as the product of
-   (x + iy)^(2^b) over the set bits b of m), renormalised by |d|^-m = 1 + m dl (to O(e^2),
-   e = |d|^2 - 1 formed without cancellation near the poles; one lane vector off the chain of
-   powers) and times sg^m (parity: X_l^m(z) = sg^(l-m) X_l^m(|z|)); lv[2] + i lv[3] the same
-   times sg (odd bands); lv[4] = t = s2 / (1 + |z|), which is 1 - |z| / |d| to a relative
-   O(|d| - 1): no normalisation, no cancellation at the poles. */
+/* The order lanes of the 512-bit across-m cores for n <= 16 at (x, y, z), |d| ~ 1: lv[0..1] (x +
+   iy)^m renormalised, lv[2..3] the same times sg, lv[4] = t. (docs/derivations.md sec. 13.4) */
 SHLIGHT_CPU_INLINE void shli_sh_lanes512(int n, float x, float y, float z, __m512 *lv) {
   static const unsigned short bits[4] = {0xAAAA, 0xCCCC, 0xF0F0, 0xFF00};
   float s2 = x * x + y * y;
@@ -1702,11 +1686,8 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16(int n, float x, float y, float z,
   }
 }
 
-/* n > 16: up to four registers (chunks of 16 orders) per band. Band l's step in chunk h, the
-   constants as in shli_sh_reinsch (float: s2_l q from SHLI_SH_LANEQ, masked: orders m >= l get
-   the identity step; l + m, m - l + 1 from SHLI_SH_LANEK), then the cosines and the sines
-   (descending m). xv, dd, cc, ss: named registers (arrays indexed by a run-time chunk number
-   went to the stack, on the band chain). */
+/* n > 16: band l's step in chunk h (16 orders), constants as in shli_sh_reinsch, then the cosines
+   and the sines; xv, dd, cc, ss: named registers. (docs/derivations.md sec. 13.5) */
 #define SHLI_SH_CHUNK512(h, xv, dd, cc, ss) \
   do { \
     __mmask16 mk = (__mmask16) ~((__mmask64)0xFFFF << (l - 16 * (h))); \
@@ -1830,11 +1811,8 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, fl
 #undef SHLI_SH_BANDS512
 #undef SHLI_SH_BAND512
 #undef SHLI_SH_CHUNK512
-/* AVX-512 gradient pass for 2..16 bands (C only; shl_sh_eval_grad uses it for n >= 5): lanes
-   follow the output array (band order), so each 16-float chunk of the AoS gradient is three
-   permutes and three multiply-adds from the previous band P (times (l-1)/|d|) and this band Q
-   (times l/|d|): out = c1 P[i1] + c2 P[i2] - Q[k] u[f % 3]; tables by tools/gen_grad_simd.py.
-   Agrees with the scalar pass to 3.8e-7 of max|grad| (tests/test_basis, native build). */
+/* AVX-512 gradient pass tables for 2..16 bands (C only; tools/gen_grad_simd.py): lanes follow the
+   output array. (docs/derivations.md sec. 13.6) */
 #if defined(__GNUC__) || defined(__clang__)
 #define SHLI_GRADV_ALIGN __attribute__((aligned(64)))
 #else
@@ -1901,17 +1879,9 @@ SHLI_TAB_DECL(float, gradv_coef, 1760);
 #define SHLI_GRADV_AOS(a, b, c) \
   _mm512_mask_blend_ps((__mmask16)0x4924, _mm512_mask_blend_ps((__mmask16)0x2492, (a), (b)), (c))
 
-/* AVX-512 gradient pass for 1..16 bands (C only), with optional per-band weights: from Y (y,
-   n * n floats) at the unit direction u = (nx, ny, nz), for coefficient i of band l
-     out_grad[i] = a_l grad H_l^m(u) + (b_l u + e_l v) Y_i
-   (H_l the solid harmonic |d|^l Y_l; its Cartesian derivatives are at most two terms of band
-   l-1, tables by tools/gen_grad_simd.py). bw == NULL: a_l = ir, b_l = -l ir, e_l = 0, the
-   gradient of Y(d / |d|) with ir = 1 / |d|, and out_y is not written. Otherwise bw[4 l ..] =
-   (kv_l, a_l, b_l, e_l), v = v3 (3 floats; NULL: e_l = 0) and out_y[i] = kv_l Y_i: the light
-   kernels' weights, at no cost per output (out_y may be y, but from band 8 each band's load
-   then waits on the previous band's store: the lights pass a copy). Lanes follow the output
-   array, so each 16-float chunk of the AoS gradient is three permutes, two FMAs and a
-   product. */
+/* AVX-512 gradient pass for 1..16 bands (C only): out_grad[i] = a_l grad H_l^m(u) + (b_l u + e_l v)
+   Y_i; bw == NULL: the gradient of Y(d / |d|) (out_y not written), else bw[4 l ..] = (kv_l, a_l,
+   b_l, e_l) and out_y[i] = kv_l Y_i. (docs/derivations.md sec. 13.7) */
 SHLIGHT_CPU_INLINE void shli_sh_grad_avx512(int n, const float *y, float nx, float ny, float nz,
                                             float ir, const float *bw, const float *v3,
                                             float *out_y, float (*out_grad)[3]) {
@@ -2185,11 +2155,9 @@ SHLIGHT_INLINE void shl_sh_eval(int n, const float d[3], float *out_y) {
   shli_sh_eval_xyz(n, d[0], d[1], d[2], out_y);
 }
 
-/* >>gradient --------------------------------------------------------------------------------
-   Cartesian gradient of Y_i(d / |d|) with respect to d, pole-free: with H_l the solid
-   harmonic (|d|^l Y_l), grad Y_l = (grad H_l(u) - l Y_l(u) u) / |d| at u = d / |d|, and each
-   Cartesian derivative of H_l^m is at most two terms of band l-1 (tools/gen_basis.py derives
-   and checks them). No division by sin(theta) anywhere. */
+/* >>gradient ---------------------------------------------------------------------------------
+   Cartesian gradient of Y_i(d / |d|), pole-free, through the solid harmonics.
+   (docs/derivations.md sec. 13.8) */
 
 /* Run-time loop of the gradient for n > SHLIGHT_UNROLLED_BANDS (C only): coefficients A, B, C
    of band l computed on the way (three square roots in double per order m, no table); every
@@ -2280,11 +2248,8 @@ SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, floa
    written) otherwise: zero, NaN, Inf, tiny or huge d take the exact path. */
 SHLIGHT_CPU_INLINE int shli_sh_eval_grad_avx512(int n, const float d[3], float *out_y,
                                                 float (*out_grad)[3]) {
-  /* |d|^2 in [1e-30, 1e30] (not NaN): the double square root and division, which the whole
-     kernel waits on, replaced by rsqrt14 and one Newton step on the FMA residual, in double
-     (|d|^2 of floats to 2^-53, 1 / |d| to 6e-9, a tenth of a float ulp, so each component
-     of d / |d| is within about one float rounding, as on the exact path; a float prologue
-     was as fast but 2 ulp off, which the Horner forms of n = 5, 6 turn into 1e-6) */
+  /* |d|^2 in [1e-30, 1e30]: rsqrt14 and one Newton step in double (1 / |d| to 6e-9).
+     (docs/derivations.md sec. 13.9) */
   __m128d xd = _mm_set_sd((double)d[0]);
   __m128d yd = _mm_set_sd((double)d[1]);
   __m128d zd = _mm_set_sd((double)d[2]);
@@ -2531,20 +2496,9 @@ SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const fl
 }
 #endif
 
-/* >>zonal -----------------------------------------------------------------------------------
-   Zonal harmonics (ZH) of a uniform spherical cap and the ZH -> SH rotation ([GRAD] eq. 9-11,
-   14-16 with correction E4 applied; docs/derivations.md sections 2 and 12). A sphere of radius r
-   seen from distance d covers the cap of half-angle a, s = sin a = min(r / d, 1), alpha = cos a.
-   The unit-radiance cap about +z projects onto band l as
-     L_0 = sqrt(pi) (1 - alpha) = sqrt(pi) s^2 / (1 + alpha)
-     L_l = sqrt(pi / (2l+1)) (P_{l-1}(alpha) - P_{l+1}(alpha))
-         = sqrt(pi (2l+1)) / (l (l+1)) s^2 P'_l(alpha)                             (l >= 1)
-   The second forms have no cancellation: alpha = sqrt((d - r)(d + r)) / d, and
-   P'_{l+1} = P'_{l-1} + (2l+1) P_l sums positive terms near alpha = 1 (small caps); the
-   printed first forms lose everything to 1 - alpha for small caps (float: every L_l = 0
-   below s = 2.4e-4; shl_zh_cap_printed keeps them for comparison). r <= 0 or NaN, NaN or
-   infinite d: every output 0. d <= r: the hemisphere (s = 1, alpha = 0), the limit at the
-   sphere's surface. Internal precision shli_real (double in C, float in GLSL). */
+/* >>zonal ------------------------------------------------------------------------------------
+   ZH of a uniform spherical cap (cancellation-free forms) and ZH -> SH rotation; shl_zh_cap_printed
+   keeps the printed forms. (docs/derivations.md sec. 13.10) */
 
 /* Per band l < 64: (2l+1)/(l+1), l/(l+1), 1/(l(l+1)) (0 for l = 0), sqrt(4 pi/(2l+1)),
    sqrt(pi(2l+1)): the Legendre recurrence and the ZH normalisations without divisions
@@ -2553,14 +2507,9 @@ SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const fl
 SHLI_TAB_DECL(shli_real, zh_tab, 320);
 #define SHLI_ZH_TAB (*shli_tab_zh_tab())
 
-/* Geometry of a sphere seen from a point, in shli_real: (dx, dy, dz) = c - x, r = radius.
-   out_g[0..2]: unit axis (c - x) / |c - x|, (0, 0, 1) when x == c;
-   out_g[3]: 1 / |c - x|, capped at 1e20 (0 when x == c); out_g[4]: s^2 = min(r / |c - x|, 1)^2;
-   out_g[5]: alpha = sqrt((d - r)(d + r)) / d, 0 on or inside the sphere;
-   out_g[6]: 1 for a light, 0 for none (rr <= 0 or NaN, c - x NaN or infinite: out_g[0..5]
-   then hold the values of an empty cap about +z). With shli_real = float (GLSL) the
-   difference is scaled by its largest component first, so |c - x|^2 neither overflows nor
-   underflows; double needs no scaling (squares of floats fit). */
+/* Geometry of a sphere seen from a point (shli_real), (dx, dy, dz) = c - x: out_g[0..2] unit axis,
+   [3] 1 / |c - x|, [4] s^2, [5] alpha, [6] 1 for a light, 0 for none.
+   (docs/derivations.md sec. 13.11) */
 SHLIGHT_INLINE void shli_cap_frame(shli_real dx, shli_real dy, shli_real dz, shli_real r,
                                    shli_real *out_g) {
   shli_real rr = r;
@@ -3426,29 +3375,9 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
 #endif
 }
 
-/* >>light -----------------------------------------------------------------------------------
-   Unit-radiance lights seen from a shading point x: their SH (the projection of the
-   indicator of the light's solid angle, so out_sh[0] = Omega Y_0^0 and the irradiance of a
-   normal n follows by convolution with the clamped cosine) and its gradient with respect to
-   x, out_grad[i][k] = d out_sh[i] / d x_k.
-   Sphere light (centre c, radius r; [GRAD] eq. 9-14, docs/derivations.md section 2-3): with d = |c
-   - x|,
-   s = min(r / d, 1), alpha = sqrt((d - r)(d + r)) / d, w = (c - x) / d, and
-     q_0 = 1 / (1 + alpha),  q_l = P'_l(alpha) / (l (l+1))                 (l >= 1)
-     out_sh[l,m] = 2 pi s^2 q_l Y_l^m(w)        [= sqrt(4 pi / (2l+1)) L_l Y_l^m(w)]
-     grad_x      = -2 pi s^2 q_l grad_d Y_l^m(w) + 2 pi s^2 P_l(alpha) / (d alpha) Y_l^m(w) w
-   (docs/derivations.md section 3, "complete coefficient gradient, simplified"), grad_d Y from the
-   pole-free Cartesian gradient of >>gradient. Inside and on the surface (d <= r): the value at the
-   nearest surface point, i.e. the hemisphere about w; it is constant along rays from c, so its
-   gradient is the rotational term only (radial derivative 0). The exact gradient is unbounded as d
-   -> r+ (1 / alpha, genuinely singular); outside it stays finite because alpha >= ~1e-8 (C) / ~3e-4
-   (GLSL) for any d > r representable. x == c: the hemisphere about +z, gradient 0. r <= 0 or NaN,
-   NaN or infinite x or c: zeros (no light). 1 / |c - x| is capped at 1e20 in the gradient.
-   Triangle light as a sphere ([GRAD] eq. 24-28): the sphere at the centroid with the
-   triangle's area (r_s = sqrt(|e1 x e2| / (2 pi))), weighted by |cos gamma|, cos gamma the
-   cosine between the triangle's normal and w (two-sided). This is the paper's far-field
-   model: exact in L_0 only as d / sqrt(area) -> inf (docs/derivations.md section 4 table). The
-   exact solid angle is shl_triangle_solid_angle. */
+/* >>light ------------------------------------------------------------------------------------
+   Unit-radiance sphere and triangle lights seen from x: SH and gradient with respect to x.
+   (docs/derivations.md sec. 13.12) */
 
 /* @generated light_idx: defined in >>generated at the end of the file */
 SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg, const float *ka,
@@ -3552,11 +3481,8 @@ SHLIGHT_INLINE void shli_sh_eval_grad_unit(int n, float nx, float ny, float nz, 
   shli_sh_grad(n, out_y, nx, ny, nz, ir, 1.0f, out_grad);
 }
 
-/* Cap light and gradient from g (shli_cap_frame), times the weight wgt whose gradient with
-   respect to x is (gw0, gw1, gw2): out_sh = wgt S, out_grad = wgt grad S + S grad wgt. Per band
-   l the double recurrence gives four float weights: kv = wgt f q_l (values), kg = -kv / d (of
-   the unit-radius gradient of Y), ka = wgt h P_l (of Y w, the radial term) and kb = f q_l (of
-   Y grad wgt); the products with w and grad wgt are formed in float. */
+/* Cap light and gradient from g (shli_cap_frame) times the weight wgt (gradient gw0..2): out_sh =
+   wgt S, out_grad = wgt grad S + S grad wgt. (docs/derivations.md sec. 13.13) */
 SHLIGHT_INLINE void shli_cap_light_grad(int n, const shli_real *g, shli_real wgt, shli_real gw0,
                                         shli_real gw1, shli_real gw2, float *io_sh,
                                         float (*io_grad)[3]) {
@@ -3617,11 +3543,8 @@ SHLIGHT_INLINE void shli_cap_light_grad(int n, const shli_real *g, shli_real wgt
 }
 
 #if SHLIGHT_SIMD_EVAL
-/* shli_cap_light_grad for n <= 16 (C only, AVX-512): the same weights in double, then Y by the
-   basis kernel and the weighted gradient in one pass (shli_sh_grad_avx512 with bw: P of band l
-   times kg, Y times ka - l kg along w and kb along grad wgt), which also writes the values kv Y.
-   Forced inline (as the helpers above), so a literal n at the call specialises it as it does
-   the value path. */
+/* shli_cap_light_grad for n <= 16 (C only, AVX-512): the same weights, then one shli_sh_grad_avx512
+   pass with bw. (docs/derivations.md sec. 13.14) */
 SHLI_LIGHT_FORCE SHLIGHT_CPU_INLINE void
 shli_cap_light_grad_avx512(int n, const shli_real *g, shli_real wgt, shli_real gw0, shli_real gw1,
                            shli_real gw2, float *io_sh, float (*io_grad)[3]) {
@@ -3734,11 +3657,8 @@ SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c
   shli_cap_light_grad(n, g, 1.0, 0.0, 0.0, 0.0, out_sh, out_grad);
 }
 
-/* Triangle as a sphere ([GRAD] eq. 24-25): out_g as shli_cap_frame for the sphere at the
-   centroid with radius sqrt(|e1 x e2| / (2 pi)) seen from x, and out_g[7] = n_t . w = -cos gamma
-   (n_t = unit (p1 - p0) x (p2 - p0), w the unit axis from x to the centroid); the weight is
-   |out_g[7]|. out_nt: n_t (0 for a zero-area triangle, which gives out_g[6] = 0: no light;
-   as do NaN and infinite input). */
+/* Triangle as a sphere: out_g as shli_cap_frame for the centroid sphere of the same area, out_g[7]
+   = n_t . w; out_nt: n_t (0 for a zero-area triangle). (docs/derivations.md sec. 13.15) */
 SHLIGHT_INLINE void shli_tri_frame(const float x[3], const float p0[3], const float p1[3],
                                    const float p2[3], shli_real *out_g, shli_real *out_nt) {
   shli_real ax = SHLIGHT_REAL(p1[0]) - SHLIGHT_REAL(p0[0]);
@@ -3867,12 +3787,8 @@ SHLIGHT_INLINE void shl_triangle_light_grad(int n, const float x[3], const float
                       sg * (nt[2] - cg * g[2]), out_sh, out_grad);
 }
 
-/* atan2(y, x) in shli_real from the shims alone, so C and GLSL run the same code (GLSL's
-   atan is a driver approximation: llvmpipe's is off by 3.4e-6). Octant reduction to
-   t = min / max in [0, 1], two half-angle steps t -> t / (1 + sqrt(1 + t^2)) to
-   t <= tan(pi / 16), then the Taylor series to t^15: relative error <= 4e-13 (below the float
-   rounding floor by 5 orders; C double, GLSL float rounding). atan2(0, 0) = 0; y = -0 counts as
-   +0 (atan2(-0, x < 0) = +pi). Inputs must be finite. */
+/* atan2(y, x) in shli_real from the shims alone (C and GLSL alike): relative error <= 4e-13;
+   atan2(0, 0) = 0; finite input. (docs/derivations.md sec. 13.16) */
 SHLIGHT_INLINE shli_real shli_atan2r(shli_real y, shli_real x) {
   shli_real ay = SHLIGHT_ABSR(y);
   shli_real ax = SHLIGHT_ABSR(x);
@@ -3976,43 +3892,10 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
   return SHLIGHT_FLOAT(2.0 * shli_atan2r(nm, dn));
 }
 
-/* >>grid ------------------------------------------------------------------------------------
-   SH lighting on a regular 3D grid ([GRAD] sec. 5, after Wu, Cai, Zhao and Ramamoorthi 2020): the
-   SH coefficients of many sphere lights and their spatial gradients at the vertices of a grid
-   (shl_grid_build, CPU), then reconstruction at any point from the 8 corners of its cell (kernels
-   with GLSL twins: trilinear, first-order Taylor, Hermite; shl_grid_sample gathers the corners on
-   the CPU). Grid: vertex (ix, iy, iz), 0 <= ix < nx ..., index v = ix + nx (iy + ny iz), position
-     p_k = float(double(origin[k]) + double(i_k) double(spacing[k]))    (exact product, one
-   rounding: the same bits whatever the compiler's FMA contraction). Storage: sh[v n^2 + i],
-   grad[v n^2 + i][k] = d sh[v n^2 + i] / d x_k (float[3] per coefficient: 4 floats per
-   coefficient with gradients, 1 without).
-   Light j: centre c_j, radius r_j, intensity I_j (NULL: every I_j = 1); its contribution
-   I_j shl_sphere_light(_grad) (see >>light: inside a light, the hemisphere).
-   Culling (shl_grid.cull = eps >= 0; 0: every light reaches every vertex): light j is skipped
-   at the vertices farther than R_j = max(r_j sqrt(2 pi |I_j| / eps), 2 r_j) from c_j (test in
-   double: |c - p|^2 > R_j^2). The error bounds (values and
-   gradients, per skipped light) are derived in docs/derivations.md section 10.
-   Orders: SHLIGHT_GRID_FORWARD loops the vertices, then the lights (all lights, culling
-   test per pair); SHLIGHT_GRID_REVERSED loops the lights, then the vertices of the box around
-   the culling sphere (all vertices when eps = 0). Both add the lights to a vertex in index
-   order with the same arithmetic: the two orders and 1 or 2 threads give the same bits.
-   Threads: 2 splits the vertices into two z slabs (pthreads; define SHLIGHT_NO_THREADS, or a
-   platform without <pthread.h> (not __unix__ / __APPLE__), and the work runs in the calling
-   thread; a failed pthread_create runs the second slab in the caller too). glibc >= 2.34 has
-   pthreads in libc; older systems link with -pthread.
-   Reconstruction: the cell of p is (i0, i0+1) per axis with i0 = min(floor(u), dims - 2),
-   u = (p - origin) / spacing clamped to [0, dims - 1], fraction f = u - i0 in [0, 1]; an axis
-   with dims = 1 has f = 0 and both corners equal. Corner k of the cell: bit 0 x, bit 1 y,
-   bit 2 z (k = cx + 2 cy + 4 cz); c8[k n^2 + i], g8[k n^2 + i][axis]. GLSL twins:
-   c8 is float[8 * SHLIGHT_MAX_COEFFS], g8 vec3[8 * SHLIGHT_MAX_COEFFS].
-   - trilinear: exact for multilinear data, error O(h^2), C0.
-   - Taylor (first order from the nearest corner, Annen, Kautz, Durand and Seidel 2004; ties f = 0.5
-   go to corner 1): exact for linear data, error O(h^2), discontinuous at the mid-planes of the
-   cell.
-   - Hermite: the tensor-product cubic Hermite interpolant with the grid's corner values and
-     gradients and mixed derivatives estimated inside the cell from the gradients (C0 across
-     cells, exact on quadratics, error O(h^3); formulas in docs/derivations.md section 10), one
-     linear combination of the 32 corner data (32 FMA per coefficient). */
+/* >>grid -------------------------------------------------------------------------------------
+   SH of many sphere lights and their gradients at the vertices of a 3D grid (shl_grid_build, CPU),
+   reconstruction in a cell from its 8 corners (trilinear, Taylor, Hermite).
+   (docs/derivations.md sec. 13.17) */
 
 SHLIGHT_INLINE void shl_grid_trilinear(int n, const float *c8, const float f[3], float *out_sh) {
   float x1 = f[0];
@@ -4178,33 +4061,12 @@ SHLIGHT_INLINE void shl_grid_hermite(int n, const float *c8, const float (*g8)[3
 
 /* CPU only (declared here, defined with SHLIGHT_IMPLEMENTATION). */
 
-/* >>edge ------------------------------------------------------------------------------------
-   Area lights without tables ([AREA], docs/derivations.md section 7): axial moments of polygons,
-   the moment M^e(P, r) = integral over the solid angle of P, clipped to the hemisphere u.r >= 0, of
-   (u.r)^e. Two exact identities carry everything here (docs/derivations.md section 7.1 and this
-   header's derivation in docs/area-lights.md):
-   - Arvo (integer e): (e+1) M = [e even] Omega + sum_i w_i F(Phi_i, c_i, delta_i, e-1), with
-     the edge integral F of [AREA] eq. 3 (corrections E10, E11 applied), F's exact O(e) recurrence
-     or the paper's O(1) peak fits (Lorentzian, Lorentzian-Pearson, ellipsoid; corrections E12-E17).
-   - Stokes in the azimuth about r (any real e >= 0, derived for shlight): with the 1-form
-     (x^(e+1) - 1)/(e+1) dpsi, x = u.r, the pole term vanishes and
-       (e+1) M = -sum_i sgn(w_i) integral over theta in the edge's arc of (1 - h(theta)) dtheta,
-       h = (c^2 cos^2 theta / (1 - c^2 sin^2 theta))^((e+1)/2), tan theta = tan phi / |w_i|,
-     an integrand in [0, 1] with no cancellation against a solid-angle term. Its integral is
-     taken with a fixed 5-node Gauss-Legendre rule on each half-arc after the graded change of
-     variables pi/2 - |theta| = beta sinh(s), beta = atan(|w| sqrt(e+1)) / 2 (the boundary layer
-     of 1 - h sits at |theta| -> pi/2 with width ~ |w| sqrt(e+1)): constant cost for every e. */
+/* >>edge -------------------------------------------------------------------------------------
+   Area lights without tables: axial moments of polygons by Arvo's edge integrals (integer e) or the
+   Stokes form (any e >= 0). (docs/derivations.md sec. 13.18) */
 
-/* Polygons of any vertex count (C, SHLIGHT_POLYGON_ANY): above SHLIGHT_POLYGON_MAX vertices a
-   polygon function cuts the polygon into fan pieces (v0, v_i, ..., v_m) of at most
-   SHLIGHT_POLYGON_MAX vertices whose fan triangles all turn the same way as seen from the
-   shading point (the sign of det(v0, v_j, v_j+1)), calls itself on each piece and adds the
-   pieces with their signs relative to the whole polygon's orientation (the sum of the dets),
-   then clamps at 0 as in one piece; the fan edges cancel between neighbours. So a non-convex
-   or self-overlapping polygon is integrated with its winding number, as in one piece. O(1)
-   memory (one piece, 96 bytes), about (nv - 2) / (SHLIGHT_POLYGON_MAX - 2) kernel calls. NaN
-   or infinite vertices, or dets summing to zero (seen edge-on): 0. GLSL keeps the compile-time
-   maximum SHLIGHT_POLYGON_MAX; above it the result is -1. */
+/* Polygons above SHLIGHT_POLYGON_MAX vertices (C): cut into same-turning fan pieces, summed with
+   their signs (winding number); GLSL: -1. (docs/derivations.md sec. 13.19) */
 typedef struct {
   float p[SHLIGHT_POLYGON_MAX][3]; /* the current piece */
   double sum;                      /* the signed sum of the pieces' values so far */
@@ -4398,12 +4260,8 @@ SHLIGHT_INLINE shli_real shli_edge_exact(shli_real pa, shli_real pb, shli_real c
                             c * SHLIGHT_SINR(pb), c * c, pb - pa, nf);
 }
 
-/* The paper's O(1) fits of F over [pa, pb] inside [-pi/2, pi/2], nf >= 3, c in (1.0e-3, 1]:
-   peak I_max = I(0), floor I_min = I(pi/2), half width x_w of eq. 7 (correction E12
-   (docs/derivations.md section 12): level (I_max + I_min) / 2), the fit passing through (x_w,
-   I(x_w)); Lorentzian with the atan2 form of eq. 12 (E13); Lorentzian-Pearson with b = a / 2, the
-   corrected antiderivative (E14) and the blend factor clamped to [0, 1] (E17); single ellipsoid eq.
-   15-16, 18 (its degenerate a_E = 1 falls back to the Lorentzian). */
+/* The paper's O(1) fits of F over [pa, pb] (Lorentzian, Lorentzian-Pearson, ellipsoid), corrected.
+   (docs/derivations.md sec. 13.20) */
 SHLIGHT_INLINE shli_real shli_edge_fit(shli_real pa, shli_real pb, shli_real c, int nf,
                                        int method) {
   int odd = nf - 2 * (nf / 2);
@@ -4581,15 +4439,8 @@ SHLIGHT_INLINE int shli_poly_clip(shli_real *io_px, shli_real *io_py, shli_real 
   return k;
 }
 
-/* The FAST method (SHLIGHT_EDGE_FAST): the Stokes form above in float, laid out for SIMD.
-   Per edge the two half-arcs in |theta| each get a 4-node Gauss-Legendre rule after the
-   rational grading pi/2 - |theta| = beta t / (1 - t) (t in [0, 1)), beta =
-   1.5 x / (1 + 0.6366 x), x = |w| sqrt(e + 1): no transcendental in the grading, and the
-   nodes of all edges are independent, so the C edge loop runs SHLIGHT_LANES edges per block
-   (one AVX register per quantity) with polynomial atan2 / sin / log1p / exp (C only, below;
-   GLSL calls its built-ins). Chosen by experiment (numpy, 1500 random half-arcs, e = 3..1e4,
-   per half-arc error in units of the normalised lobe): sinh grading K = 4: max 7.8e-4,
-   rational K = 4, beta factor 1.5: max 8.2e-4, p95 2.1e-4, with half the transcendentals. */
+/* The FAST method: the Stokes form in float, 4-node rules after a rational grading, SHLIGHT_LANES
+   edges per block. (docs/derivations.md sec. 13.21) */
 
 /* GCC keeps -ftrapping-math by default and then will not if-convert a float compare-and-select,
    so the FAST edge loop would stay scalar; the FAST functions are compiled without it (no
@@ -4664,13 +4515,8 @@ SHLIGHT_CPU_INLINE float shli_flog1p(float y) {
   p = 2.0f * s + 2.0f * s * (s2 * p);
   return (float)k * 0.693147181f + p + (y - (v - 1.0f)) / v;
 }
-/* exp(z) for z <= 0 (clamped at -87): 2^k by the exponent bits, Taylor to f^6 on
-   |f| <= ln2 / 2 (relative error < 2e-7). The clamp max(z, -87) is an integer min of the
-   bit patterns (for z <= 0 a larger magnitude is a larger signed int): GCC vectorises it
-   (vpminsd), where a float select keeps the edge loop scalar (3.6k instead of 1.3k
-   instructions per quad) and the earlier 0.5 (z - 87 + |z + 87|) lost z to rounding below
-   -1e9 (exp of garbage, up to 1e26, at exponents >= 3e9). The callers pass z <= 0 only (a
-   positive z would be clamped to -87). */
+/* exp(z) for z <= 0 (clamped at -87 by an integer min of the bit patterns), relative error < 2e-7.
+   (docs/derivations.md sec. 13.22) */
 SHLIGHT_CPU_INLINE float shli_fexp(float z) {
   int bz = shli_fbits(z);
   int bc = -1028784128; /* the bits of -87.0f, 0xc2ae0000 */
@@ -4761,14 +4607,8 @@ SHLIGHT_INLINE int shli_fast_clip(float *io_px, float *io_py, float *io_pz, int 
   return k;
 }
 
-/* (e + 1) M^e by the FAST method of the polygon (io_px, io_py, io_pz)[0..nv-1] (shading point
-   at the origin; overwritten), clipped to u.n >= 0 first when clip_n != 0, then to u.r >= 0
-   (n, r unit). The polygon is scaled by its largest coordinate first (any finite size works in
-   float). nv outside [3, SHLIGHT_POLYGON_MAX], a non-finite vertex, e NaN or >= 1e30: 0;
-   e < 0: 0. Three passes: the edges' arcs in theta (SHLIGHT_LANES edges at a time,
-   branch-free, no sqrt: C's sqrtf may set errno, which stops vectorisation; the edge normal
-   a x b stays unnormalised and |w| sin(Phi) = |n.r|), the non-empty half-arcs gathered, then
-   their 4-node rules (SHLIGHT_LANES half-arcs at a time). */
+/* (e + 1) M^e by the FAST method of the polygon (shading point at the origin; overwritten), clipped
+   to u.n >= 0 when clip_n != 0, then to u.r >= 0. Bad input: 0. (docs/derivations.md sec. 13.23) */
 SHLIGHT_INLINE float shli_fast_moment(float *io_px, float *io_py, float *io_pz, int nv, int clip_n,
                                       float nx, float ny, float nz, float rx, float ry, float rz,
                                       float e) {
@@ -4989,13 +4829,8 @@ SHLIGHT_INLINE shli_real shli_stokes_gl5(shli_real m, shli_real r, shli_real bet
   return r * sum;
 }
 
-/* integral of the kind's integrand over |theta| in [lo, hi] inside [0, pi/2]: 5-node
-   Gauss-Legendre in s, pi/2 - |theta| = beta sinh(s). lev > 0 (the adaptive rule of
-   SHLIGHT_EDGE_EXACT at non-integer exponents): at level l = 1, 2, ..., lev the composite rule
-   on 2^l equal panels, the one at s0 cut geometrically into l + 1 (an hp mesh: the integrand is
-   analytic in s except for the branch point |cos theta|^(e+1) at theta = pi/2, s = s0, which
-   the geometric cut resolves), until two successive levels differ by at most
-   SHLIGHT_ADAPT_TOL (the error estimate: the accepted finer level is well inside it). */
+/* integral of the kind's integrand over |theta| in [lo, hi]: 5-node Gauss-Legendre in s, pi/2 -
+   |theta| = beta sinh(s); lev > 0: adaptive composite rule. (docs/derivations.md sec. 13.24) */
 SHLIGHT_INLINE shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2,
                                           shli_real p, shli_real q, int kind, int lev) {
   shli_real z0 = (1.5707963267948966 - hi) / beta;
@@ -5014,12 +4849,8 @@ SHLIGHT_INLINE shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real 
   if (!(h > 0.0)) {
     return 0.0;
   }
-  /* one loop over the panels of every level and one call of the 5-node rule (GLSL inlines
-     each call site: one copy instead of four per half-arc). Level l has np = 2^l panels of
-     width h: k = 0 .. np - 2 the panels 1 .. np - 1; the one at s0 (theta = pi/2, where h
-     has the branch point |cos|^(e+1) for non-integer e) cut geometrically toward s0: l
-     panels of ratio 0.15 (k = np - 1 .. np + l - 2), then the rest (k = np + l - 1). Level 0
-     is the single panel [s0, s1]. */
+  /* one loop over the panels of every level, one call of the 5-node rule.
+     (docs/derivations.md sec. 13.25) */
   while (l <= lev) {
     if (k < np - 1) {
       pm = s0 + (SHLIGHT_ITOR(k + 1) + 0.5) * h;
@@ -5177,13 +5008,8 @@ SHLIGHT_INLINE shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az
   return w * shli_edge_fit(pa, pb, SHLIGHT_SQRTR(c2), nf, method);
 }
 
-/* The shared start of every polygon sum: with npre = 1 first the clip to u.n >= 0 (Phong's
-   horizon; nothing usable left: 0); then the orientation of the polygon as seen from the
-   shading point, sign of (vector area) . (a vertex); the clip to u.r >= 0; the clipped
-   vertices normalised in place. Returns +-(clipped vertex count), the sign the orientation's,
-   or 0 when nothing usable is left (< 3 vertices, zero area, a vertex at the shading point).
-   Both clips run from one call site in a loop (GLSL inlines every call site, and the clip's
-   indexed stores are the costliest part of an llvmpipe compile). */
+/* Shared start of every polygon sum: clips, orientation, normalisation; returns +-(clipped vertex
+   count) or 0. (docs/derivations.md sec. 13.26) */
 SHLIGHT_INLINE int shli_poly_clip_unit2(shli_real *io_px, shli_real *io_py, shli_real *io_pz,
                                         int nv, shli_real nx, shli_real ny, shli_real nz, int npre,
                                         shli_real rx, shli_real ry, shli_real rz) {
@@ -5766,13 +5592,9 @@ SHLIGHT_INLINE float shl_sphere_phong(const float c[3], float r, const float nrm
       rho * (sg + uy * uy * a), -rho * uy, nx, ny, nz, rx, ry, rz, SHLIGHT_REAL(exponent), method));
 }
 
-/* The shared start of the half-vector NDF integrals (shl_polygon_ggx_ndf,
-   shl_polygon_beckmann_ndf): checks nv >= 3 (C: any count; GLSL: at most SHLIGHT_POLYGON_MAX, above
-   it -1), the axis (non-zero, finite) and alpha (not NaN); loads the vertices into io_px, io_py,
-   io_pz (a NaN or infinite one: 0) and clips them to u.axis >= 0 and normalises them
-   (shli_poly_clip_unit). Writes out_par: [0..2] the unit axis, [3] the polygon's orientation (+1 or
-   -1: the sign of the edge sum), [4] alpha clamped to [1e-4, 1]. Returns the clipped vertex count,
-   or 0 (the caller returns 0; out_par is then not all written). */
+/* Shared start of the half-vector NDF integrals: checks, load, clip and normalise; out_par [0..2]
+   axis, [3] orientation, [4] alpha; returns the clipped count or 0.
+   (docs/derivations.md sec. 13.27) */
 SHLIGHT_INLINE int shli_poly_load_clip(const float (*v)[3], int nv, const float axis[3],
                                        float alpha, shli_real *io_px, shli_real *io_py,
                                        shli_real *io_pz, shli_real *out_par) {
@@ -5881,13 +5703,8 @@ typedef __UINT64_TYPE__ shli_u64;
 #else
 typedef unsigned long long shli_u64;
 #endif
-/* The microfacet polygon lights' transcendentals (SHLIGHT_MEXP, SHLIGHT_MLOG, SHLIGHT_MSIN,
-   SHLIGHT_MCOS; GLSL: the built-ins): shlight's own double polynomials in C, relative error
-   below 1e-15 (tests/test_ggx.c), a third of libm's instructions. exp: x clamped to
-   [-708, 709], x = k ln2 + r by a two-part ln2, Taylor to r^12 on |r| <= ln2 / 2, 2^k by the
-   exponent bits. log: x > 0 finite normal, x = 2^e m with m in [sqrt(1/2), sqrt(2)), 2 atanh
-   of s = (m - 1) / (m + 1) to s^17. sin, cos: t = k pi/2 + r by a two-part pi/2 (|t| < 1e5),
-   Taylor to r^15 / r^16 on |r| <= pi/4, the quadrant k mod 4 picking and negating them. */
+/* The microfacet polygon lights' double transcendentals (C): own polynomials, relative error below
+   1e-15. (docs/derivations.md sec. 13.28) */
 SHLIGHT_CPU_INLINE double shli_mexp(double x) {
   double kd;
   double r;
@@ -5968,31 +5785,12 @@ SHLIGHT_CPU_INLINE double shli_msincos(double t, int odd) {
   return (q & 2) != 0 ? -r : r;
 }
 
-/* GGX polygon lights (shl_polygon_ggx). The light's integral
-     L = integral over P (clipped to n.l > 0) of f(v, l) (n.l) dl = int D(h) G2(l, v) / (4 n.v) dl
-   becomes, with dl = 4 (h.v) dh (h = (l + v) / |l + v|),
-     L = integral over H(P) of D(h) (h.n) w(h) dh,   w(h) = G2(l(h), v) (h.v) / ((n.v) (h.n)).
-   w is smooth and D (h.n) is the peaked part, so w is split into its first-order Taylor
-   expansion about the point h* of H(P) closest to n and a remainder:
-     L = w* A + g.(M1 - h* A) + integral over P of k(l) (w - w* - g.(h - h*)) dl,
-   A = int_H D (h.n) dh, M1 = int_H D (h.n) h dh (both exact up to a 1D quadrature, below),
-   k = D (h.n) / (4 h.v) (so that k dl = D (h.n) dh), g the gradient of w at h* (central
-   differences), and the remainder by cubature over P: a fan from the direction of the vertex
-   centroid, triangles wider than 53 deg split 1 -> 4 at their edge midpoints, a 7-point
-   degree-5 rule on each piece, GGX's pieces split further where an estimate or the lobe's
-   closeness to the horizon asks (at the fan loop; the remainder is second order where D is
-   narrow and smooth where D is wide).
-   A and M1 by Stokes along the boundary of H(P) (the images of P's great arcs under
-   l -> l + v are conics), each edge integral by a graded rule t = t0 + wd sinh(s) about its
-   peak with 5 Gauss-Legendre nodes per side; the formulas and the guard on the Newton step
-   that finds t0 are in docs/derivations.md section 9. */
+/* GGX polygon lights (shl_polygon_ggx): the half-vector integral, w split into its first-order
+   Taylor expansion at h* (A, M1 by Stokes) and a remainder by cubature over P.
+   (docs/derivations.md sec. 13.29) */
 
-/* Beckmann's Smith Lambda at the direction cosine c (0 < c <= 1), roughness alpha:
-   (erf(a) - 1) / 2 + exp(-a^2) / (2 a sqrt(pi)), a = c / (alpha sqrt(1 - c^2)), with erfc by
-   Abramowitz-Stegun 7.1.26 (absolute error 1.5e-7, so Lambda is within 1e-7): no erf needed
-   in GLSL. a is floored at 1e-30 only (Lambda ~ 0.28 / a: G2 ~ 3.5 a falls like n.v, so
-   G2 / (n.v) stays finite and tends to its limit at views grazing to 1e-16; a floor at 1e-6
-   held G2 while 1 / (n.v) grew). */
+/* Beckmann's Smith Lambda at the direction cosine c (0 < c <= 1), erfc by Abramowitz-Stegun 7.1.26
+   (Lambda within 1e-7). (docs/derivations.md sec. 13.30) */
 SHLIGHT_INLINE shli_real shli_beckmann_lambda(shli_real c, shli_real alpha) {
   shli_real s2 = 1.0 - c * c;
   shli_real a;
@@ -6008,14 +5806,8 @@ SHLIGHT_INLINE shli_real shli_beckmann_lambda(shli_real c, shli_real alpha) {
   return 0.5 * SHLIGHT_EXPR(-a * a) * (0.56418958354775629 / a - p);
 }
 
-/* Beckmann NDF (ndf = 1 of the helpers below): the scaled integral (pi / alpha^2) I(t) with
-   I(t) = int_0^t s^2 D_B(s) ds = exp(1 / alpha^2) erfc(1 / (alpha t)) / (2 sqrt(pi) alpha)
-   (u = 1 / s: I = exp(1 / alpha^2) / (pi alpha^2) int_{1/t}^inf exp(-u^2 / alpha^2) du), written
-   with erfcx(x) = exp(x^2) erfc(x) = 2 / (1 + 2 x) p((x - 2) / (x + 2)) (Weideman 1994, L = 2)
-   at x = 1 / (alpha t) >= 1: (pi / alpha^2) I(t) = sqrt(pi) t E p(z) / (alpha^2 (alpha t + 2)),
-   E = exp(-tan^2 t / alpha^2), z = (1 - 2 alpha t) / (1 + 2 alpha t) in [-1/3, 1). p: the
-   degree-14 Chebyshev fit of (1 + 2x) erfcx(x) / 2 on z in [-1/3, 1] (mpmath), relative error
-   9e-12 for every x >= 1. et = E, at = alpha t. */
+/* Beckmann NDF: the scaled integral (pi / alpha^2) I(t) through erfcx (relative error 9e-12).
+   (docs/derivations.md sec. 13.31) */
 SHLIGHT_INLINE shli_real shli_beck_i(shli_real t, shli_real et, shli_real at, shli_real a2) {
   shli_real z = (1.0 - 2.0 * at) / (1.0 + 2.0 * at);
   shli_real p;
@@ -6086,12 +5878,8 @@ SHLIGHT_INLINE shli_real shli_ggx_w(shli_real lx, shli_real ly, shli_real lz, sh
   return hv / ((1.0 + lamv + laml) * nv * nh);
 }
 
-/* One edge's graded rule on [sa, sb] (in s), split at the peak s = 0 when it lies inside: adds
-   the A and M1.g integrands (see above) at t = t0 + wd sinh(s), 5-node Gauss-Legendre on each
-   side, to io_am[0] and io_am[1]. Both sides run in one loop of 10 nodes (GLSL inlines every
-   call site and loop copy: one copy of the node body instead of two). ndf 0: GGX, 1: Beckmann
-   (the cap CDF 1 - exp(-u), u = tan^2 / alpha^2 = |Q_xy|^2 / (alpha^2 Q_z^2), in the A form;
-   shli_beck_i in the M1 form; al = alpha). */
+/* One edge's graded rule on [sa, sb] (split at s = 0), adding the A and M1.g integrands to
+   io_am[0..1]. (docs/derivations.md sec. 13.32) */
 SHLIGHT_INLINE void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli_real wd,
                                   shli_real ax, shli_real ay, shli_real az, shli_real bx,
                                   shli_real by, shli_real bz, shli_real vx, shli_real vy,
@@ -6220,12 +6008,8 @@ SHLIGHT_INLINE void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli
   }
 }
 
-/* The remainder's integral, k(l) (w(l) - w* - g.(h - h*)) with k = D (h.n) / (4 h.v), over the
-   spherical triangle of the directions (a, b, c) (any lengths, a non-negative combination
-   spans it) by the 7-point degree-5 rule of Dunavant on the flat triangle and the Jacobian
-   det(a, b, c) / |p|^3 of the radial projection: out_q[0]; out_q[1] the same nodes' degree-2
-   rule (the centroid and the three outer nodes), whose difference from out_q[0] is the
-   piece's error estimate. */
+/* The remainder's integral over a spherical triangle: out_q[0] degree 5 (Dunavant, 7 points),
+   out_q[1] degree 2 (error estimate). (docs/derivations.md sec. 13.33) */
 SHLIGHT_INLINE void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx,
                                  shli_real by, shli_real bz, shli_real cx, shli_real cy,
                                  shli_real cz, shli_real vx, shli_real vy, shli_real vz,
@@ -7408,22 +7192,11 @@ SHLIGHT_INLINE float shl_polygon_ggx_fast(const float (*v)[3], int nv, const flo
   return SHLIGHT_FLOAT(SHLIGHT_MAXR(par[4] * par[5] * q, 0.0));
 }
 
-/* ---- microfacet polygon lights in half-vector space ([AREA] sec. 8; docs/area-lights.md). With h
-   = (l + v) / |l + v| and dl = 4 (h.l) dh, the reflected radiance of a unit-radiance polygon
-   becomes an integral over the image H(P) of the light in half-vector space: integral over P of
-   D(h) G2 / (4 (n.v)) dl = integral over H(P) of D(h) (h.n) Y(h) dh, Y = G2 (h.v) / ((n.v) (h.n)).
-   D (h.n) over H(P) is a moment (Blinn-Phong: (e+2)/(2 pi) M^(e+1)) or the Stokes form of a radial
-   CDF (Beckmann), both sums over H(P)'s edges; Y is held at one representative direction. H maps
-   great arcs to spherical conics (the cone through the circle {l + v}), not great arcs: each light
-   edge is cut into k sub-edges whose mapped end points are joined by great arcs (the split of
-   [AREA] sec. 8.1). */
+/* ---- microfacet polygon lights in half-vector space: each light edge cut into sub-edges whose
+   images are joined by great arcs. (docs/derivations.md sec. 13.34) */
 
-/* One edge a -> b (unit, the arc inside u.r >= 0) of the Stokes form of the Beckmann NDF about
-   the unit axis r, roughness alpha: sgn(w) times the integral over the arc's theta of the cap
-   CDF (the polygon's integral of D_B (u.r) is the edge sum / (2 pi)); the edge set-up of
-   shli_edge_term's QUADRATURE branch, grading beta = atan(|w| sqrt(2) / alpha) / 2 (the
-   Blinn-Phong grading at e + 1 = 2 / alpha^2, the exponent of equal width). sa: as
-   shli_stokes_node's q, kind 1 (0: the CDF). */
+/* One edge a -> b of the Stokes form of the Beckmann NDF about r: sgn(w) times the integral of the
+   cap CDF over the arc. (docs/derivations.md sec. 13.35) */
 SHLIGHT_INLINE shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_real az, shli_real bx,
                                             shli_real by, shli_real bz, shli_real rx, shli_real ry,
                                             shli_real rz, shli_real alpha, shli_real sa) {
@@ -7516,17 +7289,8 @@ SHLIGHT_INLINE float shl_polygon_beckmann_ndf(const float (*v)[3], int nv, const
   return SHLIGHT_FLOAT(SHLIGHT_MAXR(par[3] * sum, 0.0) * 0.15915494309189534);
 }
 
-/* The split points of the light edge a -> b (unit vectors, arc angle phi in (0, pi)) for k
-   sub-edges (k - 1 points), as fractions of the arc's angle in (0, 1), ascending, in io_split;
-   returns their count. p is the point of the edge's great circle nearest the mirror direction r
-   ([AREA] Algorithm 1: where the image of the circle bends most). k = 2: one split at p when
-   p lies inside the arc, none otherwise (the paper). k >= 3: p is one split and the other
-   k - 2 are shared between its two sides in proportion to their angles, graded toward p
-   quadratically (fraction tp (1 - u^2) and tp + (1 - tp) u^2, u uniform); with p outside the
-   arc, k - 1 uniform splits. bal != 0: p is first moved toward the arc's midpoint p_m by the
-   paper's balancing heuristic (Algorithm 2), p <- normalise((1 - km) p + km p_m), km =
-   min(2 |n_e . v| m, 1), n_e the edge's unit normal, m the roughness (Beckmann alpha, or
-   sqrt(2 / (e + 2)) for Blinn-Phong). */
+/* The split points (fractions of the arc, ascending, in io_split) of the light edge a -> b for k
+   sub-edges; returns their count. (docs/derivations.md sec. 13.36) */
 SHLIGHT_INLINE int shli_half_splits(shli_real ax, shli_real ay, shli_real az, shli_real bx,
                                     shli_real by, shli_real bz, shli_real rx, shli_real ry,
                                     shli_real rz, shli_real vx, shli_real vy, shli_real vz,
@@ -7623,12 +7387,8 @@ SHLIGHT_INLINE int shli_half_splits(shli_real ax, shli_real ay, shli_real az, sh
   return ns;
 }
 
-/* integral along the great arc a -> b (unit, inside t = u.n >= 0, b != -a) of t^p (u.c)^j ds
-   (j = 0 or 1, p >= 0), or for j = 2 of E(t) / t^2, E = exp(-(1 - t^2) / (t^2 p^2)) (Beckmann,
-   p = alpha): t = R cos(s - s0) along the arc; the arc is cut at the peak s0 and each side
-   integrated by 8-node Gauss-Legendre in x after the graded change d = beta sinh(x) of the
-   distance d to the peak, beta = 1 / sqrt(p + 1) (the peak's width; alpha / sqrt 2 for
-   j = 2). */
+/* integral along the great arc a -> b of t^p (u.c)^j ds (j = 0, 1), or of E(t) / t^2 (j = 2),
+   graded 8-node Gauss-Legendre about the peak. (docs/derivations.md sec. 13.37) */
 SHLIGHT_INLINE shli_real shli_half_arc(shli_real ax, shli_real ay, shli_real az, shli_real bx,
                                        shli_real by, shli_real bz, shli_real nx, shli_real ny,
                                        shli_real nz, shli_real cx, shli_real cy, shli_real cz,
@@ -7744,25 +7504,8 @@ SHLIGHT_INLINE shli_real shli_half_arc(shli_real ax, shli_real ay, shli_real az,
   return sum;
 }
 
-/* The integrals over the image in half-vector space of the clipped light polygon (io_px, io_py,
-   io_pz)[0..nc-1] (unit vertices above the horizon of the unit normal n, view v unit with
-   n.v > 0; the arrays are only read), signed by the light's winding: each edge cut into
-   sub-edges at shli_half_splits' points, every end point mapped by H(l) = normalise(l + v),
-   consecutive images joined by great arcs; one walk for every kind.
-   kind 0, Blinn-Phong over the image polygon without a held factor: with
-   n.l = 2 (h.v)(h.n) - n.v, the integrand D (n.l) (h.v) = (e+2)/(2 pi) [2 t^(e+1) (h.v)^2 -
-   (n.v) t^e (h.v)], t = h.n, is a polynomial in h times a power of t; its integrals follow
-   from two moments (exponents e + 1 and e - 1, QUADRATURE edge terms) and two line integrals
-   per arc (shli_half_arc) by the surface divergence theorem applied to t^a P(v) and
-   t^a (h.v) P(v), P(v) = v - (v.h) h the tangential part of v.
-   kinds 2 and 3, the image's NDF measures (the split's own error, tests/test_microfacet): kind 2
-   (par = e) (e+2)/(2 pi) M^(e+1), QUADRATURE terms at exponent e + 1, the integral of
-   D_Blinn (h.n); kind 3 (par = alpha) the integral of D_B (h.n) (shli_beckmann_edge).
-   kind 1, K = the integral of D_B(h) (h.v) over the image polygon, by the surface divergence
-   identity for g(t) P(v) with (t^2 g)' = t D_B: g = E(t) / (2 pi t^2), E = exp(-(1 - t^2) / (t^2
-   alpha^2)), and K = (n.v) (integral of g') - sum over arcs (v.m) (line integral of g), m the
-   outward conormal; the integral of the radial g' by the Stokes form with the closed-form 2 pi
-   (g(1) - g(t)) = 1 - E / t^2 (shli_beckmann_edge with sa = alpha^2). par = alpha. */
+/* The integrals over the half-vector image of the clipped light polygon (signed by its winding) for
+   kinds 0..3. (docs/derivations.md sec. 13.38) */
 SHLIGHT_INLINE shli_real shli_half_image(shli_real *io_px, shli_real *io_py, shli_real *io_pz,
                                          int nc, shli_real nx, shli_real ny, shli_real nz,
                                          shli_real vx, shli_real vy, shli_real vz, shli_real m,
@@ -7911,12 +7654,8 @@ SHLIGHT_INLINE shli_real shli_half_image(shli_real *io_px, shli_real *io_py, shl
   return (par + 2.0) * 0.15915494309189534 * (2.0 * j2 - dv * j1);
 }
 
-/* The common body of shl_polygon_blinn_phong (kind 0, par = e) and shl_polygon_beckmann_subedges
-   (kind 1, par = alpha): clip to the horizon, the representative direction l* (the point of the
-   clipped light nearest the mirror direction r: r itself when every edge sees r on the same
-   side, else the nearest vertex or in-arc foot point; used for Beckmann's held G2), then the
-   sums over the sub-edge image polygon in half-vector space (shli_half_image). par already
-   clamped. */
+/* Common body of shl_polygon_blinn_phong (kind 0, par = e) and shl_polygon_beckmann_subedges (kind
+   1, par = alpha). (docs/derivations.md sec. 13.39) */
 SHLIGHT_INLINE shli_real shli_half_light(const float (*v)[3], int nv, const float nrm[3],
                                          const float view[3], shli_real par, int subedges,
                                          int kind) {
@@ -8174,26 +7913,9 @@ SHLIGHT_CPU_INLINE float shli_fan_beckmann(const float (*v)[3], int nv, const fl
 #undef SHLIGHT_FAN_SUM_
 #undef SHLIGHT_FAN_P_
 
-/* >>brdf ------------------------------------------------------------------------------------
-   ZH of circularly symmetric BRDF lobes, convolution with SH / ZH radiance, irradiance,
-   windowing and band selection (docs/derivations.md section 5-6; [SSF] sec. 3.3 with correction E7
-   (docs/derivations.md section 12); [HVL] sec. 4.2, 6.3, Appendix B). A lobe f(w . c) about its
-   axis c (the normal for Lambert and the microfacet lobes, the mirror direction for Phong) has ZH
-   coefficients f_l = 2 pi int_0^pi f(cos t) Y_l^0(t) sin t dt; its SH about c are sqrt(4 pi /
-   (2l+1)) f_l Y_l^m(c) (shl_zh_rotate). Cosine powers (Lambert, Phong, Blinn-Phong) use the
-   factorial-free recurrence of docs/derivations.md sec. 5: Lambda_l(e) = (e+1) int_0^1 x^e P_l(x)
-   dx,
-   Lambda_0 = 1, Lambda_1 = (e+1)/(e+2), Lambda_{l+2} = Lambda_l (e-l)/(e+l+3), in shli_real (double
-   in C: within one float rounding of a binary128 quadrature reference for e in [0, 1e4] and n <=
-   64, tests/test_brdf).
-   The microfacet lobes (GGX, Beckmann) by the trapezoidal rule in u = ln(tan^2 t / alpha^2)
-   (docs/derivations.md section 5), at the float rounding floor against a long double quadrature.
-   Convolution: int L F = sum_i L_i F_i (shl_sh_dot); a ZH lobe about w: shl_sh_conv_zh,
-   O(n^2); two ZH about u and v: sum_l a_l b_l P_l(u . v) by the addition theorem
-   (shl_zh_dot_zh, O(n); docs/derivations.md section 6).
-   Irradiance of a ZH radiance L about w at a normal n, z = w . n (docs/derivations.md section 6):
-     E(z) = sum_l A_l K_l L_l P_l(z), A_l = pi Lambda_l(1)   (A_0 = pi, A_1 = 2pi/3, A_2 = pi/4)
-   which for n = 3 is [HVL] Appendix B 2x2 form c3 L2 z^2 + 2 c2 L1 z + c4 L0 - c5 L2. */
+/* >>brdf -------------------------------------------------------------------------------------
+   ZH of circularly symmetric BRDF lobes, convolution, irradiance, windowing, band selection.
+   (docs/derivations.md sec. 13.40) */
 
 /* out_zh[l] = scale K_l Lambda_l(e), l < n (n already clamped, >= 1), e in [0, 1e30]. */
 SHLIGHT_INLINE void shli_zh_lambda(int n, shli_real e, shli_real scale, float *out_zh) {
@@ -8392,12 +8114,8 @@ SHLIGHT_INLINE float shl_sh_dot(int n, const float *a, const float *b) {
 }
 
 #if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
-/* C only, for n^2 > SHLI_YBUF_COEFFS: Y_i(d) of shli_sh_eval_xyz's portable path (the same
-   normalisation and recurrence as shli_sh_core_loop) consumed as it is produced, without an
-   n^2 buffer. io == NULL: returns sum_i a[i] w_l Y_i accumulated in double, w_l = float(
-   sqrt(4 pi / (2l+1)) zh[l]) (zh != NULL) or 1: the values and the rounding of the buffered
-   kernels (Y and w_l Y in float, the sum in double). io != NULL, returns 0: e != 0:
-   io[i stride] += e Y_i; e == 0: io[i stride] = Y_i. */
+/* C only, n^2 > SHLI_YBUF_COEFFS: Y_i(d) consumed as produced (no n^2 buffer). io == NULL: returns
+   sum_i a[i] w_l Y_i; else io[i stride] += e Y_i (e == 0: =). (docs/derivations.md sec. 13.41) */
 SHLIGHT_CPU_INLINE shli_real shli_sh_ystream(int n, float dx, float dy, float dz, const float *a,
                                              const float *zh, float e, float *io,
                                              ptrdiff_t stride) {
@@ -8682,23 +8400,9 @@ SHLIGHT_INLINE int shl_zh_bands_for(int n, const float *zh, float target) {
   return m;
 }
 
-/* >>hvl -------------------------------------------------------------------------------------
-   Harmonics Virtual Lights ([HVL] sec. 5; docs/derivations.md section 6, corrections E8, E9). An
-   HVL j is a sphere of radius r at y with normal n_j and power Phi_j, whose emission towards the
-   shading point x is the reconstruction of an SH emission function F' (the BRDF projected without
-   the cosine, in world axes). With w_j = (y - x) / |y - x| and n_x the normal at x:
-     eq. 20  L_j = Phi_j (F' . Y(-w_j)) G_j(-w_j)                      (shl_hvl_radiance)
-     eq. 21  G_j = max(0, n_j . -w_j) H(n_x, w_j) / (pi r^2)            (shl_hvl_geometric)
-     eq. 19  L_o = L_j (L . F), L = the SH of the unit cap that the sphere subtends at x
-             (shl_zh_cap rotated to w_j; shl_hvl_contribution, O(n^2)), or with a ZH lobe F
-             about its own axis, shl_zh_dot_zh (shl_hvl_contribution_zh, O(n)).
-   H is the fraction of the cap (half-angle a, sin a = s = min(r/d, 1), d = |y - x|) above the
-   horizon of n_x, with beta the angle between n_x and w_j: exact (two-cap intersection,
-   written without cancellation for small caps, docs/derivations.md section 6; shl_hvl_horizon). The
-   cheap variant is [HVL] smoothstep (eq. 22) with the clamp corrected (correction E8
-   (docs/derivations.md section 12): lower bound pi/2 - a, S clamped to [0, 1]): max abs error
-   0.039-0.089 against the exact H (shl_hvl_horizon_smoothstep). The angles use the own atan2
-   of >>light. */
+/* >>hvl --------------------------------------------------------------------------------------
+   Harmonics Virtual Lights: eq. 19-21 with the exact horizon fraction H (or the corrected
+   smoothstep). (docs/derivations.md sec. 13.42) */
 
 /* exact H for the cosine c (in [-1, 1]) between the normal and the axis */
 SHLIGHT_INLINE float shli_hvl_h(shli_real c, float r, float d) {
@@ -9029,38 +8733,10 @@ SHLIGHT_INLINE float shl_hvl_radius_fov_tan(float d, float fov, int hvl_count) {
   return SHLIGHT_FLOAT(g);
 }
 
-/* >>brdftab ---------------------------------------------------------------------------------
-   Kautz-style BRDF SH tables ([HVL] sec. 4.2, [KSS02]): for outgoing directions w_o on a
-   grid, the SH (n bands, the >>basis convention) of F(w_i) = cos(theta_i) f_s(w_o, w_i) and of
-   F'(w_i) = f_s(w_o, w_i), in the local frame (normal +z, tangent +x), w_i over the upper
-   hemisphere (both are 0 below it). Built on the CPU (shl_brdf_table_build, the CPU-only part
-   of this section after >>grid's CPU declarations); the lookup kernels below have GLSL twins.
-   Table layout (the CPU struct shl_brdf_table, the file format and the GPU layout contract):
-     data[((p * n_theta + t) * 2 + k) * n^2 + i]
-   p < n_phi, t < n_theta, k = 0: F (with the cosine), k = 1: F' (without), i < n^2 the SH
-   index. Outgoing grid (SHLT grid 1, the only one): sample t at the theta_o where the grid
-   variable u(theta_o) = t / (n_theta - 1) (n_theta = 1: theta_o = 0), with
-     U(d) = (pi/2 - d) + c ln((pi/2 + d0) / (d + d0)),  u = U(d) / U(0),  d = pi/2 - theta_o,
-   c = 0.05, d0 = 1e-6 (shli_brdf_grid_u): the end samples are theta_o = 0 and 90 degrees; the
-   step is uniform in theta_o at normal incidence and uniform in ln(cos theta_o) towards
-   grazing, where F' of a microfacet BRDF grows like ln(1 / cos theta_o) (linear in u there,
-   so interpolated almost exactly) and where a sharp lobe is cut by the horizon. At 90 samples:
-   1.43 deg steps at 0 deg, 1.14 deg at 80 deg, 0.38 deg at 89 deg, then cos theta_o stepping
-   by a factor 1.67 (0.05 deg steps at 89.9 deg). The last sample holds F and F' at cos theta_o = d0
-   (F' diverges at exactly 90 degrees; shl_brdf_table_theta gives the sample angles). Sample p at
-   phi_o = 2 pi p / n_phi (p = 0: phi_o = 0). n_phi = 1: an isotropic table, sampled at phi_o = 0
-   ([HVL] eq. 17-18); n_phi > 1: anisotropic, periodic in phi_o. On a GPU the same flat float
-   array is an SSBO (std430 float[]), or an RGBA32F texture of n_theta * n_phi * 2 * n^2 / 4 texels
-   read linearly (n^2 * 2 floats per sample: whole texels for every n >= 2), in the same order.
-   Lookup (shl_brdf_table_cell, shl_brdf_table_lookup): d = atan2(w_z, |w_xy|) (own atan2, see
-   >>light; w_z < 0 clamps to the horizon, w_xy = 0 is normal incidence); isotropic tables of
-   4 or more samples cubic in u (4 samples, Lagrange), others linear in u between the two
-   bracketing samples, over the whole range [0, 90] degrees; anisotropic tables also
-   linear in phi_o = atan2(w_y, w_x) (periodic). Isotropic tables are rotated about z by phi_o
-   (shl_sh_rotate_z): the result is the SH of F in the local frame for that w_o, whatever its
-   azimuth. Error: the interpolation error of the tabulated function, O(h^4) in the sample step
-   for isotropic tables, O(h^2) for anisotropic ones (docs/brdf-tables.md has it against theta_o for
-   each model), plus float rounding. */
+/* >>brdftab ----------------------------------------------------------------------------------
+   BRDF SH tables: data[((p * n_theta + t) * 2 + k) * n^2 + i] (k = 0: F with the cosine, 1: F');
+   grid of shli_brdf_grid_u; lookup cubic / linear in u, linear in phi_o.
+   (docs/derivations.md sec. 13.43) */
 
 /* shli_brdf_grid_u: the table grid variable u in [0, 1] (see >>brdftab) of d = pi/2 - theta_o
    in [0, pi/2]: u(pi/2) = 0 (normal incidence), u(0) = 1 (grazing). */
@@ -9234,33 +8910,9 @@ SHLIGHT_INLINE void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int whi
   }
 }
 
-/* >>ssf -------------------------------------------------------------------------------------
-   Screen-space SH filter for instant global illumination with virtual point lights (VPLs):
-   [SSF] (Segovia & Wald) on top of instant radiosity (Keller 1997), n x m interleaved
-   sampling (Keller & Heidrich 2001) and IGI's discontinuity filter (Wald et al. 2002).
-   VPL. A VPL j at y with normal n_y and flux Phi is a cosine emitter: its radiant intensity
-   towards the unit direction u is Phi max(0, n_y . u) / pi (the 1/pi makes the emitted flux,
-   the intensity integrated over the hemisphere, equal to Phi). Seen from a receiver x, with
-   d = |y - x| and w = (y - x) / d, it is a delta of incoming radiance in the direction w,
-     L_j(w') = e delta(w' - w),  e = Phi max(0, n_y . -w) / (pi max(d^2, dmin^2))
-   (dmin: the clamp distance, the usual bound on the 1/d^2 singularity of VPLs; the paper's
-   sec. 3.2 leaves this constant to the VPL generation). So its SH coefficients ([SSF] eq. 1)
-   are e Y_i(w) (shl_ssf_vpl_sh) and its irradiance at a normal n is e max(0, n . w)
-   (shl_ssf_vpl_irradiance); a Lambertian receiver of albedo kd reflects kd / pi of that.
-   VPLs from a spot light's shadow map: flux and texel solid angle in docs/derivations.md section
-   11.
-   Interleaved sampling ([SSF] sec. 2.3). The VPLs are split into tile_x tile_y disjoint sets,
-   set s holding the VPLs j with j mod (tile_x tile_y) = s; pixel (px, py) uses set
-   s = (py mod tile_y) tile_x + (px mod tile_x) (shl_ssf_interleave), so every tile_x x tile_y
-   tile of pixels uses every VPL exactly once. A pixel's estimate scales the flux of its set
-   by tile_x tile_y (an unbiased estimate of the sum over all VPLs).
-   Filter ([SSF] sec. 3). Per pixel the SH of the incoming radiance of its set (RGB: three
-   SH vectors), then the box filter over the tile_x x tile_y window around the pixel with the
-   discontinuity weight of shl_ssf_weight (geometric normals and positions: the filter must not
-   look at a normal map), sum w_k L_k / sum w_k; finally the irradiance at the normal-mapped
-   normal from the filtered SH (shl_ssf_irradiance, the convolution with the clamped cosine;
-   for RGB rotate the cosine once, shl_zh_cosine_power(n, 1) + shl_zh_rotate, and take
-   shl_sh_dot per channel). */
+/* >>ssf --------------------------------------------------------------------------------------
+   Screen-space SH filter for virtual point lights (VPLs): VPL SH, interleaved sampling, the
+   discontinuity filter. (docs/derivations.md sec. 13.44) */
 
 /* The VPL seen from x (see >>ssf): out_g the frame of shli_cap_frame with the unit direction
    w = out_g[0..2] from x to y; returns e, or 0 when the VPL adds nothing. */
@@ -9435,27 +9087,8 @@ SHLIGHT_INLINE float shl_ssf_irradiance(int n, const float *sh, const float nrm[
 extern "C" {
 #endif
 
-/* CPU-only part of >>brdftab (declared here, defined with SHLIGHT_IMPLEMENTATION): analytic
-   BRDFs, table build by quadrature, the SHLT table file, the MERL measured-BRDF loader.
-   Analytic BRDFs (shl_brdf_params.model), w_o, w_i unit, local frame, both above the surface
-   (z > 0; f_s = 0 otherwise), kd = diffuse albedo, ks = specular scale:
-     SHLIGHT_BRDF_LAMBERT      kd / pi
-     SHLIGHT_BRDF_PHONG        kd / pi + ks (e + 1) / (2 pi) max(0, r . w_i)^e, r = the mirror
-                               direction of w_o, e = exponent (the lobe of docs/derivations.md
-                               section 5:
-   its integral over the sphere is ks, so albedo <= kd + ks) SHLIGHT_BRDF_BLINN_PHONG  kd / pi + ks
-   D F G2 / (4 cos_i cos_o), D = (e + 2) / (2 pi) (n.h)^e, G2 with Beckmann's Lambda at alpha =
-   sqrt(2 / (e + 2)) (Walter et al. 2007's equivalence) SHLIGHT_BRDF_BECKMANN     kd / pi + ks D F
-   G2 / (4 cos_i cos_o), anisotropic Beckmann D (alpha_x, alpha_y) and its exact Smith Lambda (erf)
-     SHLIGHT_BRDF_GGX          the same with the anisotropic GGX (Trowbridge-Reitz) D and Lambda
-   h = normalise(w_i + w_o); G2 = 1 / (1 + Lambda(w_o) + Lambda(w_i)) (height-correlated
-   Smith); F = f0 + (1 - f0) (1 - w_i . h)^5 (Schlick; w_i . h taken as the mean of w_i . h
-   and w_o . h, equal for unit input, so that f stays exactly reciprocal for float input a few
-   ulp off unit). Alpha is the slope roughness (GGX alpha = roughness^2 in the usual artist
-   mapping). All five are reciprocal. Phong, Beckmann and GGX keep albedo <= kd + ks
-   (tests/test_brdftab: max 0.981 Phong e = 50, 0.997 GGX alpha 0.05, 1 + 1e-7 Beckmann alpha
-   0.05, with ks = 1, f0 = 1); Blinn-Phong does not quite, since Beckmann's Lambda is not its
-   own: albedo up to 1.068 ks at e = 10, 1.0015 ks at e = 500 (at cos theta_o = 1e-6). */
+/* CPU-only part of >>brdftab (SHLIGHT_IMPLEMENTATION): analytic BRDFs (Lambert, Phong, Blinn-Phong,
+   Beckmann, GGX), table build, SHLT files, MERL loader. (docs/derivations.md sec. 13.45) */
 /* SHLT file: version written and the only one read (version 1 files, of the cell-centred grid
    of earlier releases, give SHLIGHT_EVERSION: rebuild them); header bytes before the payload;
    the outgoing grid id recorded in the header (1: the grid of >>brdftab, the only one). */
@@ -9621,19 +9254,9 @@ SHLI_TAB_DECL(float, sh_brs, 376);
 SHLI_TAB_DECL(float, sh_bpoly, 63);
 #define SHLI_SH_BPOLY (*shli_tab_sh_bpoly())
 
-/* The batch kernels of n <= SHLIGHT_UNROLLED_BANDS, nv = 1 or 2 vectors of directions a call
-   (two: independent chains side by side, and the two stores of a row one 128-byte pair of
-   lines); output i of lane j of vector v at out[i stride + v SHLI_W + j]; nt: streaming
-   (non-temporal) stores, for outputs far larger than the caches.
-   n <= SHLI_SH_BPOLY_BANDS: the Horner forms in z^2 times (x + iy)^m, d taken as unit, one
-   body instantiated per literal n so that its loops unroll and the table loads fold to
-   constants (straight-line code from one source; it pays there: bench/bench_batch.c).
-   7..16 bands: the float Reinsch form of the scalar kernel per column m at t = 1 - |z| / |d|
-   (X_l^m, then Y = X U, X V with the parity sign folded into U, V by a XOR, SHLI_VFLIP) as a
-   loop over run-time n, two bands a trip so that the parity of l - m is fixed in the body;
-   products and sums kept apart (SHLI_VMULS, SHLI_VFMS2, SHLI_VMADDS: never FMAs on AVX-512, see
-   there); column 0, the longest chain, spread over the others (its band m runs with column m).
-   Bit for bit the straight-line kernels this replaces. */
+/* Batch kernels of n <= SHLIGHT_UNROLLED_BANDS, nv = 1 or 2 vectors a call: output i of lane j of
+   vector v at out[i stride + v SHLI_W + j]; nt: streaming stores.
+   (docs/derivations.md sec. 13.46) */
 #define SHLI_SH_BPOLY_BANDS 6
 #if defined(__clang__)
 #define SHLI_UNROLL_BATCH _Pragma("unroll")
@@ -9996,13 +9619,8 @@ static void shli_sh_batch_vec1(int n, const float *x, const float *y, const floa
 /* streaming stores from this much output on (bytes; bench/bench_batch.c: below it the rows
    stay in the caches and plain stores win) */
 #define SHLI_BATCH_STREAM_BYTES (256.0 * 1024.0)
-/* Below it, with an output larger than L1 (more than 32 KiB, 64 KiB from 7 bands; rows count
-   floats apart, a pair of vectors writing 2 n^2 lines), each pair prefetches the next pair's
-   lines for writing while it computes (PREFETCHW where the target has it): the lines of two
-   pairs, 4 n^2 x 64 bytes, fit L1 up to 10 bands; more bands lose (bench/bench_batch.c). Not
-   where rows a multiple of 4 KiB apart (count a multiple of 1024) share their L1 sets and
-   either more than 9 rows compete for them or the output stays in L1 anyway: there the
-   prefetches only evict lines. */
+/* Below it, for outputs larger than L1: each pair prefetches the next pair's lines for writing.
+   (docs/derivations.md sec. 13.47) */
 #define SHLI_BATCH_PREFETCH_BANDS 10
 #if defined(__GNUC__) || defined(__clang__)
 #define SHLI_PREFETCHW(p) __builtin_prefetch((p), 1, 3)
@@ -10950,12 +10568,8 @@ static void shli_tab_hnode(int n, const shli_tabsrc *src, const double wo[3], co
 
 #define SHLI_HALF_GRADE 3
 
-/* the half-vector quadrature of an isotropic microfacet lobe (see shl_brdf_table_build) at
-   order q: w_i = 2 (w_o . h) h - w_o, d w_i = 4 (w_o . h) d h, h = cos(t) z + sin(t) (cos(ph) a
-   + sin(ph) b) with a the azimuth of w_o. D depends on t only, with the width alpha whatever
-   theta_o (no foreshortening), and w_i is above the horizon iff cos(ph) > cs(t) =
-   -cos_o cos(2t) / (sin_o sin(2t)): full circles for t < (pi/2 - theta_o) / 2, arcs
-   (-pm, pm) up to t = (pi/2 + theta_o) / 2. */
+/* the half-vector quadrature of an isotropic microfacet lobe at order q.
+   (docs/derivations.md sec. 13.48) */
 static void shli_tab_half(int n, const shli_tabsrc *src, const double wo[3], int q, double *acc,
                           float *y, const double *xg, const double *wg) {
   double br[24];
@@ -11087,17 +10701,8 @@ static void shli_tab_snode(int n, const shli_tabsrc *src, const double wo[3], do
   }
 }
 
-/* the half-vector quadrature of an anisotropic microfacet lobe at order q, in the stretched
-   slopes (x, y) = (h_x / (alpha_x h_z), h_y / (alpha_y h_z)) = tan(u) (cos(ph), sin(ph)), where
-   D is isotropic of width 1: d omega_h = alpha_x alpha_y tan(u) sec(u)^2 cos(theta_h)^3 du dph.
-   In slopes, w_i is above the horizon iff the slope of h lies in the disc of radius 1 / cos_o
-   about w_o's (x, y) / cos_o: the stretched ray of azimuth ph leaves that ellipse once, at
-   r_max(ph) = cos_o / (sqrt(vw^2 + cos_o^2 |v|^2) - vw), v = (alpha_x cos(ph), alpha_y sin(ph)),
-   vw = v . w_o. Outer ph: panels at ph0 + k pi/2, where vw = 0 at ph0 and ph0 + pi (there
-   r_max changes from ~cos_o / (2 |vw|) to ~2 vw / (cos_o |v|^2) within ~cos_o |v| / |vw'| rad),
-   graded geometrically (1/4) towards ph0 and ph0 + pi down to that width. Inner u in
-   [0, atan(r_max)]: panels at atan(3^k), -2 <= k < 8, graded (1/4) towards the end, where w_i
-   meets the horizon. */
+/* the half-vector quadrature of an anisotropic microfacet lobe at order q, in stretched slopes.
+   (docs/derivations.md sec. 13.49) */
 static void shli_tab_aniso(int n, const shli_tabsrc *src, const double wo[3], int q, double *acc,
                            float *y, const double *xg, const double *wg) {
   double br[128];
@@ -11422,11 +11027,8 @@ SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_pa
 }
 
 /* ---- MERL ---- */
-/* MERL reconstruction, one axis at a time (phi_d, then theta_d, then theta_h): the value at
-   index coordinate x from samples j0 = floor(x) (at most nj - 2, so that beyond the last sample
-   the last two extrapolate) and j0 + 1, each valid or not; both valid: linear; one valid:
-   extrapolated from it and its neighbours on its other side (shli_merl_extrap); none: invalid
-   (returns 0). get(j) gives the value of index j and whether it is valid. */
+/* MERL reconstruction, one axis at a time: linear from valid samples, extrapolated at the edges
+   (shli_merl_extrap); none valid: returns 0. (docs/derivations.md sec. 13.50) */
 typedef struct shli_merlq {
   const shl_merl *m;
   int c;
@@ -11579,15 +11181,8 @@ static double shli_merl_f(const shl_merl *m, int c, const double wo[3], const do
   if (q.u[2] >= (double)m->n_phi_d) {
     q.u[2] -= (double)m->n_phi_d;
   }
-  /* f cos(theta_h) cos(theta_d) = f (cos_i + cos_o) / 2 is reconstructed, which stays smooth
-     where f of a rough surface grows like 1 / (cos_i + cos_o) at grazing, then divided by the
-     query's factor (cos_i + cos_o) / 2, floored at 1e-9. Where the cell reaches past the valid
-     samples (negative in MERL files, 0 where a direction of the sample lies below the surface;
-     beyond the last theta_h and theta_d samples, 88 and 89 degrees in MERL files), each axis
-     extrapolates from the last valid samples (quadratic where 4 of them agree on the curvature:
-     near the horizon the quantity is curved on the scale of the grid step, linear otherwise). With
-     no valid sample in reach, the theta_d coordinate steps down one layer at a time (held along
-     theta_d, where the sampled configurations end first). */
+  /* f (cos_i + cos_o) / 2 is reconstructed, then divided by the query's factor (floored at 1e-9).
+     (docs/derivations.md sec. 13.51) */
   for (;;) {
     if (shli_merl_axis(&q, 0, &v)) {
       break;
