@@ -1246,14 +1246,14 @@ typedef double shli_real;
 #define SHLIGHT_UNUSED(x) ((void)(x))
 /* 1 (GLSL): zeroing an output array by constant-trip per-band code, which shader compilers keep
    in registers; 0 (C): the plain loop */
-#ifndef SHLIGHT_BY_BANDS /* 1 in a C build: the GLSL shapes (tests/bands_impl.c holds them to C)   \
+#ifndef SHLIGHT_BY_BANDS /* 1 in a C build: the GLSL shapes (tests/bands_impl.c holds them to C) \
                           */
 #define SHLIGHT_BY_BANDS 0
 #endif
 /* 1 (GLSL): per-coefficient sums over several arrays as one flat run-time loop, which shader
    compilers do not unroll into huge bodies; 0 (C): nested loops (the same sums, same order) */
 #define SHLIGHT_FLAT_LOOPS 0
-#define SHLIGHT_SET3(o, a, b, c)                                                                   \
+#define SHLIGHT_SET3(o, a, b, c) \
   ((o)[0] = (a), (o)[1] = (b), (o)[2] = (c))         /* GLSL: o = vec3(a, b, c) */
 #define SHLIGHT_SIGN1(x) ((float)copysign(1.0, (x))) /* +-1 with the sign bit of x, branch-free */
 #define SHLIGHT_FTOI(x) ((int)(x))                   /* truncation toward zero, as GLSL int() */
@@ -1285,7 +1285,7 @@ typedef double shli_real;
 #define SHLIGHT_EDGE_STOKES_ADAPT 105 /* internal: EXACT's adaptive Stokes rule */
 #define SHLIGHT_ADAPT_LEVELS 7        /* its most halvings (128 panels of 5 nodes per half-arc) */
 #define SHLIGHT_ADAPT_TOL 1.0e-9      /* its stop: two successive levels this close (GLSL 2e-6) */
-#define SHLIGHT_EDGE_FAST_ON                                                                       \
+#define SHLIGHT_EDGE_FAST_ON \
   1                     /* GLSL: 0 unless the host defines it (compile cost, docs/accuracy.md) */
 #define SHLIGHT_LANES 8 /* edges per block of the FAST edge loop (GLSL: 1) */
 #define SHLIGHT_FAST_PAD (SHLIGHT_CLIP_MAX + SHLIGHT_LANES)
@@ -1299,7 +1299,7 @@ typedef double shli_real;
 #define SHLIGHT_GGX_DEPTH 8
 #define SHLIGHT_GGX_HOR 4.0
 #define SHLIGHT_GGX_KAP 3.0
-#define SHLIGHT_HALF_K                                                                             \
+#define SHLIGHT_HALF_K \
   8 /* sub-edges per light edge in half-vector space (shl_polygon_blinn_phong) */
 
 /* >>basis -----------------------------------------------------------------------------------
@@ -1319,14 +1319,12 @@ SHLIGHT_INLINE int shli_bands(int n) {
   return n;
 }
 
-/* The tables of >>generated are read through accessors (a C++ static const array cannot be
-   declared before its definition): SHLI_TAB_DECL(T, name, N) declares shli_tab_name(), which
-   returns a pointer to the whole T[N] table (after inlining, the same array access), and the
-   sections read the table as SHLI_NAME through a #define; >>generated defines the accessor
-   after the table (SHLI_TAB_FN). */
+/* Tables of >>generated are read through accessors: SHLI_TAB_DECL(T, name, N) declares
+   shli_tab_name() (a pointer to the whole T[N]), SHLI_NAME #defines read it, SHLI_TAB_FN defines it
+   after the table. (docs/derivations.md sec. 13.1) */
 #define SHLI_TAB_FN(name) SHLIGHT_CPU_INLINE const shli_tab_##name##_t *shli_tab_##name(void)
-#define SHLI_TAB_DECL(T, name, N)                                                                  \
-  typedef T shli_tab_##name##_t[N];                                                                \
+#define SHLI_TAB_DECL(T, name, N) \
+  typedef T shli_tab_##name##_t[N]; \
   SHLI_TAB_FN(name)
 
 /* @generated sh_tab: defined in >>generated at the end of the file */
@@ -1442,13 +1440,9 @@ SHLIGHT_INLINE void shli_sh_poly_6(float x, float y, float z, float *out_y);
 SHLIGHT_INLINE void shli_sh_core(int n, shli_real x, shli_real y, shli_real z, shli_real t,
                                  float sg, float *out_y);
 
-/* Across-m SIMD core (C only, AVX-512): one 16-lane register holds X_l^m of every order m of
-   band l, so a band costs one Reinsch step (4 vector ops) and its outputs two multiplies, one
-   lane reversal and two masked stores. Float lanes: the Reinsch form keeps the float error
-   within the stated targets (docs/accuracy.md, tests/test_basis); the scalar kernel (double) stays
-   the reference and SHLIGHT_NO_SIMD selects it. Used by shl_sh_eval for 7 <= n <= 64 (n <= 16: the
-   rescaled step of SHLI_SH_LANES_S, 256-bit lanes with AVX-512VL), and the Horner forms across the
-   outputs for n = 4..6 (AVX-512VL). */
+/* Across-m SIMD core (C only, AVX-512): one 16-lane register holds X_l^m of every order m of band
+   l; float lanes, SHLIGHT_NO_SIMD selects the double scalar kernel.
+   (docs/derivations.md sec. 13.2) */
 #if !defined(SHLIGHT_NO_SIMD) && defined(__AVX512F__)
 #define SHLIGHT_SIMD_EVAL 1
 #include <immintrin.h>
@@ -1471,13 +1465,8 @@ SHLI_TAB_DECL(int, sh_podd, 5);
 #define SHLI_SH_PODD (*shli_tab_sh_podd())
 #endif
 #ifdef __AVX512VL__
-/* n = 4..6 (C only, AVX-512VL): the Horner forms of shli_sh_poly_<n> evaluated across the
-   outputs, lane i = output i, so that the n^2 results leave in ceil(n^2 / 8) 256-bit stores (a
-   float store per output bounds the scalar form at n^2 cycles on Zen 4): per vector two FMAs in
-   z^2, a multiply by z on the odd lanes and one by (x + iy)^|m| (a two-source permute of the
-   powers, lane m of c and s). Same coefficients and the same float input as shli_sh_poly_<n>.
-   256-bit vectors: on Zen 4 they issue on both FMA pipes and store in one cycle (bench: n = 6 at
-   0.37 of the loop, 0.47-0.48 with 512-bit vectors, 0.47-0.55 scalar). */
+/* n = 4..6 (C only, AVX-512VL): the Horner forms of shli_sh_poly_<n> across the outputs, lane i =
+   output i; same coefficients and input as shli_sh_poly_<n>. (docs/derivations.md sec. 13.3) */
 SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_poly(int n, float x, float y, float z, float *out_y) {
   __m256 vz = _mm256_set1_ps(z), z2 = _mm256_set1_ps(z * z), one = _mm256_set1_ps(1.0f);
   __m256 c = _mm256_mask_blend_ps((__mmask8)0xAA, one, _mm256_set1_ps(x));
@@ -1632,13 +1621,8 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16y(int n, float x, float y, float z
   }
 }
 
-/* The order lanes of the 512-bit across-m cores for n <= 16 bands at (x, y, z), |d| ~ 1:
-   lv[0] + i lv[1] has (x + iy)^m in lane m (from the raw x, y, as the product of
-   (x + iy)^(2^b) over the set bits b of m), renormalised by |d|^-m = 1 + m dl (to O(e^2),
-   e = |d|^2 - 1 formed without cancellation near the poles; one lane vector off the chain of
-   powers) and times sg^m (parity: X_l^m(z) = sg^(l-m) X_l^m(|z|)); lv[2] + i lv[3] the same
-   times sg (odd bands); lv[4] = t = s2 / (1 + |z|), which is 1 - |z| / |d| to a relative
-   O(|d| - 1): no normalisation, no cancellation at the poles. */
+/* The order lanes of the 512-bit across-m cores for n <= 16 at (x, y, z), |d| ~ 1: lv[0..1] (x +
+   iy)^m renormalised, lv[2..3] the same times sg, lv[4] = t. (docs/derivations.md sec. 13.4) */
 SHLIGHT_CPU_INLINE void shli_sh_lanes512(int n, float x, float y, float z, __m512 *lv) {
   static const unsigned short bits[4] = {0xAAAA, 0xCCCC, 0xF0F0, 0xFF00};
   float s2 = x * x + y * y;
@@ -1702,55 +1686,52 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16(int n, float x, float y, float z,
   }
 }
 
-/* n > 16: up to four registers (chunks of 16 orders) per band. Band l's step in chunk h, the
-   constants as in shli_sh_reinsch (float: s2_l q from SHLI_SH_LANEQ, masked: orders m >= l get
-   the identity step; l + m, m - l + 1 from SHLI_SH_LANEK), then the cosines and the sines
-   (descending m). xv, dd, cc, ss: named registers (arrays indexed by a run-time chunk number
-   went to the stack, on the band chain). */
-#define SHLI_SH_CHUNK512(h, xv, dd, cc, ss)                                                        \
-  do {                                                                                             \
-    __mmask16 mk = (__mmask16) ~((__mmask64)0xFFFF << (l - 16 * (h)));                             \
-    __m512 gq = _mm512_maskz_loadu_ps(mk, lq + 16 * (h)), ys;                                      \
-    __m512 at = _mm512_mul_ps(gq, wt);                                                             \
-    __m512 cn = _mm512_mul_ps(gq, _mm512_loadu_ps(SHLI_SH_LANEK + 64 + 16 * (h)-l));               \
-    __m512 gg =                                                                                    \
-        _mm512_mask_mul_ps(one, mk, gq, _mm512_loadu_ps(SHLI_SH_LANEK + 63 + 16 * (h) + l));       \
-    int top = l < 16 * (h) + 15 ? l : 16 * (h) + 15; /* largest order of the chunk in band l */    \
-    int lo = (h) > 0 ? 16 * (h) : 1;                 /* smallest sine order of the chunk */        \
-    dd = _mm512_fnmsub_ps(at, xv, _mm512_mul_ps(cn, dd)); /* D = c D - alpha t X, cn = -c */       \
-    xv = _mm512_fmadd_ps(gg, xv, dd);                                                              \
-    ys = _mm512_permutexvar_ps(                                                                    \
-        _mm512_loadu_si512((const void *)(SHLI_SH_LANER + 15 - (top - 16 * (h)))),                 \
-        _mm512_mul_ps(xv, ss));                                                                    \
-    _mm512_mask_storeu_ps(out_y + l * l + l - top, (__mmask16)((2u << (top - lo)) - 1u), ys);      \
-    _mm512_mask_storeu_ps(out_y + l * l + l + 16 * (h),                                            \
-                          (__mmask16)((2u << (top - 16 * (h))) - 1u), _mm512_mul_ps(xv, cc));      \
+/* n > 16: band l's step in chunk h (16 orders), constants as in shli_sh_reinsch, then the cosines
+   and the sines; xv, dd, cc, ss: named registers. (docs/derivations.md sec. 13.5) */
+#define SHLI_SH_CHUNK512(h, xv, dd, cc, ss) \
+  do { \
+    __mmask16 mk = (__mmask16) ~((__mmask64)0xFFFF << (l - 16 * (h))); \
+    __m512 gq = _mm512_maskz_loadu_ps(mk, lq + 16 * (h)), ys; \
+    __m512 at = _mm512_mul_ps(gq, wt); \
+    __m512 cn = _mm512_mul_ps(gq, _mm512_loadu_ps(SHLI_SH_LANEK + 64 + 16 * (h)-l)); \
+    __m512 gg = \
+        _mm512_mask_mul_ps(one, mk, gq, _mm512_loadu_ps(SHLI_SH_LANEK + 63 + 16 * (h) + l)); \
+    int top = l < 16 * (h) + 15 ? l : 16 * (h) + 15; /* largest order of the chunk in band l */ \
+    int lo = (h) > 0 ? 16 * (h) : 1;                 /* smallest sine order of the chunk */ \
+    dd = _mm512_fnmsub_ps(at, xv, _mm512_mul_ps(cn, dd)); /* D = c D - alpha t X, cn = -c */ \
+    xv = _mm512_fmadd_ps(gg, xv, dd); \
+    ys = _mm512_permutexvar_ps( \
+        _mm512_loadu_si512((const void *)(SHLI_SH_LANER + 15 - (top - 16 * (h)))), \
+        _mm512_mul_ps(xv, ss)); \
+    _mm512_mask_storeu_ps(out_y + l * l + l - top, (__mmask16)((2u << (top - lo)) - 1u), ys); \
+    _mm512_mask_storeu_ps(out_y + l * l + l + 16 * (h), \
+                          (__mmask16)((2u << (top - 16 * (h))) - 1u), _mm512_mul_ps(xv, cc)); \
   } while (0)
 /* band l (then l + 1) in the chunks 0 .. nk - 1; P: the parity's order lanes, c or co */
-#define SHLI_SH_BAND512(nk, P)                                                                     \
-  do {                                                                                             \
-    const float *lq = SHLI_SH_LANEQ + (l * (l - 1)) / 2;                                           \
-    __m512 wt = _mm512_mul_ps(_mm512_set1_ps((float)(2 * l - 1)), vt);                             \
-    SHLI_SH_CHUNK512(0, x0, d0, P##0, P##s0);                                                      \
-    if ((nk) > 1) {                                                                                \
-      SHLI_SH_CHUNK512(1, x1, d1, P##1, P##s1);                                                    \
-    }                                                                                              \
-    if ((nk) > 2) {                                                                                \
-      SHLI_SH_CHUNK512(2, x2, d2, P##2, P##s2);                                                    \
-    }                                                                                              \
-    if ((nk) > 3) {                                                                                \
-      SHLI_SH_CHUNK512(3, x3, d3, P##3, P##s3);                                                    \
-    }                                                                                              \
-    ++l;                                                                                           \
+#define SHLI_SH_BAND512(nk, P) \
+  do { \
+    const float *lq = SHLI_SH_LANEQ + (l * (l - 1)) / 2; \
+    __m512 wt = _mm512_mul_ps(_mm512_set1_ps((float)(2 * l - 1)), vt); \
+    SHLI_SH_CHUNK512(0, x0, d0, P##0, P##s0); \
+    if ((nk) > 1) { \
+      SHLI_SH_CHUNK512(1, x1, d1, P##1, P##s1); \
+    } \
+    if ((nk) > 2) { \
+      SHLI_SH_CHUNK512(2, x2, d2, P##2, P##s2); \
+    } \
+    if ((nk) > 3) { \
+      SHLI_SH_CHUNK512(3, x3, d3, P##3, P##s3); \
+    } \
+    ++l; \
   } while (0)
 /* bands up to e (exclusive) with nk chunks, two a trip (even, odd) from an even l */
-#define SHLI_SH_BANDS512(nk, end)                                                                  \
-  for (; l + 1 < (end);) {                                                                         \
-    SHLI_SH_BAND512(nk, e);                                                                        \
-    SHLI_SH_BAND512(nk, o);                                                                        \
-  }                                                                                                \
-  if (l < (end)) {                                                                                 \
-    SHLI_SH_BAND512(nk, e);                                                                        \
+#define SHLI_SH_BANDS512(nk, end) \
+  for (; l + 1 < (end);) { \
+    SHLI_SH_BAND512(nk, e); \
+    SHLI_SH_BAND512(nk, o); \
+  } \
+  if (l < (end)) { \
+    SHLI_SH_BAND512(nk, e); \
   }
 SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, float *out_y) {
   static const unsigned short bits[4] = {0xAAAA, 0xCCCC, 0xF0F0, 0xFF00};
@@ -1830,11 +1811,8 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, fl
 #undef SHLI_SH_BANDS512
 #undef SHLI_SH_BAND512
 #undef SHLI_SH_CHUNK512
-/* AVX-512 gradient pass for 2..16 bands (C only; shl_sh_eval_grad uses it for n >= 5): lanes
-   follow the output array (band order), so each 16-float chunk of the AoS gradient is three
-   permutes and three multiply-adds from the previous band P (times (l-1)/|d|) and this band Q
-   (times l/|d|): out = c1 P[i1] + c2 P[i2] - Q[k] u[f % 3]; tables by tools/gen_grad_simd.py.
-   Agrees with the scalar pass to 3.8e-7 of max|grad| (tests/test_basis, native build). */
+/* AVX-512 gradient pass tables for 2..16 bands (C only; tools/gen_grad_simd.py): lanes follow the
+   output array. (docs/derivations.md sec. 13.6) */
 #if defined(__GNUC__) || defined(__clang__)
 #define SHLI_GRADV_ALIGN __attribute__((aligned(64)))
 #else
@@ -1861,57 +1839,49 @@ SHLI_TAB_DECL(float, gradv_coef, 1760);
    (P = a_l Y_{l-1}, Y = band l, both band order; w lane j = the per-band vector's component
    (16 c + j) % 3). The taps are SHLI_GRADV_TAP plus ly = 2l on the y lanes (one vector per
    c % 3), so only the coefficients are per band. */
-#define SHLI_GRADV_TAPS(c, t, ly)                                                                  \
+#define SHLI_GRADV_TAPS(c, t, ly) \
   _mm512_add_epi32(_mm512_loadu_si512((const void *)(SHLI_GRADV_TAP + 32 * (c) + 16 * (t))), (ly))
 /* bands 1..7: P (<= 13 lanes) and Y (<= 15 lanes) in one zmm each */
-#define SHLI_GRADV_CHUNK1(c, w, ly)                                                                \
-  r = _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c)),                                              \
-                      _mm512_permutexvar_ps(SHLI_GRADV_TAPS(c, 0, ly), p0),                        \
-                      _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c) + 16),                         \
-                                      _mm512_permutexvar_ps(SHLI_GRADV_TAPS(c, 1, ly), p0),        \
+#define SHLI_GRADV_CHUNK1(c, w, ly) \
+  r = _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c)), \
+                      _mm512_permutexvar_ps(SHLI_GRADV_TAPS(c, 0, ly), p0), \
+                      _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c) + 16), \
+                                      _mm512_permutexvar_ps(SHLI_GRADV_TAPS(c, 1, ly), p0), \
                                       _mm512_mul_ps(_mm512_permutexvar_ps(iy##c, q0), (w))))
 /* bands 8..15: two zmm each */
-#define SHLI_GRADV_CHUNK2(c, w, ly)                                                                \
-  r = _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c)),                                              \
-                      _mm512_permutex2var_ps(p0, SHLI_GRADV_TAPS(c, 0, ly), p1),                   \
-                      _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c) + 16),                         \
-                                      _mm512_permutex2var_ps(p0, SHLI_GRADV_TAPS(c, 1, ly), p1),   \
+#define SHLI_GRADV_CHUNK2(c, w, ly) \
+  r = _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c)), \
+                      _mm512_permutex2var_ps(p0, SHLI_GRADV_TAPS(c, 0, ly), p1), \
+                      _mm512_fmadd_ps(_mm512_loadu_ps(cf + 32 * (c) + 16), \
+                                      _mm512_permutex2var_ps(p0, SHLI_GRADV_TAPS(c, 1, ly), p1), \
                                       _mm512_mul_ps(_mm512_permutex2var_ps(q0, iy##c, q1), (w))))
-#define SHLI_GRADV_STORE(c)                                                                        \
-  if (nc == (c) + 1) {                                                                             \
-    _mm512_mask_storeu_ps(ol + 16 * (c), SHLI_GRADV_MASK(SHLI_GRADV_LASTM + l), r);                \
-    break;                                                                                         \
-  }                                                                                                \
+#define SHLI_GRADV_STORE(c) \
+  if (nc == (c) + 1) { \
+    _mm512_mask_storeu_ps(ol + 16 * (c), SHLI_GRADV_MASK(SHLI_GRADV_LASTM + l), r); \
+    break; \
+  } \
   _mm512_storeu_ps(ol + 16 * (c), r)
 /* per band: w lanes for chunks c % 3 == 0, 1, 2 (b u + e v; vK lane j = v[(K + j) % 3]), and 2l
    on the y lanes */
-#define SHLI_GRADV_BAND(l, b, e)                                                                   \
-  w0 = _mm512_mul_ps(_mm512_set1_ps(b), u0);                                                       \
-  w1 = _mm512_mul_ps(_mm512_set1_ps(b), u1);                                                       \
-  w2 = _mm512_mul_ps(_mm512_set1_ps(b), u2);                                                       \
-  if (v3) {                                                                                        \
-    w0 = _mm512_fmadd_ps(_mm512_set1_ps(e), s0, w0);                                               \
-    w1 = _mm512_fmadd_ps(_mm512_set1_ps(e), s1, w1);                                               \
-    w2 = _mm512_fmadd_ps(_mm512_set1_ps(e), s2, w2);                                               \
-  }                                                                                                \
-  ly0 = _mm512_maskz_set1_epi32((__mmask16)0x2492, 2 * (l));                                       \
-  ly1 = _mm512_maskz_set1_epi32((__mmask16)0x9249, 2 * (l));                                       \
+#define SHLI_GRADV_BAND(l, b, e) \
+  w0 = _mm512_mul_ps(_mm512_set1_ps(b), u0); \
+  w1 = _mm512_mul_ps(_mm512_set1_ps(b), u1); \
+  w2 = _mm512_mul_ps(_mm512_set1_ps(b), u2); \
+  if (v3) { \
+    w0 = _mm512_fmadd_ps(_mm512_set1_ps(e), s0, w0); \
+    w1 = _mm512_fmadd_ps(_mm512_set1_ps(e), s1, w1); \
+    w2 = _mm512_fmadd_ps(_mm512_set1_ps(e), s2, w2); \
+  } \
+  ly0 = _mm512_maskz_set1_epi32((__mmask16)0x2492, 2 * (l)); \
+  ly1 = _mm512_maskz_set1_epi32((__mmask16)0x9249, 2 * (l)); \
   ly2 = _mm512_maskz_set1_epi32((__mmask16)0x4924, 2 * (l))
 /* lane j = (a, b, c)[j % 3] */
-#define SHLI_GRADV_AOS(a, b, c)                                                                    \
+#define SHLI_GRADV_AOS(a, b, c) \
   _mm512_mask_blend_ps((__mmask16)0x4924, _mm512_mask_blend_ps((__mmask16)0x2492, (a), (b)), (c))
 
-/* AVX-512 gradient pass for 1..16 bands (C only), with optional per-band weights: from Y (y,
-   n * n floats) at the unit direction u = (nx, ny, nz), for coefficient i of band l
-     out_grad[i] = a_l grad H_l^m(u) + (b_l u + e_l v) Y_i
-   (H_l the solid harmonic |d|^l Y_l; its Cartesian derivatives are at most two terms of band
-   l-1, tables by tools/gen_grad_simd.py). bw == NULL: a_l = ir, b_l = -l ir, e_l = 0, the
-   gradient of Y(d / |d|) with ir = 1 / |d|, and out_y is not written. Otherwise bw[4 l ..] =
-   (kv_l, a_l, b_l, e_l), v = v3 (3 floats; NULL: e_l = 0) and out_y[i] = kv_l Y_i: the light
-   kernels' weights, at no cost per output (out_y may be y, but from band 8 each band's load
-   then waits on the previous band's store: the lights pass a copy). Lanes follow the output
-   array, so each 16-float chunk of the AoS gradient is three permutes, two FMAs and a
-   product. */
+/* AVX-512 gradient pass for 1..16 bands (C only): out_grad[i] = a_l grad H_l^m(u) + (b_l u + e_l v)
+   Y_i; bw == NULL: the gradient of Y(d / |d|) (out_y not written), else bw[4 l ..] = (kv_l, a_l,
+   b_l, e_l) and out_y[i] = kv_l Y_i. (docs/derivations.md sec. 13.7) */
 SHLIGHT_CPU_INLINE void shli_sh_grad_avx512(int n, const float *y, float nx, float ny, float nz,
                                             float ir, const float *bw, const float *v3,
                                             float *out_y, float (*out_grad)[3]) {
@@ -2185,11 +2155,9 @@ SHLIGHT_INLINE void shl_sh_eval(int n, const float d[3], float *out_y) {
   shli_sh_eval_xyz(n, d[0], d[1], d[2], out_y);
 }
 
-/* >>gradient --------------------------------------------------------------------------------
-   Cartesian gradient of Y_i(d / |d|) with respect to d, pole-free: with H_l the solid
-   harmonic (|d|^l Y_l), grad Y_l = (grad H_l(u) - l Y_l(u) u) / |d| at u = d / |d|, and each
-   Cartesian derivative of H_l^m is at most two terms of band l-1 (tools/gen_basis.py derives
-   and checks them). No division by sin(theta) anywhere. */
+/* >>gradient ---------------------------------------------------------------------------------
+   Cartesian gradient of Y_i(d / |d|), pole-free, through the solid harmonics.
+   (docs/derivations.md sec. 13.8) */
 
 /* Run-time loop of the gradient for n > SHLIGHT_UNROLLED_BANDS (C only): coefficients A, B, C
    of band l computed on the way (three square roots in double per order m, no table); every
@@ -2280,11 +2248,8 @@ SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, floa
    written) otherwise: zero, NaN, Inf, tiny or huge d take the exact path. */
 SHLIGHT_CPU_INLINE int shli_sh_eval_grad_avx512(int n, const float d[3], float *out_y,
                                                 float (*out_grad)[3]) {
-  /* |d|^2 in [1e-30, 1e30] (not NaN): the double square root and division, which the whole
-     kernel waits on, replaced by rsqrt14 and one Newton step on the FMA residual, in double
-     (|d|^2 of floats to 2^-53, 1 / |d| to 6e-9, a tenth of a float ulp, so each component
-     of d / |d| is within about one float rounding, as on the exact path; a float prologue
-     was as fast but 2 ulp off, which the Horner forms of n = 5, 6 turn into 1e-6) */
+  /* |d|^2 in [1e-30, 1e30]: rsqrt14 and one Newton step in double (1 / |d| to 6e-9).
+     (docs/derivations.md sec. 13.9) */
   __m128d xd = _mm_set_sd((double)d[0]);
   __m128d yd = _mm_set_sd((double)d[1]);
   __m128d zd = _mm_set_sd((double)d[2]);
@@ -2531,20 +2496,9 @@ SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const fl
 }
 #endif
 
-/* >>zonal -----------------------------------------------------------------------------------
-   Zonal harmonics (ZH) of a uniform spherical cap and the ZH -> SH rotation ([GRAD] eq. 9-11,
-   14-16 with correction E4 applied; docs/derivations.md sections 2 and 12). A sphere of radius r
-   seen from distance d covers the cap of half-angle a, s = sin a = min(r / d, 1), alpha = cos a.
-   The unit-radiance cap about +z projects onto band l as
-     L_0 = sqrt(pi) (1 - alpha) = sqrt(pi) s^2 / (1 + alpha)
-     L_l = sqrt(pi / (2l+1)) (P_{l-1}(alpha) - P_{l+1}(alpha))
-         = sqrt(pi (2l+1)) / (l (l+1)) s^2 P'_l(alpha)                             (l >= 1)
-   The second forms have no cancellation: alpha = sqrt((d - r)(d + r)) / d, and
-   P'_{l+1} = P'_{l-1} + (2l+1) P_l sums positive terms near alpha = 1 (small caps); the
-   printed first forms lose everything to 1 - alpha for small caps (float: every L_l = 0
-   below s = 2.4e-4; shl_zh_cap_printed keeps them for comparison). r <= 0 or NaN, NaN or
-   infinite d: every output 0. d <= r: the hemisphere (s = 1, alpha = 0), the limit at the
-   sphere's surface. Internal precision shli_real (double in C, float in GLSL). */
+/* >>zonal ------------------------------------------------------------------------------------
+   ZH of a uniform spherical cap (cancellation-free forms) and ZH -> SH rotation; shl_zh_cap_printed
+   keeps the printed forms. (docs/derivations.md sec. 13.10) */
 
 /* Per band l < 64: (2l+1)/(l+1), l/(l+1), 1/(l(l+1)) (0 for l = 0), sqrt(4 pi/(2l+1)),
    sqrt(pi(2l+1)): the Legendre recurrence and the ZH normalisations without divisions
@@ -2553,14 +2507,9 @@ SHLIGHT_INLINE void shl_sh_grad_from_spherical(int n, const float d[3], const fl
 SHLI_TAB_DECL(shli_real, zh_tab, 320);
 #define SHLI_ZH_TAB (*shli_tab_zh_tab())
 
-/* Geometry of a sphere seen from a point, in shli_real: (dx, dy, dz) = c - x, r = radius.
-   out_g[0..2]: unit axis (c - x) / |c - x|, (0, 0, 1) when x == c;
-   out_g[3]: 1 / |c - x|, capped at 1e20 (0 when x == c); out_g[4]: s^2 = min(r / |c - x|, 1)^2;
-   out_g[5]: alpha = sqrt((d - r)(d + r)) / d, 0 on or inside the sphere;
-   out_g[6]: 1 for a light, 0 for none (rr <= 0 or NaN, c - x NaN or infinite: out_g[0..5]
-   then hold the values of an empty cap about +z). With shli_real = float (GLSL) the
-   difference is scaled by its largest component first, so |c - x|^2 neither overflows nor
-   underflows; double needs no scaling (squares of floats fit). */
+/* Geometry of a sphere seen from a point (shli_real), (dx, dy, dz) = c - x: out_g[0..2] unit axis,
+   [3] 1 / |c - x|, [4] s^2, [5] alpha, [6] 1 for a light, 0 for none.
+   (docs/derivations.md sec. 13.11) */
 SHLIGHT_INLINE void shli_cap_frame(shli_real dx, shli_real dy, shli_real dz, shli_real r,
                                    shli_real *out_g) {
   shli_real rr = r;
@@ -2902,7 +2851,7 @@ static const double SHLI_ROT_X90[320] = {
 #define SHLI_ROT_SCALAR
 #endif
 /* the input group of output group g (0 A, 1 C, 2 D, 3 B) and its lanes k0 .. k1 - 1 */
-#define SHLI_ROT_SRC(l, g)                                                                         \
+#define SHLI_ROT_SRC(l, g) \
   ((l) % 2 == 0 ? ((g) == 1 ? 2 : ((g) == 2 ? 1 : (g))) : ((g) == 0 ? 3 : ((g) == 3 ? 0 : (g))))
 #define SHLI_ROT_K0(src) ((src) == 2 ? 1 : 0)
 #define SHLI_ROT_K1(l, src) ((src) == 0 || (src) == 2 ? (l) / 2 + 1 : ((l) + 1) / 2)
@@ -2912,28 +2861,28 @@ typedef __INT64_TYPE__ shli_rot_i4 __attribute__((vector_size(32)));
 #if defined(__clang__)
 #define SHLI_ROT_SHUF(a, b, i, j, k, m) __builtin_shufflevector(a, b, i, j, k, m)
 #else
-#define SHLI_ROT_SHUF(a, b, i, j, k, m)                                                            \
+#define SHLI_ROT_SHUF(a, b, i, j, k, m) \
   __builtin_shuffle(a, b, __extension__(shli_rot_i4){i, j, k, m})
 #endif
 #define SHLI_ROT_LD(v, p) memcpy(&(v), (p), sizeof(v))
 
 /* X(+90) for output group g of band l (a literal): from the z-rotated groups w0..w3 (A, C, D,
    B) into out (named variables, not arrays, which GCC keeps in registers) */
-#define SHLI_ROT_X(l, g, out)                                                                      \
-  do {                                                                                             \
-    int src_ = SHLI_ROT_SRC(l, g);                                                                 \
-    int k_;                                                                                        \
-    shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3));                   \
-    shli_rot_v4 c_;                                                                                \
-    SHLI_ROT_LD(c_, t + 16 * (g) + SHLI_ROT_K0(src_) * 4);                                         \
-    out = c_ * ws_[SHLI_ROT_K0(src_)];                                                             \
-    SHLI_ROT_UNROLL                                                                                \
-    for (k_ = 0; k_ < 4; ++k_) {                                                                   \
-      if (k_ > SHLI_ROT_K0(src_) && k_ < SHLI_ROT_K1(l, src_)) {                                   \
-        SHLI_ROT_LD(c_, t + 16 * (g) + k_ * 4);                                                    \
-        out = out + c_ * ws_[k_];                                                                  \
-      }                                                                                            \
-    }                                                                                              \
+#define SHLI_ROT_X(l, g, out) \
+  do { \
+    int src_ = SHLI_ROT_SRC(l, g); \
+    int k_; \
+    shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3)); \
+    shli_rot_v4 c_; \
+    SHLI_ROT_LD(c_, t + 16 * (g) + SHLI_ROT_K0(src_) * 4); \
+    out = c_ * ws_[SHLI_ROT_K0(src_)]; \
+    SHLI_ROT_UNROLL \
+    for (k_ = 0; k_ < 4; ++k_) { \
+      if (k_ > SHLI_ROT_K0(src_) && k_ < SHLI_ROT_K1(l, src_)) { \
+        SHLI_ROT_LD(c_, t + 16 * (g) + k_ * 4); \
+        out = out + c_ * ws_[k_]; \
+      } \
+    } \
   } while (0)
 
 /* band l (3 <= l < SHLI_ROT_FAST_BANDS) of sh rotated into out_sh; tv[4 q + j]: cos, sin of the
@@ -3426,29 +3375,9 @@ SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, floa
 #endif
 }
 
-/* >>light -----------------------------------------------------------------------------------
-   Unit-radiance lights seen from a shading point x: their SH (the projection of the
-   indicator of the light's solid angle, so out_sh[0] = Omega Y_0^0 and the irradiance of a
-   normal n follows by convolution with the clamped cosine) and its gradient with respect to
-   x, out_grad[i][k] = d out_sh[i] / d x_k.
-   Sphere light (centre c, radius r; [GRAD] eq. 9-14, docs/derivations.md section 2-3): with d = |c
-   - x|,
-   s = min(r / d, 1), alpha = sqrt((d - r)(d + r)) / d, w = (c - x) / d, and
-     q_0 = 1 / (1 + alpha),  q_l = P'_l(alpha) / (l (l+1))                 (l >= 1)
-     out_sh[l,m] = 2 pi s^2 q_l Y_l^m(w)        [= sqrt(4 pi / (2l+1)) L_l Y_l^m(w)]
-     grad_x      = -2 pi s^2 q_l grad_d Y_l^m(w) + 2 pi s^2 P_l(alpha) / (d alpha) Y_l^m(w) w
-   (docs/derivations.md section 3, "complete coefficient gradient, simplified"), grad_d Y from the
-   pole-free Cartesian gradient of >>gradient. Inside and on the surface (d <= r): the value at the
-   nearest surface point, i.e. the hemisphere about w; it is constant along rays from c, so its
-   gradient is the rotational term only (radial derivative 0). The exact gradient is unbounded as d
-   -> r+ (1 / alpha, genuinely singular); outside it stays finite because alpha >= ~1e-8 (C) / ~3e-4
-   (GLSL) for any d > r representable. x == c: the hemisphere about +z, gradient 0. r <= 0 or NaN,
-   NaN or infinite x or c: zeros (no light). 1 / |c - x| is capped at 1e20 in the gradient.
-   Triangle light as a sphere ([GRAD] eq. 24-28): the sphere at the centroid with the
-   triangle's area (r_s = sqrt(|e1 x e2| / (2 pi))), weighted by |cos gamma|, cos gamma the
-   cosine between the triangle's normal and w (two-sided). This is the paper's far-field
-   model: exact in L_0 only as d / sqrt(area) -> inf (docs/derivations.md section 4 table). The
-   exact solid angle is shl_triangle_solid_angle. */
+/* >>light ------------------------------------------------------------------------------------
+   Unit-radiance sphere and triangle lights seen from x: SH and gradient with respect to x.
+   (docs/derivations.md sec. 13.12) */
 
 /* @generated light_idx: defined in >>generated at the end of the file */
 SHLIGHT_INLINE void shli_sh_band_weights(int n, const float *kv, const float *kg, const float *ka,
@@ -3552,11 +3481,8 @@ SHLIGHT_INLINE void shli_sh_eval_grad_unit(int n, float nx, float ny, float nz, 
   shli_sh_grad(n, out_y, nx, ny, nz, ir, 1.0f, out_grad);
 }
 
-/* Cap light and gradient from g (shli_cap_frame), times the weight wgt whose gradient with
-   respect to x is (gw0, gw1, gw2): out_sh = wgt S, out_grad = wgt grad S + S grad wgt. Per band
-   l the double recurrence gives four float weights: kv = wgt f q_l (values), kg = -kv / d (of
-   the unit-radius gradient of Y), ka = wgt h P_l (of Y w, the radial term) and kb = f q_l (of
-   Y grad wgt); the products with w and grad wgt are formed in float. */
+/* Cap light and gradient from g (shli_cap_frame) times the weight wgt (gradient gw0..2): out_sh =
+   wgt S, out_grad = wgt grad S + S grad wgt. (docs/derivations.md sec. 13.13) */
 SHLIGHT_INLINE void shli_cap_light_grad(int n, const shli_real *g, shli_real wgt, shli_real gw0,
                                         shli_real gw1, shli_real gw2, float *io_sh,
                                         float (*io_grad)[3]) {
@@ -3617,11 +3543,8 @@ SHLIGHT_INLINE void shli_cap_light_grad(int n, const shli_real *g, shli_real wgt
 }
 
 #if SHLIGHT_SIMD_EVAL
-/* shli_cap_light_grad for n <= 16 (C only, AVX-512): the same weights in double, then Y by the
-   basis kernel and the weighted gradient in one pass (shli_sh_grad_avx512 with bw: P of band l
-   times kg, Y times ka - l kg along w and kb along grad wgt), which also writes the values kv Y.
-   Forced inline (as the helpers above), so a literal n at the call specialises it as it does
-   the value path. */
+/* shli_cap_light_grad for n <= 16 (C only, AVX-512): the same weights, then one shli_sh_grad_avx512
+   pass with bw. (docs/derivations.md sec. 13.14) */
 SHLI_LIGHT_FORCE SHLIGHT_CPU_INLINE void
 shli_cap_light_grad_avx512(int n, const shli_real *g, shli_real wgt, shli_real gw0, shli_real gw1,
                            shli_real gw2, float *io_sh, float (*io_grad)[3]) {
@@ -3734,11 +3657,8 @@ SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c
   shli_cap_light_grad(n, g, 1.0, 0.0, 0.0, 0.0, out_sh, out_grad);
 }
 
-/* Triangle as a sphere ([GRAD] eq. 24-25): out_g as shli_cap_frame for the sphere at the
-   centroid with radius sqrt(|e1 x e2| / (2 pi)) seen from x, and out_g[7] = n_t . w = -cos gamma
-   (n_t = unit (p1 - p0) x (p2 - p0), w the unit axis from x to the centroid); the weight is
-   |out_g[7]|. out_nt: n_t (0 for a zero-area triangle, which gives out_g[6] = 0: no light;
-   as do NaN and infinite input). */
+/* Triangle as a sphere: out_g as shli_cap_frame for the centroid sphere of the same area, out_g[7]
+   = n_t . w; out_nt: n_t (0 for a zero-area triangle). (docs/derivations.md sec. 13.15) */
 SHLIGHT_INLINE void shli_tri_frame(const float x[3], const float p0[3], const float p1[3],
                                    const float p2[3], shli_real *out_g, shli_real *out_nt) {
   shli_real ax = SHLIGHT_REAL(p1[0]) - SHLIGHT_REAL(p0[0]);
@@ -3867,12 +3787,8 @@ SHLIGHT_INLINE void shl_triangle_light_grad(int n, const float x[3], const float
                       sg * (nt[2] - cg * g[2]), out_sh, out_grad);
 }
 
-/* atan2(y, x) in shli_real from the shims alone, so C and GLSL run the same code (GLSL's
-   atan is a driver approximation: llvmpipe's is off by 3.4e-6). Octant reduction to
-   t = min / max in [0, 1], two half-angle steps t -> t / (1 + sqrt(1 + t^2)) to
-   t <= tan(pi / 16), then the Taylor series to t^15: relative error <= 4e-13 (below the float
-   rounding floor by 5 orders; C double, GLSL float rounding). atan2(0, 0) = 0; y = -0 counts as
-   +0 (atan2(-0, x < 0) = +pi). Inputs must be finite. */
+/* atan2(y, x) in shli_real from the shims alone (C and GLSL alike): relative error <= 4e-13;
+   atan2(0, 0) = 0; finite input. (docs/derivations.md sec. 13.16) */
 SHLIGHT_INLINE shli_real shli_atan2r(shli_real y, shli_real x) {
   shli_real ay = SHLIGHT_ABSR(y);
   shli_real ax = SHLIGHT_ABSR(x);
@@ -3976,43 +3892,10 @@ SHLIGHT_INLINE float shl_triangle_solid_angle(const float x[3], const float p0[3
   return SHLIGHT_FLOAT(2.0 * shli_atan2r(nm, dn));
 }
 
-/* >>grid ------------------------------------------------------------------------------------
-   SH lighting on a regular 3D grid ([GRAD] sec. 5, after Wu, Cai, Zhao and Ramamoorthi 2020): the
-   SH coefficients of many sphere lights and their spatial gradients at the vertices of a grid
-   (shl_grid_build, CPU), then reconstruction at any point from the 8 corners of its cell (kernels
-   with GLSL twins: trilinear, first-order Taylor, Hermite; shl_grid_sample gathers the corners on
-   the CPU). Grid: vertex (ix, iy, iz), 0 <= ix < nx ..., index v = ix + nx (iy + ny iz), position
-     p_k = float(double(origin[k]) + double(i_k) double(spacing[k]))    (exact product, one
-   rounding: the same bits whatever the compiler's FMA contraction). Storage: sh[v n^2 + i],
-   grad[v n^2 + i][k] = d sh[v n^2 + i] / d x_k (float[3] per coefficient: 4 floats per
-   coefficient with gradients, 1 without).
-   Light j: centre c_j, radius r_j, intensity I_j (NULL: every I_j = 1); its contribution
-   I_j shl_sphere_light(_grad) (see >>light: inside a light, the hemisphere).
-   Culling (shl_grid.cull = eps >= 0; 0: every light reaches every vertex): light j is skipped
-   at the vertices farther than R_j = max(r_j sqrt(2 pi |I_j| / eps), 2 r_j) from c_j (test in
-   double: |c - p|^2 > R_j^2). The error bounds (values and
-   gradients, per skipped light) are derived in docs/derivations.md section 10.
-   Orders: SHLIGHT_GRID_FORWARD loops the vertices, then the lights (all lights, culling
-   test per pair); SHLIGHT_GRID_REVERSED loops the lights, then the vertices of the box around
-   the culling sphere (all vertices when eps = 0). Both add the lights to a vertex in index
-   order with the same arithmetic: the two orders and 1 or 2 threads give the same bits.
-   Threads: 2 splits the vertices into two z slabs (pthreads; define SHLIGHT_NO_THREADS, or a
-   platform without <pthread.h> (not __unix__ / __APPLE__), and the work runs in the calling
-   thread; a failed pthread_create runs the second slab in the caller too). glibc >= 2.34 has
-   pthreads in libc; older systems link with -pthread.
-   Reconstruction: the cell of p is (i0, i0+1) per axis with i0 = min(floor(u), dims - 2),
-   u = (p - origin) / spacing clamped to [0, dims - 1], fraction f = u - i0 in [0, 1]; an axis
-   with dims = 1 has f = 0 and both corners equal. Corner k of the cell: bit 0 x, bit 1 y,
-   bit 2 z (k = cx + 2 cy + 4 cz); c8[k n^2 + i], g8[k n^2 + i][axis]. GLSL twins:
-   c8 is float[8 * SHLIGHT_MAX_COEFFS], g8 vec3[8 * SHLIGHT_MAX_COEFFS].
-   - trilinear: exact for multilinear data, error O(h^2), C0.
-   - Taylor (first order from the nearest corner, Annen, Kautz, Durand and Seidel 2004; ties f = 0.5
-   go to corner 1): exact for linear data, error O(h^2), discontinuous at the mid-planes of the
-   cell.
-   - Hermite: the tensor-product cubic Hermite interpolant with the grid's corner values and
-     gradients and mixed derivatives estimated inside the cell from the gradients (C0 across
-     cells, exact on quadratics, error O(h^3); formulas in docs/derivations.md section 10), one
-     linear combination of the 32 corner data (32 FMA per coefficient). */
+/* >>grid -------------------------------------------------------------------------------------
+   SH of many sphere lights and their gradients at the vertices of a 3D grid (shl_grid_build, CPU),
+   reconstruction in a cell from its 8 corners (trilinear, Taylor, Hermite).
+   (docs/derivations.md sec. 13.17) */
 
 SHLIGHT_INLINE void shl_grid_trilinear(int n, const float *c8, const float f[3], float *out_sh) {
   float x1 = f[0];
@@ -4178,33 +4061,12 @@ SHLIGHT_INLINE void shl_grid_hermite(int n, const float *c8, const float (*g8)[3
 
 /* CPU only (declared here, defined with SHLIGHT_IMPLEMENTATION). */
 
-/* >>edge ------------------------------------------------------------------------------------
-   Area lights without tables ([AREA], docs/derivations.md section 7): axial moments of polygons,
-   the moment M^e(P, r) = integral over the solid angle of P, clipped to the hemisphere u.r >= 0, of
-   (u.r)^e. Two exact identities carry everything here (docs/derivations.md section 7.1 and this
-   header's derivation in docs/area-lights.md):
-   - Arvo (integer e): (e+1) M = [e even] Omega + sum_i w_i F(Phi_i, c_i, delta_i, e-1), with
-     the edge integral F of [AREA] eq. 3 (corrections E10, E11 applied), F's exact O(e) recurrence
-     or the paper's O(1) peak fits (Lorentzian, Lorentzian-Pearson, ellipsoid; corrections E12-E17).
-   - Stokes in the azimuth about r (any real e >= 0, derived for shlight): with the 1-form
-     (x^(e+1) - 1)/(e+1) dpsi, x = u.r, the pole term vanishes and
-       (e+1) M = -sum_i sgn(w_i) integral over theta in the edge's arc of (1 - h(theta)) dtheta,
-       h = (c^2 cos^2 theta / (1 - c^2 sin^2 theta))^((e+1)/2), tan theta = tan phi / |w_i|,
-     an integrand in [0, 1] with no cancellation against a solid-angle term. Its integral is
-     taken with a fixed 5-node Gauss-Legendre rule on each half-arc after the graded change of
-     variables pi/2 - |theta| = beta sinh(s), beta = atan(|w| sqrt(e+1)) / 2 (the boundary layer
-     of 1 - h sits at |theta| -> pi/2 with width ~ |w| sqrt(e+1)): constant cost for every e. */
+/* >>edge -------------------------------------------------------------------------------------
+   Area lights without tables: axial moments of polygons by Arvo's edge integrals (integer e) or the
+   Stokes form (any e >= 0). (docs/derivations.md sec. 13.18) */
 
-/* Polygons of any vertex count (C, SHLIGHT_POLYGON_ANY): above SHLIGHT_POLYGON_MAX vertices a
-   polygon function cuts the polygon into fan pieces (v0, v_i, ..., v_m) of at most
-   SHLIGHT_POLYGON_MAX vertices whose fan triangles all turn the same way as seen from the
-   shading point (the sign of det(v0, v_j, v_j+1)), calls itself on each piece and adds the
-   pieces with their signs relative to the whole polygon's orientation (the sum of the dets),
-   then clamps at 0 as in one piece; the fan edges cancel between neighbours. So a non-convex
-   or self-overlapping polygon is integrated with its winding number, as in one piece. O(1)
-   memory (one piece, 96 bytes), about (nv - 2) / (SHLIGHT_POLYGON_MAX - 2) kernel calls. NaN
-   or infinite vertices, or dets summing to zero (seen edge-on): 0. GLSL keeps the compile-time
-   maximum SHLIGHT_POLYGON_MAX; above it the result is -1. */
+/* Polygons above SHLIGHT_POLYGON_MAX vertices (C): cut into same-turning fan pieces, summed with
+   their signs (winding number); GLSL: -1. (docs/derivations.md sec. 13.19) */
 typedef struct {
   float p[SHLIGHT_POLYGON_MAX][3]; /* the current piece */
   double sum;                      /* the signed sum of the pieces' values so far */
@@ -4398,12 +4260,8 @@ SHLIGHT_INLINE shli_real shli_edge_exact(shli_real pa, shli_real pb, shli_real c
                             c * SHLIGHT_SINR(pb), c * c, pb - pa, nf);
 }
 
-/* The paper's O(1) fits of F over [pa, pb] inside [-pi/2, pi/2], nf >= 3, c in (1.0e-3, 1]:
-   peak I_max = I(0), floor I_min = I(pi/2), half width x_w of eq. 7 (correction E12
-   (docs/derivations.md section 12): level (I_max + I_min) / 2), the fit passing through (x_w,
-   I(x_w)); Lorentzian with the atan2 form of eq. 12 (E13); Lorentzian-Pearson with b = a / 2, the
-   corrected antiderivative (E14) and the blend factor clamped to [0, 1] (E17); single ellipsoid eq.
-   15-16, 18 (its degenerate a_E = 1 falls back to the Lorentzian). */
+/* The paper's O(1) fits of F over [pa, pb] (Lorentzian, Lorentzian-Pearson, ellipsoid), corrected.
+   (docs/derivations.md sec. 13.20) */
 SHLIGHT_INLINE shli_real shli_edge_fit(shli_real pa, shli_real pb, shli_real c, int nf,
                                        int method) {
   int odd = nf - 2 * (nf / 2);
@@ -4581,15 +4439,8 @@ SHLIGHT_INLINE int shli_poly_clip(shli_real *io_px, shli_real *io_py, shli_real 
   return k;
 }
 
-/* The FAST method (SHLIGHT_EDGE_FAST): the Stokes form above in float, laid out for SIMD.
-   Per edge the two half-arcs in |theta| each get a 4-node Gauss-Legendre rule after the
-   rational grading pi/2 - |theta| = beta t / (1 - t) (t in [0, 1)), beta =
-   1.5 x / (1 + 0.6366 x), x = |w| sqrt(e + 1): no transcendental in the grading, and the
-   nodes of all edges are independent, so the C edge loop runs SHLIGHT_LANES edges per block
-   (one AVX register per quantity) with polynomial atan2 / sin / log1p / exp (C only, below;
-   GLSL calls its built-ins). Chosen by experiment (numpy, 1500 random half-arcs, e = 3..1e4,
-   per half-arc error in units of the normalised lobe): sinh grading K = 4: max 7.8e-4,
-   rational K = 4, beta factor 1.5: max 8.2e-4, p95 2.1e-4, with half the transcendentals. */
+/* The FAST method: the Stokes form in float, 4-node rules after a rational grading, SHLIGHT_LANES
+   edges per block. (docs/derivations.md sec. 13.21) */
 
 /* GCC keeps -ftrapping-math by default and then will not if-convert a float compare-and-select,
    so the FAST edge loop would stay scalar; the FAST functions are compiled without it (no
@@ -4664,13 +4515,8 @@ SHLIGHT_CPU_INLINE float shli_flog1p(float y) {
   p = 2.0f * s + 2.0f * s * (s2 * p);
   return (float)k * 0.693147181f + p + (y - (v - 1.0f)) / v;
 }
-/* exp(z) for z <= 0 (clamped at -87): 2^k by the exponent bits, Taylor to f^6 on
-   |f| <= ln2 / 2 (relative error < 2e-7). The clamp max(z, -87) is an integer min of the
-   bit patterns (for z <= 0 a larger magnitude is a larger signed int): GCC vectorises it
-   (vpminsd), where a float select keeps the edge loop scalar (3.6k instead of 1.3k
-   instructions per quad) and the earlier 0.5 (z - 87 + |z + 87|) lost z to rounding below
-   -1e9 (exp of garbage, up to 1e26, at exponents >= 3e9). The callers pass z <= 0 only (a
-   positive z would be clamped to -87). */
+/* exp(z) for z <= 0 (clamped at -87 by an integer min of the bit patterns), relative error < 2e-7.
+   (docs/derivations.md sec. 13.22) */
 SHLIGHT_CPU_INLINE float shli_fexp(float z) {
   int bz = shli_fbits(z);
   int bc = -1028784128; /* the bits of -87.0f, 0xc2ae0000 */
@@ -4761,14 +4607,8 @@ SHLIGHT_INLINE int shli_fast_clip(float *io_px, float *io_py, float *io_pz, int 
   return k;
 }
 
-/* (e + 1) M^e by the FAST method of the polygon (io_px, io_py, io_pz)[0..nv-1] (shading point
-   at the origin; overwritten), clipped to u.n >= 0 first when clip_n != 0, then to u.r >= 0
-   (n, r unit). The polygon is scaled by its largest coordinate first (any finite size works in
-   float). nv outside [3, SHLIGHT_POLYGON_MAX], a non-finite vertex, e NaN or >= 1e30: 0;
-   e < 0: 0. Three passes: the edges' arcs in theta (SHLIGHT_LANES edges at a time,
-   branch-free, no sqrt: C's sqrtf may set errno, which stops vectorisation; the edge normal
-   a x b stays unnormalised and |w| sin(Phi) = |n.r|), the non-empty half-arcs gathered, then
-   their 4-node rules (SHLIGHT_LANES half-arcs at a time). */
+/* (e + 1) M^e by the FAST method of the polygon (shading point at the origin; overwritten), clipped
+   to u.n >= 0 when clip_n != 0, then to u.r >= 0. Bad input: 0. (docs/derivations.md sec. 13.23) */
 SHLIGHT_INLINE float shli_fast_moment(float *io_px, float *io_py, float *io_pz, int nv, int clip_n,
                                       float nx, float ny, float nz, float rx, float ry, float rz,
                                       float e) {
@@ -4989,13 +4829,8 @@ SHLIGHT_INLINE shli_real shli_stokes_gl5(shli_real m, shli_real r, shli_real bet
   return r * sum;
 }
 
-/* integral of the kind's integrand over |theta| in [lo, hi] inside [0, pi/2]: 5-node
-   Gauss-Legendre in s, pi/2 - |theta| = beta sinh(s). lev > 0 (the adaptive rule of
-   SHLIGHT_EDGE_EXACT at non-integer exponents): at level l = 1, 2, ..., lev the composite rule
-   on 2^l equal panels, the one at s0 cut geometrically into l + 1 (an hp mesh: the integrand is
-   analytic in s except for the branch point |cos theta|^(e+1) at theta = pi/2, s = s0, which
-   the geometric cut resolves), until two successive levels differ by at most
-   SHLIGHT_ADAPT_TOL (the error estimate: the accepted finer level is well inside it). */
+/* integral of the kind's integrand over |theta| in [lo, hi]: 5-node Gauss-Legendre in s, pi/2 -
+   |theta| = beta sinh(s); lev > 0: adaptive composite rule. (docs/derivations.md sec. 13.24) */
 SHLIGHT_INLINE shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real c2,
                                           shli_real p, shli_real q, int kind, int lev) {
   shli_real z0 = (1.5707963267948966 - hi) / beta;
@@ -5014,12 +4849,8 @@ SHLIGHT_INLINE shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real 
   if (!(h > 0.0)) {
     return 0.0;
   }
-  /* one loop over the panels of every level and one call of the 5-node rule (GLSL inlines
-     each call site: one copy instead of four per half-arc). Level l has np = 2^l panels of
-     width h: k = 0 .. np - 2 the panels 1 .. np - 1; the one at s0 (theta = pi/2, where h
-     has the branch point |cos|^(e+1) for non-integer e) cut geometrically toward s0: l
-     panels of ratio 0.15 (k = np - 1 .. np + l - 2), then the rest (k = np + l - 1). Level 0
-     is the single panel [s0, s1]. */
+  /* one loop over the panels of every level, one call of the 5-node rule.
+     (docs/derivations.md sec. 13.25) */
   while (l <= lev) {
     if (k < np - 1) {
       pm = s0 + (SHLIGHT_ITOR(k + 1) + 0.5) * h;
@@ -5177,13 +5008,8 @@ SHLIGHT_INLINE shli_real shli_edge_term(shli_real ax, shli_real ay, shli_real az
   return w * shli_edge_fit(pa, pb, SHLIGHT_SQRTR(c2), nf, method);
 }
 
-/* The shared start of every polygon sum: with npre = 1 first the clip to u.n >= 0 (Phong's
-   horizon; nothing usable left: 0); then the orientation of the polygon as seen from the
-   shading point, sign of (vector area) . (a vertex); the clip to u.r >= 0; the clipped
-   vertices normalised in place. Returns +-(clipped vertex count), the sign the orientation's,
-   or 0 when nothing usable is left (< 3 vertices, zero area, a vertex at the shading point).
-   Both clips run from one call site in a loop (GLSL inlines every call site, and the clip's
-   indexed stores are the costliest part of an llvmpipe compile). */
+/* Shared start of every polygon sum: clips, orientation, normalisation; returns +-(clipped vertex
+   count) or 0. (docs/derivations.md sec. 13.26) */
 SHLIGHT_INLINE int shli_poly_clip_unit2(shli_real *io_px, shli_real *io_py, shli_real *io_pz,
                                         int nv, shli_real nx, shli_real ny, shli_real nz, int npre,
                                         shli_real rx, shli_real ry, shli_real rz) {
@@ -5766,13 +5592,9 @@ SHLIGHT_INLINE float shl_sphere_phong(const float c[3], float r, const float nrm
       rho * (sg + uy * uy * a), -rho * uy, nx, ny, nz, rx, ry, rz, SHLIGHT_REAL(exponent), method));
 }
 
-/* The shared start of the half-vector NDF integrals (shl_polygon_ggx_ndf,
-   shl_polygon_beckmann_ndf): checks nv >= 3 (C: any count; GLSL: at most SHLIGHT_POLYGON_MAX, above
-   it -1), the axis (non-zero, finite) and alpha (not NaN); loads the vertices into io_px, io_py,
-   io_pz (a NaN or infinite one: 0) and clips them to u.axis >= 0 and normalises them
-   (shli_poly_clip_unit). Writes out_par: [0..2] the unit axis, [3] the polygon's orientation (+1 or
-   -1: the sign of the edge sum), [4] alpha clamped to [1e-4, 1]. Returns the clipped vertex count,
-   or 0 (the caller returns 0; out_par is then not all written). */
+/* Shared start of the half-vector NDF integrals: checks, load, clip and normalise; out_par [0..2]
+   axis, [3] orientation, [4] alpha; returns the clipped count or 0.
+   (docs/derivations.md sec. 13.27) */
 SHLIGHT_INLINE int shli_poly_load_clip(const float (*v)[3], int nv, const float axis[3],
                                        float alpha, shli_real *io_px, shli_real *io_py,
                                        shli_real *io_pz, shli_real *out_par) {
@@ -5881,13 +5703,8 @@ typedef __UINT64_TYPE__ shli_u64;
 #else
 typedef unsigned long long shli_u64;
 #endif
-/* The microfacet polygon lights' transcendentals (SHLIGHT_MEXP, SHLIGHT_MLOG, SHLIGHT_MSIN,
-   SHLIGHT_MCOS; GLSL: the built-ins): shlight's own double polynomials in C, relative error
-   below 1e-15 (tests/test_ggx.c), a third of libm's instructions. exp: x clamped to
-   [-708, 709], x = k ln2 + r by a two-part ln2, Taylor to r^12 on |r| <= ln2 / 2, 2^k by the
-   exponent bits. log: x > 0 finite normal, x = 2^e m with m in [sqrt(1/2), sqrt(2)), 2 atanh
-   of s = (m - 1) / (m + 1) to s^17. sin, cos: t = k pi/2 + r by a two-part pi/2 (|t| < 1e5),
-   Taylor to r^15 / r^16 on |r| <= pi/4, the quadrant k mod 4 picking and negating them. */
+/* The microfacet polygon lights' double transcendentals (C): own polynomials, relative error below
+   1e-15. (docs/derivations.md sec. 13.28) */
 SHLIGHT_CPU_INLINE double shli_mexp(double x) {
   double kd;
   double r;
@@ -5968,31 +5785,12 @@ SHLIGHT_CPU_INLINE double shli_msincos(double t, int odd) {
   return (q & 2) != 0 ? -r : r;
 }
 
-/* GGX polygon lights (shl_polygon_ggx). The light's integral
-     L = integral over P (clipped to n.l > 0) of f(v, l) (n.l) dl = int D(h) G2(l, v) / (4 n.v) dl
-   becomes, with dl = 4 (h.v) dh (h = (l + v) / |l + v|),
-     L = integral over H(P) of D(h) (h.n) w(h) dh,   w(h) = G2(l(h), v) (h.v) / ((n.v) (h.n)).
-   w is smooth and D (h.n) is the peaked part, so w is split into its first-order Taylor
-   expansion about the point h* of H(P) closest to n and a remainder:
-     L = w* A + g.(M1 - h* A) + integral over P of k(l) (w - w* - g.(h - h*)) dl,
-   A = int_H D (h.n) dh, M1 = int_H D (h.n) h dh (both exact up to a 1D quadrature, below),
-   k = D (h.n) / (4 h.v) (so that k dl = D (h.n) dh), g the gradient of w at h* (central
-   differences), and the remainder by cubature over P: a fan from the direction of the vertex
-   centroid, triangles wider than 53 deg split 1 -> 4 at their edge midpoints, a 7-point
-   degree-5 rule on each piece, GGX's pieces split further where an estimate or the lobe's
-   closeness to the horizon asks (at the fan loop; the remainder is second order where D is
-   narrow and smooth where D is wide).
-   A and M1 by Stokes along the boundary of H(P) (the images of P's great arcs under
-   l -> l + v are conics), each edge integral by a graded rule t = t0 + wd sinh(s) about its
-   peak with 5 Gauss-Legendre nodes per side; the formulas and the guard on the Newton step
-   that finds t0 are in docs/derivations.md section 9. */
+/* GGX polygon lights (shl_polygon_ggx): the half-vector integral, w split into its first-order
+   Taylor expansion at h* (A, M1 by Stokes) and a remainder by cubature over P.
+   (docs/derivations.md sec. 13.29) */
 
-/* Beckmann's Smith Lambda at the direction cosine c (0 < c <= 1), roughness alpha:
-   (erf(a) - 1) / 2 + exp(-a^2) / (2 a sqrt(pi)), a = c / (alpha sqrt(1 - c^2)), with erfc by
-   Abramowitz-Stegun 7.1.26 (absolute error 1.5e-7, so Lambda is within 1e-7): no erf needed
-   in GLSL. a is floored at 1e-30 only (Lambda ~ 0.28 / a: G2 ~ 3.5 a falls like n.v, so
-   G2 / (n.v) stays finite and tends to its limit at views grazing to 1e-16; a floor at 1e-6
-   held G2 while 1 / (n.v) grew). */
+/* Beckmann's Smith Lambda at the direction cosine c (0 < c <= 1), erfc by Abramowitz-Stegun 7.1.26
+   (Lambda within 1e-7). (docs/derivations.md sec. 13.30) */
 SHLIGHT_INLINE shli_real shli_beckmann_lambda(shli_real c, shli_real alpha) {
   shli_real s2 = 1.0 - c * c;
   shli_real a;
@@ -6008,14 +5806,8 @@ SHLIGHT_INLINE shli_real shli_beckmann_lambda(shli_real c, shli_real alpha) {
   return 0.5 * SHLIGHT_EXPR(-a * a) * (0.56418958354775629 / a - p);
 }
 
-/* Beckmann NDF (ndf = 1 of the helpers below): the scaled integral (pi / alpha^2) I(t) with
-   I(t) = int_0^t s^2 D_B(s) ds = exp(1 / alpha^2) erfc(1 / (alpha t)) / (2 sqrt(pi) alpha)
-   (u = 1 / s: I = exp(1 / alpha^2) / (pi alpha^2) int_{1/t}^inf exp(-u^2 / alpha^2) du), written
-   with erfcx(x) = exp(x^2) erfc(x) = 2 / (1 + 2 x) p((x - 2) / (x + 2)) (Weideman 1994, L = 2)
-   at x = 1 / (alpha t) >= 1: (pi / alpha^2) I(t) = sqrt(pi) t E p(z) / (alpha^2 (alpha t + 2)),
-   E = exp(-tan^2 t / alpha^2), z = (1 - 2 alpha t) / (1 + 2 alpha t) in [-1/3, 1). p: the
-   degree-14 Chebyshev fit of (1 + 2x) erfcx(x) / 2 on z in [-1/3, 1] (mpmath), relative error
-   9e-12 for every x >= 1. et = E, at = alpha t. */
+/* Beckmann NDF: the scaled integral (pi / alpha^2) I(t) through erfcx (relative error 9e-12).
+   (docs/derivations.md sec. 13.31) */
 SHLIGHT_INLINE shli_real shli_beck_i(shli_real t, shli_real et, shli_real at, shli_real a2) {
   shli_real z = (1.0 - 2.0 * at) / (1.0 + 2.0 * at);
   shli_real p;
@@ -6086,12 +5878,8 @@ SHLIGHT_INLINE shli_real shli_ggx_w(shli_real lx, shli_real ly, shli_real lz, sh
   return hv / ((1.0 + lamv + laml) * nv * nh);
 }
 
-/* One edge's graded rule on [sa, sb] (in s), split at the peak s = 0 when it lies inside: adds
-   the A and M1.g integrands (see above) at t = t0 + wd sinh(s), 5-node Gauss-Legendre on each
-   side, to io_am[0] and io_am[1]. Both sides run in one loop of 10 nodes (GLSL inlines every
-   call site and loop copy: one copy of the node body instead of two). ndf 0: GGX, 1: Beckmann
-   (the cap CDF 1 - exp(-u), u = tan^2 / alpha^2 = |Q_xy|^2 / (alpha^2 Q_z^2), in the A form;
-   shli_beck_i in the M1 form; al = alpha). */
+/* One edge's graded rule on [sa, sb] (split at s = 0), adding the A and M1.g integrands to
+   io_am[0..1]. (docs/derivations.md sec. 13.32) */
 SHLIGHT_INLINE void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli_real wd,
                                   shli_real ax, shli_real ay, shli_real az, shli_real bx,
                                   shli_real by, shli_real bz, shli_real vx, shli_real vy,
@@ -6220,12 +6008,8 @@ SHLIGHT_INLINE void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli
   }
 }
 
-/* The remainder's integral, k(l) (w(l) - w* - g.(h - h*)) with k = D (h.n) / (4 h.v), over the
-   spherical triangle of the directions (a, b, c) (any lengths, a non-negative combination
-   spans it) by the 7-point degree-5 rule of Dunavant on the flat triangle and the Jacobian
-   det(a, b, c) / |p|^3 of the radial projection: out_q[0]; out_q[1] the same nodes' degree-2
-   rule (the centroid and the three outer nodes), whose difference from out_q[0] is the
-   piece's error estimate. */
+/* The remainder's integral over a spherical triangle: out_q[0] degree 5 (Dunavant, 7 points),
+   out_q[1] degree 2 (error estimate). (docs/derivations.md sec. 13.33) */
 SHLIGHT_INLINE void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx,
                                  shli_real by, shli_real bz, shli_real cx, shli_real cy,
                                  shli_real cz, shli_real vx, shli_real vy, shli_real vz,
@@ -7408,22 +7192,11 @@ SHLIGHT_INLINE float shl_polygon_ggx_fast(const float (*v)[3], int nv, const flo
   return SHLIGHT_FLOAT(SHLIGHT_MAXR(par[4] * par[5] * q, 0.0));
 }
 
-/* ---- microfacet polygon lights in half-vector space ([AREA] sec. 8; docs/area-lights.md). With h
-   = (l + v) / |l + v| and dl = 4 (h.l) dh, the reflected radiance of a unit-radiance polygon
-   becomes an integral over the image H(P) of the light in half-vector space: integral over P of
-   D(h) G2 / (4 (n.v)) dl = integral over H(P) of D(h) (h.n) Y(h) dh, Y = G2 (h.v) / ((n.v) (h.n)).
-   D (h.n) over H(P) is a moment (Blinn-Phong: (e+2)/(2 pi) M^(e+1)) or the Stokes form of a radial
-   CDF (Beckmann), both sums over H(P)'s edges; Y is held at one representative direction. H maps
-   great arcs to spherical conics (the cone through the circle {l + v}), not great arcs: each light
-   edge is cut into k sub-edges whose mapped end points are joined by great arcs (the split of
-   [AREA] sec. 8.1). */
+/* ---- microfacet polygon lights in half-vector space: each light edge cut into sub-edges whose
+   images are joined by great arcs. (docs/derivations.md sec. 13.34) */
 
-/* One edge a -> b (unit, the arc inside u.r >= 0) of the Stokes form of the Beckmann NDF about
-   the unit axis r, roughness alpha: sgn(w) times the integral over the arc's theta of the cap
-   CDF (the polygon's integral of D_B (u.r) is the edge sum / (2 pi)); the edge set-up of
-   shli_edge_term's QUADRATURE branch, grading beta = atan(|w| sqrt(2) / alpha) / 2 (the
-   Blinn-Phong grading at e + 1 = 2 / alpha^2, the exponent of equal width). sa: as
-   shli_stokes_node's q, kind 1 (0: the CDF). */
+/* One edge a -> b of the Stokes form of the Beckmann NDF about r: sgn(w) times the integral of the
+   cap CDF over the arc. (docs/derivations.md sec. 13.35) */
 SHLIGHT_INLINE shli_real shli_beckmann_edge(shli_real ax, shli_real ay, shli_real az, shli_real bx,
                                             shli_real by, shli_real bz, shli_real rx, shli_real ry,
                                             shli_real rz, shli_real alpha, shli_real sa) {
@@ -7516,17 +7289,8 @@ SHLIGHT_INLINE float shl_polygon_beckmann_ndf(const float (*v)[3], int nv, const
   return SHLIGHT_FLOAT(SHLIGHT_MAXR(par[3] * sum, 0.0) * 0.15915494309189534);
 }
 
-/* The split points of the light edge a -> b (unit vectors, arc angle phi in (0, pi)) for k
-   sub-edges (k - 1 points), as fractions of the arc's angle in (0, 1), ascending, in io_split;
-   returns their count. p is the point of the edge's great circle nearest the mirror direction r
-   ([AREA] Algorithm 1: where the image of the circle bends most). k = 2: one split at p when
-   p lies inside the arc, none otherwise (the paper). k >= 3: p is one split and the other
-   k - 2 are shared between its two sides in proportion to their angles, graded toward p
-   quadratically (fraction tp (1 - u^2) and tp + (1 - tp) u^2, u uniform); with p outside the
-   arc, k - 1 uniform splits. bal != 0: p is first moved toward the arc's midpoint p_m by the
-   paper's balancing heuristic (Algorithm 2), p <- normalise((1 - km) p + km p_m), km =
-   min(2 |n_e . v| m, 1), n_e the edge's unit normal, m the roughness (Beckmann alpha, or
-   sqrt(2 / (e + 2)) for Blinn-Phong). */
+/* The split points (fractions of the arc, ascending, in io_split) of the light edge a -> b for k
+   sub-edges; returns their count. (docs/derivations.md sec. 13.36) */
 SHLIGHT_INLINE int shli_half_splits(shli_real ax, shli_real ay, shli_real az, shli_real bx,
                                     shli_real by, shli_real bz, shli_real rx, shli_real ry,
                                     shli_real rz, shli_real vx, shli_real vy, shli_real vz,
@@ -7623,12 +7387,8 @@ SHLIGHT_INLINE int shli_half_splits(shli_real ax, shli_real ay, shli_real az, sh
   return ns;
 }
 
-/* integral along the great arc a -> b (unit, inside t = u.n >= 0, b != -a) of t^p (u.c)^j ds
-   (j = 0 or 1, p >= 0), or for j = 2 of E(t) / t^2, E = exp(-(1 - t^2) / (t^2 p^2)) (Beckmann,
-   p = alpha): t = R cos(s - s0) along the arc; the arc is cut at the peak s0 and each side
-   integrated by 8-node Gauss-Legendre in x after the graded change d = beta sinh(x) of the
-   distance d to the peak, beta = 1 / sqrt(p + 1) (the peak's width; alpha / sqrt 2 for
-   j = 2). */
+/* integral along the great arc a -> b of t^p (u.c)^j ds (j = 0, 1), or of E(t) / t^2 (j = 2),
+   graded 8-node Gauss-Legendre about the peak. (docs/derivations.md sec. 13.37) */
 SHLIGHT_INLINE shli_real shli_half_arc(shli_real ax, shli_real ay, shli_real az, shli_real bx,
                                        shli_real by, shli_real bz, shli_real nx, shli_real ny,
                                        shli_real nz, shli_real cx, shli_real cy, shli_real cz,
@@ -7744,25 +7504,8 @@ SHLIGHT_INLINE shli_real shli_half_arc(shli_real ax, shli_real ay, shli_real az,
   return sum;
 }
 
-/* The integrals over the image in half-vector space of the clipped light polygon (io_px, io_py,
-   io_pz)[0..nc-1] (unit vertices above the horizon of the unit normal n, view v unit with
-   n.v > 0; the arrays are only read), signed by the light's winding: each edge cut into
-   sub-edges at shli_half_splits' points, every end point mapped by H(l) = normalise(l + v),
-   consecutive images joined by great arcs; one walk for every kind.
-   kind 0, Blinn-Phong over the image polygon without a held factor: with
-   n.l = 2 (h.v)(h.n) - n.v, the integrand D (n.l) (h.v) = (e+2)/(2 pi) [2 t^(e+1) (h.v)^2 -
-   (n.v) t^e (h.v)], t = h.n, is a polynomial in h times a power of t; its integrals follow
-   from two moments (exponents e + 1 and e - 1, QUADRATURE edge terms) and two line integrals
-   per arc (shli_half_arc) by the surface divergence theorem applied to t^a P(v) and
-   t^a (h.v) P(v), P(v) = v - (v.h) h the tangential part of v.
-   kinds 2 and 3, the image's NDF measures (the split's own error, tests/test_microfacet): kind 2
-   (par = e) (e+2)/(2 pi) M^(e+1), QUADRATURE terms at exponent e + 1, the integral of
-   D_Blinn (h.n); kind 3 (par = alpha) the integral of D_B (h.n) (shli_beckmann_edge).
-   kind 1, K = the integral of D_B(h) (h.v) over the image polygon, by the surface divergence
-   identity for g(t) P(v) with (t^2 g)' = t D_B: g = E(t) / (2 pi t^2), E = exp(-(1 - t^2) / (t^2
-   alpha^2)), and K = (n.v) (integral of g') - sum over arcs (v.m) (line integral of g), m the
-   outward conormal; the integral of the radial g' by the Stokes form with the closed-form 2 pi
-   (g(1) - g(t)) = 1 - E / t^2 (shli_beckmann_edge with sa = alpha^2). par = alpha. */
+/* The integrals over the half-vector image of the clipped light polygon (signed by its winding) for
+   kinds 0..3. (docs/derivations.md sec. 13.38) */
 SHLIGHT_INLINE shli_real shli_half_image(shli_real *io_px, shli_real *io_py, shli_real *io_pz,
                                          int nc, shli_real nx, shli_real ny, shli_real nz,
                                          shli_real vx, shli_real vy, shli_real vz, shli_real m,
@@ -7911,12 +7654,8 @@ SHLIGHT_INLINE shli_real shli_half_image(shli_real *io_px, shli_real *io_py, shl
   return (par + 2.0) * 0.15915494309189534 * (2.0 * j2 - dv * j1);
 }
 
-/* The common body of shl_polygon_blinn_phong (kind 0, par = e) and shl_polygon_beckmann_subedges
-   (kind 1, par = alpha): clip to the horizon, the representative direction l* (the point of the
-   clipped light nearest the mirror direction r: r itself when every edge sees r on the same
-   side, else the nearest vertex or in-arc foot point; used for Beckmann's held G2), then the
-   sums over the sub-edge image polygon in half-vector space (shli_half_image). par already
-   clamped. */
+/* Common body of shl_polygon_blinn_phong (kind 0, par = e) and shl_polygon_beckmann_subedges (kind
+   1, par = alpha). (docs/derivations.md sec. 13.39) */
 SHLIGHT_INLINE shli_real shli_half_light(const float (*v)[3], int nv, const float nrm[3],
                                          const float view[3], shli_real par, int subedges,
                                          int kind) {
@@ -8118,14 +7857,14 @@ SHLIGHT_INLINE float shl_polygon_beckmann_subedges(const float (*v)[3], int nv, 
 
 /* the fan pieces of the polygon functions above SHLIGHT_POLYGON_MAX vertices (C only; see the
    start of >>edge) */
-#define SHLIGHT_FAN_SUM_(call)                                                                     \
-  shli_fan f;                                                                                      \
-  shli_fan_begin(&f, v, nv);                                                                       \
-  while (shli_fan_next(&f, v, nv)) {                                                               \
-    if (f.sg != 0) {                                                                               \
-      f.sum = f.sum + (double)f.sg * (double)(call);                                               \
-    }                                                                                              \
-  }                                                                                                \
+#define SHLIGHT_FAN_SUM_(call) \
+  shli_fan f; \
+  shli_fan_begin(&f, v, nv); \
+  while (shli_fan_next(&f, v, nv)) { \
+    if (f.sg != 0) { \
+      f.sum = f.sum + (double)f.sg * (double)(call); \
+    } \
+  } \
   return shli_fan_end(&f)
 #define SHLIGHT_FAN_P_ ((const float(*)[3])f.p)
 SHLIGHT_CPU_INLINE float shli_fan_moment(const float (*v)[3], int nv, const float axis[3],
@@ -8174,26 +7913,9 @@ SHLIGHT_CPU_INLINE float shli_fan_beckmann(const float (*v)[3], int nv, const fl
 #undef SHLIGHT_FAN_SUM_
 #undef SHLIGHT_FAN_P_
 
-/* >>brdf ------------------------------------------------------------------------------------
-   ZH of circularly symmetric BRDF lobes, convolution with SH / ZH radiance, irradiance,
-   windowing and band selection (docs/derivations.md section 5-6; [SSF] sec. 3.3 with correction E7
-   (docs/derivations.md section 12); [HVL] sec. 4.2, 6.3, Appendix B). A lobe f(w . c) about its
-   axis c (the normal for Lambert and the microfacet lobes, the mirror direction for Phong) has ZH
-   coefficients f_l = 2 pi int_0^pi f(cos t) Y_l^0(t) sin t dt; its SH about c are sqrt(4 pi /
-   (2l+1)) f_l Y_l^m(c) (shl_zh_rotate). Cosine powers (Lambert, Phong, Blinn-Phong) use the
-   factorial-free recurrence of docs/derivations.md sec. 5: Lambda_l(e) = (e+1) int_0^1 x^e P_l(x)
-   dx,
-   Lambda_0 = 1, Lambda_1 = (e+1)/(e+2), Lambda_{l+2} = Lambda_l (e-l)/(e+l+3), in shli_real (double
-   in C: within one float rounding of a binary128 quadrature reference for e in [0, 1e4] and n <=
-   64, tests/test_brdf).
-   The microfacet lobes (GGX, Beckmann) by the trapezoidal rule in u = ln(tan^2 t / alpha^2)
-   (docs/derivations.md section 5), at the float rounding floor against a long double quadrature.
-   Convolution: int L F = sum_i L_i F_i (shl_sh_dot); a ZH lobe about w: shl_sh_conv_zh,
-   O(n^2); two ZH about u and v: sum_l a_l b_l P_l(u . v) by the addition theorem
-   (shl_zh_dot_zh, O(n); docs/derivations.md section 6).
-   Irradiance of a ZH radiance L about w at a normal n, z = w . n (docs/derivations.md section 6):
-     E(z) = sum_l A_l K_l L_l P_l(z), A_l = pi Lambda_l(1)   (A_0 = pi, A_1 = 2pi/3, A_2 = pi/4)
-   which for n = 3 is [HVL] Appendix B 2x2 form c3 L2 z^2 + 2 c2 L1 z + c4 L0 - c5 L2. */
+/* >>brdf -------------------------------------------------------------------------------------
+   ZH of circularly symmetric BRDF lobes, convolution, irradiance, windowing, band selection.
+   (docs/derivations.md sec. 13.40) */
 
 /* out_zh[l] = scale K_l Lambda_l(e), l < n (n already clamped, >= 1), e in [0, 1e30]. */
 SHLIGHT_INLINE void shli_zh_lambda(int n, shli_real e, shli_real scale, float *out_zh) {
@@ -8392,12 +8114,8 @@ SHLIGHT_INLINE float shl_sh_dot(int n, const float *a, const float *b) {
 }
 
 #if SHLIGHT_MAX_COEFFS > SHLI_YBUF_COEFFS
-/* C only, for n^2 > SHLI_YBUF_COEFFS: Y_i(d) of shli_sh_eval_xyz's portable path (the same
-   normalisation and recurrence as shli_sh_core_loop) consumed as it is produced, without an
-   n^2 buffer. io == NULL: returns sum_i a[i] w_l Y_i accumulated in double, w_l = float(
-   sqrt(4 pi / (2l+1)) zh[l]) (zh != NULL) or 1: the values and the rounding of the buffered
-   kernels (Y and w_l Y in float, the sum in double). io != NULL, returns 0: e != 0:
-   io[i stride] += e Y_i; e == 0: io[i stride] = Y_i. */
+/* C only, n^2 > SHLI_YBUF_COEFFS: Y_i(d) consumed as produced (no n^2 buffer). io == NULL: returns
+   sum_i a[i] w_l Y_i; else io[i stride] += e Y_i (e == 0: =). (docs/derivations.md sec. 13.41) */
 SHLIGHT_CPU_INLINE shli_real shli_sh_ystream(int n, float dx, float dy, float dz, const float *a,
                                              const float *zh, float e, float *io,
                                              ptrdiff_t stride) {
@@ -8682,23 +8400,9 @@ SHLIGHT_INLINE int shl_zh_bands_for(int n, const float *zh, float target) {
   return m;
 }
 
-/* >>hvl -------------------------------------------------------------------------------------
-   Harmonics Virtual Lights ([HVL] sec. 5; docs/derivations.md section 6, corrections E8, E9). An
-   HVL j is a sphere of radius r at y with normal n_j and power Phi_j, whose emission towards the
-   shading point x is the reconstruction of an SH emission function F' (the BRDF projected without
-   the cosine, in world axes). With w_j = (y - x) / |y - x| and n_x the normal at x:
-     eq. 20  L_j = Phi_j (F' . Y(-w_j)) G_j(-w_j)                      (shl_hvl_radiance)
-     eq. 21  G_j = max(0, n_j . -w_j) H(n_x, w_j) / (pi r^2)            (shl_hvl_geometric)
-     eq. 19  L_o = L_j (L . F), L = the SH of the unit cap that the sphere subtends at x
-             (shl_zh_cap rotated to w_j; shl_hvl_contribution, O(n^2)), or with a ZH lobe F
-             about its own axis, shl_zh_dot_zh (shl_hvl_contribution_zh, O(n)).
-   H is the fraction of the cap (half-angle a, sin a = s = min(r/d, 1), d = |y - x|) above the
-   horizon of n_x, with beta the angle between n_x and w_j: exact (two-cap intersection,
-   written without cancellation for small caps, docs/derivations.md section 6; shl_hvl_horizon). The
-   cheap variant is [HVL] smoothstep (eq. 22) with the clamp corrected (correction E8
-   (docs/derivations.md section 12): lower bound pi/2 - a, S clamped to [0, 1]): max abs error
-   0.039-0.089 against the exact H (shl_hvl_horizon_smoothstep). The angles use the own atan2
-   of >>light. */
+/* >>hvl --------------------------------------------------------------------------------------
+   Harmonics Virtual Lights: eq. 19-21 with the exact horizon fraction H (or the corrected
+   smoothstep). (docs/derivations.md sec. 13.42) */
 
 /* exact H for the cosine c (in [-1, 1]) between the normal and the axis */
 SHLIGHT_INLINE float shli_hvl_h(shli_real c, float r, float d) {
@@ -9029,38 +8733,10 @@ SHLIGHT_INLINE float shl_hvl_radius_fov_tan(float d, float fov, int hvl_count) {
   return SHLIGHT_FLOAT(g);
 }
 
-/* >>brdftab ---------------------------------------------------------------------------------
-   Kautz-style BRDF SH tables ([HVL] sec. 4.2, [KSS02]): for outgoing directions w_o on a
-   grid, the SH (n bands, the >>basis convention) of F(w_i) = cos(theta_i) f_s(w_o, w_i) and of
-   F'(w_i) = f_s(w_o, w_i), in the local frame (normal +z, tangent +x), w_i over the upper
-   hemisphere (both are 0 below it). Built on the CPU (shl_brdf_table_build, the CPU-only part
-   of this section after >>grid's CPU declarations); the lookup kernels below have GLSL twins.
-   Table layout (the CPU struct shl_brdf_table, the file format and the GPU layout contract):
-     data[((p * n_theta + t) * 2 + k) * n^2 + i]
-   p < n_phi, t < n_theta, k = 0: F (with the cosine), k = 1: F' (without), i < n^2 the SH
-   index. Outgoing grid (SHLT grid 1, the only one): sample t at the theta_o where the grid
-   variable u(theta_o) = t / (n_theta - 1) (n_theta = 1: theta_o = 0), with
-     U(d) = (pi/2 - d) + c ln((pi/2 + d0) / (d + d0)),  u = U(d) / U(0),  d = pi/2 - theta_o,
-   c = 0.05, d0 = 1e-6 (shli_brdf_grid_u): the end samples are theta_o = 0 and 90 degrees; the
-   step is uniform in theta_o at normal incidence and uniform in ln(cos theta_o) towards
-   grazing, where F' of a microfacet BRDF grows like ln(1 / cos theta_o) (linear in u there,
-   so interpolated almost exactly) and where a sharp lobe is cut by the horizon. At 90 samples:
-   1.43 deg steps at 0 deg, 1.14 deg at 80 deg, 0.38 deg at 89 deg, then cos theta_o stepping
-   by a factor 1.67 (0.05 deg steps at 89.9 deg). The last sample holds F and F' at cos theta_o = d0
-   (F' diverges at exactly 90 degrees; shl_brdf_table_theta gives the sample angles). Sample p at
-   phi_o = 2 pi p / n_phi (p = 0: phi_o = 0). n_phi = 1: an isotropic table, sampled at phi_o = 0
-   ([HVL] eq. 17-18); n_phi > 1: anisotropic, periodic in phi_o. On a GPU the same flat float
-   array is an SSBO (std430 float[]), or an RGBA32F texture of n_theta * n_phi * 2 * n^2 / 4 texels
-   read linearly (n^2 * 2 floats per sample: whole texels for every n >= 2), in the same order.
-   Lookup (shl_brdf_table_cell, shl_brdf_table_lookup): d = atan2(w_z, |w_xy|) (own atan2, see
-   >>light; w_z < 0 clamps to the horizon, w_xy = 0 is normal incidence); isotropic tables of
-   4 or more samples cubic in u (4 samples, Lagrange), others linear in u between the two
-   bracketing samples, over the whole range [0, 90] degrees; anisotropic tables also
-   linear in phi_o = atan2(w_y, w_x) (periodic). Isotropic tables are rotated about z by phi_o
-   (shl_sh_rotate_z): the result is the SH of F in the local frame for that w_o, whatever its
-   azimuth. Error: the interpolation error of the tabulated function, O(h^4) in the sample step
-   for isotropic tables, O(h^2) for anisotropic ones (docs/brdf-tables.md has it against theta_o for
-   each model), plus float rounding. */
+/* >>brdftab ----------------------------------------------------------------------------------
+   BRDF SH tables: data[((p * n_theta + t) * 2 + k) * n^2 + i] (k = 0: F with the cosine, 1: F');
+   grid of shli_brdf_grid_u; lookup cubic / linear in u, linear in phi_o.
+   (docs/derivations.md sec. 13.43) */
 
 /* shli_brdf_grid_u: the table grid variable u in [0, 1] (see >>brdftab) of d = pi/2 - theta_o
    in [0, pi/2]: u(pi/2) = 0 (normal incidence), u(0) = 1 (grazing). */
@@ -9234,33 +8910,9 @@ SHLIGHT_INLINE void shl_brdf_table_lookup(int n, int n_theta, int n_phi, int whi
   }
 }
 
-/* >>ssf -------------------------------------------------------------------------------------
-   Screen-space SH filter for instant global illumination with virtual point lights (VPLs):
-   [SSF] (Segovia & Wald) on top of instant radiosity (Keller 1997), n x m interleaved
-   sampling (Keller & Heidrich 2001) and IGI's discontinuity filter (Wald et al. 2002).
-   VPL. A VPL j at y with normal n_y and flux Phi is a cosine emitter: its radiant intensity
-   towards the unit direction u is Phi max(0, n_y . u) / pi (the 1/pi makes the emitted flux,
-   the intensity integrated over the hemisphere, equal to Phi). Seen from a receiver x, with
-   d = |y - x| and w = (y - x) / d, it is a delta of incoming radiance in the direction w,
-     L_j(w') = e delta(w' - w),  e = Phi max(0, n_y . -w) / (pi max(d^2, dmin^2))
-   (dmin: the clamp distance, the usual bound on the 1/d^2 singularity of VPLs; the paper's
-   sec. 3.2 leaves this constant to the VPL generation). So its SH coefficients ([SSF] eq. 1)
-   are e Y_i(w) (shl_ssf_vpl_sh) and its irradiance at a normal n is e max(0, n . w)
-   (shl_ssf_vpl_irradiance); a Lambertian receiver of albedo kd reflects kd / pi of that.
-   VPLs from a spot light's shadow map: flux and texel solid angle in docs/derivations.md section
-   11.
-   Interleaved sampling ([SSF] sec. 2.3). The VPLs are split into tile_x tile_y disjoint sets,
-   set s holding the VPLs j with j mod (tile_x tile_y) = s; pixel (px, py) uses set
-   s = (py mod tile_y) tile_x + (px mod tile_x) (shl_ssf_interleave), so every tile_x x tile_y
-   tile of pixels uses every VPL exactly once. A pixel's estimate scales the flux of its set
-   by tile_x tile_y (an unbiased estimate of the sum over all VPLs).
-   Filter ([SSF] sec. 3). Per pixel the SH of the incoming radiance of its set (RGB: three
-   SH vectors), then the box filter over the tile_x x tile_y window around the pixel with the
-   discontinuity weight of shl_ssf_weight (geometric normals and positions: the filter must not
-   look at a normal map), sum w_k L_k / sum w_k; finally the irradiance at the normal-mapped
-   normal from the filtered SH (shl_ssf_irradiance, the convolution with the clamped cosine;
-   for RGB rotate the cosine once, shl_zh_cosine_power(n, 1) + shl_zh_rotate, and take
-   shl_sh_dot per channel). */
+/* >>ssf --------------------------------------------------------------------------------------
+   Screen-space SH filter for virtual point lights (VPLs): VPL SH, interleaved sampling, the
+   discontinuity filter. (docs/derivations.md sec. 13.44) */
 
 /* The VPL seen from x (see >>ssf): out_g the frame of shli_cap_frame with the unit direction
    w = out_g[0..2] from x to y; returns e, or 0 when the VPL adds nothing. */
@@ -9435,27 +9087,8 @@ SHLIGHT_INLINE float shl_ssf_irradiance(int n, const float *sh, const float nrm[
 extern "C" {
 #endif
 
-/* CPU-only part of >>brdftab (declared here, defined with SHLIGHT_IMPLEMENTATION): analytic
-   BRDFs, table build by quadrature, the SHLT table file, the MERL measured-BRDF loader.
-   Analytic BRDFs (shl_brdf_params.model), w_o, w_i unit, local frame, both above the surface
-   (z > 0; f_s = 0 otherwise), kd = diffuse albedo, ks = specular scale:
-     SHLIGHT_BRDF_LAMBERT      kd / pi
-     SHLIGHT_BRDF_PHONG        kd / pi + ks (e + 1) / (2 pi) max(0, r . w_i)^e, r = the mirror
-                               direction of w_o, e = exponent (the lobe of docs/derivations.md
-                               section 5:
-   its integral over the sphere is ks, so albedo <= kd + ks) SHLIGHT_BRDF_BLINN_PHONG  kd / pi + ks
-   D F G2 / (4 cos_i cos_o), D = (e + 2) / (2 pi) (n.h)^e, G2 with Beckmann's Lambda at alpha =
-   sqrt(2 / (e + 2)) (Walter et al. 2007's equivalence) SHLIGHT_BRDF_BECKMANN     kd / pi + ks D F
-   G2 / (4 cos_i cos_o), anisotropic Beckmann D (alpha_x, alpha_y) and its exact Smith Lambda (erf)
-     SHLIGHT_BRDF_GGX          the same with the anisotropic GGX (Trowbridge-Reitz) D and Lambda
-   h = normalise(w_i + w_o); G2 = 1 / (1 + Lambda(w_o) + Lambda(w_i)) (height-correlated
-   Smith); F = f0 + (1 - f0) (1 - w_i . h)^5 (Schlick; w_i . h taken as the mean of w_i . h
-   and w_o . h, equal for unit input, so that f stays exactly reciprocal for float input a few
-   ulp off unit). Alpha is the slope roughness (GGX alpha = roughness^2 in the usual artist
-   mapping). All five are reciprocal. Phong, Beckmann and GGX keep albedo <= kd + ks
-   (tests/test_brdftab: max 0.981 Phong e = 50, 0.997 GGX alpha 0.05, 1 + 1e-7 Beckmann alpha
-   0.05, with ks = 1, f0 = 1); Blinn-Phong does not quite, since Beckmann's Lambda is not its
-   own: albedo up to 1.068 ks at e = 10, 1.0015 ks at e = 500 (at cos theta_o = 1e-6). */
+/* CPU-only part of >>brdftab (SHLIGHT_IMPLEMENTATION): analytic BRDFs (Lambert, Phong, Blinn-Phong,
+   Beckmann, GGX), table build, SHLT files, MERL loader. (docs/derivations.md sec. 13.45) */
 /* SHLT file: version written and the only one read (version 1 files, of the cell-centred grid
    of earlier releases, give SHLIGHT_EVERSION: rebuild them); header bytes before the payload;
    the outgoing grid id recorded in the header (1: the grid of >>brdftab, the only one). */
@@ -9527,23 +9160,23 @@ typedef __m512 SHLI_V;
    ports (bench: 8 FMA + 8 stores take 23 cycles, 8 multiplies + 8 stores 17), and the batch
    kernels of 7..16 bands are store-heavy, so there products and sums stay separate */
 #define SHLI_VMULS(a, b) _mm512_mul_round_ps((a), (b), _MM_FROUND_CUR_DIRECTION)
-#define SHLI_VMADDS(a, b, c)                                                                       \
+#define SHLI_VMADDS(a, b, c) \
   _mm512_add_round_ps(SHLI_VMULS((a), (b)), (c), _MM_FROUND_CUR_DIRECTION)
-#define SHLI_VFMS2(a, b, c, d)                                                                     \
+#define SHLI_VFMS2(a, b, c, d) \
   _mm512_sub_round_ps(SHLI_VMULS((a), (b)), SHLI_VMULS((c), (d)), _MM_FROUND_CUR_DIRECTION)
-#define SHLI_VFMA2(a, b, c, d)                                                                     \
+#define SHLI_VFMA2(a, b, c, d) \
   _mm512_add_round_ps(SHLI_VMULS((a), (b)), SHLI_VMULS((c), (d)), _MM_FROUND_CUR_DIRECTION)
 /* SHLI_VSGN(a): the sign of a in a form that SHLI_VFLIP(v, s) applies to v (v times sign(a),
    bit-exact): the sign bit and a XOR on the SIMD paths, which leaves the multiply pipes free */
-#define SHLI_VSGN(a)                                                                               \
+#define SHLI_VSGN(a) \
   _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(a), _mm512_set1_epi32((int)0x80000000u)))
-#define SHLI_VFLIP(v, s)                                                                           \
+#define SHLI_VFLIP(v, s) \
   _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(v), _mm512_castps_si512(s)))
-#define SHLI_VABS(a)                                                                               \
+#define SHLI_VABS(a) \
   _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(a), _mm512_set1_epi32(0x7fffffff)))
-#define SHLI_VSIGN1(a)                                                                             \
-  _mm512_castsi512_ps(_mm512_or_si512(                                                             \
-      _mm512_and_si512(_mm512_castps_si512(a), _mm512_set1_epi32((int)0x80000000u)),               \
+#define SHLI_VSIGN1(a) \
+  _mm512_castsi512_ps(_mm512_or_si512( \
+      _mm512_and_si512(_mm512_castps_si512(a), _mm512_set1_epi32((int)0x80000000u)), \
       _mm512_castps_si512(_mm512_set1_ps(1.0f))))
 #elif !defined(SHLIGHT_NO_SIMD) && defined(__AVX2__) && defined(__FMA__)
 #include <immintrin.h>
@@ -9621,19 +9254,9 @@ SHLI_TAB_DECL(float, sh_brs, 376);
 SHLI_TAB_DECL(float, sh_bpoly, 63);
 #define SHLI_SH_BPOLY (*shli_tab_sh_bpoly())
 
-/* The batch kernels of n <= SHLIGHT_UNROLLED_BANDS, nv = 1 or 2 vectors of directions a call
-   (two: independent chains side by side, and the two stores of a row one 128-byte pair of
-   lines); output i of lane j of vector v at out[i stride + v SHLI_W + j]; nt: streaming
-   (non-temporal) stores, for outputs far larger than the caches.
-   n <= SHLI_SH_BPOLY_BANDS: the Horner forms in z^2 times (x + iy)^m, d taken as unit, one
-   body instantiated per literal n so that its loops unroll and the table loads fold to
-   constants (straight-line code from one source; it pays there: bench/bench_batch.c).
-   7..16 bands: the float Reinsch form of the scalar kernel per column m at t = 1 - |z| / |d|
-   (X_l^m, then Y = X U, X V with the parity sign folded into U, V by a XOR, SHLI_VFLIP) as a
-   loop over run-time n, two bands a trip so that the parity of l - m is fixed in the body;
-   products and sums kept apart (SHLI_VMULS, SHLI_VFMS2, SHLI_VMADDS: never FMAs on AVX-512, see
-   there); column 0, the longest chain, spread over the others (its band m runs with column m).
-   Bit for bit the straight-line kernels this replaces. */
+/* Batch kernels of n <= SHLIGHT_UNROLLED_BANDS, nv = 1 or 2 vectors a call: output i of lane j of
+   vector v at out[i stride + v SHLI_W + j]; nt: streaming stores.
+   (docs/derivations.md sec. 13.46) */
 #define SHLI_SH_BPOLY_BANDS 6
 #if defined(__clang__)
 #define SHLI_UNROLL_BATCH _Pragma("unroll")
@@ -9645,12 +9268,12 @@ SHLI_TAB_DECL(float, sh_bpoly, 63);
 #define SHLI_UNROLL_BATCH
 #define SHLI_BATCH_INLINE SHLIGHT_CPU_INLINE
 #endif
-#define SHLI_BSTORE(p, e)                                                                          \
-  do {                                                                                             \
-    if (nt)                                                                                        \
-      SHLI_VSTREAM((p), (e));                                                                      \
-    else                                                                                           \
-      SHLI_VSTORE((p), (e));                                                                       \
+#define SHLI_BSTORE(p, e) \
+  do { \
+    if (nt) \
+      SHLI_VSTREAM((p), (e)); \
+    else \
+      SHLI_VSTORE((p), (e)); \
   } while (0)
 SHLI_BATCH_INLINE void shli_sh_batch_poly(int n, int nv, int nt, const float *px, const float *py,
                                           const float *pz, float *out, ptrdiff_t stride) {
@@ -9708,28 +9331,28 @@ SHLI_BATCH_INLINE void shli_sh_batch_poly(int n, int nv, int nt, const float *px
    the decode-bound kernel needs): the loop below with every band of every column spelled out */
 #define SHLI_BSTOREI(i, v, e) SHLI_VSTORE(out + (ptrdiff_t)(i)*stride + (v)*SHLI_W, (e))
 /* one Reinsch step (band l, column m) of vector v: from the state xa, dd of band l - 1 */
-#define SHLI_BSTEPU(l, m, v, xa, dd)                                                               \
-  do {                                                                                             \
-    const float *c_ = SHLI_SH_BRS + 16 + 3 * (((l) * ((l)-1)) / 2 + (m));                          \
-    if ((l) == (m) + 1) {                                                                          \
-      (dd) = SHLI_VMULS(SHLI_VSET(c_[0]), t[v]);                                                   \
-      (xa) = SHLI_VADD(SHLI_VSET(c_[1]), (dd));                                                    \
-    } else {                                                                                       \
-      SHLI_V a_ = SHLI_VMULS(SHLI_VSET(c_[0]), t[v]);                                              \
-      (dd) = SHLI_VNMADD(a_, (xa), SHLI_VMULS(SHLI_VSET(c_[2]), (dd)));                            \
-      (xa) = SHLI_VMADDS(SHLI_VSET(c_[1]), (xa), (dd));                                            \
-    }                                                                                              \
+#define SHLI_BSTEPU(l, m, v, xa, dd) \
+  do { \
+    const float *c_ = SHLI_SH_BRS + 16 + 3 * (((l) * ((l)-1)) / 2 + (m)); \
+    if ((l) == (m) + 1) { \
+      (dd) = SHLI_VMULS(SHLI_VSET(c_[0]), t[v]); \
+      (xa) = SHLI_VADD(SHLI_VSET(c_[1]), (dd)); \
+    } else { \
+      SHLI_V a_ = SHLI_VMULS(SHLI_VSET(c_[0]), t[v]); \
+      (dd) = SHLI_VNMADD(a_, (xa), SHLI_VMULS(SHLI_VSET(c_[2]), (dd))); \
+      (xa) = SHLI_VMADDS(SHLI_VSET(c_[1]), (xa), (dd)); \
+    } \
   } while (0)
 /* the column-0 steps due before unit u of the other columns */
-#define SHLI_COL0()                                                                                \
-  while (s0 < n - 1 && s0 * nu < (n - 1) * u) {                                                    \
-    ++s0;                                                                                          \
-    SHLI_UNROLL_BATCH                                                                              \
-    for (v = 0; v < nv; ++v)                                                                       \
-      SHLI_BSTEPU(s0, 0, v, x0[v], d0[v]);                                                         \
-    SHLI_UNROLL_BATCH                                                                              \
-    for (v = 0; v < nv; ++v)                                                                       \
-      SHLI_BSTOREI(s0 *(s0 + 1), v, (s0 & 1) ? SHLI_VFLIP(x0[v], sg[v]) : x0[v]);                  \
+#define SHLI_COL0() \
+  while (s0 < n - 1 && s0 * nu < (n - 1) * u) { \
+    ++s0; \
+    SHLI_UNROLL_BATCH \
+    for (v = 0; v < nv; ++v) \
+      SHLI_BSTEPU(s0, 0, v, x0[v], d0[v]); \
+    SHLI_UNROLL_BATCH \
+    for (v = 0; v < nv; ++v) \
+      SHLI_BSTOREI(s0 *(s0 + 1), v, (s0 & 1) ? SHLI_VFLIP(x0[v], sg[v]) : x0[v]); \
   }
 SHLI_BATCH_INLINE void shli_sh_batch_rsu(int n, int nv, const float *px, const float *py,
                                          const float *pz, float *out, ptrdiff_t stride) {
@@ -9801,27 +9424,27 @@ SHLI_BATCH_INLINE void shli_sh_batch_rsu(int n, int nv, const float *px, const f
 #undef SHLI_BSTOREI
 /* one Reinsch step of every vector: X~, D~ of the previous band to this one's (constants c),
    D = c D - (alpha t) X with alpha t off the chain: two FMA latencies a band, not four */
-#define SHLI_BSTEP(c, xa, dd)                                                                      \
-  do {                                                                                             \
-    SHLI_UNROLL_BATCH                                                                              \
-    for (v = 0; v < nv; ++v) {                                                                     \
-      SHLI_V a_ = SHLI_VMULS(SHLI_VSET((c)[0]), t[v]);                                             \
-      (dd)[v] = SHLI_VNMADD(a_, (xa)[v], SHLI_VMULS(SHLI_VSET((c)[2]), (dd)[v]));                  \
-      (xa)[v] = SHLI_VMADDS(SHLI_VSET((c)[1]), (xa)[v], (dd)[v]);                                  \
-    }                                                                                              \
+#define SHLI_BSTEP(c, xa, dd) \
+  do { \
+    SHLI_UNROLL_BATCH \
+    for (v = 0; v < nv; ++v) { \
+      SHLI_V a_ = SHLI_VMULS(SHLI_VSET((c)[0]), t[v]); \
+      (dd)[v] = SHLI_VNMADD(a_, (xa)[v], SHLI_VMULS(SHLI_VSET((c)[2]), (dd)[v])); \
+      (xa)[v] = SHLI_VMADDS(SHLI_VSET((c)[1]), (xa)[v], (dd)[v]); \
+    } \
   } while (0)
 /* rows l (l + 1) + m (at po) and - m (at pq) of band l, then po, pq to band l + 1 */
-#define SHLI_BROWS(cu, su)                                                                         \
-  do {                                                                                             \
-    SHLI_UNROLL_BATCH                                                                              \
-    for (v = 0; v < nv; ++v)                                                                       \
-      SHLI_BSTORE(po + v * SHLI_W, SHLI_VMULS(xa[v], (cu)[v]));                                    \
-    SHLI_UNROLL_BATCH                                                                              \
-    for (v = 0; v < nv; ++v)                                                                       \
-      SHLI_BSTORE(pq + v * SHLI_W, SHLI_VMULS(xa[v], (su)[v]));                                    \
-    po += dl;                                                                                      \
-    pq += dl;                                                                                      \
-    dl += 2 * stride;                                                                              \
+#define SHLI_BROWS(cu, su) \
+  do { \
+    SHLI_UNROLL_BATCH \
+    for (v = 0; v < nv; ++v) \
+      SHLI_BSTORE(po + v * SHLI_W, SHLI_VMULS(xa[v], (cu)[v])); \
+    SHLI_UNROLL_BATCH \
+    for (v = 0; v < nv; ++v) \
+      SHLI_BSTORE(pq + v * SHLI_W, SHLI_VMULS(xa[v], (su)[v])); \
+    po += dl; \
+    pq += dl; \
+    dl += 2 * stride; \
   } while (0)
 SHLI_BATCH_INLINE void shli_sh_batch_rs(int n, int nv, int nt, const float *px, const float *py,
                                         const float *pz, float *out, ptrdiff_t stride) {
@@ -9906,18 +9529,18 @@ SHLI_BATCH_INLINE void shli_sh_batch_rs(int n, int nv, int nt, const float *px, 
 #undef SHLI_BSTORE
 typedef void (*shli_sh_batch_fn)(const float *, const float *, const float *, float *, ptrdiff_t);
 /* [0]: one vector, [1]: two, [2]: two with streaming stores */
-#define SHLI_SH_BATCH_N(N)                                                                         \
-  static void shli_sh_batch1_##N(const float *x, const float *y, const float *z, float *out,       \
-                                 ptrdiff_t stride) {                                               \
-    shli_sh_batch_poly((N), 1, 0, x, y, z, out, stride);                                           \
-  }                                                                                                \
-  static void shli_sh_batch2_##N(const float *x, const float *y, const float *z, float *out,       \
-                                 ptrdiff_t stride) {                                               \
-    shli_sh_batch_poly((N), 2, 0, x, y, z, out, stride);                                           \
-  }                                                                                                \
-  static void shli_sh_batch2s_##N(const float *x, const float *y, const float *z, float *out,      \
-                                  ptrdiff_t stride) {                                              \
-    shli_sh_batch_poly((N), 2, 1, x, y, z, out, stride);                                           \
+#define SHLI_SH_BATCH_N(N) \
+  static void shli_sh_batch1_##N(const float *x, const float *y, const float *z, float *out, \
+                                 ptrdiff_t stride) { \
+    shli_sh_batch_poly((N), 1, 0, x, y, z, out, stride); \
+  } \
+  static void shli_sh_batch2_##N(const float *x, const float *y, const float *z, float *out, \
+                                 ptrdiff_t stride) { \
+    shli_sh_batch_poly((N), 2, 0, x, y, z, out, stride); \
+  } \
+  static void shli_sh_batch2s_##N(const float *x, const float *y, const float *z, float *out, \
+                                  ptrdiff_t stride) { \
+    shli_sh_batch_poly((N), 2, 1, x, y, z, out, stride); \
   }
 SHLI_SH_BATCH_N(1)
 SHLI_SH_BATCH_N(2)
@@ -9944,24 +9567,24 @@ static void shli_sh_batch_rs2(int n, const float *x, const float *y, const float
                               ptrdiff_t stride) {
   shli_sh_batch_rs(n, 2, 0, x, y, z, out, stride);
 }
-#define SHLI_SH_BATCH_N(N)                                                                         \
-  static void shli_sh_batch1_##N(const float *x, const float *y, const float *z, float *out,       \
-                                 ptrdiff_t stride) {                                               \
-    shli_sh_batch_rs1((N), x, y, z, out, stride);                                                  \
-  }                                                                                                \
-  static void shli_sh_batch2_##N(const float *x, const float *y, const float *z, float *out,       \
-                                 ptrdiff_t stride) {                                               \
-    shli_sh_batch_rs2((N), x, y, z, out, stride);                                                  \
+#define SHLI_SH_BATCH_N(N) \
+  static void shli_sh_batch1_##N(const float *x, const float *y, const float *z, float *out, \
+                                 ptrdiff_t stride) { \
+    shli_sh_batch_rs1((N), x, y, z, out, stride); \
+  } \
+  static void shli_sh_batch2_##N(const float *x, const float *y, const float *z, float *out, \
+                                 ptrdiff_t stride) { \
+    shli_sh_batch_rs2((N), x, y, z, out, stride); \
   }
 #else
-#define SHLI_SH_BATCH_N(N)                                                                         \
-  static void shli_sh_batch1_##N(const float *x, const float *y, const float *z, float *out,       \
-                                 ptrdiff_t stride) {                                               \
-    shli_sh_batch_rsu((N), 1, x, y, z, out, stride);                                               \
-  }                                                                                                \
-  static void shli_sh_batch2_##N(const float *x, const float *y, const float *z, float *out,       \
-                                 ptrdiff_t stride) {                                               \
-    shli_sh_batch_rsu((N), 2, x, y, z, out, stride);                                               \
+#define SHLI_SH_BATCH_N(N) \
+  static void shli_sh_batch1_##N(const float *x, const float *y, const float *z, float *out, \
+                                 ptrdiff_t stride) { \
+    shli_sh_batch_rsu((N), 1, x, y, z, out, stride); \
+  } \
+  static void shli_sh_batch2_##N(const float *x, const float *y, const float *z, float *out, \
+                                 ptrdiff_t stride) { \
+    shli_sh_batch_rsu((N), 2, x, y, z, out, stride); \
   }
 #endif
 SHLI_SH_BATCH_N(7)
@@ -9996,13 +9619,8 @@ static void shli_sh_batch_vec1(int n, const float *x, const float *y, const floa
 /* streaming stores from this much output on (bytes; bench/bench_batch.c: below it the rows
    stay in the caches and plain stores win) */
 #define SHLI_BATCH_STREAM_BYTES (256.0 * 1024.0)
-/* Below it, with an output larger than L1 (more than 32 KiB, 64 KiB from 7 bands; rows count
-   floats apart, a pair of vectors writing 2 n^2 lines), each pair prefetches the next pair's
-   lines for writing while it computes (PREFETCHW where the target has it): the lines of two
-   pairs, 4 n^2 x 64 bytes, fit L1 up to 10 bands; more bands lose (bench/bench_batch.c). Not
-   where rows a multiple of 4 KiB apart (count a multiple of 1024) share their L1 sets and
-   either more than 9 rows compete for them or the output stays in L1 anyway: there the
-   prefetches only evict lines. */
+/* Below it, for outputs larger than L1: each pair prefetches the next pair's lines for writing.
+   (docs/derivations.md sec. 13.47) */
 #define SHLI_BATCH_PREFETCH_BANDS 10
 #if defined(__GNUC__) || defined(__clang__)
 #define SHLI_PREFETCHW(p) __builtin_prefetch((p), 1, 3)
@@ -10950,12 +10568,8 @@ static void shli_tab_hnode(int n, const shli_tabsrc *src, const double wo[3], co
 
 #define SHLI_HALF_GRADE 3
 
-/* the half-vector quadrature of an isotropic microfacet lobe (see shl_brdf_table_build) at
-   order q: w_i = 2 (w_o . h) h - w_o, d w_i = 4 (w_o . h) d h, h = cos(t) z + sin(t) (cos(ph) a
-   + sin(ph) b) with a the azimuth of w_o. D depends on t only, with the width alpha whatever
-   theta_o (no foreshortening), and w_i is above the horizon iff cos(ph) > cs(t) =
-   -cos_o cos(2t) / (sin_o sin(2t)): full circles for t < (pi/2 - theta_o) / 2, arcs
-   (-pm, pm) up to t = (pi/2 + theta_o) / 2. */
+/* the half-vector quadrature of an isotropic microfacet lobe at order q.
+   (docs/derivations.md sec. 13.48) */
 static void shli_tab_half(int n, const shli_tabsrc *src, const double wo[3], int q, double *acc,
                           float *y, const double *xg, const double *wg) {
   double br[24];
@@ -11087,17 +10701,8 @@ static void shli_tab_snode(int n, const shli_tabsrc *src, const double wo[3], do
   }
 }
 
-/* the half-vector quadrature of an anisotropic microfacet lobe at order q, in the stretched
-   slopes (x, y) = (h_x / (alpha_x h_z), h_y / (alpha_y h_z)) = tan(u) (cos(ph), sin(ph)), where
-   D is isotropic of width 1: d omega_h = alpha_x alpha_y tan(u) sec(u)^2 cos(theta_h)^3 du dph.
-   In slopes, w_i is above the horizon iff the slope of h lies in the disc of radius 1 / cos_o
-   about w_o's (x, y) / cos_o: the stretched ray of azimuth ph leaves that ellipse once, at
-   r_max(ph) = cos_o / (sqrt(vw^2 + cos_o^2 |v|^2) - vw), v = (alpha_x cos(ph), alpha_y sin(ph)),
-   vw = v . w_o. Outer ph: panels at ph0 + k pi/2, where vw = 0 at ph0 and ph0 + pi (there
-   r_max changes from ~cos_o / (2 |vw|) to ~2 vw / (cos_o |v|^2) within ~cos_o |v| / |vw'| rad),
-   graded geometrically (1/4) towards ph0 and ph0 + pi down to that width. Inner u in
-   [0, atan(r_max)]: panels at atan(3^k), -2 <= k < 8, graded (1/4) towards the end, where w_i
-   meets the horizon. */
+/* the half-vector quadrature of an anisotropic microfacet lobe at order q, in stretched slopes.
+   (docs/derivations.md sec. 13.49) */
 static void shli_tab_aniso(int n, const shli_tabsrc *src, const double wo[3], int q, double *acc,
                            float *y, const double *xg, const double *wg) {
   double br[128];
@@ -11422,11 +11027,8 @@ SHLIGHT_API shl_result shl_brdf_table_build(shl_brdf_table *t, const shl_brdf_pa
 }
 
 /* ---- MERL ---- */
-/* MERL reconstruction, one axis at a time (phi_d, then theta_d, then theta_h): the value at
-   index coordinate x from samples j0 = floor(x) (at most nj - 2, so that beyond the last sample
-   the last two extrapolate) and j0 + 1, each valid or not; both valid: linear; one valid:
-   extrapolated from it and its neighbours on its other side (shli_merl_extrap); none: invalid
-   (returns 0). get(j) gives the value of index j and whether it is valid. */
+/* MERL reconstruction, one axis at a time: linear from valid samples, extrapolated at the edges
+   (shli_merl_extrap); none valid: returns 0. (docs/derivations.md sec. 13.50) */
 typedef struct shli_merlq {
   const shl_merl *m;
   int c;
@@ -11579,15 +11181,8 @@ static double shli_merl_f(const shl_merl *m, int c, const double wo[3], const do
   if (q.u[2] >= (double)m->n_phi_d) {
     q.u[2] -= (double)m->n_phi_d;
   }
-  /* f cos(theta_h) cos(theta_d) = f (cos_i + cos_o) / 2 is reconstructed, which stays smooth
-     where f of a rough surface grows like 1 / (cos_i + cos_o) at grazing, then divided by the
-     query's factor (cos_i + cos_o) / 2, floored at 1e-9. Where the cell reaches past the valid
-     samples (negative in MERL files, 0 where a direction of the sample lies below the surface;
-     beyond the last theta_h and theta_d samples, 88 and 89 degrees in MERL files), each axis
-     extrapolates from the last valid samples (quadratic where 4 of them agree on the curvature:
-     near the horizon the quantity is curved on the scale of the grid step, linear otherwise). With
-     no valid sample in reach, the theta_d coordinate steps down one layer at a time (held along
-     theta_d, where the sampled configurations end first). */
+  /* f (cos_i + cos_o) / 2 is reconstructed, then divided by the query's factor (floored at 1e-9).
+     (docs/derivations.md sec. 13.51) */
   for (;;) {
     if (shli_merl_axis(&q, 0, &v)) {
       break;
@@ -14237,6 +13832,13 @@ SHLI_TAB_FN(gradv_coef) {
 #endif
 
 /* @generated begin gradient */
+/* output i of shli_sh_grad_lines from its terms in band l-1 (a: x, b: y, c: z) */
+#define SHLI_G3(i, a, b, c) \
+  q = lr * y[i]; \
+  SHLIGHT_SET3(out_grad[i], (a - q * nx) * ib, (b - q * ny) * ib, (c - q * nz) * ib)
+#define SHLI_G2(i, a, b) \
+  q = lr * y[i]; \
+  SHLIGHT_SET3(out_grad[i], (a - q * nx) * ib, (b - q * ny) * ib, -q * nz * ib)
 SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, float ny, float nz,
                                            float ir, float ib, float (*out_grad)[3]) {
   float r[29];
@@ -14256,11 +13858,11 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     lr = 1.0f * ir;
     r[0] = y[0] * ir;
     q = lr * y[1];
-    SHLIGHT_SET3(out_grad[1], -q * nx * ib, (-1.73205081f * r[0] - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[1], -q * nx * ib, (-1.7320508f * r[0] - q * ny) * ib, -q * nz * ib);
     q = lr * y[2];
-    SHLIGHT_SET3(out_grad[2], -q * nx * ib, -q * ny * ib, (1.73205081f * r[0] - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[2], -q * nx * ib, -q * ny * ib, (1.7320508f * r[0] - q * nz) * ib);
     q = lr * y[3];
-    SHLIGHT_SET3(out_grad[3], (-1.73205081f * r[0] - q * nx) * ib, -q * ny * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[3], (-1.7320508f * r[0] - q * nx) * ib, -q * ny * ib, -q * nz * ib);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 2
@@ -14269,21 +13871,15 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     r[0] = y[1] * ir;
     r[1] = y[2] * ir;
     r[2] = y[3] * ir;
-    q = lr * y[4];
-    SHLIGHT_SET3(out_grad[4], (-2.23606798f * r[0] - q * nx) * ib,
-                 (-2.23606798f * r[2] - q * ny) * ib, -q * nz * ib);
+    SHLI_G2(4, -2.236068f * r[0], -2.236068f * r[2]);
     q = lr * y[5];
-    SHLIGHT_SET3(out_grad[5], -q * nx * ib, (-2.23606798f * r[1] - q * ny) * ib,
-                 (2.23606798f * r[0] - q * nz) * ib);
-    q = lr * y[6];
-    SHLIGHT_SET3(out_grad[6], (1.29099445f * r[2] - q * nx) * ib,
-                 (1.29099445f * r[0] - q * ny) * ib, (2.5819889f * r[1] - q * nz) * ib);
+    SHLIGHT_SET3(out_grad[5], -q * nx * ib, (-2.236068f * r[1] - q * ny) * ib,
+                 (2.236068f * r[0] - q * nz) * ib);
+    SHLI_G3(6, 1.2909944f * r[2], 1.2909944f * r[0], 2.5819888f * r[1]);
     q = lr * y[7];
-    SHLIGHT_SET3(out_grad[7], (-2.23606798f * r[1] - q * nx) * ib, -q * ny * ib,
-                 (2.23606798f * r[2] - q * nz) * ib);
-    q = lr * y[8];
-    SHLIGHT_SET3(out_grad[8], (-2.23606798f * r[2] - q * nx) * ib,
-                 (2.23606798f * r[0] - q * ny) * ib, -q * nz * ib);
+    SHLIGHT_SET3(out_grad[7], (-2.236068f * r[1] - q * nx) * ib, -q * ny * ib,
+                 (2.236068f * r[2] - q * nz) * ib);
+    SHLI_G2(8, -2.236068f * r[2], 2.236068f * r[0]);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 3
@@ -14294,28 +13890,13 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     r[2] = y[6] * ir;
     r[3] = y[7] * ir;
     r[4] = y[8] * ir;
-    q = lr * y[9];
-    SHLIGHT_SET3(out_grad[9], (-3.24037035f * r[0] - q * nx) * ib,
-                 (-3.24037035f * r[4] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[10];
-    SHLIGHT_SET3(out_grad[10], (-2.64575131f * r[1] - q * nx) * ib,
-                 (-2.64575131f * r[3] - q * ny) * ib, (2.64575131f * r[0] - q * nz) * ib);
-    q = lr * y[11];
-    SHLIGHT_SET3(out_grad[11], (0.836660027f * r[0] - q * nx) * ib,
-                 (-2.89827535f * r[2] + -0.836660027f * r[4] - q * ny) * ib,
-                 (3.34664011f * r[1] - q * nz) * ib);
-    q = lr * y[12];
-    SHLIGHT_SET3(out_grad[12], (2.04939015f * r[3] - q * nx) * ib,
-                 (2.04939015f * r[1] - q * ny) * ib, (3.54964787f * r[2] - q * nz) * ib);
-    q = lr * y[13];
-    SHLIGHT_SET3(out_grad[13], (-2.89827535f * r[2] + 0.836660027f * r[4] - q * nx) * ib,
-                 (0.836660027f * r[0] - q * ny) * ib, (3.34664011f * r[3] - q * nz) * ib);
-    q = lr * y[14];
-    SHLIGHT_SET3(out_grad[14], (-2.64575131f * r[3] - q * nx) * ib,
-                 (2.64575131f * r[1] - q * ny) * ib, (2.64575131f * r[4] - q * nz) * ib);
-    q = lr * y[15];
-    SHLIGHT_SET3(out_grad[15], (-3.24037035f * r[4] - q * nx) * ib,
-                 (3.24037035f * r[0] - q * ny) * ib, -q * nz * ib);
+    SHLI_G2(9, -3.2403703f * r[0], -3.2403703f * r[4]);
+    SHLI_G3(10, -2.6457512f * r[1], -2.6457512f * r[3], 2.6457512f * r[0]);
+    SHLI_G3(11, 0.83666f * r[0], -2.8982754f * r[2] + -0.83666f * r[4], 3.34664f * r[1]);
+    SHLI_G3(12, 2.04939f * r[3], 2.04939f * r[1], 3.5496478f * r[2]);
+    SHLI_G3(13, -2.8982754f * r[2] + 0.83666f * r[4], 0.83666f * r[0], 3.34664f * r[3]);
+    SHLI_G3(14, -2.6457512f * r[3], 2.6457512f * r[1], 2.6457512f * r[4]);
+    SHLI_G2(15, -3.2403703f * r[4], 3.2403703f * r[0]);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 4
@@ -14328,36 +13909,17 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     r[4] = y[13] * ir;
     r[5] = y[14] * ir;
     r[6] = y[15] * ir;
-    q = lr * y[16];
-    SHLIGHT_SET3(out_grad[16], (-4.24264069f * r[0] - q * nx) * ib,
-                 (-4.24264069f * r[6] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[17];
-    SHLIGHT_SET3(out_grad[17], (-3.67423461f * r[1] - q * nx) * ib,
-                 (-3.67423461f * r[5] - q * ny) * ib, (3.0f * r[0] - q * nz) * ib);
-    q = lr * y[18];
-    SHLIGHT_SET3(out_grad[18], (-3.10529502f * r[2] + 0.801783726f * r[0] - q * nx) * ib,
-                 (-3.10529502f * r[4] + -0.801783726f * r[6] - q * ny) * ib,
-                 (3.92792202f * r[1] - q * nz) * ib);
-    q = lr * y[19];
-    SHLIGHT_SET3(out_grad[19], (1.38873015f * r[1] - q * nx) * ib,
-                 (-3.58568583f * r[3] + -1.38873015f * r[5] - q * ny) * ib,
-                 (4.39155033f * r[2] - q * nz) * ib);
-    q = lr * y[20];
-    SHLIGHT_SET3(out_grad[20], (2.7774603f * r[4] - q * nx) * ib, (2.7774603f * r[2] - q * ny) * ib,
-                 (4.53557368f * r[3] - q * nz) * ib);
-    q = lr * y[21];
-    SHLIGHT_SET3(out_grad[21], (-3.58568583f * r[3] + 1.38873015f * r[5] - q * nx) * ib,
-                 (1.38873015f * r[1] - q * ny) * ib, (4.39155033f * r[4] - q * nz) * ib);
-    q = lr * y[22];
-    SHLIGHT_SET3(out_grad[22], (-3.10529502f * r[4] + 0.801783726f * r[6] - q * nx) * ib,
-                 (3.10529502f * r[2] + 0.801783726f * r[0] - q * ny) * ib,
-                 (3.92792202f * r[5] - q * nz) * ib);
-    q = lr * y[23];
-    SHLIGHT_SET3(out_grad[23], (-3.67423461f * r[5] - q * nx) * ib,
-                 (3.67423461f * r[1] - q * ny) * ib, (3.0f * r[6] - q * nz) * ib);
-    q = lr * y[24];
-    SHLIGHT_SET3(out_grad[24], (-4.24264069f * r[6] - q * nx) * ib,
-                 (4.24264069f * r[0] - q * ny) * ib, -q * nz * ib);
+    SHLI_G2(16, -4.2426405f * r[0], -4.2426405f * r[6]);
+    SHLI_G3(17, -3.6742346f * r[1], -3.6742346f * r[5], 3.0f * r[0]);
+    SHLI_G3(18, -3.105295f * r[2] + 0.80178374f * r[0], -3.105295f * r[4] + -0.80178374f * r[6],
+            3.927922f * r[1]);
+    SHLI_G3(19, 1.3887302f * r[1], -3.5856857f * r[3] + -1.3887302f * r[5], 4.3915505f * r[2]);
+    SHLI_G3(20, 2.7774603f * r[4], 2.7774603f * r[2], 4.5355735f * r[3]);
+    SHLI_G3(21, -3.5856857f * r[3] + 1.3887302f * r[5], 1.3887302f * r[1], 4.3915505f * r[4]);
+    SHLI_G3(22, -3.105295f * r[4] + 0.80178374f * r[6], 3.105295f * r[2] + 0.80178374f * r[0],
+            3.927922f * r[5]);
+    SHLI_G3(23, -3.6742346f * r[5], 3.6742346f * r[1], 3.0f * r[6]);
+    SHLI_G2(24, -4.2426405f * r[6], 4.2426405f * r[0]);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 5
@@ -14372,44 +13934,21 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     r[6] = y[22] * ir;
     r[7] = y[23] * ir;
     r[8] = y[24] * ir;
-    q = lr * y[25];
-    SHLIGHT_SET3(out_grad[25], (-5.24404424f * r[0] - q * nx) * ib,
-                 (-5.24404424f * r[8] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[26];
-    SHLIGHT_SET3(out_grad[26], (-4.69041576f * r[1] - q * nx) * ib,
-                 (-4.69041576f * r[7] - q * ny) * ib, (3.31662479f * r[0] - q * nz) * ib);
-    q = lr * y[27];
-    SHLIGHT_SET3(out_grad[27], (-4.13655788f * r[2] + 0.78173596f * r[0] - q * nx) * ib,
-                 (-4.13655788f * r[6] + -0.78173596f * r[8] - q * ny) * ib,
-                 (4.42216639f * r[1] - q * nz) * ib);
-    q = lr * y[28];
-    SHLIGHT_SET3(out_grad[28], (-3.58236421f * r[3] + 1.3540064f * r[1] - q * nx) * ib,
-                 (-3.58236421f * r[5] + -1.3540064f * r[7] - q * ny) * ib,
-                 (5.06622805f * r[2] - q * nz) * ib);
-    q = lr * y[29];
-    SHLIGHT_SET3(out_grad[29], (1.91485422f * r[2] - q * nx) * ib,
-                 (-4.28174419f * r[4] + -1.91485422f * r[6] - q * ny) * ib,
-                 (5.4160256f * r[3] - q * nz) * ib);
-    q = lr * y[30];
-    SHLIGHT_SET3(out_grad[30], (3.49602949f * r[5] - q * nx) * ib,
-                 (3.49602949f * r[3] - q * ny) * ib, (5.52770798f * r[4] - q * nz) * ib);
-    q = lr * y[31];
-    SHLIGHT_SET3(out_grad[31], (-4.28174419f * r[4] + 1.91485422f * r[6] - q * nx) * ib,
-                 (1.91485422f * r[2] - q * ny) * ib, (5.4160256f * r[5] - q * nz) * ib);
-    q = lr * y[32];
-    SHLIGHT_SET3(out_grad[32], (-3.58236421f * r[5] + 1.3540064f * r[7] - q * nx) * ib,
-                 (3.58236421f * r[3] + 1.3540064f * r[1] - q * ny) * ib,
-                 (5.06622805f * r[6] - q * nz) * ib);
-    q = lr * y[33];
-    SHLIGHT_SET3(out_grad[33], (-4.13655788f * r[6] + 0.78173596f * r[8] - q * nx) * ib,
-                 (4.13655788f * r[2] + 0.78173596f * r[0] - q * ny) * ib,
-                 (4.42216639f * r[7] - q * nz) * ib);
-    q = lr * y[34];
-    SHLIGHT_SET3(out_grad[34], (-4.69041576f * r[7] - q * nx) * ib,
-                 (4.69041576f * r[1] - q * ny) * ib, (3.31662479f * r[8] - q * nz) * ib);
-    q = lr * y[35];
-    SHLIGHT_SET3(out_grad[35], (-5.24404424f * r[8] - q * nx) * ib,
-                 (5.24404424f * r[0] - q * ny) * ib, -q * nz * ib);
+    SHLI_G2(25, -5.2440443f * r[0], -5.2440443f * r[8]);
+    SHLI_G3(26, -4.690416f * r[1], -4.690416f * r[7], 3.3166249f * r[0]);
+    SHLI_G3(27, -4.136558f * r[2] + 0.78173596f * r[0], -4.136558f * r[6] + -0.78173596f * r[8],
+            4.4221663f * r[1]);
+    SHLI_G3(28, -3.5823643f * r[3] + 1.3540064f * r[1], -3.5823643f * r[5] + -1.3540064f * r[7],
+            5.066228f * r[2]);
+    SHLI_G3(29, 1.9148542f * r[2], -4.281744f * r[4] + -1.9148542f * r[6], 5.4160256f * r[3]);
+    SHLI_G3(30, 3.4960294f * r[5], 3.4960294f * r[3], 5.527708f * r[4]);
+    SHLI_G3(31, -4.281744f * r[4] + 1.9148542f * r[6], 1.9148542f * r[2], 5.4160256f * r[5]);
+    SHLI_G3(32, -3.5823643f * r[5] + 1.3540064f * r[7], 3.5823643f * r[3] + 1.3540064f * r[1],
+            5.066228f * r[6]);
+    SHLI_G3(33, -4.136558f * r[6] + 0.78173596f * r[8], 4.136558f * r[2] + 0.78173596f * r[0],
+            4.4221663f * r[7]);
+    SHLI_G3(34, -4.690416f * r[7], 4.690416f * r[1], 3.3166249f * r[8]);
+    SHLI_G2(35, -5.2440443f * r[8], 5.2440443f * r[0]);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 6
@@ -14426,52 +13965,25 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     r[8] = y[33] * ir;
     r[9] = y[34] * ir;
     r[10] = y[35] * ir;
-    q = lr * y[36];
-    SHLIGHT_SET3(out_grad[36], (-6.244998f * r[0] - q * nx) * ib,
-                 (-6.244998f * r[10] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[37];
-    SHLIGHT_SET3(out_grad[37], (-5.70087713f * r[1] - q * nx) * ib,
-                 (-5.70087713f * r[9] - q * ny) * ib, (3.60555128f * r[0] - q * nz) * ib);
-    q = lr * y[38];
-    SHLIGHT_SET3(out_grad[38], (-5.15663738f * r[2] + 0.768706115f * r[0] - q * nx) * ib,
-                 (-5.15663738f * r[8] + -0.768706115f * r[10] - q * ny) * ib,
-                 (4.86172435f * r[1] - q * nz) * ib);
-    q = lr * y[39];
-    SHLIGHT_SET3(out_grad[39], (-4.61223669f * r[3] + 1.33143805f * r[1] - q * nx) * ib,
-                 (-4.61223669f * r[7] + -1.33143805f * r[9] - q * ny) * ib,
-                 (5.64881323f * r[2] - q * nz) * ib);
-    q = lr * y[40];
-    SHLIGHT_SET3(out_grad[40], (-4.06761042f * r[4] + 1.88293774f * r[2] - q * nx) * ib,
-                 (-4.06761042f * r[6] + -1.88293774f * r[8] - q * ny) * ib,
-                 (6.14964892f * r[3] - q * nz) * ib);
-    q = lr * y[41];
-    SHLIGHT_SET3(out_grad[41], (2.43086217f * r[3] - q * nx) * ib,
-                 (-4.981785f * r[5] + -2.43086217f * r[7] - q * ny) * ib,
-                 (6.43145678f * r[4] - q * nz) * ib);
-    q = lr * y[42];
-    SHLIGHT_SET3(out_grad[42], (4.21037679f * r[6] - q * nx) * ib,
-                 (4.21037679f * r[4] - q * ny) * ib, (6.52268768f * r[5] - q * nz) * ib);
-    q = lr * y[43];
-    SHLIGHT_SET3(out_grad[43], (-4.981785f * r[5] + 2.43086217f * r[7] - q * nx) * ib,
-                 (2.43086217f * r[3] - q * ny) * ib, (6.43145678f * r[6] - q * nz) * ib);
-    q = lr * y[44];
-    SHLIGHT_SET3(out_grad[44], (-4.06761042f * r[6] + 1.88293774f * r[8] - q * nx) * ib,
-                 (4.06761042f * r[4] + 1.88293774f * r[2] - q * ny) * ib,
-                 (6.14964892f * r[7] - q * nz) * ib);
-    q = lr * y[45];
-    SHLIGHT_SET3(out_grad[45], (-4.61223669f * r[7] + 1.33143805f * r[9] - q * nx) * ib,
-                 (4.61223669f * r[3] + 1.33143805f * r[1] - q * ny) * ib,
-                 (5.64881323f * r[8] - q * nz) * ib);
-    q = lr * y[46];
-    SHLIGHT_SET3(out_grad[46], (-5.15663738f * r[8] + 0.768706115f * r[10] - q * nx) * ib,
-                 (5.15663738f * r[2] + 0.768706115f * r[0] - q * ny) * ib,
-                 (4.86172435f * r[9] - q * nz) * ib);
-    q = lr * y[47];
-    SHLIGHT_SET3(out_grad[47], (-5.70087713f * r[9] - q * nx) * ib,
-                 (5.70087713f * r[1] - q * ny) * ib, (3.60555128f * r[10] - q * nz) * ib);
-    q = lr * y[48];
-    SHLIGHT_SET3(out_grad[48], (-6.244998f * r[10] - q * nx) * ib, (6.244998f * r[0] - q * ny) * ib,
-                 -q * nz * ib);
+    SHLI_G2(36, -6.244998f * r[0], -6.244998f * r[10]);
+    SHLI_G3(37, -5.700877f * r[1], -5.700877f * r[9], 3.6055512f * r[0]);
+    SHLI_G3(38, -5.156637f * r[2] + 0.76870614f * r[0], -5.156637f * r[8] + -0.76870614f * r[10],
+            4.8617244f * r[1]);
+    SHLI_G3(39, -4.6122365f * r[3] + 1.3314381f * r[1], -4.6122365f * r[7] + -1.3314381f * r[9],
+            5.6488132f * r[2]);
+    SHLI_G3(40, -4.0676103f * r[4] + 1.8829378f * r[2], -4.0676103f * r[6] + -1.8829378f * r[8],
+            6.149649f * r[3]);
+    SHLI_G3(41, 2.4308622f * r[3], -4.981785f * r[5] + -2.4308622f * r[7], 6.4314566f * r[4]);
+    SHLI_G3(42, 4.2103767f * r[6], 4.2103767f * r[4], 6.522688f * r[5]);
+    SHLI_G3(43, -4.981785f * r[5] + 2.4308622f * r[7], 2.4308622f * r[3], 6.4314566f * r[6]);
+    SHLI_G3(44, -4.0676103f * r[6] + 1.8829378f * r[8], 4.0676103f * r[4] + 1.8829378f * r[2],
+            6.149649f * r[7]);
+    SHLI_G3(45, -4.6122365f * r[7] + 1.3314381f * r[9], 4.6122365f * r[3] + 1.3314381f * r[1],
+            5.6488132f * r[8]);
+    SHLI_G3(46, -5.156637f * r[8] + 0.76870614f * r[10], 5.156637f * r[2] + 0.76870614f * r[0],
+            4.8617244f * r[9]);
+    SHLI_G3(47, -5.700877f * r[9], 5.700877f * r[1], 3.6055512f * r[10]);
+    SHLI_G2(48, -6.244998f * r[10], 6.244998f * r[0]);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 7
@@ -14490,60 +14002,29 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     r[10] = y[46] * ir;
     r[11] = y[47] * ir;
     r[12] = y[48] * ir;
-    q = lr * y[49];
-    SHLIGHT_SET3(out_grad[49], (-7.24568837f * r[0] - q * nx) * ib,
-                 (-7.24568837f * r[12] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[50];
-    SHLIGHT_SET3(out_grad[50], (-6.70820393f * r[1] - q * nx) * ib,
-                 (-6.70820393f * r[11] - q * ny) * ib, (3.87298335f * r[0] - q * nz) * ib);
-    q = lr * y[51];
-    SHLIGHT_SET3(out_grad[51], (-6.17065013f * r[2] + 0.759554525f * r[0] - q * nx) * ib,
-                 (-6.17065013f * r[10] + -0.759554525f * r[12] - q * ny) * ib,
-                 (5.26234812f * r[1] - q * nz) * ib);
-    q = lr * y[52];
-    SHLIGHT_SET3(out_grad[52], (-5.63300712f * r[3] + 1.31558703f * r[1] - q * nx) * ib,
-                 (-5.63300712f * r[9] + -1.31558703f * r[11] - q * ny) * ib,
-                 (6.17065013f * r[2] - q * nz) * ib);
-    q = lr * y[53];
-    SHLIGHT_SET3(out_grad[53], (-5.09524665f * r[4] + 1.86052102f * r[2] - q * nx) * ib,
-                 (-5.09524665f * r[8] + -1.86052102f * r[10] - q * ny) * ib,
-                 (6.7936622f * r[3] - q * nz) * ib);
-    q = lr * y[54];
-    SHLIGHT_SET3(out_grad[54], (-4.55732715f * r[5] + 2.40192231f * r[3] - q * nx) * ib,
-                 (-4.55732715f * r[7] + -2.40192231f * r[9] - q * ny) * ib,
-                 (7.20576692f * r[4] - q * nz) * ib);
-    q = lr * y[55];
-    SHLIGHT_SET3(out_grad[55], (2.94174203f * r[4] - q * nx) * ib,
-                 (-5.6839856f * r[6] + -2.94174203f * r[8] - q * ny) * ib,
-                 (7.44208408f * r[5] - q * nz) * ib);
-    q = lr * y[56];
-    SHLIGHT_SET3(out_grad[56], (4.92247592f * r[7] - q * nx) * ib,
-                 (4.92247592f * r[5] - q * ny) * ib, (7.51920618f * r[6] - q * nz) * ib);
-    q = lr * y[57];
-    SHLIGHT_SET3(out_grad[57], (-5.6839856f * r[6] + 2.94174203f * r[8] - q * nx) * ib,
-                 (2.94174203f * r[4] - q * ny) * ib, (7.44208408f * r[7] - q * nz) * ib);
-    q = lr * y[58];
-    SHLIGHT_SET3(out_grad[58], (-4.55732715f * r[7] + 2.40192231f * r[9] - q * nx) * ib,
-                 (4.55732715f * r[5] + 2.40192231f * r[3] - q * ny) * ib,
-                 (7.20576692f * r[8] - q * nz) * ib);
-    q = lr * y[59];
-    SHLIGHT_SET3(out_grad[59], (-5.09524665f * r[8] + 1.86052102f * r[10] - q * nx) * ib,
-                 (5.09524665f * r[4] + 1.86052102f * r[2] - q * ny) * ib,
-                 (6.7936622f * r[9] - q * nz) * ib);
-    q = lr * y[60];
-    SHLIGHT_SET3(out_grad[60], (-5.63300712f * r[9] + 1.31558703f * r[11] - q * nx) * ib,
-                 (5.63300712f * r[3] + 1.31558703f * r[1] - q * ny) * ib,
-                 (6.17065013f * r[10] - q * nz) * ib);
-    q = lr * y[61];
-    SHLIGHT_SET3(out_grad[61], (-6.17065013f * r[10] + 0.759554525f * r[12] - q * nx) * ib,
-                 (6.17065013f * r[2] + 0.759554525f * r[0] - q * ny) * ib,
-                 (5.26234812f * r[11] - q * nz) * ib);
-    q = lr * y[62];
-    SHLIGHT_SET3(out_grad[62], (-6.70820393f * r[11] - q * nx) * ib,
-                 (6.70820393f * r[1] - q * ny) * ib, (3.87298335f * r[12] - q * nz) * ib);
-    q = lr * y[63];
-    SHLIGHT_SET3(out_grad[63], (-7.24568837f * r[12] - q * nx) * ib,
-                 (7.24568837f * r[0] - q * ny) * ib, -q * nz * ib);
+    SHLI_G2(49, -7.2456884f * r[0], -7.2456884f * r[12]);
+    SHLI_G3(50, -6.708204f * r[1], -6.708204f * r[11], 3.8729835f * r[0]);
+    SHLI_G3(51, -6.17065f * r[2] + 0.7595545f * r[0], -6.17065f * r[10] + -0.7595545f * r[12],
+            5.262348f * r[1]);
+    SHLI_G3(52, -5.633007f * r[3] + 1.315587f * r[1], -5.633007f * r[9] + -1.315587f * r[11],
+            6.17065f * r[2]);
+    SHLI_G3(53, -5.095247f * r[4] + 1.8605211f * r[2], -5.095247f * r[8] + -1.8605211f * r[10],
+            6.793662f * r[3]);
+    SHLI_G3(54, -4.5573273f * r[5] + 2.4019222f * r[3], -4.5573273f * r[7] + -2.4019222f * r[9],
+            7.205767f * r[4]);
+    SHLI_G3(55, 2.941742f * r[4], -5.6839857f * r[6] + -2.941742f * r[8], 7.4420843f * r[5]);
+    SHLI_G3(56, 4.922476f * r[7], 4.922476f * r[5], 7.519206f * r[6]);
+    SHLI_G3(57, -5.6839857f * r[6] + 2.941742f * r[8], 2.941742f * r[4], 7.4420843f * r[7]);
+    SHLI_G3(58, -4.5573273f * r[7] + 2.4019222f * r[9], 4.5573273f * r[5] + 2.4019222f * r[3],
+            7.205767f * r[8]);
+    SHLI_G3(59, -5.095247f * r[8] + 1.8605211f * r[10], 5.095247f * r[4] + 1.8605211f * r[2],
+            6.793662f * r[9]);
+    SHLI_G3(60, -5.633007f * r[9] + 1.315587f * r[11], 5.633007f * r[3] + 1.315587f * r[1],
+            6.17065f * r[10]);
+    SHLI_G3(61, -6.17065f * r[10] + 0.7595545f * r[12], 6.17065f * r[2] + 0.7595545f * r[0],
+            5.262348f * r[11]);
+    SHLI_G3(62, -6.708204f * r[11], 6.708204f * r[1], 3.8729835f * r[12]);
+    SHLI_G2(63, -7.2456884f * r[12], 7.2456884f * r[0]);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 8
@@ -14564,68 +14045,33 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     r[12] = y[61] * ir;
     r[13] = y[62] * ir;
     r[14] = y[63] * ir;
-    q = lr * y[64];
-    SHLIGHT_SET3(out_grad[64], (-8.24621125f * r[0] - q * nx) * ib,
-                 (-8.24621125f * r[14] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[65];
-    SHLIGHT_SET3(out_grad[65], (-7.71362431f * r[1] - q * nx) * ib,
-                 (-7.71362431f * r[13] - q * ny) * ib, (4.12310563f * r[0] - q * nz) * ib);
-    q = lr * y[66];
-    SHLIGHT_SET3(out_grad[66], (-7.18099343f * r[2] + 0.752772653f * r[0] - q * nx) * ib,
-                 (-7.18099343f * r[12] + -0.752772653f * r[14] - q * ny) * ib,
-                 (5.63323471f * r[1] - q * nz) * ib);
-    q = lr * y[67];
-    SHLIGHT_SET3(out_grad[67], (-6.64830806f * r[3] + 1.30384048f * r[1] - q * nx) * ib,
-                 (-6.64830806f * r[11] + -1.30384048f * r[13] - q * ny) * ib,
-                 (6.64830806f * r[2] - q * nz) * ib);
-    q = lr * y[68];
-    SHLIGHT_SET3(out_grad[68], (-6.11555394f * r[4] + 1.84390889f * r[2] - q * nx) * ib,
-                 (-6.11555394f * r[10] + -1.84390889f * r[12] - q * ny) * ib,
-                 (7.37563557f * r[3] - q * nz) * ib);
-    q = lr * y[69];
-    SHLIGHT_SET3(out_grad[69], (-5.58271141f * r[5] + 2.38047614f * r[3] - q * nx) * ib,
-                 (-5.58271141f * r[9] + -2.38047614f * r[11] - q * ny) * ib,
-                 (7.89514619f * r[4] - q * nz) * ib);
-    q = lr * y[70];
-    SHLIGHT_SET3(out_grad[70], (-5.04975247f * r[6] + 2.91547595f * r[4] - q * nx) * ib,
-                 (-5.04975247f * r[8] + -2.91547595f * r[10] - q * ny) * ib,
-                 (8.24621125f * r[5] - q * nz) * ib);
-    q = lr * y[71];
-    SHLIGHT_SET3(out_grad[71], (3.44963766f * r[5] - q * nx) * ib,
-                 (-6.38748777f * r[7] + -3.44963766f * r[9] - q * ny) * ib,
-                 (8.44985207f * r[6] - q * nz) * ib);
-    q = lr * y[72];
-    SHLIGHT_SET3(out_grad[72], (5.63323471f * r[8] - q * nx) * ib,
-                 (5.63323471f * r[6] - q * ny) * ib, (8.51665036f * r[7] - q * nz) * ib);
-    q = lr * y[73];
-    SHLIGHT_SET3(out_grad[73], (-6.38748777f * r[7] + 3.44963766f * r[9] - q * nx) * ib,
-                 (3.44963766f * r[5] - q * ny) * ib, (8.44985207f * r[8] - q * nz) * ib);
-    q = lr * y[74];
-    SHLIGHT_SET3(out_grad[74], (-5.04975247f * r[8] + 2.91547595f * r[10] - q * nx) * ib,
-                 (5.04975247f * r[6] + 2.91547595f * r[4] - q * ny) * ib,
-                 (8.24621125f * r[9] - q * nz) * ib);
-    q = lr * y[75];
-    SHLIGHT_SET3(out_grad[75], (-5.58271141f * r[9] + 2.38047614f * r[11] - q * nx) * ib,
-                 (5.58271141f * r[5] + 2.38047614f * r[3] - q * ny) * ib,
-                 (7.89514619f * r[10] - q * nz) * ib);
-    q = lr * y[76];
-    SHLIGHT_SET3(out_grad[76], (-6.11555394f * r[10] + 1.84390889f * r[12] - q * nx) * ib,
-                 (6.11555394f * r[4] + 1.84390889f * r[2] - q * ny) * ib,
-                 (7.37563557f * r[11] - q * nz) * ib);
-    q = lr * y[77];
-    SHLIGHT_SET3(out_grad[77], (-6.64830806f * r[11] + 1.30384048f * r[13] - q * nx) * ib,
-                 (6.64830806f * r[3] + 1.30384048f * r[1] - q * ny) * ib,
-                 (6.64830806f * r[12] - q * nz) * ib);
-    q = lr * y[78];
-    SHLIGHT_SET3(out_grad[78], (-7.18099343f * r[12] + 0.752772653f * r[14] - q * nx) * ib,
-                 (7.18099343f * r[2] + 0.752772653f * r[0] - q * ny) * ib,
-                 (5.63323471f * r[13] - q * nz) * ib);
-    q = lr * y[79];
-    SHLIGHT_SET3(out_grad[79], (-7.71362431f * r[13] - q * nx) * ib,
-                 (7.71362431f * r[1] - q * ny) * ib, (4.12310563f * r[14] - q * nz) * ib);
-    q = lr * y[80];
-    SHLIGHT_SET3(out_grad[80], (-8.24621125f * r[14] - q * nx) * ib,
-                 (8.24621125f * r[0] - q * ny) * ib, -q * nz * ib);
+    SHLI_G2(64, -8.246211f * r[0], -8.246211f * r[14]);
+    SHLI_G3(65, -7.7136245f * r[1], -7.7136245f * r[13], 4.1231055f * r[0]);
+    SHLI_G3(66, -7.1809936f * r[2] + 0.7527726f * r[0], -7.1809936f * r[12] + -0.7527726f * r[14],
+            5.6332345f * r[1]);
+    SHLI_G3(67, -6.6483083f * r[3] + 1.3038405f * r[1], -6.6483083f * r[11] + -1.3038405f * r[13],
+            6.6483083f * r[2]);
+    SHLI_G3(68, -6.115554f * r[4] + 1.8439089f * r[2], -6.115554f * r[10] + -1.8439089f * r[12],
+            7.3756356f * r[3]);
+    SHLI_G3(69, -5.582711f * r[5] + 2.3804762f * r[3], -5.582711f * r[9] + -2.3804762f * r[11],
+            7.8951464f * r[4]);
+    SHLI_G3(70, -5.049752f * r[6] + 2.9154758f * r[4], -5.049752f * r[8] + -2.9154758f * r[10],
+            8.246211f * r[5]);
+    SHLI_G3(71, 3.4496377f * r[5], -6.387488f * r[7] + -3.4496377f * r[9], 8.449852f * r[6]);
+    SHLI_G3(72, 5.6332345f * r[8], 5.6332345f * r[6], 8.51665f * r[7]);
+    SHLI_G3(73, -6.387488f * r[7] + 3.4496377f * r[9], 3.4496377f * r[5], 8.449852f * r[8]);
+    SHLI_G3(74, -5.049752f * r[8] + 2.9154758f * r[10], 5.049752f * r[6] + 2.9154758f * r[4],
+            8.246211f * r[9]);
+    SHLI_G3(75, -5.582711f * r[9] + 2.3804762f * r[11], 5.582711f * r[5] + 2.3804762f * r[3],
+            7.8951464f * r[10]);
+    SHLI_G3(76, -6.115554f * r[10] + 1.8439089f * r[12], 6.115554f * r[4] + 1.8439089f * r[2],
+            7.3756356f * r[11]);
+    SHLI_G3(77, -6.6483083f * r[11] + 1.3038405f * r[13], 6.6483083f * r[3] + 1.3038405f * r[1],
+            6.6483083f * r[12]);
+    SHLI_G3(78, -7.1809936f * r[12] + 0.7527726f * r[14], 7.1809936f * r[2] + 0.7527726f * r[0],
+            5.6332345f * r[13]);
+    SHLI_G3(79, -7.7136245f * r[13], 7.7136245f * r[1], 4.1231055f * r[14]);
+    SHLI_G2(80, -8.246211f * r[14], 8.246211f * r[0]);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 9
@@ -14648,76 +14094,37 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     r[14] = y[78] * ir;
     r[15] = y[79] * ir;
     r[16] = y[80] * ir;
-    q = lr * y[81];
-    SHLIGHT_SET3(out_grad[81], (-9.246621f * r[0] - q * nx) * ib,
-                 (-9.246621f * r[16] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[82];
-    SHLIGHT_SET3(out_grad[82], (-8.71779789f * r[1] - q * nx) * ib,
-                 (-8.71779789f * r[15] - q * ny) * ib, (4.35889894f * r[0] - q * nz) * ib);
-    q = lr * y[83];
-    SHLIGHT_SET3(out_grad[83], (-8.1889452f * r[2] + 0.747545002f * r[0] - q * nx) * ib,
-                 (-8.1889452f * r[14] + -0.747545002f * r[16] - q * ny) * ib,
-                 (5.98036001f * r[1] - q * nz) * ib);
-    q = lr * y[84];
-    SHLIGHT_SET3(out_grad[84], (-7.66005659f * r[3] + 1.29478592f * r[1] - q * nx) * ib,
-                 (-7.66005659f * r[13] + -1.29478592f * r[15] - q * ny) * ib,
-                 (7.09183458f * r[2] - q * nz) * ib);
-    q = lr * y[85];
-    SHLIGHT_SET3(out_grad[85], (-7.13112482f * r[4] + 1.83110381f * r[2] - q * nx) * ib,
-                 (-7.13112482f * r[12] + -1.83110381f * r[14] - q * ny) * ib,
-                 (7.91127267f * r[3] - q * nz) * ib);
-    q = lr * y[86];
-    SHLIGHT_SET3(out_grad[86], (-6.60213869f * r[5] + 2.36394486f * r[3] - q * nx) * ib,
-                 (-6.60213869f * r[11] + -2.36394486f * r[13] - q * ny) * ib,
-                 (8.5233244f * r[4] - q * nz) * ib);
-    q = lr * y[87];
-    SHLIGHT_SET3(out_grad[87], (-6.0730843f * r[6] + 2.89522934f * r[4] - q * nx) * ib,
-                 (-6.0730843f * r[10] + -2.89522934f * r[12] - q * ny) * ib,
-                 (8.97054002f * r[5] - q * nz) * ib);
-    q = lr * y[88];
-    SHLIGHT_SET3(out_grad[88], (-5.54394211f * r[7] + 3.42568156f * r[5] - q * nx) * ib,
-                 (-5.54394211f * r[9] + -3.42568156f * r[11] - q * ny) * ib,
-                 (9.27678951f * r[6] - q * nz) * ib);
-    q = lr * y[89];
-    SHLIGHT_SET3(out_grad[89], (3.95563634f * r[6] - q * nx) * ib,
-                 (-7.09183458f * r[8] + -3.95563634f * r[10] - q * ny) * ib,
-                 (9.45577943f * r[7] - q * nz) * ib);
-    q = lr * y[90];
-    SHLIGHT_SET3(out_grad[90], (6.34312968f * r[9] - q * nx) * ib,
-                 (6.34312968f * r[7] - q * ny) * ib, (9.51469452f * r[8] - q * nz) * ib);
-    q = lr * y[91];
-    SHLIGHT_SET3(out_grad[91], (-7.09183458f * r[8] + 3.95563634f * r[10] - q * nx) * ib,
-                 (3.95563634f * r[6] - q * ny) * ib, (9.45577943f * r[9] - q * nz) * ib);
-    q = lr * y[92];
-    SHLIGHT_SET3(out_grad[92], (-5.54394211f * r[9] + 3.42568156f * r[11] - q * nx) * ib,
-                 (5.54394211f * r[7] + 3.42568156f * r[5] - q * ny) * ib,
-                 (9.27678951f * r[10] - q * nz) * ib);
-    q = lr * y[93];
-    SHLIGHT_SET3(out_grad[93], (-6.0730843f * r[10] + 2.89522934f * r[12] - q * nx) * ib,
-                 (6.0730843f * r[6] + 2.89522934f * r[4] - q * ny) * ib,
-                 (8.97054002f * r[11] - q * nz) * ib);
-    q = lr * y[94];
-    SHLIGHT_SET3(out_grad[94], (-6.60213869f * r[11] + 2.36394486f * r[13] - q * nx) * ib,
-                 (6.60213869f * r[5] + 2.36394486f * r[3] - q * ny) * ib,
-                 (8.5233244f * r[12] - q * nz) * ib);
-    q = lr * y[95];
-    SHLIGHT_SET3(out_grad[95], (-7.13112482f * r[12] + 1.83110381f * r[14] - q * nx) * ib,
-                 (7.13112482f * r[4] + 1.83110381f * r[2] - q * ny) * ib,
-                 (7.91127267f * r[13] - q * nz) * ib);
-    q = lr * y[96];
-    SHLIGHT_SET3(out_grad[96], (-7.66005659f * r[13] + 1.29478592f * r[15] - q * nx) * ib,
-                 (7.66005659f * r[3] + 1.29478592f * r[1] - q * ny) * ib,
-                 (7.09183458f * r[14] - q * nz) * ib);
-    q = lr * y[97];
-    SHLIGHT_SET3(out_grad[97], (-8.1889452f * r[14] + 0.747545002f * r[16] - q * nx) * ib,
-                 (8.1889452f * r[2] + 0.747545002f * r[0] - q * ny) * ib,
-                 (5.98036001f * r[15] - q * nz) * ib);
-    q = lr * y[98];
-    SHLIGHT_SET3(out_grad[98], (-8.71779789f * r[15] - q * nx) * ib,
-                 (8.71779789f * r[1] - q * ny) * ib, (4.35889894f * r[16] - q * nz) * ib);
-    q = lr * y[99];
-    SHLIGHT_SET3(out_grad[99], (-9.246621f * r[16] - q * nx) * ib, (9.246621f * r[0] - q * ny) * ib,
-                 -q * nz * ib);
+    SHLI_G2(81, -9.246621f * r[0], -9.246621f * r[16]);
+    SHLI_G3(82, -8.717798f * r[1], -8.717798f * r[15], 4.358899f * r[0]);
+    SHLI_G3(83, -8.188945f * r[2] + 0.747545f * r[0], -8.188945f * r[14] + -0.747545f * r[16],
+            5.98036f * r[1]);
+    SHLI_G3(84, -7.6600566f * r[3] + 1.294786f * r[1], -7.6600566f * r[13] + -1.294786f * r[15],
+            7.0918345f * r[2]);
+    SHLI_G3(85, -7.131125f * r[4] + 1.8311038f * r[2], -7.131125f * r[12] + -1.8311038f * r[14],
+            7.9112725f * r[3]);
+    SHLI_G3(86, -6.6021385f * r[5] + 2.3639448f * r[3], -6.6021385f * r[11] + -2.3639448f * r[13],
+            8.523324f * r[4]);
+    SHLI_G3(87, -6.0730844f * r[6] + 2.8952293f * r[4], -6.0730844f * r[10] + -2.8952293f * r[12],
+            8.97054f * r[5]);
+    SHLI_G3(88, -5.543942f * r[7] + 3.4256816f * r[5], -5.543942f * r[9] + -3.4256816f * r[11],
+            9.27679f * r[6]);
+    SHLI_G3(89, 3.9556363f * r[6], -7.0918345f * r[8] + -3.9556363f * r[10], 9.455779f * r[7]);
+    SHLI_G3(90, 6.3431296f * r[9], 6.3431296f * r[7], 9.514694f * r[8]);
+    SHLI_G3(91, -7.0918345f * r[8] + 3.9556363f * r[10], 3.9556363f * r[6], 9.455779f * r[9]);
+    SHLI_G3(92, -5.543942f * r[9] + 3.4256816f * r[11], 5.543942f * r[7] + 3.4256816f * r[5],
+            9.27679f * r[10]);
+    SHLI_G3(93, -6.0730844f * r[10] + 2.8952293f * r[12], 6.0730844f * r[6] + 2.8952293f * r[4],
+            8.97054f * r[11]);
+    SHLI_G3(94, -6.6021385f * r[11] + 2.3639448f * r[13], 6.6021385f * r[5] + 2.3639448f * r[3],
+            8.523324f * r[12]);
+    SHLI_G3(95, -7.131125f * r[12] + 1.8311038f * r[14], 7.131125f * r[4] + 1.8311038f * r[2],
+            7.9112725f * r[13]);
+    SHLI_G3(96, -7.6600566f * r[13] + 1.294786f * r[15], 7.6600566f * r[3] + 1.294786f * r[1],
+            7.0918345f * r[14]);
+    SHLI_G3(97, -8.188945f * r[14] + 0.747545f * r[16], 8.188945f * r[2] + 0.747545f * r[0],
+            5.98036f * r[15]);
+    SHLI_G3(98, -8.717798f * r[15], 8.717798f * r[1], 4.358899f * r[16]);
+    SHLI_G2(99, -9.246621f * r[16], 9.246621f * r[0]);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 10
@@ -14742,84 +14149,41 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     r[16] = y[97] * ir;
     r[17] = y[98] * ir;
     r[18] = y[99] * ir;
-    q = lr * y[100];
-    SHLIGHT_SET3(out_grad[100], (-10.2469508f * r[0] - q * nx) * ib,
-                 (-10.2469508f * r[18] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[101];
-    SHLIGHT_SET3(out_grad[101], (-9.72111105f * r[1] - q * nx) * ib,
-                 (-9.72111105f * r[17] - q * ny) * ib, (4.58257569f * r[0] - q * nz) * ib);
-    q = lr * y[102];
-    SHLIGHT_SET3(out_grad[102], (-9.19525049f * r[2] + 0.743391942f * r[0] - q * nx) * ib,
-                 (-9.19525049f * r[16] + -0.743391942f * r[18] - q * ny) * ib,
-                 (6.3078898f * r[1] - q * nz) * ib);
-    q = lr * y[103];
-    SHLIGHT_SET3(out_grad[103], (-8.6693653f * r[3] + 1.28759261f * r[1] - q * nx) * ib,
-                 (-8.6693653f * r[15] + -1.28759261f * r[17] - q * ny) * ib,
-                 (7.50789059f * r[2] - q * nz) * ib);
-    q = lr * y[104];
-    SHLIGHT_SET3(out_grad[104], (-8.14345071f * r[4] + 1.82093094f * r[2] - q * nx) * ib,
-                 (-8.14345071f * r[14] + -1.82093094f * r[16] - q * ny) * ib,
-                 (8.41051973f * r[3] - q * nz) * ib);
-    q = lr * y[105];
-    SHLIGHT_SET3(out_grad[105], (-7.61750063f * r[5] + 2.35081173f * r[3] - q * nx) * ib,
-                 (-7.61750063f * r[13] + -2.35081173f * r[15] - q * ny) * ib,
-                 (9.10465468f * r[4] - q * nz) * ib);
-    q = lr * y[106];
-    SHLIGHT_SET3(out_grad[106], (-7.09150715f * r[6] + 2.87914461f * r[4] - q * nx) * ib,
-                 (-7.09150715f * r[12] + -2.87914461f * r[14] - q * ny) * ib,
-                 (9.63546082f * r[5] - q * nz) * ib);
-    q = lr * y[107];
-    SHLIGHT_SET3(out_grad[107], (-6.56545986f * r[7] + 3.40664984f * r[5] - q * nx) * ib,
-                 (-6.56545986f * r[11] + -3.40664984f * r[13] - q * ny) * ib,
-                 (10.0289056f * r[6] - q * nz) * ib);
-    q = lr * y[108];
-    SHLIGHT_SET3(out_grad[108], (-6.03934468f * r[8] + 3.93366041f * r[6] - q * nx) * ib,
-                 (-6.03934468f * r[10] + -3.93366041f * r[12] - q * ny) * ib,
-                 (10.3007409f * r[7] - q * nz) * ib);
-    q = lr * y[109];
-    SHLIGHT_SET3(out_grad[109], (4.46035165f * r[7] - q * nx) * ib,
-                 (-7.79676046f * r[9] + -4.46035165f * r[11] - q * ny) * ib,
-                 (10.4604518f * r[8] - q * nz) * ib);
-    q = lr * y[110];
-    SHLIGHT_SET3(out_grad[110], (7.05243519f * r[10] - q * nx) * ib,
-                 (7.05243519f * r[8] - q * ny) * ib, (10.5131497f * r[9] - q * nz) * ib);
-    q = lr * y[111];
-    SHLIGHT_SET3(out_grad[111], (-7.79676046f * r[9] + 4.46035165f * r[11] - q * nx) * ib,
-                 (4.46035165f * r[7] - q * ny) * ib, (10.4604518f * r[10] - q * nz) * ib);
-    q = lr * y[112];
-    SHLIGHT_SET3(out_grad[112], (-6.03934468f * r[10] + 3.93366041f * r[12] - q * nx) * ib,
-                 (6.03934468f * r[8] + 3.93366041f * r[6] - q * ny) * ib,
-                 (10.3007409f * r[11] - q * nz) * ib);
-    q = lr * y[113];
-    SHLIGHT_SET3(out_grad[113], (-6.56545986f * r[11] + 3.40664984f * r[13] - q * nx) * ib,
-                 (6.56545986f * r[7] + 3.40664984f * r[5] - q * ny) * ib,
-                 (10.0289056f * r[12] - q * nz) * ib);
-    q = lr * y[114];
-    SHLIGHT_SET3(out_grad[114], (-7.09150715f * r[12] + 2.87914461f * r[14] - q * nx) * ib,
-                 (7.09150715f * r[6] + 2.87914461f * r[4] - q * ny) * ib,
-                 (9.63546082f * r[13] - q * nz) * ib);
-    q = lr * y[115];
-    SHLIGHT_SET3(out_grad[115], (-7.61750063f * r[13] + 2.35081173f * r[15] - q * nx) * ib,
-                 (7.61750063f * r[5] + 2.35081173f * r[3] - q * ny) * ib,
-                 (9.10465468f * r[14] - q * nz) * ib);
-    q = lr * y[116];
-    SHLIGHT_SET3(out_grad[116], (-8.14345071f * r[14] + 1.82093094f * r[16] - q * nx) * ib,
-                 (8.14345071f * r[4] + 1.82093094f * r[2] - q * ny) * ib,
-                 (8.41051973f * r[15] - q * nz) * ib);
-    q = lr * y[117];
-    SHLIGHT_SET3(out_grad[117], (-8.6693653f * r[15] + 1.28759261f * r[17] - q * nx) * ib,
-                 (8.6693653f * r[3] + 1.28759261f * r[1] - q * ny) * ib,
-                 (7.50789059f * r[16] - q * nz) * ib);
-    q = lr * y[118];
-    SHLIGHT_SET3(out_grad[118], (-9.19525049f * r[16] + 0.743391942f * r[18] - q * nx) * ib,
-                 (9.19525049f * r[2] + 0.743391942f * r[0] - q * ny) * ib,
-                 (6.3078898f * r[17] - q * nz) * ib);
-    q = lr * y[119];
-    SHLIGHT_SET3(out_grad[119], (-9.72111105f * r[17] - q * nx) * ib,
-                 (9.72111105f * r[1] - q * ny) * ib, (4.58257569f * r[18] - q * nz) * ib);
-    q = lr * y[120];
-    SHLIGHT_SET3(out_grad[120], (-10.2469508f * r[18] - q * nx) * ib,
-                 (10.2469508f * r[0] - q * ny) * ib, -q * nz * ib);
+    SHLI_G2(100, -10.246951f * r[0], -10.246951f * r[18]);
+    SHLI_G3(101, -9.721111f * r[1], -9.721111f * r[17], 4.582576f * r[0]);
+    SHLI_G3(102, -9.1952505f * r[2] + 0.74339193f * r[0],
+            -9.1952505f * r[16] + -0.74339193f * r[18], 6.30789f * r[1]);
+    SHLI_G3(103, -8.669365f * r[3] + 1.2875926f * r[1], -8.669365f * r[15] + -1.2875926f * r[17],
+            7.5078907f * r[2]);
+    SHLI_G3(104, -8.143451f * r[4] + 1.820931f * r[2], -8.143451f * r[14] + -1.820931f * r[16],
+            8.41052f * r[3]);
+    SHLI_G3(105, -7.617501f * r[5] + 2.3508117f * r[3], -7.617501f * r[13] + -2.3508117f * r[15],
+            9.104654f * r[4]);
+    SHLI_G3(106, -7.091507f * r[6] + 2.8791447f * r[4], -7.091507f * r[12] + -2.8791447f * r[14],
+            9.635461f * r[5]);
+    SHLI_G3(107, -6.5654597f * r[7] + 3.4066498f * r[5], -6.5654597f * r[11] + -3.4066498f * r[13],
+            10.028906f * r[6]);
+    SHLI_G3(108, -6.039345f * r[8] + 3.9336605f * r[6], -6.039345f * r[10] + -3.9336605f * r[12],
+            10.300741f * r[7]);
+    SHLI_G3(109, 4.4603515f * r[7], -7.7967606f * r[9] + -4.4603515f * r[11], 10.460452f * r[8]);
+    SHLI_G3(110, 7.0524354f * r[10], 7.0524354f * r[8], 10.513149f * r[9]);
+    SHLI_G3(111, -7.7967606f * r[9] + 4.4603515f * r[11], 4.4603515f * r[7], 10.460452f * r[10]);
+    SHLI_G3(112, -6.039345f * r[10] + 3.9336605f * r[12], 6.039345f * r[8] + 3.9336605f * r[6],
+            10.300741f * r[11]);
+    SHLI_G3(113, -6.5654597f * r[11] + 3.4066498f * r[13], 6.5654597f * r[7] + 3.4066498f * r[5],
+            10.028906f * r[12]);
+    SHLI_G3(114, -7.091507f * r[12] + 2.8791447f * r[14], 7.091507f * r[6] + 2.8791447f * r[4],
+            9.635461f * r[13]);
+    SHLI_G3(115, -7.617501f * r[13] + 2.3508117f * r[15], 7.617501f * r[5] + 2.3508117f * r[3],
+            9.104654f * r[14]);
+    SHLI_G3(116, -8.143451f * r[14] + 1.820931f * r[16], 8.143451f * r[4] + 1.820931f * r[2],
+            8.41052f * r[15]);
+    SHLI_G3(117, -8.669365f * r[15] + 1.2875926f * r[17], 8.669365f * r[3] + 1.2875926f * r[1],
+            7.5078907f * r[16]);
+    SHLI_G3(118, -9.1952505f * r[16] + 0.74339193f * r[18], 9.1952505f * r[2] + 0.74339193f * r[0],
+            6.30789f * r[17]);
+    SHLI_G3(119, -9.721111f * r[17], 9.721111f * r[1], 4.582576f * r[18]);
+    SHLI_G2(120, -10.246951f * r[18], 10.246951f * r[0]);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 11
@@ -14846,92 +14210,45 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     r[18] = y[118] * ir;
     r[19] = y[119] * ir;
     r[20] = y[120] * ir;
-    q = lr * y[121];
-    SHLIGHT_SET3(out_grad[121], (-11.2472219f * r[0] - q * nx) * ib,
-                 (-11.2472219f * r[20] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[122];
-    SHLIGHT_SET3(out_grad[122], (-10.7238053f * r[1] - q * nx) * ib,
-                 (-10.7238053f * r[19] - q * ny) * ib, (4.79583152f * r[0] - q * nz) * ib);
-    q = lr * y[123];
-    SHLIGHT_SET3(out_grad[123], (-10.2003735f * r[2] + 0.74001287f * r[0] - q * nx) * ib,
-                 (-10.2003735f * r[18] + -0.74001287f * r[20] - q * ny) * ib,
-                 (6.61887633f * r[1] - q * nz) * ib);
-    q = lr * y[124];
-    SHLIGHT_SET3(out_grad[124], (-9.67692395f * r[3] + 1.28173989f * r[1] - q * nx) * ib,
-                 (-9.67692395f * r[17] + -1.28173989f * r[19] - q * ny) * ib,
-                 (7.90117532f * r[2] - q * nz) * ib);
-    q = lr * y[125];
-    SHLIGHT_SET3(out_grad[125], (-9.15345368f * r[4] + 1.81265393f * r[2] - q * nx) * ib,
-                 (-9.15345368f * r[16] + -1.81265393f * r[18] - q * ny) * ib,
-                 (8.88015444f * r[3] - q * nz) * ib);
-    q = lr * y[126];
-    SHLIGHT_SET3(out_grad[126], (-8.62995889f * r[5] + 2.34012617f * r[3] - q * nx) * ib,
-                 (-8.62995889f * r[15] + -2.34012617f * r[17] - q * ny) * ib,
-                 (9.64858736f * r[4] - q * nz) * ib);
-    q = lr * y[127];
-    SHLIGHT_SET3(out_grad[127], (-8.10643483f * r[6] + 2.86605752f * r[4] - q * nx) * ib,
-                 (-8.10643483f * r[14] + -2.86605752f * r[16] - q * ny) * ib,
-                 (10.2539191f * r[5] - q * nz) * ib);
-    q = lr * y[128];
-    SHLIGHT_SET3(out_grad[128], (-7.58287544f * r[7] + 3.39116499f * r[5] - q * nx) * ib,
-                 (-7.58287544f * r[13] + -3.39116499f * r[15] - q * ny) * ib,
-                 (10.7238053f * r[6] - q * nz) * ib);
-    q = lr * y[129];
-    SHLIGHT_SET3(out_grad[129], (-7.05927286f * r[8] + 3.91578004f * r[6] - q * nx) * ib,
-                 (-7.05927286f * r[12] + -3.91578004f * r[14] - q * ny) * ib,
-                 (11.0754985f * r[7] - q * nz) * ib);
-    q = lr * y[130];
-    SHLIGHT_SET3(out_grad[130], (-6.5356167f * r[9] + 4.44007722f * r[7] - q * nx) * ib,
-                 (-6.5356167f * r[11] + -4.44007722f * r[13] - q * ny) * ib,
-                 (11.3200197f * r[8] - q * nz) * ib);
-    q = lr * y[131];
-    SHLIGHT_SET3(out_grad[131], (4.96415724f * r[8] - q * nx) * ib,
-                 (-8.50210058f * r[10] + -4.96415724f * r[12] - q * ny) * ib,
-                 (11.4642301f * r[9] - q * nz) * ib);
-    q = lr * y[132];
-    SHLIGHT_SET3(out_grad[132], (7.76132046f * r[11] - q * nx) * ib,
-                 (7.76132046f * r[9] - q * ny) * ib, (11.5118986f * r[10] - q * nz) * ib);
-    q = lr * y[133];
-    SHLIGHT_SET3(out_grad[133], (-8.50210058f * r[10] + 4.96415724f * r[12] - q * nx) * ib,
-                 (4.96415724f * r[8] - q * ny) * ib, (11.4642301f * r[11] - q * nz) * ib);
-    q = lr * y[134];
-    SHLIGHT_SET3(out_grad[134], (-6.5356167f * r[11] + 4.44007722f * r[13] - q * nx) * ib,
-                 (6.5356167f * r[9] + 4.44007722f * r[7] - q * ny) * ib,
-                 (11.3200197f * r[12] - q * nz) * ib);
-    q = lr * y[135];
-    SHLIGHT_SET3(out_grad[135], (-7.05927286f * r[12] + 3.91578004f * r[14] - q * nx) * ib,
-                 (7.05927286f * r[8] + 3.91578004f * r[6] - q * ny) * ib,
-                 (11.0754985f * r[13] - q * nz) * ib);
-    q = lr * y[136];
-    SHLIGHT_SET3(out_grad[136], (-7.58287544f * r[13] + 3.39116499f * r[15] - q * nx) * ib,
-                 (7.58287544f * r[7] + 3.39116499f * r[5] - q * ny) * ib,
-                 (10.7238053f * r[14] - q * nz) * ib);
-    q = lr * y[137];
-    SHLIGHT_SET3(out_grad[137], (-8.10643483f * r[14] + 2.86605752f * r[16] - q * nx) * ib,
-                 (8.10643483f * r[6] + 2.86605752f * r[4] - q * ny) * ib,
-                 (10.2539191f * r[15] - q * nz) * ib);
-    q = lr * y[138];
-    SHLIGHT_SET3(out_grad[138], (-8.62995889f * r[15] + 2.34012617f * r[17] - q * nx) * ib,
-                 (8.62995889f * r[5] + 2.34012617f * r[3] - q * ny) * ib,
-                 (9.64858736f * r[16] - q * nz) * ib);
-    q = lr * y[139];
-    SHLIGHT_SET3(out_grad[139], (-9.15345368f * r[16] + 1.81265393f * r[18] - q * nx) * ib,
-                 (9.15345368f * r[4] + 1.81265393f * r[2] - q * ny) * ib,
-                 (8.88015444f * r[17] - q * nz) * ib);
-    q = lr * y[140];
-    SHLIGHT_SET3(out_grad[140], (-9.67692395f * r[17] + 1.28173989f * r[19] - q * nx) * ib,
-                 (9.67692395f * r[3] + 1.28173989f * r[1] - q * ny) * ib,
-                 (7.90117532f * r[18] - q * nz) * ib);
-    q = lr * y[141];
-    SHLIGHT_SET3(out_grad[141], (-10.2003735f * r[18] + 0.74001287f * r[20] - q * nx) * ib,
-                 (10.2003735f * r[2] + 0.74001287f * r[0] - q * ny) * ib,
-                 (6.61887633f * r[19] - q * nz) * ib);
-    q = lr * y[142];
-    SHLIGHT_SET3(out_grad[142], (-10.7238053f * r[19] - q * nx) * ib,
-                 (10.7238053f * r[1] - q * ny) * ib, (4.79583152f * r[20] - q * nz) * ib);
-    q = lr * y[143];
-    SHLIGHT_SET3(out_grad[143], (-11.2472219f * r[20] - q * nx) * ib,
-                 (11.2472219f * r[0] - q * ny) * ib, -q * nz * ib);
+    SHLI_G2(121, -11.247222f * r[0], -11.247222f * r[20]);
+    SHLI_G3(122, -10.723805f * r[1], -10.723805f * r[19], 4.7958317f * r[0]);
+    SHLI_G3(123, -10.200374f * r[2] + 0.7400129f * r[0], -10.200374f * r[18] + -0.7400129f * r[20],
+            6.6188765f * r[1]);
+    SHLI_G3(124, -9.676924f * r[3] + 1.2817398f * r[1], -9.676924f * r[17] + -1.2817398f * r[19],
+            7.9011755f * r[2]);
+    SHLI_G3(125, -9.153454f * r[4] + 1.8126539f * r[2], -9.153454f * r[16] + -1.8126539f * r[18],
+            8.880155f * r[3]);
+    SHLI_G3(126, -8.629959f * r[5] + 2.3401263f * r[3], -8.629959f * r[15] + -2.3401263f * r[17],
+            9.648587f * r[4]);
+    SHLI_G3(127, -8.106435f * r[6] + 2.8660576f * r[4], -8.106435f * r[14] + -2.8660576f * r[16],
+            10.253919f * r[5]);
+    SHLI_G3(128, -7.5828753f * r[7] + 3.391165f * r[5], -7.5828753f * r[13] + -3.391165f * r[15],
+            10.723805f * r[6]);
+    SHLI_G3(129, -7.059273f * r[8] + 3.91578f * r[6], -7.059273f * r[12] + -3.91578f * r[14],
+            11.075499f * r[7]);
+    SHLI_G3(130, -6.535617f * r[9] + 4.4400773f * r[7], -6.535617f * r[11] + -4.4400773f * r[13],
+            11.32002f * r[8]);
+    SHLI_G3(131, 4.964157f * r[8], -8.502101f * r[10] + -4.964157f * r[12], 11.464231f * r[9]);
+    SHLI_G3(132, 7.7613206f * r[11], 7.7613206f * r[9], 11.511899f * r[10]);
+    SHLI_G3(133, -8.502101f * r[10] + 4.964157f * r[12], 4.964157f * r[8], 11.464231f * r[11]);
+    SHLI_G3(134, -6.535617f * r[11] + 4.4400773f * r[13], 6.535617f * r[9] + 4.4400773f * r[7],
+            11.32002f * r[12]);
+    SHLI_G3(135, -7.059273f * r[12] + 3.91578f * r[14], 7.059273f * r[8] + 3.91578f * r[6],
+            11.075499f * r[13]);
+    SHLI_G3(136, -7.5828753f * r[13] + 3.391165f * r[15], 7.5828753f * r[7] + 3.391165f * r[5],
+            10.723805f * r[14]);
+    SHLI_G3(137, -8.106435f * r[14] + 2.8660576f * r[16], 8.106435f * r[6] + 2.8660576f * r[4],
+            10.253919f * r[15]);
+    SHLI_G3(138, -8.629959f * r[15] + 2.3401263f * r[17], 8.629959f * r[5] + 2.3401263f * r[3],
+            9.648587f * r[16]);
+    SHLI_G3(139, -9.153454f * r[16] + 1.8126539f * r[18], 9.153454f * r[4] + 1.8126539f * r[2],
+            8.880155f * r[17]);
+    SHLI_G3(140, -9.676924f * r[17] + 1.2817398f * r[19], 9.676924f * r[3] + 1.2817398f * r[1],
+            7.9011755f * r[18]);
+    SHLI_G3(141, -10.200374f * r[18] + 0.7400129f * r[20], 10.200374f * r[2] + 0.7400129f * r[0],
+            6.6188765f * r[19]);
+    SHLI_G3(142, -10.723805f * r[19], 10.723805f * r[1], 4.7958317f * r[20]);
+    SHLI_G2(143, -11.247222f * r[20], 11.247222f * r[0]);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 12
@@ -14960,100 +14277,49 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     r[20] = y[141] * ir;
     r[21] = y[142] * ir;
     r[22] = y[143] * ir;
-    q = lr * y[144];
-    SHLIGHT_SET3(out_grad[144], (-12.2474487f * r[0] - q * nx) * ib,
-                 (-12.2474487f * r[22] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[145];
-    SHLIGHT_SET3(out_grad[145], (-11.7260394f * r[1] - q * nx) * ib,
-                 (-11.7260394f * r[21] - q * ny) * ib, (5.0f * r[0] - q * nz) * ib);
-    q = lr * y[146];
-    SHLIGHT_SET3(out_grad[146], (-11.2046186f * r[2] + 0.737209781f * r[0] - q * nx) * ib,
-                 (-11.2046186f * r[20] + -0.737209781f * r[22] - q * ny) * ib,
-                 (6.91564075f * r[1] - q * nz) * ib);
-    q = lr * y[147];
-    SHLIGHT_SET3(out_grad[147], (-10.6831847f * r[3] + 1.2768848f * r[1] - q * nx) * ib,
-                 (-10.6831847f * r[19] + -1.2768848f * r[21] - q * ny) * ib,
-                 (8.27515927f * r[2] - q * nz) * ib);
-    q = lr * y[148];
-    SHLIGHT_SET3(out_grad[148], (-10.1617356f * r[4] + 1.8057878f * r[2] - q * nx) * ib,
-                 (-10.1617356f * r[18] + -1.8057878f * r[20] - q * ny) * ib,
-                 (9.32504808f * r[3] - q * nz) * ib);
-    q = lr * y[149];
-    SHLIGHT_SET3(out_grad[149], (-9.64026928f * r[5] + 2.33126202f * r[3] - q * nx) * ib,
-                 (-9.64026928f * r[17] + -2.33126202f * r[19] - q * ny) * ib,
-                 (10.1617356f * r[4] - q * nz) * ib);
-    q = lr * y[150];
-    SHLIGHT_SET3(out_grad[150], (-9.11878138f * r[6] + 2.8552012f * r[4] - q * nx) * ib,
-                 (-9.11878138f * r[16] + -2.8552012f * r[18] - q * ny) * ib,
-                 (10.8347268f * r[5] - q * nz) * ib);
-    q = lr * y[151];
-    SHLIGHT_SET3(out_grad[151], (-8.59726954f * r[7] + 3.37831974f * r[5] - q * nx) * ib,
-                 (-8.59726954f * r[15] + -3.37831974f * r[17] - q * ny) * ib,
-                 (11.3731186f * r[6] - q * nz) * ib);
-    q = lr * y[152];
-    SHLIGHT_SET3(out_grad[152], (-8.07572853f * r[8] + 3.90094749f * r[6] - q * nx) * ib,
-                 (-8.07572853f * r[14] + -3.90094749f * r[16] - q * ny) * ib,
-                 (11.7953565f * r[7] - q * nz) * ib);
-    q = lr * y[153];
-    SHLIGHT_SET3(out_grad[153], (-7.55415233f * r[9] + 4.42325868f * r[7] - q * nx) * ib,
-                 (-7.55415233f * r[13] + -4.42325868f * r[15] - q * ny) * ib,
-                 (12.1135928f * r[8] - q * nz) * ib);
-    q = lr * y[154];
-    SHLIGHT_SET3(out_grad[154], (-7.0325331f * r[10] + 4.94535355f * r[8] - q * nx) * ib,
-                 (-7.0325331f * r[12] + -4.94535355f * r[14] - q * ny) * ib,
-                 (12.3358791f * r[9] - q * nz) * ib);
-    q = lr * y[155];
-    SHLIGHT_SET3(out_grad[155], (5.46729406f * r[9] - q * nx) * ib,
-                 (-9.20774721f * r[11] + -5.46729406f * r[13] - q * ny) * ib,
-                 (12.4673487f * r[10] - q * nz) * ib);
-    q = lr * y[156];
-    SHLIGHT_SET3(out_grad[156], (8.46989554f * r[12] - q * nx) * ib,
-                 (8.46989554f * r[10] - q * ny) * ib, (12.5108648f * r[11] - q * nz) * ib);
-    q = lr * y[157];
-    SHLIGHT_SET3(out_grad[157], (-9.20774721f * r[11] + 5.46729406f * r[13] - q * nx) * ib,
-                 (5.46729406f * r[9] - q * ny) * ib, (12.4673487f * r[12] - q * nz) * ib);
-    q = lr * y[158];
-    SHLIGHT_SET3(out_grad[158], (-7.0325331f * r[12] + 4.94535355f * r[14] - q * nx) * ib,
-                 (7.0325331f * r[10] + 4.94535355f * r[8] - q * ny) * ib,
-                 (12.3358791f * r[13] - q * nz) * ib);
-    q = lr * y[159];
-    SHLIGHT_SET3(out_grad[159], (-7.55415233f * r[13] + 4.42325868f * r[15] - q * nx) * ib,
-                 (7.55415233f * r[9] + 4.42325868f * r[7] - q * ny) * ib,
-                 (12.1135928f * r[14] - q * nz) * ib);
-    q = lr * y[160];
-    SHLIGHT_SET3(out_grad[160], (-8.07572853f * r[14] + 3.90094749f * r[16] - q * nx) * ib,
-                 (8.07572853f * r[8] + 3.90094749f * r[6] - q * ny) * ib,
-                 (11.7953565f * r[15] - q * nz) * ib);
-    q = lr * y[161];
-    SHLIGHT_SET3(out_grad[161], (-8.59726954f * r[15] + 3.37831974f * r[17] - q * nx) * ib,
-                 (8.59726954f * r[7] + 3.37831974f * r[5] - q * ny) * ib,
-                 (11.3731186f * r[16] - q * nz) * ib);
-    q = lr * y[162];
-    SHLIGHT_SET3(out_grad[162], (-9.11878138f * r[16] + 2.8552012f * r[18] - q * nx) * ib,
-                 (9.11878138f * r[6] + 2.8552012f * r[4] - q * ny) * ib,
-                 (10.8347268f * r[17] - q * nz) * ib);
-    q = lr * y[163];
-    SHLIGHT_SET3(out_grad[163], (-9.64026928f * r[17] + 2.33126202f * r[19] - q * nx) * ib,
-                 (9.64026928f * r[5] + 2.33126202f * r[3] - q * ny) * ib,
-                 (10.1617356f * r[18] - q * nz) * ib);
-    q = lr * y[164];
-    SHLIGHT_SET3(out_grad[164], (-10.1617356f * r[18] + 1.8057878f * r[20] - q * nx) * ib,
-                 (10.1617356f * r[4] + 1.8057878f * r[2] - q * ny) * ib,
-                 (9.32504808f * r[19] - q * nz) * ib);
-    q = lr * y[165];
-    SHLIGHT_SET3(out_grad[165], (-10.6831847f * r[19] + 1.2768848f * r[21] - q * nx) * ib,
-                 (10.6831847f * r[3] + 1.2768848f * r[1] - q * ny) * ib,
-                 (8.27515927f * r[20] - q * nz) * ib);
-    q = lr * y[166];
-    SHLIGHT_SET3(out_grad[166], (-11.2046186f * r[20] + 0.737209781f * r[22] - q * nx) * ib,
-                 (11.2046186f * r[2] + 0.737209781f * r[0] - q * ny) * ib,
-                 (6.91564075f * r[21] - q * nz) * ib);
-    q = lr * y[167];
-    SHLIGHT_SET3(out_grad[167], (-11.7260394f * r[21] - q * nx) * ib,
-                 (11.7260394f * r[1] - q * ny) * ib, (5.0f * r[22] - q * nz) * ib);
-    q = lr * y[168];
-    SHLIGHT_SET3(out_grad[168], (-12.2474487f * r[22] - q * nx) * ib,
-                 (12.2474487f * r[0] - q * ny) * ib, -q * nz * ib);
+    SHLI_G2(144, -12.247449f * r[0], -12.247449f * r[22]);
+    SHLI_G3(145, -11.726039f * r[1], -11.726039f * r[21], 5.0f * r[0]);
+    SHLI_G3(146, -11.204618f * r[2] + 0.7372098f * r[0], -11.204618f * r[20] + -0.7372098f * r[22],
+            6.915641f * r[1]);
+    SHLI_G3(147, -10.683185f * r[3] + 1.2768848f * r[1], -10.683185f * r[19] + -1.2768848f * r[21],
+            8.275159f * r[2]);
+    SHLI_G3(148, -10.161736f * r[4] + 1.8057878f * r[2], -10.161736f * r[18] + -1.8057878f * r[20],
+            9.325048f * r[3]);
+    SHLI_G3(149, -9.640269f * r[5] + 2.331262f * r[3], -9.640269f * r[17] + -2.331262f * r[19],
+            10.161736f * r[4]);
+    SHLI_G3(150, -9.118781f * r[6] + 2.8552012f * r[4], -9.118781f * r[16] + -2.8552012f * r[18],
+            10.834726f * r[5]);
+    SHLI_G3(151, -8.59727f * r[7] + 3.3783197f * r[5], -8.59727f * r[15] + -3.3783197f * r[17],
+            11.373118f * r[6]);
+    SHLI_G3(152, -8.075728f * r[8] + 3.9009476f * r[6], -8.075728f * r[14] + -3.9009476f * r[16],
+            11.795357f * r[7]);
+    SHLI_G3(153, -7.5541525f * r[9] + 4.423259f * r[7], -7.5541525f * r[13] + -4.423259f * r[15],
+            12.113593f * r[8]);
+    SHLI_G3(154, -7.032533f * r[10] + 4.9453535f * r[8], -7.032533f * r[12] + -4.9453535f * r[14],
+            12.335879f * r[9]);
+    SHLI_G3(155, 5.467294f * r[9], -9.207747f * r[11] + -5.467294f * r[13], 12.467349f * r[10]);
+    SHLI_G3(156, 8.469895f * r[12], 8.469895f * r[10], 12.510865f * r[11]);
+    SHLI_G3(157, -9.207747f * r[11] + 5.467294f * r[13], 5.467294f * r[9], 12.467349f * r[12]);
+    SHLI_G3(158, -7.032533f * r[12] + 4.9453535f * r[14], 7.032533f * r[10] + 4.9453535f * r[8],
+            12.335879f * r[13]);
+    SHLI_G3(159, -7.5541525f * r[13] + 4.423259f * r[15], 7.5541525f * r[9] + 4.423259f * r[7],
+            12.113593f * r[14]);
+    SHLI_G3(160, -8.075728f * r[14] + 3.9009476f * r[16], 8.075728f * r[8] + 3.9009476f * r[6],
+            11.795357f * r[15]);
+    SHLI_G3(161, -8.59727f * r[15] + 3.3783197f * r[17], 8.59727f * r[7] + 3.3783197f * r[5],
+            11.373118f * r[16]);
+    SHLI_G3(162, -9.118781f * r[16] + 2.8552012f * r[18], 9.118781f * r[6] + 2.8552012f * r[4],
+            10.834726f * r[17]);
+    SHLI_G3(163, -9.640269f * r[17] + 2.331262f * r[19], 9.640269f * r[5] + 2.331262f * r[3],
+            10.161736f * r[18]);
+    SHLI_G3(164, -10.161736f * r[18] + 1.8057878f * r[20], 10.161736f * r[4] + 1.8057878f * r[2],
+            9.325048f * r[19]);
+    SHLI_G3(165, -10.683185f * r[19] + 1.2768848f * r[21], 10.683185f * r[3] + 1.2768848f * r[1],
+            8.275159f * r[20]);
+    SHLI_G3(166, -11.204618f * r[20] + 0.7372098f * r[22], 11.204618f * r[2] + 0.7372098f * r[0],
+            6.915641f * r[21]);
+    SHLI_G3(167, -11.726039f * r[21], 11.726039f * r[1], 5.0f * r[22]);
+    SHLI_G2(168, -12.247449f * r[22], 12.247449f * r[0]);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 13
@@ -15084,108 +14350,53 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     r[22] = y[166] * ir;
     r[23] = y[167] * ir;
     r[24] = y[168] * ir;
-    q = lr * y[169];
-    SHLIGHT_SET3(out_grad[169], (-13.2476413f * r[0] - q * nx) * ib,
-                 (-13.2476413f * r[24] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[170];
-    SHLIGHT_SET3(out_grad[170], (-12.7279221f * r[1] - q * nx) * ib,
-                 (-12.7279221f * r[23] - q * ny) * ib, (5.19615242f * r[0] - q * nz) * ib);
-    q = lr * y[171];
-    SHLIGHT_SET3(out_grad[171], (-12.208194f * r[2] + 0.734846923f * r[0] - q * nx) * ib,
-                 (-12.208194f * r[22] + -0.734846923f * r[24] - q * ny) * ib,
-                 (7.2f * r[1] - q * nz) * ib);
-    q = lr * y[172];
-    SHLIGHT_SET3(out_grad[172], (-11.6884558f * r[3] + 1.27279221f * r[1] - q * nx) * ib,
-                 (-11.6884558f * r[21] + -1.27279221f * r[23] - q * ny) * ib,
-                 (8.63249674f * r[2] - q * nz) * ib);
-    q = lr * y[173];
-    SHLIGHT_SET3(out_grad[173], (-11.1687063f * r[4] + 1.8f * r[2] - q * nx) * ib,
-                 (-11.1687063f * r[20] + -1.8f * r[22] - q * ny) * ib,
-                 (9.74884609f * r[3] - q * nz) * ib);
-    q = lr * y[174];
-    SHLIGHT_SET3(out_grad[174], (-10.6489436f * r[5] + 2.32379001f * r[3] - q * nx) * ib,
-                 (-10.6489436f * r[19] + -2.32379001f * r[21] - q * ny) * ib,
-                 (10.6489436f * r[4] - q * nz) * ib);
-    q = lr * y[175];
-    SHLIGHT_SET3(out_grad[175], (-10.1291658f * r[6] + 2.84604989f * r[4] - q * nx) * ib,
-                 (-10.1291658f * r[18] + -2.84604989f * r[20] - q * ny) * ib,
-                 (11.3841996f * r[5] - q * nz) * ib);
-    q = lr * y[176];
-    SHLIGHT_SET3(out_grad[176], (-9.60937043f * r[7] + 3.36749165f * r[5] - q * nx) * ib,
-                 (-9.60937043f * r[17] + -3.36749165f * r[19] - q * ny) * ib,
-                 (11.9849906f * r[6] - q * nz) * ib);
-    q = lr * y[177];
-    SHLIGHT_SET3(out_grad[177], (-9.08955444f * r[8] + 3.88844442f * r[6] - q * nx) * ib,
-                 (-9.08955444f * r[16] + -3.88844442f * r[18] - q * ny) * ib,
-                 (12.4707658f * r[7] - q * nz) * ib);
-    q = lr * y[178];
-    SHLIGHT_SET3(out_grad[178], (-8.56971411f * r[9] + 4.40908154f * r[7] - q * nx) * ib,
-                 (-8.56971411f * r[15] + -4.40908154f * r[17] - q * ny) * ib,
-                 (12.8545712f * r[8] - q * nz) * ib);
-    q = lr * y[179];
-    SHLIGHT_SET3(out_grad[179], (-8.04984472f * r[10] + 4.92950302f * r[8] - q * nx) * ib,
-                 (-8.04984472f * r[14] + -4.92950302f * r[16] - q * ny) * ib,
-                 (13.1453409f * r[9] - q * nz) * ib);
-    q = lr * y[180];
-    SHLIGHT_SET3(out_grad[180], (-7.52994024f * r[11] + 5.44977064f * r[9] - q * nx) * ib,
-                 (-7.52994024f * r[13] + -5.44977064f * r[15] - q * ny) * ib,
-                 (13.3491573f * r[10] - q * nz) * ib);
-    q = lr * y[181];
-    SHLIGHT_SET3(out_grad[181], (5.96992462f * r[10] - q * nx) * ib,
-                 (-9.91362699f * r[12] + -5.96992462f * r[14] - q * ny) * ib,
-                 (13.4699666f * r[11] - q * nz) * ib);
-    q = lr * y[182];
-    SHLIGHT_SET3(out_grad[182], (9.17823512f * r[13] - q * nx) * ib,
-                 (9.17823512f * r[11] - q * ny) * ib, (13.5099963f * r[12] - q * nz) * ib);
-    q = lr * y[183];
-    SHLIGHT_SET3(out_grad[183], (-9.91362699f * r[12] + 5.96992462f * r[14] - q * nx) * ib,
-                 (5.96992462f * r[10] - q * ny) * ib, (13.4699666f * r[13] - q * nz) * ib);
-    q = lr * y[184];
-    SHLIGHT_SET3(out_grad[184], (-7.52994024f * r[13] + 5.44977064f * r[15] - q * nx) * ib,
-                 (7.52994024f * r[11] + 5.44977064f * r[9] - q * ny) * ib,
-                 (13.3491573f * r[14] - q * nz) * ib);
-    q = lr * y[185];
-    SHLIGHT_SET3(out_grad[185], (-8.04984472f * r[14] + 4.92950302f * r[16] - q * nx) * ib,
-                 (8.04984472f * r[10] + 4.92950302f * r[8] - q * ny) * ib,
-                 (13.1453409f * r[15] - q * nz) * ib);
-    q = lr * y[186];
-    SHLIGHT_SET3(out_grad[186], (-8.56971411f * r[15] + 4.40908154f * r[17] - q * nx) * ib,
-                 (8.56971411f * r[9] + 4.40908154f * r[7] - q * ny) * ib,
-                 (12.8545712f * r[16] - q * nz) * ib);
-    q = lr * y[187];
-    SHLIGHT_SET3(out_grad[187], (-9.08955444f * r[16] + 3.88844442f * r[18] - q * nx) * ib,
-                 (9.08955444f * r[8] + 3.88844442f * r[6] - q * ny) * ib,
-                 (12.4707658f * r[17] - q * nz) * ib);
-    q = lr * y[188];
-    SHLIGHT_SET3(out_grad[188], (-9.60937043f * r[17] + 3.36749165f * r[19] - q * nx) * ib,
-                 (9.60937043f * r[7] + 3.36749165f * r[5] - q * ny) * ib,
-                 (11.9849906f * r[18] - q * nz) * ib);
-    q = lr * y[189];
-    SHLIGHT_SET3(out_grad[189], (-10.1291658f * r[18] + 2.84604989f * r[20] - q * nx) * ib,
-                 (10.1291658f * r[6] + 2.84604989f * r[4] - q * ny) * ib,
-                 (11.3841996f * r[19] - q * nz) * ib);
-    q = lr * y[190];
-    SHLIGHT_SET3(out_grad[190], (-10.6489436f * r[19] + 2.32379001f * r[21] - q * nx) * ib,
-                 (10.6489436f * r[5] + 2.32379001f * r[3] - q * ny) * ib,
-                 (10.6489436f * r[20] - q * nz) * ib);
-    q = lr * y[191];
-    SHLIGHT_SET3(out_grad[191], (-11.1687063f * r[20] + 1.8f * r[22] - q * nx) * ib,
-                 (11.1687063f * r[4] + 1.8f * r[2] - q * ny) * ib,
-                 (9.74884609f * r[21] - q * nz) * ib);
-    q = lr * y[192];
-    SHLIGHT_SET3(out_grad[192], (-11.6884558f * r[21] + 1.27279221f * r[23] - q * nx) * ib,
-                 (11.6884558f * r[3] + 1.27279221f * r[1] - q * ny) * ib,
-                 (8.63249674f * r[22] - q * nz) * ib);
-    q = lr * y[193];
-    SHLIGHT_SET3(out_grad[193], (-12.208194f * r[22] + 0.734846923f * r[24] - q * nx) * ib,
-                 (12.208194f * r[2] + 0.734846923f * r[0] - q * ny) * ib,
-                 (7.2f * r[23] - q * nz) * ib);
-    q = lr * y[194];
-    SHLIGHT_SET3(out_grad[194], (-12.7279221f * r[23] - q * nx) * ib,
-                 (12.7279221f * r[1] - q * ny) * ib, (5.19615242f * r[24] - q * nz) * ib);
-    q = lr * y[195];
-    SHLIGHT_SET3(out_grad[195], (-13.2476413f * r[24] - q * nx) * ib,
-                 (13.2476413f * r[0] - q * ny) * ib, -q * nz * ib);
+    SHLI_G2(169, -13.247642f * r[0], -13.247642f * r[24]);
+    SHLI_G3(170, -12.727922f * r[1], -12.727922f * r[23], 5.196152f * r[0]);
+    SHLI_G3(171, -12.208194f * r[2] + 0.73484695f * r[0],
+            -12.208194f * r[22] + -0.73484695f * r[24], 7.2f * r[1]);
+    SHLI_G3(172, -11.688456f * r[3] + 1.2727922f * r[1], -11.688456f * r[21] + -1.2727922f * r[23],
+            8.632497f * r[2]);
+    SHLI_G3(173, -11.168706f * r[4] + 1.8f * r[2], -11.168706f * r[20] + -1.8f * r[22],
+            9.748846f * r[3]);
+    SHLI_G3(174, -10.648944f * r[5] + 2.32379f * r[3], -10.648944f * r[19] + -2.32379f * r[21],
+            10.648944f * r[4]);
+    SHLI_G3(175, -10.129166f * r[6] + 2.8460498f * r[4], -10.129166f * r[18] + -2.8460498f * r[20],
+            11.384199f * r[5]);
+    SHLI_G3(176, -9.60937f * r[7] + 3.3674917f * r[5], -9.60937f * r[17] + -3.3674917f * r[19],
+            11.984991f * r[6]);
+    SHLI_G3(177, -9.089555f * r[8] + 3.8884444f * r[6], -9.089555f * r[16] + -3.8884444f * r[18],
+            12.470766f * r[7]);
+    SHLI_G3(178, -8.569715f * r[9] + 4.4090815f * r[7], -8.569715f * r[15] + -4.4090815f * r[17],
+            12.854571f * r[8]);
+    SHLI_G3(179, -8.049845f * r[10] + 4.929503f * r[8], -8.049845f * r[14] + -4.929503f * r[16],
+            13.145341f * r[9]);
+    SHLI_G3(180, -7.52994f * r[11] + 5.4497705f * r[9], -7.52994f * r[13] + -5.4497705f * r[15],
+            13.349157f * r[10]);
+    SHLI_G3(181, 5.9699244f * r[10], -9.913627f * r[12] + -5.9699244f * r[14], 13.469967f * r[11]);
+    SHLI_G3(182, 9.178235f * r[13], 9.178235f * r[11], 13.509996f * r[12]);
+    SHLI_G3(183, -9.913627f * r[12] + 5.9699244f * r[14], 5.9699244f * r[10], 13.469967f * r[13]);
+    SHLI_G3(184, -7.52994f * r[13] + 5.4497705f * r[15], 7.52994f * r[11] + 5.4497705f * r[9],
+            13.349157f * r[14]);
+    SHLI_G3(185, -8.049845f * r[14] + 4.929503f * r[16], 8.049845f * r[10] + 4.929503f * r[8],
+            13.145341f * r[15]);
+    SHLI_G3(186, -8.569715f * r[15] + 4.4090815f * r[17], 8.569715f * r[9] + 4.4090815f * r[7],
+            12.854571f * r[16]);
+    SHLI_G3(187, -9.089555f * r[16] + 3.8884444f * r[18], 9.089555f * r[8] + 3.8884444f * r[6],
+            12.470766f * r[17]);
+    SHLI_G3(188, -9.60937f * r[17] + 3.3674917f * r[19], 9.60937f * r[7] + 3.3674917f * r[5],
+            11.984991f * r[18]);
+    SHLI_G3(189, -10.129166f * r[18] + 2.8460498f * r[20], 10.129166f * r[6] + 2.8460498f * r[4],
+            11.384199f * r[19]);
+    SHLI_G3(190, -10.648944f * r[19] + 2.32379f * r[21], 10.648944f * r[5] + 2.32379f * r[3],
+            10.648944f * r[20]);
+    SHLI_G3(191, -11.168706f * r[20] + 1.8f * r[22], 11.168706f * r[4] + 1.8f * r[2],
+            9.748846f * r[21]);
+    SHLI_G3(192, -11.688456f * r[21] + 1.2727922f * r[23], 11.688456f * r[3] + 1.2727922f * r[1],
+            8.632497f * r[22]);
+    SHLI_G3(193, -12.208194f * r[22] + 0.73484695f * r[24], 12.208194f * r[2] + 0.73484695f * r[0],
+            7.2f * r[23]);
+    SHLI_G3(194, -12.727922f * r[23], 12.727922f * r[1], 5.196152f * r[24]);
+    SHLI_G2(195, -13.247642f * r[24], 13.247642f * r[0]);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 14
@@ -15218,116 +14429,57 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     r[24] = y[193] * ir;
     r[25] = y[194] * ir;
     r[26] = y[195] * ir;
-    q = lr * y[196];
-    SHLIGHT_SET3(out_grad[196], (-14.2478068f * r[0] - q * nx) * ib,
-                 (-14.2478068f * r[26] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[197];
-    SHLIGHT_SET3(out_grad[197], (-13.7295302f * r[1] - q * nx) * ib,
-                 (-13.7295302f * r[25] - q * ny) * ib, (5.38516481f * r[0] - q * nz) * ib);
-    q = lr * y[198];
-    SHLIGHT_SET3(out_grad[198], (-13.2112466f * r[2] + 0.732828109f * r[0] - q * nx) * ib,
-                 (-13.2112466f * r[24] + -0.732828109f * r[26] - q * ny) * ib,
-                 (7.47340965f * r[1] - q * nz) * ib);
-    q = lr * y[199];
-    SHLIGHT_SET3(out_grad[199], (-12.6929552f * r[3] + 1.26929552f * r[1] - q * nx) * ib,
-                 (-12.6929552f * r[23] + -1.26929552f * r[25] - q * ny) * ib,
-                 (8.97527468f * r[2] - q * nz) * ib);
-    q = lr * y[200];
-    SHLIGHT_SET3(out_grad[200], (-12.1746549f * r[4] + 1.79505494f * r[2] - q * nx) * ib,
-                 (-12.1746549f * r[22] + -1.79505494f * r[24] - q * ny) * ib,
-                 (10.1543646f * r[3] - q * nz) * ib);
-    q = lr * y[201];
-    SHLIGHT_SET3(out_grad[201], (-11.6563446f * r[5] + 2.31740596f * r[3] - q * nx) * ib,
-                 (-11.6563446f * r[21] + -2.31740596f * r[23] - q * ny) * ib,
-                 (11.1138885f * r[4] - q * nz) * ib);
-    q = lr * y[202];
-    SHLIGHT_SET3(out_grad[202], (-11.138023f * r[6] + 2.83823106f * r[4] - q * nx) * ib,
-                 (-11.138023f * r[20] + -2.83823106f * r[22] - q * ny) * ib,
-                 (11.9070474f * r[5] - q * nz) * ib);
-    q = lr * y[203];
-    SHLIGHT_SET3(out_grad[203], (-10.6196882f * r[7] + 3.35824028f * r[5] - q * nx) * ib,
-                 (-10.6196882f * r[19] + -3.35824028f * r[21] - q * ny) * ib,
-                 (12.5653845f * r[6] - q * nz) * ib);
-    q = lr * y[204];
-    SHLIGHT_SET3(out_grad[204], (-10.1013384f * r[8] + 3.87776186f * r[6] - q * nx) * ib,
-                 (-10.1013384f * r[18] + -3.87776186f * r[20] - q * ny) * ib,
-                 (13.1092277f * r[7] - q * nz) * ib);
-    q = lr * y[205];
-    SHLIGHT_SET3(out_grad[205], (-9.58297101f * r[9] + 4.39696865f * r[7] - q * nx) * ib,
-                 (-9.58297101f * r[17] + -4.39696865f * r[19] - q * ny) * ib,
-                 (13.5523676f * r[8] - q * nz) * ib);
-    q = lr * y[206];
-    SHLIGHT_SET3(out_grad[206], (-9.06458309f * r[10] + 4.9159604f * r[8] - q * nx) * ib,
-                 (-9.06458309f * r[16] + -4.9159604f * r[18] - q * ny) * ib,
-                 (13.9044357f * r[9] - q * nz) * ib);
-    q = lr * y[207];
-    SHLIGHT_SET3(out_grad[207], (-8.5461709f * r[11] + 5.43479871f * r[9] - q * nx) * ib,
-                 (-8.5461709f * r[15] + -5.43479871f * r[17] - q * ny) * ib,
-                 (14.1722211f * r[10] - q * nz) * ib);
-    q = lr * y[208];
-    SHLIGHT_SET3(out_grad[208], (-8.02772972f * r[12] + 5.9535237f * r[10] - q * nx) * ib,
-                 (-8.02772972f * r[14] + -5.9535237f * r[16] - q * ny) * ib,
-                 (14.3604395f * r[11] - q * nz) * ib);
-    q = lr * y[209];
-    SHLIGHT_SET3(out_grad[209], (6.47216261f * r[11] - q * nx) * ib,
-                 (-10.6196882f * r[13] + -6.47216261f * r[15] - q * ny) * ib,
-                 (14.4721956f * r[12] - q * nz) * ib);
-    q = lr * y[210];
-    SHLIGHT_SET3(out_grad[210], (9.88639169f * r[14] - q * nx) * ib,
-                 (9.88639169f * r[12] - q * ny) * ib, (14.5092563f * r[13] - q * nz) * ib);
-    q = lr * y[211];
-    SHLIGHT_SET3(out_grad[211], (-10.6196882f * r[13] + 6.47216261f * r[15] - q * nx) * ib,
-                 (6.47216261f * r[11] - q * ny) * ib, (14.4721956f * r[14] - q * nz) * ib);
-    q = lr * y[212];
-    SHLIGHT_SET3(out_grad[212], (-8.02772972f * r[14] + 5.9535237f * r[16] - q * nx) * ib,
-                 (8.02772972f * r[12] + 5.9535237f * r[10] - q * ny) * ib,
-                 (14.3604395f * r[15] - q * nz) * ib);
-    q = lr * y[213];
-    SHLIGHT_SET3(out_grad[213], (-8.5461709f * r[15] + 5.43479871f * r[17] - q * nx) * ib,
-                 (8.5461709f * r[11] + 5.43479871f * r[9] - q * ny) * ib,
-                 (14.1722211f * r[16] - q * nz) * ib);
-    q = lr * y[214];
-    SHLIGHT_SET3(out_grad[214], (-9.06458309f * r[16] + 4.9159604f * r[18] - q * nx) * ib,
-                 (9.06458309f * r[10] + 4.9159604f * r[8] - q * ny) * ib,
-                 (13.9044357f * r[17] - q * nz) * ib);
-    q = lr * y[215];
-    SHLIGHT_SET3(out_grad[215], (-9.58297101f * r[17] + 4.39696865f * r[19] - q * nx) * ib,
-                 (9.58297101f * r[9] + 4.39696865f * r[7] - q * ny) * ib,
-                 (13.5523676f * r[18] - q * nz) * ib);
-    q = lr * y[216];
-    SHLIGHT_SET3(out_grad[216], (-10.1013384f * r[18] + 3.87776186f * r[20] - q * nx) * ib,
-                 (10.1013384f * r[8] + 3.87776186f * r[6] - q * ny) * ib,
-                 (13.1092277f * r[19] - q * nz) * ib);
-    q = lr * y[217];
-    SHLIGHT_SET3(out_grad[217], (-10.6196882f * r[19] + 3.35824028f * r[21] - q * nx) * ib,
-                 (10.6196882f * r[7] + 3.35824028f * r[5] - q * ny) * ib,
-                 (12.5653845f * r[20] - q * nz) * ib);
-    q = lr * y[218];
-    SHLIGHT_SET3(out_grad[218], (-11.138023f * r[20] + 2.83823106f * r[22] - q * nx) * ib,
-                 (11.138023f * r[6] + 2.83823106f * r[4] - q * ny) * ib,
-                 (11.9070474f * r[21] - q * nz) * ib);
-    q = lr * y[219];
-    SHLIGHT_SET3(out_grad[219], (-11.6563446f * r[21] + 2.31740596f * r[23] - q * nx) * ib,
-                 (11.6563446f * r[5] + 2.31740596f * r[3] - q * ny) * ib,
-                 (11.1138885f * r[22] - q * nz) * ib);
-    q = lr * y[220];
-    SHLIGHT_SET3(out_grad[220], (-12.1746549f * r[22] + 1.79505494f * r[24] - q * nx) * ib,
-                 (12.1746549f * r[4] + 1.79505494f * r[2] - q * ny) * ib,
-                 (10.1543646f * r[23] - q * nz) * ib);
-    q = lr * y[221];
-    SHLIGHT_SET3(out_grad[221], (-12.6929552f * r[23] + 1.26929552f * r[25] - q * nx) * ib,
-                 (12.6929552f * r[3] + 1.26929552f * r[1] - q * ny) * ib,
-                 (8.97527468f * r[24] - q * nz) * ib);
-    q = lr * y[222];
-    SHLIGHT_SET3(out_grad[222], (-13.2112466f * r[24] + 0.732828109f * r[26] - q * nx) * ib,
-                 (13.2112466f * r[2] + 0.732828109f * r[0] - q * ny) * ib,
-                 (7.47340965f * r[25] - q * nz) * ib);
-    q = lr * y[223];
-    SHLIGHT_SET3(out_grad[223], (-13.7295302f * r[25] - q * nx) * ib,
-                 (13.7295302f * r[1] - q * ny) * ib, (5.38516481f * r[26] - q * nz) * ib);
-    q = lr * y[224];
-    SHLIGHT_SET3(out_grad[224], (-14.2478068f * r[26] - q * nx) * ib,
-                 (14.2478068f * r[0] - q * ny) * ib, -q * nz * ib);
+    SHLI_G2(196, -14.247807f * r[0], -14.247807f * r[26]);
+    SHLI_G3(197, -13.72953f * r[1], -13.72953f * r[25], 5.3851647f * r[0]);
+    SHLI_G3(198, -13.2112465f * r[2] + 0.7328281f * r[0],
+            -13.2112465f * r[24] + -0.7328281f * r[26], 7.4734097f * r[1]);
+    SHLI_G3(199, -12.692955f * r[3] + 1.2692956f * r[1], -12.692955f * r[23] + -1.2692956f * r[25],
+            8.975275f * r[2]);
+    SHLI_G3(200, -12.174655f * r[4] + 1.7950549f * r[2], -12.174655f * r[22] + -1.7950549f * r[24],
+            10.154365f * r[3]);
+    SHLI_G3(201, -11.656344f * r[5] + 2.317406f * r[3], -11.656344f * r[21] + -2.317406f * r[23],
+            11.113889f * r[4]);
+    SHLI_G3(202, -11.138023f * r[6] + 2.838231f * r[4], -11.138023f * r[20] + -2.838231f * r[22],
+            11.907047f * r[5]);
+    SHLI_G3(203, -10.619688f * r[7] + 3.3582404f * r[5], -10.619688f * r[19] + -3.3582404f * r[21],
+            12.565385f * r[6]);
+    SHLI_G3(204, -10.101338f * r[8] + 3.8777618f * r[6], -10.101338f * r[18] + -3.8777618f * r[20],
+            13.109228f * r[7]);
+    SHLI_G3(205, -9.582971f * r[9] + 4.396969f * r[7], -9.582971f * r[17] + -4.396969f * r[19],
+            13.552367f * r[8]);
+    SHLI_G3(206, -9.064583f * r[10] + 4.9159603f * r[8], -9.064583f * r[16] + -4.9159603f * r[18],
+            13.904436f * r[9]);
+    SHLI_G3(207, -8.546171f * r[11] + 5.4347987f * r[9], -8.546171f * r[15] + -5.4347987f * r[17],
+            14.172221f * r[10]);
+    SHLI_G3(208, -8.02773f * r[12] + 5.9535236f * r[10], -8.02773f * r[14] + -5.9535236f * r[16],
+            14.360439f * r[11]);
+    SHLI_G3(209, 6.4721627f * r[11], -10.619688f * r[13] + -6.4721627f * r[15], 14.472196f * r[12]);
+    SHLI_G3(210, 9.886392f * r[14], 9.886392f * r[12], 14.509256f * r[13]);
+    SHLI_G3(211, -10.619688f * r[13] + 6.4721627f * r[15], 6.4721627f * r[11], 14.472196f * r[14]);
+    SHLI_G3(212, -8.02773f * r[14] + 5.9535236f * r[16], 8.02773f * r[12] + 5.9535236f * r[10],
+            14.360439f * r[15]);
+    SHLI_G3(213, -8.546171f * r[15] + 5.4347987f * r[17], 8.546171f * r[11] + 5.4347987f * r[9],
+            14.172221f * r[16]);
+    SHLI_G3(214, -9.064583f * r[16] + 4.9159603f * r[18], 9.064583f * r[10] + 4.9159603f * r[8],
+            13.904436f * r[17]);
+    SHLI_G3(215, -9.582971f * r[17] + 4.396969f * r[19], 9.582971f * r[9] + 4.396969f * r[7],
+            13.552367f * r[18]);
+    SHLI_G3(216, -10.101338f * r[18] + 3.8777618f * r[20], 10.101338f * r[8] + 3.8777618f * r[6],
+            13.109228f * r[19]);
+    SHLI_G3(217, -10.619688f * r[19] + 3.3582404f * r[21], 10.619688f * r[7] + 3.3582404f * r[5],
+            12.565385f * r[20]);
+    SHLI_G3(218, -11.138023f * r[20] + 2.838231f * r[22], 11.138023f * r[6] + 2.838231f * r[4],
+            11.907047f * r[21]);
+    SHLI_G3(219, -11.656344f * r[21] + 2.317406f * r[23], 11.656344f * r[5] + 2.317406f * r[3],
+            11.113889f * r[22]);
+    SHLI_G3(220, -12.174655f * r[22] + 1.7950549f * r[24], 12.174655f * r[4] + 1.7950549f * r[2],
+            10.154365f * r[23]);
+    SHLI_G3(221, -12.692955f * r[23] + 1.2692956f * r[25], 12.692955f * r[3] + 1.2692956f * r[1],
+            8.975275f * r[24]);
+    SHLI_G3(222, -13.2112465f * r[24] + 0.7328281f * r[26], 13.2112465f * r[2] + 0.7328281f * r[0],
+            7.4734097f * r[25]);
+    SHLI_G3(223, -13.72953f * r[25], 13.72953f * r[1], 5.3851647f * r[26]);
+    SHLI_G2(224, -14.247807f * r[26], 14.247807f * r[0]);
   }
 #endif
 #if SHLIGHT_MAX_BANDS > 15
@@ -15362,127 +14514,66 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, floa
     r[26] = y[222] * ir;
     r[27] = y[223] * ir;
     r[28] = y[224] * ir;
-    q = lr * y[225];
-    SHLIGHT_SET3(out_grad[225], (-15.2479507f * r[0] - q * nx) * ib,
-                 (-15.2479507f * r[28] - q * ny) * ib, -q * nz * ib);
-    q = lr * y[226];
-    SHLIGHT_SET3(out_grad[226], (-14.7309199f * r[1] - q * nx) * ib,
-                 (-14.7309199f * r[27] - q * ny) * ib, (5.56776436f * r[0] - q * nz) * ib);
-    q = lr * y[227];
-    SHLIGHT_SET3(out_grad[227], (-14.2138835f * r[2] + 0.731083277f * r[0] - q * nx) * ib,
-                 (-14.2138835f * r[26] + -0.731083277f * r[28] - q * ny) * ib,
-                 (7.73705816f * r[1] - q * nz) * ib);
-    q = lr * y[228];
-    SHLIGHT_SET3(out_grad[228], (-13.6968408f * r[3] + 1.26627338f * r[1] - q * nx) * ib,
-                 (-13.6968408f * r[25] + -1.26627338f * r[27] - q * ny) * ib,
-                 (9.30517098f * r[2] - q * nz) * ib);
-    q = lr * y[229];
-    SHLIGHT_SET3(out_grad[229], (-13.1797912f * r[4] + 1.79078099f * r[2] - q * nx) * ib,
-                 (-13.1797912f * r[24] + -1.79078099f * r[26] - q * ny) * ib,
-                 (10.543833f * r[3] - q * nz) * ib);
-    q = lr * y[230];
-    SHLIGHT_SET3(out_grad[230], (-12.6627338f * r[5] + 2.31188832f * r[3] - q * nx) * ib,
-                 (-12.6627338f * r[23] + -2.31188832f * r[25] - q * ny) * ib,
-                 (11.5594416f * r[4] - q * nz) * ib);
-    q = lr * y[231];
-    SHLIGHT_SET3(out_grad[231], (-12.1456676f * r[6] + 2.83147336f * r[4] - q * nx) * ib,
-                 (-12.1456676f * r[22] + -2.83147336f * r[24] - q * ny) * ib,
-                 (12.4068946f * r[5] - q * nz) * ib);
-    q = lr * y[232];
-    SHLIGHT_SET3(out_grad[232], (-11.6285914f * r[7] + 3.35024446f * r[5] - q * nx) * ib,
-                 (-11.6285914f * r[21] + -3.35024446f * r[23] - q * ny) * ib,
-                 (13.1188204f * r[6] - q * nz) * ib);
-    q = lr * y[233];
-    SHLIGHT_SET3(out_grad[233], (-11.1115038f * r[8] + 3.86852908f * r[6] - q * nx) * ib,
-                 (-11.1115038f * r[20] + -3.86852908f * r[22] - q * ny) * ib,
-                 (13.7163381f * r[7] - q * nz) * ib);
-    q = lr * y[234];
-    SHLIGHT_SET3(out_grad[234], (-10.5944032f * r[9] + 4.38649966f * r[7] - q * nx) * ib,
-                 (-10.5944032f * r[19] + -4.38649966f * r[21] - q * ny) * ib,
-                 (14.2138835f * r[8] - q * nz) * ib);
-    q = lr * y[235];
-    SHLIGHT_SET3(out_grad[235], (-10.0772875f * r[10] + 4.90425572f * r[8] - q * nx) * ib,
-                 (-10.0772875f * r[18] + -4.90425572f * r[20] - q * ny) * ib,
-                 (14.6216655f * r[9] - q * nz) * ib);
-    q = lr * y[236];
-    SHLIGHT_SET3(out_grad[236], (-9.56015438f * r[11] + 5.4218587f * r[9] - q * nx) * ib,
-                 (-9.56015438f * r[17] + -5.4218587f * r[19] - q * ny) * ib,
-                 (14.9470329f * r[10] - q * nz) * ib);
-    q = lr * y[237];
-    SHLIGHT_SET3(out_grad[237], (-9.04300072f * r[12] + 5.93934862f * r[10] - q * nx) * ib,
-                 (-9.04300072f * r[16] + -5.93934862f * r[18] - q * ny) * ib,
-                 (15.1952806f * r[11] - q * nz) * ib);
-    q = lr * y[238];
-    SHLIGHT_SET3(out_grad[238], (-8.52582284f * r[13] + 6.45675268f * r[11] - q * nx) * ib,
-                 (-8.52582284f * r[15] + -6.45675268f * r[17] - q * ny) * ib,
-                 (15.3701457f * r[12] - q * nz) * ib);
-    q = lr * y[239];
-    SHLIGHT_SET3(out_grad[239], (6.97408998f * r[12] - q * nx) * ib,
-                 (-11.3258934f * r[14] + -6.97408998f * r[16] - q * ny) * ib,
-                 (15.4741163f * r[13] - q * nz) * ib);
-    q = lr * y[240];
-    SHLIGHT_SET3(out_grad[240], (10.5944032f * r[15] - q * nx) * ib,
-                 (10.5944032f * r[13] - q * ny) * ib, (15.5086183f * r[14] - q * nz) * ib);
-    q = lr * y[241];
-    SHLIGHT_SET3(out_grad[241], (-11.3258934f * r[14] + 6.97408998f * r[16] - q * nx) * ib,
-                 (6.97408998f * r[12] - q * ny) * ib, (15.4741163f * r[15] - q * nz) * ib);
-    q = lr * y[242];
-    SHLIGHT_SET3(out_grad[242], (-8.52582284f * r[15] + 6.45675268f * r[17] - q * nx) * ib,
-                 (8.52582284f * r[13] + 6.45675268f * r[11] - q * ny) * ib,
-                 (15.3701457f * r[16] - q * nz) * ib);
-    q = lr * y[243];
-    SHLIGHT_SET3(out_grad[243], (-9.04300072f * r[16] + 5.93934862f * r[18] - q * nx) * ib,
-                 (9.04300072f * r[12] + 5.93934862f * r[10] - q * ny) * ib,
-                 (15.1952806f * r[17] - q * nz) * ib);
-    q = lr * y[244];
-    SHLIGHT_SET3(out_grad[244], (-9.56015438f * r[17] + 5.4218587f * r[19] - q * nx) * ib,
-                 (9.56015438f * r[11] + 5.4218587f * r[9] - q * ny) * ib,
-                 (14.9470329f * r[18] - q * nz) * ib);
-    q = lr * y[245];
-    SHLIGHT_SET3(out_grad[245], (-10.0772875f * r[18] + 4.90425572f * r[20] - q * nx) * ib,
-                 (10.0772875f * r[10] + 4.90425572f * r[8] - q * ny) * ib,
-                 (14.6216655f * r[19] - q * nz) * ib);
-    q = lr * y[246];
-    SHLIGHT_SET3(out_grad[246], (-10.5944032f * r[19] + 4.38649966f * r[21] - q * nx) * ib,
-                 (10.5944032f * r[9] + 4.38649966f * r[7] - q * ny) * ib,
-                 (14.2138835f * r[20] - q * nz) * ib);
-    q = lr * y[247];
-    SHLIGHT_SET3(out_grad[247], (-11.1115038f * r[20] + 3.86852908f * r[22] - q * nx) * ib,
-                 (11.1115038f * r[8] + 3.86852908f * r[6] - q * ny) * ib,
-                 (13.7163381f * r[21] - q * nz) * ib);
-    q = lr * y[248];
-    SHLIGHT_SET3(out_grad[248], (-11.6285914f * r[21] + 3.35024446f * r[23] - q * nx) * ib,
-                 (11.6285914f * r[7] + 3.35024446f * r[5] - q * ny) * ib,
-                 (13.1188204f * r[22] - q * nz) * ib);
-    q = lr * y[249];
-    SHLIGHT_SET3(out_grad[249], (-12.1456676f * r[22] + 2.83147336f * r[24] - q * nx) * ib,
-                 (12.1456676f * r[6] + 2.83147336f * r[4] - q * ny) * ib,
-                 (12.4068946f * r[23] - q * nz) * ib);
-    q = lr * y[250];
-    SHLIGHT_SET3(out_grad[250], (-12.6627338f * r[23] + 2.31188832f * r[25] - q * nx) * ib,
-                 (12.6627338f * r[5] + 2.31188832f * r[3] - q * ny) * ib,
-                 (11.5594416f * r[24] - q * nz) * ib);
-    q = lr * y[251];
-    SHLIGHT_SET3(out_grad[251], (-13.1797912f * r[24] + 1.79078099f * r[26] - q * nx) * ib,
-                 (13.1797912f * r[4] + 1.79078099f * r[2] - q * ny) * ib,
-                 (10.543833f * r[25] - q * nz) * ib);
-    q = lr * y[252];
-    SHLIGHT_SET3(out_grad[252], (-13.6968408f * r[25] + 1.26627338f * r[27] - q * nx) * ib,
-                 (13.6968408f * r[3] + 1.26627338f * r[1] - q * ny) * ib,
-                 (9.30517098f * r[26] - q * nz) * ib);
-    q = lr * y[253];
-    SHLIGHT_SET3(out_grad[253], (-14.2138835f * r[26] + 0.731083277f * r[28] - q * nx) * ib,
-                 (14.2138835f * r[2] + 0.731083277f * r[0] - q * ny) * ib,
-                 (7.73705816f * r[27] - q * nz) * ib);
-    q = lr * y[254];
-    SHLIGHT_SET3(out_grad[254], (-14.7309199f * r[27] - q * nx) * ib,
-                 (14.7309199f * r[1] - q * ny) * ib, (5.56776436f * r[28] - q * nz) * ib);
-    q = lr * y[255];
-    SHLIGHT_SET3(out_grad[255], (-15.2479507f * r[28] - q * nx) * ib,
-                 (15.2479507f * r[0] - q * ny) * ib, -q * nz * ib);
+    SHLI_G2(225, -15.247951f * r[0], -15.247951f * r[28]);
+    SHLI_G3(226, -14.73092f * r[1], -14.73092f * r[27], 5.5677643f * r[0]);
+    SHLI_G3(227, -14.213883f * r[2] + 0.7310833f * r[0], -14.213883f * r[26] + -0.7310833f * r[28],
+            7.737058f * r[1]);
+    SHLI_G3(228, -13.696841f * r[3] + 1.2662734f * r[1], -13.696841f * r[25] + -1.2662734f * r[27],
+            9.305171f * r[2]);
+    SHLI_G3(229, -13.179791f * r[4] + 1.790781f * r[2], -13.179791f * r[24] + -1.790781f * r[26],
+            10.543833f * r[3]);
+    SHLI_G3(230, -12.662734f * r[5] + 2.3118882f * r[3], -12.662734f * r[23] + -2.3118882f * r[25],
+            11.559442f * r[4]);
+    SHLI_G3(231, -12.145668f * r[6] + 2.8314734f * r[4], -12.145668f * r[22] + -2.8314734f * r[24],
+            12.406895f * r[5]);
+    SHLI_G3(232, -11.628592f * r[7] + 3.3502445f * r[5], -11.628592f * r[21] + -3.3502445f * r[23],
+            13.11882f * r[6]);
+    SHLI_G3(233, -11.111504f * r[8] + 3.868529f * r[6], -11.111504f * r[20] + -3.868529f * r[22],
+            13.716338f * r[7]);
+    SHLI_G3(234, -10.594403f * r[9] + 4.3865f * r[7], -10.594403f * r[19] + -4.3865f * r[21],
+            14.213883f * r[8]);
+    SHLI_G3(235, -10.077288f * r[10] + 4.904256f * r[8], -10.077288f * r[18] + -4.904256f * r[20],
+            14.621666f * r[9]);
+    SHLI_G3(236, -9.560154f * r[11] + 5.421859f * r[9], -9.560154f * r[17] + -5.421859f * r[19],
+            14.947033f * r[10]);
+    SHLI_G3(237, -9.043001f * r[12] + 5.9393487f * r[10], -9.043001f * r[16] + -5.9393487f * r[18],
+            15.195281f * r[11]);
+    SHLI_G3(238, -8.525823f * r[13] + 6.456753f * r[11], -8.525823f * r[15] + -6.456753f * r[17],
+            15.370146f * r[12]);
+    SHLI_G3(239, 6.97409f * r[12], -11.325893f * r[14] + -6.97409f * r[16], 15.474116f * r[13]);
+    SHLI_G3(240, 10.594403f * r[15], 10.594403f * r[13], 15.508618f * r[14]);
+    SHLI_G3(241, -11.325893f * r[14] + 6.97409f * r[16], 6.97409f * r[12], 15.474116f * r[15]);
+    SHLI_G3(242, -8.525823f * r[15] + 6.456753f * r[17], 8.525823f * r[13] + 6.456753f * r[11],
+            15.370146f * r[16]);
+    SHLI_G3(243, -9.043001f * r[16] + 5.9393487f * r[18], 9.043001f * r[12] + 5.9393487f * r[10],
+            15.195281f * r[17]);
+    SHLI_G3(244, -9.560154f * r[17] + 5.421859f * r[19], 9.560154f * r[11] + 5.421859f * r[9],
+            14.947033f * r[18]);
+    SHLI_G3(245, -10.077288f * r[18] + 4.904256f * r[20], 10.077288f * r[10] + 4.904256f * r[8],
+            14.621666f * r[19]);
+    SHLI_G3(246, -10.594403f * r[19] + 4.3865f * r[21], 10.594403f * r[9] + 4.3865f * r[7],
+            14.213883f * r[20]);
+    SHLI_G3(247, -11.111504f * r[20] + 3.868529f * r[22], 11.111504f * r[8] + 3.868529f * r[6],
+            13.716338f * r[21]);
+    SHLI_G3(248, -11.628592f * r[21] + 3.3502445f * r[23], 11.628592f * r[7] + 3.3502445f * r[5],
+            13.11882f * r[22]);
+    SHLI_G3(249, -12.145668f * r[22] + 2.8314734f * r[24], 12.145668f * r[6] + 2.8314734f * r[4],
+            12.406895f * r[23]);
+    SHLI_G3(250, -12.662734f * r[23] + 2.3118882f * r[25], 12.662734f * r[5] + 2.3118882f * r[3],
+            11.559442f * r[24]);
+    SHLI_G3(251, -13.179791f * r[24] + 1.790781f * r[26], 13.179791f * r[4] + 1.790781f * r[2],
+            10.543833f * r[25]);
+    SHLI_G3(252, -13.696841f * r[25] + 1.2662734f * r[27], 13.696841f * r[3] + 1.2662734f * r[1],
+            9.305171f * r[26]);
+    SHLI_G3(253, -14.213883f * r[26] + 0.7310833f * r[28], 14.213883f * r[2] + 0.7310833f * r[0],
+            7.737058f * r[27]);
+    SHLI_G3(254, -14.73092f * r[27], 14.73092f * r[1], 5.5677643f * r[28]);
+    SHLI_G2(255, -15.247951f * r[28], 15.247951f * r[0]);
   }
 #endif
 }
+#undef SHLI_G3
+#undef SHLI_G2
 
 SHLIGHT_INLINE void shli_sh_grad_band(int l, const float *y, float nx, float ny, float nz, float ir,
                                       float ib, float *out_gb) {

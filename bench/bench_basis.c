@@ -188,28 +188,28 @@ NOINL void bw_batch16(int n, const float *d, bufs *b) { /* the 16 directions fro
 }
 
 /* one wrapper per n for the static-inline kernels (n a literal, as in user code) */
-#define NLIST16(X)                                                                                 \
+#define NLIST16(X) \
   X(1) X(2) X(3) X(4) X(5) X(6) X(7) X(8) X(9) X(10) X(11) X(12) X(13) X(14) X(15) X(16)
 #define NLIST(X) NLIST16(X) X(17) X(20) X(24) X(32) X(48) X(64)
-#define W_EVAL(N)                                                                                  \
-  NOINL void bw_eval_##N(int n, const float *d, bufs *b) {                                         \
-    (void)n;                                                                                       \
-    shl_sh_eval(N, d, b->y);                                                                       \
-    NOTAIL();                                                                                      \
+#define W_EVAL(N) \
+  NOINL void bw_eval_##N(int n, const float *d, bufs *b) { \
+    (void)n; \
+    shl_sh_eval(N, d, b->y); \
+    NOTAIL(); \
   }
-#define W_GRAD(N)                                                                                  \
-  NOINL void bw_grad_##N(int n, const float *d, bufs *b) {                                         \
-    (void)n;                                                                                       \
-    shl_sh_eval_grad(N, d, b->y, b->g);                                                            \
-    NOTAIL();                                                                                      \
+#define W_GRAD(N) \
+  NOINL void bw_grad_##N(int n, const float *d, bufs *b) { \
+    (void)n; \
+    shl_sh_eval_grad(N, d, b->y, b->g); \
+    NOTAIL(); \
   }
-#define W_GSPH(N)                                                                                  \
-  NOINL void bw_grad_sph_##N(int n, const float *d, bufs *b) {                                     \
-    (void)n;                                                                                       \
-    shl_sh_eval_grad_spherical(N, d, b->y, b->dth, b->dph);                                        \
-    NOTAIL();                                                                                      \
-    shl_sh_grad_from_spherical(N, d, b->dth, b->dph, b->g);                                        \
-    NOTAIL();                                                                                      \
+#define W_GSPH(N) \
+  NOINL void bw_grad_sph_##N(int n, const float *d, bufs *b) { \
+    (void)n; \
+    shl_sh_eval_grad_spherical(N, d, b->y, b->dth, b->dph); \
+    NOTAIL(); \
+    shl_sh_grad_from_spherical(N, d, b->dth, b->dph, b->g); \
+    NOTAIL(); \
   }
 NLIST(W_EVAL)
 NLIST(W_GRAD)

@@ -56,24 +56,24 @@ static double time_ns(wfn f) {
 }
 
 #define NL(X) X(3) X(4) X(5) X(6) X(7) X(8) X(9) X(10) X(11) X(12) X(13) X(14) X(15)
-#define WR(N)                                                                                      \
-  NOINL void shsh_##N(int i) {                                                                     \
-    sink = shl_sh_dot(N, LSH[i], FSH[i]);                                                          \
-  }                                                                                                \
-  NOINL void shshrot_##N(int i) {                                                                  \
-    shl_zh_rotate(N, CAPZH[i], W[i], ta);                                                          \
-    shl_zh_rotate(N, LOBE, RD[i], tb);                                                             \
-    sink = shl_sh_dot(N, ta, tb);                                                                  \
-  }                                                                                                \
-  NOINL void shsh1_##N(int i) {                                                                    \
-    shl_zh_rotate(N, CAPZH[i], W[i], ta);                                                          \
-    sink = shl_sh_dot(N, ta, FSH[i]);                                                              \
-  }                                                                                                \
-  NOINL void shzh_##N(int i) {                                                                     \
-    sink = shl_sh_conv_zh(N, LSH[i], LOBE, RD[i]);                                                 \
-  }                                                                                                \
-  NOINL void zhzh_##N(int i) {                                                                     \
-    sink = shl_zh_dot_zh(N, CAPZH[i], W[i], LOBE, RD[i]);                                          \
+#define WR(N) \
+  NOINL void shsh_##N(int i) { \
+    sink = shl_sh_dot(N, LSH[i], FSH[i]); \
+  } \
+  NOINL void shshrot_##N(int i) { \
+    shl_zh_rotate(N, CAPZH[i], W[i], ta); \
+    shl_zh_rotate(N, LOBE, RD[i], tb); \
+    sink = shl_sh_dot(N, ta, tb); \
+  } \
+  NOINL void shsh1_##N(int i) { \
+    shl_zh_rotate(N, CAPZH[i], W[i], ta); \
+    sink = shl_sh_dot(N, ta, FSH[i]); \
+  } \
+  NOINL void shzh_##N(int i) { \
+    sink = shl_sh_conv_zh(N, LSH[i], LOBE, RD[i]); \
+  } \
+  NOINL void zhzh_##N(int i) { \
+    sink = shl_zh_dot_zh(N, CAPZH[i], W[i], LOBE, RD[i]); \
   }
 NL(WR)
 typedef struct {

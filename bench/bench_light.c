@@ -67,26 +67,26 @@ static void quart(const double *v, int m, double *q) {
   q[2] = v[(3 * m) / 4];
 }
 
-#define NL(X)                                                                                      \
+#define NL(X) \
   X(2) X(3) X(4) X(5) X(6) X(7) X(8) X(9) X(10) X(11) X(12) X(13) X(14) X(15) X(16) X(32) X(64)
-#define W(N)                                                                                       \
-  NOINL void bw_eval_##N(int i) {                                                                  \
-    shl_sh_eval(N, U[i], sh);                                                                      \
-  }                                                                                                \
-  NOINL void bw_evgrad_##N(int i) {                                                                \
-    shl_sh_eval_grad(N, U[i], sh, gr);                                                             \
-  }                                                                                                \
-  NOINL void bw_sph_##N(int i) {                                                                   \
-    shl_sphere_light(N, X[i], C[i], R[i], sh);                                                     \
-  }                                                                                                \
-  NOINL void bw_sphg_##N(int i) {                                                                  \
-    shl_sphere_light_grad(N, X[i], C[i], R[i], sh, gr);                                            \
-  }                                                                                                \
-  NOINL void bw_tri_##N(int i) {                                                                   \
-    shl_triangle_light(N, X[i], C[i], P1[i], P2[i], sh);                                           \
-  }                                                                                                \
-  NOINL void bw_trig_##N(int i) {                                                                  \
-    shl_triangle_light_grad(N, X[i], C[i], P1[i], P2[i], sh, gr);                                  \
+#define W(N) \
+  NOINL void bw_eval_##N(int i) { \
+    shl_sh_eval(N, U[i], sh); \
+  } \
+  NOINL void bw_evgrad_##N(int i) { \
+    shl_sh_eval_grad(N, U[i], sh, gr); \
+  } \
+  NOINL void bw_sph_##N(int i) { \
+    shl_sphere_light(N, X[i], C[i], R[i], sh); \
+  } \
+  NOINL void bw_sphg_##N(int i) { \
+    shl_sphere_light_grad(N, X[i], C[i], R[i], sh, gr); \
+  } \
+  NOINL void bw_tri_##N(int i) { \
+    shl_triangle_light(N, X[i], C[i], P1[i], P2[i], sh); \
+  } \
+  NOINL void bw_trig_##N(int i) { \
+    shl_triangle_light_grad(N, X[i], C[i], P1[i], P2[i], sh, gr); \
   }
 NL(W)
 NOINL void bw_solid(int i) {

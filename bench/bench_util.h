@@ -60,24 +60,24 @@ BENCH_FN void cross(const double a[3], const double b[3], double o[3]) {
   o[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-#define BENCH_DEFINE_TIME_NS(fn)                                                                   \
-  static double time_ns(void) {                                                                    \
-    double s[15], t0, t;                                                                           \
-    int k, j, it;                                                                                  \
-    for (k = 0; k < 15; ++k) {                                                                     \
-      it = 0;                                                                                      \
-      t0 = now();                                                                                  \
-      do {                                                                                         \
-        for (j = 0; j < NCFG; ++j)                                                                 \
-          fn(j);                                                                                   \
-        it += NCFG;                                                                                \
-      } while ((t = now()) - t0 < 2e-3);                                                           \
-      s[k] = (t - t0) / it * 1e9;                                                                  \
-    }                                                                                              \
-    for (k = 0; k < 15; ++k)                                                                       \
-      for (j = k + 1; j < 15; ++j)                                                                 \
-        if (s[j] < s[k]) t = s[k], s[k] = s[j], s[j] = t;                                          \
-    return s[7];                                                                                   \
+#define BENCH_DEFINE_TIME_NS(fn) \
+  static double time_ns(void) { \
+    double s[15], t0, t; \
+    int k, j, it; \
+    for (k = 0; k < 15; ++k) { \
+      it = 0; \
+      t0 = now(); \
+      do { \
+        for (j = 0; j < NCFG; ++j) \
+          fn(j); \
+        it += NCFG; \
+      } while ((t = now()) - t0 < 2e-3); \
+      s[k] = (t - t0) / it * 1e9; \
+    } \
+    for (k = 0; k < 15; ++k) \
+      for (j = k + 1; j < 15; ++j) \
+        if (s[j] < s[k]) t = s[k], s[k] = s[j], s[j] = t; \
+    return s[7]; \
   }
 
 #ifdef BENCH_QUADS

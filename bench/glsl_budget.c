@@ -90,42 +90,42 @@ static const char *MAIN_HERMITE =
     "  out_float(0, acc);\n"
     "}\n";
 
-#define POLY_MAIN(call)                                                                            \
-  "void glrun_main(int item) {\n"                                                                  \
-  "  vec4 a = in_vec4(0);\n"                                                                       \
-  "  vec3 v[SHLIGHT_POLYGON_MAX];\n"                                                               \
-  "  for (int i = 0; i < SHLIGHT_POLYGON_MAX; ++i) v[i] = vec3(0.0);\n"                            \
-  "  v[0] = vec3(-0.5, -0.5, 1.0) + 0.1 * a.xyz;\n"                                                \
-  "  v[1] = vec3(0.5, -0.5, 1.0);\n"                                                               \
-  "  v[2] = vec3(0.5, 0.5, 1.0);\n"                                                                \
-  "  v[3] = vec3(-0.5, 0.5, 1.0);\n"                                                               \
-  "  vec3 nrm = vec3(0.0, 0.0, 1.0);\n"                                                            \
-  "  vec3 view = normalize(vec3(0.3, 0.0, 1.0));\n"                                                \
-  "  out_float(0, " call ");\n"                                                                    \
+#define POLY_MAIN(call) \
+  "void glrun_main(int item) {\n" \
+  "  vec4 a = in_vec4(0);\n" \
+  "  vec3 v[SHLIGHT_POLYGON_MAX];\n" \
+  "  for (int i = 0; i < SHLIGHT_POLYGON_MAX; ++i) v[i] = vec3(0.0);\n" \
+  "  v[0] = vec3(-0.5, -0.5, 1.0) + 0.1 * a.xyz;\n" \
+  "  v[1] = vec3(0.5, -0.5, 1.0);\n" \
+  "  v[2] = vec3(0.5, 0.5, 1.0);\n" \
+  "  v[3] = vec3(-0.5, 0.5, 1.0);\n" \
+  "  vec3 nrm = vec3(0.0, 0.0, 1.0);\n" \
+  "  vec3 view = normalize(vec3(0.3, 0.0, 1.0));\n" \
+  "  out_float(0, " call ");\n" \
   "}\n"
 
 /* POLY_MAIN with the repeat count of the run table (its first vertex moved per repeat) */
-#define POLY_RUN_MAIN(call)                                                                        \
-  "void glrun_main(int item) {\n"                                                                  \
-  "  vec4 a = in_vec4(0);\n"                                                                       \
-  "  vec3 v[SHLIGHT_POLYGON_MAX];\n"                                                               \
-  "  for (int i = 0; i < SHLIGHT_POLYGON_MAX; ++i) v[i] = vec3(0.0);\n"                            \
-  "  v[1] = vec3(0.5, -0.5, 1.0);\n"                                                               \
-  "  v[2] = vec3(0.5, 0.5, 1.0);\n"                                                                \
-  "  v[3] = vec3(-0.5, 0.5, 1.0);\n"                                                               \
-  "  vec3 nrm = vec3(0.0, 0.0, 1.0);\n"                                                            \
-  "  vec3 view = normalize(vec3(0.3, 0.0, 1.0));\n"                                                \
-  "  float acc = 0.0;\n"                                                                           \
-  "#ifdef GLSL_BUDGET_REPS\n"                                                                      \
-  "  int reps = int(a.w);\n"                                                                       \
-  "#else\n"                                                                                        \
-  "  const int reps = 1;\n"                                                                        \
-  "#endif\n"                                                                                       \
-  "  for (int r = 0; r < reps; ++r) {\n"                                                           \
-  "    v[0] = vec3(-0.5, -0.5, 1.0) + 0.1 * a.xyz + vec3(0.0, 0.0, 0.01 * float(r));\n"            \
-  "    acc += " call ";\n"                                                                         \
-  "  }\n"                                                                                          \
-  "  out_float(0, acc);\n"                                                                         \
+#define POLY_RUN_MAIN(call) \
+  "void glrun_main(int item) {\n" \
+  "  vec4 a = in_vec4(0);\n" \
+  "  vec3 v[SHLIGHT_POLYGON_MAX];\n" \
+  "  for (int i = 0; i < SHLIGHT_POLYGON_MAX; ++i) v[i] = vec3(0.0);\n" \
+  "  v[1] = vec3(0.5, -0.5, 1.0);\n" \
+  "  v[2] = vec3(0.5, 0.5, 1.0);\n" \
+  "  v[3] = vec3(-0.5, 0.5, 1.0);\n" \
+  "  vec3 nrm = vec3(0.0, 0.0, 1.0);\n" \
+  "  vec3 view = normalize(vec3(0.3, 0.0, 1.0));\n" \
+  "  float acc = 0.0;\n" \
+  "#ifdef GLSL_BUDGET_REPS\n" \
+  "  int reps = int(a.w);\n" \
+  "#else\n" \
+  "  const int reps = 1;\n" \
+  "#endif\n" \
+  "  for (int r = 0; r < reps; ++r) {\n" \
+  "    v[0] = vec3(-0.5, -0.5, 1.0) + 0.1 * a.xyz + vec3(0.0, 0.0, 0.01 * float(r));\n" \
+  "    acc += " call ";\n" \
+  "  }\n" \
+  "  out_float(0, acc);\n" \
   "}\n"
 
 struct kcase {

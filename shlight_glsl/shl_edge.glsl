@@ -553,12 +553,8 @@ shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real
   if (!(h > 0.0)) {
     return 0.0;
   }
-  /* one loop over the panels of every level and one call of the 5-node rule (GLSL inlines
-     each call site: one copy instead of four per half-arc). Level l has np = 2^l panels of
-     width h: k = 0 .. np - 2 the panels 1 .. np - 1; the one at s0 (theta = pi/2, where h
-     has the branch point |cos|^(e+1) for non-integer e) cut geometrically toward s0: l
-     panels of ratio 0.15 (k = np - 1 .. np + l - 2), then the rest (k = np + l - 1). Level 0
-     is the single panel [s0, s1]. */
+  /* one loop over the panels of every level, one call of the 5-node rule.
+     (docs/derivations.md sec. 13.25) */
   while (l <= lev) {
     if (k < np - 1) {
       pm = s0 + (SHLIGHT_ITOR(k + 1) + 0.5) * h;

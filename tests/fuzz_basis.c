@@ -57,9 +57,9 @@ static void fuzz_fail(const char *what, int n, const float d[3]) {
   if (!fuzz_basis_soft_fail) abort();
   fuzz_basis_failures++;
 }
-#define FUZZ_CHECK(cond, what)                                                                     \
-  do {                                                                                             \
-    if (!(cond)) fuzz_fail(what, n, d);                                                            \
+#define FUZZ_CHECK(cond, what) \
+  do { \
+    if (!(cond)) fuzz_fail(what, n, d); \
   } while (0)
 
 static float *alloc_f(size_t count) {

@@ -44,9 +44,9 @@ static void fuzz_fail(const char *what, size_t size) {
   if (!fuzz_basis_soft_fail) abort();
   fuzz_basis_failures++;
 }
-#define FUZZ_CHECK(cond, what)                                                                     \
-  do {                                                                                             \
-    if (!(cond)) fuzz_fail(what, size);                                                            \
+#define FUZZ_CHECK(cond, what) \
+  do { \
+    if (!(cond)) fuzz_fail(what, size); \
   } while (0)
 
 static const float dirs[5][3] = {{0.0f, 0.0f, 1.0f},

@@ -120,9 +120,9 @@ static void ff_fail(int id, const char *what) {
   fuzz_basis_failures++;
   if (!fuzz_basis_soft_fail) abort();
 }
-#define FF_CHECK(id, cond, what)                                                                   \
-  do {                                                                                             \
-    if (!(cond)) ff_fail(FF_##id, what);                                                           \
+#define FF_CHECK(id, cond, what) \
+  do { \
+    if (!(cond)) ff_fail(FF_##id, what); \
   } while (0)
 
 /* output buffers: count floats + 4 canaries */

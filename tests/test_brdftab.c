@@ -741,8 +741,8 @@ static void test_shlt_file(void) {
   TL_CHECK(shl_brdf_table_read(f, len, back, cnt + 1, &r) == SHLIGHT_OK && r.data == back &&
                memcmp(back, d, cnt * sizeof(float)) == 0,
            "round trip bit exact");
-#define EXPECT(buf, l, code, what)                                                                 \
-  TL_CHECK(shl_brdf_table_read(buf, l, back, cnt, &r) == code, "%s: got %d, want %d", what,        \
+#define EXPECT(buf, l, code, what) \
+  TL_CHECK(shl_brdf_table_read(buf, l, back, cnt, &r) == code, "%s: got %d, want %d", what, \
            (int)shl_brdf_table_read(buf, l, back, cnt, &r), (int)code)
   EXPECT(f, 0, SHLIGHT_ELENGTH, "empty");
   EXPECT(f, 7, SHLIGHT_ELENGTH, "cut before the version");
@@ -853,8 +853,8 @@ static void test_merl_errors(void) {
   shl_merl m;
   double v;
   int k;
-#define EXPECT(buf, l, code, what)                                                                 \
-  TL_CHECK(shl_merl_read(buf, l, st, 3 * per, &m) == code, "%s: got %d, want %d", what,            \
+#define EXPECT(buf, l, code, what) \
+  TL_CHECK(shl_merl_read(buf, l, st, 3 * per, &m) == code, "%s: got %d, want %d", what, \
            (int)shl_merl_read(buf, l, st, 3 * per, &m), (int)code)
   EXPECT(f, len, SHLIGHT_OK, "valid");
   TL_CHECK(m.n_theta_h == 2 && m.n_theta_d == 3 && m.n_phi_d == 4 && m.data == st, "dims");

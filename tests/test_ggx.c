@@ -452,11 +452,11 @@ static void test_transcendentals(void) {
    1.0: 2.2e-2 / 9.9e-3 (24 quads each; the bench's 250 give the figures of the docs); hard
    cases (max err/albedo): straddling 9.3e-3, grazing 4.0e-2, large 6.7e-2, sliver 7.0e-4;
    9..64 vertices 9.6e-4 */
-#define FAST_MED                                                                                   \
+#define FAST_MED \
   { 4.5e-4, 1.5e-2, 1.2e-2, 7.7e-3, 2.9e-2, 3.6e-2, 3.3e-2 }
-#define FAST_MAX                                                                                   \
+#define FAST_MAX \
   { 2e-3, 8.4e-2, 1.3e-2, 1.5e-2, 6e-2, 3.9e-2, 1.5e-2 }
-#define FAST_HARD                                                                                  \
+#define FAST_HARD \
   { 1.4e-2, 6e-2, 1e-1, 1.05e-3 }
 #define FAST_MANY 1.4e-3
 /* ---- shl_polygon_ggx_fast (the table-free linearly transformed cosine) against the same long

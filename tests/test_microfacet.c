@@ -345,8 +345,8 @@ static void test_degenerate(void) {
   qn[2][1] = NAN;
   for (kind = 0; kind < 2; ++kind) {
     float par = kind == 0 ? 50.0f : 0.3f;
-#define MF(P, NV, N, V, X, K)                                                                      \
-  (kind == 0 ? shl_polygon_blinn_phong((const float(*)[3])(P), NV, N, V, X, K)                     \
+#define MF(P, NV, N, V, X, K) \
+  (kind == 0 ? shl_polygon_blinn_phong((const float(*)[3])(P), NV, N, V, X, K) \
              : shl_polygon_beckmann_subedges((const float(*)[3])(P), NV, N, V, X, K))
     const char *nm = kind ? "Beckmann" : "Blinn-Phong";
     float ref = MF(q, 4, z, v, par, 4);

@@ -553,13 +553,13 @@ static void test_bad_input(void) {
   const float nan = (float)NAN, inf = (float)INFINITY, zero[3] = {0, 0, 0};
   float v[3];
   int k, same;
-#define UNTOUCHED(call, what)                                                                      \
-  do {                                                                                             \
-    for (k = 0; k < 64 * 64; ++k)                                                                  \
-      sh[k] = pre[k] = (float)k;                                                                   \
-    call;                                                                                          \
-    same = memcmp(sh, pre, sizeof(float) * 64 * 64) == 0;                                          \
-    TL_CHECK(same, "%s changed io_sh", what);                                                      \
+#define UNTOUCHED(call, what) \
+  do { \
+    for (k = 0; k < 64 * 64; ++k) \
+      sh[k] = pre[k] = (float)k; \
+    call; \
+    same = memcmp(sh, pre, sizeof(float) * 64 * 64) == 0; \
+    TL_CHECK(same, "%s changed io_sh", what); \
   } while (0)
   UNTOUCHED(shl_ssf_vpl_sh(5, x, nx, x, ny, 1.0f, 0.0f, sh), "x == y");
   UNTOUCHED(shl_ssf_vpl_sh(5, x, nx, x, ny, 1.0f, 0.5f, sh), "x == y with a clamp");

@@ -51,6 +51,18 @@ def lit_fr(v):
     return lit_f(v) if f32(float(lit_f(v)[:-1])) == f32(v) else lit_f(f32(v))
 
 
+def lit_frs(v):
+    """the shortest float literal of the float that lit_fr(v) gives (C-only code)"""
+    f = f32(float(lit_fr(v)[:-1]))
+    for p in range(1, 10):
+        s = '%.*g' % (p, f)
+        if f32(float(s)) == f:
+            break
+    if 'e' not in s and '.' not in s:
+        s += '.0'
+    return s + 'f'
+
+
 def lit_f(v):
     s = '%.9g' % float(v)
     if 'e' in s:
@@ -424,6 +436,13 @@ def gen_grad_any(nmax):
     band, computing the same coefficients, which shader compilers unroll and fold."""
     L = []
     w = L.append
+    w('/* output i of shli_sh_grad_lines from its terms in band l-1 (a: x, b: y, c: z) */')
+    w('#define SHLI_G3(i, a, b, c)                                                                      \\')
+    w('  q = lr * y[i];                                                                             \\')
+    w('  SHLIGHT_SET3(out_grad[i], (a - q * nx) * ib, (b - q * ny) * ib, (c - q * nz) * ib)')
+    w('#define SHLI_G2(i, a, b)                                                                         \\')
+    w('  q = lr * y[i];                                                                             \\')
+    w('  SHLIGHT_SET3(out_grad[i], (a - q * nx) * ib, (b - q * ny) * ib, -q * nz * ib)')
     w('SHLIGHT_CPU_INLINE void shli_sh_grad_lines(int n, const float *y, float nx, float ny, float nz,')
     w('                                           float ir, float ib, float (*out_grad)[3]) {')
     w('  float r[%d];' % (2 * nmax - 3))
@@ -447,15 +466,22 @@ def gen_grad_any(nmax):
             w('    r[%d] = y[%d] * ir;' % (k, p0 + k))
         for m in range(-l, l + 1):
             i = idx(l, m)
-            w('    q = lr * y[%d];' % i)
-            ex = []
-            for g, nk in zip(grad_terms(l, m), ('nx', 'ny', 'nz')):
-                expr = ' + '.join('%s * r[%d]' % (lit_fr(cf), j - p0) for cf, j in g)
-                ex.append(('(%s - q * %s) * ib' % (expr, nk)) if expr else ('-q * %s * ib' % nk))
-            w('    SHLIGHT_SET3(out_grad[%d], %s, %s, %s);' % (i, ex[0], ex[1], ex[2]))
+            terms = [' + '.join('%s * r[%d]' % (lit_frs(cf), j - p0) for cf, j in g)
+                     for g in grad_terms(l, m)]
+            if all(terms):
+                w('    SHLI_G3(%d, %s, %s, %s);' % (i, terms[0], terms[1], terms[2]))
+            elif terms[0] and terms[1]:
+                w('    SHLI_G2(%d, %s, %s);' % (i, terms[0], terms[1]))
+            else:
+                ex = [('(%s - q * %s) * ib' % (e, nk)) if e else ('-q * %s * ib' % nk)
+                      for e, nk in zip(terms, ('nx', 'ny', 'nz'))]
+                w('    q = lr * y[%d];' % i)
+                w('    SHLIGHT_SET3(out_grad[%d], %s, %s, %s);' % (i, ex[0], ex[1], ex[2]))
         w('  }')
         w('#endif')
     w('}')
+    w('#undef SHLI_G3')
+    w('#undef SHLI_G2')
     w('')
     w(GRAD_BAND)
     w('')

@@ -13,11 +13,11 @@ static void (*close_fn)(void);
 
 static int load(glctx_proc (*getproc)(const char *)) {
   int missing = 0;
-#define GLCTX_LOAD_ONE(type, name)                                                                 \
-  gl.name = (type)getproc("gl" #name);                                                             \
-  if (!gl.name) {                                                                                  \
-    fprintf(stderr, "glctx: no entry point gl" #name "\n");                                        \
-    missing++;                                                                                     \
+#define GLCTX_LOAD_ONE(type, name) \
+  gl.name = (type)getproc("gl" #name); \
+  if (!gl.name) { \
+    fprintf(stderr, "glctx: no entry point gl" #name "\n"); \
+    missing++; \
   }
   GLCTX_FUNCS(GLCTX_LOAD_ONE)
 #undef GLCTX_LOAD_ONE
