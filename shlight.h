@@ -2789,7 +2789,9 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
 #endif
 #endif
 #if SHLIGHT_ROTATE_FAST
-#if defined(__SSE2__)
+#if defined(__AVX2__)
+#include <immintrin.h>
+#elif defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 #define SHLI_ROT_FAST_BANDS 8
@@ -2918,12 +2920,12 @@ typedef __INT64_TYPE__ shli_rot_i4 __attribute__((vector_size(32)));
 #define SHLI_ROT_LD(v, p) memcpy(&(v), (p), sizeof(v))
 
 /* X(+90) for output group g of band l (a literal): from the z-rotated groups w0..w3 (A, C, D,
-   B) into out (named variables, not arrays, which GCC keeps in registers) */
+   B; stored in wm) into out (named variables, not arrays, which GCC keeps in registers) */
 #define SHLI_ROT_X(l, g, out)                                                                      \
   do {                                                                                             \
     int src_ = SHLI_ROT_SRC(l, g);                                                                 \
     int k_;                                                                                        \
-    shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3));                   \
+    const double *ws_ = wm + 4 * src_;                                                             \
     shli_rot_v4 c_;                                                                                \
     SHLI_ROT_LD(c_, t + 16 * (g) + SHLI_ROT_K0(src_) * 4);                                         \
     out = c_ * ws_[SHLI_ROT_K0(src_)];                                                             \
@@ -2943,6 +2945,29 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
                                                      float *out_sh) {
   const double *t = SHLI_ROT_X90 + 64 * (l - 3);
   int b = l * l + l;
+#if defined(__AVX2__)
+  /* the band's floats from two 8-float windows inside it (one at l = 3, 7 floats): m >= 0 from
+     fp, m < 0 from fn; lanes past l take any in-window value (their results are never stored) */
+  int po = l == 3 ? 4 : 7 - l;
+  int no = l == 3 ? 4 : l;
+  __m256 fp = _mm256_loadu_ps(sh + b - po);
+  __m256 fn = _mm256_loadu_ps(sh + b - no);
+#define SHLI_ROT_PI(m) ((m) <= l ? (m) + po : po)
+#define SHLI_ROT_NI(m) ((m) <= l ? no - (m) : no - 1)
+  __m256 fac = _mm256_permutevar8x32_ps(
+      fp, _mm256_setr_epi32(SHLI_ROT_PI(0), SHLI_ROT_PI(2), SHLI_ROT_PI(4), SHLI_ROT_PI(6),
+                            SHLI_ROT_PI(1), SHLI_ROT_PI(3), SHLI_ROT_PI(5), SHLI_ROT_PI(7)));
+  __m256 fdb = _mm256_permutevar8x32_ps(
+      fn, _mm256_setr_epi32(SHLI_ROT_NI(1), SHLI_ROT_NI(2), SHLI_ROT_NI(4), SHLI_ROT_NI(6),
+                            SHLI_ROT_NI(1), SHLI_ROT_NI(3), SHLI_ROT_NI(5), SHLI_ROT_NI(7)));
+#undef SHLI_ROT_PI
+#undef SHLI_ROT_NI
+  shli_rot_v4 v0 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_castps256_ps128(fac));
+  shli_rot_v4 v1 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_extractf128_ps(fac, 1));
+  shli_rot_v4 v2 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_castps256_ps128(fdb));
+  shli_rot_v4 v3 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_extractf128_ps(fdb, 1));
+  v2[0] = 0.0;
+#else
   shli_rot_v4 v0 = {(double)sh[b], (double)sh[b + 2], l >= 4 ? (double)sh[b + 4] : 0.0,
                     l >= 6 ? (double)sh[b + 6] : 0.0};
   shli_rot_v4 v1 = {(double)sh[b + 1], (double)sh[b + 3], l >= 5 ? (double)sh[b + 5] : 0.0,
@@ -2951,10 +2976,12 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
                     l >= 6 ? (double)sh[b - 6] : 0.0};
   shli_rot_v4 v3 = {(double)sh[b - 1], (double)sh[b - 3], l >= 5 ? (double)sh[b - 5] : 0.0,
                     l >= 7 ? (double)sh[b - 7] : 0.0};
+#endif
   shli_rot_v4 w0;
   shli_rot_v4 w1;
   shli_rot_v4 w2;
   shli_rot_v4 w3;
+  double wm[16];
   int i;
   int q;
   SHLI_ROT_UNROLL
@@ -2967,6 +2994,14 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
     if (q == 2) {
       break;
     }
+    /* X(+90) broadcasts each lane of w0..w3: from memory (load ports) rather than lane permutes
+       (the shuffle port was the bottleneck); the empty asm keeps the compiler from turning the
+       loads back into permutes */
+    memcpy(wm, &w0, 32);
+    memcpy(wm + 4, &w1, 32);
+    memcpy(wm + 8, &w2, 32);
+    memcpy(wm + 12, &w3, 32);
+    __asm__ volatile("" : : "r"(wm) : "memory");
     SHLI_ROT_X(l, 0, v0);
     SHLI_ROT_X(l, 1, v1);
     SHLI_ROT_X(l, 2, v2);
@@ -3026,8 +3061,6 @@ SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float *sh
     shli_rot_v4 o1i = zi * ur + zr * ui;
     shli_rot_v4 u2r;
     shli_rot_v4 u2i;
-    shli_rot_v4 u3r;
-    shli_rot_v4 u3i;
     shli_rot_v4 k[16];
     if (n == 4) {
       /* band 3 alone: lanes 0 and 1 (m <= 3); lanes 2 and 3 meet zero inputs and table entries */
@@ -3048,22 +3081,33 @@ SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float *sh
       shli_rot_band(3, tv, sh, out_sh);
       return;
     }
+    /* z^4 = u^2 and z^3 = z u (level 2), z^5, z^6, z^7 from them (level 3; n = 5 needs m <= 4) */
     u2r = ur * ur - ui * ui;
     u2i = (ur + ur) * ui;
-    u3r = u2r * ur - u2i * ui;
-    u3i = u2i * ur + u2r * ui;
     k[0] = one;
     k[1] = ur;
     k[2] = u2r;
-    k[3] = u3r;
     k[4] = one - one;
     k[5] = ui;
     k[6] = u2i;
-    k[7] = u3i;
-    SHLI_ROT_UNROLL
-    for (q = 0; q < 4; ++q) {
-      k[8 + q] = zr * k[q] - zi * k[4 + q];
-      k[12 + q] = zi * k[q] + zr * k[4 + q];
+    k[8] = zr;
+    k[9] = o1r;
+    k[12] = zi;
+    k[13] = o1i;
+    if (n == 5) {
+      k[3] = k[4];
+      k[7] = k[4];
+      k[10] = k[4];
+      k[11] = k[4];
+      k[14] = k[4];
+      k[15] = k[4];
+    } else {
+      k[3] = ur * u2r - ui * u2i;
+      k[7] = ui * u2r + ur * u2i;
+      k[10] = ur * o1r - ui * o1i;
+      k[14] = ui * o1r + ur * o1i;
+      k[11] = o1r * u2r - o1i * u2i;
+      k[15] = o1i * u2r + o1r * u2i;
     }
     /* 4 x 4 transposes: row j of kind g (lanes q) to tv[4 q + g] (lanes j) */
     SHLI_ROT_UNROLL
@@ -3200,8 +3244,10 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
   if (s2 > 0.0 && hg > 0.0) {
     double fg;
 #if defined(__SSE2__)
-    /* one instruction for both, no errno branch (its call would spill every live value) */
-    __m128d v = _mm_div_pd(_mm_set1_pd(1.0), _mm_sqrt_pd(_mm_set_pd(hg, s2)));
+    /* one instruction for both, no errno branch (its call would spill every live value); 1 /
+       sqrt(x) = sqrt(x) (1 / x): the square root and the division run side by side */
+    __m128d x = _mm_set_pd(hg, s2);
+    __m128d v = _mm_mul_pd(_mm_sqrt_pd(x), _mm_div_pd(_mm_set1_pd(1.0), x));
     f = _mm_cvtsd_f64(v);
     fg = _mm_cvtsd_f64(_mm_unpackhi_pd(v, v));
 #else
