@@ -3023,8 +3023,9 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
 }
 
 /* R is a rotation to within SHLI_ROT_ORTH: the root sum of squares of |r0|^2 - 1, |r1|^2 - 1,
-   r0 . r1 and r0 x r1 - r2 (rows r_i) is at most that; NaN fails */
-SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
+   r0 . r1 and r0 x r1 - r2 (rows r_i; x0, x1: its first two entries, up to sign) is at most
+   that; NaN fails */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near2(const float R[9], double x0, double x1) {
   double r00 = (double)R[0];
   double r01 = (double)R[1];
   double r02 = (double)R[2];
@@ -3034,18 +3035,22 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   double e0 = r00 * r00 + (r01 * r01 + (r02 * r02 - 1.0));
   double e1 = r10 * r10 + (r11 * r11 + (r12 * r12 - 1.0));
   double e2 = r00 * r10 + (r01 * r11 + r02 * r12);
-  double x0 = r01 * r12 - (r02 * r11 + (double)R[6]);
-  double x1 = r02 * r10 - (r00 * r12 + (double)R[7]);
   double x2 = r00 * r11 - (r01 * r10 + (double)R[8]);
   double s2 = e0 * e0 + e1 * e1 + e2 * e2 + x0 * x0 + x1 * x1 + x2 * x2;
   return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
 }
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
+  double r02 = (double)R[2];
+  double r12 = (double)R[5];
+  return shli_rot_near2(R, (double)R[1] * r12 - (r02 * (double)R[4] + (double)R[6]),
+                        r02 * (double)R[3] - ((double)R[0] * r12 + (double)R[7]));
+}
 
 /* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of the rotation Rz(alpha) Ry(beta)
    Rz(gamma), given the cosines and sines of alpha, beta, gamma */
-SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float *sh, float *out_sh,
-                                                          double ca, double sa, double cb,
-                                                          double sb, double cg, double sg) {
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, float *out_sh,
+                                                     double ca, double sa, double cb, double sb,
+                                                     double cg, double sg) {
   shli_rot_v4 tv[12];
   int q;
   /* z_q = cos + i sin of gamma, beta + pi, alpha + pi (q = 0, 1, 2: the lanes of z); tv[4 q ..
@@ -3081,7 +3086,8 @@ SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float *sh
       shli_rot_band(3, tv, sh, out_sh);
       return;
     }
-    /* z^4 = u^2 and z^3 = z u (level 2), z^5, z^6, z^7 from them (level 3; n = 5 needs m <= 4) */
+    /* z^4 = u^2 and z^3 = z u (level 2), z^5 = u z^3, z^6 = u z^4, z^7 = z^3 z^4 (level 3), the
+       powers above n - 1 left zero */
     u2r = ur * ur - ui * ui;
     u2i = (ur + ur) * ui;
     k[0] = one;
@@ -3094,18 +3100,21 @@ SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float *sh
     k[9] = o1r;
     k[12] = zi;
     k[13] = o1i;
-    if (n == 5) {
-      k[3] = k[4];
-      k[7] = k[4];
-      k[10] = k[4];
-      k[11] = k[4];
-      k[14] = k[4];
-      k[15] = k[4];
-    } else {
-      k[3] = ur * u2r - ui * u2i;
-      k[7] = ui * u2r + ur * u2i;
+    k[3] = k[4];
+    k[7] = k[4];
+    k[10] = k[4];
+    k[11] = k[4];
+    k[14] = k[4];
+    k[15] = k[4];
+    if (n > 5) {
       k[10] = ur * o1r - ui * o1i;
       k[14] = ui * o1r + ur * o1i;
+    }
+    if (n > 6) {
+      k[3] = ur * u2r - ui * u2i;
+      k[7] = ui * u2r + ur * u2i;
+    }
+    if (n > 7) {
       k[11] = o1r * u2r - o1i * u2i;
       k[15] = o1i * u2r + o1r * u2i;
     }
@@ -3135,6 +3144,17 @@ SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float *sh
   if (n > 7) {
     shli_rot_band(7, tv, sh, out_sh);
   }
+}
+/* n = 4 (band 3) and n = 5..8: one function each */
+SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_b3(const float *sh, float *out_sh, double ca,
+                                                        double sa, double cb, double sb, double cg,
+                                                        double sg) {
+  shli_rot_high(4, sh, out_sh, ca, sa, cb, sb, cg, sg);
+}
+SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float *sh, float *out_sh,
+                                                          double ca, double sa, double cb,
+                                                          double sb, double cg, double sg) {
+  shli_rot_high(n < 5 ? 5 : n, sh, out_sh, ca, sa, cb, sb, cg, sg);
 }
 
 /* the portable kernel, out of line: its 7 KB frame is set up only where it runs */
@@ -3230,15 +3250,16 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
   double hg;
   double fb;
   double f;
-  if (!shli_rot_near(R)) {
+  /* the zyz angles of bands 3.. (docs/rotation.md, method 1), before bands 1 and 2; cg, sg
+     are entries of r1 x r0, shared with the rotation test */
+  cg = r11 * r02 - r01 * r12;
+  sg = r10 * r02 - r00 * r12;
+  if (!shli_rot_near2(R, cg + (double)R[6], sg - (double)R[7])) {
     shli_sh_rotate_slow(n, R, sh, out_sh);
     return;
   }
-  /* the zyz angles of bands 3.. (docs/rotation.md, method 1), before bands 1 and 2 */
   s2 = r02 * r02 + r12 * r12;
   fb = 1.5 - 0.5 * (r22 * r22 + s2);
-  cg = r11 * r02 - r01 * r12;
-  sg = r10 * r02 - r00 * r12;
   hg = cg * cg + sg * sg;
   cb = r22 * fb;
   if (s2 > 0.0 && hg > 0.0) {
@@ -3265,7 +3286,11 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
     sg = r10 * f;
   }
   shli_rot_b012(n, R, sh, out_sh);
-  shli_sh_rotate_high(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
+  if (n == 4) {
+    shli_sh_rotate_b3(sh, out_sh, ca, sa, cb, sb, cg, sg);
+  } else {
+    shli_sh_rotate_high(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
+  }
 }
 
 /* n in 1..SHLIGHT_MAX_BANDS */
