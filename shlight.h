@@ -2964,9 +2964,9 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
 #undef SHLI_ROT_NI
   shli_rot_v4 v0 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_castps256_ps128(fac));
   shli_rot_v4 v1 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_extractf128_ps(fac, 1));
-  shli_rot_v4 v2 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_castps256_ps128(fdb));
+  shli_rot_v4 v2 = (shli_rot_v4)_mm256_cvtps_pd(
+      _mm256_castps256_ps128(_mm256_blend_ps(fdb, _mm256_setzero_ps(), 1)));
   shli_rot_v4 v3 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_extractf128_ps(fdb, 1));
-  v2[0] = 0.0;
 #else
   shli_rot_v4 v0 = {(double)sh[b], (double)sh[b + 2], l >= 4 ? (double)sh[b + 4] : 0.0,
                     l >= 6 ? (double)sh[b + 6] : 0.0};
@@ -3145,17 +3145,17 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
     shli_rot_band(7, tv, sh, out_sh);
   }
 }
-/* n = 4 (band 3) and n = 5..8: one function each */
-SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_b3(const float *sh, float *out_sh, double ca,
-                                                        double sa, double cb, double sb, double cg,
-                                                        double sg) {
-  shli_rot_high(4, sh, out_sh, ca, sa, cb, sb, cg, sg);
-}
-SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float *sh, float *out_sh,
-                                                          double ca, double sa, double cb,
-                                                          double sb, double cg, double sg) {
-  shli_rot_high(n < 5 ? 5 : n, sh, out_sh, ca, sa, cb, sb, cg, sg);
-}
+/* n = 4, 5, 6 and 7..8: one function each */
+#define SHLI_ROT_HIGH_N(name, nn)                                                                  \
+  SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void name(int n, const float *sh, float *out_sh, double ca,     \
+                                             double sa, double cb, double sb, double cg,           \
+                                             double sg) {                                          \
+    shli_rot_high(nn, sh, out_sh, ca, sa, cb, sb, cg, sg);                                         \
+  }
+SHLI_ROT_HIGH_N(shli_sh_rotate_h4, ((void)n, 4))
+SHLI_ROT_HIGH_N(shli_sh_rotate_h5, ((void)n, 5))
+SHLI_ROT_HIGH_N(shli_sh_rotate_h6, ((void)n, 6))
+SHLI_ROT_HIGH_N(shli_sh_rotate_h8, (n < 7 ? 7 : n))
 
 /* the portable kernel, out of line: its 7 KB frame is set up only where it runs */
 SHLIGHT_INLINE void shli_sh_rotate_any(int n, const float R[9], const float *sh, float *out_sh);
@@ -3285,11 +3285,19 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
     cg = r11 * f;
     sg = r10 * f;
   }
-  shli_rot_b012(n, R, sh, out_sh);
-  if (n == 4) {
-    shli_sh_rotate_b3(sh, out_sh, ca, sa, cb, sb, cg, sg);
-  } else {
-    shli_sh_rotate_high(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
+  shli_rot_b012(3, R, sh, out_sh);
+  switch (n) {
+  case 4:
+    shli_sh_rotate_h4(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
+    break;
+  case 5:
+    shli_sh_rotate_h5(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
+    break;
+  case 6:
+    shli_sh_rotate_h6(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
+    break;
+  default:
+    shli_sh_rotate_h8(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
   }
 }
 
