@@ -3023,8 +3023,8 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
 }
 
 /* R is a rotation to within SHLI_ROT_ORTH: the root sum of squares of |r0|^2 - 1, |r1|^2 - 1,
-   r0 . r1 and r0 x r1 - r2 (rows r_i; x0, x1: its first two entries, up to sign) is at most
-   that; NaN fails */
+   r0 . r1 and r0 x r1 - r2 (rows r_i) is at most that; NaN fails. shli_rot_near2: with the
+   first two entries of r0 x r1 - r2 (up to sign) given */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near2(const float R[9], double x0, double x1) {
   double r00 = (double)R[0];
   double r01 = (double)R[1];
@@ -3040,10 +3040,20 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near2(const float R[9], double x0
   return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
 }
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
+  double r00 = (double)R[0];
+  double r01 = (double)R[1];
   double r02 = (double)R[2];
+  double r10 = (double)R[3];
+  double r11 = (double)R[4];
   double r12 = (double)R[5];
-  return shli_rot_near2(R, (double)R[1] * r12 - (r02 * (double)R[4] + (double)R[6]),
-                        r02 * (double)R[3] - ((double)R[0] * r12 + (double)R[7]));
+  double e0 = r00 * r00 + (r01 * r01 + (r02 * r02 - 1.0));
+  double e1 = r10 * r10 + (r11 * r11 + (r12 * r12 - 1.0));
+  double e2 = r00 * r10 + (r01 * r11 + r02 * r12);
+  double x0 = r01 * r12 - (r02 * r11 + (double)R[6]);
+  double x1 = r02 * r10 - (r00 * r12 + (double)R[7]);
+  double x2 = r00 * r11 - (r01 * r10 + (double)R[8]);
+  double s2 = e0 * e0 + e1 * e1 + e2 * e2 + x0 * x0 + x1 * x1 + x2 * x2;
+  return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
 }
 
 /* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of the rotation Rz(alpha) Ry(beta)
