@@ -3162,7 +3162,87 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
                                              double sg) {                                          \
     shli_rot_high(nn, sh, out_sh, ca, sa, cb, sb, cg, sg);                                         \
   }
+#if defined(__AVX2__)
+/* n = 4 (band 3): two groups per vector, P = (A0, B0, A1, B1) (m = 0, -1, 2, -3) and Q = (C0, D0,
+   C1, D1) (m = 1, -, 3, -2): a z rotation is P Cv + (Q, halves' lanes swapped) Sv and Q Cv' -
+   (P swapped) Sv' with Cv = cos m t for m = 0..3 in lanes, Sv = (-sin 0, sin t, -sin 2t, sin 3t),
+   ' their lanes swapped in pairs; X(+90) sends A to B, B to A, C to C, D to D, so it takes
+   each half of P and Q broadcast times one of the columns below (U0, U1 for P, V0, V1 for Q);
+   it leaves P as (B0, A0, B1, A1), where the next z rotation takes Q and P unswapped, and the
+   next X(+90) (columns -U0, -U1) puts P back in order */
+static const shli_rot_v4 SHLI_ROT_X3P[4] = {
+    {-0.61237243569579447, 0.61237243569579447, -0.79056941504209488, 0.79056941504209488},
+    {-0.79056941504209488, 0.79056941504209488, 0.61237243569579447, -0.61237243569579447},
+    {-0.25, 0.0, -0.96824583655185426, 0.0},
+    {-0.96824583655185426, 0.0, 0.25, -1.0}};
+#define SHLI_ROT_SW(v) SHLI_ROT_SHUF(v, v, 1, 0, 3, 2)
+#define SHLI_ROT_LO(v) SHLI_ROT_SHUF(v, v, 0, 1, 0, 1)
+#define SHLI_ROT_HI(v) SHLI_ROT_SHUF(v, v, 2, 3, 2, 3)
+SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_h4(int n, const float *sh, float *out_sh,
+                                                        double ca, double sa, double cb, double sb,
+                                                        double cg, double sg) {
+  shli_rot_v4 zr = {cg, -cb, -ca, -ca}; /* lane 3: not used */
+  shli_rot_v4 zi = {sg, -sb, -sa, -sa};
+  shli_rot_v4 one = {1.0, 1.0, 1.0, 1.0};
+  shli_rot_v4 ur = zr * zr - zi * zi;
+  shli_rot_v4 ui = (zr + zr) * zi;
+  shli_rot_v4 o1r = zr * ur - zi * ui;
+  shli_rot_v4 o1i = zi * ur + zr * ui;
+  shli_rot_v4 c[3];
+  shli_rot_v4 s[3];
+  const shli_rot_v4 *u = SHLI_ROT_X3P;
+  shli_rot_v4 p;
+  shli_rot_v4 q;
+  shli_rot_v4 p1;
+  shli_rot_v4 q1;
+  __m256 f = _mm256_loadu_ps(sh + 8);
+  (void)n;
+  /* 4 x 4 transposes: lanes q (gamma, beta + pi, alpha + pi) to lanes m */
+  {
+    shli_rot_v4 ni = (one - one) - ui;
+    shli_rot_v4 t0 = SHLI_ROT_SHUF(one, zr, 0, 4, 2, 6);
+    shli_rot_v4 t1 = SHLI_ROT_SHUF(one, zr, 1, 5, 3, 7);
+    shli_rot_v4 t2 = SHLI_ROT_SHUF(ur, o1r, 0, 4, 2, 6);
+    shli_rot_v4 t3 = SHLI_ROT_SHUF(ur, o1r, 1, 5, 3, 7);
+    shli_rot_v4 h0 = SHLI_ROT_SHUF(one - one, zi, 0, 4, 2, 6);
+    shli_rot_v4 h1 = SHLI_ROT_SHUF(one - one, zi, 1, 5, 3, 7);
+    shli_rot_v4 h2 = SHLI_ROT_SHUF(ni, o1i, 0, 4, 2, 6);
+    shli_rot_v4 h3 = SHLI_ROT_SHUF(ni, o1i, 1, 5, 3, 7);
+    c[0] = SHLI_ROT_SHUF(t0, t2, 0, 1, 4, 5);
+    c[1] = SHLI_ROT_SHUF(t1, t3, 0, 1, 4, 5);
+    c[2] = SHLI_ROT_SHUF(t0, t2, 2, 3, 6, 7);
+    s[0] = SHLI_ROT_SHUF(h0, h2, 0, 1, 4, 5);
+    s[1] = SHLI_ROT_SHUF(h1, h3, 0, 1, 4, 5);
+    s[2] = SHLI_ROT_SHUF(h0, h2, 2, 3, 6, 7);
+  }
+  /* P and Q from sh[8 .. 15] (band 3 and sh[8]), D0 zero */
+  f = _mm256_permutevar8x32_ps(f, _mm256_setr_epi32(4, 3, 6, 1, 5, 0, 7, 2));
+  f = _mm256_blend_ps(f, _mm256_setzero_ps(), 0x20);
+  p = (shli_rot_v4)_mm256_cvtps_pd(_mm256_castps256_ps128(f));
+  q = (shli_rot_v4)_mm256_cvtps_pd(_mm256_extractf128_ps(f, 1));
+  p1 = p * c[0] + SHLI_ROT_SW(q) * s[0];
+  q1 = q * SHLI_ROT_SW(c[0]) - SHLI_ROT_SW(p) * SHLI_ROT_SW(s[0]);
+  p = SHLI_ROT_LO(p1) * u[0] + SHLI_ROT_HI(p1) * u[1];
+  q = SHLI_ROT_LO(q1) * u[2] + SHLI_ROT_HI(q1) * u[3];
+  p1 = p * SHLI_ROT_SW(c[1]) + q * SHLI_ROT_SW(s[1]);
+  q1 = q * SHLI_ROT_SW(c[1]) - p * SHLI_ROT_SW(s[1]);
+  p = -(SHLI_ROT_LO(p1) * u[0]) - SHLI_ROT_HI(p1) * u[1];
+  q = SHLI_ROT_LO(q1) * u[2] + SHLI_ROT_HI(q1) * u[3];
+  p1 = p * c[2] + SHLI_ROT_SW(q) * s[2];
+  q1 = q * SHLI_ROT_SW(c[2]) - SHLI_ROT_SW(p) * SHLI_ROT_SW(s[2]);
+  /* (P, Q) to m = -3..3 at out_sh[9 .. 15], out_sh[8] (band 2) kept */
+  f = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm256_cvtpd_ps((__m256d)p1)),
+                           _mm256_cvtpd_ps((__m256d)q1), 1);
+  f = _mm256_permutevar8x32_ps(f, _mm256_setr_epi32(0, 3, 7, 1, 0, 4, 2, 6));
+  f = _mm256_blend_ps(f, _mm256_broadcast_ss(out_sh + 8), 1);
+  _mm256_storeu_ps(out_sh + 8, f);
+}
+#undef SHLI_ROT_SW
+#undef SHLI_ROT_LO
+#undef SHLI_ROT_HI
+#else
 SHLI_ROT_HIGH_N(shli_sh_rotate_h4, ((void)n, 4))
+#endif
 SHLI_ROT_HIGH_N(shli_sh_rotate_h5, ((void)n, 5))
 SHLI_ROT_HIGH_N(shli_sh_rotate_h6, ((void)n, 6))
 SHLI_ROT_HIGH_N(shli_sh_rotate_h8, (n < 7 ? 7 : n))
