@@ -3140,17 +3140,22 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
       tv[8 + q] = SHLI_ROT_SHUF(t0, t2, 2, 3, 6, 7);
     }
   }
-  /* literal band numbers: see shli_rot_band */
+  /* literal band numbers: see shli_rot_band; at n = 5, 6 the longest chain first (n = 5: 10
+     instructions fewer with gcc; n = 7, 8: 3 % slower) */
+  if (n <= 6) {
+    if (n > 5) {
+      shli_rot_band(5, tv, sh, out_sh);
+    }
+    if (n > 4) {
+      shli_rot_band(4, tv, sh, out_sh);
+    }
+    shli_rot_band(3, tv, sh, out_sh);
+    return;
+  }
   shli_rot_band(3, tv, sh, out_sh);
-  if (n > 4) {
-    shli_rot_band(4, tv, sh, out_sh);
-  }
-  if (n > 5) {
-    shli_rot_band(5, tv, sh, out_sh);
-  }
-  if (n > 6) {
-    shli_rot_band(6, tv, sh, out_sh);
-  }
+  shli_rot_band(4, tv, sh, out_sh);
+  shli_rot_band(5, tv, sh, out_sh);
+  shli_rot_band(6, tv, sh, out_sh);
   if (n > 7) {
     shli_rot_band(7, tv, sh, out_sh);
   }
