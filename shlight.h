@@ -255,12 +255,12 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    8 path 1.3e-7 on float-rounded rotations, 6e-7 on rotations moved by 3 ulps per entry;
    band energy kept to 1.4e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16
    (llvmpipe).
-   Cost: n <= 8 (C, GCC / Clang): 77 / 145 / 356 / 651 / 934 instructions at n = 2 / 3 / 4 / 6
-   / 8 (gcc -O3 -march=x86-64-v3), 7.4 / 15.6 / 40 / 83 / 126 ns; DirectXMath's XMSHRotate
-   (n <= 6) 79 / 222 / 304 / 665 instructions, 4.4 / 18.4 / 30.5 / 68.7 ns. Otherwise about
-   n^3 / 3 steps of the two recurrences (one sqrt and one division each) and n^3 / 3 of the
-   row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc -O3 -march=native). Stack:
-   about 7.5 KB at SHLIGHT_MAX_BANDS = 64. */
+   Cost: n <= 8 (C, GCC / Clang): 77 / 145 / 303 / 450 / 583 / 881 instructions at n = 2 / 3 /
+   4 / 5 / 6 / 8 (gcc -O3 -march=x86-64-v3), 7.4 / 15.6 / 34 / 54 / 69 / 103 ns; DirectXMath's
+   XMSHRotate (n <= 6) 79 / 222 / 304 / 463 / 665 instructions, 4.5 / 18.3 / 30 / 45 / 66 ns
+   (docs/rotation.md). Otherwise about n^3 / 3 steps of the two recurrences (one sqrt and one
+   division each) and n^3 / 3 of the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc
+   -O3 -march=native). Stack: about 7.5 KB at SHLIGHT_MAX_BANDS = 64. */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh);
 
 /* ---- light --------------------------------------------------------------------------------- */
