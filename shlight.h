@@ -2919,13 +2919,20 @@ typedef __INT64_TYPE__ shli_rot_i4 __attribute__((vector_size(32)));
 #endif
 #define SHLI_ROT_LD(v, p) memcpy(&(v), (p), sizeof(v))
 
+/* AVX: X(+90)'s broadcasts from memory (wm), see shli_rot_band; SSE2 (two registers per vector):
+   from the registers */
+#if defined(__AVX__)
+#define SHLI_ROT_WS const double *ws_ = wm + 4 * src_
+#else
+#define SHLI_ROT_WS shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3))
+#endif
 /* X(+90) for output group g of band l (a literal): from the z-rotated groups w0..w3 (A, C, D,
    B; stored in wm) into out (named variables, not arrays, which GCC keeps in registers) */
 #define SHLI_ROT_X(l, g, out)                                                                      \
   do {                                                                                             \
     int src_ = SHLI_ROT_SRC(l, g);                                                                 \
     int k_;                                                                                        \
-    const double *ws_ = wm + 4 * src_;                                                             \
+    SHLI_ROT_WS;                                                                                   \
     shli_rot_v4 c_;                                                                                \
     SHLI_ROT_LD(c_, t + 16 * (g) + SHLI_ROT_K0(src_) * 4);                                         \
     out = c_ * ws_[SHLI_ROT_K0(src_)];                                                             \
@@ -2981,7 +2988,9 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
   shli_rot_v4 w1;
   shli_rot_v4 w2;
   shli_rot_v4 w3;
+#if defined(__AVX__)
   double wm[16];
+#endif
   int i;
   int q;
   SHLI_ROT_UNROLL
@@ -2997,11 +3006,13 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
     /* X(+90) broadcasts each lane of w0..w3: from memory (load ports) rather than lane permutes
        (the shuffle port was the bottleneck); the empty asm keeps the compiler from turning the
        loads back into permutes */
+#if defined(__AVX__)
     memcpy(wm, &w0, 32);
     memcpy(wm + 4, &w1, 32);
     memcpy(wm + 8, &w2, 32);
     memcpy(wm + 12, &w3, 32);
     __asm__ volatile("" : : "r"(wm) : "memory");
+#endif
     SHLI_ROT_X(l, 0, v0);
     SHLI_ROT_X(l, 1, v1);
     SHLI_ROT_X(l, 2, v2);
@@ -3077,25 +3088,6 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
     shli_rot_v4 u2r;
     shli_rot_v4 u2i;
     shli_rot_v4 k[16];
-    if (n == 4) {
-      /* band 3 alone: lanes 0 and 1 (m <= 3); lanes 2 and 3 meet zero inputs and table entries */
-      k[0] = SHLI_ROT_SHUF(one, ur, 0, 4, 2, 6);
-      k[1] = SHLI_ROT_SHUF(one - one, ui, 0, 4, 2, 6);
-      k[2] = SHLI_ROT_SHUF(zr, o1r, 0, 4, 2, 6);
-      k[3] = SHLI_ROT_SHUF(zi, o1i, 0, 4, 2, 6);
-      k[4] = SHLI_ROT_SHUF(one, ur, 1, 5, 3, 7);
-      k[5] = SHLI_ROT_SHUF(one - one, ui, 1, 5, 3, 7);
-      k[6] = SHLI_ROT_SHUF(zr, o1r, 1, 5, 3, 7);
-      k[7] = SHLI_ROT_SHUF(zi, o1i, 1, 5, 3, 7);
-      SHLI_ROT_UNROLL
-      for (q = 0; q < 4; ++q) {
-        tv[q] = k[q];
-        tv[4 + q] = k[4 + q];
-        tv[8 + q] = SHLI_ROT_SHUF(k[q], k[q], 2, 3, 2, 3);
-      }
-      shli_rot_band(3, tv, sh, out_sh);
-      return;
-    }
     /* z^4 = u^2 and z^3 = z u (level 2), z^5 = u z^3, z^6 = u z^4, z^7 = z^3 z^4 (level 3), the
        powers above n - 1 left zero */
     u2r = ur * ur - ui * ui;
@@ -3168,13 +3160,8 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
     shli_rot_high(nn, sh, out_sh, ca, sa, cb, sb, cg, sg);                                         \
   }
 #if defined(__AVX2__)
-/* n = 4 (band 3): two groups per vector, P = (A0, B0, A1, B1) (m = 0, -1, 2, -3) and Q = (C0, D0,
-   C1, D1) (m = 1, -, 3, -2): a z rotation is P Cv + (Q, halves' lanes swapped) Sv and Q Cv' -
-   (P swapped) Sv' with Cv = cos m t for m = 0..3 in lanes, Sv = (-sin 0, sin t, -sin 2t, sin 3t),
-   ' their lanes swapped in pairs; X(+90) sends A to B, B to A, C to C, D to D, so it takes
-   each half of P and Q broadcast times one of the columns below (U0, U1 for P, V0, V1 for Q);
-   it leaves P as (B0, A0, B1, A1), where the next z rotation takes Q and P unswapped, and the
-   next X(+90) (columns -U0, -U1) puts P back in order */
+/* n = 4 (band 3): two groups per vector, P = (A0, B0, A1, B1), Q = (C0, D0, C1, D1); the z
+   rotations and X(+90) (columns U0, U1 for P, V0, V1 for Q) in it: docs/rotation.md, method 2 */
 static const shli_rot_v4 SHLI_ROT_X3P[4] = {
     {-0.61237243569579447, 0.61237243569579447, -0.79056941504209488, 0.79056941504209488},
     {-0.79056941504209488, 0.79056941504209488, 0.61237243569579447, -0.61237243569579447},
