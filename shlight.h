@@ -3003,9 +3003,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
     if (q == 2) {
       break;
     }
-    /* X(+90) broadcasts each lane of w0..w3: from memory (load ports) rather than lane permutes
-       (the shuffle port was the bottleneck); the empty asm keeps the compiler from turning the
-       loads back into permutes */
+    /* broadcasts from memory, not lane permutes (the asm keeps them loads) */
 #if defined(__AVX__)
     memcpy(wm, &w0, 32);
     memcpy(wm + 4, &w1, 32);
@@ -3132,8 +3130,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
       tv[8 + q] = SHLI_ROT_SHUF(t0, t2, 2, 3, 6, 7);
     }
   }
-  /* literal band numbers: see shli_rot_band; at n = 5, 6 the longest chain first (n = 5: 10
-     instructions fewer with gcc; n = 7, 8: 3 % slower) */
+  /* literal band numbers: see shli_rot_band; at n = 5, 6 the longest chain first */
   if (n <= 6) {
     if (n > 5) {
       shli_rot_band(5, tv, sh, out_sh);
