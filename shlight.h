@@ -3308,7 +3308,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R
 }
 
 /* n in [4, SHLI_ROT_FAST_BANDS]: where R is a rotation, the angles of bands 3.. first (their
-   square roots and division take the longest), bands 0..2, then shli_sh_rotate_high; else the
+   square roots and division take the longest), bands 0..2, then shli_sh_rotate_h4 .. h8; else the
    portable kernel */
 SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9], const float *sh,
                                                           float *out_sh) {
