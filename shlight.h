@@ -255,12 +255,12 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    8 path 1.3e-7 on float-rounded rotations, 6e-7 on rotations moved by 3 ulps per entry;
    band energy kept to 1.4e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16
    (llvmpipe).
-   Cost: n <= 8 (C, GCC / Clang): 77 / 145 / 356 / 651 / 934 instructions at n = 2 / 3 / 4 / 6
-   / 8 (gcc -O3 -march=x86-64-v3), 7.4 / 15.6 / 40 / 83 / 126 ns; DirectXMath's XMSHRotate
-   (n <= 6) 79 / 222 / 304 / 665 instructions, 4.4 / 18.4 / 30.5 / 68.7 ns. Otherwise about
-   n^3 / 3 steps of the two recurrences (one sqrt and one division each) and n^3 / 3 of the
-   row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc -O3 -march=native). Stack:
-   about 7.5 KB at SHLIGHT_MAX_BANDS = 64. */
+   Cost: n <= 8 (C, GCC / Clang): 77 / 145 / 303 / 450 / 583 / 881 instructions at n = 2 / 3 /
+   4 / 5 / 6 / 8 (gcc -O3 -march=x86-64-v3), 7.4 / 15.6 / 34 / 54 / 69 / 103 ns; DirectXMath's
+   XMSHRotate (n <= 6) 79 / 222 / 304 / 463 / 665 instructions, 4.5 / 18.3 / 30 / 45 / 66 ns
+   (docs/rotation.md). Otherwise about n^3 / 3 steps of the two recurrences (one sqrt and one
+   division each) and n^3 / 3 of the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc
+   -O3 -march=native). Stack: about 7.5 KB at SHLIGHT_MAX_BANDS = 64. */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh);
 
 /* ---- light --------------------------------------------------------------------------------- */
@@ -2738,7 +2738,9 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
 #endif
 #endif
 #if SHLIGHT_ROTATE_FAST
-#if defined(__SSE2__)
+#if defined(__AVX2__)
+#include <immintrin.h>
+#elif defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 #define SHLI_ROT_FAST_BANDS 8
@@ -2866,13 +2868,20 @@ typedef __INT64_TYPE__ shli_rot_i4 __attribute__((vector_size(32)));
 #endif
 #define SHLI_ROT_LD(v, p) memcpy(&(v), (p), sizeof(v))
 
+/* AVX: X(+90)'s broadcasts from memory (wm), see shli_rot_band; SSE2 (two registers per vector):
+   from the registers */
+#if defined(__AVX__)
+#define SHLI_ROT_WS const double *ws_ = wm + 4 * src_
+#else
+#define SHLI_ROT_WS shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3))
+#endif
 /* X(+90) for output group g of band l (a literal): from the z-rotated groups w0..w3 (A, C, D,
-   B) into out (named variables, not arrays, which GCC keeps in registers) */
+   B; stored in wm) into out (named variables, not arrays, which GCC keeps in registers) */
 #define SHLI_ROT_X(l, g, out) \
   do { \
     int src_ = SHLI_ROT_SRC(l, g); \
     int k_; \
-    shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3)); \
+    SHLI_ROT_WS; \
     shli_rot_v4 c_; \
     SHLI_ROT_LD(c_, t + 16 * (g) + SHLI_ROT_K0(src_) * 4); \
     out = c_ * ws_[SHLI_ROT_K0(src_)]; \
@@ -2892,6 +2901,29 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
                                                      float *out_sh) {
   const double *t = SHLI_ROT_X90 + 64 * (l - 3);
   int b = l * l + l;
+#if defined(__AVX2__)
+  /* the band's floats from two 8-float windows inside it (one at l = 3, 7 floats): m >= 0 from
+     fp, m < 0 from fn; lanes past l take any in-window value (their results are never stored) */
+  int po = l == 3 ? 4 : 7 - l;
+  int no = l == 3 ? 4 : l;
+  __m256 fp = _mm256_loadu_ps(sh + b - po);
+  __m256 fn = _mm256_loadu_ps(sh + b - no);
+#define SHLI_ROT_PI(m) ((m) <= l ? (m) + po : po)
+#define SHLI_ROT_NI(m) ((m) <= l ? no - (m) : no - 1)
+  __m256 fac = _mm256_permutevar8x32_ps(
+      fp, _mm256_setr_epi32(SHLI_ROT_PI(0), SHLI_ROT_PI(2), SHLI_ROT_PI(4), SHLI_ROT_PI(6),
+                            SHLI_ROT_PI(1), SHLI_ROT_PI(3), SHLI_ROT_PI(5), SHLI_ROT_PI(7)));
+  __m256 fdb = _mm256_permutevar8x32_ps(
+      fn, _mm256_setr_epi32(SHLI_ROT_NI(1), SHLI_ROT_NI(2), SHLI_ROT_NI(4), SHLI_ROT_NI(6),
+                            SHLI_ROT_NI(1), SHLI_ROT_NI(3), SHLI_ROT_NI(5), SHLI_ROT_NI(7)));
+#undef SHLI_ROT_PI
+#undef SHLI_ROT_NI
+  shli_rot_v4 v0 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_castps256_ps128(fac));
+  shli_rot_v4 v1 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_extractf128_ps(fac, 1));
+  shli_rot_v4 v2 = (shli_rot_v4)_mm256_cvtps_pd(
+      _mm256_castps256_ps128(_mm256_blend_ps(fdb, _mm256_setzero_ps(), 1)));
+  shli_rot_v4 v3 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_extractf128_ps(fdb, 1));
+#else
   shli_rot_v4 v0 = {(double)sh[b], (double)sh[b + 2], l >= 4 ? (double)sh[b + 4] : 0.0,
                     l >= 6 ? (double)sh[b + 6] : 0.0};
   shli_rot_v4 v1 = {(double)sh[b + 1], (double)sh[b + 3], l >= 5 ? (double)sh[b + 5] : 0.0,
@@ -2900,10 +2932,14 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
                     l >= 6 ? (double)sh[b - 6] : 0.0};
   shli_rot_v4 v3 = {(double)sh[b - 1], (double)sh[b - 3], l >= 5 ? (double)sh[b - 5] : 0.0,
                     l >= 7 ? (double)sh[b - 7] : 0.0};
+#endif
   shli_rot_v4 w0;
   shli_rot_v4 w1;
   shli_rot_v4 w2;
   shli_rot_v4 w3;
+#if defined(__AVX__)
+  double wm[16];
+#endif
   int i;
   int q;
   SHLI_ROT_UNROLL
@@ -2916,6 +2952,14 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
     if (q == 2) {
       break;
     }
+    /* broadcasts from memory, not lane permutes (the asm keeps them loads) */
+#if defined(__AVX__)
+    memcpy(wm, &w0, 32);
+    memcpy(wm + 4, &w1, 32);
+    memcpy(wm + 8, &w2, 32);
+    memcpy(wm + 12, &w3, 32);
+    __asm__ volatile("" : : "r"(wm) : "memory");
+#endif
     SHLI_ROT_X(l, 0, v0);
     SHLI_ROT_X(l, 1, v1);
     SHLI_ROT_X(l, 2, v2);
@@ -2937,7 +2981,22 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
 }
 
 /* R is a rotation to within SHLI_ROT_ORTH: the root sum of squares of |r0|^2 - 1, |r1|^2 - 1,
-   r0 . r1 and r0 x r1 - r2 (rows r_i) is at most that; NaN fails */
+   r0 . r1 and r0 x r1 - r2 (rows r_i) is at most that; NaN fails. shli_rot_near2: with the
+   first two entries of r0 x r1 - r2 (up to sign) given */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near2(const float R[9], double x0, double x1) {
+  double r00 = (double)R[0];
+  double r01 = (double)R[1];
+  double r02 = (double)R[2];
+  double r10 = (double)R[3];
+  double r11 = (double)R[4];
+  double r12 = (double)R[5];
+  double e0 = r00 * r00 + (r01 * r01 + (r02 * r02 - 1.0));
+  double e1 = r10 * r10 + (r11 * r11 + (r12 * r12 - 1.0));
+  double e2 = r00 * r10 + (r01 * r11 + r02 * r12);
+  double x2 = r00 * r11 - (r01 * r10 + (double)R[8]);
+  double s2 = e0 * e0 + e1 * e1 + e2 * e2 + x0 * x0 + x1 * x1 + x2 * x2;
+  return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
+}
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   double r00 = (double)R[0];
   double r01 = (double)R[1];
@@ -2957,9 +3016,9 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
 
 /* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of the rotation Rz(alpha) Ry(beta)
    Rz(gamma), given the cosines and sines of alpha, beta, gamma */
-SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float *sh, float *out_sh,
-                                                          double ca, double sa, double cb,
-                                                          double sb, double cg, double sg) {
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, float *out_sh,
+                                                     double ca, double sa, double cb, double sb,
+                                                     double cg, double sg) {
   shli_rot_v4 tv[12];
   int q;
   /* z_q = cos + i sin of gamma, beta + pi, alpha + pi (q = 0, 1, 2: the lanes of z); tv[4 q ..
@@ -2975,44 +3034,38 @@ SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float *sh
     shli_rot_v4 o1i = zi * ur + zr * ui;
     shli_rot_v4 u2r;
     shli_rot_v4 u2i;
-    shli_rot_v4 u3r;
-    shli_rot_v4 u3i;
     shli_rot_v4 k[16];
-    if (n == 4) {
-      /* band 3 alone: lanes 0 and 1 (m <= 3); lanes 2 and 3 meet zero inputs and table entries */
-      k[0] = SHLI_ROT_SHUF(one, ur, 0, 4, 2, 6);
-      k[1] = SHLI_ROT_SHUF(one - one, ui, 0, 4, 2, 6);
-      k[2] = SHLI_ROT_SHUF(zr, o1r, 0, 4, 2, 6);
-      k[3] = SHLI_ROT_SHUF(zi, o1i, 0, 4, 2, 6);
-      k[4] = SHLI_ROT_SHUF(one, ur, 1, 5, 3, 7);
-      k[5] = SHLI_ROT_SHUF(one - one, ui, 1, 5, 3, 7);
-      k[6] = SHLI_ROT_SHUF(zr, o1r, 1, 5, 3, 7);
-      k[7] = SHLI_ROT_SHUF(zi, o1i, 1, 5, 3, 7);
-      SHLI_ROT_UNROLL
-      for (q = 0; q < 4; ++q) {
-        tv[q] = k[q];
-        tv[4 + q] = k[4 + q];
-        tv[8 + q] = SHLI_ROT_SHUF(k[q], k[q], 2, 3, 2, 3);
-      }
-      shli_rot_band(3, tv, sh, out_sh);
-      return;
-    }
+    /* z^4 = u^2 and z^3 = z u (level 2), z^5 = u z^3, z^6 = u z^4, z^7 = z^3 z^4 (level 3), the
+       powers above n - 1 left zero */
     u2r = ur * ur - ui * ui;
     u2i = (ur + ur) * ui;
-    u3r = u2r * ur - u2i * ui;
-    u3i = u2i * ur + u2r * ui;
     k[0] = one;
     k[1] = ur;
     k[2] = u2r;
-    k[3] = u3r;
     k[4] = one - one;
     k[5] = ui;
     k[6] = u2i;
-    k[7] = u3i;
-    SHLI_ROT_UNROLL
-    for (q = 0; q < 4; ++q) {
-      k[8 + q] = zr * k[q] - zi * k[4 + q];
-      k[12 + q] = zi * k[q] + zr * k[4 + q];
+    k[8] = zr;
+    k[9] = o1r;
+    k[12] = zi;
+    k[13] = o1i;
+    k[3] = k[4];
+    k[7] = k[4];
+    k[10] = k[4];
+    k[11] = k[4];
+    k[14] = k[4];
+    k[15] = k[4];
+    if (n > 5) {
+      k[10] = ur * o1r - ui * o1i;
+      k[14] = ui * o1r + ur * o1i;
+    }
+    if (n > 6) {
+      k[3] = ur * u2r - ui * u2i;
+      k[7] = ui * u2r + ur * u2i;
+    }
+    if (n > 7) {
+      k[11] = o1r * u2r - o1i * u2i;
+      k[15] = o1i * u2r + o1r * u2i;
     }
     /* 4 x 4 transposes: row j of kind g (lanes q) to tv[4 q + g] (lanes j) */
     SHLI_ROT_UNROLL
@@ -3026,21 +3079,111 @@ SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_high(int n, const float *sh
       tv[8 + q] = SHLI_ROT_SHUF(t0, t2, 2, 3, 6, 7);
     }
   }
-  /* literal band numbers: see shli_rot_band */
+  /* literal band numbers: see shli_rot_band; at n = 5, 6 the longest chain first */
+  if (n <= 6) {
+    if (n > 5) {
+      shli_rot_band(5, tv, sh, out_sh);
+    }
+    if (n > 4) {
+      shli_rot_band(4, tv, sh, out_sh);
+    }
+    shli_rot_band(3, tv, sh, out_sh);
+    return;
+  }
   shli_rot_band(3, tv, sh, out_sh);
-  if (n > 4) {
-    shli_rot_band(4, tv, sh, out_sh);
-  }
-  if (n > 5) {
-    shli_rot_band(5, tv, sh, out_sh);
-  }
-  if (n > 6) {
-    shli_rot_band(6, tv, sh, out_sh);
-  }
+  shli_rot_band(4, tv, sh, out_sh);
+  shli_rot_band(5, tv, sh, out_sh);
+  shli_rot_band(6, tv, sh, out_sh);
   if (n > 7) {
     shli_rot_band(7, tv, sh, out_sh);
   }
 }
+/* n = 4, 5, 6 and 7..8: one function each */
+#define SHLI_ROT_HIGH_N(name, nn) \
+  SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void name(int n, const float *sh, float *out_sh, double ca, \
+                                             double sa, double cb, double sb, double cg, \
+                                             double sg) { \
+    shli_rot_high(nn, sh, out_sh, ca, sa, cb, sb, cg, sg); \
+  }
+#if defined(__AVX2__)
+/* n = 4 (band 3): two groups per vector, P = (A0, B0, A1, B1), Q = (C0, D0, C1, D1); the z
+   rotations and X(+90) (columns U0, U1 for P, V0, V1 for Q) in it: docs/rotation.md, method 2 */
+static const shli_rot_v4 SHLI_ROT_X3P[4] = {
+    {-0.61237243569579447, 0.61237243569579447, -0.79056941504209488, 0.79056941504209488},
+    {-0.79056941504209488, 0.79056941504209488, 0.61237243569579447, -0.61237243569579447},
+    {-0.25, 0.0, -0.96824583655185426, 0.0},
+    {-0.96824583655185426, 0.0, 0.25, -1.0}};
+#define SHLI_ROT_SW(v) SHLI_ROT_SHUF(v, v, 1, 0, 3, 2)
+#define SHLI_ROT_LO(v) SHLI_ROT_SHUF(v, v, 0, 1, 0, 1)
+#define SHLI_ROT_HI(v) SHLI_ROT_SHUF(v, v, 2, 3, 2, 3)
+SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_h4(int n, const float *sh, float *out_sh,
+                                                        double ca, double sa, double cb, double sb,
+                                                        double cg, double sg) {
+  shli_rot_v4 zr = {cg, -cb, -ca, -ca}; /* lane 3: not used */
+  shli_rot_v4 zi = {sg, -sb, -sa, -sa};
+  shli_rot_v4 one = {1.0, 1.0, 1.0, 1.0};
+  shli_rot_v4 ur = zr * zr - zi * zi;
+  shli_rot_v4 ui = (zr + zr) * zi;
+  shli_rot_v4 o1r = zr * ur - zi * ui;
+  shli_rot_v4 o1i = zi * ur + zr * ui;
+  shli_rot_v4 c[3];
+  shli_rot_v4 s[3];
+  const shli_rot_v4 *u = SHLI_ROT_X3P;
+  shli_rot_v4 p;
+  shli_rot_v4 q;
+  shli_rot_v4 p1;
+  shli_rot_v4 q1;
+  __m256 f = _mm256_loadu_ps(sh + 8);
+  (void)n;
+  /* 4 x 4 transposes: lanes q (gamma, beta + pi, alpha + pi) to lanes m */
+  {
+    shli_rot_v4 ni = (one - one) - ui;
+    shli_rot_v4 t0 = SHLI_ROT_SHUF(one, zr, 0, 4, 2, 6);
+    shli_rot_v4 t1 = SHLI_ROT_SHUF(one, zr, 1, 5, 3, 7);
+    shli_rot_v4 t2 = SHLI_ROT_SHUF(ur, o1r, 0, 4, 2, 6);
+    shli_rot_v4 t3 = SHLI_ROT_SHUF(ur, o1r, 1, 5, 3, 7);
+    shli_rot_v4 h0 = SHLI_ROT_SHUF(one - one, zi, 0, 4, 2, 6);
+    shli_rot_v4 h1 = SHLI_ROT_SHUF(one - one, zi, 1, 5, 3, 7);
+    shli_rot_v4 h2 = SHLI_ROT_SHUF(ni, o1i, 0, 4, 2, 6);
+    shli_rot_v4 h3 = SHLI_ROT_SHUF(ni, o1i, 1, 5, 3, 7);
+    c[0] = SHLI_ROT_SHUF(t0, t2, 0, 1, 4, 5);
+    c[1] = SHLI_ROT_SHUF(t1, t3, 0, 1, 4, 5);
+    c[2] = SHLI_ROT_SHUF(t0, t2, 2, 3, 6, 7);
+    s[0] = SHLI_ROT_SHUF(h0, h2, 0, 1, 4, 5);
+    s[1] = SHLI_ROT_SHUF(h1, h3, 0, 1, 4, 5);
+    s[2] = SHLI_ROT_SHUF(h0, h2, 2, 3, 6, 7);
+  }
+  /* P and Q from sh[8 .. 15] (band 3 and sh[8]), D0 zero */
+  f = _mm256_permutevar8x32_ps(f, _mm256_setr_epi32(4, 3, 6, 1, 5, 0, 7, 2));
+  f = _mm256_blend_ps(f, _mm256_setzero_ps(), 0x20);
+  p = (shli_rot_v4)_mm256_cvtps_pd(_mm256_castps256_ps128(f));
+  q = (shli_rot_v4)_mm256_cvtps_pd(_mm256_extractf128_ps(f, 1));
+  p1 = p * c[0] + SHLI_ROT_SW(q) * s[0];
+  q1 = q * SHLI_ROT_SW(c[0]) - SHLI_ROT_SW(p) * SHLI_ROT_SW(s[0]);
+  p = SHLI_ROT_LO(p1) * u[0] + SHLI_ROT_HI(p1) * u[1];
+  q = SHLI_ROT_LO(q1) * u[2] + SHLI_ROT_HI(q1) * u[3];
+  p1 = p * SHLI_ROT_SW(c[1]) + q * SHLI_ROT_SW(s[1]);
+  q1 = q * SHLI_ROT_SW(c[1]) - p * SHLI_ROT_SW(s[1]);
+  p = -(SHLI_ROT_LO(p1) * u[0]) - SHLI_ROT_HI(p1) * u[1];
+  q = SHLI_ROT_LO(q1) * u[2] + SHLI_ROT_HI(q1) * u[3];
+  p1 = p * c[2] + SHLI_ROT_SW(q) * s[2];
+  q1 = q * SHLI_ROT_SW(c[2]) - SHLI_ROT_SW(p) * SHLI_ROT_SW(s[2]);
+  /* (P, Q) to m = -3..3 at out_sh[9 .. 15], out_sh[8] (band 2) kept */
+  f = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm256_cvtpd_ps((__m256d)p1)),
+                           _mm256_cvtpd_ps((__m256d)q1), 1);
+  f = _mm256_permutevar8x32_ps(f, _mm256_setr_epi32(0, 3, 7, 1, 0, 4, 2, 6));
+  f = _mm256_blend_ps(f, _mm256_broadcast_ss(out_sh + 8), 1);
+  _mm256_storeu_ps(out_sh + 8, f);
+}
+#undef SHLI_ROT_SW
+#undef SHLI_ROT_LO
+#undef SHLI_ROT_HI
+#else
+SHLI_ROT_HIGH_N(shli_sh_rotate_h4, ((void)n, 4))
+#endif
+SHLI_ROT_HIGH_N(shli_sh_rotate_h5, ((void)n, 5))
+SHLI_ROT_HIGH_N(shli_sh_rotate_h6, ((void)n, 6))
+SHLI_ROT_HIGH_N(shli_sh_rotate_h8, (n < 7 ? 7 : n))
 
 /* the portable kernel, out of line: its 7 KB frame is set up only where it runs */
 SHLIGHT_INLINE void shli_sh_rotate_any(int n, const float R[9], const float *sh, float *out_sh);
@@ -3114,7 +3257,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R
 }
 
 /* n in [4, SHLI_ROT_FAST_BANDS]: where R is a rotation, the angles of bands 3.. first (their
-   square roots and division take the longest), bands 0..2, then shli_sh_rotate_high; else the
+   square roots and division take the longest), bands 0..2, then shli_sh_rotate_h4 .. h8; else the
    portable kernel */
 SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9], const float *sh,
                                                           float *out_sh) {
@@ -3135,22 +3278,25 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
   double hg;
   double fb;
   double f;
-  if (!shli_rot_near(R)) {
+  /* the zyz angles of bands 3.. (docs/rotation.md, method 1), before bands 1 and 2; cg, sg
+     are entries of r1 x r0, shared with the rotation test */
+  cg = r11 * r02 - r01 * r12;
+  sg = r10 * r02 - r00 * r12;
+  if (!shli_rot_near2(R, cg + (double)R[6], sg - (double)R[7])) {
     shli_sh_rotate_slow(n, R, sh, out_sh);
     return;
   }
-  /* the zyz angles of bands 3.. (docs/rotation.md, method 1), before bands 1 and 2 */
   s2 = r02 * r02 + r12 * r12;
   fb = 1.5 - 0.5 * (r22 * r22 + s2);
-  cg = r11 * r02 - r01 * r12;
-  sg = r10 * r02 - r00 * r12;
   hg = cg * cg + sg * sg;
   cb = r22 * fb;
   if (s2 > 0.0 && hg > 0.0) {
     double fg;
 #if defined(__SSE2__)
-    /* one instruction for both, no errno branch (its call would spill every live value) */
-    __m128d v = _mm_div_pd(_mm_set1_pd(1.0), _mm_sqrt_pd(_mm_set_pd(hg, s2)));
+    /* one instruction for both, no errno branch (its call would spill every live value); 1 /
+       sqrt(x) = sqrt(x) (1 / x): the square root and the division run side by side */
+    __m128d x = _mm_set_pd(hg, s2);
+    __m128d v = _mm_mul_pd(_mm_sqrt_pd(x), _mm_div_pd(_mm_set1_pd(1.0), x));
     f = _mm_cvtsd_f64(v);
     fg = _mm_cvtsd_f64(_mm_unpackhi_pd(v, v));
 #else
@@ -3167,8 +3313,20 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
     cg = r11 * f;
     sg = r10 * f;
   }
-  shli_rot_b012(n, R, sh, out_sh);
-  shli_sh_rotate_high(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
+  shli_rot_b012(3, R, sh, out_sh);
+  switch (n) {
+  case 4:
+    shli_sh_rotate_h4(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
+    break;
+  case 5:
+    shli_sh_rotate_h5(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
+    break;
+  case 6:
+    shli_sh_rotate_h6(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
+    break;
+  default:
+    shli_sh_rotate_h8(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
+  }
 }
 
 /* n in 1..SHLIGHT_MAX_BANDS */

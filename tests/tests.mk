@@ -190,6 +190,10 @@ TESTS_ROTATE_DEPS := tests/test_rotate.c tests/test_rotate_portable.c tests/tl.h
 $(TESTS_BUILD)/test_rotate: $(TESTS_ROTATE_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) -o $@ tests/test_rotate.c tests/test_rotate_portable.c -lm
+# native: the C-only n <= 8 path's AVX2 code (band loads by lane permutes) and FMA contraction
+$(TESTS_BUILD)/native/test_rotate: $(TESTS_ROTATE_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -march=native -ffp-contract=fast -o $@ tests/test_rotate.c tests/test_rotate_portable.c -lm
 $(TESTS_BUILD)/asan/test_rotate: $(TESTS_ROTATE_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/test_rotate.c tests/test_rotate_portable.c -lm
