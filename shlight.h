@@ -1770,8 +1770,7 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, fl
   vi = _mm512_set1_ps(ci);
   e1 = _mm512_fmsub_ps(e0, vc, _mm512_mul_ps(es0, vi));
   es1 = _mm512_fmadd_ps(es0, vc, _mm512_mul_ps(e0, vi));
-  /* chunks 2, 3 only where bands reach them: near the poles (x + iy)^m is subnormal there,
-     and an unused subnormal costs a microcode assist per operation (docs/speed.md sec. 1.3) */
+  /* chunks 2, 3 only if read: subnormal near the poles (docs/speed.md sec. 1.3) */
   e2 = e3 = es2 = es3 = _mm512_setzero_ps();
   if (n > 32) {
     e2 = _mm512_fmsub_ps(e1, vc, _mm512_mul_ps(es1, vi));
