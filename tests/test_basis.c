@@ -1139,13 +1139,19 @@ static void test_batch(void) {
  * the prefetching pair loop (count 1000 at n <= 10). Each must write exactly what the same
  * directions give in blocks of 40 (the plain pair path), bit for bit. */
 static void test_hard_batch_large(void) {
-  static const int cases[][3] = {{3, 8192, 0}, {6, 4096, 0}, {10, 1024, 0}, {16, 4096, 0},
-                                 {16, 4096, 1}, {10, 1000, 0}, {6, 1000, 3}, {3, 1000, 0}};
+  static const int cases[][3] = {{3, 8192, 0},  {6, 4096, 0},  {10, 1024, 0}, {16, 4096, 0},
+                                 {16, 4096, 1}, {10, 1000, 0}, {6, 1000, 3},  {3, 1000, 0}};
   float *x = (float *)malloc(sizeof(float) * 8192 * 3), *y = x + 8192, *z = y + 8192;
   float *big = (float *)malloc(sizeof(float) * (256 * 4096 + 64));
   float blk[256 * 40];
   int c, j, i, b;
   unsigned s = 2024u;
+  TL_CHECK(x && big, "out of memory");
+  if (!x || !big) {
+    free(big);
+    free(x);
+    return;
+  }
   for (j = 0; j < 8192; j++) {
     double zz, ph, r;
     s = s * 1664525u + 1013904223u;
