@@ -36,6 +36,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 
 #ifndef SHLIGHT_MAX_BANDS
 #define SHLIGHT_MAX_BANDS 64
@@ -1134,6 +1137,29 @@ static void test_batch(void) {
 
 /* =============================================================== hard cases */
 
+/* Above 32 bands near the poles the AVX-512 core runs with flush-to-zero and
+ * denormals-are-zero set in MXCSR: the caller's MXCSR (FTZ / DAZ off, or on) must come back
+ * unchanged. */
+static void test_hard_mxcsr_restored(void) {
+#if defined(__SSE__)
+  static const float dn[][3] = {{0.01f, 0.02f, 0.99975f}, {0.2f, -0.1f, -0.97468f}, {0, 0, 1}};
+  static const unsigned modes[] = {0x1F80u, 0x1F80u | 0x8040u};
+  int j, k, t, n;
+  for (k = 0; k < 2; k++) {
+    unsigned before = _mm_getcsr(), after;
+    _mm_setcsr(modes[k]);
+    for (t = 0; t < NG; t++) {
+      n = GLIST[t];
+      for (j = 0; j < 3; j++)
+        shl_sh_eval(n, dn[j], g_y);
+    }
+    after = _mm_getcsr() & ~0x3Fu; /* exception flags may be raised */
+    _mm_setcsr(before);
+    TL_CHECK(after == modes[k], "MXCSR %#x after shl_sh_eval, set %#x before", after, modes[k]);
+  }
+#endif
+}
+
 /* Large outputs take other paths than calls of a few pairs: streaming stores (count a multiple
  * of the SIMD width, output >= 256 KiB, also from a row start that is not 64-byte aligned) and
  * the prefetching pair loop (count 1000 at n <= 10). Each must write exactly what the same
@@ -1683,5 +1709,6 @@ int main(void) {
   TL_RUN(test_hard_theta_1e7);
   TL_RUN(test_hard_huge_tiny);
   TL_RUN(test_hard_batch_large);
+  TL_RUN(test_hard_mxcsr_restored);
   return tl_summary();
 }
