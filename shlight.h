@@ -160,6 +160,7 @@ typedef enum shl_edge_method {
    zero, NaN or infinite d gives Y(0, 0, 1). n: bands, 1..SHLIGHT_MAX_BANDS; n > max is taken
    as max, n < 1 writes nothing (debug and release alike). out_y: n * n floats.
    Accuracy: max abs error 3e-7 (n <= 4), 2e-6 (n <= 16), 1e-5 (n <= 32) against binary128.
+   AVX-512, n > 32, sin theta < 0.32: runs with MXCSR FTZ + DAZ (restored; values < 1e-22 may be 0).
    Cost: 1 ns (n = 2) to 32 ns (n = 16) on Zen 4, see docs/speed.md; in C, n > 6 runs out of
    line in the implementation (define SHLIGHT_IMPLEMENTATION in one file). */
 SHLIGHT_INLINE void shl_sh_eval(int n, const float d[3], float *out_y);
@@ -1747,7 +1748,12 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, fl
   __m512 e0, e1, e2, e3, es0, es1, es2, es3, o0, o1, o2, o3, os0, os1, os2, os3;
   __m512 x0, x1, x2, x3, d0, d1, d2, d3, vs, vt, vc, vi, one = _mm512_set1_ps(1.0f);
   __mmask16 odd = (__mmask16)0xAAAA;
-  int b, l;
+  int b, l, ftz = n > 32 && s2 < 0.1f;
+  unsigned csr = 0;
+  if (ftz) { /* FTZ + DAZ near the poles (docs/speed.md sec. 1.3) */
+    csr = _mm_getcsr();
+    _mm_setcsr(csr | 0x8040u);
+  }
   vt = _mm512_set1_ps(s2 / (1.0f + fabsf(z)));
   vs = _mm512_set1_ps(copysignf(1.0f, z));
   e0 = one;
@@ -1770,10 +1776,16 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, fl
   vi = _mm512_set1_ps(ci);
   e1 = _mm512_fmsub_ps(e0, vc, _mm512_mul_ps(es0, vi));
   es1 = _mm512_fmadd_ps(es0, vc, _mm512_mul_ps(e0, vi));
-  e2 = _mm512_fmsub_ps(e1, vc, _mm512_mul_ps(es1, vi));
-  es2 = _mm512_fmadd_ps(es1, vc, _mm512_mul_ps(e1, vi));
-  e3 = _mm512_fmsub_ps(e2, vc, _mm512_mul_ps(es2, vi));
-  es3 = _mm512_fmadd_ps(es2, vc, _mm512_mul_ps(e2, vi));
+  /* chunks 2, 3 only if read: subnormal near the poles (docs/speed.md sec. 1.3) */
+  e2 = e3 = es2 = es3 = _mm512_setzero_ps();
+  if (n > 32) {
+    e2 = _mm512_fmsub_ps(e1, vc, _mm512_mul_ps(es1, vi));
+    es2 = _mm512_fmadd_ps(es1, vc, _mm512_mul_ps(e1, vi));
+  }
+  if (n > 48) {
+    e3 = _mm512_fmsub_ps(e2, vc, _mm512_mul_ps(es2, vi));
+    es3 = _mm512_fmadd_ps(es2, vc, _mm512_mul_ps(e2, vi));
+  }
   /* parity: X_l^m(z) = sg^(l-m) X_l^m(|z|); sg^m into the odd lanes (16 h is even), sg^l per
      band through the odd-band copies */
   e0 = _mm512_mask_mul_ps(e0, odd, e0, vs);
@@ -1807,6 +1819,9 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, fl
   SHLI_SH_BANDS512(2, n < 32 ? n : 32)
   SHLI_SH_BANDS512(3, n < 48 ? n : 48)
   SHLI_SH_BANDS512(4, n)
+  if (ftz) {
+    _mm_setcsr(csr);
+  }
 }
 #undef SHLI_SH_BANDS512
 #undef SHLI_SH_BAND512

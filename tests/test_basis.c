@@ -36,6 +36,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 
 #ifndef SHLIGHT_MAX_BANDS
 #define SHLIGHT_MAX_BANDS 64
@@ -1134,6 +1137,82 @@ static void test_batch(void) {
 
 /* =============================================================== hard cases */
 
+/* Above 32 bands near the poles the AVX-512 core runs with flush-to-zero and
+ * denormals-are-zero set in MXCSR: the caller's MXCSR (FTZ / DAZ off, or on) must come back
+ * unchanged. */
+static void test_hard_mxcsr_restored(void) {
+#if defined(__SSE__)
+  static const float dn[][3] = {{0.01f, 0.02f, 0.99975f}, {0.2f, -0.1f, -0.97468f}, {0, 0, 1}};
+  static const unsigned modes[] = {0x1F80u, 0x1F80u | 0x8040u};
+  int j, k, t, n;
+  for (k = 0; k < 2; k++) {
+    unsigned before = _mm_getcsr(), after;
+    _mm_setcsr(modes[k]);
+    for (t = 0; t < NG; t++) {
+      n = GLIST[t];
+      for (j = 0; j < 3; j++)
+        shl_sh_eval(n, dn[j], g_y);
+    }
+    after = _mm_getcsr() & ~0x3Fu; /* exception flags may be raised */
+    _mm_setcsr(before);
+    TL_CHECK(after == modes[k], "MXCSR %#x after shl_sh_eval, set %#x before", after, modes[k]);
+  }
+#endif
+}
+
+/* Large outputs take other paths than calls of a few pairs: streaming stores (count a multiple
+ * of the SIMD width, output >= 256 KiB, also from a row start that is not 64-byte aligned) and
+ * the prefetching pair loop (count 1000 at n <= 10). Each must write exactly what the same
+ * directions give in blocks of 40 (the plain pair path), bit for bit. */
+static void test_hard_batch_large(void) {
+  static const int cases[][3] = {{3, 8192, 0},  {6, 4096, 0},  {10, 1024, 0}, {16, 4096, 0},
+                                 {16, 4096, 1}, {10, 1000, 0}, {6, 1000, 3},  {3, 1000, 0}};
+  float *x = (float *)malloc(sizeof(float) * 8192 * 3), *y = x + 8192, *z = y + 8192;
+  float *big = (float *)malloc(sizeof(float) * (256 * 4096 + 64));
+  float blk[256 * 40];
+  int c, j, i, b;
+  unsigned s = 2024u;
+  TL_CHECK(x && big, "out of memory");
+  if (!x || !big) {
+    free(big);
+    free(x);
+    return;
+  }
+  for (j = 0; j < 8192; j++) {
+    double zz, ph, r;
+    s = s * 1664525u + 1013904223u;
+    zz = (double)(s >> 8) / 16777216.0 * 2.0 - 1.0;
+    s = s * 1664525u + 1013904223u;
+    ph = (double)(s >> 8) / 16777216.0 * 2.0 * PI_D;
+    r = sqrt(1.0 - zz * zz);
+    x[j] = (float)(r * cos(ph));
+    y[j] = (float)(r * sin(ph));
+    z[j] = (float)zz;
+  }
+  for (c = 0; c < (int)(sizeof cases / sizeof cases[0]); c++) {
+    int n = cases[c][0], cnt = cases[c][1], nn = n * n, diff = 0, past;
+    float *out = big + cases[c][2];
+    fill_canary(out, (size_t)nn * (size_t)cnt + 32);
+    shl_sh_eval_batch(n, cnt, x, y, z, out);
+    past = (int)count_written(out + (size_t)nn * (size_t)cnt, 32);
+    for (b = 0; b + 40 <= cnt; b += 40) {
+      shl_sh_eval_batch(n, 40, x + b, y + b, z + b, blk);
+      for (i = 0; i < nn; i++)
+        diff += memcmp(blk + i * 40, out + (size_t)i * (size_t)cnt + (size_t)b, 40 * 4) != 0;
+    }
+    if (b < cnt) { /* the last 40 directions overlap the previous block */
+      b = cnt - 40;
+      shl_sh_eval_batch(n, 40, x + b, y + b, z + b, blk);
+      for (i = 0; i < nn; i++)
+        diff += memcmp(blk + i * 40, out + (size_t)i * (size_t)cnt + (size_t)b, 40 * 4) != 0;
+    }
+    TL_CHECK(diff == 0 && past == 0, "batch n=%d count=%d offset %d: %d rows differ, %d past end",
+             n, cnt, cases[c][2], diff, past);
+  }
+  free(big);
+  free(x);
+}
+
 static void test_hard_n1(void) {
   float d[3] = {0.48f, -0.6f, 0.64f}, xs[3] = {1, 0, 0}, ys[3] = {0, 1, 0}, zs[3] = {0, 0, 1};
   float want = (float)(1.0 / (2.0 * sqrt(PI_D)));
@@ -1629,5 +1708,7 @@ int main(void) {
   TL_RUN(test_hard_denormal);
   TL_RUN(test_hard_theta_1e7);
   TL_RUN(test_hard_huge_tiny);
+  TL_RUN(test_hard_batch_large);
+  TL_RUN(test_hard_mxcsr_restored);
   return tl_summary();
 }
