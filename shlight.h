@@ -6997,35 +6997,34 @@ static const shli_real SHLI_GGX_FAST_FIT[303] = {
   3.0252141, 0.5283581523
 };
 /* clang-format on */
+/* sum_i sum_j SHLI_GGX_FAST_FIT[at + cols i + j] x^(rows - 1 - i) y^(cols - 1 - j), Horner in y
+   inside Horner in x (called with constant arguments: the loops unroll once inlined) */
+SHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, int cols, shli_real x, shli_real y) {
+  shli_real u;
+  shli_real t = 0.0;
+  int i;
+  int j;
+  for (i = 0; i < rows; ++i) {
+    u = SHLI_GGX_FAST_FIT[at + cols * i];
+    for (j = 1; j < cols; ++j) {
+      u = SHLI_GGX_FAST_FIT[at + cols * i + j] + y * u;
+    }
+    t = i == 0 ? u : u + x * t;
+  }
+  return t;
+}
 SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,
                                       shli_real *out_fit) {
   shli_real x = 2.0 * r - 1.0;
   shli_real y = 2.0 * mu - 1.0;
   shli_real z = 2.0 * tau - 1.0;
-  shli_real u;
-  shli_real t = 0.0;
-  int k;
-  int i;
-  int j;
-  for (k = 0; k < 5; ++k) {
-    for (i = 0; i < 8; ++i) {
-      u = SHLI_GGX_FAST_FIT[48 * k + 6 * i];
-      for (j = 1; j < 6; ++j) {
-        u = SHLI_GGX_FAST_FIT[48 * k + 6 * i + j] + y * u;
-      }
-      t = i == 0 ? u : u + x * t;
-    }
-    out_fit[k] = t;
-  }
-  for (i = 0; i < 9; ++i) {
-    u = SHLI_GGX_FAST_FIT[240 + 7 * i];
-    for (j = 1; j < 7; ++j) {
-      u = SHLI_GGX_FAST_FIT[240 + 7 * i + j] + z * u;
-    }
-    t = i == 0 ? u : u + x * t;
-  }
-  u = 1.0 - tau;
-  out_fit[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;
+  shli_real t = 1.0 - tau;
+  out_fit[0] = shli_ggx_fast_poly(0, 8, 6, x, y);
+  out_fit[1] = shli_ggx_fast_poly(48, 8, 6, x, y);
+  out_fit[2] = shli_ggx_fast_poly(96, 8, 6, x, y);
+  out_fit[3] = shli_ggx_fast_poly(144, 8, 6, x, y);
+  out_fit[4] = shli_ggx_fast_poly(192, 8, 6, x, y);
+  out_fit[5] = t / SHLIGHT_SQRTR(t * t + tau * tau) + r * r * shli_ggx_fast_poly(240, 9, 7, x, z);
 }
 /* @fit ggx_fast end */
 

@@ -646,26 +646,28 @@ static char *emit_text(void) {
     col += (col == 0 ? 2 : 1) + w;
   }
   o += sprintf(o, "};\n/* clang-format on */\n");
+  o += sprintf(o, "/* sum_i sum_j SHLI_GGX_FAST_FIT[at + cols i + j] x^(rows - 1 - i) "
+                  "y^(cols - 1 - j), Horner in y\n   inside Horner in x (called with constant "
+                  "arguments: the loops unroll once inlined) */\n");
+  o += sprintf(o, "SHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, int cols, "
+                  "shli_real x, shli_real y) {\n  shli_real u;\n  shli_real t = 0.0;\n  int i;\n"
+                  "  int j;\n  for (i = 0; i < rows; ++i) {\n"
+                  "    u = SHLI_GGX_FAST_FIT[at + cols * i];\n"
+                  "    for (j = 1; j < cols; ++j) {\n"
+                  "      u = SHLI_GGX_FAST_FIT[at + cols * i + j] + y * u;\n    }\n"
+                  "    t = i == 0 ? u : u + x * t;\n  }\n  return t;\n}\n");
   o += sprintf(
       o, "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,"
          "\n                                      shli_real *out_fit) {\n  shli_real x = 2.0 * "
-         "r - 1.0;\n  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n  "
-         "shli_real u;\n  shli_real t = 0.0;\n  int k;\n  int i;\n  int j;\n");
+         "r - 1.0;\n  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n"
+         "  shli_real t = 1.0 - tau;\n");
+  for (k = 0; k < 5; ++k)
+    o += sprintf(o, "  out_fit[%d] = shli_ggx_fast_poly(%d, %d, %d, x, y);\n", k,
+                 k * (DI + 1) * (DJ + 1), DI + 1, DJ + 1);
   o += sprintf(o,
-               "  for (k = 0; k < 5; ++k) {\n    for (i = 0; i < %d; ++i) {\n"
-               "      u = SHLI_GGX_FAST_FIT[%d * k + %d * i];\n"
-               "      for (j = 1; j < %d; ++j) {\n"
-               "        u = SHLI_GGX_FAST_FIT[%d * k + %d * i + j] + y * u;\n      }\n"
-               "      t = i == 0 ? u : u + x * t;\n    }\n    out_fit[k] = t;\n  }\n",
-               DI + 1, (DI + 1) * (DJ + 1), DJ + 1, DJ + 1, (DI + 1) * (DJ + 1), DJ + 1);
-  o += sprintf(o,
-               "  for (i = 0; i < %d; ++i) {\n    u = SHLI_GGX_FAST_FIT[%d + %d * i];\n"
-               "    for (j = 1; j < %d; ++j) {\n"
-               "      u = SHLI_GGX_FAST_FIT[%d + %d * i + j] + z * u;\n    }\n"
-               "    t = i == 0 ? u : u + x * t;\n  }\n",
-               AI + 1, 5 * (DI + 1) * (DJ + 1), AJ + 1, AJ + 1, 5 * (DI + 1) * (DJ + 1), AJ + 1);
-  o += sprintf(
-      o, "  u = 1.0 - tau;\n  out_fit[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;\n}\n");
+               "  out_fit[5] = t / SHLIGHT_SQRTR(t * t + tau * tau) + r * r * "
+               "shli_ggx_fast_poly(%d, %d, %d, x, z);\n}\n",
+               5 * (DI + 1) * (DJ + 1), AI + 1, AJ + 1);
   o += sprintf(o, "/* @fit ggx_fast end */\n");
   return buf;
 }
