@@ -6998,16 +6998,22 @@ static const shli_real SHLI_GGX_FAST_FIT[303] = {
 };
 /* clang-format on */
 /* sum_i sum_j SHLI_GGX_FAST_FIT[at + cols i + j] x^(rows - 1 - i) y^(cols - 1 - j), Horner in y
-   inside Horner in x (called with constant arguments: the loops unroll once inlined) */
+   inside Horner in x (called with constant arguments: the loop unrolls once inlined) */
 SHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, int cols, shli_real x, shli_real y) {
   shli_real u;
   shli_real t = 0.0;
   int i;
-  int j;
+  int a;
   for (i = 0; i < rows; ++i) {
-    u = SHLI_GGX_FAST_FIT[at + cols * i];
-    for (j = 1; j < cols; ++j) {
-      u = SHLI_GGX_FAST_FIT[at + cols * i + j] + y * u;
+    a = at + cols * i;
+    u = SHLI_GGX_FAST_FIT[a];
+    u = SHLI_GGX_FAST_FIT[a + 1] + y * u;
+    u = SHLI_GGX_FAST_FIT[a + 2] + y * u;
+    u = SHLI_GGX_FAST_FIT[a + 3] + y * u;
+    u = SHLI_GGX_FAST_FIT[a + 4] + y * u;
+    u = SHLI_GGX_FAST_FIT[a + 5] + y * u;
+    if (cols > 6) {
+      u = SHLI_GGX_FAST_FIT[a + 6] + y * u;
     }
     t = i == 0 ? u : u + x * t;
   }

@@ -6067,11 +6067,17 @@ shli_real shli_ggx_fast_poly(int at, int rows, int cols, shli_real x, shli_real 
   shli_real u;
   shli_real t = 0.0;
   int i;
-  int j;
+  int a;
   for (i = 0; i < rows; ++i) {
-    u = SHLI_GGX_FAST_FIT[at + cols * i];
-    for (j = 1; j < cols; ++j) {
-      u = SHLI_GGX_FAST_FIT[at + cols * i + j] + y * u;
+    a = at + cols * i;
+    u = SHLI_GGX_FAST_FIT[a];
+    u = SHLI_GGX_FAST_FIT[a + 1] + y * u;
+    u = SHLI_GGX_FAST_FIT[a + 2] + y * u;
+    u = SHLI_GGX_FAST_FIT[a + 3] + y * u;
+    u = SHLI_GGX_FAST_FIT[a + 4] + y * u;
+    u = SHLI_GGX_FAST_FIT[a + 5] + y * u;
+    if (cols > 6) {
+      u = SHLI_GGX_FAST_FIT[a + 6] + y * u;
     }
     t = i == 0 ? u : u + x * t;
   }

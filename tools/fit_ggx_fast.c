@@ -648,14 +648,19 @@ static char *emit_text(void) {
   o += sprintf(o, "};\n/* clang-format on */\n");
   o += sprintf(o, "/* sum_i sum_j SHLI_GGX_FAST_FIT[at + cols i + j] x^(rows - 1 - i) "
                   "y^(cols - 1 - j), Horner in y\n   inside Horner in x (called with constant "
-                  "arguments: the loops unroll once inlined) */\n");
+                  "arguments: the loop unrolls once inlined) */\n");
   o += sprintf(o, "SHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, int cols, "
                   "shli_real x, shli_real y) {\n  shli_real u;\n  shli_real t = 0.0;\n  int i;\n"
-                  "  int j;\n  for (i = 0; i < rows; ++i) {\n"
-                  "    u = SHLI_GGX_FAST_FIT[at + cols * i];\n"
-                  "    for (j = 1; j < cols; ++j) {\n"
-                  "      u = SHLI_GGX_FAST_FIT[at + cols * i + j] + y * u;\n    }\n"
-                  "    t = i == 0 ? u : u + x * t;\n  }\n  return t;\n}\n");
+                  "  int a;\n  for (i = 0; i < rows; ++i) {\n    a = at + cols * i;\n"
+                  "    u = SHLI_GGX_FAST_FIT[a];\n");
+  for (j = 1; j <= (DJ > AJ ? DJ : AJ); ++j) {
+    if (j > (DJ < AJ ? DJ : AJ))
+      o += sprintf(o, "    if (cols > %d) {\n      u = SHLI_GGX_FAST_FIT[a + %d] + y * u;\n    }\n",
+                   j, j);
+    else
+      o += sprintf(o, "    u = SHLI_GGX_FAST_FIT[a + %d] + y * u;\n", j);
+  }
+  o += sprintf(o, "    t = i == 0 ? u : u + x * t;\n  }\n  return t;\n}\n");
   o += sprintf(
       o, "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,"
          "\n                                      shli_real *out_fit) {\n  shli_real x = 2.0 * "
