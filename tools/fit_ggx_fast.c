@@ -15,9 +15,9 @@
  *           Levenberg-Marquardt on all coefficients against every training quad (tried, not
  *           used: it lowered the training cost but raised the median at low roughness)
  *   emit:   build/fit_ggx_fast emit tools/ggx_fast_coef.txt shlight.h
- *           writes SHLI_GGX_FAST_FIT and shli_ggx_fast_fit between the @fit ggx_fast
- *           markers; then
- *           python3 tools/gen_basis.py (the GLSL twin) and python3 tools/gen_glsl_one.py
+ *           writes the packed table SHLI_GGX_FAST_FIT and its Horner loops (shli_ggx_fast_poly,
+ *           shli_ggx_fast_fit) between the @fit ggx_fast markers; then python3
+ *           tools/gen_basis.py (the GLSL twin) and python3 tools/gen_glsl_one.py
  *   --check build/fit_ggx_fast --check tools/ggx_fast_coef.txt shlight.h   (tests/run.sh)
  *
  * Training quads: tests/ref/ggxcases.h's sampler at a fixed view angle with its own seeds
