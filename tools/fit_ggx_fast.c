@@ -15,8 +15,9 @@
  *           Levenberg-Marquardt on all coefficients against every training quad (tried, not
  *           used: it lowered the training cost but raised the median at low roughness)
  *   emit:   build/fit_ggx_fast emit tools/ggx_fast_coef.txt shlight.h
- *           writes shli_ggx_fast_fit between the @fit ggx_fast markers; then
- *           python3 tools/gen_basis.py (the GLSL twin) and python3 tools/gen_glsl_one.py
+ *           writes the packed table SHLI_GGX_FAST_FIT and its Horner loops (shli_ggx_fast_poly,
+ *           shli_ggx_fast_fit) between the @fit ggx_fast markers; then python3
+ *           tools/gen_basis.py (the GLSL twin) and python3 tools/gen_glsl_one.py
  *   --check build/fit_ggx_fast --check tools/ggx_fast_coef.txt shlight.h   (tests/run.sh)
  *
  * Training quads: tests/ref/ggxcases.h's sampler at a fixed view angle with its own seeds
@@ -561,15 +562,61 @@ static void lm(int iters) {
   free(res), free(r2);
 }
 
-/* ---- the kernel text: shli_ggx_fast_fit, straight-line Horner forms of the model above */
+/* ---- the kernel text: shli_ggx_fast_fit, Horner loops over the packed table SHLI_GGX_FAST_FIT */
+/* the value of "%.9e" (what the kernel always used) in its shortest decimal spelling: the same
+   decimal number, so the same double in C and the same float in GLSL */
 static void lit(char *o, double c) {
-  sprintf(o, "%.9e", c);
+  char e[32], dg[16];
+  int ex, nd = 0, k;
+  const char *p = e;
+  sprintf(e, "%.9e", c);
+  if (*p == '-') *o++ = *p++;
+  for (; *p != 'e'; ++p)
+    if (*p != '.') dg[nd++] = *p;
+  ex = atoi(p + 1);
+  while (nd > 1 && dg[nd - 1] == '0')
+    --nd;
+  if (ex < -4 || ex > nd + 2) { /* keep the exponent: d.ddd e+XX */
+    *o++ = dg[0], *o++ = '.';
+    if (nd == 1) *o++ = '0';
+    for (k = 1; k < nd; ++k)
+      *o++ = dg[k];
+    sprintf(o, "e%+03d", ex);
+    return;
+  }
+  if (ex < 0) {
+    *o++ = '0', *o++ = '.';
+    for (k = 0; k < -ex - 1; ++k)
+      *o++ = '0';
+    for (k = 0; k < nd; ++k)
+      *o++ = dg[k];
+  } else {
+    for (k = 0; k <= ex; ++k)
+      *o++ = k < nd ? dg[k] : '0';
+    *o++ = '.';
+    if (nd <= ex + 1) *o++ = '0';
+    for (k = ex + 1; k < nd; ++k)
+      *o++ = dg[k];
+  }
+  *o = 0;
 }
+/* the coefficients in the order the kernel reads them: per out_fit[k], k < 5, the DI + 1 rows
+   of r-power DI down to 0, each DJ + 1 coefficients of mu-power DJ down to 0; then the albedo's
+   AI + 1 rows of AJ + 1 */
+#define NTAB (5 * (DI + 1) * (DJ + 1) + (AI + 1) * (AJ + 1))
 static char *emit_text(void) {
   static char buf[65536];
+  double tab[NTAB];
   char l1[64];
-  int k, i, j;
+  int k, i, j, n = 0, col;
   char *o = buf;
+  for (k = 0; k < 5; ++k)
+    for (i = DI; i >= 0; --i)
+      for (j = DJ; j >= 0; --j)
+        tab[n++] = CO[k][i][j];
+  for (i = AI; i >= 0; --i)
+    for (j = AJ; j >= 0; --j)
+      tab[n++] = CA[i][j];
   o += sprintf(o, "/* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its "
                   "--check */\n");
   o += sprintf(o,
@@ -580,42 +627,52 @@ static char *emit_text(void) {
                "directional albedo, E0 + r^2 times a polynomial of\n   degree %d in 2 r - 1 and "
                "%d in 2 tau - 1, tau = alpha sin(theta_v) / (mu + alpha sin(theta_v)),\n   E0 = "
                "(1 - tau) / sqrt((1 - tau)^2 + tau^2) = 1 / sqrt(1 + alpha^2 tan^2 theta_v) (G2 "
-               "at the\n   mirror direction as alpha -> 0). */\n",
-               DI, DJ, AI, AJ);
+               "at the\n   mirror direction as alpha -> 0). SHLI_GGX_FAST_FIT: per out_fit[0..4], "
+               "%d rows (power\n   %d of 2 r - 1 first) of %d coefficients (power %d of 2 mu - 1 "
+               "first); then [5]'s %d rows of %d. */\n",
+               DI, DJ, AI, AJ, DI + 1, DI, DJ + 1, DJ, AI + 1, AJ + 1);
+  o += sprintf(o, "/* clang-format off */\nstatic const shli_real SHLI_GGX_FAST_FIT[%d] = {\n",
+               NTAB);
+  col = 0;
+  for (i = 0; i < NTAB; ++i) {
+    int w;
+    lit(l1, tab[i]);
+    w = (int)strlen(l1) + (i + 1 < NTAB ? 1 : 0);
+    if (col > 0 && col + 1 + w > 100) {
+      o += sprintf(o, "\n");
+      col = 0;
+    }
+    o += sprintf(o, "%s%s%s", col == 0 ? "  " : " ", l1, i + 1 < NTAB ? "," : "\n");
+    col += (col == 0 ? 2 : 1) + w;
+  }
+  o += sprintf(o, "};\n/* clang-format on */\n");
+  o += sprintf(o, "/* sum_i sum_j SHLI_GGX_FAST_FIT[at + cols i + j] x^(rows - 1 - i) "
+                  "y^(cols - 1 - j), Horner in y\n   inside Horner in x (called with constant "
+                  "arguments: the loop unrolls once inlined) */\n");
+  o += sprintf(o, "SHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, int cols, "
+                  "shli_real x, shli_real y) {\n  shli_real u;\n  shli_real t = 0.0;\n  int i;\n"
+                  "  int a;\n  for (i = 0; i < rows; ++i) {\n    a = at + cols * i;\n"
+                  "    u = SHLI_GGX_FAST_FIT[a];\n");
+  for (j = 1; j <= (DJ > AJ ? DJ : AJ); ++j) {
+    if (j > (DJ < AJ ? DJ : AJ))
+      o += sprintf(o, "    if (cols > %d) {\n      u = SHLI_GGX_FAST_FIT[a + %d] + y * u;\n    }\n",
+                   j, j);
+    else
+      o += sprintf(o, "    u = SHLI_GGX_FAST_FIT[a + %d] + y * u;\n", j);
+  }
+  o += sprintf(o, "    t = i == 0 ? u : u + x * t;\n  }\n  return t;\n}\n");
   o += sprintf(
       o, "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,"
          "\n                                      shli_real *out_fit) {\n  shli_real x = 2.0 * "
-         "r - 1.0;\n  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n  "
-         "shli_real u;\n  shli_real t;\n");
-  for (k = 0; k < 5; ++k) {
-    for (i = DI; i >= 0; --i) {
-      lit(l1, CO[k][i][DJ]);
-      o += sprintf(o, "  u = %s;\n", l1);
-      for (j = DJ - 1; j >= 0; --j) {
-        lit(l1, CO[k][i][j]);
-        o += sprintf(o, "  u = %s + y * u;\n", l1);
-      }
-      if (i == DI)
-        o += sprintf(o, "  t = u;\n");
-      else
-        o += sprintf(o, "  t = u + x * t;\n");
-    }
-    o += sprintf(o, "  out_fit[%d] = t;\n", k);
-  }
-  for (i = AI; i >= 0; --i) {
-    lit(l1, CA[i][AJ]);
-    o += sprintf(o, "  u = %s;\n", l1);
-    for (j = AJ - 1; j >= 0; --j) {
-      lit(l1, CA[i][j]);
-      o += sprintf(o, "  u = %s + z * u;\n", l1);
-    }
-    if (i == AI)
-      o += sprintf(o, "  t = u;\n");
-    else
-      o += sprintf(o, "  t = u + x * t;\n");
-  }
-  o += sprintf(
-      o, "  u = 1.0 - tau;\n  out_fit[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;\n}\n");
+         "r - 1.0;\n  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n"
+         "  shli_real t = 1.0 - tau;\n");
+  for (k = 0; k < 5; ++k)
+    o += sprintf(o, "  out_fit[%d] = shli_ggx_fast_poly(%d, %d, %d, x, y);\n", k,
+                 k * (DI + 1) * (DJ + 1), DI + 1, DJ + 1);
+  o += sprintf(o,
+               "  out_fit[5] = t / SHLIGHT_SQRTR(t * t + tau * tau) + r * r * "
+               "shli_ggx_fast_poly(%d, %d, %d, x, z);\n}\n",
+               5 * (DI + 1) * (DJ + 1), AI + 1, AJ + 1);
   o += sprintf(o, "/* @fit ggx_fast end */\n");
   return buf;
 }
