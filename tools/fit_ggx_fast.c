@@ -182,8 +182,7 @@ static void setup(int ir, double th, unsigned long long seed) {
 #define AJ 6
 static double CO[5][DI + 1][DJ + 1], CA[AI + 1][AJ + 1];
 /* the low-roughness set (r <= RS, in 2 r / RL - 1; see "the low-roughness set" below) */
-#define RL 0.35
-#define RS 0.25
+static double RL = 0.35, RS = 0.25; /* (TRY_RL, TRY_RS: other splits, for experiments) */
 #define NRGL 19
 static const double RGL[NRGL] = {0.01, 0.0175, 0.025, 0.0325, 0.04, 0.05,  0.06,
                                  0.075, 0.09,  0.1,   0.125,  0.15, 0.175, 0.2,
@@ -479,7 +478,7 @@ static void fit_albedo_low(void) {
   free(A), free(b), free(E), free(R), free(M);
 }
 /* a / alpha, g, d, P of the low set: weighted least squares (weights 1 / (residual + 0.02)) with
-   the alpha -> 0 limit as 21 heavy points at r = 0, reweighted 4 times (points further than 4
+   the alpha -> 0 limit as 21 heavy points at r = 0, reweighted 4 times (points further than 3
    median deviations count less: a stalled optimum does not pull the surface); k = 1 */
 static void fit_params_low(const char *fn) {
   static const double LIM[4] = {2, 0, 0, 1};
@@ -526,7 +525,7 @@ static void fit_params_low(const char *fn) {
       }
       memcpy(tmp, res, sizeof(double) * (size_t)np);
       med = pct(tmp, np, 0.5);
-      sc = 4 * med + 1e-6;
+      sc = 3 * med + 1e-6;
       for (row = 0; row < np; ++row)
         rw[row] = res[row] < sc ? 1 : sc / res[row];
     }
@@ -848,9 +847,9 @@ static char *emit_text(void) {
   o += sprintf(o, "/* sum_i sum_j SHLI_GGX_FAST_FIT[at + cols i + j] x^(rows - 1 - i) "
                   "y^(cols - 1 - j), Horner in y\n   inside Horner in x (rows, cols constant "
                   "once inlined: the loop unrolls) */\n");
-  o += sprintf(o, "SHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, int cols, "
-                  "shli_real x, shli_real y) {\n  shli_real u;\n  shli_real t = 0.0;\n  int i;\n"
-                  "  int a;\n  SHLIGHT_UNROLL(%d)\n  for (i = 0; i < rows; ++i) {\n"
+  o += sprintf(o, "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, "
+                  "int cols, shli_real x, shli_real y) {\n  shli_real u;\n  shli_real t = 0.0;\n"
+                  "  int i;\n  int a;\n  SHLIGHT_UNROLL(%d)\n  for (i = 0; i < rows; ++i) {\n"
                   "    a = at + cols * i;\n    u = SHLI_GGX_FAST_FIT[a];\n",
                (DI > AI ? DI : AI) + 1);
   for (j = 1; j <= (DJ > AJ ? DJ : AJ); ++j) {
@@ -861,14 +860,12 @@ static char *emit_text(void) {
       o += sprintf(o, "    u = SHLI_GGX_FAST_FIT[a + %d] + y * u;\n", j);
   }
   o += sprintf(o, "    t = u + x * t;\n  }\n  return t;\n}\n");
-  o += sprintf(
-      o, "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,"
-         "\n                                      shli_real *out_fit) {\n"
-         "  int at = r <= %g ? %d : 0;\n"
-         "  shli_real x = r <= %g ? r * (2.0 / %g) - 1.0 : 2.0 * r - 1.0;\n"
-         "  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n"
-         "  shli_real t = 1.0 - tau;\n",
-      RS, NSET, RS, RL);
+  o += sprintf(o, "/* one set (at 0: r > %g, at %d: r <= %g) at x */\n", RS, NSET, RS);
+  o += sprintf(o, "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE void shli_ggx_fast_set(int at, shli_real x, "
+                  "shli_real r, shli_real mu, shli_real tau,\n"
+                  "                                      shli_real *out_fit) {\n"
+                  "  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n"
+                  "  shli_real t = 1.0 - tau;\n");
   o += sprintf(o, "  out_fit[0] = shli_ggx_fast_poly(at, %d, %d, x, y);\n", DI + 1, DJ + 1);
   for (k = 1; k < 5; ++k)
     o += sprintf(o, "  out_fit[%d] = shli_ggx_fast_poly(at + %d, %d, %d, x, y);\n", k,
@@ -877,6 +874,13 @@ static char *emit_text(void) {
                "  out_fit[5] =\n      t / SHLIGHT_SQRTR(t * t + tau * tau) + r * r * "
                "shli_ggx_fast_poly(at + %d, %d, %d, x, z);\n}\n",
                5 * (DI + 1) * (DJ + 1), AI + 1, AJ + 1);
+  o += sprintf(o,
+               "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,\n"
+               "                                      shli_real *out_fit) {\n"
+               "  if (r <= %g) {\n    shli_ggx_fast_set(%d, r * (2.0 / %g) - 1.0, r, mu, tau, "
+               "out_fit);\n  } else {\n    shli_ggx_fast_set(0, 2.0 * r - 1.0, r, mu, tau, "
+               "out_fit);\n  }\n}\n",
+               RS, NSET, RL);
   o += sprintf(o, "/* @fit ggx_fast end */\n");
   return buf;
 }
@@ -915,6 +919,8 @@ static int region(const char *hdr, int w) {
 }
 
 int main(int argc, char **argv) {
+  if (getenv("TRY_RL")) RL = atof(getenv("TRY_RL"));
+  if (getenv("TRY_RS")) RS = atof(getenv("TRY_RS"));
   if (argc >= 2 && strcmp(argv[1], "points") == 0) {
     int ir, it, lo = 0, hi = NRG, a = 2;
     static double prev[NTH][5];
