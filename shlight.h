@@ -1254,10 +1254,12 @@ typedef double shli_real;
    compilers do not unroll into huge bodies; 0 (C): nested loops (the same sums, same order) */
 #define SHLIGHT_FLAT_LOOPS 0
 /* SHLIGHT_UNROLL(k): unroll the next loop fully when its trip count is a constant <= k (gcc -O2
-   does not on its own); SHLIGHT_ALWAYS_INLINE: inline the next kernel at every call site, so its
-   constant arguments specialise it (GLSL: both empty) */
-#if defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 8)
+   does not on its own, nor clang for "GCC unroll"); SHLIGHT_ALWAYS_INLINE: inline the next kernel
+   at every call site, so its constant arguments specialise it (GLSL: both empty) */
 #define SHLIGHT_UNROLL_(x) _Pragma(#x)
+#if defined(__clang__)
+#define SHLIGHT_UNROLL(k) SHLIGHT_UNROLL_(clang loop unroll(full))
+#elif defined(__GNUC__) && __GNUC__ >= 8
 #define SHLIGHT_UNROLL(k) SHLIGHT_UNROLL_(GCC unroll k)
 #else
 #define SHLIGHT_UNROLL(k)
