@@ -591,17 +591,17 @@ SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nr
    height-correlated G2, over the polygon clipped to nrm.l > 0), approximated by a linearly
    transformed cosine (Heitz et al. 2016) with no table: the transform (4 parameters in the view
    frame) and the magnitude (the directional albedo times a factor) are closed-form polynomials
-   in sqrt(alpha) and nrm.view, fitted by tools/fit_ggx_fast.c to polygon integrals of
-   shl_polygon_ggx. The polygon is clipped to the horizon before the transform: no light comes
-   from below it. Inputs and degenerate results as shl_polygon_ggx (nv < 3, NaN / Inf input, zero
-   normal or view, view at or below the horizon, NaN alpha, a light wholly below the horizon
-   (exactly 0), a polygon through the shading point: 0; C: any nv, GLSL: above
-   SHLIGHT_POLYGON_MAX -1); alpha clamped to [1e-4, 1]. Result >= 0. Accuracy against long
-   double cubature on the LTC comparison's sampler (docs/area-lights.md "Fast GGX polygon
-   lights"): median relative error 5.8e-4, 2.3e-3, 9.8e-3, 6.3e-3, 1.7e-2, 1.9e-2, 1.1e-2 at
-   roughness 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1; max error / albedo 9.7e-3 to 5.8e-2 (worst at
-   roughness 0.1, grazing views). Cost: 1,310 to 1,370 x86 instructions per quad (~14x fewer
-   than shl_polygon_ggx). */
+   in sqrt(alpha) and nrm.view (one set for sqrt(alpha) <= 0.25, one above), fitted by
+   tools/fit_ggx_fast.c to polygon integrals of shl_polygon_ggx. The polygon is clipped to the
+   horizon before the transform: no light comes from below it. Inputs and degenerate results as
+   shl_polygon_ggx (nv < 3, NaN / Inf input, zero normal or view, view at or below the horizon, NaN
+   alpha, a light wholly below the horizon (exactly 0), a polygon through the shading point: 0; C:
+   any nv, GLSL: above SHLIGHT_POLYGON_MAX -1); alpha clamped to [1e-4, 1]. Result >= 0. Accuracy
+   against long double cubature on the LTC comparison's sampler (docs/area-lights.md "Fast GGX
+   polygon lights"): median relative error 3.6e-5, 5.2e-4, 2.4e-3, 6.3e-3, 1.7e-2, 1.9e-2, 1.1e-2 at
+   roughness 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1; max error / albedo 4.0e-3 to 4.3e-2 (worst at
+   roughness 0.2). Cost: 1,300 to 1,350 x86 instructions per quad (~14x fewer than
+   shl_polygon_ggx). */
 SHLIGHT_INLINE float shl_polygon_ggx_fast(const float (*v)[3], int nv, const float nrm[3],
                                           const float view[3], float alpha);
 
