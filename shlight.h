@@ -7067,7 +7067,7 @@ SHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, int cols, shli_rea
   }
   return t;
 }
-/* one set (at 0: r > 0.25, at 303: r <= 0.25) at x */
+/* one set at x: the high one (at 0) or the low one (at 303) */
 SHLIGHT_ALWAYS_INLINE
 SHLIGHT_INLINE void shli_ggx_fast_set(int at, shli_real x, shli_real r, shli_real mu, shli_real tau,
                                       shli_real *out_fit) {
@@ -7082,12 +7082,24 @@ SHLIGHT_INLINE void shli_ggx_fast_set(int at, shli_real x, shli_real r, shli_rea
   out_fit[5] =
       t / SHLIGHT_SQRTR(t * t + tau * tau) + r * r * shli_ggx_fast_poly(at + 240, 9, 7, x, z);
 }
+/* the low set for r <= 0.25, the high set for r >= 0.3, between them their outputs interpolated
+   linearly in r (continuous in roughness) */
 SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,
                                       shli_real *out_fit) {
-  if (r <= 0.25) {
+  shli_real hi[6];
+  shli_real w = (r - 0.25) / (0.3 - 0.25);
+  int i;
+  if (w < 1.0) {
     shli_ggx_fast_set(303, r * (2.0 / 0.35) - 1.0, r, mu, tau, out_fit);
-  } else {
-    shli_ggx_fast_set(0, 2.0 * r - 1.0, r, mu, tau, out_fit);
+  }
+  if (w > 0.0) {
+    shli_ggx_fast_set(0, 2.0 * r - 1.0, r, mu, tau, hi);
+    for (i = 0; i < 6; ++i) {
+      if (w < 1.0) {
+        hi[i] = out_fit[i] + w * (hi[i] - out_fit[i]);
+      }
+      out_fit[i] = hi[i];
+    }
   }
 }
 /* @fit ggx_fast end */

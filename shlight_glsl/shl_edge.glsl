@@ -2402,10 +2402,20 @@ void shli_ggx_fast_set(int at, shli_real x, shli_real r, shli_real mu, shli_real
 }
 
 void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau, out shli_real out_fit[6]) {
-  if (r <= 0.25) {
+  shli_real hi[6];
+  shli_real w = (r - 0.25) / (0.3 - 0.25);
+  int i;
+  if (w < 1.0) {
     shli_ggx_fast_set(303, r * (2.0 / 0.35) - 1.0, r, mu, tau, out_fit);
-  } else {
-    shli_ggx_fast_set(0, 2.0 * r - 1.0, r, mu, tau, out_fit);
+  }
+  if (w > 0.0) {
+    shli_ggx_fast_set(0, 2.0 * r - 1.0, r, mu, tau, hi);
+    for (i = 0; i < 6; ++i) {
+      if (w < 1.0) {
+        hi[i] = out_fit[i] + w * (hi[i] - out_fit[i]);
+      }
+      out_fit[i] = hi[i];
+    }
   }
 }
 

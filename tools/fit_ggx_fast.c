@@ -182,7 +182,7 @@ static void setup(int ir, double th, unsigned long long seed) {
 #define AJ 6
 static double CO[5][DI + 1][DJ + 1], CA[AI + 1][AJ + 1];
 /* the low-roughness set (r <= RS, in 2 r / RL - 1; see "the low-roughness set" below) */
-static double RL = 0.35, RS = 0.25; /* (TRY_RL, TRY_RS: other splits, for experiments) */
+static double RL = 0.35, RS = 0.25, RB = 0.3; /* (TRY_RL, TRY_RS: other splits, for experiments) */
 #define NRGL 19
 static const double RGL[NRGL] = {0.01, 0.0175, 0.025, 0.0325, 0.04, 0.05,  0.06,
                                  0.075, 0.09,  0.1,   0.125,  0.15, 0.175, 0.2,
@@ -535,7 +535,21 @@ static void fit_params_low(const char *fn) {
   memset(CL[4], 0, sizeof CL[4]);
   CL[4][0][0] = 1;
 }
-/* the model (the low set for r <= RS) on the bench sampler (seed 2017, 250 quads per roughness
+/* the piecewise model: the low set for r <= RS, the high set for r >= RB, between them the
+   parameters and the albedo interpolated linearly in r (continuous in roughness) */
+static void model_fit(double r, double mu, double *p, double *alb) {
+  double q[5], w = (r - RS) / (RB - RS), e = 0;
+  int k;
+  if (w < 1) model_p_low(r, mu, p), *alb = model_alb_low(r, mu);
+  if (w > 0) {
+    model_p(r, mu, q), e = model_alb(r, mu);
+    if (w >= 1) w = 1, *alb = 0;
+    for (k = 0; k < 5; ++k)
+      p[k] = w >= 1 ? q[k] : p[k] + w * (q[k] - p[k]);
+    *alb = w >= 1 ? e : *alb + w * (e - *alb);
+  }
+}
+/* the model (model_fit) on the bench sampler (seed 2017, 250 quads per roughness
    0.05 ... 1), against shl_polygon_ggx and the long double albedo; CHECK_R="r0,r1,..." checks
    other roughness values, each on the quads of the nearest bench roughness */
 static void check(void) {
@@ -571,7 +585,7 @@ static void check(void) {
       if (fabs(RO[ir] - rl[k]) < fabs(RO[b] - rl[k])) b = ir;
     for (i = 0; i < 250; ++i) {
       float fq[4][3], fv[3], fn[3] = {0, 0, 1};
-      double nrm[3] = {0, 0, 1}, alb, gt, p[5], m[5], mu, s, got, ea;
+      double nrm[3] = {0, 0, 1}, alb, gt, p[5], m[5], mu, s, got, ea = 0;
       int c;
       for (c = 0; c < 12; ++c)
         fq[c / 3][c % 3] = (float)cq[b][i][c / 3][c % 3];
@@ -581,13 +595,7 @@ static void check(void) {
       gt = shl_polygon_ggx((const float(*)[3])fq, 4, fn, fv, (float)al);
       mu = cv[b][i][2] / sqrt(cv[b][i][0] * cv[b][i][0] + cv[b][i][2] * cv[b][i][2]);
       s = sqrt(1 - mu * mu);
-      if (r <= RS) {
-        model_p_low(r, mu, p);
-        ea = model_alb_low(r, mu);
-      } else {
-        model_p(r, mu, p);
-        ea = model_alb(r, mu);
-      }
+      model_fit(r, mu, p, &ea);
       gmu = mu;
       p2m(p, al, m);
       got = m[4] * ea * ltc((const double(*)[3])cq[b][i], m, mu, s);
@@ -860,7 +868,7 @@ static char *emit_text(void) {
       o += sprintf(o, "    u = SHLI_GGX_FAST_FIT[a + %d] + y * u;\n", j);
   }
   o += sprintf(o, "    t = u + x * t;\n  }\n  return t;\n}\n");
-  o += sprintf(o, "/* one set (at 0: r > %g, at %d: r <= %g) at x */\n", RS, NSET, RS);
+  o += sprintf(o, "/* one set at x: the high one (at 0) or the low one (at %d) */\n", NSET);
   o += sprintf(o, "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE void shli_ggx_fast_set(int at, shli_real x, "
                   "shli_real r, shli_real mu, shli_real tau,\n"
                   "                                      shli_real *out_fit) {\n"
@@ -875,12 +883,17 @@ static char *emit_text(void) {
                "shli_ggx_fast_poly(at + %d, %d, %d, x, z);\n}\n",
                5 * (DI + 1) * (DJ + 1), AI + 1, AJ + 1);
   o += sprintf(o,
+               "/* the low set for r <= %g, the high set for r >= %g, between them their outputs "
+               "interpolated\n   linearly in r (continuous in roughness) */\n"
                "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,\n"
                "                                      shli_real *out_fit) {\n"
-               "  if (r <= %g) {\n    shli_ggx_fast_set(%d, r * (2.0 / %g) - 1.0, r, mu, tau, "
-               "out_fit);\n  } else {\n    shli_ggx_fast_set(0, 2.0 * r - 1.0, r, mu, tau, "
-               "out_fit);\n  }\n}\n",
-               RS, NSET, RL);
+               "  shli_real hi[6];\n  shli_real w = (r - %g) / (%g - %g);\n  int i;\n"
+               "  if (w < 1.0) {\n    shli_ggx_fast_set(%d, r * (2.0 / %g) - 1.0, r, mu, tau, "
+               "out_fit);\n  }\n  if (w > 0.0) {\n    shli_ggx_fast_set(0, 2.0 * r - 1.0, r, mu, "
+               "tau, hi);\n    for (i = 0; i < 6; ++i) {\n      if (w < 1.0) {\n"
+               "        hi[i] = out_fit[i] + w * (hi[i] - out_fit[i]);\n      }\n"
+               "      out_fit[i] = hi[i];\n    }\n  }\n}\n",
+               RS, RB, RS, RB, RS, NSET, RL);
   o += sprintf(o, "/* @fit ggx_fast end */\n");
   return buf;
 }
