@@ -591,17 +591,18 @@ SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nr
    height-correlated G2, over the polygon clipped to nrm.l > 0), approximated by a linearly
    transformed cosine (Heitz et al. 2016) with no table: the transform (4 parameters in the view
    frame) and the magnitude (the directional albedo times a factor) are closed-form polynomials
-   in sqrt(alpha) and nrm.view (one set for sqrt(alpha) <= 0.25, one above), fitted by
-   tools/fit_ggx_fast.c to polygon integrals of shl_polygon_ggx. The polygon is clipped to the
-   horizon before the transform: no light comes from below it. Inputs and degenerate results as
+   in r = sqrt(alpha) and nrm.view (a set for r <= 0.25, one for r >= 0.3, interpolated
+   between: continuous in alpha), fitted by tools/fit_ggx_fast.c to polygon integrals of
+   shl_polygon_ggx. The polygon is clipped to the horizon before the transform: no light comes
+   from below it. Inputs and degenerate results as
    shl_polygon_ggx (nv < 3, NaN / Inf input, zero normal or view, view at or below the horizon, NaN
    alpha, a light wholly below the horizon (exactly 0), a polygon through the shading point: 0; C:
    any nv, GLSL: above SHLIGHT_POLYGON_MAX -1); alpha clamped to [1e-4, 1]. Result >= 0. Accuracy
    against long double cubature on the LTC comparison's sampler (docs/area-lights.md "Fast GGX
    polygon lights"): median relative error 3.6e-5, 5.2e-4, 2.4e-3, 6.3e-3, 1.7e-2, 1.9e-2, 1.1e-2 at
    roughness 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1; max error / albedo 4.0e-3 to 4.3e-2 (worst at
-   roughness 0.2). Cost: 1,300 to 1,350 x86 instructions per quad (~14x fewer than
-   shl_polygon_ggx). */
+   roughness 0.2). Cost: 1,250 to 1,290 x86 instructions per quad, ~1,650 for r in (0.25, 0.3)
+   (gcc -O3; ~14x fewer than shl_polygon_ggx). */
 SHLIGHT_INLINE float shl_polygon_ggx_fast(const float (*v)[3], int nv, const float nrm[3],
                                           const float view[3], float alpha);
 
@@ -6955,15 +6956,11 @@ SHLIGHT_INLINE shli_real shli_ltc_ff(shli_real *io_px, shli_real *io_py, shli_re
 }
 
 /* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its --check */
-/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_fit[0] a / alpha, [1] g (c =
-   a (mu + (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, cos theta_v)), [4] k (the
-   magnitude's factor), each a polynomial of degree 7 in x and 5 in 2 mu - 1 (mu = n.v); [5] the
-   directional albedo, E0 + r^2 times a polynomial of degree 8 in x and 6 in 2 tau - 1, tau =
-   alpha sin(theta_v) / (mu + alpha sin(theta_v)), E0 = 1 / sqrt(1 + alpha^2 tan^2 theta_v) =
-   (1 - tau) / sqrt((1 - tau)^2 + tau^2) (G2 at the mirror direction as alpha -> 0). Two sets:
-   r = sqrt(alpha) > 0.25: x = 2 r - 1; r <= 0.25: x = 2 r / 0.35 - 1, k = 1. SHLI_GGX_FAST_FIT: per
-   set, per out_fit[0..4] 8 rows (power 7 of x first) of 6 coefficients (power 5 of 2 mu - 1
-   first); then [5]'s 9 rows of 7. */
+/* The fit of shl_polygon_ggx_fast (docs/area-lights.md): out_fit[0..4] a / alpha, g (c =
+   a (mu + (1 - mu) g)), d, P (the axis (-P sin theta_v, 0, mu)), k, each of degree 7 in x and
+   5 in y = 2 mu - 1; out_fit[5] the albedo E0 + r^2 p, p of degree 8 in x and 6 in 2 tau - 1,
+   tau = alpha s / (mu + alpha s), E0 = (1 - tau) / sqrt((1 - tau)^2 + tau^2). Per set, per
+   output: rows of x-powers 7 down to 0 (albedo: 8), each of y-powers 5 (6) down to 0. */
 /* clang-format off */
 static const shli_real SHLI_GGX_FAST_FIT[606] = {
   48.234318, 14.083175, -77.58525, -9.565446, 24.94422, 2.18531, -17.115768, -5.204073, 28.152754,

@@ -826,17 +826,13 @@ static char *emit_text(void) {
   o += sprintf(o, "/* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its "
                   "--check */\n");
   o += sprintf(o,
-               "/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_fit[0] a / alpha, [1] g (c =\n"
-               "   a (mu + (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, cos theta_v)), [4] k (the\n"
-               "   magnitude's factor), each a polynomial of degree %d in x and %d in 2 mu - 1 (mu = n.v); [5] the\n"
-               "   directional albedo, E0 + r^2 times a polynomial of degree %d in x and %d in 2 tau - 1, tau =\n"
-               "   alpha sin(theta_v) / (mu + alpha sin(theta_v)), E0 = 1 / sqrt(1 + alpha^2 tan^2 theta_v) =\n"
-               "   (1 - tau) / sqrt((1 - tau)^2 + tau^2) (G2 at the mirror direction as alpha -> 0). Two sets:\n"
-               "   r = sqrt(alpha) > %g: x = 2 r - 1; r <= %g: x = 2 r / %g - 1, k = 1. SHLI_GGX_FAST_FIT: per\n"
-               "   set, per out_fit[0..4] %d rows (power %d of x first) of %d coefficients (power %d of 2 mu - 1\n"
-               "   first); then [5]'s %d rows of %d. */\n"
+               "/* The fit of shl_polygon_ggx_fast (docs/area-lights.md): out_fit[0..4] a / alpha, g (c =\n"
+               "   a (mu + (1 - mu) g)), d, P (the axis (-P sin theta_v, 0, mu)), k, each of degree %d in x and\n"
+               "   %d in y = 2 mu - 1; out_fit[5] the albedo E0 + r^2 p, p of degree %d in x and %d in 2 tau - 1,\n"
+               "   tau = alpha s / (mu + alpha s), E0 = (1 - tau) / sqrt((1 - tau)^2 + tau^2). Per set, per\n"
+               "   output: rows of x-powers %d down to 0 (albedo: %d), each of y-powers %d (%d) down to 0. */\n"
                ,
-               DI, DJ, AI, AJ, RS, RS, RL, DI + 1, DI, DJ + 1, DJ, AI + 1, AJ + 1);
+               DI, DJ, AI, AJ, DI, AI, DJ, AJ);
   o += sprintf(o, "/* clang-format off */\nstatic const shli_real SHLI_GGX_FAST_FIT[%d] = {\n",
                NTAB);
   col = 0;
