@@ -8,9 +8,17 @@
  *           the optimum (Nelder-Mead) of the 5 parameters at each of 17 x 15 grid points
  *           (roughness x view angle), 160 training quads each (~1.5 min)
  *   smooth: build/fit_ggx_fast smooth build/ggx_fast_points.txt tools/ggx_fast_coef.txt
- *           the albedo fit and the weighted least-squares polynomials through the points
+ *           the albedo fit and the weighted least-squares polynomials through the points: the
+ *           high set (roughness r >= 0.3; its low set left 0)
+ *   points low: build/fit_ggx_fast points low > build/ggx_fast_points_low.txt
+ *           the same on the low grid (19 roughness values, 0.01 to 0.4) with k held at 1 (~1 min)
+ *   smoothlow: build/fit_ggx_fast smoothlow build/ggx_fast_points_low.txt COEF_IN COEF_OUT
+ *           the low set (r <= 0.25; x = 2 r / 0.35 - 1, pinned at the alpha -> 0 limit), the
+ *           high set kept from COEF_IN; the kernel interpolates the two for 0.25 < r < 0.3
  *   check:  build/fit_ggx_fast check tools/ggx_fast_coef.txt
- *           median / p95 / max relative error and max error / albedo on the bench sampler
+ *           median / p95 / max relative error and max error / albedo on the bench sampler;
+ *           CHECK_R="r0,r1,..." checks other roughness values (TRY_RL, TRY_RS: other splits,
+ *           for experiments; emit writes them into the kernel)
  *   lm:     build/fit_ggx_fast lm COEF_IN COEF_OUT ITERATIONS
  *           Levenberg-Marquardt on all coefficients against every training quad (tried, not
  *           used: it lowered the training cost but raised the median at low roughness)
@@ -182,7 +190,7 @@ static void setup(int ir, double th, unsigned long long seed) {
 #define AJ 6
 static double CO[5][DI + 1][DJ + 1], CA[AI + 1][AJ + 1];
 /* the low-roughness set (r <= RS, in 2 r / RL - 1; see "the low-roughness set" below) */
-static double RL = 0.35, RS = 0.25, RB = 0.3; /* (TRY_RL, TRY_RS: other splits, for experiments) */
+static double RL = 0.35, RS = 0.25, RB = 0.3; /* TRY_RL, TRY_RS: other splits (experiments) */
 #define NRGL 19
 static const double RGL[NRGL] = {0.01, 0.0175, 0.025, 0.0325, 0.04, 0.05,  0.06,
                                  0.075, 0.09,  0.1,   0.125,  0.15, 0.175, 0.2,
