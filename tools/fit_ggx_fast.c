@@ -192,9 +192,8 @@ static double CO[5][DI + 1][DJ + 1], CA[AI + 1][AJ + 1];
 /* the low-roughness set (r <= RS, in 2 r / RL - 1; see "the low-roughness set" below) */
 static double RL = 0.35, RS = 0.25, RB = 0.3; /* TRY_RL, TRY_RS: other splits (experiments) */
 #define NRGL 19
-static const double RGL[NRGL] = {0.01, 0.0175, 0.025, 0.0325, 0.04, 0.05,  0.06,
-                                 0.075, 0.09,  0.1,   0.125,  0.15, 0.175, 0.2,
-                                 0.225, 0.25,  0.3,   0.35,   0.4};
+static const double RGL[NRGL] = {0.01,  0.0175, 0.025, 0.0325, 0.04,  0.05, 0.06, 0.075, 0.09, 0.1,
+                                 0.125, 0.15,   0.175, 0.2,    0.225, 0.25, 0.3,  0.35,  0.4};
 static double CL[5][DI + 1][DJ + 1], CAL[AI + 1][AJ + 1];
 
 static double e0(double tau) {
@@ -833,14 +832,18 @@ static char *emit_text(void) {
   }
   o += sprintf(o, "/* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its "
                   "--check */\n");
-  o += sprintf(o,
-               "/* The fit of shl_polygon_ggx_fast (docs/area-lights.md): out_fit[0..4] a / alpha, g (c =\n"
-               "   a (mu + (1 - mu) g)), d, P (the axis (-P sin theta_v, 0, mu)), k, each of degree %d in x and\n"
-               "   %d in y = 2 mu - 1; out_fit[5] the albedo E0 + r^2 p, p of degree %d in x and %d in 2 tau - 1,\n"
-               "   tau = alpha s / (mu + alpha s), E0 = (1 - tau) / sqrt((1 - tau)^2 + tau^2). Per set, per\n"
-               "   output: rows of x-powers %d down to 0 (albedo: %d), each of y-powers %d (%d) down to 0. */\n"
-               ,
-               DI, DJ, AI, AJ, DI, AI, DJ, AJ);
+  o += sprintf(
+      o,
+      "/* The fit of shl_polygon_ggx_fast (docs/area-lights.md): out_fit[0..4] a / alpha, g (c =\n"
+      "   a (mu + (1 - mu) g)), d, P (the axis (-P sin theta_v, 0, mu)), k, each of degree %d in x "
+      "and\n"
+      "   %d in y = 2 mu - 1; out_fit[5] the albedo E0 + r^2 p, p of degree %d in x and %d in 2 "
+      "tau - 1,\n"
+      "   tau = alpha s / (mu + alpha s), E0 = (1 - tau) / sqrt((1 - tau)^2 + tau^2). Per set, "
+      "per\n"
+      "   output: rows of x-powers %d down to 0 (albedo: %d), each of y-powers %d (%d) down to 0. "
+      "*/\n",
+      DI, DJ, AI, AJ, DI, AI, DJ, AJ);
   o += sprintf(o, "/* clang-format off */\nstatic const shli_real SHLI_GGX_FAST_FIT[%d] = {\n",
                NTAB);
   col = 0;
@@ -859,11 +862,13 @@ static char *emit_text(void) {
   o += sprintf(o, "/* sum_i sum_j SHLI_GGX_FAST_FIT[at + cols i + j] x^(rows - 1 - i) "
                   "y^(cols - 1 - j), Horner in y\n   inside Horner in x (rows, cols constant "
                   "once inlined: the loop unrolls) */\n");
-  o += sprintf(o, "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, "
-                  "int cols, shli_real x, shli_real y) {\n  shli_real u;\n  shli_real t = 0.0;\n"
-                  "  int i;\n  int a;\n  SHLIGHT_UNROLL(%d)\n  for (i = 0; i < rows; ++i) {\n"
-                  "    a = at + cols * i;\n    u = SHLI_GGX_FAST_FIT[a];\n",
-               (DI > AI ? DI : AI) + 1);
+  o += sprintf(
+      o,
+      "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, "
+      "int cols, shli_real x, shli_real y) {\n  shli_real u;\n  shli_real t = 0.0;\n"
+      "  int i;\n  int a;\n  SHLIGHT_UNROLL(%d)\n  for (i = 0; i < rows; ++i) {\n"
+      "    a = at + cols * i;\n    u = SHLI_GGX_FAST_FIT[a];\n",
+      (DI > AI ? DI : AI) + 1);
   for (j = 1; j <= (DJ > AJ ? DJ : AJ); ++j) {
     if (j > (DJ < AJ ? DJ : AJ))
       o += sprintf(o, "    if (cols > %d) {\n      u = SHLI_GGX_FAST_FIT[a + %d] + y * u;\n    }\n",
@@ -873,11 +878,12 @@ static char *emit_text(void) {
   }
   o += sprintf(o, "    t = u + x * t;\n  }\n  return t;\n}\n");
   o += sprintf(o, "/* one set at x: the high one (at 0) or the low one (at %d) */\n", NSET);
-  o += sprintf(o, "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE void shli_ggx_fast_set(int at, shli_real x, "
-                  "shli_real r, shli_real mu, shli_real tau,\n"
-                  "                                      shli_real *out_fit) {\n"
-                  "  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n"
-                  "  shli_real t = 1.0 - tau;\n");
+  o += sprintf(o,
+               "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE void shli_ggx_fast_set(int at, shli_real x, "
+               "shli_real r, shli_real mu, shli_real tau,\n"
+               "                                      shli_real *out_fit) {\n"
+               "  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n"
+               "  shli_real t = 1.0 - tau;\n");
   o += sprintf(o, "  out_fit[0] = shli_ggx_fast_poly(at, %d, %d, x, y);\n", DI + 1, DJ + 1);
   for (k = 1; k < 5; ++k)
     o += sprintf(o, "  out_fit[%d] = shli_ggx_fast_poly(at + %d, %d, %d, x, y);\n", k,
@@ -965,8 +971,8 @@ int main(int argc, char **argv) {
           if (fy < fx) memcpy(x, y, sizeof x), fx = fy;
         }
         memcpy(prev[it], x, sizeof x);
-        printf("%g %g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.4g\n", RGP[ir], TH[it], P.mu, P.alb, x[0],
-               x[1], x[2], x[3], x[4], sqrt(fx));
+        printf("%g %g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.4g\n", RGP[ir], TH[it], P.mu, P.alb,
+               x[0], x[1], x[2], x[3], x[4], sqrt(fx));
         fflush(stdout);
       }
     }
