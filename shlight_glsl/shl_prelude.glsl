@@ -24,6 +24,8 @@
 #define SHLIGHT_BY_BANDS 1
 #define SHLIGHT_FLAT_LOOPS 1
 #define SHLIGHT_SET3(o, a, b, c) o = vec3((a), (b), (c))
+#define SHLIGHT_UNROLL(k)
+#define SHLIGHT_ALWAYS_INLINE
 #ifndef SHLIGHT_BRDF_TABLE_FLOATS
 #define SHLIGHT_BRDF_TABLE_FLOATS (2 * 90 * SHLIGHT_MAX_COEFFS)
 #endif

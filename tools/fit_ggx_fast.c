@@ -8,15 +8,24 @@
  *           the optimum (Nelder-Mead) of the 5 parameters at each of 17 x 15 grid points
  *           (roughness x view angle), 160 training quads each (~1.5 min)
  *   smooth: build/fit_ggx_fast smooth build/ggx_fast_points.txt tools/ggx_fast_coef.txt
- *           the albedo fit and the weighted least-squares polynomials through the points
+ *           the albedo fit and the weighted least-squares polynomials through the points: the
+ *           high set (roughness r >= 0.3; its low set left 0)
+ *   points low: build/fit_ggx_fast points low > build/ggx_fast_points_low.txt
+ *           the same on the low grid (19 roughness values, 0.01 to 0.4) with k held at 1 (~1 min)
+ *   smoothlow: build/fit_ggx_fast smoothlow build/ggx_fast_points_low.txt COEF_IN COEF_OUT
+ *           the low set (r <= 0.25; x = 2 r / 0.35 - 1, pinned at the alpha -> 0 limit), the
+ *           high set kept from COEF_IN; the kernel interpolates the two for 0.25 < r < 0.3
  *   check:  build/fit_ggx_fast check tools/ggx_fast_coef.txt
- *           median / p95 / max relative error and max error / albedo on the bench sampler
+ *           median / p95 / max relative error and max error / albedo on the bench sampler;
+ *           CHECK_R="r0,r1,..." checks other roughness values (TRY_RL, TRY_RS: other splits,
+ *           for experiments; emit writes them into the kernel)
  *   lm:     build/fit_ggx_fast lm COEF_IN COEF_OUT ITERATIONS
  *           Levenberg-Marquardt on all coefficients against every training quad (tried, not
  *           used: it lowered the training cost but raised the median at low roughness)
  *   emit:   build/fit_ggx_fast emit tools/ggx_fast_coef.txt shlight.h
- *           writes shli_ggx_fast_fit between the @fit ggx_fast markers; then
- *           python3 tools/gen_basis.py (the GLSL twin) and python3 tools/gen_glsl_one.py
+ *           writes the packed table SHLI_GGX_FAST_FIT and its Horner loops (shli_ggx_fast_poly,
+ *           shli_ggx_fast_fit) between the @fit ggx_fast markers; then python3
+ *           tools/gen_basis.py (the GLSL twin) and python3 tools/gen_glsl_one.py
  *   --check build/fit_ggx_fast --check tools/ggx_fast_coef.txt shlight.h   (tests/run.sh)
  *
  * Training quads: tests/ref/ggxcases.h's sampler at a fixed view angle with its own seeds
@@ -37,6 +46,7 @@
 #define NTH 15
 static const double RG[NRG] = {0.01, 0.025, 0.05, 0.075, 0.1, 0.15, 0.2,  0.25, 0.3,
                                0.4,  0.5,   0.6,  0.7,   0.8, 0.9,  0.95, 1.0};
+static const double *RGP = RG; /* the grid `points` runs over (RGL for `points low`) */
 static const double TH[NTH] = {0, 10, 20, 30, 40, 50, 60, 65, 70, 75, 80, 83, 86, 88, 89};
 
 typedef struct {
@@ -65,6 +75,7 @@ static void p2m(const double *p, double alpha, double *m) {
   m[3] = p[3], m[4] = p[4];
 }
 static double prior[5];
+static int fixk; /* k held at 1 (`points low`) */
 static double obj(const double *p) {
   double sum = 0, mx = 0, m[5], reg = 0;
   int i;
@@ -75,6 +86,7 @@ static double obj(const double *p) {
     double q[5];
     memcpy(q, p, sizeof q);
     q[0] = exp(p[0]), q[4] = exp(p[4]); /* the optimiser works on the logs */
+    if (fixk) q[4] = 1;
     p2m(q, P.alpha, m);
   }
   for (i = 0; i < NQ; ++i) {
@@ -154,7 +166,7 @@ static void setup(int ir, double th, unsigned long long seed) {
   double n[3] = {0, 0, 1}, v[3];
   int i, k;
   rg.s = seed;
-  P.alpha = RG[ir] * RG[ir];
+  P.alpha = RGP[ir] * RGP[ir];
   P.mu = cos(th * 3.14159265358979323846 / 180);
   P.s = sin(th * 3.14159265358979323846 / 180);
   v[0] = P.s, v[1] = 0, v[2] = P.mu;
@@ -177,6 +189,12 @@ static void setup(int ir, double th, unsigned long long seed) {
 #define AI 8
 #define AJ 6
 static double CO[5][DI + 1][DJ + 1], CA[AI + 1][AJ + 1];
+/* the low-roughness set (r <= RS, in 2 r / RL - 1; see "the low-roughness set" below) */
+static double RL = 0.35, RS = 0.25, RB = 0.3; /* TRY_RL, TRY_RS: other splits (experiments) */
+#define NRGL 19
+static const double RGL[NRGL] = {0.01,  0.0175, 0.025, 0.0325, 0.04,  0.05, 0.06, 0.075, 0.09, 0.1,
+                                 0.125, 0.15,   0.175, 0.2,    0.225, 0.25, 0.3,  0.35,  0.4};
+static double CL[5][DI + 1][DJ + 1], CAL[AI + 1][AJ + 1];
 
 static double e0(double tau) {
   return (1 - tau) / sqrt((1 - tau) * (1 - tau) + tau * tau);
@@ -346,6 +364,13 @@ static void save(const char *fn) {
   for (i = 0; i <= AI; ++i)
     for (j = 0; j <= AJ; ++j)
       fprintf(f, "%.17g\n", CA[i][j]);
+  for (k = 0; k < 5; ++k)
+    for (i = 0; i <= DI; ++i)
+      for (j = 0; j <= DJ; ++j)
+        fprintf(f, "%.17g\n", CL[k][i][j]);
+  for (i = 0; i <= AI; ++i)
+    for (j = 0; j <= AJ; ++j)
+      fprintf(f, "%.17g\n", CAL[i][j]);
   fclose(f);
 }
 static void load(const char *fn) {
@@ -358,6 +383,13 @@ static void load(const char *fn) {
   for (i = 0; i <= AI; ++i)
     for (j = 0; j <= AJ; ++j)
       if (fscanf(f, "%lf", &CA[i][j]) != 1) exit(3);
+  for (k = 0; k < 5; ++k) /* the low set (absent in a file from `smooth`: left 0) */
+    for (i = 0; i <= DI; ++i)
+      for (j = 0; j <= DJ; ++j)
+        if (fscanf(f, "%lf", &CL[k][i][j]) != 1) CL[k][i][j] = 0;
+  for (i = 0; i <= AI; ++i)
+    for (j = 0; j <= AJ; ++j)
+      if (fscanf(f, "%lf", &CAL[i][j]) != 1) CAL[i][j] = 0;
   fclose(f);
 }
 
@@ -371,39 +403,215 @@ static double pct(double *a, int n, double p) {
   return a[(int)floor(p * (n - 1) + 0.5)];
 }
 
-/* the model on the bench sampler (seed 2017, 250 quads per roughness), against shl_polygon_ggx
-   and the long double albedo */
+/* ---- the low-roughness set (r <= RS): the same model shape with its own coefficients, in
+   xl = 2 r / RL - 1 instead of 2 r - 1, fitted to the points of `points low` (a finer grid,
+   r 0.01 to RL, with k held at 1: the low set's k is 1, so a quad that holds the whole lobe gets
+   exactly the albedo fit). As alpha -> 0 the GGX slope distribution has the cosine's gnomonic
+   shape (1 + |p|^2)^-2: the lobe tends to the cosine mapped by the reflection's Jacobian at the
+   mirror direction times alpha, a = 2 alpha, c = a mu, d = 0, P = 1; the fit is pinned there at
+   r = 0. */
+static double xlow(double r) {
+  return r * (2.0 / RL) - 1;
+}
+static void model_p_low(double r, double mu, double *p) {
+  int k, i, j;
+  double x = xlow(r), y = 2 * mu - 1;
+  for (k = 0; k < 5; ++k) {
+    double t = 0;
+    for (i = DI; i >= 0; --i) {
+      double u = 0;
+      for (j = DJ; j >= 0; --j)
+        u = u * y + CL[k][i][j];
+      t = t * x + u;
+    }
+    p[k] = t;
+  }
+}
+static double model_alb_low(double r, double mu) {
+  double al = r * r, s = sqrt(1 - mu * mu), tau = al * s / (mu + al * s), x = xlow(r), t = 0;
+  int i, j;
+  for (i = AI; i >= 0; --i) {
+    double u = 0;
+    for (j = AJ; j >= 0; --j)
+      u = u * (2 * tau - 1) + CAL[i][j];
+    t = t * x + u;
+  }
+  return e0(tau) + al * t;
+}
+/* the albedo of the low set: relative least squares on a 40 x 40 grid (r 0.005 to RL, view 0 to
+   89 deg) against the long double albedo */
+static void fit_albedo_low(void) {
+  enum { NR_ = 40, NT_ = 40 };
+  int m = NR_ * NT_, n = (AI + 1) * (AJ + 1), ir, it, i, j, row = 0;
+  double *A = malloc(sizeof(double) * (size_t)(m * n)), *b = malloc(sizeof(double) * (size_t)m),
+         x[(AI + 1) * (AJ + 1)], nrm[3] = {0, 0, 1}, emax = 0,
+         *E = malloc(sizeof(double) * (size_t)m), *R = malloc(sizeof(double) * (size_t)m),
+         *M = malloc(sizeof(double) * (size_t)m);
+  for (ir = 0; ir < NR_; ++ir)
+    for (it = 0; it < NT_; ++it) {
+      double r = 0.005 + (RL - 0.005) * ir / (NR_ - 1.0), th = 89 * pow(it / (NT_ - 1.0), 0.6);
+      double mu = cos(th * 3.14159265358979323846 / 180), s = sqrt(1 - mu * mu), al = r * r, v[3];
+      double tau = al * s / (mu + al * s), e, xi = 1;
+      v[0] = s, v[1] = 0, v[2] = mu;
+      e = (double)arref_ggx_albedo(nrm, v, al);
+      for (i = 0; i <= AI; ++i) {
+        for (j = 0; j <= AJ; ++j)
+          A[row * n + i * (AJ + 1) + j] = al * xi * pow(2 * tau - 1, j) / e;
+        xi *= xlow(r);
+      }
+      b[row] = (e - e0(tau)) / e;
+      E[row] = e, R[row] = r, M[row] = mu;
+      row++;
+    }
+  lsq(A, b, m, n, x);
+  for (i = 0; i <= AI; ++i)
+    for (j = 0; j <= AJ; ++j)
+      CAL[i][j] = (double)(float)x[i * (AJ + 1) + j];
+  {
+    double rb[3] = {0.0, 0.075, 0.15}, mxs[3] = {0, 0, 0};
+    int bb;
+    for (row = 0; row < m; ++row) {
+      double d = fabs(model_alb_low(R[row], M[row]) - E[row]) / E[row];
+      if (d > emax) emax = d;
+      for (bb = 2; bb >= 0; --bb)
+        if (R[row] >= rb[bb]) {
+          if (d > mxs[bb]) mxs[bb] = d;
+          break;
+        }
+    }
+    fprintf(stderr, "low albedo fit: max rel err %.2e; by r from 0, 0.075, 0.15: %.2e %.2e %.2e\n",
+            emax, mxs[0], mxs[1], mxs[2]);
+  }
+  free(A), free(b), free(E), free(R), free(M);
+}
+/* a / alpha, g, d, P of the low set: weighted least squares (weights 1 / (residual + 0.02)) with
+   the alpha -> 0 limit as 21 heavy points at r = 0, reweighted 4 times (points further than 3
+   median deviations count less: a stalled optimum does not pull the surface); k = 1 */
+static void fit_params_low(const char *fn) {
+  static const double LIM[4] = {2, 0, 0, 1};
+  FILE *f = fopen(fn, "r");
+  static double pr[2000], pm[2000], pv[2000][5], pw[2000], res[2000], tmp[2000];
+  int np = 0, n = (DI + 1) * (DJ + 1), k, i, j, row, it;
+  double th, alb, fx;
+  while (f && np < 1900 &&
+         fscanf(f, "%lf %lf %lf %lf %lf %lf %lf %lf %lf %lf", &pr[np], &th, &pm[np], &alb,
+                &pv[np][0], &pv[np][1], &pv[np][2], &pv[np][3], &pv[np][4], &fx) == 10) {
+    if (pr[np] > RL + 1e-9) continue;
+    pw[np] = 1 / (fx + 0.02);
+    if (th < 1e-9) pw[np] *= 0.01; /* the axis is free at normal view */
+    pv[np][0] = exp(pv[np][0]);
+    np++;
+  }
+  if (f) fclose(f);
+  for (i = 0; i < 21; ++i) {
+    pr[np] = 0, pm[np] = 0.02 + 0.98 * i / 20.0, pw[np] = 50;
+    for (k = 0; k < 4; ++k)
+      pv[np][k] = LIM[k];
+    np++;
+  }
+  for (k = 0; k < 4; ++k) {
+    double *A = malloc(sizeof(double) * (size_t)(np * n)), *b = malloc(sizeof(double) * (size_t)np),
+           x[(DI + 1) * (DJ + 1)], p[5], *rw = malloc(sizeof(double) * (size_t)np), med = 0, sc;
+    for (row = 0; row < np; ++row)
+      rw[row] = 1;
+    for (it = 0; it < 4; ++it) {
+      for (row = 0; row < np; ++row) {
+        for (i = 0; i <= DI; ++i)
+          for (j = 0; j <= DJ; ++j)
+            A[row * n + i * (DJ + 1) + j] =
+                rw[row] * pw[row] * pow(xlow(pr[row]), i) * pow(2 * pm[row] - 1, j);
+        b[row] = rw[row] * pw[row] * pv[row][k];
+      }
+      lsq(A, b, np, n, x);
+      for (i = 0; i <= DI; ++i)
+        for (j = 0; j <= DJ; ++j)
+          CL[k][i][j] = (double)(float)x[i * (DJ + 1) + j];
+      for (row = 0; row < np; ++row) {
+        model_p_low(pr[row], pm[row], p);
+        res[row] = fabs(p[k] - pv[row][k]);
+      }
+      memcpy(tmp, res, sizeof(double) * (size_t)np);
+      med = pct(tmp, np, 0.5);
+      sc = 3 * med + 1e-6;
+      for (row = 0; row < np; ++row)
+        rw[row] = res[row] < sc ? 1 : sc / res[row];
+    }
+    fprintf(stderr, "low param %d: %d points, median abs deviation %.3g\n", k, np, med);
+    free(A), free(b), free(rw);
+  }
+  memset(CL[4], 0, sizeof CL[4]);
+  CL[4][0][0] = 1;
+}
+/* the piecewise model: the low set for r <= RS, the high set for r >= RB, between them the
+   parameters and the albedo interpolated linearly in r (continuous in roughness) */
+static void model_fit(double r, double mu, double *p, double *alb) {
+  double q[5], w = (r - RS) / (RB - RS), e = 0;
+  int k;
+  if (w < 1) model_p_low(r, mu, p), *alb = model_alb_low(r, mu);
+  if (w > 0) {
+    model_p(r, mu, q), e = model_alb(r, mu);
+    if (w >= 1) w = 1, *alb = 0;
+    for (k = 0; k < 5; ++k)
+      p[k] = w >= 1 ? q[k] : p[k] + w * (q[k] - p[k]);
+    *alb = w >= 1 ? e : *alb + w * (e - *alb);
+  }
+}
+/* the model (model_fit) on the bench sampler (seed 2017, 250 quads per roughness
+   0.05 ... 1), against shl_polygon_ggx and the long double albedo; CHECK_R="r0,r1,..." checks
+   other roughness values, each on the quads of the nearest bench roughness */
 static void check(void) {
-  static const double RO[7] = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0};
+  static double RO[7] = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0}, cq[7][250][4][3], cv[7][250][3];
+  double rl[32];
+  int nrl = 0, ir, i, k;
+  const char *e = getenv("CHECK_R");
   ggxc_rng rg;
-  int ir, i, k;
   rg.s = 2017u;
-  for (ir = 0; ir < 7; ++ir) {
-    static double rel[250];
-    double emax = 0, al = (double)(float)(RO[ir] * RO[ir]);
-    int nv = 0;
+  for (ir = 0; ir < 7; ++ir)
     for (i = 0; i < 250; ++i) {
       ggxc_case cs;
-      float fq[4][3], fv[3], fn[3] = {0, 0, 1};
-      double q[4][3], nrm[3] = {0, 0, 1}, v[3], alb, gt, p[5], m[5], mu, s, got;
       ggxc_make(&rg, &cs, -1);
       for (k = 0; k < 12; ++k)
-        fq[k / 3][k % 3] = (float)cs.q[k / 3][k % 3], q[k / 3][k % 3] = fq[k / 3][k % 3];
+        cq[ir][i][k / 3][k % 3] = (float)cs.q[k / 3][k % 3];
       for (k = 0; k < 3; ++k)
-        fv[k] = (float)cs.view[k], v[k] = fv[k];
-      alb = (double)arref_ggx_albedo(nrm, v, al);
+        cv[ir][i][k] = (float)cs.view[k];
+    }
+  if (e)
+    while (*e && nrl < 32) {
+      char *e2;
+      rl[nrl++] = strtod(e, &e2);
+      e = *e2 == ',' ? e2 + 1 : e2;
+    }
+  else
+    for (nrl = 0; nrl < 7; ++nrl)
+      rl[nrl] = RO[nrl];
+  for (k = 0; k < nrl; ++k) {
+    static double rel[250];
+    double emax = 0, al = (double)(float)(rl[k] * rl[k]), r = sqrt(al);
+    int nv = 0, b = 0;
+    for (ir = 1; ir < 7; ++ir)
+      if (fabs(RO[ir] - rl[k]) < fabs(RO[b] - rl[k])) b = ir;
+    for (i = 0; i < 250; ++i) {
+      float fq[4][3], fv[3], fn[3] = {0, 0, 1};
+      double nrm[3] = {0, 0, 1}, alb, gt, p[5], m[5], mu, s, got, ea = 0;
+      int c;
+      for (c = 0; c < 12; ++c)
+        fq[c / 3][c % 3] = (float)cq[b][i][c / 3][c % 3];
+      for (c = 0; c < 3; ++c)
+        fv[c] = (float)cv[b][i][c];
+      alb = (double)arref_ggx_albedo(nrm, cv[b][i], al);
       gt = shl_polygon_ggx((const float(*)[3])fq, 4, fn, fv, (float)al);
-      mu = v[2] / sqrt(v[0] * v[0] + v[2] * v[2]);
+      mu = cv[b][i][2] / sqrt(cv[b][i][0] * cv[b][i][0] + cv[b][i][2] * cv[b][i][2]);
       s = sqrt(1 - mu * mu);
-      model_p(sqrt(al), mu, p);
+      model_fit(r, mu, p, &ea);
       gmu = mu;
       p2m(p, al, m);
-      got = m[4] * model_alb(sqrt(al), mu) * ltc((const double(*)[3])q, m, mu, s);
+      got = m[4] * ea * ltc((const double(*)[3])cq[b][i], m, mu, s);
       if (fabs(got - gt) / alb > emax) emax = fabs(got - gt) / alb;
       if (gt >= 0.05 * alb) rel[nv++] = fabs(got - gt) / gt;
     }
-    printf("r %.2f: vis %d rel median %.2e p95 %.2e max %.2e; max err/albedo %.3g\n", RO[ir], nv,
+    printf("r %.3f: vis %d rel median %.2e p95 %.2e max %.2e; max err/albedo %.3g\n", rl[k], nv,
            pct(rel, nv, 0.5), pct(rel, nv, 0.95), pct(rel, nv, 1), emax);
+    fflush(stdout);
   }
 }
 
@@ -561,61 +769,141 @@ static void lm(int iters) {
   free(res), free(r2);
 }
 
-/* ---- the kernel text: shli_ggx_fast_fit, straight-line Horner forms of the model above */
+/* ---- the kernel text: shli_ggx_fast_fit, Horner loops over the packed table SHLI_GGX_FAST_FIT */
+/* the shortest decimal that rounds to the same float as c (at most 9 digits), spelt without
+   an exponent where that is shorter: the float GLSL reads, and within 3e-8 of it in C */
 static void lit(char *o, double c) {
-  sprintf(o, "%.9e", c);
+  char e[32], dg[16];
+  int ex, nd = 0, k;
+  const char *p = e;
+  for (k = 0; k < 9; ++k) {
+    sprintf(e, "%.*e", k, c);
+    if ((float)strtod(e, NULL) == (float)c) break;
+  }
+  if (*p == '-') *o++ = *p++;
+  for (; *p != 'e'; ++p)
+    if (*p != '.') dg[nd++] = *p;
+  ex = atoi(p + 1);
+  while (nd > 1 && dg[nd - 1] == '0')
+    --nd;
+  if (ex < -4 || ex > nd + 2) { /* keep the exponent: d.ddd e+XX */
+    *o++ = dg[0], *o++ = '.';
+    if (nd == 1) *o++ = '0';
+    for (k = 1; k < nd; ++k)
+      *o++ = dg[k];
+    sprintf(o, "e%+03d", ex);
+    return;
+  }
+  if (ex < 0) {
+    *o++ = '0', *o++ = '.';
+    for (k = 0; k < -ex - 1; ++k)
+      *o++ = '0';
+    for (k = 0; k < nd; ++k)
+      *o++ = dg[k];
+  } else {
+    for (k = 0; k <= ex; ++k)
+      *o++ = k < nd ? dg[k] : '0';
+    *o++ = '.';
+    if (nd <= ex + 1) *o++ = '0';
+    for (k = ex + 1; k < nd; ++k)
+      *o++ = dg[k];
+  }
+  *o = 0;
 }
+/* the coefficients in the order the kernel reads them: per out_fit[k], k < 5, the DI + 1 rows
+   of r-power DI down to 0, each DJ + 1 coefficients of mu-power DJ down to 0; then the albedo's
+   AI + 1 rows of AJ + 1 */
+#define NSET (5 * (DI + 1) * (DJ + 1) + (AI + 1) * (AJ + 1))
+#define NTAB (2 * NSET)
 static char *emit_text(void) {
   static char buf[65536];
+  double tab[NTAB];
   char l1[64];
-  int k, i, j;
+  int k, i, j, n = 0, col, set;
   char *o = buf;
+  for (set = 0; set < 2; ++set) {
+    for (k = 0; k < 5; ++k)
+      for (i = DI; i >= 0; --i)
+        for (j = DJ; j >= 0; --j)
+          tab[n++] = set ? CL[k][i][j] : CO[k][i][j];
+    for (i = AI; i >= 0; --i)
+      for (j = AJ; j >= 0; --j)
+        tab[n++] = set ? CAL[i][j] : CA[i][j];
+  }
   o += sprintf(o, "/* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its "
                   "--check */\n");
-  o += sprintf(o,
-               "/* The fit of shl_polygon_ggx_fast (tools/fit_ggx_fast.c): out_fit[0] a / alpha, "
-               "[1] g (c =\n   a (mu + (1 - mu) g)), [2] d, [3] P (the axis (-P sin theta_v, 0, "
-               "cos theta_v)), [4] k\n   (the magnitude's factor), each a polynomial of degree "
-               "%d in 2 r - 1 (r = sqrt(alpha)) and\n   %d in 2 mu - 1 (mu = n.v); [5] the "
-               "directional albedo, E0 + r^2 times a polynomial of\n   degree %d in 2 r - 1 and "
-               "%d in 2 tau - 1, tau = alpha sin(theta_v) / (mu + alpha sin(theta_v)),\n   E0 = "
-               "(1 - tau) / sqrt((1 - tau)^2 + tau^2) = 1 / sqrt(1 + alpha^2 tan^2 theta_v) (G2 "
-               "at the\n   mirror direction as alpha -> 0). */\n",
-               DI, DJ, AI, AJ);
   o += sprintf(
-      o, "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,"
-         "\n                                      shli_real *out_fit) {\n  shli_real x = 2.0 * "
-         "r - 1.0;\n  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n  "
-         "shli_real u;\n  shli_real t;\n");
-  for (k = 0; k < 5; ++k) {
-    for (i = DI; i >= 0; --i) {
-      lit(l1, CO[k][i][DJ]);
-      o += sprintf(o, "  u = %s;\n", l1);
-      for (j = DJ - 1; j >= 0; --j) {
-        lit(l1, CO[k][i][j]);
-        o += sprintf(o, "  u = %s + y * u;\n", l1);
-      }
-      if (i == DI)
-        o += sprintf(o, "  t = u;\n");
-      else
-        o += sprintf(o, "  t = u + x * t;\n");
+      o,
+      "/* The fit of shl_polygon_ggx_fast (docs/area-lights.md): out_fit[0..4] a / alpha, g (c =\n"
+      "   a (mu + (1 - mu) g)), d, P (the axis (-P sin theta_v, 0, mu)), k, each of degree %d in x "
+      "and\n"
+      "   %d in y = 2 mu - 1; out_fit[5] the albedo E0 + r^2 p, p of degree %d in x and %d in 2 "
+      "tau - 1,\n"
+      "   tau = alpha s / (mu + alpha s), E0 = (1 - tau) / sqrt((1 - tau)^2 + tau^2). Per set, "
+      "per\n"
+      "   output: rows of x-powers %d down to 0 (albedo: %d), each of y-powers %d (%d) down to 0. "
+      "*/\n",
+      DI, DJ, AI, AJ, DI, AI, DJ, AJ);
+  o += sprintf(o, "/* clang-format off */\nstatic const shli_real SHLI_GGX_FAST_FIT[%d] = {\n",
+               NTAB);
+  col = 0;
+  for (i = 0; i < NTAB; ++i) {
+    int w;
+    lit(l1, tab[i]);
+    w = (int)strlen(l1) + (i + 1 < NTAB ? 1 : 0);
+    if (col > 0 && col + 1 + w > 100) {
+      o += sprintf(o, "\n");
+      col = 0;
     }
-    o += sprintf(o, "  out_fit[%d] = t;\n", k);
+    o += sprintf(o, "%s%s%s", col == 0 ? "  " : " ", l1, i + 1 < NTAB ? "," : "\n");
+    col += (col == 0 ? 2 : 1) + w;
   }
-  for (i = AI; i >= 0; --i) {
-    lit(l1, CA[i][AJ]);
-    o += sprintf(o, "  u = %s;\n", l1);
-    for (j = AJ - 1; j >= 0; --j) {
-      lit(l1, CA[i][j]);
-      o += sprintf(o, "  u = %s + z * u;\n", l1);
-    }
-    if (i == AI)
-      o += sprintf(o, "  t = u;\n");
+  o += sprintf(o, "};\n/* clang-format on */\n");
+  o += sprintf(o, "/* sum_i sum_j SHLI_GGX_FAST_FIT[at + cols i + j] x^(rows - 1 - i) "
+                  "y^(cols - 1 - j), Horner in y\n   inside Horner in x (rows, cols constant "
+                  "once inlined: the loop unrolls) */\n");
+  o += sprintf(
+      o,
+      "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, "
+      "int cols, shli_real x, shli_real y) {\n  shli_real u;\n  shli_real t = 0.0;\n"
+      "  int i;\n  int a;\n  SHLIGHT_UNROLL(%d)\n  for (i = 0; i < rows; ++i) {\n"
+      "    a = at + cols * i;\n    u = SHLI_GGX_FAST_FIT[a];\n",
+      (DI > AI ? DI : AI) + 1);
+  for (j = 1; j <= (DJ > AJ ? DJ : AJ); ++j) {
+    if (j > (DJ < AJ ? DJ : AJ))
+      o += sprintf(o, "    if (cols > %d) {\n      u = SHLI_GGX_FAST_FIT[a + %d] + y * u;\n    }\n",
+                   j, j);
     else
-      o += sprintf(o, "  t = u + x * t;\n");
+      o += sprintf(o, "    u = SHLI_GGX_FAST_FIT[a + %d] + y * u;\n", j);
   }
-  o += sprintf(
-      o, "  u = 1.0 - tau;\n  out_fit[5] = u / SHLIGHT_SQRTR(u * u + tau * tau) + r * r * t;\n}\n");
+  o += sprintf(o, "    t = u + x * t;\n  }\n  return t;\n}\n");
+  o += sprintf(o, "/* one set at x: the high one (at 0) or the low one (at %d) */\n", NSET);
+  o += sprintf(o,
+               "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE void shli_ggx_fast_set(int at, shli_real x, "
+               "shli_real r, shli_real mu, shli_real tau,\n"
+               "                                      shli_real *out_fit) {\n"
+               "  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n"
+               "  shli_real t = 1.0 - tau;\n");
+  o += sprintf(o, "  out_fit[0] = shli_ggx_fast_poly(at, %d, %d, x, y);\n", DI + 1, DJ + 1);
+  for (k = 1; k < 5; ++k)
+    o += sprintf(o, "  out_fit[%d] = shli_ggx_fast_poly(at + %d, %d, %d, x, y);\n", k,
+                 k * (DI + 1) * (DJ + 1), DI + 1, DJ + 1);
+  o += sprintf(o,
+               "  out_fit[5] =\n      t / SHLIGHT_SQRTR(t * t + tau * tau) + r * r * "
+               "shli_ggx_fast_poly(at + %d, %d, %d, x, z);\n}\n",
+               5 * (DI + 1) * (DJ + 1), AI + 1, AJ + 1);
+  o += sprintf(o,
+               "/* the low set for r <= %g, the high set for r >= %g, between them their outputs "
+               "interpolated\n   linearly in r (continuous in roughness) */\n"
+               "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,\n"
+               "                                      shli_real *out_fit) {\n"
+               "  shli_real hi[6];\n  shli_real w = (r - %g) / (%g - %g);\n  int i;\n"
+               "  if (w < 1.0) {\n    shli_ggx_fast_set(%d, r * (2.0 / %g) - 1.0, r, mu, tau, "
+               "out_fit);\n  }\n  if (w > 0.0) {\n    shli_ggx_fast_set(0, 2.0 * r - 1.0, r, mu, "
+               "tau, hi);\n    for (i = 0; i < 6; ++i) {\n      if (w < 1.0) {\n"
+               "        hi[i] = out_fit[i] + w * (hi[i] - out_fit[i]);\n      }\n"
+               "      out_fit[i] = hi[i];\n    }\n  }\n}\n",
+               RS, RB, RS, RB, RS, NSET, RL);
   o += sprintf(o, "/* @fit ggx_fast end */\n");
   return buf;
 }
@@ -654,10 +942,13 @@ static int region(const char *hdr, int w) {
 }
 
 int main(int argc, char **argv) {
+  if (getenv("TRY_RL")) RL = atof(getenv("TRY_RL"));
+  if (getenv("TRY_RS")) RS = atof(getenv("TRY_RS"));
   if (argc >= 2 && strcmp(argv[1], "points") == 0) {
-    int ir, it, lo = 0, hi = NRG;
+    int ir, it, lo = 0, hi = NRG, a = 2;
     static double prev[NTH][5];
-    if (argc >= 4) lo = atoi(argv[2]), hi = atoi(argv[3]);
+    if (argc >= 3 && strcmp(argv[2], "low") == 0) RGP = RGL, hi = NRGL, fixk = 1, a = 3;
+    if (argc >= a + 2) lo = atoi(argv[a]), hi = atoi(argv[a + 1]);
     for (ir = lo; ir < hi; ++ir) {
       for (it = 0; it < NTH; ++it) {
         double x[5], y[5], fx, fy;
@@ -680,8 +971,8 @@ int main(int argc, char **argv) {
           if (fy < fx) memcpy(x, y, sizeof x), fx = fy;
         }
         memcpy(prev[it], x, sizeof x);
-        printf("%g %g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.4g\n", RG[ir], TH[it], P.mu, P.alb, x[0],
-               x[1], x[2], x[3], x[4], sqrt(fx));
+        printf("%g %g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.4g\n", RGP[ir], TH[it], P.mu, P.alb,
+               x[0], x[1], x[2], x[3], x[4], sqrt(fx));
         fflush(stdout);
       }
     }
@@ -691,6 +982,13 @@ int main(int argc, char **argv) {
     fit_albedo();
     fit_params(argv[2]);
     save(argv[3]);
+    return 0;
+  }
+  if (argc >= 5 && strcmp(argv[1], "smoothlow") == 0) {
+    load(argv[3]);
+    fit_albedo_low();
+    fit_params_low(argv[2]);
+    save(argv[4]);
     return 0;
   }
   if (argc >= 3 && strcmp(argv[1], "check") == 0) {

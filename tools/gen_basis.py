@@ -734,6 +734,8 @@ def zh_table(nb):
 
 # tables the kernels read: mirrored into GLSL as the prefix for UNROLLED bands
 MIRRORED_TABLES = {'SHLI_ZH_TAB': lambda: zh_table(UNROLLED)}
+# tables the kernels read whose GLSL twin takes the C values as written (fitted coefficients)
+VERBATIM_TABLES = ('SHLI_GGX_FAST_FIT',)
 
 
 def gen_lane_table():
@@ -991,6 +993,15 @@ def split_items(lines):
             while lines[k] != '};':
                 k += 1
             items.append(('mtab', name, fmt_table('float', name, '%d' % len(vals), vals, lit_d, True)))
+            i = k + 1
+        elif ln.startswith('static const ') and re.match(r'static const \w+ (\w+)\[', ln).group(1) \
+                in VERBATIM_TABLES:
+            m = re.match(r'static const \w+ (\w+)\[(\d+)\] = \{$', ln)
+            k = i + 1
+            while lines[k] != '};':
+                k += 1
+            body = ['const float %s[%s] = float[%s](' % (m.group(1), m.group(2), m.group(2))]
+            items.append(('mtab', m.group(1), body + lines[i + 1:k] + [');']))
             i = k + 1
         elif ln.startswith('SHLIGHT_CPU_INLINE ') or ln.startswith('static const '):
             # C-only: the run-time loops and their tables (GLSL stops at UNROLLED bands)
