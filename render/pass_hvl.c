@@ -78,6 +78,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #define HVL_PI 3.14159265358979323846
 #define HVL_STRIDE 15   /* floats per light in the set: y, n_s, Phi, n_g, r_nb, r_fov, dist */
@@ -1111,6 +1114,89 @@ static inline void gt_lambert(const gt_patches *gp, int j, double eps, const dou
 
 #define GT_PK 8 /* Lambert pixels that share one pass over the patches */
 
+#if defined(__SSE2__)
+/* gt_lambert for patch j at GT_PK pixels (nq of them used; the others copy pixel 0 and are
+   dropped), two per SSE2 vector: per lane the far-field operations of gt_lambert in the same
+   order (no contraction: -ffp-contract=off), a lane that skips the patch adds phi * 0 = +0 to a
+   sum that is +0 or positive, and a lane near the patch takes gt_lambert itself, so every sum
+   is bit for bit the scalar loop's. E: the sums, [pair][channel] */
+static void gt_lambert_pk(const gt_patches *gp, int nq, double eps, double (*qx)[3],
+                          double (*qn)[3], double (*qg)[3], double (*qe)[3]) {
+  const __m128d zero = _mm_setzero_pd(), ve = _mm_set1_pd(eps), sgn = _mm_set1_pd(-0.0);
+  __m128d X[GT_PK / 2][3], N[GT_PK / 2][3], G[GT_PK / 2][3], E[GT_PK / 2][3];
+  double tmp[6];
+  int j, h, c, t;
+  for (h = 0; h < GT_PK / 2; h++)
+    for (c = 0; c < 3; c++) {
+      int a = 2 * h < nq ? 2 * h : 0, b = 2 * h + 1 < nq ? 2 * h + 1 : 0;
+      X[h][c] = _mm_set_pd(qx[b][c], qx[a][c]);
+      N[h][c] = _mm_set_pd(qn[b][c], qn[a][c]);
+      G[h][c] = _mm_set_pd(qg[b][c], qg[a][c]);
+      E[h][c] = zero;
+    }
+  for (j = 0; j < gp->n; j++) {
+    const double *p = gp->p + 3 * j, *ns = gp->ns + 3 * j, *phi = gp->phi + 3 * j;
+    const double *ng = gp->ng + 3 * j;
+    const __m128d p0 = _mm_set1_pd(p[0]), p1 = _mm_set1_pd(p[1]), p2 = _mm_set1_pd(p[2]);
+    const __m128d ng0 = _mm_set1_pd(ng[0]), ng1 = _mm_set1_pd(ng[1]), ng2 = _mm_set1_pd(ng[2]);
+    const __m128d near2 = _mm_set1_pd(gp->near2[j]);
+    for (h = 0; h < (nq + 1) / 2; h++) {
+      __m128d dx = _mm_sub_pd(p0, X[h][0]), dy = _mm_sub_pd(p1, X[h][1]);
+      __m128d dz = _mm_sub_pd(p2, X[h][2]);
+      __m128d d2 =
+          _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
+      __m128d a = _mm_xor_pd(
+          _mm_add_pd(_mm_add_pd(_mm_mul_pd(ng0, dx), _mm_mul_pd(ng1, dy)), _mm_mul_pd(ng2, dz)),
+          sgn);
+      __m128d b = _mm_add_pd(_mm_add_pd(_mm_mul_pd(G[h][0], dx), _mm_mul_pd(G[h][1], dy)),
+                             _mm_mul_pd(G[h][2], dz));
+      __m128d gate = _mm_and_pd(_mm_cmpgt_pd(a, ve), _mm_cmpgt_pd(b, ve));
+      __m128d nr = _mm_and_pd(gate, _mm_cmplt_pd(d2, near2));
+      __m128d cy, cx, ok, gf;
+      int mg = _mm_movemask_pd(gate), mn;
+      if (mg == 0) continue;
+      mn = _mm_movemask_pd(nr);
+      if (mn) { /* near the patch: the exact quad, gt_lambert itself, for those lanes */
+        for (c = 0; c < 3; c++)
+          _mm_storeu_pd(tmp + 2 * c, E[h][c]);
+        for (t = 0; t < 2; t++)
+          if ((mn >> t & 1) && 2 * h + t < nq) {
+            double e[3];
+            for (c = 0; c < 3; c++)
+              e[c] = tmp[2 * c + t];
+            gt_lambert(gp, j, eps, qx[2 * h + t], qn[2 * h + t], qg[2 * h + t], e);
+            for (c = 0; c < 3; c++)
+              tmp[2 * c + t] = e[c];
+          }
+        for (c = 0; c < 3; c++)
+          E[h][c] = _mm_loadu_pd(tmp + 2 * c);
+        if (mn == mg) continue;
+      }
+      cy = _mm_xor_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_set1_pd(ns[0]), dx),
+                                            _mm_mul_pd(_mm_set1_pd(ns[1]), dy)),
+                                 _mm_mul_pd(_mm_set1_pd(ns[2]), dz)),
+                      sgn);
+      cx = _mm_add_pd(_mm_add_pd(_mm_mul_pd(N[h][0], dx), _mm_mul_pd(N[h][1], dy)),
+                      _mm_mul_pd(N[h][2], dz));
+      ok = _mm_andnot_pd(nr, gate);
+      ok = _mm_and_pd(ok, _mm_and_pd(_mm_cmpgt_pd(cy, zero), _mm_cmpgt_pd(cx, zero)));
+      ok = _mm_and_pd(ok, _mm_cmpgt_pd(d2, zero));
+      if (_mm_movemask_pd(ok) == 0) continue;
+      gf = _mm_and_pd(ok, _mm_div_pd(_mm_mul_pd(cy, cx), _mm_mul_pd(d2, d2)));
+      E[h][0] = _mm_add_pd(E[h][0], _mm_mul_pd(_mm_set1_pd(phi[0]), gf));
+      E[h][1] = _mm_add_pd(E[h][1], _mm_mul_pd(_mm_set1_pd(phi[1]), gf));
+      E[h][2] = _mm_add_pd(E[h][2], _mm_mul_pd(_mm_set1_pd(phi[2]), gf));
+    }
+  }
+  for (h = 0; h < (nq + 1) / 2; h++)
+    for (c = 0; c < 3; c++) {
+      _mm_storeu_pd(tmp + 2 * c, E[h][c]);
+      for (t = 0; t < 2; t++)
+        if (2 * h + t < nq) qe[2 * h + t][c] = tmp[2 * c + t];
+    }
+}
+#endif
+
 static void gt_shade(void *ctx, long lo, long hi) {
   const gt_job *jb = (const gt_job *)ctx;
   const rd_run *run = jb->run;
@@ -1139,9 +1225,13 @@ static void gt_shade(void *ctx, long lo, long hi) {
       if (nq < GT_PK && px + 1 < (int)hi) continue;
     }
     if (nq > 0) {
+#if defined(__SSE2__)
+      gt_lambert_pk(gp, nq, eps, qx, qn, qg, qe);
+#else
       for (j = 0; j < gp->n; j++)
         for (t = 0; t < nq; t++)
           gt_lambert(gp, j, eps, qx[t], qn[t], qg[t], qe[t]);
+#endif
       for (t = 0; t < nq; t++) {
         int mt = gb->mat[qp[t]];
         for (c = 0; c < 3; c++)
