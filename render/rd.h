@@ -218,8 +218,9 @@ double rd_parallel(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), 
  * gate keeps what is timed by the wall clock quiet. Work that may overlap others (the JIT, a
  * piece of rd_parallel) runs between rd_gate_enter(0) and rd_gate_leave(0), any number at
  * once; a timed section (the GL draws, the grid build) between rd_gate_enter(1) and
- * rd_gate_leave(1), alone: it waits until no piece runs (new pieces may start meanwhile: the
- * CPUs stay busy), and pieces wait while it runs.
+ * rd_gate_leave(1), alone: it waits until no piece runs (new compiles may start meanwhile: the
+ * CPUs stay busy; new rows of rd_parallel, entered with rd_gate_enter(2), wait for it: a row is
+ * short), and pieces wait while it runs.
  * Without rd_gate_share() (one process) these do nothing. rd_gate_share: 0, or -1 when the
  * shared memory is refused. rd_gate_renderer: 256 shared bytes (NULL without the gate). */
 int rd_gate_share(void);
