@@ -75,6 +75,7 @@
 #include "../shlight.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -1305,7 +1306,7 @@ static void gt_shade(void *ctx, long lo, long hi) {
 
 /* the gt image on rd_threads() threads; *ms: the CPU ms of all of them */
 static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, int N, double eps,
-                    float *rgb, int *npatch, double *ms) {
+                    float *rgb, int *npatch, double *ms, int bg) {
   double t0 = rd_cpu_ms();
   gt_patches gp;
   gt_job jb;
@@ -1318,11 +1319,39 @@ static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, in
   jb.eps = eps;
   jb.rgb = rgb;
   t0 = rd_cpu_ms() - t0; /* the patches, on this thread */
-  t0 += rd_parallel((long)run->gb->w * run->gb->h, run->gb->w, gt_shade, &jb, label);
+  t0 += (bg ? rd_parallel_bg : rd_parallel)((long)run->gb->w * run->gb->h, run->gb->w, gt_shade,
+                                            &jb, label);
   if (ms) *ms = t0;
   if (npatch) *npatch = gp.n;
   gt_free(&gp);
   return 0;
+}
+
+/* the ground truth and its N / 2 twin, on a thread of its own beside the methods (rd_bg_ok) or
+   inline; what the pass prints of it is printed once it is joined */
+typedef struct {
+  const rd_run *run;
+  const hv_brdf *B;
+  const spot_view *sv;
+  int n1, bg, rc, half_ok, np1, np2;
+  double eps, ms, ms2, wall; /* ms: the N image's CPU ms (its table entry), ms2 the N / 2 one's */
+  float *gt, *half;
+} gt_task;
+
+static void *gt_task_run(void *a) {
+  gt_task *t = (gt_task *)a;
+  rd_tm t0 = rd_tm_now();
+  double c0;
+  if (t->bg) rd_thread_nice();
+  c0 = rd_cpu_ms();
+  t->rc = gt_image(t->run, t->B, t->sv, t->n1, t->eps, t->gt, &t->np1, &t->ms, t->bg);
+  if (!t->rc)
+    t->half_ok =
+        gt_image(t->run, t->B, t->sv, t->n1 / 2, t->eps, t->half, &t->np2, &t->ms2, t->bg) == 0;
+  /* this thread's own CPU time (the patches) is background work too; the rows count theirs */
+  if (t->bg) rd_bg_add_cpu(rd_cpu_ms() - c0);
+  t->wall = rd_tm_now().wall - t0.wall;
+  return NULL;
 }
 
 /* ---- error statistics ----------------------------------------------------------------------- */
@@ -1393,8 +1422,13 @@ int rd_pass_hvl(rd_run *run) {
   int *sel = NULL;
   size_t npx, nb;
   float eps;
-  float *gt = NULL;
-  int i, method, rc = 0, rsm = env_int("SHLIGHT_HVL_RSM", 16, 2, 1024);
+  float *gt = NULL, *cpu = NULL;
+  int i, method, rc = 0, rsm = env_int("SHLIGHT_HVL_RSM", 16, 2, 1024), gt_started = 0;
+  gt_task gtt;
+  pthread_t gth;
+  rd_image cimg[M_COUNT], gimg[M_COUNT];
+  double cms[M_COUNT], gms[M_COUNT];
+  size_t mem[M_COUNT];
   for (i = 0; i < s->nlights; i++)
     if (s->lights[i].type == RD_LIGHT_SPOT) {
       l = &s->lights[i];
@@ -1446,73 +1480,56 @@ int rd_pass_hvl(rd_run *run) {
            rsm, ls.count, run->bands, ls.count ? r1 / ls.count : 0.0,
            ls.count ? r2 / ls.count : 0.0);
   }
-  /* ground truth first: the statistics of the methods need it */
+  /* the ground truth: on a thread of its own while the methods run (the pass processes run at
+     the same time: their GL work goes first), else here; the statistics, which need it, are
+     printed once it is joined, in the order of before */
+  memset(&gtt, 0, sizeof gtt);
+  memset(cimg, 0, sizeof cimg);
+  memset(gimg, 0, sizeof gimg);
   if (run->gt) {
-    int n1 = env_int("SHLIGHT_HVL_GT", run->gt >= 2 ? 512 : 128, 4, 4096), np1 = 0, np2 = 0;
-    float *half = (float *)malloc(nb);
-    double gms = 0.0, p99, mx, rmse;
-    rd_tm tm = rd_tm_now();
-    gt = (float *)malloc(nb);
-    if (!gt || !half || gt_image(run, &B, &sv, n1, (double)eps, gt, &np1, &gms)) {
-      free(half);
-      free(gt);
-      free(ls.buf);
-      free(sel);
-      hv_brdf_free(&B);
-      fprintf(stderr, "hvl: ground truth failed\n");
-      return -1;
-    }
-    if (gt_image(run, &B, &sv, n1 / 2, (double)eps, half, &np2, NULL) == 0) {
-      err_stats(gb, half, gt, &p99, &mx, &rmse);
-      printf("hvl gt convergence: RSM %dx%d (%d patches) vs %dx%d (%d patches): "
-             "rmse/peak %.3g, p99 %.3g, max %.3g (the error of the coarse one; second order)\n",
-             n1 / 2, n1 / 2, np2, n1, n1, np1, rmse, p99, mx);
-    }
-    free(half);
-    rd_tm_add(RD_TM_GT, tm);
-    {
-      rd_image im = rd_image_new(gb->w, gb->h);
-      if (im.rgb) {
-        memcpy(im.rgb, gt, nb);
-        rd_emit(run, "hvl", "gt", "gt", im, gms, 0, 0);
+    gtt.run = run;
+    gtt.B = &B;
+    gtt.sv = &sv;
+    gtt.n1 = env_int("SHLIGHT_HVL_GT", run->gt >= 2 ? 512 : 128, 4, 4096);
+    gtt.eps = (double)eps;
+    gtt.gt = (float *)malloc(nb);
+    gtt.half = (float *)malloc(nb);
+    gtt.rc = -1;
+    if (gtt.gt && gtt.half) {
+      gtt.bg = rd_bg_ok();
+      if (gtt.bg && pthread_create(&gth, NULL, gt_task_run, &gtt) == 0) {
+        gt_started = 1;
+      } else {
+        gtt.bg = 0;
+        gt_task_run(&gtt);
       }
     }
   }
-  for (method = 0; method < M_COUNT; method++) {
+  for (method = 0; method < M_COUNT && rc == 0; method++) {
     float *b = method_buffer(&ls, method);
-    size_t mem = (size_t)ls.count * (size_t)method_stride[method] * sizeof(float);
-    float *cpu = NULL;
     if (!b) {
       rc = -1;
       break;
     }
+    mem[method] = (size_t)ls.count * (size_t)method_stride[method] * sizeof(float);
     if (run->use_cpu) {
-      double t[64], ms;
+      double t[64];
       int r, reps = run->reps < 1 ? 1 : run->reps > 64 ? 64 : run->reps;
-      rd_image im = rd_image_new(gb->w, gb->h);
-      if (!im.rgb) {
+      cimg[method] = rd_image_new(gb->w, gb->h);
+      if (!cimg[method].rgb) {
         free(b);
         rc = -1;
         break;
       }
       for (r = 0; r < reps; r++) {
-        t[r] = shade_cpu(run, &B, method, b, ls.count, eps, im.rgb);
+        t[r] = shade_cpu(run, &B, method, b, ls.count, eps, cimg[method].rgb);
         if (t[r] > 2000.0) { /* slow: one timing is enough */
           reps = r + 1;
           break;
         }
       }
       qsort(t, (size_t)reps, sizeof(double), cmp_d);
-      ms = t[reps / 2];
-      cpu = (float *)malloc(nb);
-      if (cpu) memcpy(cpu, im.rgb, nb);
-      if (gt) {
-        double p99, mx, rmse;
-        err_stats(gb, im.rgb, gt, &p99, &mx, &rmse);
-        printf("hvl %-15s cpu: |m - gt|/peak p99 %.4f max %.4f (rmse/peak %.4f)\n",
-               method_name[method], p99, mx, rmse);
-      }
-      rd_emit(run, "hvl", method_name[method], "cpu", im, ms, mem, 0);
+      cms[method] = t[reps / 2];
     }
     if (run->use_gl) {
       rd_image im = rd_image_new(gb->w, gb->h);
@@ -1526,27 +1543,80 @@ int rd_pass_hvl(rd_run *run) {
         rd_image_free(&im);
         rc = -1;
       } else {
-        if (gt) {
-          double p99, mx, rmse;
-          err_stats(gb, im.rgb, gt, &p99, &mx, &rmse);
-          printf("hvl %-15s gl:  |m - gt|/peak p99 %.4f max %.4f (rmse/peak %.4f)\n",
-                 method_name[method], p99, mx, rmse);
-        }
-        if (cpu) {
-          double p99, mx, rmse;
-          err_stats(gb, im.rgb, cpu, &p99, &mx, &rmse);
-          printf("hvl %-15s gl vs cpu: max/peak %.3g\n", method_name[method], mx);
-        }
-        if (sel)
-          rd_emit_sel(run, "hvl", method_name[method], "gl", im, ms, mem, method_tol[method], sel,
-                      s->nmats, method_tol_brdf[method], "brdf-table");
-        else
-          rd_emit(run, "hvl", method_name[method], "gl", im, ms, mem, method_tol[method]);
+        gimg[method] = im;
+        gms[method] = ms;
       }
     }
-    free(cpu);
     free(b);
   }
+  if (gt_started) pthread_join(gth, NULL);
+  if (run->gt) {
+    if (gtt.rc) {
+      fprintf(stderr, "hvl: ground truth failed\n");
+      rc = -1;
+    } else {
+      double p99, mx, rmse;
+      if (gtt.half_ok) {
+        err_stats(gb, gtt.half, gtt.gt, &p99, &mx, &rmse);
+        printf("hvl gt convergence: RSM %dx%d (%d patches) vs %dx%d (%d patches): "
+               "rmse/peak %.3g, p99 %.3g, max %.3g (the error of the coarse one; second order)\n",
+               gtt.n1 / 2, gtt.n1 / 2, gtt.np2, gtt.n1, gtt.n1, gtt.np1, rmse, p99, mx);
+      }
+      rd_tm_add_ms(RD_TM_GT, gtt.wall, gtt.ms + gtt.ms2);
+      gt = gtt.gt;
+      gtt.gt = NULL;
+      {
+        rd_image im = rd_image_new(gb->w, gb->h);
+        if (im.rgb) {
+          memcpy(im.rgb, gt, nb);
+          rd_emit(run, "hvl", "gt", "gt", im, gtt.ms, 0, 0);
+        }
+      }
+    }
+  }
+  for (method = 0; method < M_COUNT && rc == 0; method++) {
+    if (cimg[method].rgb) {
+      if (gt) {
+        double p99, mx, rmse;
+        err_stats(gb, cimg[method].rgb, gt, &p99, &mx, &rmse);
+        printf("hvl %-15s cpu: |m - gt|/peak p99 %.4f max %.4f (rmse/peak %.4f)\n",
+               method_name[method], p99, mx, rmse);
+      }
+      cpu = (float *)malloc(nb);
+      if (cpu) memcpy(cpu, cimg[method].rgb, nb);
+      rd_emit(run, "hvl", method_name[method], "cpu", cimg[method], cms[method], mem[method], 0);
+      cimg[method].rgb = NULL;
+    }
+    if (gimg[method].rgb) {
+      rd_image im = gimg[method];
+      gimg[method].rgb = NULL;
+      if (gt) {
+        double p99, mx, rmse;
+        err_stats(gb, im.rgb, gt, &p99, &mx, &rmse);
+        printf("hvl %-15s gl:  |m - gt|/peak p99 %.4f max %.4f (rmse/peak %.4f)\n",
+               method_name[method], p99, mx, rmse);
+      }
+      if (cpu) {
+        double p99, mx, rmse;
+        err_stats(gb, im.rgb, cpu, &p99, &mx, &rmse);
+        printf("hvl %-15s gl vs cpu: max/peak %.3g\n", method_name[method], mx);
+      }
+      if (sel)
+        rd_emit_sel(run, "hvl", method_name[method], "gl", im, gms[method], mem[method],
+                    method_tol[method], sel, s->nmats, method_tol_brdf[method], "brdf-table");
+      else
+        rd_emit(run, "hvl", method_name[method], "gl", im, gms[method], mem[method],
+                method_tol[method]);
+    }
+    free(cpu);
+    cpu = NULL;
+  }
+  for (method = 0; method < M_COUNT; method++) {
+    rd_image_free(&cimg[method]);
+    rd_image_free(&gimg[method]);
+  }
+  free(gtt.gt);
+  free(gtt.half);
   free(gt);
   free(ls.buf);
   free(sel);

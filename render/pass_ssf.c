@@ -82,6 +82,7 @@
 #include "../shlight.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -472,7 +473,7 @@ static void gt_rows(void *ctx, long lo, long hi) {
 
 /* the gt image on rd_threads() threads; *ms: the CPU ms of all of them */
 static int gt_render(const rd_run *run, const rd_light *l, int N, double dmin, const char *label,
-                     rd_image *out, double *ms) {
+                     rd_image *out, double *ms, int bg) {
   const rd_gbuf *gb = run->gb;
   const rd_scene *s = run->scene;
   int j, nv = 0, c;
@@ -508,7 +509,7 @@ static int gt_render(const rd_run *run, const rd_light *l, int N, double dmin, c
   jb.dm2 = dm2;
   jb.rgb = out->rgb;
   t0 = rd_cpu_ms() - t0; /* the VPLs, on this thread */
-  t0 += rd_parallel((long)gb->w * gb->h, gb->w, gt_rows, &jb, label);
+  t0 += (bg ? rd_parallel_bg : rd_parallel)((long)gb->w * gb->h, gb->w, gt_rows, &jb, label);
   if (ms) *ms = t0;
   free(v);
   return 0;
@@ -754,6 +755,57 @@ static void print_regions(const rd_image *img, const rd_image *gt, const rd_imag
            method, path, c.rmse, c.psnr, c.ssim, d.rmse, d.psnr, d.ssim);
 }
 
+/* the ground truth and its N / 2 twin, on a thread of its own beside the CPU and GL paths
+   (rd_bg_ok) or inline; what the pass prints of it is printed once it is joined */
+typedef struct {
+  const rd_run *run;
+  const rd_light *spot;
+  int N, bg, rc;
+  double dmin, ms, wall, cpu; /* ms: the gt's own (printed); wall, cpu: both images (--timings) */
+  rd_image gt, half;
+} gt_task;
+
+static void *gt_task_run(void *a) {
+  gt_task *t = (gt_task *)a;
+  char label[32];
+  rd_tm t0 = rd_tm_now();
+  double c0, ms2 = 0.0;
+  if (t->bg) rd_thread_nice();
+  c0 = rd_cpu_ms();
+  snprintf(label, sizeof label, "ssf gt %d^2", t->N);
+  t->rc = gt_render(t->run, t->spot, t->N, t->dmin, label, &t->gt, &t->ms, t->bg);
+  snprintf(label, sizeof label, "ssf gt %d^2", t->N / 2);
+  if (!t->rc) t->rc = gt_render(t->run, t->spot, t->N / 2, t->dmin, label, &t->half, &ms2, t->bg);
+  /* this thread's own CPU time (the VPLs) is background work too; the rows count theirs */
+  if (t->bg) rd_bg_add_cpu(rd_cpu_ms() - c0);
+  t->wall = rd_tm_now().wall - t0.wall;
+  t->cpu = t->ms + ms2; /* gt_render's: the VPLs and the rows */
+  return NULL;
+}
+
+/* waits for the ground truth (a thread of its own: *started), prints its convergence, counts
+   its time, hands the image to *gt; 0 or -1 */
+static int gt_join(gt_task *t, pthread_t *th, int *started, const rd_gbuf *gb, rd_image *gt) {
+  if (*started) pthread_join(*th, NULL);
+  *started = 0;
+  if (t->rc) {
+    rd_image_free(&t->gt);
+    rd_image_free(&t->half);
+    return -1;
+  }
+  {
+    rd_metrics d = rd_compare(&t->half, &t->gt, gb->mat);
+    printf("ssf gt: %d x %d RSM, %.0f ms; the %d x %d RSM differs by RMSE %.3g (PSNR %.1f dB): "
+           "the gt's discretisation error is below that\n",
+           t->N, t->N, t->ms, t->N / 2, t->N / 2, d.rmse, d.psnr);
+  }
+  rd_image_free(&t->half);
+  rd_tm_add_ms(RD_TM_GT, t->wall, t->cpu);
+  *gt = t->gt;
+  t->gt.rgb = NULL;
+  return 0;
+}
+
 /* ---- the pass ------------------------------------------------------------------------------ */
 /* max |gl - cpu| / peak accepted: 3.3 x the worst measured on llvmpipe (3.1e-7: cornell and
    spheres, 64x48 and 256x256, 3 and 5 bands; GLSL runs the kernels' double parts in float) */
@@ -771,6 +823,9 @@ int rd_pass_ssf(rd_run *run) {
   size_t nn, mem_v, mem[M_COUNT];
   rd_image gt = {0, 0, NULL}, cpu_img[M_COUNT], keep[M_COUNT];
   const char *fe = getenv("SHLIGHT_SSF_CLAMP");
+  gt_task gtt;
+  pthread_t gth;
+  int gt_started = 0;
   for (i = 0; i < s->nlights; i++)
     if (s->lights[i].type == RD_LIGHT_SPOT) {
       spot = &s->lights[i];
@@ -789,6 +844,7 @@ int rd_pass_ssf(rd_run *run) {
   nv = N * N;
   memset(cpu_img, 0, sizeof cpu_img);
   memset(keep, 0, sizeof keep);
+  memset(&gtt, 0, sizeof gtt);
   vpl = (float *)malloc((size_t)nv * SSF_STRIDE * sizeof(float));
   bump = (int *)malloc((size_t)npx * sizeof(int));
   plain = (int *)malloc((size_t)npx * sizeof(int));
@@ -806,24 +862,20 @@ int rd_pass_ssf(rd_run *run) {
   printf("ssf: %d x %d RSM = %d VPLs, %d x %d interleaved (%d per pixel), %d bands (%d SH floats "
          "per pixel), clamp %.4g\n",
          N, N, nv, SSF_NI, SSF_MI, nv / (SSF_NI * SSF_MI), n, (int)(3 * nn), (double)dmin);
-  /* ground truth */
+  /* ground truth: on a thread of its own while the CPU and GL paths run (the pass processes
+     run at the same time), else here; joined below */
   if (run->gt) {
-    rd_image half;
-    double gms = 0.0;
-    char label[32];
-    rd_tm tm = rd_tm_now();
-    snprintf(label, sizeof label, "ssf gt %d^2", Ngt);
-    if (gt_render(run, spot, Ngt, (double)dmin, label, &gt, &gms)) goto done;
-    snprintf(label, sizeof label, "ssf gt %d^2", Ngt / 2);
-    if (gt_render(run, spot, Ngt / 2, (double)dmin, label, &half, NULL)) goto done;
-    {
-      rd_metrics d = rd_compare(&half, &gt, gb->mat);
-      printf("ssf gt: %d x %d RSM, %.0f ms; the %d x %d RSM differs by RMSE %.3g (PSNR %.1f dB): "
-             "the gt's discretisation error is below that\n",
-             Ngt, Ngt, gms, Ngt / 2, Ngt / 2, d.rmse, d.psnr);
+    gtt.run = run;
+    gtt.spot = spot;
+    gtt.N = Ngt;
+    gtt.dmin = (double)dmin;
+    gtt.bg = rd_bg_ok();
+    if (gtt.bg && pthread_create(&gth, NULL, gt_task_run, &gtt) == 0) {
+      gt_started = 1;
+    } else {
+      gtt.bg = 0;
+      gt_task_run(&gtt);
     }
-    rd_image_free(&half);
-    rd_tm_add(RD_TM_GT, tm);
   }
   /* CPU */
   if (run->use_cpu) {
@@ -925,6 +977,7 @@ int rd_pass_ssf(rd_run *run) {
     free(e1);
     if (!ok) goto done;
   }
+  if (run->gt && gt_join(&gtt, &gth, &gt_started, gb, &gt)) goto done;
   /* hand the CPU images and the gt over; the region metrics first */
   for (i = 0; i < M_COUNT; i++) {
     if (!run->use_cpu) break;
@@ -942,6 +995,9 @@ int rd_pass_ssf(rd_run *run) {
   }
   rc = 0;
 done:
+  if (gt_started) pthread_join(gth, NULL);
+  rd_image_free(&gtt.gt);
+  rd_image_free(&gtt.half);
   for (i = 0; i < M_COUNT; i++) {
     rd_image_free(&cpu_img[i]);
     rd_image_free(&keep[i]);

@@ -128,7 +128,7 @@ int rd_gl_run(const rd_scene *s, const rd_gbuf *gb, const rd_gl_pass *p, float *
   GLint ok = 0;
   float *tmp = NULL, *mats = NULL;
   double *t = NULL;
-  rd_tm tm = {0, 0};
+  rd_tm tm = {0, 0, 0};
   int held = 0; /* the gate: 0, 1 shared, 2 alone */
   if (!opened && rd_gl_open(NULL)) return -1;
   if (p->nout < 1 || p->nout > 8 || p->nbuf < 0 || p->nbuf > 6 || p->ninputs < 0 ||

@@ -30,25 +30,20 @@ typedef struct {
   void (*fn)(void *ctx, long lo, long hi);
   void *ctx;
   const char *label;
+  int bg; /* background work: each row's CPU time goes to rd_bg_add_cpu */
   double cpu[RD_MAX_THREADS];
 } par_job;
 
 typedef struct {
   par_job *job;
-  int id, nice; /* nice: raise this thread's nice value by that much first (0: leave it) */
+  int id, nice; /* nice: rd_thread_nice first */
 } par_arg;
 
 static void *par_worker(void *a) {
   par_job *j = ((par_arg *)a)->job;
   int id = ((par_arg *)a)->id;
   double t0;
-  if (((par_arg *)a)->nice > 0) {
-    /* Linux: a thread's own nice value (PRIO_PROCESS with its thread id); elsewhere a no-op */
-#if defined(SYS_gettid)
-    id_t tid = (id_t)syscall(SYS_gettid);
-    setpriority(PRIO_PROCESS, tid, getpriority(PRIO_PROCESS, tid) + ((par_arg *)a)->nice);
-#endif
-  }
+  if (((par_arg *)a)->nice > 0) rd_thread_nice();
   t0 = rd_cpu_ms();
   for (;;) {
     long lo;
@@ -58,7 +53,13 @@ static void *par_worker(void *a) {
     pthread_mutex_unlock(&j->mu);
     if (lo >= j->n) break;
     rd_gate_enter(2);
-    j->fn(j->ctx, lo, lo + j->chunk < j->n ? lo + j->chunk : j->n);
+    if (j->bg) {
+      double c0 = rd_cpu_ms();
+      j->fn(j->ctx, lo, lo + j->chunk < j->n ? lo + j->chunk : j->n);
+      rd_bg_add_cpu(rd_cpu_ms() - c0);
+    } else {
+      j->fn(j->ctx, lo, lo + j->chunk < j->n ? lo + j->chunk : j->n);
+    }
     rd_gate_leave(2);
     if (id == 0 && j->label)
       rd_progress(j->label, lo + j->chunk < j->n ? lo + j->chunk : j->n, j->n);
@@ -67,8 +68,31 @@ static void *par_worker(void *a) {
   return NULL;
 }
 
+void rd_thread_nice(void) {
+  /* Linux: a thread's own nice value (PRIO_PROCESS with its thread id); elsewhere a no-op */
+#if defined(SYS_gettid)
+  id_t tid = (id_t)syscall(SYS_gettid);
+  setpriority(PRIO_PROCESS, tid, getpriority(PRIO_PROCESS, tid) + RD_PAR_NICE);
+#endif
+}
+
+int rd_bg_ok(void) {
+  return gate != NULL;
+}
+
+static double par_run(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), void *ctx,
+                      const char *label, int bg);
 double rd_parallel(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), void *ctx,
                    const char *label) {
+  return par_run(n, chunk, fn, ctx, label, 0);
+}
+double rd_parallel_bg(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), void *ctx,
+                      const char *label) {
+  return par_run(n, chunk, fn, ctx, label, 1);
+}
+
+static double par_run(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), void *ctx,
+                      const char *label, int bg) {
   par_job j;
   par_arg arg[RD_MAX_THREADS];
   pthread_t th[RD_MAX_THREADS];
@@ -83,6 +107,7 @@ double rd_parallel(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), 
   j.fn = fn;
   j.ctx = ctx;
   j.label = label;
+  j.bg = bg;
   pthread_mutex_init(&j.mu, NULL);
   /* Between the pass processes (the gate is shared) the rows run on threads of their own at a
      lower priority (nice + RD_PAR_NICE): the pieces that cannot be split (llvmpipe's JIT on one
@@ -92,7 +117,7 @@ double rd_parallel(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), 
     j.cpu[k] = 0.0;
     arg[k].job = &j;
     arg[k].id = k;
-    arg[k].nice = gate ? RD_PAR_NICE : 0;
+    arg[k].nice = gate != NULL;
     started[k] = (k > 0 || gate) && pthread_create(&th[k], NULL, par_worker, &arg[k]) == 0;
   }
   if (!started[0]) {
