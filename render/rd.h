@@ -214,7 +214,7 @@ int rd_threads(void);
 double rd_parallel(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), void *ctx,
                    const char *label);
 /* rd_parallel for background work (a ground truth computed on a thread of its own while the
- * pass goes on): the rows' CPU time is counted as background (rd_tm). */
+ * pass goes on): the rows' CPU time is counted as background (rd_tm); no progress bar. */
 double rd_parallel_bg(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), void *ctx,
                       const char *label);
 /* 1 when a pass may compute its ground truth on a thread of its own, beside its GL work (the

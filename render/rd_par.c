@@ -106,7 +106,7 @@ static double par_run(long n, long chunk, void (*fn)(void *ctx, long lo, long hi
   j.next = 0;
   j.fn = fn;
   j.ctx = ctx;
-  j.label = label;
+  j.label = bg ? NULL : label; /* one progress bar at a time: the pass's own rows */
   j.bg = bg;
   pthread_mutex_init(&j.mu, NULL);
   /* Between the pass processes (the gate is shared) the rows run on threads of their own at a
