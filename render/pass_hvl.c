@@ -745,13 +745,15 @@ static int shade_gl(const rd_run *run, const hv_brdf *B, int method, const float
     return -1;
   }
   snprintf(body, lb, "%s%s", gl_spec, gl_body);
+  /* HVL_METHOD: both HVL radii (2, 3) give the same shader (the radius is in the light set), so
+     the second draws with the first's program (rd_gl_run reuses a program of the same source) */
   snprintf(defs, sizeof defs,
            "#define SHLIGHT_MAX_BANDS %d\n#define HVL_BANDS %d\n#define HVL_NL %d\n"
            "#define HVL_ST %d\n#define HVL_METHOD %d\n#define HVL_EPS %.9e\n"
            "#define HVL_SPEC %d\n#define HVL_NB %d\n#define HVL_NBB %d\n#define HVL_NT %d\n"
            "#define HVL_WHICH %d\n",
-           mb, run->bands, nl, method_stride[method], method, (double)eps, spec, B->nb,
-           B->nb * B->nb, HV_NT, method <= M_VPL_CLAMP ? 1 : 0);
+           mb, run->bands, nl, method_stride[method], method == M_HVL_FOV ? M_HVL_NB : method,
+           (double)eps, spec, B->nb, B->nb * B->nb, HV_NT, method <= M_VPL_CLAMP ? 1 : 0);
   memset(&p, 0, sizeof p);
   p.defines = defs;
   p.includes = method <= M_VPL_CLAMP && !spec ? inc_vpl : inc_hvl;
