@@ -189,4 +189,4 @@ render-results: $(BUILD)/render/shlrender
 $(BUILD)/tests/test_rd_core: tests/test_rd_core.c render/rd_core.c render/rd.h tests/tl.h
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g1 $(RENDER_WARN) -Wno-missing-prototypes -D_POSIX_C_SOURCE=200809L \
-	    -o $@ tests/test_rd_core.c render/rd_core.c -lm
+	    -o $@ tests/test_rd_core.c render/rd_core.c -lm -lpthread

@@ -1110,7 +1110,8 @@ int rd_pass_area(rd_run *run) {
   float *lb = NULL, *mats = NULL;
   int nl, k, m, rc = 0, nout = 0, ggx = 0, *sel = NULL;
   size_t mem;
-  ar_out outs[2 * 3 + 2];
+  ar_out outs[2 * 3 + 2], gouts[3];
+  int ngout = 0;
   nl = ar_collect(s, &lb);
   if (nl <= 0) {
     free(lb);
@@ -1131,16 +1132,9 @@ int rd_pass_area(rd_run *run) {
     q[7] = s->mats[k].exponent;
     q[8] = s->mats[k].roughness;
   }
-  if (run->use_cpu)
-    for (m = 0; m < 3; m++) {
-      rd_image im = rd_image_new(gb->w, gb->h);
-      if (!im.rgb) {
-        rc = -1;
-        goto done;
-      }
-      ar_add(&outs[nout++], ar_names[m], "cpu", im, ar_cpu_image(run, lb, nl, mats, m, &im), mem,
-             0.0);
-    }
+  /* GL first: llvmpipe's JIT of this pass's shader (single-threaded) is the longest piece of
+     the run that cannot be split; the CPU paths' rows fill the CPUs around it. The results keep
+     their order (CPU, GL, gt) */
   if (run->use_gl) {
     /* CI (gt <= 1): the three methods in one shader and one draw (llvmpipe compile time), the
        draw's time reported for each; gt 2: one shader per method, per-method timings */
@@ -1155,7 +1149,7 @@ int rd_pass_area(rd_run *run) {
       }
       if (ok && ar_gl_images(run, lb, nl, g, nm, im, &ms, &chunk) == 0) {
         for (k = 0; k < nm; k++)
-          ar_add(&outs[nout++], ar_names[g + k], "gl", im[k], ms, mem, ar_tol[g + k]);
+          ar_add(&gouts[ngout++], ar_names[g + k], "gl", im[k], ms, mem, ar_tol[g + k]);
       } else {
         fprintf(stderr, "area: GL pass failed; gl path skipped\n");
         for (k = 0; k < nm; k++)
@@ -1172,6 +1166,19 @@ int rd_pass_area(rd_run *run) {
              "iterations per invocation); gl ms is the draws' sum\n",
              nl, chunk);
   }
+  if (run->use_cpu)
+    for (m = 0; m < 3; m++) {
+      rd_image im = rd_image_new(gb->w, gb->h);
+      if (!im.rgb) {
+        rc = -1;
+        goto done;
+      }
+      ar_add(&outs[nout++], ar_names[m], "cpu", im, ar_cpu_image(run, lb, nl, mats, m, &im), mem,
+             0.0);
+    }
+  for (k = 0; k < ngout; k++)
+    outs[nout++] = gouts[k];
+  ngout = 0;
   if (run->gt) {
     /* absolute tolerance of the unit-radiance integrals per light; gt_coarse: 10x looser */
     double tol = run->gt >= 2 ? 1e-7 : 1e-5, tms[2];
@@ -1232,6 +1239,8 @@ int rd_pass_area(rd_run *run) {
 done:
   for (k = 0; k < nout; k++)
     rd_image_free(&outs[k].img);
+  for (k = 0; k < ngout; k++)
+    rd_image_free(&gouts[k].img);
   free(lb);
   free(mats);
   free(sel);

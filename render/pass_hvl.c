@@ -75,9 +75,13 @@
 #include "../shlight.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #define HVL_PI 3.14159265358979323846
 #define HVL_STRIDE 15   /* floats per light in the set: y, n_s, Phi, n_g, r_nb, r_fov, dist */
@@ -741,13 +745,15 @@ static int shade_gl(const rd_run *run, const hv_brdf *B, int method, const float
     return -1;
   }
   snprintf(body, lb, "%s%s", gl_spec, gl_body);
+  /* HVL_METHOD: both HVL radii (2, 3) give the same shader (the radius is in the light set), so
+     the second draws with the first's program (rd_gl_run reuses a program of the same source) */
   snprintf(defs, sizeof defs,
            "#define SHLIGHT_MAX_BANDS %d\n#define HVL_BANDS %d\n#define HVL_NL %d\n"
            "#define HVL_ST %d\n#define HVL_METHOD %d\n#define HVL_EPS %.9e\n"
            "#define HVL_SPEC %d\n#define HVL_NB %d\n#define HVL_NBB %d\n#define HVL_NT %d\n"
            "#define HVL_WHICH %d\n",
-           mb, run->bands, nl, method_stride[method], method, (double)eps, spec, B->nb,
-           B->nb * B->nb, HV_NT, method <= M_VPL_CLAMP ? 1 : 0);
+           mb, run->bands, nl, method_stride[method], method == M_HVL_FOV ? M_HVL_NB : method,
+           (double)eps, spec, B->nb, B->nb * B->nb, HV_NT, method <= M_VPL_CLAMP ? 1 : 0);
   memset(&p, 0, sizeof p);
   p.defines = defs;
   p.includes = method <= M_VPL_CLAMP && !spec ? inc_vpl : inc_hvl;
@@ -1111,6 +1117,89 @@ static inline void gt_lambert(const gt_patches *gp, int j, double eps, const dou
 
 #define GT_PK 8 /* Lambert pixels that share one pass over the patches */
 
+#if defined(__SSE2__)
+/* gt_lambert for patch j at GT_PK pixels (nq of them used; the others copy pixel 0 and are
+   dropped), two per SSE2 vector: per lane the far-field operations of gt_lambert in the same
+   order (no contraction: -ffp-contract=off), a lane that skips the patch adds phi * 0 = +0 to a
+   sum that is +0 or positive, and a lane near the patch takes gt_lambert itself, so every sum
+   is bit for bit the scalar loop's. E: the sums, [pair][channel] */
+static void gt_lambert_pk(const gt_patches *gp, int nq, double eps, double (*qx)[3],
+                          double (*qn)[3], double (*qg)[3], double (*qe)[3]) {
+  const __m128d zero = _mm_setzero_pd(), ve = _mm_set1_pd(eps), sgn = _mm_set1_pd(-0.0);
+  __m128d X[GT_PK / 2][3], N[GT_PK / 2][3], G[GT_PK / 2][3], E[GT_PK / 2][3];
+  double tmp[6];
+  int j, h, c, t;
+  for (h = 0; h < GT_PK / 2; h++)
+    for (c = 0; c < 3; c++) {
+      int a = 2 * h < nq ? 2 * h : 0, b = 2 * h + 1 < nq ? 2 * h + 1 : 0;
+      X[h][c] = _mm_set_pd(qx[b][c], qx[a][c]);
+      N[h][c] = _mm_set_pd(qn[b][c], qn[a][c]);
+      G[h][c] = _mm_set_pd(qg[b][c], qg[a][c]);
+      E[h][c] = zero;
+    }
+  for (j = 0; j < gp->n; j++) {
+    const double *p = gp->p + 3 * j, *ns = gp->ns + 3 * j, *phi = gp->phi + 3 * j;
+    const double *ng = gp->ng + 3 * j;
+    const __m128d p0 = _mm_set1_pd(p[0]), p1 = _mm_set1_pd(p[1]), p2 = _mm_set1_pd(p[2]);
+    const __m128d ng0 = _mm_set1_pd(ng[0]), ng1 = _mm_set1_pd(ng[1]), ng2 = _mm_set1_pd(ng[2]);
+    const __m128d near2 = _mm_set1_pd(gp->near2[j]);
+    for (h = 0; h < (nq + 1) / 2; h++) {
+      __m128d dx = _mm_sub_pd(p0, X[h][0]), dy = _mm_sub_pd(p1, X[h][1]);
+      __m128d dz = _mm_sub_pd(p2, X[h][2]);
+      __m128d d2 =
+          _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
+      __m128d a = _mm_xor_pd(
+          _mm_add_pd(_mm_add_pd(_mm_mul_pd(ng0, dx), _mm_mul_pd(ng1, dy)), _mm_mul_pd(ng2, dz)),
+          sgn);
+      __m128d b = _mm_add_pd(_mm_add_pd(_mm_mul_pd(G[h][0], dx), _mm_mul_pd(G[h][1], dy)),
+                             _mm_mul_pd(G[h][2], dz));
+      __m128d gate = _mm_and_pd(_mm_cmpgt_pd(a, ve), _mm_cmpgt_pd(b, ve));
+      __m128d nr = _mm_and_pd(gate, _mm_cmplt_pd(d2, near2));
+      __m128d cy, cx, ok, gf;
+      int mg = _mm_movemask_pd(gate), mn;
+      if (mg == 0) continue;
+      mn = _mm_movemask_pd(nr);
+      if (mn) { /* near the patch: the exact quad, gt_lambert itself, for those lanes */
+        for (c = 0; c < 3; c++)
+          _mm_storeu_pd(tmp + 2 * c, E[h][c]);
+        for (t = 0; t < 2; t++)
+          if ((mn >> t & 1) && 2 * h + t < nq) {
+            double e[3];
+            for (c = 0; c < 3; c++)
+              e[c] = tmp[2 * c + t];
+            gt_lambert(gp, j, eps, qx[2 * h + t], qn[2 * h + t], qg[2 * h + t], e);
+            for (c = 0; c < 3; c++)
+              tmp[2 * c + t] = e[c];
+          }
+        for (c = 0; c < 3; c++)
+          E[h][c] = _mm_loadu_pd(tmp + 2 * c);
+        if (mn == mg) continue;
+      }
+      cy = _mm_xor_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_set1_pd(ns[0]), dx),
+                                            _mm_mul_pd(_mm_set1_pd(ns[1]), dy)),
+                                 _mm_mul_pd(_mm_set1_pd(ns[2]), dz)),
+                      sgn);
+      cx = _mm_add_pd(_mm_add_pd(_mm_mul_pd(N[h][0], dx), _mm_mul_pd(N[h][1], dy)),
+                      _mm_mul_pd(N[h][2], dz));
+      ok = _mm_andnot_pd(nr, gate);
+      ok = _mm_and_pd(ok, _mm_and_pd(_mm_cmpgt_pd(cy, zero), _mm_cmpgt_pd(cx, zero)));
+      ok = _mm_and_pd(ok, _mm_cmpgt_pd(d2, zero));
+      if (_mm_movemask_pd(ok) == 0) continue;
+      gf = _mm_and_pd(ok, _mm_div_pd(_mm_mul_pd(cy, cx), _mm_mul_pd(d2, d2)));
+      E[h][0] = _mm_add_pd(E[h][0], _mm_mul_pd(_mm_set1_pd(phi[0]), gf));
+      E[h][1] = _mm_add_pd(E[h][1], _mm_mul_pd(_mm_set1_pd(phi[1]), gf));
+      E[h][2] = _mm_add_pd(E[h][2], _mm_mul_pd(_mm_set1_pd(phi[2]), gf));
+    }
+  }
+  for (h = 0; h < (nq + 1) / 2; h++)
+    for (c = 0; c < 3; c++) {
+      _mm_storeu_pd(tmp + 2 * c, E[h][c]);
+      for (t = 0; t < 2; t++)
+        if (2 * h + t < nq) qe[2 * h + t][c] = tmp[2 * c + t];
+    }
+}
+#endif
+
 static void gt_shade(void *ctx, long lo, long hi) {
   const gt_job *jb = (const gt_job *)ctx;
   const rd_run *run = jb->run;
@@ -1139,9 +1228,13 @@ static void gt_shade(void *ctx, long lo, long hi) {
       if (nq < GT_PK && px + 1 < (int)hi) continue;
     }
     if (nq > 0) {
+#if defined(__SSE2__)
+      gt_lambert_pk(gp, nq, eps, qx, qn, qg, qe);
+#else
       for (j = 0; j < gp->n; j++)
         for (t = 0; t < nq; t++)
           gt_lambert(gp, j, eps, qx[t], qn[t], qg[t], qe[t]);
+#endif
       for (t = 0; t < nq; t++) {
         int mt = gb->mat[qp[t]];
         for (c = 0; c < 3; c++)
@@ -1215,7 +1308,7 @@ static void gt_shade(void *ctx, long lo, long hi) {
 
 /* the gt image on rd_threads() threads; *ms: the CPU ms of all of them */
 static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, int N, double eps,
-                    float *rgb, int *npatch, double *ms) {
+                    float *rgb, int *npatch, double *ms, int bg) {
   double t0 = rd_cpu_ms();
   gt_patches gp;
   gt_job jb;
@@ -1228,11 +1321,39 @@ static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, in
   jb.eps = eps;
   jb.rgb = rgb;
   t0 = rd_cpu_ms() - t0; /* the patches, on this thread */
-  t0 += rd_parallel((long)run->gb->w * run->gb->h, run->gb->w, gt_shade, &jb, label);
+  t0 += (bg ? rd_parallel_bg : rd_parallel)((long)run->gb->w * run->gb->h, run->gb->w, gt_shade,
+                                            &jb, label);
   if (ms) *ms = t0;
   if (npatch) *npatch = gp.n;
   gt_free(&gp);
   return 0;
+}
+
+/* the ground truth and its N / 2 twin, on a thread of its own beside the methods (rd_bg_ok) or
+   inline; what the pass prints of it is printed once it is joined */
+typedef struct {
+  const rd_run *run;
+  const hv_brdf *B;
+  const spot_view *sv;
+  int n1, bg, rc, half_ok, np1, np2;
+  double eps, ms, ms2, wall; /* ms: the N image's CPU ms (its table entry), ms2 the N / 2 one's */
+  float *gt, *half;
+} gt_task;
+
+static void *gt_task_run(void *a) {
+  gt_task *t = (gt_task *)a;
+  rd_tm t0 = rd_tm_now();
+  double c0;
+  if (t->bg) rd_thread_nice();
+  c0 = rd_cpu_ms();
+  t->rc = gt_image(t->run, t->B, t->sv, t->n1, t->eps, t->gt, &t->np1, &t->ms, t->bg);
+  if (!t->rc)
+    t->half_ok =
+        gt_image(t->run, t->B, t->sv, t->n1 / 2, t->eps, t->half, &t->np2, &t->ms2, t->bg) == 0;
+  /* this thread's own CPU time (the patches) is background work too; the rows count theirs */
+  if (t->bg) rd_bg_add_cpu(rd_cpu_ms() - c0);
+  t->wall = rd_tm_now().wall - t0.wall;
+  return NULL;
 }
 
 /* ---- error statistics ----------------------------------------------------------------------- */
@@ -1303,8 +1424,13 @@ int rd_pass_hvl(rd_run *run) {
   int *sel = NULL;
   size_t npx, nb;
   float eps;
-  float *gt = NULL;
-  int i, method, rc = 0, rsm = env_int("SHLIGHT_HVL_RSM", 16, 2, 1024);
+  float *gt = NULL, *cpu = NULL;
+  int i, method, rc = 0, rsm = env_int("SHLIGHT_HVL_RSM", 16, 2, 1024), gt_started = 0;
+  gt_task gtt;
+  pthread_t gth;
+  rd_image cimg[M_COUNT], gimg[M_COUNT];
+  double cms[M_COUNT], gms[M_COUNT];
+  size_t mem[M_COUNT];
   for (i = 0; i < s->nlights; i++)
     if (s->lights[i].type == RD_LIGHT_SPOT) {
       l = &s->lights[i];
@@ -1356,73 +1482,56 @@ int rd_pass_hvl(rd_run *run) {
            rsm, ls.count, run->bands, ls.count ? r1 / ls.count : 0.0,
            ls.count ? r2 / ls.count : 0.0);
   }
-  /* ground truth first: the statistics of the methods need it */
+  /* the ground truth: on a thread of its own while the methods run (the pass processes run at
+     the same time: their GL work goes first), else here; the statistics, which need it, are
+     printed once it is joined, in the order of before */
+  memset(&gtt, 0, sizeof gtt);
+  memset(cimg, 0, sizeof cimg);
+  memset(gimg, 0, sizeof gimg);
   if (run->gt) {
-    int n1 = env_int("SHLIGHT_HVL_GT", run->gt >= 2 ? 512 : 128, 4, 4096), np1 = 0, np2 = 0;
-    float *half = (float *)malloc(nb);
-    double gms = 0.0, p99, mx, rmse;
-    rd_tm tm = rd_tm_now();
-    gt = (float *)malloc(nb);
-    if (!gt || !half || gt_image(run, &B, &sv, n1, (double)eps, gt, &np1, &gms)) {
-      free(half);
-      free(gt);
-      free(ls.buf);
-      free(sel);
-      hv_brdf_free(&B);
-      fprintf(stderr, "hvl: ground truth failed\n");
-      return -1;
-    }
-    if (gt_image(run, &B, &sv, n1 / 2, (double)eps, half, &np2, NULL) == 0) {
-      err_stats(gb, half, gt, &p99, &mx, &rmse);
-      printf("hvl gt convergence: RSM %dx%d (%d patches) vs %dx%d (%d patches): "
-             "rmse/peak %.3g, p99 %.3g, max %.3g (the error of the coarse one; second order)\n",
-             n1 / 2, n1 / 2, np2, n1, n1, np1, rmse, p99, mx);
-    }
-    free(half);
-    rd_tm_add(RD_TM_GT, tm);
-    {
-      rd_image im = rd_image_new(gb->w, gb->h);
-      if (im.rgb) {
-        memcpy(im.rgb, gt, nb);
-        rd_emit(run, "hvl", "gt", "gt", im, gms, 0, 0);
+    gtt.run = run;
+    gtt.B = &B;
+    gtt.sv = &sv;
+    gtt.n1 = env_int("SHLIGHT_HVL_GT", run->gt >= 2 ? 512 : 128, 4, 4096);
+    gtt.eps = (double)eps;
+    gtt.gt = (float *)malloc(nb);
+    gtt.half = (float *)malloc(nb);
+    gtt.rc = -1;
+    if (gtt.gt && gtt.half) {
+      gtt.bg = rd_bg_ok();
+      if (gtt.bg && pthread_create(&gth, NULL, gt_task_run, &gtt) == 0) {
+        gt_started = 1;
+      } else {
+        gtt.bg = 0;
+        gt_task_run(&gtt);
       }
     }
   }
-  for (method = 0; method < M_COUNT; method++) {
+  for (method = 0; method < M_COUNT && rc == 0; method++) {
     float *b = method_buffer(&ls, method);
-    size_t mem = (size_t)ls.count * (size_t)method_stride[method] * sizeof(float);
-    float *cpu = NULL;
     if (!b) {
       rc = -1;
       break;
     }
+    mem[method] = (size_t)ls.count * (size_t)method_stride[method] * sizeof(float);
     if (run->use_cpu) {
-      double t[64], ms;
+      double t[64];
       int r, reps = run->reps < 1 ? 1 : run->reps > 64 ? 64 : run->reps;
-      rd_image im = rd_image_new(gb->w, gb->h);
-      if (!im.rgb) {
+      cimg[method] = rd_image_new(gb->w, gb->h);
+      if (!cimg[method].rgb) {
         free(b);
         rc = -1;
         break;
       }
       for (r = 0; r < reps; r++) {
-        t[r] = shade_cpu(run, &B, method, b, ls.count, eps, im.rgb);
+        t[r] = shade_cpu(run, &B, method, b, ls.count, eps, cimg[method].rgb);
         if (t[r] > 2000.0) { /* slow: one timing is enough */
           reps = r + 1;
           break;
         }
       }
       qsort(t, (size_t)reps, sizeof(double), cmp_d);
-      ms = t[reps / 2];
-      cpu = (float *)malloc(nb);
-      if (cpu) memcpy(cpu, im.rgb, nb);
-      if (gt) {
-        double p99, mx, rmse;
-        err_stats(gb, im.rgb, gt, &p99, &mx, &rmse);
-        printf("hvl %-15s cpu: |m - gt|/peak p99 %.4f max %.4f (rmse/peak %.4f)\n",
-               method_name[method], p99, mx, rmse);
-      }
-      rd_emit(run, "hvl", method_name[method], "cpu", im, ms, mem, 0);
+      cms[method] = t[reps / 2];
     }
     if (run->use_gl) {
       rd_image im = rd_image_new(gb->w, gb->h);
@@ -1436,27 +1545,80 @@ int rd_pass_hvl(rd_run *run) {
         rd_image_free(&im);
         rc = -1;
       } else {
-        if (gt) {
-          double p99, mx, rmse;
-          err_stats(gb, im.rgb, gt, &p99, &mx, &rmse);
-          printf("hvl %-15s gl:  |m - gt|/peak p99 %.4f max %.4f (rmse/peak %.4f)\n",
-                 method_name[method], p99, mx, rmse);
-        }
-        if (cpu) {
-          double p99, mx, rmse;
-          err_stats(gb, im.rgb, cpu, &p99, &mx, &rmse);
-          printf("hvl %-15s gl vs cpu: max/peak %.3g\n", method_name[method], mx);
-        }
-        if (sel)
-          rd_emit_sel(run, "hvl", method_name[method], "gl", im, ms, mem, method_tol[method], sel,
-                      s->nmats, method_tol_brdf[method], "brdf-table");
-        else
-          rd_emit(run, "hvl", method_name[method], "gl", im, ms, mem, method_tol[method]);
+        gimg[method] = im;
+        gms[method] = ms;
       }
     }
-    free(cpu);
     free(b);
   }
+  if (gt_started) pthread_join(gth, NULL);
+  if (run->gt) {
+    if (gtt.rc) {
+      fprintf(stderr, "hvl: ground truth failed\n");
+      rc = -1;
+    } else {
+      double p99, mx, rmse;
+      if (gtt.half_ok) {
+        err_stats(gb, gtt.half, gtt.gt, &p99, &mx, &rmse);
+        printf("hvl gt convergence: RSM %dx%d (%d patches) vs %dx%d (%d patches): "
+               "rmse/peak %.3g, p99 %.3g, max %.3g (the error of the coarse one; second order)\n",
+               gtt.n1 / 2, gtt.n1 / 2, gtt.np2, gtt.n1, gtt.n1, gtt.np1, rmse, p99, mx);
+      }
+      rd_tm_add_ms(RD_TM_GT, gtt.wall, gtt.ms + gtt.ms2);
+      gt = gtt.gt;
+      gtt.gt = NULL;
+      {
+        rd_image im = rd_image_new(gb->w, gb->h);
+        if (im.rgb) {
+          memcpy(im.rgb, gt, nb);
+          rd_emit(run, "hvl", "gt", "gt", im, gtt.ms, 0, 0);
+        }
+      }
+    }
+  }
+  for (method = 0; method < M_COUNT && rc == 0; method++) {
+    if (cimg[method].rgb) {
+      if (gt) {
+        double p99, mx, rmse;
+        err_stats(gb, cimg[method].rgb, gt, &p99, &mx, &rmse);
+        printf("hvl %-15s cpu: |m - gt|/peak p99 %.4f max %.4f (rmse/peak %.4f)\n",
+               method_name[method], p99, mx, rmse);
+      }
+      cpu = (float *)malloc(nb);
+      if (cpu) memcpy(cpu, cimg[method].rgb, nb);
+      rd_emit(run, "hvl", method_name[method], "cpu", cimg[method], cms[method], mem[method], 0);
+      cimg[method].rgb = NULL;
+    }
+    if (gimg[method].rgb) {
+      rd_image im = gimg[method];
+      gimg[method].rgb = NULL;
+      if (gt) {
+        double p99, mx, rmse;
+        err_stats(gb, im.rgb, gt, &p99, &mx, &rmse);
+        printf("hvl %-15s gl:  |m - gt|/peak p99 %.4f max %.4f (rmse/peak %.4f)\n",
+               method_name[method], p99, mx, rmse);
+      }
+      if (cpu) {
+        double p99, mx, rmse;
+        err_stats(gb, im.rgb, cpu, &p99, &mx, &rmse);
+        printf("hvl %-15s gl vs cpu: max/peak %.3g\n", method_name[method], mx);
+      }
+      if (sel)
+        rd_emit_sel(run, "hvl", method_name[method], "gl", im, gms[method], mem[method],
+                    method_tol[method], sel, s->nmats, method_tol_brdf[method], "brdf-table");
+      else
+        rd_emit(run, "hvl", method_name[method], "gl", im, gms[method], mem[method],
+                method_tol[method]);
+    }
+    free(cpu);
+    cpu = NULL;
+  }
+  for (method = 0; method < M_COUNT; method++) {
+    rd_image_free(&cimg[method]);
+    rd_image_free(&gimg[method]);
+  }
+  free(gtt.gt);
+  free(gtt.half);
   free(gt);
   free(ls.buf);
   free(sel);

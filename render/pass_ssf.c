@@ -82,9 +82,13 @@
 #include "../shlight.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #define SSF_PI 3.14159265358979323846
 #define SSF_STRIDE 9 /* floats per VPL: y, n_g, Phi rgb */
@@ -327,48 +331,149 @@ typedef struct {
   float *rgb;
 } gt_job;
 
-static void gt_rows(void *ctx, long lo, long hi) {
-  const gt_job *jb = (const gt_job *)ctx;
+/* pixel px's position, unit shading normal and geometric normal in double; 0 without a
+   material (the pixel stays 0) */
+static int gt_pixel(const gt_job *jb, int px, double x[3], double ns[3], double ng[3]) {
   const rd_gbuf *gb = jb->run->gb;
   const rd_scene *s = jb->run->scene;
+  const float *xf = gb->pos + 3 * px, *nsf = gb->nrm + 3 * px, *ngf = gb->gnrm + 3 * px;
+  double ln = 0;
+  int m = gb->mat[px], c;
+  if (m < 0 || m >= s->nmats) return 0;
+  for (c = 0; c < 3; c++) {
+    x[c] = (double)xf[c];
+    ns[c] = (double)nsf[c];
+    ng[c] = (double)ngf[c];
+    ln += ns[c] * ns[c];
+  }
+  for (c = 0; c < 3; c++)
+    ns[c] /= sqrt(ln);
+  return 1;
+}
+
+static void gt_store(const gt_job *jb, int px, const double acc[3]) {
+  const rd_scene *s = jb->run->scene;
+  int m = jb->run->gb->mat[px], c;
+  for (c = 0; c < 3; c++)
+    jb->rgb[3 * px + c] = (float)((double)s->mats[m].kd[c] / SSF_PI * acc[c]);
+}
+
+/* one pixel: the sum over the VPLs in their order */
+static void gt_one(const gt_job *jb, const double x[3], const double ns[3], const double ng[3],
+                   double acc[3]) {
   const gt_vpl *v = jb->v;
-  const int nv = jb->nv;
   const double dm2 = jb->dm2;
-  int px, j, c;
-  for (px = (int)lo; px < (int)hi; px++) {
-    const float *xf = gb->pos + 3 * px, *nsf = gb->nrm + 3 * px, *ngf = gb->gnrm + 3 * px;
-    double x[3], ns[3], ng[3], acc[3] = {0, 0, 0}, ln = 0;
-    int m = gb->mat[px];
-    if (m < 0 || m >= s->nmats) continue;
+  int j;
+  acc[0] = acc[1] = acc[2] = 0.0;
+  for (j = 0; j < jb->nv; j++) {
+    const gt_vpl *q = &v[j];
+    double d0 = q->y[0] - x[0], d1 = q->y[1] - x[1], d2 = q->y[2] - x[2];
+    double dd = d0 * d0 + d1 * d1 + d2 * d2, cy, cs, f;
+    if (!(dd > 0) || ng[0] * d0 + ng[1] * d1 + ng[2] * d2 < 0) continue;
+    cy = -(q->n[0] * d0 + q->n[1] * d1 + q->n[2] * d2);
+    cs = ns[0] * d0 + ns[1] * d1 + ns[2] * d2;
+    if (!(cy > 0) || !(cs > 0)) continue;
+    f = cy * cs / (dd * (dd > dm2 ? dd : dm2));
+    acc[0] += q->phi[0] * f;
+    acc[1] += q->phi[1] * f;
+    acc[2] += q->phi[2] * f;
+  }
+}
+
+#if defined(__SSE2__)
+/* four pixels at once, two per SSE2 vector: per lane the operations of gt_one in the same order
+   (no contraction: -ffp-contract=off), and a skipped VPL adds phi * 0 = +0 to a sum that is +0
+   or positive, so each sum is bit for bit gt_one's; the VPLs stream through the cache once per
+   four pixels instead of once per pixel. x, ns, ng: [component][pixel] */
+static void gt_four(const gt_job *jb, double x[3][4], double ns[3][4], double ng[3][4],
+                    double acc[3][4]) {
+  const gt_vpl *v = jb->v;
+  const __m128d zero = _mm_setzero_pd(), dm2 = _mm_set1_pd(jb->dm2);
+  const __m128d sgn = _mm_set1_pd(-0.0);
+  __m128d X[2][3], S[2][3], G[2][3], E[2][3];
+  int j, h, c;
+  for (h = 0; h < 2; h++)
     for (c = 0; c < 3; c++) {
-      x[c] = (double)xf[c];
-      ns[c] = (double)nsf[c];
-      ng[c] = (double)ngf[c];
-      ln += ns[c] * ns[c];
+      X[h][c] = _mm_loadu_pd(&x[c][2 * h]);
+      S[h][c] = _mm_loadu_pd(&ns[c][2 * h]);
+      G[h][c] = _mm_loadu_pd(&ng[c][2 * h]);
+      E[h][c] = zero;
     }
-    for (c = 0; c < 3; c++)
-      ns[c] /= sqrt(ln);
-    for (j = 0; j < nv; j++) {
-      const gt_vpl *q = &v[j];
-      double d0 = q->y[0] - x[0], d1 = q->y[1] - x[1], d2 = q->y[2] - x[2];
-      double dd = d0 * d0 + d1 * d1 + d2 * d2, cy, cs, f;
-      if (!(dd > 0) || ng[0] * d0 + ng[1] * d1 + ng[2] * d2 < 0) continue;
-      cy = -(q->n[0] * d0 + q->n[1] * d1 + q->n[2] * d2);
-      cs = ns[0] * d0 + ns[1] * d1 + ns[2] * d2;
-      if (!(cy > 0) || !(cs > 0)) continue;
-      f = cy * cs / (dd * (dd > dm2 ? dd : dm2));
-      acc[0] += q->phi[0] * f;
-      acc[1] += q->phi[1] * f;
-      acc[2] += q->phi[2] * f;
+  for (j = 0; j < jb->nv; j++) {
+    const gt_vpl *q = &v[j];
+    const __m128d y0 = _mm_set1_pd(q->y[0]), y1 = _mm_set1_pd(q->y[1]), y2 = _mm_set1_pd(q->y[2]);
+    const __m128d n0 = _mm_set1_pd(q->n[0]), n1 = _mm_set1_pd(q->n[1]), n2 = _mm_set1_pd(q->n[2]);
+    for (h = 0; h < 2; h++) {
+      __m128d d0 = _mm_sub_pd(y0, X[h][0]), d1 = _mm_sub_pd(y1, X[h][1]);
+      __m128d d2 = _mm_sub_pd(y2, X[h][2]);
+      __m128d dd =
+          _mm_add_pd(_mm_add_pd(_mm_mul_pd(d0, d0), _mm_mul_pd(d1, d1)), _mm_mul_pd(d2, d2));
+      __m128d gd = _mm_add_pd(_mm_add_pd(_mm_mul_pd(G[h][0], d0), _mm_mul_pd(G[h][1], d1)),
+                              _mm_mul_pd(G[h][2], d2));
+      __m128d cy = _mm_xor_pd(
+          _mm_add_pd(_mm_add_pd(_mm_mul_pd(n0, d0), _mm_mul_pd(n1, d1)), _mm_mul_pd(n2, d2)), sgn);
+      __m128d cs = _mm_add_pd(_mm_add_pd(_mm_mul_pd(S[h][0], d0), _mm_mul_pd(S[h][1], d1)),
+                              _mm_mul_pd(S[h][2], d2));
+      __m128d ok = _mm_and_pd(_mm_and_pd(_mm_cmpgt_pd(dd, zero), _mm_cmpnlt_pd(gd, zero)),
+                              _mm_and_pd(_mm_cmpgt_pd(cy, zero), _mm_cmpgt_pd(cs, zero)));
+      __m128d f;
+      if (_mm_movemask_pd(ok) == 0) continue;
+      f = _mm_and_pd(ok, _mm_div_pd(_mm_mul_pd(cy, cs), _mm_mul_pd(dd, _mm_max_pd(dd, dm2))));
+      E[h][0] = _mm_add_pd(E[h][0], _mm_mul_pd(_mm_set1_pd(q->phi[0]), f));
+      E[h][1] = _mm_add_pd(E[h][1], _mm_mul_pd(_mm_set1_pd(q->phi[1]), f));
+      E[h][2] = _mm_add_pd(E[h][2], _mm_mul_pd(_mm_set1_pd(q->phi[2]), f));
     }
+  }
+  for (h = 0; h < 2; h++)
     for (c = 0; c < 3; c++)
-      jb->rgb[3 * px + c] = (float)((double)s->mats[m].kd[c] / SSF_PI * acc[c]);
+      _mm_storeu_pd(&acc[c][2 * h], E[h][c]);
+}
+#define GT_LANES 4
+#else
+#define GT_LANES 1
+#endif
+
+static void gt_rows(void *ctx, long lo, long hi) {
+  const gt_job *jb = (const gt_job *)ctx;
+  double x[3][4], ns[3][4], ng[3][4], acc[3][4], a[3], b[3], c3[3], one[3];
+  int px, k = 0, t, c, pp[4];
+  for (px = (int)lo; px < (int)hi; px++) {
+    if (!gt_pixel(jb, px, a, b, c3)) continue;
+    for (c = 0; c < 3; c++) {
+      x[c][k] = a[c];
+      ns[c][k] = b[c];
+      ng[c][k] = c3[c];
+    }
+    pp[k++] = px;
+    if (k < GT_LANES) continue;
+#if defined(__SSE2__)
+    gt_four(jb, x, ns, ng, acc);
+#else
+    gt_one(jb, a, b, c3, one);
+    for (c = 0; c < 3; c++)
+      acc[c][0] = one[c];
+#endif
+    for (t = 0; t < k; t++) {
+      for (c = 0; c < 3; c++)
+        one[c] = acc[c][t];
+      gt_store(jb, pp[t], one);
+    }
+    k = 0;
+  }
+  for (t = 0; t < k; t++) { /* the row's last pixels, one at a time */
+    for (c = 0; c < 3; c++) {
+      a[c] = x[c][t];
+      b[c] = ns[c][t];
+      c3[c] = ng[c][t];
+    }
+    gt_one(jb, a, b, c3, one);
+    gt_store(jb, pp[t], one);
   }
 }
 
 /* the gt image on rd_threads() threads; *ms: the CPU ms of all of them */
 static int gt_render(const rd_run *run, const rd_light *l, int N, double dmin, const char *label,
-                     rd_image *out, double *ms) {
+                     rd_image *out, double *ms, int bg) {
   const rd_gbuf *gb = run->gb;
   const rd_scene *s = run->scene;
   int j, nv = 0, c;
@@ -404,7 +509,7 @@ static int gt_render(const rd_run *run, const rd_light *l, int N, double dmin, c
   jb.dm2 = dm2;
   jb.rgb = out->rgb;
   t0 = rd_cpu_ms() - t0; /* the VPLs, on this thread */
-  t0 += rd_parallel((long)gb->w * gb->h, gb->w, gt_rows, &jb, label);
+  t0 += (bg ? rd_parallel_bg : rd_parallel)((long)gb->w * gb->h, gb->w, gt_rows, &jb, label);
   if (ms) *ms = t0;
   free(v);
   return 0;
@@ -650,6 +755,57 @@ static void print_regions(const rd_image *img, const rd_image *gt, const rd_imag
            method, path, c.rmse, c.psnr, c.ssim, d.rmse, d.psnr, d.ssim);
 }
 
+/* the ground truth and its N / 2 twin, on a thread of its own beside the CPU and GL paths
+   (rd_bg_ok) or inline; what the pass prints of it is printed once it is joined */
+typedef struct {
+  const rd_run *run;
+  const rd_light *spot;
+  int N, bg, rc;
+  double dmin, ms, wall, cpu; /* ms: the gt's own (printed); wall, cpu: both images (--timings) */
+  rd_image gt, half;
+} gt_task;
+
+static void *gt_task_run(void *a) {
+  gt_task *t = (gt_task *)a;
+  char label[32];
+  rd_tm t0 = rd_tm_now();
+  double c0, ms2 = 0.0;
+  if (t->bg) rd_thread_nice();
+  c0 = rd_cpu_ms();
+  snprintf(label, sizeof label, "ssf gt %d^2", t->N);
+  t->rc = gt_render(t->run, t->spot, t->N, t->dmin, label, &t->gt, &t->ms, t->bg);
+  snprintf(label, sizeof label, "ssf gt %d^2", t->N / 2);
+  if (!t->rc) t->rc = gt_render(t->run, t->spot, t->N / 2, t->dmin, label, &t->half, &ms2, t->bg);
+  /* this thread's own CPU time (the VPLs) is background work too; the rows count theirs */
+  if (t->bg) rd_bg_add_cpu(rd_cpu_ms() - c0);
+  t->wall = rd_tm_now().wall - t0.wall;
+  t->cpu = t->ms + ms2; /* gt_render's: the VPLs and the rows */
+  return NULL;
+}
+
+/* waits for the ground truth (a thread of its own: *started), prints its convergence, counts
+   its time, hands the image to *gt; 0 or -1 */
+static int gt_join(gt_task *t, pthread_t *th, int *started, const rd_gbuf *gb, rd_image *gt) {
+  if (*started) pthread_join(*th, NULL);
+  *started = 0;
+  if (t->rc) {
+    rd_image_free(&t->gt);
+    rd_image_free(&t->half);
+    return -1;
+  }
+  {
+    rd_metrics d = rd_compare(&t->half, &t->gt, gb->mat);
+    printf("ssf gt: %d x %d RSM, %.0f ms; the %d x %d RSM differs by RMSE %.3g (PSNR %.1f dB): "
+           "the gt's discretisation error is below that\n",
+           t->N, t->N, t->ms, t->N / 2, t->N / 2, d.rmse, d.psnr);
+  }
+  rd_image_free(&t->half);
+  rd_tm_add_ms(RD_TM_GT, t->wall, t->cpu);
+  *gt = t->gt;
+  t->gt.rgb = NULL;
+  return 0;
+}
+
 /* ---- the pass ------------------------------------------------------------------------------ */
 /* max |gl - cpu| / peak accepted: 3.3 x the worst measured on llvmpipe (3.1e-7: cornell and
    spheres, 64x48 and 256x256, 3 and 5 bands; GLSL runs the kernels' double parts in float) */
@@ -667,6 +823,9 @@ int rd_pass_ssf(rd_run *run) {
   size_t nn, mem_v, mem[M_COUNT];
   rd_image gt = {0, 0, NULL}, cpu_img[M_COUNT], keep[M_COUNT];
   const char *fe = getenv("SHLIGHT_SSF_CLAMP");
+  gt_task gtt;
+  pthread_t gth;
+  int gt_started = 0;
   for (i = 0; i < s->nlights; i++)
     if (s->lights[i].type == RD_LIGHT_SPOT) {
       spot = &s->lights[i];
@@ -685,6 +844,7 @@ int rd_pass_ssf(rd_run *run) {
   nv = N * N;
   memset(cpu_img, 0, sizeof cpu_img);
   memset(keep, 0, sizeof keep);
+  memset(&gtt, 0, sizeof gtt);
   vpl = (float *)malloc((size_t)nv * SSF_STRIDE * sizeof(float));
   bump = (int *)malloc((size_t)npx * sizeof(int));
   plain = (int *)malloc((size_t)npx * sizeof(int));
@@ -702,24 +862,20 @@ int rd_pass_ssf(rd_run *run) {
   printf("ssf: %d x %d RSM = %d VPLs, %d x %d interleaved (%d per pixel), %d bands (%d SH floats "
          "per pixel), clamp %.4g\n",
          N, N, nv, SSF_NI, SSF_MI, nv / (SSF_NI * SSF_MI), n, (int)(3 * nn), (double)dmin);
-  /* ground truth */
+  /* ground truth: on a thread of its own while the CPU and GL paths run (the pass processes
+     run at the same time), else here; joined below */
   if (run->gt) {
-    rd_image half;
-    double gms = 0.0;
-    char label[32];
-    rd_tm tm = rd_tm_now();
-    snprintf(label, sizeof label, "ssf gt %d^2", Ngt);
-    if (gt_render(run, spot, Ngt, (double)dmin, label, &gt, &gms)) goto done;
-    snprintf(label, sizeof label, "ssf gt %d^2", Ngt / 2);
-    if (gt_render(run, spot, Ngt / 2, (double)dmin, label, &half, NULL)) goto done;
-    {
-      rd_metrics d = rd_compare(&half, &gt, gb->mat);
-      printf("ssf gt: %d x %d RSM, %.0f ms; the %d x %d RSM differs by RMSE %.3g (PSNR %.1f dB): "
-             "the gt's discretisation error is below that\n",
-             Ngt, Ngt, gms, Ngt / 2, Ngt / 2, d.rmse, d.psnr);
+    gtt.run = run;
+    gtt.spot = spot;
+    gtt.N = Ngt;
+    gtt.dmin = (double)dmin;
+    gtt.bg = rd_bg_ok();
+    if (gtt.bg && pthread_create(&gth, NULL, gt_task_run, &gtt) == 0) {
+      gt_started = 1;
+    } else {
+      gtt.bg = 0;
+      gt_task_run(&gtt);
     }
-    rd_image_free(&half);
-    rd_tm_add(RD_TM_GT, tm);
   }
   /* CPU */
   if (run->use_cpu) {
@@ -821,6 +977,7 @@ int rd_pass_ssf(rd_run *run) {
     free(e1);
     if (!ok) goto done;
   }
+  if (run->gt && gt_join(&gtt, &gth, &gt_started, gb, &gt)) goto done;
   /* hand the CPU images and the gt over; the region metrics first */
   for (i = 0; i < M_COUNT; i++) {
     if (!run->use_cpu) break;
@@ -838,6 +995,9 @@ int rd_pass_ssf(rd_run *run) {
   }
   rc = 0;
 done:
+  if (gt_started) pthread_join(gth, NULL);
+  rd_image_free(&gtt.gt);
+  rd_image_free(&gtt.half);
   for (i = 0; i < M_COUNT; i++) {
     rd_image_free(&cpu_img[i]);
     rd_image_free(&keep[i]);

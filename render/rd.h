@@ -213,13 +213,23 @@ int rd_threads(void);
  * together: the time one thread would take, the CPU column's meaning. */
 double rd_parallel(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), void *ctx,
                    const char *label);
+/* rd_parallel for background work (a ground truth computed on a thread of its own while the
+ * pass goes on): the rows' CPU time is counted as background (rd_tm); no progress bar. */
+double rd_parallel_bg(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), void *ctx,
+                      const char *label);
+/* 1 when a pass may compute its ground truth on a thread of its own, beside its GL work (the
+ * pass processes run at the same time: main.c), else 0 */
+int rd_bg_ok(void);
+/* lowers the calling thread's priority (nice + RD_PAR_NICE) where the system allows it */
+void rd_thread_nice(void);
 
 /* The passes of a run with GL run in processes of their own, at the same time (main.c); the
  * gate keeps what is timed by the wall clock quiet. Work that may overlap others (the JIT, a
  * piece of rd_parallel) runs between rd_gate_enter(0) and rd_gate_leave(0), any number at
  * once; a timed section (the GL draws, the grid build) between rd_gate_enter(1) and
- * rd_gate_leave(1), alone: it waits until no piece runs (new pieces may start meanwhile: the
- * CPUs stay busy), and pieces wait while it runs.
+ * rd_gate_leave(1), alone: it waits until no piece runs (new compiles may start meanwhile: the
+ * CPUs stay busy; new rows of rd_parallel, entered with rd_gate_enter(2), wait for it: a row is
+ * short), and pieces wait while it runs.
  * Without rd_gate_share() (one process) these do nothing. rd_gate_share: 0, or -1 when the
  * shared memory is refused. rd_gate_renderer: 256 shared bytes (NULL without the gate). */
 int rd_gate_share(void);
@@ -230,14 +240,21 @@ char *rd_gate_renderer(void);
 /* ---- where the run's time goes (--timings) ---------------------------------------------- */
 /* Wall and process CPU time (every thread, llvmpipe's included) spent in each part of a pass,
  * summed over the run: GL compile (compile, link and the first draw, where llvmpipe's JIT
- * runs), GL draws (the timed ones), GL setup (textures, buffers, read-back), ground truth. */
+ * runs), GL draws (the timed ones), GL setup (textures, buffers, read-back), ground truth. A
+ * ground truth computed in the background (rd_parallel_bg) counts its own CPU time, and the
+ * parts that run meanwhile leave it out; its wall time overlaps the pass's other parts. */
 enum { RD_TM_GL_COMPILE = 0, RD_TM_GL_DRAW = 1, RD_TM_GL_SETUP = 2, RD_TM_GT = 3, RD_TM_N = 4 };
 typedef struct {
-  double wall, cpu; /* ms */
+  double wall, cpu; /* ms; cpu: the process's */
+  double bg;        /* ms: the CPU time of the background work (rd_parallel_bg) so far */
 } rd_tm;
 rd_tm rd_tm_now(void);
-/* adds the time since t0 to part `part`; returns now (to chain parts) */
+/* adds the time since t0 to part `part`, less the CPU time of the background work meanwhile
+   (it is counted where it belongs, rd_tm_add_ms); returns now (to chain parts) */
 rd_tm rd_tm_add(int part, rd_tm t0);
+void rd_tm_add_ms(int part, double wall_ms, double cpu_ms);
+/* CPU ms of this thread, added to the background work's (a ground truth on a thread of its own) */
+void rd_bg_add_cpu(double ms);
 /* the totals so far (RD_TM_N entries); rd_tm_merge adds a pass process's totals */
 void rd_tm_get(rd_tm *out);
 void rd_tm_merge(const rd_tm *parts);

@@ -2,6 +2,7 @@
 #include "rd.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -29,6 +30,13 @@ double rd_cpu_ms(void) {
 }
 
 static rd_tm tm_sum[RD_TM_N];
+static pthread_mutex_t bg_mu = PTHREAD_MUTEX_INITIALIZER;
+static double bg_cpu; /* ms, rd_bg_add_cpu */
+void rd_bg_add_cpu(double ms) {
+  pthread_mutex_lock(&bg_mu);
+  bg_cpu += ms;
+  pthread_mutex_unlock(&bg_mu);
+}
 rd_tm rd_tm_now(void) {
   struct timespec ts;
   rd_tm t;
@@ -36,15 +44,24 @@ rd_tm rd_tm_now(void) {
   t.wall = (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
   t.cpu = (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+  pthread_mutex_lock(&bg_mu);
+  t.bg = bg_cpu;
+  pthread_mutex_unlock(&bg_mu);
   return t;
 }
 rd_tm rd_tm_add(int part, rd_tm t0) {
   rd_tm t = rd_tm_now();
   if (part >= 0 && part < RD_TM_N) {
     tm_sum[part].wall += t.wall - t0.wall;
-    tm_sum[part].cpu += t.cpu - t0.cpu;
+    tm_sum[part].cpu += (t.cpu - t.bg) - (t0.cpu - t0.bg);
   }
   return t;
+}
+void rd_tm_add_ms(int part, double wall_ms, double cpu_ms) {
+  if (part >= 0 && part < RD_TM_N) {
+    tm_sum[part].wall += wall_ms;
+    tm_sum[part].cpu += cpu_ms;
+  }
 }
 void rd_tm_get(rd_tm *out) {
   memcpy(out, tm_sum, sizeof tm_sum);

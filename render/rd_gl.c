@@ -14,6 +14,21 @@
 #endif
 
 static int opened;
+/* the last program, kept for a draw with the same source (llvmpipe keeps its JIT code) */
+static struct {
+  char *src;
+  GLuint prog, vs, fs;
+} last;
+
+static void last_free(void) {
+  if (opened && last.prog) {
+    gl.DeleteProgram(last.prog);
+    gl.DeleteShader(last.vs);
+    gl.DeleteShader(last.fs);
+  }
+  free(last.src);
+  memset(&last, 0, sizeof last);
+}
 
 int rd_gl_open(const char *backend) {
   if (opened) return 0;
@@ -25,6 +40,7 @@ int rd_gl_open(const char *backend) {
 }
 
 void rd_gl_close(void) {
+  last_free();
   if (opened) glctx_close();
   opened = 0;
 }
@@ -128,7 +144,7 @@ int rd_gl_run(const rd_scene *s, const rd_gbuf *gb, const rd_gl_pass *p, float *
   GLint ok = 0;
   float *tmp = NULL, *mats = NULL;
   double *t = NULL;
-  rd_tm tm = {0, 0};
+  rd_tm tm = {0, 0, 0};
   int held = 0; /* the gate: 0, 1 shared, 2 alone */
   if (!opened && rd_gl_open(NULL)) return -1;
   if (p->nout < 1 || p->nout > 8 || p->nbuf < 0 || p->nbuf > 6 || p->ninputs < 0 ||
@@ -165,6 +181,16 @@ int rd_gl_run(const rd_scene *s, const rd_gbuf *gb, const rd_gl_pass *p, float *
   if (sadds(&src, p->body)) goto done;
   /* program */
   tm = rd_tm_now();
+  if (last.src && !strcmp(last.src, src.s)) {
+    prog = last.prog;
+    vs = last.vs;
+    fs = last.fs;
+    free(last.src);
+    memset(&last, 0, sizeof last);
+    gl.UseProgram(prog);
+    tm = rd_tm_add(RD_TM_GL_COMPILE, tm);
+    goto have_prog;
+  }
   if (!(vs = compile(GL_VERTEX_SHADER, vs_src, "vertex")) ||
       !(fs = compile(GL_FRAGMENT_SHADER, src.s, "fragment")))
     goto done;
@@ -181,6 +207,7 @@ int rd_gl_run(const rd_scene *s, const rd_gbuf *gb, const rd_gl_pass *p, float *
   }
   gl.UseProgram(prog);
   tm = rd_tm_add(RD_TM_GL_COMPILE, tm);
+have_prog:
   /* G-buffer and input textures */
   tmp = (float *)malloc(npx * 4 * sizeof(float));
   if (!tmp) goto done;
@@ -300,9 +327,18 @@ done:
       if (otex[i]) gl.DeleteTextures(1, &otex[i]);
     for (i = 0; i < 7; i++)
       if (ssbo[i]) gl.DeleteBuffers(1, &ssbo[i]);
-    if (prog) gl.DeleteProgram(prog);
-    if (vs) gl.DeleteShader(vs);
-    if (fs) gl.DeleteShader(fs);
+    if (rc == 0 && prog) { /* kept for the next draw of the same source */
+      last_free();
+      last.src = src.s;
+      src.s = NULL;
+      last.prog = prog;
+      last.vs = vs;
+      last.fs = fs;
+    } else {
+      if (prog) gl.DeleteProgram(prog);
+      if (vs) gl.DeleteShader(vs);
+      if (fs) gl.DeleteShader(fs);
+    }
   }
   free(src.s);
   free(tmp);
