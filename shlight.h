@@ -2997,6 +2997,47 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near2(const float R[9], double x0
   double s2 = e0 * e0 + e1 * e1 + e2 * e2 + x0 * x0 + x1 * x1 + x2 * x2;
   return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
 }
+#if defined(__AVX2__) && defined(__FMA__)
+/* the same in float lanes (e0 x0 e1 x1 e2 x2 0 0): v = a1 b1 +- a2 b2 + a3 b3 - c, each
+   operand one lane permute of R[0..6] with lane 7 zeroed; rounding: |d - computed d| <= 1.1e-7 */
+static const int SHLI_ROT_NIX[56] = {0, 1, 3, 2, 0, 0, 7, 7, 0, 5, 3, 3, 3, 4, 7, 7, 1, 2, 4, 0,
+                                     1, 1, 7, 7, 1, 4, 4, 5, 4, 3, 7, 7, 2, 7, 5, 7, 2, 7, 7, 7,
+                                     2, 7, 5, 7, 5, 7, 7, 7, 0, 5, 0, 6, 0, 7, 0, 0};
+#define SHLI_ROT_NP(k) \
+  _mm256_permutevar8x32_ps(z, _mm256_loadu_si256((const __m256i *)(SHLI_ROT_NIX + 8 * (k))))
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
+  __m256 z = _mm256_blend_ps(_mm256_loadu_ps(R), _mm256_setzero_ps(), 0x80);
+  __m256 c = _mm256_permutevar8x32_ps(_mm256_loadu_ps(R + 1),
+                                      _mm256_loadu_si256((const __m256i *)(SHLI_ROT_NIX + 48)));
+  __m256 v = _mm256_fmsub_ps(SHLI_ROT_NP(4), SHLI_ROT_NP(5),
+                             _mm256_blend_ps(c, _mm256_set_ps(0, 0, 0, 0, 0, 1, 0, 1), 0xd5));
+  __m128 t;
+  v = _mm256_fmsubadd_ps(SHLI_ROT_NP(2), SHLI_ROT_NP(3), v);
+  v = _mm256_fmsubadd_ps(SHLI_ROT_NP(0), SHLI_ROT_NP(1), v);
+  v = _mm256_mul_ps(v, v);
+  t = _mm_add_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+  t = _mm_add_ps(t, _mm_movehl_ps(t, t));
+  t = _mm_add_ss(t, _mm_movehdup_ps(t));
+  return _mm_cvtss_f32(t) <= (float)(SHLI_ROT_ORTH * SHLI_ROT_ORTH);
+}
+#undef SHLI_ROT_NP
+/* n = 2: band 1 in double lanes 1..3, (r11 r21 r01) am - (r12 r22 r02) a0 + (r10 r20 r00) ap
+   with lane 2 negated (shli_rot_b012's sums); lane 0 takes sh[0] */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1v(const float R[9], const float *sh,
+                                                    float *out_sh) {
+  static const int ix[16] = {0, 3, 6, 0, 0, 4, 7, 1, 0, 3, 6, 0, 0, 3, 6, 0};
+  __m256 f = _mm256_permutevar8x32_ps(_mm256_loadu_ps(R + 1), _mm256_loadu_si256((const __m256i *)ix));
+  __m256 g = _mm256_permutevar8x32_ps(_mm256_loadu_ps(R), _mm256_loadu_si256((const __m256i *)(ix + 8)));
+  __m128 a = _mm_loadu_ps(sh);
+  __m256d ad = _mm256_cvtps_pd(a);
+  __m256d u = _mm256_mul_pd(_mm256_permute4x64_pd(ad, 0x55), _mm256_cvtps_pd(_mm256_castps256_ps128(f)));
+  __m128 o;
+  u = _mm256_fnmadd_pd(_mm256_permute4x64_pd(ad, 0xaa), _mm256_cvtps_pd(_mm256_extractf128_ps(f, 1)), u);
+  u = _mm256_fmadd_pd(_mm256_permute4x64_pd(ad, 0xff), _mm256_cvtps_pd(_mm256_castps256_ps128(g)), u);
+  o = _mm_xor_ps(_mm256_cvtpd_ps(u), _mm_set_ps(0.0f, -0.0f, 0.0f, 0.0f));
+  _mm_storeu_ps(out_sh, _mm_blend_ps(o, a, 1));
+}
+#else
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   double r00 = (double)R[0];
   double r01 = (double)R[1];
@@ -3013,6 +3054,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   double s2 = e0 * e0 + e1 * e1 + e2 * e2 + x0 * x0 + x1 * x1 + x2 * x2;
   return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
 }
+#endif
 
 /* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of the rotation Rz(alpha) Ry(beta)
    Rz(gamma), given the cosines and sines of alpha, beta, gamma */
@@ -3253,6 +3295,12 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R
     shli_sh_rotate_slow(n, R, sh, out_sh);
     return;
   }
+#if defined(__AVX2__) && defined(__FMA__)
+  if (n == 2) {
+    shli_rot_b1v(R, sh, out_sh);
+    return;
+  }
+#endif
   shli_rot_b012(n, R, sh, out_sh);
 }
 
