@@ -232,36 +232,33 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
 
 /* shl_sh_rotate: out_sh (n * n floats) = the SH of the function sh (n * n floats) rotated by
    the rotation matrix R (row-major, R[3 i + j] = R_ij): g(w) = f(R^T w), so sh = Y(d) gives
-   out_sh = Y(R d). n: bands, 1..SHLIGHT_MAX_BANDS (64 in C; GLSL: written for n <= 16, see
-   accuracy); n < 1 writes nothing, n > max is clamped.
-   Method (docs/rotation.md): portable kernel (any n; GLSL): zyz Euler angles read without
-   inverse trigonometry, the y rotation from Wigner's d by its three-term recurrence in l, one
-   row at a time (O(n) work space). C with GCC or Clang, n <= 8 (SHLIGHT_ROTATE_FAST, default 1
-   there), R within 1e-6 of a rotation (below): R as given for bands 1 (R's entries) and 2
-   (R C R^T, C the band's symmetric traceless matrix), bands 3..7 by z rotations and constant
-   +90 degree turns about x in double vectors, the angles read with 2 square roots and 1
-   division.
-   R: a rotation (orthonormal, det +1). Where the root sum of squares of |r0|^2 - 1, |r1|^2 -
-   1, r0 . r1 and the 3 entries of r0 x r1 - r2 (r_i: R's rows) is <= 1e-6 (float rounding of
-   a rotation: <= 1.6e-7; computed in float from a unit quaternion: <= 8.0e-7), the C n <= 8
-   path takes R as given (bands 1, 2 are then the linear maps R defines, within 1e-6 of the
-   nearest rotation's); any other R, and every R in the portable kernel, is read as the exact
-   rotation given by R's third column and R_00, R_01, R_10, R_11 (within 1e-7 of a
-   float-rounded R; any finite matrix gives a rotation, an all-zero R the identity; R_20, R_21
-   not read). NaN in a read entry gives NaN in every band above 0. sh and out_sh must not
-   overlap.
-   Accuracy (C, double inside; against a long-double re-projection by Gauss quadrature,
-   tests/test_rotate.c): per band, |error| / |input band| <= 4.6e-8 in the portable kernel
-   (n = 1..64, beta = 0, 1e-6, pi / 2, pi - 1e-6, pi: the float rounding of the output); the n <=
-   8 path 1.3e-7 on float-rounded rotations, 6e-7 on rotations moved by 3 ulps per entry;
-   band energy kept to 1.4e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16
-   (llvmpipe).
-   Cost: n <= 8 (C, GCC / Clang): 77 / 145 / 303 / 450 / 583 / 881 instructions at n = 2 / 3 /
-   4 / 5 / 6 / 8 (gcc -O3 -march=x86-64-v3), 7.4 / 15.6 / 34 / 54 / 69 / 103 ns; DirectXMath's
-   XMSHRotate (n <= 6) 79 / 222 / 304 / 463 / 665 instructions, 4.5 / 18.3 / 30 / 45 / 66 ns
-   (docs/rotation.md). Otherwise about n^3 / 3 steps of the two recurrences (one sqrt and one
-   division each) and n^3 / 3 of the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64 (gcc
-   -O3 -march=native). Stack: about 7.5 KB at SHLIGHT_MAX_BANDS = 64. */
+   out_sh = Y(R d). n: bands, 1..SHLIGHT_MAX_BANDS (64 in C; GLSL: written for n <= 16); n < 1
+   writes nothing, n > max is clamped. sh and out_sh must not overlap.
+   Method (docs/rotation.md): portable kernel (any n; GLSL): zyz angles without inverse
+   trigonometry, Wigner's d by its three-term recurrence in l, one row at a time (O(n) work
+   space). C with GCC / Clang, n <= 8 (SHLIGHT_ROTATE_FAST, default 1 there), R near a rotation
+   (below): bands 1 and 2 from R as given, bands 3..7 by z rotations and constant +90 degree
+   turns about x in double vectors (2 square roots, 1 division).
+   R: a rotation. d: the root sum of squares of |r0|^2 - 1, |r1|^2 - 1, r0 . r1 and the 3
+   entries of r0 x r1 - r2 (r_i: R's rows; float rounding of a rotation: <= 1.6e-7, computed in
+   float from a unit quaternion: <= 8.0e-7). Where d <= 1e-6 (computed in float with AVX2 and
+   FMA at n <= 3: within 1.2e-7 of d; else in double), the C n <= 8 path takes R as given: the
+   result is within 3 d of the nearest rotation's (measured 2.4 d). Any other R, and every R in
+   the portable kernel, is read as the exact rotation given by R's third column and R_00, R_01,
+   R_10, R_11 (within 1e-7 of a float-rounded R; any finite matrix gives a rotation, an
+   all-zero R the identity; R_20, R_21 not read); NaN in a read entry gives NaN in every band
+   above 0.
+   Accuracy (C, double inside; against a long-double re-projection, tests/test_rotate.c): per
+   band, |error| / |input band| <= 4.6e-8 in the portable kernel (n = 1..64, the float rounding
+   of the output); the n <= 8 path 1.3e-7 on float-rounded rotations, 6e-7 on rotations moved
+   by 3 ulps per entry; band energy kept to 1.4e-7. GLSL (float inside): within 1.8e-6 of C
+   per band at n = 16 (llvmpipe).
+   Cost: n <= 8 (C, GCC / Clang): 69 / 164 / 303 / 450 / 583 / 881 instructions at n = 2 / 3 /
+   4 / 5 / 6 / 8 (gcc -O3 -march=x86-64-v3), 6.5 / 14.8 / 34 / 53 / 69 / 102 ns; DirectXMath's
+   XMSHRotate (n <= 6) 79 / 222 / 304 / 463 / 665 instructions, 4.5 / 18.3 / 30 / 45 / 66 ns.
+   Otherwise about n^3 / 3 steps of the two recurrences (a sqrt and a division each) and n^3 /
+   3 of the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64. Stack: about 7.5 KB at
+   SHLIGHT_MAX_BANDS = 64. */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh);
 
 /* ---- light --------------------------------------------------------------------------------- */
@@ -2748,20 +2745,15 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
   }
 }
 
-/* shl_sh_rotate's C-only path for n <= SHLI_ROT_FAST_BANDS (GCC and Clang: it is written in their
-   vector extensions; SHLIGHT_ROTATE_FAST 0 sends every n to the portable kernel below, the body
-   the GLSL twin shares; tests/test_rotate.c holds this path to that kernel). R is taken as
-   given where it is a rotation to within SHLI_ROT_ORTH (else the portable kernel): band 1 is R
-   itself, band 2 the symmetric traceless matrix of its coefficients turned as R C R^T. Bands
-   3..7: zyz angles (one square root, one division) and Ry(beta) = X(-90) Rz(beta) X(+90),
-   X(+90) the rotation by +90 degrees about x, whose band matrices are constants (the "zxzxz"
-   factorisation); X(-90) = Rz(pi) X(+90) Rz(pi), so per band: z rotations by gamma, beta + pi,
-   alpha + pi with X(+90) between them. X(+90) keeps x-parity and m's parity: a band splits
-   into four lane groups (A: m = 0, 2, 4, 6; C: m = 1, 3, 5, 7; D: m = -, -2, -4, -6; B: m =
-   -1, -3, -5, -7), each output group takes one input group (l even: A A, C D, D C, B B; l odd:
-   A B, C C, D D, B A), and a z rotation pairs A with D and C with B lane by lane. Double
-   inside, 4 lanes (one AVX register); the table holds each band's four group blocks by
-   columns. */
+/* shl_sh_rotate's C-only path for n <= SHLI_ROT_FAST_BANDS (GCC / Clang vector extensions;
+   tests/test_rotate.c holds it to the portable kernel below, the GLSL twin's body). R within
+   SHLI_ROT_ORTH of a rotation is taken as given: band 1 is R, band 2 R C R^T; bands 3..7 by
+   zyz angles and Ry(b) = X(-90) Rz(b) X(+90), X(+90) (+90 degrees about x) constant per band
+   and X(-90) = Rz(pi) X(+90) Rz(pi). X(+90) keeps the parities of x and m: four lane groups
+   (A: m = 0, 2, 4, 6; C: 1, 3, 5, 7; D: -, -2, -4, -6; B: -1, -3, -5, -7), each output group
+   from one input group (l even: A A, C D, D C, B B; l odd: A B, C C, D D, B A), a z rotation
+   pairs A with D and C with B lane by lane; double inside, 4 lanes; the table holds each
+   band's four group blocks by columns (docs/rotation.md). */
 #ifndef SHLIGHT_ROTATE_FAST
 #if defined(__GNUC__) || defined(__clang__)
 #define SHLIGHT_ROTATE_FAST 1
@@ -2780,86 +2772,39 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
 #define SHLI_ROT_ORTH 1e-6
 /* clang-format off */
 static const double SHLI_ROT_X90[320] = {
-  0.61237243569579447, 0.79056941504209488, 0, 0,
-  0.79056941504209488, -0.61237243569579447, 0, 0,
-  0, 0, 0, 0,
-  0, 0, 0, 0,
-  -0.25, -0.96824583655185426, 0, 0,
-  -0.96824583655185426, 0.25, 0, 0,
-  0, 0, 0, 0,
-  0, 0, 0, 0,
-  0, 0, 0, 0,
-  0, -1.0, 0, 0,
-  0, 0, 0, 0,
-  0, 0, 0, 0,
-  -0.61237243569579447, -0.79056941504209488, 0, 0,
-  -0.79056941504209488, 0.61237243569579447, 0, 0,
-  0, 0, 0, 0,
-  0, 0, 0, 0,
-  0.375, 0.55901699437494745, 0.73950997288745202, 0,
-  0.55901699437494745, 0.5, -0.66143782776614768, 0,
-  0.73950997288745202, -0.66143782776614768, 0.125, 0,
-  0, 0, 0, 0,
-  0, 0, 0, 0,
-  0.35355339059327379, 0.93541434669348533, 0, 0,
-  0.93541434669348533, -0.35355339059327379, 0, 0,
-  0, 0, 0, 0,
-  0, -0.35355339059327379, -0.93541434669348533, 0,
-  0, -0.93541434669348533, 0.35355339059327379, 0,
-  0, 0, 0, 0,
-  0, 0, 0, 0,
-  0.75, 0.66143782776614768, 0, 0,
-  0.66143782776614768, -0.75, 0, 0,
-  0, 0, 0, 0,
-  0, 0, 0, 0,
-  -0.48412291827592713, -0.66143782776614768, -0.57282196186947998, 0,
-  -0.52291251658379723, -0.30618621784789724, 0.79549512883486595, 0,
-  -0.70156076002011403, 0.68465319688145765, -0.19764235376052372, 0,
-  0, 0, 0, 0,
-  0.125, 0.40504629365049127, 0.90571104663683988, 0,
-  0.40504629365049127, 0.8125, -0.41926274578121059, 0,
-  0.90571104663683988, -0.41926274578121059, 0.0625, 0,
-  0, 0, 0, 0,
-  0, 0, 0, 0,
-  0, 0.5, 0.8660254037844386, 0,
-  0, 0.8660254037844386, -0.5, 0,
-  0, 0, 0, 0,
-  0.48412291827592713, 0.52291251658379723, 0.70156076002011403, 0,
-  0.66143782776614768, 0.30618621784789724, -0.68465319688145765, 0,
-  0.57282196186947998, -0.79549512883486595, 0.19764235376052372, 0,
-  0, 0, 0, 0,
-  -0.3125, -0.45285552331841994, -0.49607837082461076, -0.67169328938139616,
-  -0.45285552331841994, -0.53125, -0.17116329922036441, 0.6952686081652184,
-  -0.49607837082461076, -0.17116329922036441, 0.8125, -0.25387620014487378,
-  -0.67169328938139616, 0.6952686081652184, -0.25387620014487378, 0.03125,
-  0, 0, 0, 0,
-  -0.19764235376052372, -0.5625, -0.80282703616657058, 0,
-  -0.4330127018922193, -0.68465319688145765, 0.58630196997792872, 0,
-  -0.87945295496689302, 0.46351240544347894, -0.10825317547305482, 0,
-  0, 0.19764235376052372, 0.4330127018922193, 0.87945295496689302,
-  0, 0.5625, 0.68465319688145765, -0.46351240544347894,
-  0, 0.80282703616657058, -0.58630196997792872, 0.10825317547305482,
-  0, 0, 0, 0,
-  -0.625, -0.59292706128157113, -0.50775240028974755, 0,
-  -0.59292706128157113, -0.0625, 0.80282703616657058, 0,
-  -0.50775240028974755, 0.80282703616657058, -0.3125, 0,
-  0, 0, 0, 0,
-  0.41339864235384227, 0.57409915846480741, 0.53855274811294018, 0.45768182862115031,
-  0.42961647140211001, 0.4198446513295126, -0.10364452469860624, -0.7927281808728639,
-  0.47495887979908324, 0.07328774624724109, -0.78125, 0.39836089949943632,
-  0.64725984928774938, -0.69912054128740919, 0.2981060004427955, -0.058463396668342833,
-  -0.078125, -0.24356964481437338, -0.44879395676078349, -0.85624429742626607,
-  -0.24356964481437338, -0.609375, -0.57004488584233437, 0.49435287561113672,
-  -0.44879395676078349, -0.57004488584233437, 0.671875, -0.14905300022139775,
-  -0.85624429742626607, 0.49435287561113672, -0.14905300022139775, 0.015625,
-  0, 0, 0, 0,
-  0, -0.3125, -0.58630196997792872, -0.74739129644383739,
-  0, -0.58630196997792872, -0.5, 0.63737743919909806,
-  0, -0.74739129644383739, 0.63737743919909806, -0.1875,
-  -0.41339864235384227, -0.42961647140211001, -0.47495887979908324, -0.64725984928774938,
-  -0.57409915846480741, -0.4198446513295126, -0.07328774624724109, 0.69912054128740919,
-  -0.53855274811294018, 0.10364452469860624, 0.78125, -0.2981060004427955,
-  -0.45768182862115031, 0.7927281808728639, -0.39836089949943632, 0.058463396668342833
+.6123724356957945,.7905694150420949,0,0,.7905694150420949,-.6123724356957945,0,0,0,0,0,0,0,0,0,0,
+-.25,-.9682458365518543,0,0,-.9682458365518543,.25,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,-1,0,0,0,0,0,0,0,0,
+0,0,-.6123724356957945,-.7905694150420949,0,0,-.7905694150420949,.6123724356957945,0,0,0,0,0,0,0,0,
+0,0,.375,.5590169943749475,.739509972887452,0,.5590169943749475,.5,-.6614378277661477,0,
+.739509972887452,-.6614378277661477,.125,0,0,0,0,0,0,0,0,0,.3535533905932738,.9354143466934853,0,0,
+.9354143466934853,-.3535533905932738,0,0,0,0,0,0,0,-.3535533905932738,-.9354143466934853,0,0,
+-.9354143466934853,.3535533905932738,0,0,0,0,0,0,0,0,0,.75,.6614378277661477,0,0,.6614378277661477,
+-.75,0,0,0,0,0,0,0,0,0,0,-.4841229182759271,-.6614378277661477,-.57282196186948,0,
+-.5229125165837972,-.30618621784789724,.795495128834866,0,-.701560760020114,.6846531968814576,
+-.19764235376052372,0,0,0,0,0,.125,.4050462936504913,.9057110466368399,0,.4050462936504913,.8125,
+-.4192627457812106,0,.9057110466368399,-.4192627457812106,.0625,0,0,0,0,0,0,0,0,0,0,.5,
+.8660254037844386,0,0,.8660254037844386,-.5,0,0,0,0,0,.4841229182759271,.5229125165837972,
+.701560760020114,0,.6614378277661477,.30618621784789724,-.6846531968814576,0,.57282196186948,
+-.795495128834866,.19764235376052372,0,0,0,0,0,-.3125,-.45285552331841994,-.49607837082461076,
+-.6716932893813962,-.45285552331841994,-.53125,-.1711632992203644,.6952686081652184,
+-.49607837082461076,-.1711632992203644,.8125,-.2538762001448738,-.6716932893813962,
+.6952686081652184,-.2538762001448738,.03125,0,0,0,0,-.19764235376052372,-.5625,-.8028270361665706,0,
+-.4330127018922193,-.6846531968814576,.5863019699779287,0,-.879452954966893,.46351240544347894,
+-.10825317547305482,0,0,.19764235376052372,.4330127018922193,.879452954966893,0,.5625,
+.6846531968814576,-.46351240544347894,0,.8028270361665706,-.5863019699779287,.10825317547305482,0,0,
+0,0,-.625,-.5929270612815711,-.5077524002897476,0,-.5929270612815711,-.0625,.8028270361665706,0,
+-.5077524002897476,.8028270361665706,-.3125,0,0,0,0,0,.41339864235384227,.5740991584648074,
+.5385527481129402,.4576818286211503,.42961647140211,.4198446513295126,-.10364452469860624,
+-.7927281808728639,.47495887979908324,.07328774624724109,-.78125,.3983608994994363,
+.6472598492877494,-.6991205412874092,.2981060004427955,-.05846339666834283,-.078125,
+-.24356964481437338,-.4487939567607835,-.8562442974262661,-.24356964481437338,-.609375,
+-.5700448858423344,.4943528756111367,-.4487939567607835,-.5700448858423344,.671875,
+-.14905300022139775,-.8562442974262661,.4943528756111367,-.14905300022139775,.015625,0,0,0,0,0,
+-.3125,-.5863019699779287,-.7473912964438374,0,-.5863019699779287,-.5,.6373774391990981,0,
+-.7473912964438374,.6373774391990981,-.1875,-.41339864235384227,-.42961647140211,
+-.47495887979908324,-.6472598492877494,-.5740991584648074,-.4198446513295126,-.07328774624724109,
+.6991205412874092,-.5385527481129402,.10364452469860624,.78125,-.2981060004427955,
+-.4576818286211503,.7927281808728639,-.3983608994994363,.05846339666834283
 };
 /* clang-format on */
 #if defined(__clang__)
@@ -2871,9 +2816,8 @@ static const double SHLI_ROT_X90[320] = {
 #endif
 #define SHLI_ROT_FORCE __attribute__((always_inline))
 #define SHLI_ROT_NOINLINE static __attribute__((noinline, unused))
-/* GCC's SLP vectoriser: on AVX-512 targets it merges a band's stores into 512-bit conversions
-   (1.4x the time at n = 5, 6); in the scalar bands 0..2 its lane shuffles cost more than they
-   save */
+/* GCC's SLP vectoriser off: on AVX-512 it merges band stores into 512-bit conversions (1.4x
+   the time at n = 5, 6); in bands 0..2 its shuffles cost more than they save */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__AVX512F__)
 #define SHLI_ROT_NOSLP __attribute__((optimize("no-tree-slp-vectorize")))
 #else
@@ -2900,15 +2844,14 @@ typedef __INT64_TYPE__ shli_rot_i4 __attribute__((vector_size(32)));
 #endif
 #define SHLI_ROT_LD(v, p) memcpy(&(v), (p), sizeof(v))
 
-/* AVX: X(+90)'s broadcasts from memory (wm), see shli_rot_band; SSE2 (two registers per vector):
-   from the registers */
+/* X(+90)'s broadcasts: AVX from memory (wm, see shli_rot_band), SSE2 from the registers */
 #if defined(__AVX__)
 #define SHLI_ROT_WS const double *ws_ = wm + 4 * src_
 #else
 #define SHLI_ROT_WS shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3))
 #endif
-/* X(+90) for output group g of band l (a literal): from the z-rotated groups w0..w3 (A, C, D,
-   B; stored in wm) into out (named variables, not arrays, which GCC keeps in registers) */
+/* X(+90), output group g of band l (a literal), from the z-rotated groups w0..w3 (A, C, D, B)
+   into out (named variables: GCC keeps them in registers) */
 #define SHLI_ROT_X(l, g, out) \
   do { \
     int src_ = SHLI_ROT_SRC(l, g); \
@@ -2926,9 +2869,8 @@ typedef __INT64_TYPE__ shli_rot_i4 __attribute__((vector_size(32)));
     } \
   } while (0)
 
-/* band l (3 <= l < SHLI_ROT_FAST_BANDS) of sh rotated into out_sh; tv[4 q + j]: cos, sin of the
-   even m, cos, sin of the odd m (j = 0..3) of the q-th z rotation. Inlined with a literal l,
-   every loop has a constant trip count and unrolls into straight-line code. */
+/* band l (3 <= l < SHLI_ROT_FAST_BANDS, a literal: the loops unroll) of sh into out_sh;
+   tv[4 q + j]: cos, sin of the even m, of the odd m (j = 0..3), q-th z rotation */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *tv, const float *sh,
                                                      float *out_sh) {
   const double *t = SHLI_ROT_X90 + 64 * (l - 3);
@@ -3012,9 +2954,8 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
   }
 }
 
-/* R is a rotation to within SHLI_ROT_ORTH: the root sum of squares of |r0|^2 - 1, |r1|^2 - 1,
-   r0 . r1 and r0 x r1 - r2 (rows r_i) is at most that; NaN fails. shli_rot_near2: with the
-   first two entries of r0 x r1 - r2 (up to sign) given */
+/* d <= SHLI_ROT_ORTH (d: the contract's); NaN fails. shli_rot_near2: 2 entries of r0 x r1 - r2
+   (up to sign) given */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near2(const float R[9], double x0, double x1) {
   double r00 = (double)R[0];
   double r01 = (double)R[1];
@@ -3029,33 +2970,63 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near2(const float R[9], double x0
   double s2 = e0 * e0 + e1 * e1 + e2 * e2 + x0 * x0 + x1 * x1 + x2 * x2;
   return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
 }
+#if defined(__AVX2__) && defined(__FMA__)
+/* d in float lanes (e0 x0 e1 x1 e2 x2 0 0) as a1 b1 -+ a2 b2 + a3 b3 - c, operands permuted
+   from R[0..6], 0 (within 1.2e-7 of d) */
+#define SHLI_ROT_NP(a, b, c, d, e, f) \
+  _mm256_permutevar8x32_ps(z, _mm256_setr_epi32(a, b, c, d, e, f, 7, 7))
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
-  double r00 = (double)R[0];
-  double r01 = (double)R[1];
-  double r02 = (double)R[2];
-  double r10 = (double)R[3];
-  double r11 = (double)R[4];
-  double r12 = (double)R[5];
-  double e0 = r00 * r00 + (r01 * r01 + (r02 * r02 - 1.0));
-  double e1 = r10 * r10 + (r11 * r11 + (r12 * r12 - 1.0));
-  double e2 = r00 * r10 + (r01 * r11 + r02 * r12);
-  double x0 = r01 * r12 - (r02 * r11 + (double)R[6]);
-  double x1 = r02 * r10 - (r00 * r12 + (double)R[7]);
-  double x2 = r00 * r11 - (r01 * r10 + (double)R[8]);
-  double s2 = e0 * e0 + e1 * e1 + e2 * e2 + x0 * x0 + x1 * x1 + x2 * x2;
-  return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
+  __m256 z = _mm256_blend_ps(_mm256_loadu_ps(R), _mm256_setzero_ps(), 0x80);
+  __m256 c =
+      _mm256_permutevar8x32_ps(_mm256_loadu_ps(R + 1), _mm256_setr_epi32(0, 5, 0, 6, 0, 7, 0, 0));
+  __m256 v = _mm256_fmsub_ps(SHLI_ROT_NP(2, 7, 5, 7, 2, 7), SHLI_ROT_NP(2, 7, 5, 7, 5, 7),
+                             _mm256_blend_ps(c, _mm256_setr_ps(1, 0, 1, 0, 0, 0, 0, 0), 0xd5));
+  __m128 t;
+  v = _mm256_fmsubadd_ps(SHLI_ROT_NP(1, 2, 4, 0, 1, 1), SHLI_ROT_NP(1, 4, 4, 5, 4, 3), v);
+  v = _mm256_fmsubadd_ps(SHLI_ROT_NP(0, 1, 3, 2, 0, 0), SHLI_ROT_NP(0, 5, 3, 3, 3, 4), v);
+  v = _mm256_mul_ps(v, v);
+  t = _mm_add_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+  t = _mm_add_ps(t, _mm_movehl_ps(t, t));
+  t = _mm_add_ss(t, _mm_movehdup_ps(t));
+  return _mm_cvtss_f32(t) <= (float)(SHLI_ROT_ORTH * SHLI_ROT_ORTH);
 }
+#undef SHLI_ROT_NP
+/* n = 2: band 1 in double lanes 1..3 (lane 2 negated), lane 0 sh[0] */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1v(const float R[9], const float *sh,
+                                                    float *out_sh) {
+  __m256 f =
+      _mm256_permutevar8x32_ps(_mm256_loadu_ps(R + 1), _mm256_setr_epi32(0, 3, 6, 0, 0, 4, 7, 1));
+  __m256 g =
+      _mm256_permutevar8x32_ps(_mm256_loadu_ps(R), _mm256_setr_epi32(0, 3, 6, 0, 0, 0, 0, 0));
+  __m128 a = _mm_loadu_ps(sh);
+  __m256d ad = _mm256_cvtps_pd(a);
+  __m256d u =
+      _mm256_mul_pd(_mm256_permute4x64_pd(ad, 0x55), _mm256_cvtps_pd(_mm256_castps256_ps128(f)));
+  __m128 o;
+  u = _mm256_fnmadd_pd(_mm256_permute4x64_pd(ad, 0xaa),
+                       _mm256_cvtps_pd(_mm256_extractf128_ps(f, 1)), u);
+  u = _mm256_fmadd_pd(_mm256_permute4x64_pd(ad, 0xff), _mm256_cvtps_pd(_mm256_castps256_ps128(g)),
+                      u);
+  o = _mm_xor_ps(_mm256_cvtpd_ps(u), _mm_set_ps(0.0f, -0.0f, 0.0f, 0.0f));
+  _mm_storeu_ps(out_sh, _mm_blend_ps(o, a, 1));
+}
+#else
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
+  double r02 = (double)R[2];
+  double r12 = (double)R[5];
+  return shli_rot_near2(R, (double)R[1] * r12 - (r02 * (double)R[4] + (double)R[6]),
+                        r02 * (double)R[3] - ((double)R[0] * r12 + (double)R[7]));
+}
+#endif
 
-/* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of the rotation Rz(alpha) Ry(beta)
-   Rz(gamma), given the cosines and sines of alpha, beta, gamma */
+/* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of Rz(alpha) Ry(beta) Rz(gamma) */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, float *out_sh,
                                                      double ca, double sa, double cb, double sb,
                                                      double cg, double sg) {
   shli_rot_v4 tv[12];
   int q;
-  /* z_q = cos + i sin of gamma, beta + pi, alpha + pi (q = 0, 1, 2: the lanes of z); tv[4 q ..
-     4 q + 3] hold z_q^m for the even m (0, 2, 4, 6: powers of u = z^2; real, imaginary parts)
-     and the odd m (z times those), built lane q at a time and transposed */
+  /* z_q = cos + i sin of gamma, beta + pi, alpha + pi (lane q of z); tv[4 q .. 4 q + 3]: z_q^m
+     for the even m (powers of u = z^2; real, imaginary) and the odd m (z times those) */
   {
     shli_rot_v4 zr = {cg, -cb, -ca, 0.0};
     shli_rot_v4 zi = {sg, -sb, -sa, 0.0};
@@ -3278,19 +3249,24 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b012(int n, const float R[9], co
   }
 }
 
-/* n in [1, 3]: bands 0..2 where R is a rotation (shli_rot_near), else the portable kernel */
+/* n in [1, 3]: bands 0..2 (R near a rotation) or the portable kernel */
 SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R[9],
                                                             const float *sh, float *out_sh) {
   if (!shli_rot_near(R)) {
     shli_sh_rotate_slow(n, R, sh, out_sh);
     return;
   }
+#if defined(__AVX2__) && defined(__FMA__)
+  if (n == 2) {
+    shli_rot_b1v(R, sh, out_sh);
+    return;
+  }
+#endif
   shli_rot_b012(n, R, sh, out_sh);
 }
 
-/* n in [4, SHLI_ROT_FAST_BANDS]: where R is a rotation, the angles of bands 3.. first (their
-   square roots and division take the longest), bands 0..2, then shli_sh_rotate_h4 .. h8; else the
-   portable kernel */
+/* n in [4, SHLI_ROT_FAST_BANDS]: R near a rotation: the angles (the longest chain), bands 0..2,
+   then shli_sh_rotate_h4 .. h8; else the portable kernel */
 SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9], const float *sh,
                                                           float *out_sh) {
   double r00 = (double)R[0];
@@ -3310,8 +3286,8 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
   double hg;
   double fb;
   double f;
-  /* the zyz angles of bands 3.. (docs/rotation.md, method 1), before bands 1 and 2; cg, sg
-     are entries of r1 x r0, shared with the rotation test */
+  /* the zyz angles (docs/rotation.md, method 1); cg, sg: entries of r1 x r0, shared with the
+     check */
   cg = r11 * r02 - r01 * r12;
   sg = r10 * r02 - r00 * r12;
   if (!shli_rot_near2(R, cg + (double)R[6], sg - (double)R[7])) {
@@ -3325,8 +3301,8 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
   if (s2 > 0.0 && hg > 0.0) {
     double fg;
 #if defined(__SSE2__)
-    /* one instruction for both, no errno branch (its call would spill every live value); 1 /
-       sqrt(x) = sqrt(x) (1 / x): the square root and the division run side by side */
+    /* both in one instruction, no errno branch (its call spills every live value); 1 / sqrt(x)
+       = sqrt(x) (1 / x): square root and division side by side */
     __m128d x = _mm_set_pd(hg, s2);
     __m128d v = _mm_mul_pd(_mm_sqrt_pd(x), _mm_div_pd(_mm_set1_pd(1.0), x));
     f = _mm_cvtsd_f64(v);

@@ -745,6 +745,94 @@ static void test_fast_near_rotation(void) {
   }
 }
 
+/* the near-rotation measure d of a float R, in long double (the contract's definition) */
+static double rot_dist(const float R[9]) {
+  ld r[9], e0, e1, e2, x0, x1, x2;
+  int i;
+  for (i = 0; i < 9; ++i) {
+    r[i] = (ld)R[i];
+  }
+  e0 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2] - 1.0L;
+  e1 = r[3] * r[3] + r[4] * r[4] + r[5] * r[5] - 1.0L;
+  e2 = r[0] * r[3] + r[1] * r[4] + r[2] * r[5];
+  x0 = r[1] * r[5] - r[2] * r[4] - r[6];
+  x1 = r[2] * r[3] - r[0] * r[5] - r[7];
+  x2 = r[0] * r[4] - r[1] * r[3] - r[8];
+  return (double)sqrtl(e0 * e0 + e1 * e1 + e2 * e2 + x0 * x0 + x1 * x1 + x2 * x2);
+}
+
+/* the rotation nearest to R (polar factor, Newton: X <- (X + X^-T) / 2), long double */
+static void nearest_rotation(const float R[9], ld X[9]) {
+  int i, it;
+  for (i = 0; i < 9; ++i) {
+    X[i] = (ld)R[i];
+  }
+  for (it = 0; it < 6; ++it) {
+    ld c[9], det;
+    for (i = 0; i < 9; ++i) {
+      int r = i / 3, k = i % 3, r1 = (r + 1) % 3, r2 = (r + 2) % 3, k1 = (k + 1) % 3;
+      int k2 = (k + 2) % 3;
+      c[i] = X[3 * r1 + k1] * X[3 * r2 + k2] - X[3 * r1 + k2] * X[3 * r2 + k1];
+    }
+    det = X[0] * c[0] + X[1] * c[1] + X[2] * c[2];
+    for (i = 0; i < 9; ++i) {
+      X[i] = 0.5L * (X[i] + c[i] / det);
+    }
+  }
+}
+
+/* at the edge of the 1e-6 rule: rotations scaled, or moved in a random direction, to d near
+ * 0.7e-6 (taken as given: differs from the portable kernel, within 1e-6 of the nearest
+ * rotation's result, by the reference)
+ * and 1.4e-6 (the portable kernel's result to the bit); the check's own rounding may move the
+ * edge by 1.2e-7 (contract), so d in (0.88e-6, 1.12e-6) is not judged */
+static void test_fast_edge(void) {
+  static const double T[2] = {0.7e-6, 1.4e-6};
+  int n, k, j, i, kind, seen[2] = {0, 0};
+  double ratio[2][9] = {{0}};
+  for (n = 2; n <= 8; ++n) {
+    for (k = 0; k < 40; ++k) {
+      for (j = 0; j < 2; ++j) {
+        for (kind = 0; kind < 2; ++kind) {
+          float Q[9], R[9];
+          double dir[9], d, e;
+          ld QL[9];
+          rand_R(Q);
+          for (i = 0; i < 9; ++i) {
+            dir[i] = kind == 0 ? (double)Q[i] : 2.0 * urand() - 1.0;
+            R[i] = (float)((double)Q[i] + 1e-6 * dir[i]);
+          }
+          d = rot_dist(R);
+          for (i = 0; i < 9; ++i) {
+            R[i] = (float)((double)Q[i] + 1e-6 * dir[i] * T[j] / d);
+          }
+          d = rot_dist(R);
+          e = fast_vs_portable(n, R);
+          if (d <= 1e-6 - 1.2e-7) {
+            seen[0] += d >= 0.6e-6;
+            TL_CHECK(e > 0.0, "n = %d d = %g: fast vs portable %g (taken as given)", n, d, e);
+            nearest_rotation(R, QL);
+            ref_rotate(n, QL, g_in, g_ref);
+            e = band_err(n, g_in, g_out, g_ref);
+            ratio[kind][n] = e / d > ratio[kind][n] ? e / d : ratio[kind][n];
+            TL_CHECK(e <= 3.0 * d, "n = %d d = %g: %g against the nearest rotation", n, d, e);
+          } else if (d > 1e-6 + 1.2e-7) {
+            seen[1] += d <= 1.6e-6;
+            TL_CHECK(e == 0.0, "n = %d d = %g: fast vs portable %g", n, d, e);
+          }
+        }
+      }
+    }
+  }
+  TL_CHECK(seen[0] >= 500 && seen[1] >= 500, "edge cases near 0.7e-6 / 1.4e-6: %d %d", seen[0],
+           seen[1]);
+  for (n = 2; n <= 8; ++n) {
+    printf("  n = %d, d near 0.7e-6: worst band error against the nearest rotation / d: %.3g "
+           "(scaled), %.3g (random direction)\n",
+           n, ratio[0][n], ratio[1][n]);
+  }
+}
+
 int main(void) {
   TL_RUN(test_reference_selfcheck);
   TL_RUN(test_identity);
@@ -752,6 +840,7 @@ int main(void) {
   TL_RUN(test_fast_vs_portable);
   TL_RUN(test_fast_bad_matrices);
   TL_RUN(test_fast_near_rotation);
+  TL_RUN(test_fast_edge);
   TL_RUN(test_fast_accuracy);
   TL_RUN(test_fast_n4_random);
   TL_RUN(test_band_isolation);
