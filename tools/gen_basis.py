@@ -1109,6 +1109,10 @@ def clang_format(text, path):
 
 
 def main():
+    unknown = [a for a in sys.argv[1:] if a != '--check']
+    if unknown:
+        print(__doc__.split('Math (')[0].rstrip())
+        sys.exit(0 if unknown[0] in ('-h', '--help') else 2)
     check = '--check' in sys.argv
     stale = []
     hpath = os.path.join(ROOT, 'shlight.h')
