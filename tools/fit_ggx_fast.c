@@ -852,13 +852,15 @@ static char *emit_text(void) {
   }
   o += sprintf(o, "/* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its "
                   "--check */\n");
-  o += sprintf(
-      o,
-      "/* The fit of shl_polygon_ggx_fast (docs/area-lights.md): out_fit[0..4] a / alpha, g, d, P,\n"
-      "   k (low set: 1), degree %d in x and %d (low set: %d) in y = 2 mu - 1; out_fit[5] the albedo,\n"
-      "   degree %d in x and %d in 2 tau - 1. Per set, per output: rows of x-powers down to 0, each "
-      "of\n   y-powers down to 0. */\n",
-      DI, DJ, DJL, AI, AJ);
+  o += sprintf(o,
+               "/* The fit of shl_polygon_ggx_fast (docs/area-lights.md): out_fit[0..4] a / alpha, "
+               "g, d, P,\n"
+               "   k (low set: 1), degree %d in x and %d (low set: %d) in y = 2 mu - 1; out_fit[5] "
+               "the albedo,\n"
+               "   degree %d in x and %d in 2 tau - 1. Per set, per output: rows of x-powers down "
+               "to 0, each "
+               "of\n   y-powers down to 0. */\n",
+               DI, DJ, DJL, AI, AJ);
   o += sprintf(o, "/* clang-format off */\nstatic const shli_real SHLI_GGX_FAST_FIT[%d] = {\n",
                NTAB);
   col = 0;
@@ -892,8 +894,9 @@ static char *emit_text(void) {
       o += sprintf(o, "    u = SHLI_GGX_FAST_FIT[a + %d] + y * u;\n", j);
   }
   o += sprintf(o, "    t = u + x * t;\n  }\n  return t;\n}\n");
-  o += sprintf(o, "/* one set at x: the high one (at 0, %d columns) or the low one (at %d, %d "
-                  "columns, k = 1) */\n",
+  o += sprintf(o,
+               "/* one set at x: the high one (at 0, %d columns) or the low one (at %d, %d "
+               "columns, k = 1) */\n",
                DJ + 1, NSET, DJL + 1);
   o += sprintf(o,
                "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE void shli_ggx_fast_set(int at, int cols, "
@@ -913,18 +916,19 @@ static char *emit_text(void) {
                "  out_fit[5] = t / SHLIGHT_SQRTR(t * t + tau * tau) + r * r * "
                "shli_ggx_fast_poly(b, %d, %d, x, z);\n}\n",
                DI + 1, DI + 1, AI + 1, AJ + 1);
-  o += sprintf(o,
-               "/* the low set for r <= %g, the high set for r >= %g, between them their outputs "
-               "interpolated\n   linearly in r (continuous in roughness) */\n"
-               "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,\n"
-               "                                      shli_real *out_fit) {\n"
-               "  shli_real hi[6];\n  shli_real w = (r - %g) / (%g - %g);\n  int i;\n"
-               "  if (w < 1.0) {\n    shli_ggx_fast_set(%d, %d, r * (2.0 / %g) - 1.0, r, mu, tau, "
-               "out_fit);\n  }\n  if (w > 0.0) {\n    shli_ggx_fast_set(0, %d, 2.0 * r - 1.0, r, mu, "
-               "tau, hi);\n    for (i = 0; i < 6; ++i) {\n      if (w < 1.0) {\n"
-               "        hi[i] = out_fit[i] + w * (hi[i] - out_fit[i]);\n      }\n"
-               "      out_fit[i] = hi[i];\n    }\n  }\n}\n",
-               RS, RB, RS, RB, RS, NSET, DJL + 1, RL, DJ + 1);
+  o += sprintf(
+      o,
+      "/* the low set for r <= %g, the high set for r >= %g, between them their outputs "
+      "interpolated\n   linearly in r (continuous in roughness) */\n"
+      "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,\n"
+      "                                      shli_real *out_fit) {\n"
+      "  shli_real hi[6];\n  shli_real w = (r - %g) / (%g - %g);\n  int i;\n"
+      "  if (w < 1.0) {\n    shli_ggx_fast_set(%d, %d, r * (2.0 / %g) - 1.0, r, mu, tau, "
+      "out_fit);\n  }\n  if (w > 0.0) {\n    shli_ggx_fast_set(0, %d, 2.0 * r - 1.0, r, mu, "
+      "tau, hi);\n    for (i = 0; i < 6; ++i) {\n      if (w < 1.0) {\n"
+      "        hi[i] = out_fit[i] + w * (hi[i] - out_fit[i]);\n      }\n"
+      "      out_fit[i] = hi[i];\n    }\n  }\n}\n",
+      RS, RB, RS, RB, RS, NSET, DJL + 1, RL, DJ + 1);
   o += sprintf(o, "/* @fit ggx_fast end */\n");
   return buf;
 }
