@@ -5216,15 +5216,21 @@ SHLIGHT_INLINE int shli_poly_clip_unit2(shli_real *io_px, shli_real *io_py, shli
   int i;
   int j;
   while (pass < 2) {
-    if (pass == 1) {
+    if (pass == 1) { /* vertex i carried in m (GLSL: no unrolling by the arrays' bound) */
+      mx = io_px[0];
+      my = io_py[0];
+      mz = io_pz[0];
       for (i = 0; i < nc; ++i) {
         j = i + 1;
         if (j == nc) {
           j = 0;
         }
-        ox = ox + io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
-        oy = oy + io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
-        oz = oz + io_px[i] * io_py[j] - io_py[i] * io_px[j];
+        ox = ox + my * io_pz[j] - mz * io_py[j];
+        oy = oy + mz * io_px[j] - mx * io_pz[j];
+        oz = oz + mx * io_py[j] - my * io_px[j];
+        mx = io_px[j];
+        my = io_py[j];
+        mz = io_pz[j];
       }
       orient = ox * io_px[0] + oy * io_py[0] + oz * io_pz[0];
       mx = rx;
@@ -6993,8 +6999,7 @@ static const shli_real SHLI_GGX_FAST_FIT[622] = {
   -16.138498,-49.621387,-30.334785,20.048779,25.089012,6.14298
 };
 /* clang-format on */
-/* sum_i sum_j SHLI_GGX_FAST_FIT[at + cols i + j] x^(rows - 1 - i) y^(cols - 1 - j), Horner in y
-   inside Horner in x (rows, cols constant once inlined: the loop unrolls) */
+/* sum_ij SHLI_GGX_FAST_FIT[at + cols i + j] x^(rows - 1 - i) y^(cols - 1 - j) by Horner */
 SHLIGHT_ALWAYS_INLINE
 SHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, int cols, shli_real x, shli_real y) {
   shli_real u;
@@ -7020,7 +7025,7 @@ SHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, int cols, shli_rea
   }
   return t;
 }
-/* one set at x: the high one (at 0, 6 columns) or the low one (at 303, 8 columns, k = 1) */
+/* one set: the high one (at 0) or the low one (at 303; k = 1) */
 SHLIGHT_ALWAYS_INLINE
 SHLIGHT_INLINE void shli_ggx_fast_set(int at, int cols, shli_real x, shli_real r, shli_real mu,
                                       shli_real tau, shli_real *out_fit) {

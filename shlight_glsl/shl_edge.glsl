@@ -725,15 +725,21 @@ int shli_poly_clip_unit2(inout shli_real io_px[SHLIGHT_CLIP_MAX],
   int i;
   int j;
   while (pass < 2) {
-    if (pass == 1) {
+    if (pass == 1) { /* vertex i carried in m (GLSL: no unrolling by the arrays' bound) */
+      mx = io_px[0];
+      my = io_py[0];
+      mz = io_pz[0];
       for (i = 0; i < nc; ++i) {
         j = i + 1;
         if (j == nc) {
           j = 0;
         }
-        ox = ox + io_py[i] * io_pz[j] - io_pz[i] * io_py[j];
-        oy = oy + io_pz[i] * io_px[j] - io_px[i] * io_pz[j];
-        oz = oz + io_px[i] * io_py[j] - io_py[i] * io_px[j];
+        ox = ox + my * io_pz[j] - mz * io_py[j];
+        oy = oy + mz * io_px[j] - mx * io_pz[j];
+        oz = oz + mx * io_py[j] - my * io_px[j];
+        mx = io_px[j];
+        my = io_py[j];
+        mz = io_pz[j];
       }
       orient = ox * io_px[0] + oy * io_py[0] + oz * io_pz[0];
       mx = rx;

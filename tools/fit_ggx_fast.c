@@ -876,9 +876,8 @@ static char *emit_text(void) {
     col += (col == 0 ? 2 : 0) + w;
   }
   o += sprintf(o, "};\n/* clang-format on */\n");
-  o += sprintf(o, "/* sum_i sum_j SHLI_GGX_FAST_FIT[at + cols i + j] x^(rows - 1 - i) "
-                  "y^(cols - 1 - j), Horner in y\n   inside Horner in x (rows, cols constant "
-                  "once inlined: the loop unrolls) */\n");
+  o += sprintf(o, "/* sum_ij SHLI_GGX_FAST_FIT[at + cols i + j] x^(rows - 1 - i) y^(cols - 1 - j) "
+                  "by Horner */\n");
   o += sprintf(
       o,
       "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, "
@@ -894,10 +893,7 @@ static char *emit_text(void) {
       o += sprintf(o, "    u = SHLI_GGX_FAST_FIT[a + %d] + y * u;\n", j);
   }
   o += sprintf(o, "    t = u + x * t;\n  }\n  return t;\n}\n");
-  o += sprintf(o,
-               "/* one set at x: the high one (at 0, %d columns) or the low one (at %d, %d "
-               "columns, k = 1) */\n",
-               DJ + 1, NSET, DJL + 1);
+  o += sprintf(o, "/* one set: the high one (at 0) or the low one (at %d; k = 1) */\n", NSET);
   o += sprintf(o,
                "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE void shli_ggx_fast_set(int at, int cols, "
                "shli_real x, shli_real r, shli_real mu,\n"
