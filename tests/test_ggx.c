@@ -447,15 +447,15 @@ static void test_transcendentals(void) {
 }
 
 /* shl_polygon_ggx_fast, measured on this fit (gcc -O2, x86-64), asserted at ~1.5x. Sampler,
-   median rel. error / max err/albedo: roughness 0.05: 3.8e-5 / 5.8e-4, 0.1: 9.4e-4 / 4.6e-2,
-   0.2: 2.3e-3 / 2.0e-2, 0.3: 5.1e-3 / 9.8e-3, 0.5: 1.9e-2 / 4.0e-2, 0.7: 2.4e-2 / 2.6e-2,
+   median rel. error / max err/albedo: roughness 0.05: 3.7e-5 / 5.8e-4, 0.1: 1.1e-3 / 3.2e-2,
+   0.2: 2.1e-3 / 8.5e-3, 0.3: 5.1e-3 / 9.8e-3, 0.5: 1.9e-2 / 4.0e-2, 0.7: 2.4e-2 / 2.6e-2,
    1.0: 2.2e-2 / 9.9e-3 (24 quads each; the bench's 250 give the figures of the docs; roughness
    <= 0.25 has its own coefficient set); hard cases (max err/albedo): straddling 9.3e-3, grazing
    4.0e-2, large 6.7e-2, sliver 7.0e-4; 9..64 vertices 9.6e-4 */
 #define FAST_MED \
-  { 6e-5, 1.5e-3, 3.5e-3, 7.7e-3, 2.9e-2, 3.6e-2, 3.3e-2 }
+  { 6e-5, 1.5e-3, 3.1e-3, 7.7e-3, 2.9e-2, 3.6e-2, 3.3e-2 }
 #define FAST_MAX \
-  { 9e-4, 7e-2, 3e-2, 1.5e-2, 6e-2, 3.9e-2, 1.5e-2 }
+  { 9e-4, 4.8e-2, 1.3e-2, 1.5e-2, 6e-2, 3.9e-2, 1.5e-2 }
 #define FAST_HARD \
   { 1.4e-2, 6e-2, 1e-1, 1.05e-3 }
 #define FAST_MANY 1.4e-3
@@ -603,7 +603,7 @@ static void test_fast_many(void) {
 /* The fit has two coefficient sets (roughness <= 0.25 and >= 0.3, interpolated between): the
    result is continuous in alpha. At alpha 0.0625 and 0.09 (the ends of the interpolation) and
    the next float up, on 200 quads of the sampler: max change 4e-7 relative, 9e-8 absolute
-   (float rounding; the sets alone differed by up to 0.03 absolute at 0.0625). */
+   (float rounding; the sets alone differed by up to 0.12 absolute at 0.0625). */
 static void test_fast_continuous(void) {
   static const float ends[2] = {0.0625f, 0.09f};
   ggxc_rng r;

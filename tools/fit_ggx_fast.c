@@ -11,14 +11,17 @@
  *           the albedo fit and the weighted least-squares polynomials through the points: the
  *           high set (roughness r >= 0.3; its low set left 0)
  *   points low: build/fit_ggx_fast points low > build/ggx_fast_points_low.txt
- *           the same on the low grid (19 roughness values, 0.01 to 0.4) with k held at 1 (~1 min)
+ *           the same on the low grid (19 roughness values, 0.01 to 0.4; 21 view angles, 9 of
+ *           them 73 to 86 deg) with k held at 1 (~1 min)
  *   smoothlow: build/fit_ggx_fast smoothlow build/ggx_fast_points_low.txt COEF_IN COEF_OUT
- *           the low set (r <= 0.25; x = 2 r / 0.35 - 1, pinned at the alpha -> 0 limit), the
- *           high set kept from COEF_IN; the kernel interpolates the two for 0.25 < r < 0.3
+ *           the low set (r <= 0.25; x = 2 r / 0.35 - 1, degree 7 in 2 mu - 1, pinned at the
+ *           alpha -> 0 limit), the high set kept from COEF_IN; the kernel interpolates the two for
+ *           0.25 < r < 0.3 (KEEP_ALB=1: the low albedo of COEF_IN kept, no refit)
  *   check:  build/fit_ggx_fast check tools/ggx_fast_coef.txt
  *           median / p95 / max relative error and max error / albedo on the bench sampler;
  *           CHECK_R="r0,r1,..." checks other roughness values (TRY_RL, TRY_RS: other splits,
- *           for experiments; emit writes them into the kernel)
+ *           for experiments; emit writes them into the kernel; CHECK_TEST=1: tests/test_ggx.c's
+ *           24 quads per roughness instead of the bench's 250)
  *   lm:     build/fit_ggx_fast lm COEF_IN COEF_OUT ITERATIONS
  *           Levenberg-Marquardt on all coefficients against every training quad (tried, not
  *           used: it lowered the training cost but raised the median at low roughness)
@@ -48,6 +51,10 @@ static const double RG[NRG] = {0.01, 0.025, 0.05, 0.075, 0.1, 0.15, 0.2,  0.25, 
                                0.4,  0.5,   0.6,  0.7,   0.8, 0.9,  0.95, 1.0};
 static const double *RGP = RG; /* the grid `points` runs over (RGL for `points low`) */
 static const double TH[NTH] = {0, 10, 20, 30, 40, 50, 60, 65, 70, 75, 80, 83, 86, 88, 89};
+/* the view angles of `points low`: denser at grazing (a low-roughness lobe changes fast there) */
+#define NTHL 21
+static const double THL[NTHL] = {0,  10, 20, 30, 40, 50, 60, 65, 70, 73, 75,
+                                 76, 78, 80, 82, 83, 84, 85, 86, 88, 89};
 
 typedef struct {
   double q[NQ][4][3];
@@ -186,6 +193,7 @@ static void setup(int ir, double th, unsigned long long seed) {
    albedo E0(tau) + sum_{i=1..AI, j=0..AJ} e_ij r^i tau^j, tau = alpha s / (mu + alpha s) */
 #define DI 7
 #define DJ 5
+#define DJL 7 /* the low set's degree in mu (its k is 1: four outputs) */
 #define AI 8
 #define AJ 6
 static double CO[5][DI + 1][DJ + 1], CA[AI + 1][AJ + 1];
@@ -194,7 +202,7 @@ static double RL = 0.35, RS = 0.25, RB = 0.3; /* TRY_RL, TRY_RS: other splits (e
 #define NRGL 19
 static const double RGL[NRGL] = {0.01,  0.0175, 0.025, 0.0325, 0.04,  0.05, 0.06, 0.075, 0.09, 0.1,
                                  0.125, 0.15,   0.175, 0.2,    0.225, 0.25, 0.3,  0.35,  0.4};
-static double CL[5][DI + 1][DJ + 1], CAL[AI + 1][AJ + 1];
+static double CL[5][DI + 1][DJL + 1], CAL[AI + 1][AJ + 1];
 
 static double e0(double tau) {
   return (1 - tau) / sqrt((1 - tau) * (1 - tau) + tau * tau);
@@ -366,7 +374,7 @@ static void save(const char *fn) {
       fprintf(f, "%.17g\n", CA[i][j]);
   for (k = 0; k < 5; ++k)
     for (i = 0; i <= DI; ++i)
-      for (j = 0; j <= DJ; ++j)
+      for (j = 0; j <= DJL; ++j)
         fprintf(f, "%.17g\n", CL[k][i][j]);
   for (i = 0; i <= AI; ++i)
     for (j = 0; j <= AJ; ++j)
@@ -385,7 +393,7 @@ static void load(const char *fn) {
       if (fscanf(f, "%lf", &CA[i][j]) != 1) exit(3);
   for (k = 0; k < 5; ++k) /* the low set (absent in a file from `smooth`: left 0) */
     for (i = 0; i <= DI; ++i)
-      for (j = 0; j <= DJ; ++j)
+      for (j = 0; j <= DJL; ++j)
         if (fscanf(f, "%lf", &CL[k][i][j]) != 1) CL[k][i][j] = 0;
   for (i = 0; i <= AI; ++i)
     for (j = 0; j <= AJ; ++j)
@@ -420,7 +428,7 @@ static void model_p_low(double r, double mu, double *p) {
     double t = 0;
     for (i = DI; i >= 0; --i) {
       double u = 0;
-      for (j = DJ; j >= 0; --j)
+      for (j = DJL; j >= 0; --j)
         u = u * y + CL[k][i][j];
       t = t * x + u;
     }
@@ -491,7 +499,7 @@ static void fit_params_low(const char *fn) {
   static const double LIM[4] = {2, 0, 0, 1};
   FILE *f = fopen(fn, "r");
   static double pr[2000], pm[2000], pv[2000][5], pw[2000], res[2000], tmp[2000];
-  int np = 0, n = (DI + 1) * (DJ + 1), k, i, j, row, it;
+  int np = 0, n = (DI + 1) * (DJL + 1), k, i, j, row, it;
   double th, alb, fx;
   while (f && np < 1900 &&
          fscanf(f, "%lf %lf %lf %lf %lf %lf %lf %lf %lf %lf", &pr[np], &th, &pm[np], &alb,
@@ -511,21 +519,21 @@ static void fit_params_low(const char *fn) {
   }
   for (k = 0; k < 4; ++k) {
     double *A = malloc(sizeof(double) * (size_t)(np * n)), *b = malloc(sizeof(double) * (size_t)np),
-           x[(DI + 1) * (DJ + 1)], p[5], *rw = malloc(sizeof(double) * (size_t)np), med = 0, sc;
+           x[(DI + 1) * (DJL + 1)], p[5], *rw = malloc(sizeof(double) * (size_t)np), med = 0, sc;
     for (row = 0; row < np; ++row)
       rw[row] = 1;
     for (it = 0; it < 4; ++it) {
       for (row = 0; row < np; ++row) {
         for (i = 0; i <= DI; ++i)
-          for (j = 0; j <= DJ; ++j)
-            A[row * n + i * (DJ + 1) + j] =
+          for (j = 0; j <= DJL; ++j)
+            A[row * n + i * (DJL + 1) + j] =
                 rw[row] * pw[row] * pow(xlow(pr[row]), i) * pow(2 * pm[row] - 1, j);
         b[row] = rw[row] * pw[row] * pv[row][k];
       }
       lsq(A, b, np, n, x);
       for (i = 0; i <= DI; ++i)
-        for (j = 0; j <= DJ; ++j)
-          CL[k][i][j] = (double)(float)x[i * (DJ + 1) + j];
+        for (j = 0; j <= DJL; ++j)
+          CL[k][i][j] = (double)(float)x[i * (DJL + 1) + j];
       for (row = 0; row < np; ++row) {
         model_p_low(pr[row], pm[row], p);
         res[row] = fabs(p[k] - pv[row][k]);
@@ -562,7 +570,7 @@ static void model_fit(double r, double mu, double *p, double *alb) {
 static void check(void) {
   static double RO[7] = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0}, cq[7][250][4][3], cv[7][250][3];
   double rl[32];
-  int nrl = 0, ir, i, k;
+  int nrl = 0, ir, i, k, nq = getenv("CHECK_TEST") ? 24 : 250;
   const char *e = getenv("CHECK_R");
   ggxc_rng rg;
   rg.s = 2017u;
@@ -590,7 +598,19 @@ static void check(void) {
     int nv = 0, b = 0;
     for (ir = 1; ir < 7; ++ir)
       if (fabs(RO[ir] - rl[k]) < fabs(RO[b] - rl[k])) b = ir;
-    for (i = 0; i < 250; ++i) {
+    if (nq == 24) { /* CHECK_TEST: tests/test_ggx.c's 24 quads (seed 1000 + roughness index) */
+      rg.s = 1000u + (unsigned)b;
+      for (i = 0; i < 24; ++i) {
+        ggxc_case cs;
+        int c;
+        ggxc_make(&rg, &cs, -1);
+        for (c = 0; c < 12; ++c)
+          cq[b][i][c / 3][c % 3] = (float)cs.q[c / 3][c % 3];
+        for (c = 0; c < 3; ++c)
+          cv[b][i][c] = (float)cs.view[c];
+      }
+    }
+    for (i = 0; i < nq; ++i) {
       float fq[4][3], fv[3], fn[3] = {0, 0, 1};
       double nrm[3] = {0, 0, 1}, alb, gt, p[5], m[5], mu, s, got, ea = 0;
       int c;
@@ -814,7 +834,7 @@ static void lit(char *o, double c) {
    of r-power DI down to 0, each DJ + 1 coefficients of mu-power DJ down to 0; then the albedo's
    AI + 1 rows of AJ + 1 */
 #define NSET (5 * (DI + 1) * (DJ + 1) + (AI + 1) * (AJ + 1))
-#define NTAB (2 * NSET)
+#define NTAB (NSET + 4 * (DI + 1) * (DJL + 1) + (AI + 1) * (AJ + 1))
 static char *emit_text(void) {
   static char buf[65536];
   double tab[NTAB];
@@ -822,9 +842,9 @@ static char *emit_text(void) {
   int k, i, j, n = 0, col, set;
   char *o = buf;
   for (set = 0; set < 2; ++set) {
-    for (k = 0; k < 5; ++k)
+    for (k = 0; k < 5 - set; ++k) /* the low set: no k (it is 1) */
       for (i = DI; i >= 0; --i)
-        for (j = DJ; j >= 0; --j)
+        for (j = set ? DJL : DJ; j >= 0; --j)
           tab[n++] = set ? CL[k][i][j] : CO[k][i][j];
     for (i = AI; i >= 0; --i)
       for (j = AJ; j >= 0; --j)
@@ -832,18 +852,15 @@ static char *emit_text(void) {
   }
   o += sprintf(o, "/* @fit ggx_fast begin: written by tools/fit_ggx_fast.c (emit), checked by its "
                   "--check */\n");
-  o += sprintf(
-      o,
-      "/* The fit of shl_polygon_ggx_fast (docs/area-lights.md): out_fit[0..4] a / alpha, g (c =\n"
-      "   a (mu + (1 - mu) g)), d, P (the axis (-P sin theta_v, 0, mu)), k, each of degree %d in x "
-      "and\n"
-      "   %d in y = 2 mu - 1; out_fit[5] the albedo E0 + r^2 p, p of degree %d in x and %d in 2 "
-      "tau - 1,\n"
-      "   tau = alpha s / (mu + alpha s), E0 = (1 - tau) / sqrt((1 - tau)^2 + tau^2). Per set, "
-      "per\n"
-      "   output: rows of x-powers %d down to 0 (albedo: %d), each of y-powers %d (%d) down to 0. "
-      "*/\n",
-      DI, DJ, AI, AJ, DI, AI, DJ, AJ);
+  o += sprintf(o,
+               "/* The fit of shl_polygon_ggx_fast (docs/area-lights.md): out_fit[0..4] a / alpha, "
+               "g, d, P,\n"
+               "   k (low set: 1), degree %d in x and %d (low set: %d) in y = 2 mu - 1; out_fit[5] "
+               "the albedo,\n"
+               "   degree %d in x and %d in 2 tau - 1. Per set, per output: rows of x-powers down "
+               "to 0, each "
+               "of\n   y-powers down to 0. */\n",
+               DI, DJ, DJL, AI, AJ);
   o += sprintf(o, "/* clang-format off */\nstatic const shli_real SHLI_GGX_FAST_FIT[%d] = {\n",
                NTAB);
   col = 0;
@@ -851,17 +868,16 @@ static char *emit_text(void) {
     int w;
     lit(l1, tab[i]);
     w = (int)strlen(l1) + (i + 1 < NTAB ? 1 : 0);
-    if (col > 0 && col + 1 + w > 100) {
+    if (col > 0 && col + w > 100) {
       o += sprintf(o, "\n");
       col = 0;
     }
-    o += sprintf(o, "%s%s%s", col == 0 ? "  " : " ", l1, i + 1 < NTAB ? "," : "\n");
-    col += (col == 0 ? 2 : 1) + w;
+    o += sprintf(o, "%s%s%s", col == 0 ? "  " : "", l1, i + 1 < NTAB ? "," : "\n");
+    col += (col == 0 ? 2 : 0) + w;
   }
   o += sprintf(o, "};\n/* clang-format on */\n");
-  o += sprintf(o, "/* sum_i sum_j SHLI_GGX_FAST_FIT[at + cols i + j] x^(rows - 1 - i) "
-                  "y^(cols - 1 - j), Horner in y\n   inside Horner in x (rows, cols constant "
-                  "once inlined: the loop unrolls) */\n");
+  o += sprintf(o, "/* sum_ij SHLI_GGX_FAST_FIT[at + cols i + j] x^(rows - 1 - i) y^(cols - 1 - j) "
+                  "by Horner */\n");
   o += sprintf(
       o,
       "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE shli_real shli_ggx_fast_poly(int at, int rows, "
@@ -869,7 +885,7 @@ static char *emit_text(void) {
       "  int i;\n  int a;\n  SHLIGHT_UNROLL(%d)\n  for (i = 0; i < rows; ++i) {\n"
       "    a = at + cols * i;\n    u = SHLI_GGX_FAST_FIT[a];\n",
       (DI > AI ? DI : AI) + 1);
-  for (j = 1; j <= (DJ > AJ ? DJ : AJ); ++j) {
+  for (j = 1; j <= (DJL > AJ ? DJL : AJ); ++j) {
     if (j > (DJ < AJ ? DJ : AJ))
       o += sprintf(o, "    if (cols > %d) {\n      u = SHLI_GGX_FAST_FIT[a + %d] + y * u;\n    }\n",
                    j, j);
@@ -877,33 +893,38 @@ static char *emit_text(void) {
       o += sprintf(o, "    u = SHLI_GGX_FAST_FIT[a + %d] + y * u;\n", j);
   }
   o += sprintf(o, "    t = u + x * t;\n  }\n  return t;\n}\n");
-  o += sprintf(o, "/* one set at x: the high one (at 0) or the low one (at %d) */\n", NSET);
+  o += sprintf(o, "/* one set: the high one (at 0) or the low one (at %d; k = 1) */\n", NSET);
   o += sprintf(o,
-               "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE void shli_ggx_fast_set(int at, shli_real x, "
-               "shli_real r, shli_real mu, shli_real tau,\n"
-               "                                      shli_real *out_fit) {\n"
+               "SHLIGHT_ALWAYS_INLINE\nSHLIGHT_INLINE void shli_ggx_fast_set(int at, int cols, "
+               "shli_real x, shli_real r, shli_real mu,\n"
+               "                                      shli_real tau, shli_real *out_fit) {\n"
                "  shli_real y = 2.0 * mu - 1.0;\n  shli_real z = 2.0 * tau - 1.0;\n"
-               "  shli_real t = 1.0 - tau;\n");
-  o += sprintf(o, "  out_fit[0] = shli_ggx_fast_poly(at, %d, %d, x, y);\n", DI + 1, DJ + 1);
-  for (k = 1; k < 5; ++k)
-    o += sprintf(o, "  out_fit[%d] = shli_ggx_fast_poly(at + %d, %d, %d, x, y);\n", k,
-                 k * (DI + 1) * (DJ + 1), DI + 1, DJ + 1);
+               "  shli_real t = 1.0 - tau;\n  int b = at + %d * cols;\n"
+               "  out_fit[0] = shli_ggx_fast_poly(at, %d, cols, x, y);\n",
+               4 * (DI + 1), DI + 1);
+  for (k = 1; k < 4; ++k)
+    o += sprintf(o, "  out_fit[%d] = shli_ggx_fast_poly(at + %d * cols, %d, cols, x, y);\n", k,
+                 k * (DI + 1), DI + 1);
   o += sprintf(o,
-               "  out_fit[5] =\n      t / SHLIGHT_SQRTR(t * t + tau * tau) + r * r * "
-               "shli_ggx_fast_poly(at + %d, %d, %d, x, z);\n}\n",
-               5 * (DI + 1) * (DJ + 1), AI + 1, AJ + 1);
-  o += sprintf(o,
-               "/* the low set for r <= %g, the high set for r >= %g, between them their outputs "
-               "interpolated\n   linearly in r (continuous in roughness) */\n"
-               "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,\n"
-               "                                      shli_real *out_fit) {\n"
-               "  shli_real hi[6];\n  shli_real w = (r - %g) / (%g - %g);\n  int i;\n"
-               "  if (w < 1.0) {\n    shli_ggx_fast_set(%d, r * (2.0 / %g) - 1.0, r, mu, tau, "
-               "out_fit);\n  }\n  if (w > 0.0) {\n    shli_ggx_fast_set(0, 2.0 * r - 1.0, r, mu, "
-               "tau, hi);\n    for (i = 0; i < 6; ++i) {\n      if (w < 1.0) {\n"
-               "        hi[i] = out_fit[i] + w * (hi[i] - out_fit[i]);\n      }\n"
-               "      out_fit[i] = hi[i];\n    }\n  }\n}\n",
-               RS, RB, RS, RB, RS, NSET, RL);
+               "  out_fit[4] = 1.0;\n  if (at == 0) {\n"
+               "    out_fit[4] = shli_ggx_fast_poly(b, %d, cols, x, y);\n"
+               "    b = b + %d * cols;\n  }\n"
+               "  out_fit[5] = t / SHLIGHT_SQRTR(t * t + tau * tau) + r * r * "
+               "shli_ggx_fast_poly(b, %d, %d, x, z);\n}\n",
+               DI + 1, DI + 1, AI + 1, AJ + 1);
+  o += sprintf(
+      o,
+      "/* the low set for r <= %g, the high set for r >= %g, between them their outputs "
+      "interpolated\n   linearly in r (continuous in roughness) */\n"
+      "SHLIGHT_INLINE void shli_ggx_fast_fit(shli_real r, shli_real mu, shli_real tau,\n"
+      "                                      shli_real *out_fit) {\n"
+      "  shli_real hi[6];\n  shli_real w = (r - %g) / (%g - %g);\n  int i;\n"
+      "  if (w < 1.0) {\n    shli_ggx_fast_set(%d, %d, r * (2.0 / %g) - 1.0, r, mu, tau, "
+      "out_fit);\n  }\n  if (w > 0.0) {\n    shli_ggx_fast_set(0, %d, 2.0 * r - 1.0, r, mu, "
+      "tau, hi);\n    for (i = 0; i < 6; ++i) {\n      if (w < 1.0) {\n"
+      "        hi[i] = out_fit[i] + w * (hi[i] - out_fit[i]);\n      }\n"
+      "      out_fit[i] = hi[i];\n    }\n  }\n}\n",
+      RS, RB, RS, RB, RS, NSET, DJL + 1, RL, DJ + 1);
   o += sprintf(o, "/* @fit ggx_fast end */\n");
   return buf;
 }
@@ -945,14 +966,16 @@ int main(int argc, char **argv) {
   if (getenv("TRY_RL")) RL = atof(getenv("TRY_RL"));
   if (getenv("TRY_RS")) RS = atof(getenv("TRY_RS"));
   if (argc >= 2 && strcmp(argv[1], "points") == 0) {
-    int ir, it, lo = 0, hi = NRG, a = 2;
-    static double prev[NTH][5];
-    if (argc >= 3 && strcmp(argv[2], "low") == 0) RGP = RGL, hi = NRGL, fixk = 1, a = 3;
+    int ir, it, lo = 0, hi = NRG, a = 2, nth = NTH;
+    const double *th = TH;
+    static double prev[NTHL][5];
+    if (argc >= 3 && strcmp(argv[2], "low") == 0)
+      RGP = RGL, hi = NRGL, fixk = 1, a = 3, th = THL, nth = NTHL;
     if (argc >= a + 2) lo = atoi(argv[a]), hi = atoi(argv[a + 1]);
     for (ir = lo; ir < hi; ++ir) {
-      for (it = 0; it < NTH; ++it) {
+      for (it = 0; it < nth; ++it) {
         double x[5], y[5], fx, fy;
-        setup(ir, TH[it], 0x5EEDull * 1000003ull + (unsigned long long)(ir * 97 + it * 7 + 1));
+        setup(ir, th[it], 0x5EEDull * 1000003ull + (unsigned long long)(ir * 97 + it * 7 + 1));
         prior[0] = log(2.0), prior[1] = 0, prior[2] = 0, prior[3] = 1, prior[4] = 0;
         if (ir > lo) {
           memcpy(prior, prev[it], sizeof prior);
@@ -971,7 +994,7 @@ int main(int argc, char **argv) {
           if (fy < fx) memcpy(x, y, sizeof x), fx = fy;
         }
         memcpy(prev[it], x, sizeof x);
-        printf("%g %g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.4g\n", RGP[ir], TH[it], P.mu, P.alb,
+        printf("%g %g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.4g\n", RGP[ir], th[it], P.mu, P.alb,
                x[0], x[1], x[2], x[3], x[4], sqrt(fx));
         fflush(stdout);
       }
@@ -986,7 +1009,7 @@ int main(int argc, char **argv) {
   }
   if (argc >= 5 && strcmp(argv[1], "smoothlow") == 0) {
     load(argv[3]);
-    fit_albedo_low();
+    if (!getenv("KEEP_ALB")) fit_albedo_low(); /* KEEP_ALB: the low albedo of COEF_IN kept */
     fit_params_low(argv[2]);
     save(argv[4]);
     return 0;
