@@ -5962,10 +5962,8 @@ SHLIGHT_INLINE shli_real shli_beckmann_lambda(shli_real c, shli_real alpha) {
   shli_real a;
   shli_real t;
   shli_real p;
-  if (!(s2 > 0.0)) {
-    return 0.0;
-  }
-  a = SHLIGHT_MAXR(c / (alpha * SHLIGHT_SQRTR(s2)), 1.0e-30);
+  a = c / (alpha * SHLIGHT_SQRTR(SHLIGHT_MAXR(s2, 0.0))); /* no branch: c >= 1 gives 0 */
+  a = SHLIGHT_MAXR(SHLIGHT_MINR(a, 1.0e10), 1.0e-30);
   t = 1.0 / (1.0 + 0.3275911 * a);
   p = t *
       (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
@@ -6033,15 +6031,17 @@ SHLIGHT_INLINE shli_real shli_ggx_w(shli_real lx, shli_real ly, shli_real lz, sh
   shli_real hv = hx * vx + hy * vy + hz * vz;
   shli_real nv = vx * nx + vy * ny + vz * nz;
   shli_real laml;
-  if (!(nl > 0.0) || !(nh > 0.0)) {
-    return 0.0;
-  }
+  shli_real r; /* no early return (a select in GLSL) */
   if (ndf == 0) {
     laml = 0.5 * (SHLIGHT_SQRTR(nl * nl + a2 * (1.0 - nl * nl)) / nl - 1.0);
   } else {
     laml = shli_beckmann_lambda(nl, al);
   }
-  return hv / ((1.0 + lamv + laml) * nv * nh);
+  r = hv / ((1.0 + lamv + laml) * nv * nh);
+  if (!(nl > 0.0) || !(nh > 0.0)) {
+    r = 0.0;
+  }
+  return r;
 }
 
 /* One edge's graded rule on [sa, sb] (split at s = 0), adding the A and M1.g integrands to
@@ -6249,16 +6249,18 @@ SHLIGHT_INLINE void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_
     f1 = SHLIGHT_SQRTR(f2);
     w = shli_ggx_w(qx, qy, qz, vx, vy, vz, nx, ny, nz, a2, lamv, al, ndf) - ws -
         (gx * (dx / f1 - hx) + gy * (dy / f1 - hy) + gz * (dz / f1 - hz));
-    f = 0.0;
     if (ndf == 0) {
       /* D = alpha^2 / (pi (1 - c (h.n)^2)^2), (h.n) / (h.v) = d / (l + v).v */
       f = det / (q * q * q) * a2 * d /
           (12.566370614359173 * d0 * d0 * (dx * vx + dy * vy + dz * vz)) * w;
-    } else if (d > 0.0) {
+    } else {
       /* D_B (h.n) / (4 h.v) = exp(-(f2 - d^2) / (alpha^2 d^2)) f2^2 / (4 pi alpha^2 d^3 (l + v).v),
-         d = (l + v).n, f2 = |l + v|^2 */
+         d = (l + v).n, f2 = |l + v|^2; 0 for d <= 0 */
       f = det / (q * q * q) * SHLIGHT_MEXP(-(f2 - d * d) / (a2 * d * d)) * f2 * f2 /
           (12.566370614359173 * a2 * d * d * d * (dx * vx + dy * vy + dz * vz)) * w;
+      if (!(d > 0.0)) {
+        f = 0.0;
+      }
     }
     out_q[0] = out_q[0] + tw[k] * f;
     /* the embedded degree-2 rule: the centroid 0.48412, the three outer nodes 0.17196 each */

@@ -4282,12 +4282,8 @@ shli_real shli_stokes_half(shli_real lo, shli_real hi, shli_real beta, shli_real
   if (!(h > 0.0)) {
     return 0.0;
   }
-  /* one loop over the panels of every level and one call of the 5-node rule (GLSL inlines
-     each call site: one copy instead of four per half-arc). Level l has np = 2^l panels of
-     width h: k = 0 .. np - 2 the panels 1 .. np - 1; the one at s0 (theta = pi/2, where h
-     has the branch point |cos|^(e+1) for non-integer e) cut geometrically toward s0: l
-     panels of ratio 0.15 (k = np - 1 .. np + l - 2), then the rest (k = np + l - 1). Level 0
-     is the single panel [s0, s1]. */
+  /* one loop over the panels of every level, one call of the 5-node rule.
+     (docs/derivations.md sec. 13.25) */
   while (l <= lev) {
     if (k < np - 1) {
       pm = s0 + (SHLIGHT_ITOR(k + 1) + 0.5) * h;
@@ -5118,10 +5114,8 @@ shli_real shli_beckmann_lambda(shli_real c, shli_real alpha) {
   shli_real a;
   shli_real t;
   shli_real p;
-  if (!(s2 > 0.0)) {
-    return 0.0;
-  }
-  a = SHLIGHT_MAXR(c / (alpha * SHLIGHT_SQRTR(s2)), 1.0e-30);
+  a = c / (alpha * SHLIGHT_SQRTR(SHLIGHT_MAXR(s2, 0.0))); /* no branch: c >= 1 gives 0 */
+  a = SHLIGHT_MAXR(SHLIGHT_MINR(a, 1.0e10), 1.0e-30);
   t = 1.0 / (1.0 + 0.3275911 * a);
   p = t *
       (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
@@ -5182,15 +5176,17 @@ shli_real shli_ggx_w(shli_real lx, shli_real ly, shli_real lz, shli_real vx, shl
   shli_real hv = hx * vx + hy * vy + hz * vz;
   shli_real nv = vx * nx + vy * ny + vz * nz;
   shli_real laml;
-  if (!(nl > 0.0) || !(nh > 0.0)) {
-    return 0.0;
-  }
+  shli_real r; /* no early return (a select in GLSL) */
   if (ndf == 0) {
     laml = 0.5 * (SHLIGHT_SQRTR(nl * nl + a2 * (1.0 - nl * nl)) / nl - 1.0);
   } else {
     laml = shli_beckmann_lambda(nl, al);
   }
-  return hv / ((1.0 + lamv + laml) * nv * nh);
+  r = hv / ((1.0 + lamv + laml) * nv * nh);
+  if (!(nl > 0.0) || !(nh > 0.0)) {
+    r = 0.0;
+  }
+  return r;
 }
 
 void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli_real wd, shli_real ax,
@@ -5392,16 +5388,18 @@ void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_r
     f1 = SHLIGHT_SQRTR(f2);
     w = shli_ggx_w(qx, qy, qz, vx, vy, vz, nx, ny, nz, a2, lamv, al, ndf) - ws -
         (gx * (dx / f1 - hx) + gy * (dy / f1 - hy) + gz * (dz / f1 - hz));
-    f = 0.0;
     if (ndf == 0) {
       /* D = alpha^2 / (pi (1 - c (h.n)^2)^2), (h.n) / (h.v) = d / (l + v).v */
       f = det / (q * q * q) * a2 * d /
           (12.566370614359173 * d0 * d0 * (dx * vx + dy * vy + dz * vz)) * w;
-    } else if (d > 0.0) {
+    } else {
       /* D_B (h.n) / (4 h.v) = exp(-(f2 - d^2) / (alpha^2 d^2)) f2^2 / (4 pi alpha^2 d^3 (l + v).v),
-         d = (l + v).n, f2 = |l + v|^2 */
+         d = (l + v).n, f2 = |l + v|^2; 0 for d <= 0 */
       f = det / (q * q * q) * SHLIGHT_MEXP(-(f2 - d * d) / (a2 * d * d)) * f2 * f2 /
           (12.566370614359173 * a2 * d * d * d * (dx * vx + dy * vy + dz * vz)) * w;
+      if (!(d > 0.0)) {
+        f = 0.0;
+      }
     }
     out_q[0] = out_q[0] + tw[k] * f;
     /* the embedded degree-2 rule: the centroid 0.48412, the three outer nodes 0.17196 each */
