@@ -6369,6 +6369,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   int dep;
   int it;
   int inside = 1;
+  int nk;
   int nc;
   int i;
   int j;
@@ -6499,7 +6500,10 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   t2x = d;
   t2y = sg + hy * hy * q;
   t2z = -hy;
-  for (k = 0; k < 4; ++k) {
+  /* 4 trips and below 2, counts GLSL's compiler cannot see (nc > 0 here): it keeps these loops,
+     with one copy of their bodies (shli_ggx_w, sin and cos), instead of unrolling them */
+  nk = nc > 0 ? 4 : 0;
+  for (k = 0; k < nk; ++k) {
     d = 1.0e-3;
     if (k == 1 || k == 3) {
       d = -1.0e-3;
@@ -6558,7 +6562,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
       by = ez * ax - ex * az;
       bz = ex * ay - ey * ax;
       t0 = shli_atan2r(rx * bx + ry * by + rz * bz, rx * ax + ry * ay + rz * az);
-      for (k = 0; k < 2; ++k) {
+      for (k = 0; k < nk / 2; ++k) {
         ct = SHLIGHT_MCOS(t0);
         st = SHLIGHT_MSIN(t0);
         qx = ct * ax + st * bx + vx;
