@@ -5321,10 +5321,10 @@ void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_r
                   shli_real vy, shli_real vz, shli_real nx, shli_real ny, shli_real nz,
                   shli_real a2, shli_real lamv, shli_real ws, shli_real hx, shli_real hy,
                   shli_real hz, shli_real gx, shli_real gy, shli_real gz, shli_real al, int ndf,
-                  out shli_real out_q[2]) {
-  shli_real tr[7];
-  shli_real ts[7];
-  shli_real tw[7];
+                  int nn, out shli_real out_q[2]) {
+  shli_real tr[8]; /* 8, not nn: Mesa unrolls a loop whose count is the length of an array */
+  shli_real ts[8];
+  shli_real tw[8];
   shli_real c = 1.0 - a2;
   shli_real f = 0.0;
   shli_real det;
@@ -5371,7 +5371,7 @@ void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_r
   out_q[0] = 0.0;
   out_q[1] = 0.0;
   det = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
-  for (k = 0; k < 7; ++k) {
+  for (k = 0; k < nn; ++k) {
     qx = ax + tr[k] * bx + ts[k] * cx;
     qy = ay + tr[k] * by + ts[k] * cy;
     qz = az + tr[k] * bz + ts[k] * cz;
@@ -5886,7 +5886,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
       }
       if (spl == 0) {
         shli_ggx_tri(tr[0], ts[0], tw[0], tr[1], ts[1], tw[1], tr[2], ts[2], tw[2], vx, vy, vz, nx,
-                     ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf, rq);
+                     ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf, nk + 3, rq);
         if (dep < SHLIGHT_GGX_DEPTH && nsp < SHLIGHT_GGX_SPLITS &&
             SHLIGHT_ABSR(rq[0] - rq[1]) > tol) {
           spl = 2;
