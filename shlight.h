@@ -5962,7 +5962,7 @@ SHLIGHT_INLINE shli_real shli_beckmann_lambda(shli_real c, shli_real alpha) {
   shli_real a;
   shli_real t;
   shli_real p;
-  a = c / (alpha * SHLIGHT_SQRTR(SHLIGHT_MAXR(s2, 0.0))); /* no branch: c >= 1 gives 0 */
+  a = c / (alpha * SHLIGHT_SQRTR(SHLIGHT_MAXR(s2, 0.0))); /* c >= 1: 0 */
   a = SHLIGHT_MAXR(SHLIGHT_MINR(a, 1.0e10), 1.0e-30);
   t = 1.0 / (1.0 + 0.3275911 * a);
   p = t *
@@ -6031,7 +6031,7 @@ SHLIGHT_INLINE shli_real shli_ggx_w(shli_real lx, shli_real ly, shli_real lz, sh
   shli_real hv = hx * vx + hy * vy + hz * vz;
   shli_real nv = vx * nx + vy * ny + vz * nz;
   shli_real laml;
-  shli_real r; /* no early return (a select in GLSL) */
+  shli_real r;
   if (ndf == 0) {
     laml = 0.5 * (SHLIGHT_SQRTR(nl * nl + a2 * (1.0 - nl * nl)) / nl - 1.0);
   } else {
@@ -6175,8 +6175,7 @@ SHLIGHT_INLINE void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli
 }
 
 /* The remainder's integral over a spherical triangle: out_q[0] degree 5 (Dunavant, 7 points),
-   out_q[1] degree 2 (error estimate); nn = 7, at run time so that GLSL does not unroll the
-   loop. (docs/derivations.md sec. 13.33) */
+   out_q[1] degree 2 (error estimate); nn = 7. (docs/derivations.md sec. 13.33) */
 SHLIGHT_INLINE void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx,
                                  shli_real by, shli_real bz, shli_real cx, shli_real cy,
                                  shli_real cz, shli_real vx, shli_real vy, shli_real vz,
@@ -6184,7 +6183,7 @@ SHLIGHT_INLINE void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_
                                  shli_real lamv, shli_real ws, shli_real hx, shli_real hy,
                                  shli_real hz, shli_real gx, shli_real gy, shli_real gz,
                                  shli_real al, int ndf, int nn, shli_real *out_q) {
-  shli_real tr[8]; /* 8, not nn: Mesa unrolls a loop whose count is the length of an array */
+  shli_real tr[8];
   shli_real ts[8];
   shli_real tw[8];
   shli_real c = 1.0 - a2;
@@ -6409,17 +6408,14 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   if (nc == 0) {
     return 0.0f;
   }
-  /* a negatively oriented polygon: every edge and remainder term below changes sign with the
-     orientation (the edges' integrands with l', the remainder's with det), so the sum is taken
-     as it comes and multiplied by ori at the end (no reversal of the arrays: GLSL's indexed
-     swaps cost more to compile than the rest of the body) */
+  /* negative orientation: every edge and remainder term changes sign with it (with l', det):
+     the sum is multiplied by ori at the end, the arrays are not reversed */
   if (nc < 0) {
     nc = -nc;
     ori = -1.0;
   }
-  /* the mirror direction r; in one loop over the edges (one loop copy in GLSL): whether r lies
-     inside the polygon, the point l* of the polygon's vertices and arcs closest to r (used when
-     it does not) and the sum of the vertices (the centroid's direction, below) */
+  /* the mirror direction r; one loop over the edges: whether r lies inside the polygon, the
+     point l* of its vertices and arcs closest to r (used if not), the sum of the vertices */
   rx = 2.0 * nv2 * nx - vx;
   ry = 2.0 * nv2 * ny - vy;
   rz = 2.0 * nv2 * nz - vz;
@@ -6501,8 +6497,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   t2x = d;
   t2y = sg + hy * hy * q;
   t2z = -hy;
-  /* 4 trips and below 2, counts GLSL's compiler cannot see (nc > 0 here): it keeps these loops,
-     with one copy of their bodies (shli_ggx_w, sin and cos), instead of unrolling them */
+  /* nk = 4: trip counts GLSL cannot fold (docs/glsl.md, loops kept rolled) */
   nk = nc > 0 ? 4 : 0;
   for (k = 0; k < nk; ++k) {
     d = 1.0e-3;

@@ -5114,7 +5114,7 @@ shli_real shli_beckmann_lambda(shli_real c, shli_real alpha) {
   shli_real a;
   shli_real t;
   shli_real p;
-  a = c / (alpha * SHLIGHT_SQRTR(SHLIGHT_MAXR(s2, 0.0))); /* no branch: c >= 1 gives 0 */
+  a = c / (alpha * SHLIGHT_SQRTR(SHLIGHT_MAXR(s2, 0.0))); /* c >= 1: 0 */
   a = SHLIGHT_MAXR(SHLIGHT_MINR(a, 1.0e10), 1.0e-30);
   t = 1.0 / (1.0 + 0.3275911 * a);
   p = t *
@@ -5176,7 +5176,7 @@ shli_real shli_ggx_w(shli_real lx, shli_real ly, shli_real lz, shli_real vx, shl
   shli_real hv = hx * vx + hy * vy + hz * vz;
   shli_real nv = vx * nx + vy * ny + vz * nz;
   shli_real laml;
-  shli_real r; /* no early return (a select in GLSL) */
+  shli_real r;
   if (ndf == 0) {
     laml = 0.5 * (SHLIGHT_SQRTR(nl * nl + a2 * (1.0 - nl * nl)) / nl - 1.0);
   } else {
@@ -5322,7 +5322,7 @@ void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_r
                   shli_real a2, shli_real lamv, shli_real ws, shli_real hx, shli_real hy,
                   shli_real hz, shli_real gx, shli_real gy, shli_real gz, shli_real al, int ndf,
                   int nn, out shli_real out_q[2]) {
-  shli_real tr[8]; /* 8, not nn: Mesa unrolls a loop whose count is the length of an array */
+  shli_real tr[8];
   shli_real ts[8];
   shli_real tw[8];
   shli_real c = 1.0 - a2;
@@ -5544,17 +5544,14 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   if (nc == 0) {
     return 0.0f;
   }
-  /* a negatively oriented polygon: every edge and remainder term below changes sign with the
-     orientation (the edges' integrands with l', the remainder's with det), so the sum is taken
-     as it comes and multiplied by ori at the end (no reversal of the arrays: GLSL's indexed
-     swaps cost more to compile than the rest of the body) */
+  /* negative orientation: every edge and remainder term changes sign with it (with l', det):
+     the sum is multiplied by ori at the end, the arrays are not reversed */
   if (nc < 0) {
     nc = -nc;
     ori = -1.0;
   }
-  /* the mirror direction r; in one loop over the edges (one loop copy in GLSL): whether r lies
-     inside the polygon, the point l* of the polygon's vertices and arcs closest to r (used when
-     it does not) and the sum of the vertices (the centroid's direction, below) */
+  /* the mirror direction r; one loop over the edges: whether r lies inside the polygon, the
+     point l* of its vertices and arcs closest to r (used if not), the sum of the vertices */
   rx = 2.0 * nv2 * nx - vx;
   ry = 2.0 * nv2 * ny - vy;
   rz = 2.0 * nv2 * nz - vz;
@@ -5636,8 +5633,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   t2x = d;
   t2y = sg + hy * hy * q;
   t2z = -hy;
-  /* 4 trips and below 2, counts GLSL's compiler cannot see (nc > 0 here): it keeps these loops,
-     with one copy of their bodies (shli_ggx_w, sin and cos), instead of unrolling them */
+  /* nk = 4: trip counts GLSL cannot fold (docs/glsl.md, loops kept rolled) */
   nk = nc > 0 ? 4 : 0;
   for (k = 0; k < nk; ++k) {
     d = 1.0e-3;
