@@ -6183,9 +6183,11 @@ SHLIGHT_INLINE void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_
                                  shli_real lamv, shli_real ws, shli_real hx, shli_real hy,
                                  shli_real hz, shli_real gx, shli_real gy, shli_real gz,
                                  shli_real al, int ndf, int nn, shli_real *out_q) {
-  shli_real tr[8];
-  shli_real ts[8];
-  shli_real tw[8];
+  shli_real nr;
+  shli_real ns;
+  shli_real nw;
+  shli_real np;
+  shli_real nq;
   shli_real c = 1.0 - a2;
   shli_real f = 0.0;
   shli_real det;
@@ -6202,27 +6204,6 @@ SHLIGHT_INLINE void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_
   shli_real d0;
   shli_real w;
   int k;
-  tr[0] = 0.33333333333333333;
-  ts[0] = 0.33333333333333333;
-  tw[0] = 0.1125;
-  tr[1] = 0.059715871789769820;
-  ts[1] = 0.47014206410511509;
-  tr[2] = 0.47014206410511509;
-  ts[2] = 0.059715871789769820;
-  tr[3] = 0.47014206410511509;
-  ts[3] = 0.47014206410511509;
-  tr[4] = 0.79742698535308732;
-  ts[4] = 0.10128650732345634;
-  tr[5] = 0.10128650732345634;
-  ts[5] = 0.79742698535308732;
-  tr[6] = 0.10128650732345634;
-  ts[6] = 0.10128650732345634;
-  tw[1] = 0.066197076394253090;
-  tw[2] = 0.066197076394253090;
-  tw[3] = 0.066197076394253090;
-  tw[4] = 0.062969590272413576;
-  tw[5] = 0.062969590272413576;
-  tw[6] = 0.062969590272413576;
   bx = bx - ax;
   by = by - ay;
   bz = bz - az;
@@ -6233,9 +6214,31 @@ SHLIGHT_INLINE void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_
   out_q[1] = 0.0;
   det = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
   for (k = 0; k < nn; ++k) {
-    qx = ax + tr[k] * bx + ts[k] * cx;
-    qy = ay + tr[k] * by + ts[k] * cy;
-    qz = az + tr[k] * bz + ts[k] * cz;
+    /* node k: (1/3, 1/3); (q, p), (p, q), (p, p) for k = 1..3 and 4..6 (selects, no arrays) */
+    np = 0.33333333333333333;
+    nq = np;
+    nw = 0.1125;
+    if (k > 0) {
+      np = 0.47014206410511509;
+      nq = 0.059715871789769820;
+      nw = 0.066197076394253090;
+    }
+    if (k > 3) {
+      np = 0.10128650732345634;
+      nq = 0.79742698535308732;
+      nw = 0.062969590272413576;
+    }
+    nr = np;
+    ns = np;
+    if (k == 1 || k == 4) {
+      nr = nq;
+    }
+    if (k == 2 || k == 5) {
+      ns = nq;
+    }
+    qx = ax + nr * bx + ns * cx;
+    qy = ay + nr * by + ns * cy;
+    qz = az + nr * bz + ns * cz;
     q = SHLIGHT_SQRTR(qx * qx + qy * qy + qz * qz);
     qx = qx / q;
     qy = qy / q;
@@ -6262,7 +6265,7 @@ SHLIGHT_INLINE void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_
         f = 0.0;
       }
     }
-    out_q[0] = out_q[0] + tw[k] * f;
+    out_q[0] = out_q[0] + nw * f;
     /* the embedded degree-2 rule: the centroid 0.48412, the three outer nodes 0.17196 each */
     if (k == 0) {
       out_q[1] = out_q[1] + 0.24206145913796356 * f;
