@@ -5352,6 +5352,7 @@ void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_r
   out_q[0] = 0.0;
   out_q[1] = 0.0;
   det = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
+  SHLIGHT_UNROLL(7)
   for (k = 0; k < nn; ++k) {
     /* node k: (1/3, 1/3); (q, p), (p, q), (p, p) for k = 1..3 and 4..6 (selects, no arrays) */
     np = 0.33333333333333333;
@@ -5636,8 +5637,8 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   t2x = d;
   t2y = sg + hy * hy * q;
   t2z = -hy;
-  /* nk = 4: trip counts GLSL cannot fold (docs/glsl.md, loops kept rolled) */
-  nk = nc > 0 ? 4 : 0;
+  /* nk = 4; in GLSL a count it cannot fold: loops kept rolled (docs/glsl.md) */
+  nk = SHLIGHT_FLAT_LOOPS == 0 || nc > 0 ? 4 : 0;
   for (k = 0; k < nk; ++k) {
     d = 1.0e-3;
     if (k == 1 || k == 3) {
