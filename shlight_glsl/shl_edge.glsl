@@ -1391,10 +1391,8 @@ shli_real shli_beckmann_lambda(shli_real c, shli_real alpha) {
   shli_real a;
   shli_real t;
   shli_real p;
-  if (!(s2 > 0.0)) {
-    return 0.0;
-  }
-  a = SHLIGHT_MAXR(c / (alpha * SHLIGHT_SQRTR(s2)), 1.0e-30);
+  a = c / (alpha * SHLIGHT_SQRTR(SHLIGHT_MAXR(s2, 0.0))); /* c >= 1: 0 */
+  a = SHLIGHT_MAXR(SHLIGHT_MINR(a, 1.0e10), 1.0e-30);
   t = 1.0 / (1.0 + 0.3275911 * a);
   p = t *
       (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
@@ -1455,15 +1453,17 @@ shli_real shli_ggx_w(shli_real lx, shli_real ly, shli_real lz, shli_real vx, shl
   shli_real hv = hx * vx + hy * vy + hz * vz;
   shli_real nv = vx * nx + vy * ny + vz * nz;
   shli_real laml;
-  if (!(nl > 0.0) || !(nh > 0.0)) {
-    return 0.0;
-  }
+  shli_real r;
   if (ndf == 0) {
     laml = 0.5 * (SHLIGHT_SQRTR(nl * nl + a2 * (1.0 - nl * nl)) / nl - 1.0);
   } else {
     laml = shli_beckmann_lambda(nl, al);
   }
-  return hv / ((1.0 + lamv + laml) * nv * nh);
+  r = hv / ((1.0 + lamv + laml) * nv * nh);
+  if (!(nl > 0.0) || !(nh > 0.0)) {
+    r = 0.0;
+  }
+  return r;
 }
 
 void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli_real wd, shli_real ax,
@@ -1598,10 +1598,12 @@ void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_r
                   shli_real vy, shli_real vz, shli_real nx, shli_real ny, shli_real nz,
                   shli_real a2, shli_real lamv, shli_real ws, shli_real hx, shli_real hy,
                   shli_real hz, shli_real gx, shli_real gy, shli_real gz, shli_real al, int ndf,
-                  out shli_real out_q[2]) {
-  shli_real tr[7];
-  shli_real ts[7];
-  shli_real tw[7];
+                  int nn, out shli_real out_q[2]) {
+  shli_real nr;
+  shli_real ns;
+  shli_real nw;
+  shli_real np;
+  shli_real nq;
   shli_real c = 1.0 - a2;
   shli_real f = 0.0;
   shli_real det;
@@ -1618,27 +1620,6 @@ void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_r
   shli_real d0;
   shli_real w;
   int k;
-  tr[0] = 0.33333333333333333;
-  ts[0] = 0.33333333333333333;
-  tw[0] = 0.1125;
-  tr[1] = 0.059715871789769820;
-  ts[1] = 0.47014206410511509;
-  tr[2] = 0.47014206410511509;
-  ts[2] = 0.059715871789769820;
-  tr[3] = 0.47014206410511509;
-  ts[3] = 0.47014206410511509;
-  tr[4] = 0.79742698535308732;
-  ts[4] = 0.10128650732345634;
-  tr[5] = 0.10128650732345634;
-  ts[5] = 0.79742698535308732;
-  tr[6] = 0.10128650732345634;
-  ts[6] = 0.10128650732345634;
-  tw[1] = 0.066197076394253090;
-  tw[2] = 0.066197076394253090;
-  tw[3] = 0.066197076394253090;
-  tw[4] = 0.062969590272413576;
-  tw[5] = 0.062969590272413576;
-  tw[6] = 0.062969590272413576;
   bx = bx - ax;
   by = by - ay;
   bz = bz - az;
@@ -1648,10 +1629,33 @@ void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_r
   out_q[0] = 0.0;
   out_q[1] = 0.0;
   det = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
-  for (k = 0; k < 7; ++k) {
-    qx = ax + tr[k] * bx + ts[k] * cx;
-    qy = ay + tr[k] * by + ts[k] * cy;
-    qz = az + tr[k] * bz + ts[k] * cz;
+  SHLIGHT_UNROLL(7)
+  for (k = 0; k < nn; ++k) {
+    /* node k: (1/3, 1/3); (q, p), (p, q), (p, p) for k = 1..3 and 4..6 (selects, no arrays) */
+    np = 0.33333333333333333;
+    nq = np;
+    nw = 0.1125;
+    if (k > 0) {
+      np = 0.47014206410511509;
+      nq = 0.059715871789769820;
+      nw = 0.066197076394253090;
+    }
+    if (k > 3) {
+      np = 0.10128650732345634;
+      nq = 0.79742698535308732;
+      nw = 0.062969590272413576;
+    }
+    nr = np;
+    ns = np;
+    if (k == 1 || k == 4) {
+      nr = nq;
+    }
+    if (k == 2 || k == 5) {
+      ns = nq;
+    }
+    qx = ax + nr * bx + ns * cx;
+    qy = ay + nr * by + ns * cy;
+    qz = az + nr * bz + ns * cz;
     q = SHLIGHT_SQRTR(qx * qx + qy * qy + qz * qz);
     qx = qx / q;
     qy = qy / q;
@@ -1665,18 +1669,20 @@ void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_r
     f1 = SHLIGHT_SQRTR(f2);
     w = shli_ggx_w(qx, qy, qz, vx, vy, vz, nx, ny, nz, a2, lamv, al, ndf) - ws -
         (gx * (dx / f1 - hx) + gy * (dy / f1 - hy) + gz * (dz / f1 - hz));
-    f = 0.0;
     if (ndf == 0) {
       /* D = alpha^2 / (pi (1 - c (h.n)^2)^2), (h.n) / (h.v) = d / (l + v).v */
       f = det / (q * q * q) * a2 * d /
           (12.566370614359173 * d0 * d0 * (dx * vx + dy * vy + dz * vz)) * w;
-    } else if (d > 0.0) {
+    } else {
       /* D_B (h.n) / (4 h.v) = exp(-(f2 - d^2) / (alpha^2 d^2)) f2^2 / (4 pi alpha^2 d^3 (l + v).v),
-         d = (l + v).n, f2 = |l + v|^2 */
+         d = (l + v).n, f2 = |l + v|^2; 0 for d <= 0 */
       f = det / (q * q * q) * SHLIGHT_MEXP(-(f2 - d * d) / (a2 * d * d)) * f2 * f2 /
           (12.566370614359173 * a2 * d * d * d * (dx * vx + dy * vy + dz * vz)) * w;
+      if (!(d > 0.0)) {
+        f = 0.0;
+      }
     }
-    out_q[0] = out_q[0] + tw[k] * f;
+    out_q[0] = out_q[0] + nw * f;
     /* the embedded degree-2 rule: the centroid 0.48412, the three outer nodes 0.17196 each */
     if (k == 0) {
       out_q[1] = out_q[1] + 0.24206145913796356 * f;
@@ -1780,6 +1786,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   int dep;
   int it;
   int inside = 1;
+  int nk;
   int nc;
   int i;
   int j;
@@ -1818,17 +1825,14 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   if (nc == 0) {
     return 0.0f;
   }
-  /* a negatively oriented polygon: every edge and remainder term below changes sign with the
-     orientation (the edges' integrands with l', the remainder's with det), so the sum is taken
-     as it comes and multiplied by ori at the end (no reversal of the arrays: GLSL's indexed
-     swaps cost more to compile than the rest of the body) */
+  /* negative orientation: every edge and remainder term changes sign with it (with l', det):
+     the sum is multiplied by ori at the end, the arrays are not reversed */
   if (nc < 0) {
     nc = -nc;
     ori = -1.0;
   }
-  /* the mirror direction r; in one loop over the edges (one loop copy in GLSL): whether r lies
-     inside the polygon, the point l* of the polygon's vertices and arcs closest to r (used when
-     it does not) and the sum of the vertices (the centroid's direction, below) */
+  /* the mirror direction r; one loop over the edges: whether r lies inside the polygon, the
+     point l* of its vertices and arcs closest to r (used if not), the sum of the vertices */
   rx = 2.0 * nv2 * nx - vx;
   ry = 2.0 * nv2 * ny - vy;
   rz = 2.0 * nv2 * nz - vz;
@@ -1910,7 +1914,9 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   t2x = d;
   t2y = sg + hy * hy * q;
   t2z = -hy;
-  for (k = 0; k < 4; ++k) {
+  /* nk = 4; in GLSL a count it cannot fold: loops kept rolled (docs/glsl.md) */
+  nk = SHLIGHT_FLAT_LOOPS == 0 || nc > 0 ? 4 : 0;
+  for (k = 0; k < nk; ++k) {
     d = 1.0e-3;
     if (k == 1 || k == 3) {
       d = -1.0e-3;
@@ -1969,7 +1975,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
       by = ez * ax - ex * az;
       bz = ex * ay - ey * ax;
       t0 = shli_atan2r(rx * bx + ry * by + rz * bz, rx * ax + ry * ay + rz * az);
-      for (k = 0; k < 2; ++k) {
+      for (k = 0; k < nk / 2; ++k) {
         ct = SHLIGHT_MCOS(t0);
         st = SHLIGHT_MSIN(t0);
         qx = ct * ax + st * bx + vx;
@@ -2157,7 +2163,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
       }
       if (spl == 0) {
         shli_ggx_tri(tr[0], ts[0], tw[0], tr[1], ts[1], tw[1], tr[2], ts[2], tw[2], vx, vy, vz, nx,
-                     ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf, rq);
+                     ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf, nk + 3, rq);
         if (dep < SHLIGHT_GGX_DEPTH && nsp < SHLIGHT_GGX_SPLITS &&
             SHLIGHT_ABSR(rq[0] - rq[1]) > tol) {
           spl = 2;
