@@ -579,7 +579,7 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    roughness 0.05 to 1 (LTC: 7e-5 to 0.11), p95 below 0.08 %, max error / albedo <= 3.6e-3 at
    every roughness (grazing views, lights straddling the horizon); weakest in the last degrees
    before grazing (a light filling the hemisphere, alpha 0.04: 0.14 % at view 85 deg, 13 % at
-   88). Cost: 17.8k x86 instructions per quad on that sampler's mean, 14.2k where no piece is
+   88). Cost: 17.5k x86 instructions per quad on that sampler's mean, ~14k where no piece is
    split (93 % of its quads; 10 Gauss nodes per edge, 7 or 28 cubature nodes per fan triangle),
    0.42M at the split budget (grazing views, narrow lobes on the horizon). */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
