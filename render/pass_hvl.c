@@ -82,6 +82,10 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define HVL_AVX 1 /* the AVX lanes, chosen at run time by __builtin_cpu_supports */
+#endif
 
 #define HVL_PI 3.14159265358979323846
 #define HVL_STRIDE 15   /* floats per light in the set: y, n_s, Phi, n_g, r_nb, r_fov, dist */
@@ -1078,6 +1082,7 @@ typedef struct {
   const gt_patches *gp;
   double eps;
   float *rgb;
+  int avx; /* the AVX lanes (gt_lambert_pk_avx) */
 } gt_job;
 
 /* patch j's Lambert term at x into e: the loop body of gt_shade for a Lambert pixel (the same
@@ -1200,6 +1205,98 @@ static void gt_lambert_pk(const gt_patches *gp, int nq, double eps, double (*qx)
 }
 #endif
 
+#if defined(HVL_AVX)
+/* gt_lambert_pk four pixels per AVX vector: the same per-lane operations in the same order
+   (AVX has no fused multiply-add, so no contraction either), so every sum is bit for bit the
+   scalar loop's; chosen at run time where the CPU has AVX */
+__attribute__((target("avx"))) static void gt_lambert_pk_avx(const gt_patches *gp, int nq,
+                                                             double eps, double (*qx)[3],
+                                                             double (*qn)[3], double (*qg)[3],
+                                                             double (*qe)[3]) {
+  const __m256d zero = _mm256_setzero_pd(), ve = _mm256_set1_pd(eps);
+  const __m256d sgn = _mm256_set1_pd(-0.0);
+  __m256d X[GT_PK / 4][3], N[GT_PK / 4][3], G[GT_PK / 4][3], E[GT_PK / 4][3];
+  double tmp[12];
+  int j, h, c, t;
+  for (h = 0; h < GT_PK / 4; h++)
+    for (c = 0; c < 3; c++) {
+      int i0 = 4 * h < nq ? 4 * h : 0, i1 = 4 * h + 1 < nq ? 4 * h + 1 : 0;
+      int i2 = 4 * h + 2 < nq ? 4 * h + 2 : 0, i3 = 4 * h + 3 < nq ? 4 * h + 3 : 0;
+      X[h][c] = _mm256_set_pd(qx[i3][c], qx[i2][c], qx[i1][c], qx[i0][c]);
+      N[h][c] = _mm256_set_pd(qn[i3][c], qn[i2][c], qn[i1][c], qn[i0][c]);
+      G[h][c] = _mm256_set_pd(qg[i3][c], qg[i2][c], qg[i1][c], qg[i0][c]);
+      E[h][c] = zero;
+    }
+  for (j = 0; j < gp->n; j++) {
+    const double *p = gp->p + 3 * j, *ns = gp->ns + 3 * j, *phi = gp->phi + 3 * j;
+    const double *ng = gp->ng + 3 * j;
+    const __m256d p0 = _mm256_set1_pd(p[0]), p1 = _mm256_set1_pd(p[1]);
+    const __m256d p2 = _mm256_set1_pd(p[2]);
+    const __m256d ng0 = _mm256_set1_pd(ng[0]), ng1 = _mm256_set1_pd(ng[1]);
+    const __m256d ng2 = _mm256_set1_pd(ng[2]);
+    const __m256d near2 = _mm256_set1_pd(gp->near2[j]);
+    for (h = 0; h < (nq + 3) / 4; h++) {
+      __m256d dx = _mm256_sub_pd(p0, X[h][0]), dy = _mm256_sub_pd(p1, X[h][1]);
+      __m256d dz = _mm256_sub_pd(p2, X[h][2]);
+      __m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+                                 _mm256_mul_pd(dz, dz));
+      __m256d a = _mm256_xor_pd(
+          _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ng0, dx), _mm256_mul_pd(ng1, dy)),
+                        _mm256_mul_pd(ng2, dz)),
+          sgn);
+      __m256d b =
+          _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(G[h][0], dx), _mm256_mul_pd(G[h][1], dy)),
+                        _mm256_mul_pd(G[h][2], dz));
+      __m256d gate = _mm256_and_pd(_mm256_cmp_pd(a, ve, _CMP_GT_OQ),
+                                   _mm256_cmp_pd(b, ve, _CMP_GT_OQ));
+      __m256d nr = _mm256_and_pd(gate, _mm256_cmp_pd(d2, near2, _CMP_LT_OQ));
+      __m256d cy, cx, ok, gf;
+      int mg = _mm256_movemask_pd(gate), mn;
+      if (mg == 0) continue;
+      mn = _mm256_movemask_pd(nr);
+      if (mn) { /* near the patch: the exact quad, gt_lambert itself, for those lanes */
+        for (c = 0; c < 3; c++)
+          _mm256_storeu_pd(tmp + 4 * c, E[h][c]);
+        for (t = 0; t < 4; t++)
+          if ((mn >> t & 1) && 4 * h + t < nq) {
+            double e[3];
+            for (c = 0; c < 3; c++)
+              e[c] = tmp[4 * c + t];
+            gt_lambert(gp, j, eps, qx[4 * h + t], qn[4 * h + t], qg[4 * h + t], e);
+            for (c = 0; c < 3; c++)
+              tmp[4 * c + t] = e[c];
+          }
+        for (c = 0; c < 3; c++)
+          E[h][c] = _mm256_loadu_pd(tmp + 4 * c);
+        if (mn == mg) continue;
+      }
+      cy = _mm256_xor_pd(
+          _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(ns[0]), dx),
+                                      _mm256_mul_pd(_mm256_set1_pd(ns[1]), dy)),
+                        _mm256_mul_pd(_mm256_set1_pd(ns[2]), dz)),
+          sgn);
+      cx = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(N[h][0], dx), _mm256_mul_pd(N[h][1], dy)),
+                         _mm256_mul_pd(N[h][2], dz));
+      ok = _mm256_andnot_pd(nr, gate);
+      ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(cy, zero, _CMP_GT_OQ),
+                                           _mm256_cmp_pd(cx, zero, _CMP_GT_OQ)));
+      ok = _mm256_and_pd(ok, _mm256_cmp_pd(d2, zero, _CMP_GT_OQ));
+      if (_mm256_movemask_pd(ok) == 0) continue;
+      gf = _mm256_and_pd(ok, _mm256_div_pd(_mm256_mul_pd(cy, cx), _mm256_mul_pd(d2, d2)));
+      E[h][0] = _mm256_add_pd(E[h][0], _mm256_mul_pd(_mm256_set1_pd(phi[0]), gf));
+      E[h][1] = _mm256_add_pd(E[h][1], _mm256_mul_pd(_mm256_set1_pd(phi[1]), gf));
+      E[h][2] = _mm256_add_pd(E[h][2], _mm256_mul_pd(_mm256_set1_pd(phi[2]), gf));
+    }
+  }
+  for (h = 0; h < (nq + 3) / 4; h++)
+    for (c = 0; c < 3; c++) {
+      _mm256_storeu_pd(tmp + 4 * c, E[h][c]);
+      for (t = 0; t < 4; t++)
+        if (4 * h + t < nq) qe[4 * h + t][c] = tmp[4 * c + t];
+    }
+}
+#endif
+
 static void gt_shade(void *ctx, long lo, long hi) {
   const gt_job *jb = (const gt_job *)ctx;
   const rd_run *run = jb->run;
@@ -1228,8 +1325,13 @@ static void gt_shade(void *ctx, long lo, long hi) {
       if (nq < GT_PK && px + 1 < (int)hi) continue;
     }
     if (nq > 0) {
+#if defined(HVL_AVX)
+      if (jb->avx)
+        gt_lambert_pk_avx(gp, nq, eps, qx, qn, qg, qe);
+      else
+#endif
 #if defined(__SSE2__)
-      gt_lambert_pk(gp, nq, eps, qx, qn, qg, qe);
+        gt_lambert_pk(gp, nq, eps, qx, qn, qg, qe);
 #else
       for (j = 0; j < gp->n; j++)
         for (t = 0; t < nq; t++)
@@ -1306,6 +1408,18 @@ static void gt_shade(void *ctx, long lo, long hi) {
   }
 }
 
+/* the AVX lanes where the CPU has AVX, unless SHLRENDER_NO_AVX is set (tests hold the two
+   paths to the same bytes) */
+static int hvl_use_avx(void) {
+#if defined(HVL_AVX)
+  const char *e = getenv("SHLRENDER_NO_AVX");
+  if (e && *e && strcmp(e, "0") != 0) return 0;
+  return __builtin_cpu_supports("avx") ? 1 : 0;
+#else
+  return 0;
+#endif
+}
+
 /* the gt image on rd_threads() threads; *ms: the CPU ms of all of them */
 static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, int N, double eps,
                     float *rgb, int *npatch, double *ms, int bg) {
@@ -1320,6 +1434,7 @@ static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, in
   jb.gp = &gp;
   jb.eps = eps;
   jb.rgb = rgb;
+  jb.avx = hvl_use_avx();
   t0 = rd_cpu_ms() - t0; /* the patches, on this thread */
   t0 += (bg ? rd_parallel_bg : rd_parallel)((long)run->gb->w * run->gb->h, run->gb->w, gt_shade,
                                             &jb, label);
