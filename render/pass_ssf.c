@@ -531,11 +531,11 @@ static void gt_rows(void *ctx, long lo, long hi) {
   }
 }
 
-/* the AVX lanes where the CPU has AVX, unless SHLRENDER_NO_AVX is set (tests hold the two
+/* the AVX lanes where the CPU has AVX, unless SHLIGHT_RENDER_NO_AVX is set (tests hold the two
    paths to the same bytes) */
 static int ssf_use_avx(void) {
 #if defined(SSF_AVX)
-  const char *e = getenv("SHLRENDER_NO_AVX");
+  const char *e = getenv("SHLIGHT_RENDER_NO_AVX");
   if (e && *e && strcmp(e, "0") != 0) return 0;
   return __builtin_cpu_supports("avx") ? 1 : 0;
 #else

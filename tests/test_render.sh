@@ -46,6 +46,16 @@ if "$R" --help | grep -q "usage: shlrender"; then ok; else ko "--help"; fi
 # a CPU-only render of the example scene writes PNGs
 if "$R" --scene examples/scenes/room.scene --pass preview --paths cpu --size 32x24 --out "$t/png" \
   >/dev/null && [ -s "$t/png/room_preview_headlight_cpu.png" ]; then ok; else ko "cpu-only PNG"; fi
+# the hvl and ssf ground truths' AVX lanes (where the CPU has AVX) against the SSE2 / scalar
+# path (SHLIGHT_RENDER_NO_AVX=1): the same PNG bytes (61x45: rows that end in a partial group)
+mkdir -p "$t/avx" "$t/noavx"
+if "$R" --scene cornell --pass hvl,ssf --paths cpu --size 61x45 --gt 1 --reps 1 --out "$t/avx" \
+  >/dev/null 2>&1 && SHLIGHT_RENDER_NO_AVX=1 "$R" --scene cornell --pass hvl,ssf --paths cpu \
+  --size 61x45 --gt 1 --reps 1 --out "$t/noavx" >/dev/null 2>&1 &&
+  cmp "$t/avx/cornell_hvl_gt_gt.png" "$t/noavx/cornell_hvl_gt_gt.png" &&
+  cmp "$t/avx/cornell_ssf_gt_gt.png" "$t/noavx/cornell_ssf_gt_gt.png"; then ok; else
+  ko "hvl / ssf ground truth: AVX lanes differ from the SSE2 path"
+fi
 # every pass, GL against CPU
 for s in ${SHLIGHT_RENDER_SCENES:-cornell spheres manylights glossy examples/scenes/room.scene}; do
   SHLIGHT_GL_BACKEND=$backend "$R" --scene "$s" --size 64x48 --gt 1 --reps 1 --check \
