@@ -1240,15 +1240,15 @@ __attribute__((target("avx"))) static void gt_lambert_pk_avx(const gt_patches *g
       __m256d dz = _mm256_sub_pd(p2, X[h][2]);
       __m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
                                  _mm256_mul_pd(dz, dz));
-      __m256d a = _mm256_xor_pd(
-          _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ng0, dx), _mm256_mul_pd(ng1, dy)),
-                        _mm256_mul_pd(ng2, dz)),
-          sgn);
+      __m256d a =
+          _mm256_xor_pd(_mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ng0, dx), _mm256_mul_pd(ng1, dy)),
+                                      _mm256_mul_pd(ng2, dz)),
+                        sgn);
       __m256d b =
           _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(G[h][0], dx), _mm256_mul_pd(G[h][1], dy)),
                         _mm256_mul_pd(G[h][2], dz));
-      __m256d gate = _mm256_and_pd(_mm256_cmp_pd(a, ve, _CMP_GT_OQ),
-                                   _mm256_cmp_pd(b, ve, _CMP_GT_OQ));
+      __m256d gate =
+          _mm256_and_pd(_mm256_cmp_pd(a, ve, _CMP_GT_OQ), _mm256_cmp_pd(b, ve, _CMP_GT_OQ));
       __m256d nr = _mm256_and_pd(gate, _mm256_cmp_pd(d2, near2, _CMP_LT_OQ));
       __m256d cy, cx, ok, gf;
       int mg = _mm256_movemask_pd(gate), mn;
@@ -1270,11 +1270,10 @@ __attribute__((target("avx"))) static void gt_lambert_pk_avx(const gt_patches *g
           E[h][c] = _mm256_loadu_pd(tmp + 4 * c);
         if (mn == mg) continue;
       }
-      cy = _mm256_xor_pd(
-          _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(ns[0]), dx),
-                                      _mm256_mul_pd(_mm256_set1_pd(ns[1]), dy)),
-                        _mm256_mul_pd(_mm256_set1_pd(ns[2]), dz)),
-          sgn);
+      cy = _mm256_xor_pd(_mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(ns[0]), dx),
+                                                     _mm256_mul_pd(_mm256_set1_pd(ns[1]), dy)),
+                                       _mm256_mul_pd(_mm256_set1_pd(ns[2]), dz)),
+                         sgn);
       cx = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(N[h][0], dx), _mm256_mul_pd(N[h][1], dy)),
                          _mm256_mul_pd(N[h][2], dz));
       ok = _mm256_andnot_pd(nr, gate);

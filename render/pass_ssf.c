@@ -438,9 +438,8 @@ static void gt_four(const gt_job *jb, double x[3][4], double ns[3][4], double ng
 /* gt_four with the four pixels in one AVX vector: the same per-lane operations in the same
    order (AVX has no fused multiply-add, so no contraction either), so each sum is bit for bit
    gt_one's; chosen at run time where the CPU has AVX */
-__attribute__((target("avx"))) static void gt_four_avx(const gt_job *jb, double x[3][4],
-                                                       double ns[3][4], double ng[3][4],
-                                                       double acc[3][4]) {
+__attribute__((target("avx"))) static void
+gt_four_avx(const gt_job *jb, double x[3][4], double ns[3][4], double ng[3][4], double acc[3][4]) {
   const gt_vpl *v = jb->v;
   const __m256d zero = _mm256_setzero_pd(), dm2 = _mm256_set1_pd(jb->dm2);
   const __m256d sgn = _mm256_set1_pd(-0.0);
@@ -461,11 +460,11 @@ __attribute__((target("avx"))) static void gt_four_avx(const gt_job *jb, double 
                                _mm256_mul_pd(d2, d2));
     __m256d gd = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(G[0], d0), _mm256_mul_pd(G[1], d1)),
                                _mm256_mul_pd(G[2], d2));
-    __m256d cy = _mm256_xor_pd(
-        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(q->n[0]), d0),
-                                    _mm256_mul_pd(_mm256_set1_pd(q->n[1]), d1)),
-                      _mm256_mul_pd(_mm256_set1_pd(q->n[2]), d2)),
-        sgn);
+    __m256d cy =
+        _mm256_xor_pd(_mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(q->n[0]), d0),
+                                                  _mm256_mul_pd(_mm256_set1_pd(q->n[1]), d1)),
+                                    _mm256_mul_pd(_mm256_set1_pd(q->n[2]), d2)),
+                      sgn);
     __m256d cs = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(S[0], d0), _mm256_mul_pd(S[1], d1)),
                                _mm256_mul_pd(S[2], d2));
     __m256d ok = _mm256_and_pd(
