@@ -1120,7 +1120,7 @@ static inline void gt_lambert(const gt_patches *gp, int j, double eps, const dou
   e[2] += phi[2] * gf;
 }
 
-#define GT_PK 8 /* Lambert pixels that share one pass over the patches */
+#define GT_PK 16 /* Lambert pixels that share one pass over the patches */
 
 #if defined(__SSE2__)
 /* gt_lambert for patch j at GT_PK pixels (nq of them used; the others copy pixel 0 and are
