@@ -333,7 +333,8 @@ typedef struct {
   int nv;
   double dm2;
   float *rgb;
-  int avx; /* the AVX lanes (gt_four_avx) */
+  int avx;     /* the AVX lanes (gt_four_avx) */
+  long *check; /* SHLIGHT_RENDER_GT_CHECK: sums compared with gt_one's, sums that differ */
 } gt_job;
 
 /* pixel px's position, unit shading normal and geometric normal in double; 0 without a
@@ -491,6 +492,7 @@ static void gt_rows(void *ctx, long lo, long hi) {
   const gt_job *jb = (const gt_job *)ctx;
   double x[3][4], ns[3][4], ng[3][4], acc[3][4], a[3], b[3], c3[3], one[3];
   int px, k = 0, t, c, pp[4];
+  long nsum = 0, nbad = 0;
   for (px = (int)lo; px < (int)hi; px++) {
     if (!gt_pixel(jb, px, a, b, c3)) continue;
     for (c = 0; c < 3; c++) {
@@ -517,6 +519,19 @@ static void gt_rows(void *ctx, long lo, long hi) {
         one[c] = acc[c][t];
       gt_store(jb, pp[t], one);
     }
+    if (jb->check) /* the lanes against gt_one, bit for bit */
+      for (t = 0; t < k; t++) {
+        for (c = 0; c < 3; c++) {
+          a[c] = x[c][t];
+          b[c] = ns[c][t];
+          c3[c] = ng[c][t];
+        }
+        gt_one(jb, a, b, c3, one);
+        for (c = 0; c < 3; c++) {
+          nsum++;
+          nbad += memcmp(&one[c], &acc[c][t], sizeof(double)) != 0;
+        }
+      }
     k = 0;
   }
   for (t = 0; t < k; t++) { /* the row's last pixels, one at a time */
@@ -527,6 +542,10 @@ static void gt_rows(void *ctx, long lo, long hi) {
     }
     gt_one(jb, a, b, c3, one);
     gt_store(jb, pp[t], one);
+  }
+  if (jb->check) {
+    __atomic_add_fetch(&jb->check[0], nsum, __ATOMIC_RELAXED);
+    __atomic_add_fetch(&jb->check[1], nbad, __ATOMIC_RELAXED);
   }
 }
 
@@ -553,6 +572,7 @@ static int gt_render(const rd_run *run, const rd_light *l, int N, double dmin, c
   float *raw = (float *)malloc((size_t)N * (size_t)N * SSF_STRIDE * sizeof(float));
   gt_vpl *v = (gt_vpl *)malloc((size_t)N * (size_t)N * sizeof(gt_vpl));
   double dm2 = dmin * dmin;
+  long check[2] = {0, 0};
   *out = rd_image_new(gb->w, gb->h);
   if (!raw || !v || !out->rgb || spot_vpls(s, l, N, 0, raw)) {
     free(raw);
@@ -579,9 +599,13 @@ static int gt_render(const rd_run *run, const rd_light *l, int N, double dmin, c
   jb.nv = nv;
   jb.dm2 = dm2;
   jb.avx = ssf_use_avx();
+  jb.check = getenv("SHLIGHT_RENDER_GT_CHECK") ? check : NULL;
   jb.rgb = out->rgb;
   t0 = rd_cpu_ms() - t0; /* the VPLs, on this thread */
   t0 += (bg ? rd_parallel_bg : rd_parallel)((long)gb->w * gb->h, gb->w, gt_rows, &jb, label);
+  if (jb.check)
+    fprintf(stderr, "%s: %s lanes vs the scalar loop: %ld of %ld sums differ\n", label,
+            jb.avx ? "AVX" : "SSE2", check[1], check[0]);
   if (ms) *ms = t0;
   free(v);
   return 0;
