@@ -1082,7 +1082,8 @@ typedef struct {
   const gt_patches *gp;
   double eps;
   float *rgb;
-  int avx; /* the AVX lanes (gt_lambert_pk_avx) */
+  int avx;     /* the AVX lanes (gt_lambert_pk_avx) */
+  long *check; /* SHLIGHT_RENDER_GT_CHECK: sums compared with the scalar loop's, sums that differ */
 } gt_job;
 
 /* patch j's Lambert term at x into e: the loop body of gt_shade for a Lambert pixel (the same
@@ -1306,6 +1307,7 @@ static void gt_shade(void *ctx, long lo, long hi) {
   const rd_gbuf *gb = run->gb;
   const rd_scene *s = run->scene;
   int px, j, c, t, nq = 0, qp[GT_PK];
+  long nsum = 0, nbad = 0;
   double qx[GT_PK][3], qn[GT_PK][3], qg[GT_PK][3], qe[GT_PK][3];
   for (px = (int)lo; px <= (int)hi; px++) {
     double x[3], nx[3], gx[3], e[3] = {0, 0, 0}, es[3] = {0, 0, 0};
@@ -1341,6 +1343,16 @@ static void gt_shade(void *ctx, long lo, long hi) {
         for (c = 0; c < 3; c++)
           rgb[3 * qp[t] + c] = (float)((double)s->mats[mt].kd[c] / HVL_PI * qe[t][c]);
       }
+      if (jb->check) /* the lanes against the scalar loop, bit for bit */
+        for (t = 0; t < nq; t++) {
+          double e1[3] = {0, 0, 0};
+          for (j = 0; j < gp->n; j++)
+            gt_lambert(gp, j, eps, qx[t], qn[t], qg[t], e1);
+          for (c = 0; c < 3; c++) {
+            nsum++;
+            nbad += memcmp(&e1[c], &qe[t][c], sizeof(double)) != 0;
+          }
+        }
       nq = 0;
     }
     if (px >= (int)hi || (m >= 0 && m < s->nmats && kind == HV_LAMBERT)) continue;
@@ -1405,6 +1417,10 @@ static void gt_shade(void *ctx, long lo, long hi) {
                                                       : dif);
     }
   }
+  if (jb->check) {
+    __atomic_add_fetch(&jb->check[0], nsum, __ATOMIC_RELAXED);
+    __atomic_add_fetch(&jb->check[1], nbad, __ATOMIC_RELAXED);
+  }
 }
 
 /* the AVX lanes where the CPU has AVX, unless SHLIGHT_RENDER_NO_AVX is set (tests hold the two
@@ -1426,6 +1442,7 @@ static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, in
   gt_patches gp;
   gt_job jb;
   char label[32];
+  long check[2] = {0, 0};
   if (gt_build(run, sv, N, &gp)) return -1;
   snprintf(label, sizeof label, "hvl gt %d", N);
   jb.run = run;
@@ -1434,9 +1451,13 @@ static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, in
   jb.eps = eps;
   jb.rgb = rgb;
   jb.avx = hvl_use_avx();
+  jb.check = getenv("SHLIGHT_RENDER_GT_CHECK") ? check : NULL;
   t0 = rd_cpu_ms() - t0; /* the patches, on this thread */
   t0 += (bg ? rd_parallel_bg : rd_parallel)((long)run->gb->w * run->gb->h, run->gb->w, gt_shade,
                                             &jb, label);
+  if (jb.check)
+    fprintf(stderr, "%s: %s lanes vs the scalar loop: %ld of %ld sums differ\n", label,
+            jb.avx ? "AVX" : "SSE2", check[1], check[0]);
   if (ms) *ms = t0;
   if (npatch) *npatch = gp.n;
   gt_free(&gp);
