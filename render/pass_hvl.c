@@ -81,6 +81,9 @@
 #include <string.h>
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#define HVL_LANES_NAME "SSE2"
+#else
+#define HVL_LANES_NAME "scalar"
 #endif
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
@@ -1457,7 +1460,7 @@ static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, in
                                             &jb, label);
   if (jb.check)
     fprintf(stderr, "%s: %s lanes vs the scalar loop: %ld of %ld sums differ\n", label,
-            jb.avx ? "AVX" : "SSE2", check[1], check[0]);
+            jb.avx ? "AVX" : HVL_LANES_NAME, check[1], check[0]);
   if (ms) *ms = t0;
   if (npatch) *npatch = gp.n;
   gt_free(&gp);

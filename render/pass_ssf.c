@@ -88,6 +88,9 @@
 #include <string.h>
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#define SSF_LANES_NAME "SSE2"
+#else
+#define SSF_LANES_NAME "scalar"
 #endif
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
@@ -605,7 +608,7 @@ static int gt_render(const rd_run *run, const rd_light *l, int N, double dmin, c
   t0 += (bg ? rd_parallel_bg : rd_parallel)((long)gb->w * gb->h, gb->w, gt_rows, &jb, label);
   if (jb.check)
     fprintf(stderr, "%s: %s lanes vs the scalar loop: %ld of %ld sums differ\n", label,
-            jb.avx ? "AVX" : "SSE2", check[1], check[0]);
+            jb.avx ? "AVX" : SSF_LANES_NAME, check[1], check[0]);
   if (ms) *ms = t0;
   free(v);
   return 0;
