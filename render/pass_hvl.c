@@ -81,6 +81,13 @@
 #include <string.h>
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#define HVL_LANES_NAME "SSE2"
+#else
+#define HVL_LANES_NAME "scalar"
+#endif
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define HVL_AVX 1 /* the AVX lanes, chosen at run time by __builtin_cpu_supports */
 #endif
 
 #define HVL_PI 3.14159265358979323846
@@ -1078,6 +1085,8 @@ typedef struct {
   const gt_patches *gp;
   double eps;
   float *rgb;
+  int avx;     /* the AVX lanes (gt_lambert_pk_avx) */
+  long *check; /* SHLIGHT_RENDER_GT_CHECK: sums compared with the scalar loop's, sums that differ */
 } gt_job;
 
 /* patch j's Lambert term at x into e: the loop body of gt_shade for a Lambert pixel (the same
@@ -1115,7 +1124,7 @@ static inline void gt_lambert(const gt_patches *gp, int j, double eps, const dou
   e[2] += phi[2] * gf;
 }
 
-#define GT_PK 8 /* Lambert pixels that share one pass over the patches */
+#define GT_PK 16 /* Lambert pixels that share one pass over the patches */
 
 #if defined(__SSE2__)
 /* gt_lambert for patch j at GT_PK pixels (nq of them used; the others copy pixel 0 and are
@@ -1200,6 +1209,97 @@ static void gt_lambert_pk(const gt_patches *gp, int nq, double eps, double (*qx)
 }
 #endif
 
+#if defined(HVL_AVX)
+/* gt_lambert_pk four pixels per AVX vector: the same per-lane operations in the same order
+   (AVX has no fused multiply-add, so no contraction either), so every sum is bit for bit the
+   scalar loop's; chosen at run time where the CPU has AVX */
+__attribute__((target("avx"))) static void gt_lambert_pk_avx(const gt_patches *gp, int nq,
+                                                             double eps, double (*qx)[3],
+                                                             double (*qn)[3], double (*qg)[3],
+                                                             double (*qe)[3]) {
+  const __m256d zero = _mm256_setzero_pd(), ve = _mm256_set1_pd(eps);
+  const __m256d sgn = _mm256_set1_pd(-0.0);
+  __m256d X[GT_PK / 4][3], N[GT_PK / 4][3], G[GT_PK / 4][3], E[GT_PK / 4][3];
+  double tmp[12];
+  int j, h, c, t;
+  for (h = 0; h < GT_PK / 4; h++)
+    for (c = 0; c < 3; c++) {
+      int i0 = 4 * h < nq ? 4 * h : 0, i1 = 4 * h + 1 < nq ? 4 * h + 1 : 0;
+      int i2 = 4 * h + 2 < nq ? 4 * h + 2 : 0, i3 = 4 * h + 3 < nq ? 4 * h + 3 : 0;
+      X[h][c] = _mm256_set_pd(qx[i3][c], qx[i2][c], qx[i1][c], qx[i0][c]);
+      N[h][c] = _mm256_set_pd(qn[i3][c], qn[i2][c], qn[i1][c], qn[i0][c]);
+      G[h][c] = _mm256_set_pd(qg[i3][c], qg[i2][c], qg[i1][c], qg[i0][c]);
+      E[h][c] = zero;
+    }
+  for (j = 0; j < gp->n; j++) {
+    const double *p = gp->p + 3 * j, *ns = gp->ns + 3 * j, *phi = gp->phi + 3 * j;
+    const double *ng = gp->ng + 3 * j;
+    const __m256d p0 = _mm256_set1_pd(p[0]), p1 = _mm256_set1_pd(p[1]);
+    const __m256d p2 = _mm256_set1_pd(p[2]);
+    const __m256d ng0 = _mm256_set1_pd(ng[0]), ng1 = _mm256_set1_pd(ng[1]);
+    const __m256d ng2 = _mm256_set1_pd(ng[2]);
+    const __m256d near2 = _mm256_set1_pd(gp->near2[j]);
+    for (h = 0; h < (nq + 3) / 4; h++) {
+      __m256d dx = _mm256_sub_pd(p0, X[h][0]), dy = _mm256_sub_pd(p1, X[h][1]);
+      __m256d dz = _mm256_sub_pd(p2, X[h][2]);
+      __m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+                                 _mm256_mul_pd(dz, dz));
+      __m256d a =
+          _mm256_xor_pd(_mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ng0, dx), _mm256_mul_pd(ng1, dy)),
+                                      _mm256_mul_pd(ng2, dz)),
+                        sgn);
+      __m256d b =
+          _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(G[h][0], dx), _mm256_mul_pd(G[h][1], dy)),
+                        _mm256_mul_pd(G[h][2], dz));
+      __m256d gate =
+          _mm256_and_pd(_mm256_cmp_pd(a, ve, _CMP_GT_OQ), _mm256_cmp_pd(b, ve, _CMP_GT_OQ));
+      __m256d nr = _mm256_and_pd(gate, _mm256_cmp_pd(d2, near2, _CMP_LT_OQ));
+      __m256d cy, cx, ok, gf;
+      int mg = _mm256_movemask_pd(gate), mn;
+      if (mg == 0) continue;
+      mn = _mm256_movemask_pd(nr);
+      if (mn) { /* near the patch: the exact quad, gt_lambert itself, for those lanes */
+        for (c = 0; c < 3; c++)
+          _mm256_storeu_pd(tmp + 4 * c, E[h][c]);
+        for (t = 0; t < 4; t++)
+          if ((mn >> t & 1) && 4 * h + t < nq) {
+            double e[3];
+            for (c = 0; c < 3; c++)
+              e[c] = tmp[4 * c + t];
+            gt_lambert(gp, j, eps, qx[4 * h + t], qn[4 * h + t], qg[4 * h + t], e);
+            for (c = 0; c < 3; c++)
+              tmp[4 * c + t] = e[c];
+          }
+        for (c = 0; c < 3; c++)
+          E[h][c] = _mm256_loadu_pd(tmp + 4 * c);
+        if (mn == mg) continue;
+      }
+      cy = _mm256_xor_pd(_mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(ns[0]), dx),
+                                                     _mm256_mul_pd(_mm256_set1_pd(ns[1]), dy)),
+                                       _mm256_mul_pd(_mm256_set1_pd(ns[2]), dz)),
+                         sgn);
+      cx = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(N[h][0], dx), _mm256_mul_pd(N[h][1], dy)),
+                         _mm256_mul_pd(N[h][2], dz));
+      ok = _mm256_andnot_pd(nr, gate);
+      ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(cy, zero, _CMP_GT_OQ),
+                                           _mm256_cmp_pd(cx, zero, _CMP_GT_OQ)));
+      ok = _mm256_and_pd(ok, _mm256_cmp_pd(d2, zero, _CMP_GT_OQ));
+      if (_mm256_movemask_pd(ok) == 0) continue;
+      gf = _mm256_and_pd(ok, _mm256_div_pd(_mm256_mul_pd(cy, cx), _mm256_mul_pd(d2, d2)));
+      E[h][0] = _mm256_add_pd(E[h][0], _mm256_mul_pd(_mm256_set1_pd(phi[0]), gf));
+      E[h][1] = _mm256_add_pd(E[h][1], _mm256_mul_pd(_mm256_set1_pd(phi[1]), gf));
+      E[h][2] = _mm256_add_pd(E[h][2], _mm256_mul_pd(_mm256_set1_pd(phi[2]), gf));
+    }
+  }
+  for (h = 0; h < (nq + 3) / 4; h++)
+    for (c = 0; c < 3; c++) {
+      _mm256_storeu_pd(tmp + 4 * c, E[h][c]);
+      for (t = 0; t < 4; t++)
+        if (4 * h + t < nq) qe[4 * h + t][c] = tmp[4 * c + t];
+    }
+}
+#endif
+
 static void gt_shade(void *ctx, long lo, long hi) {
   const gt_job *jb = (const gt_job *)ctx;
   const rd_run *run = jb->run;
@@ -1210,6 +1310,7 @@ static void gt_shade(void *ctx, long lo, long hi) {
   const rd_gbuf *gb = run->gb;
   const rd_scene *s = run->scene;
   int px, j, c, t, nq = 0, qp[GT_PK];
+  long nsum = 0, nbad = 0;
   double qx[GT_PK][3], qn[GT_PK][3], qg[GT_PK][3], qe[GT_PK][3];
   for (px = (int)lo; px <= (int)hi; px++) {
     double x[3], nx[3], gx[3], e[3] = {0, 0, 0}, es[3] = {0, 0, 0};
@@ -1228,8 +1329,13 @@ static void gt_shade(void *ctx, long lo, long hi) {
       if (nq < GT_PK && px + 1 < (int)hi) continue;
     }
     if (nq > 0) {
+#if defined(HVL_AVX)
+      if (jb->avx)
+        gt_lambert_pk_avx(gp, nq, eps, qx, qn, qg, qe);
+      else
+#endif
 #if defined(__SSE2__)
-      gt_lambert_pk(gp, nq, eps, qx, qn, qg, qe);
+        gt_lambert_pk(gp, nq, eps, qx, qn, qg, qe);
 #else
       for (j = 0; j < gp->n; j++)
         for (t = 0; t < nq; t++)
@@ -1240,6 +1346,16 @@ static void gt_shade(void *ctx, long lo, long hi) {
         for (c = 0; c < 3; c++)
           rgb[3 * qp[t] + c] = (float)((double)s->mats[mt].kd[c] / HVL_PI * qe[t][c]);
       }
+      if (jb->check) /* the lanes against the scalar loop, bit for bit */
+        for (t = 0; t < nq; t++) {
+          double e1[3] = {0, 0, 0};
+          for (j = 0; j < gp->n; j++)
+            gt_lambert(gp, j, eps, qx[t], qn[t], qg[t], e1);
+          for (c = 0; c < 3; c++) {
+            nsum++;
+            nbad += memcmp(&e1[c], &qe[t][c], sizeof(double)) != 0;
+          }
+        }
       nq = 0;
     }
     if (px >= (int)hi || (m >= 0 && m < s->nmats && kind == HV_LAMBERT)) continue;
@@ -1304,6 +1420,22 @@ static void gt_shade(void *ctx, long lo, long hi) {
                                                       : dif);
     }
   }
+  if (jb->check) {
+    __atomic_add_fetch(&jb->check[0], nsum, __ATOMIC_RELAXED);
+    __atomic_add_fetch(&jb->check[1], nbad, __ATOMIC_RELAXED);
+  }
+}
+
+/* the AVX lanes where the CPU has AVX, unless SHLIGHT_RENDER_NO_AVX is set (tests hold the two
+   paths to the same bytes) */
+static int hvl_use_avx(void) {
+#if defined(HVL_AVX)
+  const char *e = getenv("SHLIGHT_RENDER_NO_AVX");
+  if (e && *e && strcmp(e, "0") != 0) return 0;
+  return __builtin_cpu_supports("avx") ? 1 : 0;
+#else
+  return 0;
+#endif
 }
 
 /* the gt image on rd_threads() threads; *ms: the CPU ms of all of them */
@@ -1313,6 +1445,7 @@ static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, in
   gt_patches gp;
   gt_job jb;
   char label[32];
+  long check[2] = {0, 0};
   if (gt_build(run, sv, N, &gp)) return -1;
   snprintf(label, sizeof label, "hvl gt %d", N);
   jb.run = run;
@@ -1320,9 +1453,14 @@ static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, in
   jb.gp = &gp;
   jb.eps = eps;
   jb.rgb = rgb;
+  jb.avx = hvl_use_avx();
+  jb.check = getenv("SHLIGHT_RENDER_GT_CHECK") ? check : NULL;
   t0 = rd_cpu_ms() - t0; /* the patches, on this thread */
   t0 += (bg ? rd_parallel_bg : rd_parallel)((long)run->gb->w * run->gb->h, run->gb->w, gt_shade,
                                             &jb, label);
+  if (jb.check)
+    fprintf(stderr, "%s: %s lanes vs the scalar loop: %ld of %ld sums differ\n", label,
+            jb.avx ? "AVX" : HVL_LANES_NAME, check[1], check[0]);
   if (ms) *ms = t0;
   if (npatch) *npatch = gp.n;
   gt_free(&gp);

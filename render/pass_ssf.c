@@ -88,6 +88,13 @@
 #include <string.h>
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#define SSF_LANES_NAME "SSE2"
+#else
+#define SSF_LANES_NAME "scalar"
+#endif
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define SSF_AVX 1 /* the AVX lanes, chosen at run time by __builtin_cpu_supports */
 #endif
 
 #define SSF_PI 3.14159265358979323846
@@ -329,6 +336,8 @@ typedef struct {
   int nv;
   double dm2;
   float *rgb;
+  int avx;     /* the AVX lanes (gt_four_avx) */
+  long *check; /* SHLIGHT_RENDER_GT_CHECK: sums compared with gt_one's, sums that differ */
 } gt_job;
 
 /* pixel px's position, unit shading normal and geometric normal in double; 0 without a
@@ -428,6 +437,55 @@ static void gt_four(const gt_job *jb, double x[3][4], double ns[3][4], double ng
     for (c = 0; c < 3; c++)
       _mm_storeu_pd(&acc[c][2 * h], E[h][c]);
 }
+
+#if defined(SSF_AVX)
+/* gt_four with the four pixels in one AVX vector: the same per-lane operations in the same
+   order (AVX has no fused multiply-add, so no contraction either), so each sum is bit for bit
+   gt_one's; chosen at run time where the CPU has AVX */
+__attribute__((target("avx"))) static void
+gt_four_avx(const gt_job *jb, double x[3][4], double ns[3][4], double ng[3][4], double acc[3][4]) {
+  const gt_vpl *v = jb->v;
+  const __m256d zero = _mm256_setzero_pd(), dm2 = _mm256_set1_pd(jb->dm2);
+  const __m256d sgn = _mm256_set1_pd(-0.0);
+  __m256d X[3], S[3], G[3], E[3];
+  int j, c;
+  for (c = 0; c < 3; c++) {
+    X[c] = _mm256_loadu_pd(x[c]);
+    S[c] = _mm256_loadu_pd(ns[c]);
+    G[c] = _mm256_loadu_pd(ng[c]);
+    E[c] = zero;
+  }
+  for (j = 0; j < jb->nv; j++) {
+    const gt_vpl *q = &v[j];
+    __m256d d0 = _mm256_sub_pd(_mm256_set1_pd(q->y[0]), X[0]);
+    __m256d d1 = _mm256_sub_pd(_mm256_set1_pd(q->y[1]), X[1]);
+    __m256d d2 = _mm256_sub_pd(_mm256_set1_pd(q->y[2]), X[2]);
+    __m256d dd = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(d0, d0), _mm256_mul_pd(d1, d1)),
+                               _mm256_mul_pd(d2, d2));
+    __m256d gd = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(G[0], d0), _mm256_mul_pd(G[1], d1)),
+                               _mm256_mul_pd(G[2], d2));
+    __m256d cy =
+        _mm256_xor_pd(_mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(q->n[0]), d0),
+                                                  _mm256_mul_pd(_mm256_set1_pd(q->n[1]), d1)),
+                                    _mm256_mul_pd(_mm256_set1_pd(q->n[2]), d2)),
+                      sgn);
+    __m256d cs = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(S[0], d0), _mm256_mul_pd(S[1], d1)),
+                               _mm256_mul_pd(S[2], d2));
+    __m256d ok = _mm256_and_pd(
+        _mm256_and_pd(_mm256_cmp_pd(dd, zero, _CMP_GT_OQ), _mm256_cmp_pd(gd, zero, _CMP_NLT_UQ)),
+        _mm256_and_pd(_mm256_cmp_pd(cy, zero, _CMP_GT_OQ), _mm256_cmp_pd(cs, zero, _CMP_GT_OQ)));
+    __m256d f;
+    if (_mm256_movemask_pd(ok) == 0) continue;
+    f = _mm256_and_pd(
+        ok, _mm256_div_pd(_mm256_mul_pd(cy, cs), _mm256_mul_pd(dd, _mm256_max_pd(dd, dm2))));
+    E[0] = _mm256_add_pd(E[0], _mm256_mul_pd(_mm256_set1_pd(q->phi[0]), f));
+    E[1] = _mm256_add_pd(E[1], _mm256_mul_pd(_mm256_set1_pd(q->phi[1]), f));
+    E[2] = _mm256_add_pd(E[2], _mm256_mul_pd(_mm256_set1_pd(q->phi[2]), f));
+  }
+  for (c = 0; c < 3; c++)
+    _mm256_storeu_pd(acc[c], E[c]);
+}
+#endif
 #define GT_LANES 4
 #else
 #define GT_LANES 1
@@ -437,6 +495,7 @@ static void gt_rows(void *ctx, long lo, long hi) {
   const gt_job *jb = (const gt_job *)ctx;
   double x[3][4], ns[3][4], ng[3][4], acc[3][4], a[3], b[3], c3[3], one[3];
   int px, k = 0, t, c, pp[4];
+  long nsum = 0, nbad = 0;
   for (px = (int)lo; px < (int)hi; px++) {
     if (!gt_pixel(jb, px, a, b, c3)) continue;
     for (c = 0; c < 3; c++) {
@@ -446,8 +505,13 @@ static void gt_rows(void *ctx, long lo, long hi) {
     }
     pp[k++] = px;
     if (k < GT_LANES) continue;
+#if defined(SSF_AVX)
+    if (jb->avx)
+      gt_four_avx(jb, x, ns, ng, acc);
+    else
+#endif
 #if defined(__SSE2__)
-    gt_four(jb, x, ns, ng, acc);
+      gt_four(jb, x, ns, ng, acc);
 #else
     gt_one(jb, a, b, c3, one);
     for (c = 0; c < 3; c++)
@@ -458,6 +522,19 @@ static void gt_rows(void *ctx, long lo, long hi) {
         one[c] = acc[c][t];
       gt_store(jb, pp[t], one);
     }
+    if (jb->check) /* the lanes against gt_one, bit for bit */
+      for (t = 0; t < k; t++) {
+        for (c = 0; c < 3; c++) {
+          a[c] = x[c][t];
+          b[c] = ns[c][t];
+          c3[c] = ng[c][t];
+        }
+        gt_one(jb, a, b, c3, one);
+        for (c = 0; c < 3; c++) {
+          nsum++;
+          nbad += memcmp(&one[c], &acc[c][t], sizeof(double)) != 0;
+        }
+      }
     k = 0;
   }
   for (t = 0; t < k; t++) { /* the row's last pixels, one at a time */
@@ -469,6 +546,22 @@ static void gt_rows(void *ctx, long lo, long hi) {
     gt_one(jb, a, b, c3, one);
     gt_store(jb, pp[t], one);
   }
+  if (jb->check) {
+    __atomic_add_fetch(&jb->check[0], nsum, __ATOMIC_RELAXED);
+    __atomic_add_fetch(&jb->check[1], nbad, __ATOMIC_RELAXED);
+  }
+}
+
+/* the AVX lanes where the CPU has AVX, unless SHLIGHT_RENDER_NO_AVX is set (tests hold the two
+   paths to the same bytes) */
+static int ssf_use_avx(void) {
+#if defined(SSF_AVX)
+  const char *e = getenv("SHLIGHT_RENDER_NO_AVX");
+  if (e && *e && strcmp(e, "0") != 0) return 0;
+  return __builtin_cpu_supports("avx") ? 1 : 0;
+#else
+  return 0;
+#endif
 }
 
 /* the gt image on rd_threads() threads; *ms: the CPU ms of all of them */
@@ -482,6 +575,7 @@ static int gt_render(const rd_run *run, const rd_light *l, int N, double dmin, c
   float *raw = (float *)malloc((size_t)N * (size_t)N * SSF_STRIDE * sizeof(float));
   gt_vpl *v = (gt_vpl *)malloc((size_t)N * (size_t)N * sizeof(gt_vpl));
   double dm2 = dmin * dmin;
+  long check[2] = {0, 0};
   *out = rd_image_new(gb->w, gb->h);
   if (!raw || !v || !out->rgb || spot_vpls(s, l, N, 0, raw)) {
     free(raw);
@@ -507,9 +601,14 @@ static int gt_render(const rd_run *run, const rd_light *l, int N, double dmin, c
   jb.v = v;
   jb.nv = nv;
   jb.dm2 = dm2;
+  jb.avx = ssf_use_avx();
+  jb.check = getenv("SHLIGHT_RENDER_GT_CHECK") ? check : NULL;
   jb.rgb = out->rgb;
   t0 = rd_cpu_ms() - t0; /* the VPLs, on this thread */
   t0 += (bg ? rd_parallel_bg : rd_parallel)((long)gb->w * gb->h, gb->w, gt_rows, &jb, label);
+  if (jb.check)
+    fprintf(stderr, "%s: %s lanes vs the scalar loop: %ld of %ld sums differ\n", label,
+            jb.avx ? "AVX" : SSF_LANES_NAME, check[1], check[0]);
   if (ms) *ms = t0;
   free(v);
   return 0;

@@ -46,6 +46,26 @@ if "$R" --help | grep -q "usage: shlrender"; then ok; else ko "--help"; fi
 # a CPU-only render of the example scene writes PNGs
 if "$R" --scene examples/scenes/room.scene --pass preview --paths cpu --size 32x24 --out "$t/png" \
   >/dev/null && [ -s "$t/png/room_preview_headlight_cpu.png" ]; then ok; else ko "cpu-only PNG"; fi
+# the hvl and ssf ground truths' SIMD lanes (AVX where the CPU has it; SSE2 with
+# SHLIGHT_RENDER_NO_AVX=1) against their scalar loops, every sum bit for bit
+# (SHLIGHT_RENDER_GT_CHECK), and the two paths' PNGs byte for byte (61x45: rows that end in a
+# partial group)
+mkdir -p "$t/avx" "$t/noavx"
+SHLIGHT_RENDER_GT_CHECK=1 "$R" --scene cornell --pass hvl,ssf --paths cpu --size 61x45 --gt 1 \
+  --reps 1 --out "$t/avx" 2>"$t/avx.err" >/dev/null
+SHLIGHT_RENDER_GT_CHECK=1 SHLIGHT_RENDER_NO_AVX=1 "$R" --scene cornell --pass hvl,ssf \
+  --paths cpu --size 61x45 --gt 1 --reps 1 --out "$t/noavx" 2>"$t/noavx.err" >/dev/null
+for e in avx noavx; do
+  grep 'lanes vs the scalar loop' "$t/$e.err"
+  if [ "$(grep -cE 'lanes vs the scalar loop: 0 of [1-9][0-9]* sums differ' "$t/$e.err")" = 4 ] &&
+    [ "$(grep -c 'lanes vs the scalar loop' "$t/$e.err")" = 4 ]; then ok; else
+    ko "hvl / ssf ground truth lanes ($e) vs the scalar loop"
+  fi
+done
+if cmp "$t/avx/cornell_hvl_gt_gt.png" "$t/noavx/cornell_hvl_gt_gt.png" &&
+  cmp "$t/avx/cornell_ssf_gt_gt.png" "$t/noavx/cornell_ssf_gt_gt.png"; then ok; else
+  ko "hvl / ssf ground truth: AVX and SSE2 PNGs differ"
+fi
 # every pass, GL against CPU
 for s in ${SHLIGHT_RENDER_SCENES:-cornell spheres manylights glossy examples/scenes/room.scene}; do
   SHLIGHT_GL_BACKEND=$backend "$R" --scene "$s" --size 64x48 --gt 1 --reps 1 --check \
