@@ -1636,13 +1636,7 @@ int rd_pass_hvl(rd_run *run) {
     gtt.half = (float *)malloc(nb);
     gtt.rc = -1;
     if (gtt.gt && gtt.half) {
-      gtt.bg = rd_bg_ok();
-      if (gtt.bg && pthread_create(&gth, NULL, gt_task_run, &gtt) == 0) {
-        gt_started = 1;
-      } else {
-        gtt.bg = 0;
-        gt_task_run(&gtt);
-      }
+      gt_started = rd_bg_start(&gth, gt_task_run, &gtt, &gtt.bg);
     }
   }
   for (method = 0; method < M_COUNT && rc == 0; method++) {

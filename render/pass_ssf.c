@@ -968,13 +968,7 @@ int rd_pass_ssf(rd_run *run) {
     gtt.spot = spot;
     gtt.N = Ngt;
     gtt.dmin = (double)dmin;
-    gtt.bg = rd_bg_ok();
-    if (gtt.bg && pthread_create(&gth, NULL, gt_task_run, &gtt) == 0) {
-      gt_started = 1;
-    } else {
-      gtt.bg = 0;
-      gt_task_run(&gtt);
-    }
+    gt_started = rd_bg_start(&gth, gt_task_run, &gtt, &gtt.bg);
   }
   /* CPU */
   if (run->use_cpu) {

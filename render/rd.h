@@ -15,6 +15,7 @@
  * runner), pass_*.c (one per pass), main.c (command line). */
 #ifndef SHLIGHT_RD_H
 #define SHLIGHT_RD_H
+#include <pthread.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -220,6 +221,9 @@ double rd_parallel_bg(long n, long chunk, void (*fn)(void *ctx, long lo, long hi
 /* 1 when a pass may compute its ground truth on a thread of its own, beside its GL work (the
  * pass processes run at the same time: main.c), else 0 */
 int rd_bg_ok(void);
+/* runs fn(arg) on a thread of its own when rd_bg_ok (returns 1: join *th), else here (returns
+ * 0); *bg, which fn may read, says which before fn starts */
+int rd_bg_start(pthread_t *th, void *(*fn)(void *), void *arg, int *bg);
 /* lowers the calling thread's priority (nice + RD_PAR_NICE) where the system allows it */
 void rd_thread_nice(void);
 

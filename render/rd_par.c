@@ -80,6 +80,14 @@ int rd_bg_ok(void) {
   return gate != NULL;
 }
 
+int rd_bg_start(pthread_t *th, void *(*fn)(void *), void *arg, int *bg) {
+  *bg = rd_bg_ok();
+  if (*bg && pthread_create(th, NULL, fn, arg) == 0) return 1;
+  *bg = 0;
+  fn(arg);
+  return 0;
+}
+
 static double par_run(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), void *ctx,
                       const char *label, int bg);
 double rd_parallel(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), void *ctx,
