@@ -62,7 +62,8 @@ static double ref(const double (*q)[3], int nv, const double nrm[3], const doubl
      roughness 0.3:  1.5e-5 / 1.5e-4   0.5: 1.2e-5 / 1.9e-4   0.7: 6.4e-5 / 1.2e-4
      roughness 1.0:  1.0e-4 / 3.9e-4
    asserted at ~3x (the max at 0.1 at the requirement, 1e-2); the medians also against LTC's
-   published ones (7e-5, 1e-3, 4e-3, 1.6e-2, 0.11, 6.8e-2, 1.1e-2). The full 1,750-quad comparison: bench/bench_ggx.c. */
+   published ones (7e-5, 1e-3, 4e-3, 1.6e-2, 0.11, 6.8e-2, 1.1e-2). The full 1,750-quad
+   comparison: bench/bench_ggx.c. */
 typedef double (*ggx_kern)(const double (*q)[3], int nv, const double nrm[3], const double view[3],
                            double alpha);
 
