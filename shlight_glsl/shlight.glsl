@@ -5364,7 +5364,10 @@ void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_r
   cz = cz - az;
   out_q[0] = 0.0;
   out_q[1] = 0.0;
-  det = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
+  /* det(a, b, c) / (4 pi), g.h* */
+  det = (ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx)) *
+        0.079577471545947668;
+  ws = ws - gx * hx - gy * hy - gz * hz;
   SHLIGHT_UNROLL(7)
   for (k = 0; k < nn; ++k) {
     /* node k: (1/3, 1/3); (q, p), (p, q), (p, p) for k = 1..3 and 4..6 (selects, no arrays) */
@@ -5404,16 +5407,15 @@ void shli_ggx_tri(shli_real ax, shli_real ay, shli_real az, shli_real bx, shli_r
     d0 = (f2 - c * d * d) / f2; /* 1 - c (h.n)^2 */
     f1 = SHLIGHT_SQRTR(f2);
     w = shli_ggx_w(qx, qy, qz, vx, vy, vz, nx, ny, nz, a2, lamv, al, ndf) - ws -
-        (gx * (dx / f1 - hx) + gy * (dy / f1 - hy) + gz * (dz / f1 - hz));
+        (gx * dx + gy * dy + gz * dz) / f1;
     if (ndf == 0) {
       /* D = alpha^2 / (pi (1 - c (h.n)^2)^2), (h.n) / (h.v) = d / (l + v).v */
-      f = det / (q * q * q) * a2 * d /
-          (12.566370614359173 * d0 * d0 * (dx * vx + dy * vy + dz * vz)) * w;
+      f = det / (q * q * q) * a2 * d / (d0 * d0 * (dx * vx + dy * vy + dz * vz)) * w;
     } else {
       /* D_B (h.n) / (4 h.v) = exp(-(f2 - d^2) / (alpha^2 d^2)) f2^2 / (4 pi alpha^2 d^3 (l + v).v),
          d = (l + v).n, f2 = |l + v|^2; 0 for d <= 0 */
       f = det / (q * q * q) * SHLIGHT_MEXP(-(f2 - d * d) / (a2 * d * d)) * f2 * f2 /
-          (12.566370614359173 * a2 * d * d * d * (dx * vx + dy * vy + dz * vz)) * w;
+          (a2 * d * d * d * (dx * vx + dy * vy + dz * vz)) * w;
       if (!(d > 0.0)) {
         f = 0.0;
       }
