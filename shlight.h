@@ -566,22 +566,17 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    roughness squared), G2 the height-correlated Smith masking-shadowing; multiply by the
    light's radiance (and a Fresnel or specular colour) outside. No table. Method: the half-vector
    NDF integral and its first moment by Stokes along the edges' images, a first-order Taylor model
-   of the rest of the BRDF and an adaptive cubature of its remainder (7-point pieces split 1 -> 4
-   by an embedded rule's estimate and about the lobe where it meets the horizon, at most 128
-   splits; derivation above; docs/area-lights.md). nrm and view any non-zero vectors (normalised
-   inside), nv
-   >= 3 (C: any count, fan pieces above SHLIGHT_POLYGON_MAX; GLSL: above it -1), alpha clamped to
-   [1e-4, 1]. Degenerate inputs give 0: nv < 3, NaN or infinite input, zero normal or view, view at
-   or below the horizon (nrm.view <= 0), NaN alpha, a light entirely below the horizon (exactly 0:
-   the polygon is clipped first, so no light comes from below), a polygon through the shading point.
-   Result >= 0. Accuracy against long double cubature (tests/ref/arearef.h) on the LTC comparison's
-   sampler (docs/area-lights.md, bench/bench_ggx.c): median relative error 1e-6 to 5e-5 at
-   roughness 0.05 to 1 (LTC: 7e-5 to 0.11), p95 below 0.08 %, max error / albedo <= 3.6e-3 at
-   every roughness (grazing views, lights straddling the horizon); weakest in the last degrees
-   before grazing (a light filling the hemisphere, alpha 0.04: 0.14 % at view 85 deg, 13 % at
-   88). Cost: 17.5k x86 instructions per quad on that sampler's mean, ~14k where no piece is
-   split (93 % of its quads; 10 Gauss nodes per edge, 7 or 28 cubature nodes per fan triangle),
-   0.42M at the split budget (grazing views, narrow lobes on the horizon). */
+   of the rest of the BRDF and an adaptive cubature of its remainder (docs/area-lights.md). nrm
+   and view any non-zero vectors (normalised inside), nv >= 3 (C: any count, fan pieces above
+   SHLIGHT_POLYGON_MAX; GLSL: above it -1), alpha clamped to [1e-4, 1]. Degenerate inputs give
+   0: nv < 3, NaN or infinite input, zero normal or view, view at or below the horizon, NaN
+   alpha, a light entirely below the horizon (exactly 0: clipped first), a polygon through the
+   shading point. Result >= 0. Accuracy against long double cubature on the LTC comparison's
+   sampler (bench/bench_ggx.c): median relative error 5e-6 to 9e-5 at roughness 0.05 to 1 (LTC:
+   7e-5 to 0.11), max error / albedo <= 4.0e-3 at every roughness (grazing views, lights
+   straddling the horizon); weakest in the last degrees before grazing (a light filling the
+   hemisphere, alpha 0.04: 0.17 % at view 85 deg, 13 % at 88). Cost: 12.2k x86 instructions per
+   quad on that sampler's mean (9.3k to 17.0k by roughness), up to ~0.4M at the split budget. */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
 
@@ -6067,8 +6062,6 @@ SHLIGHT_INLINE void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli
   shli_real tx = gx - gn * nx;
   shli_real ty = gy - gn * ny;
   shli_real tz = gz - gn * nz;
-  /* l = ct a + st b, l' = -st a + ct b, Q = l + v, e = a x b = l x l': per edge,
-     (Q x l').n = e.n + l'.(n x v), (Q x l').t = e.t + l'.(t x v) */
   shli_real ex = ay * bz - az * by;
   shli_real ey = az * bx - ax * bz;
   shli_real ez = ax * by - ay * bx;
@@ -6616,10 +6609,8 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
     }
   }
   aa = am[0] * 0.15915494309189534;
-  /* the remainder: a fan from the vertex centroid's direction, a triangle with a side over 66
-     deg (cos < 0.4; Beckmann: 26 deg, cos < 0.9, halving its worst error / albedo on
-     bench_beckmann's sampler from 0.11 to 0.049) split 1 -> 4 at its edge midpoints, the 7-point
-     degree-5 rule (Dunavant) on each piece, pieces split further by the adaptive rule below */
+  /* the remainder: the fan from the vertex centroid's direction, its adaptive pieces
+     (docs/derivations.md sec. 13.29) */
   sx = ox;
   sy = oy;
   sz = oz;
@@ -6637,12 +6628,6 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   if (ndf != 0) {
     sp = 0.9;
   }
-  /* adaptive pieces (SHLIGHT_GGX_TOL and the rest at >>prelude): a piece is split 1 -> 4 where
-     its estimate |Q7 - Q2| exceeds SHLIGHT_GGX_TOL G1(v) or the graded rule below asks for it;
-     the traversal is depth-first by the digits dg[] of the piece's path, its vertices found by
-     descending from the fan triangle. Each fan triangle's loop runs at most
-     5 + 4 SHLIGHT_GGX_SPLITS times, all of them together at most 5 nc + 4 SHLIGHT_GGX_SPLITS
-     (GLSL's loop budget: docs/area-lights.md). */
   tol = SHLIGHT_GGX_TOL / (1.0 + lamv);
   if (ndf != 0) { /* Beckmann: the fixed pieces (adaptive ones measured mixed on its sampler) */
     tol = 1.0e30;
@@ -6653,8 +6638,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   lsx = d * hx - vx;
   lsy = d * hy - vy;
   lsz = d * hz - vz;
-  /* graded refinement about l* where the lobe is near the horizon (n.l* < SHLIGHT_GGX_HOR alpha):
-     pieces near l* are split down to a radius of SHLIGHT_GGX_KAP 2 alpha (h*.v) */
+  /* graded refinement about l* where the lobe is near the horizon */
   pc = -2.0;
   if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && al < 0.25 && ndf == 0) {
     q = SHLIGHT_GGX_KAP * al * d;
@@ -6682,9 +6666,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
     }
     dep = 0;
     for (it = 0; it < 5 + 4 * SHLIGHT_GGX_SPLITS; ++it) {
-      /* the piece's vertices (tr, ts, tw)[0..2]: from (centroid, a, b) down its path; the
-         children of (p0, p1, p2) are (p0, m0, m2), (m0, p1, m1), (m2, m1, p2), (m0, m1, m2) with
-         m0 = p0 + p1, m1 = p1 + p2, m2 = p2 + p0 */
+      /* the piece's vertices (tr, ts, tw)[0..2] from (centroid, a, b) down its path */
       tr[0] = sx;
       ts[0] = sy;
       tw[0] = sz;
@@ -6740,8 +6722,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
           tw[2] = tw[5];
         }
       }
-      /* near l* (graded refinement only): the piece's centroid direction c within twice its
-         radius (cosine d) of l*, and the radius above the stop */
+      /* near l*: the piece's centre within twice its radius (cosine d) of l*, d above the stop */
       npk = 0;
       if (pc > -1.0) {
         ex = tr[0] + tr[1] + tr[2];

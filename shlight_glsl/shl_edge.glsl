@@ -1480,8 +1480,6 @@ void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli_real wd, shli_
   shli_real tx = gx - gn * nx;
   shli_real ty = gy - gn * ny;
   shli_real tz = gz - gn * nz;
-  /* l = ct a + st b, l' = -st a + ct b, Q = l + v, e = a x b = l x l': per edge,
-     (Q x l').n = e.n + l'.(n x v), (Q x l').t = e.t + l'.(t x v) */
   shli_real ex = ay * bz - az * by;
   shli_real ey = az * bx - ax * bz;
   shli_real ez = ax * by - ay * bx;
@@ -2023,10 +2021,8 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
     }
   }
   aa = am[0] * 0.15915494309189534;
-  /* the remainder: a fan from the vertex centroid's direction, a triangle with a side over 66
-     deg (cos < 0.4; Beckmann: 26 deg, cos < 0.9, halving its worst error / albedo on
-     bench_beckmann's sampler from 0.11 to 0.049) split 1 -> 4 at its edge midpoints, the 7-point
-     degree-5 rule (Dunavant) on each piece, pieces split further by the adaptive rule below */
+  /* the remainder: the fan from the vertex centroid's direction, its adaptive pieces
+     (docs/derivations.md sec. 13.29) */
   sx = ox;
   sy = oy;
   sz = oz;
@@ -2044,12 +2040,6 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   if (ndf != 0) {
     sp = 0.9;
   }
-  /* adaptive pieces (SHLIGHT_GGX_TOL and the rest at >>prelude): a piece is split 1 -> 4 where
-     its estimate |Q7 - Q2| exceeds SHLIGHT_GGX_TOL G1(v) or the graded rule below asks for it;
-     the traversal is depth-first by the digits dg[] of the piece's path, its vertices found by
-     descending from the fan triangle. Each fan triangle's loop runs at most
-     5 + 4 SHLIGHT_GGX_SPLITS times, all of them together at most 5 nc + 4 SHLIGHT_GGX_SPLITS
-     (GLSL's loop budget: docs/area-lights.md). */
   tol = SHLIGHT_GGX_TOL / (1.0 + lamv);
   if (ndf != 0) { /* Beckmann: the fixed pieces (adaptive ones measured mixed on its sampler) */
     tol = 1.0e30;
@@ -2060,8 +2050,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   lsx = d * hx - vx;
   lsy = d * hy - vy;
   lsz = d * hz - vz;
-  /* graded refinement about l* where the lobe is near the horizon (n.l* < SHLIGHT_GGX_HOR alpha):
-     pieces near l* are split down to a radius of SHLIGHT_GGX_KAP 2 alpha (h*.v) */
+  /* graded refinement about l* where the lobe is near the horizon */
   pc = -2.0;
   if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && al < 0.25 && ndf == 0) {
     q = SHLIGHT_GGX_KAP * al * d;
@@ -2089,9 +2078,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
     }
     dep = 0;
     for (it = 0; it < 5 + 4 * SHLIGHT_GGX_SPLITS; ++it) {
-      /* the piece's vertices (tr, ts, tw)[0..2]: from (centroid, a, b) down its path; the
-         children of (p0, p1, p2) are (p0, m0, m2), (m0, p1, m1), (m2, m1, p2), (m0, m1, m2) with
-         m0 = p0 + p1, m1 = p1 + p2, m2 = p2 + p0 */
+      /* the piece's vertices (tr, ts, tw)[0..2] from (centroid, a, b) down its path */
       tr[0] = sx;
       ts[0] = sy;
       tw[0] = sz;
@@ -2147,8 +2134,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
           tw[2] = tw[5];
         }
       }
-      /* near l* (graded refinement only): the piece's centroid direction c within twice its
-         radius (cosine d) of l*, and the radius above the stop */
+      /* near l*: the piece's centre within twice its radius (cosine d) of l*, d above the stop */
       npk = 0;
       if (pc > -1.0) {
         ex = tr[0] + tr[1] + tr[2];
