@@ -6092,7 +6092,7 @@ SHLIGHT_INLINE void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli
   int j;
   int k;
   int nd;
-  int ng = 4 + ndf; /* Gauss-Legendre nodes per side: GGX 4 (0..3), Beckmann 5 (4..8) */
+  int ng = ndf != 0 || al < 0.02 ? 5 : 4; /* Gauss-Legendre nodes per side: xs[0..3], xs[4..8] */
   xs[0] = -0.86113631159405258;
   xs[1] = -0.33998104358485626;
   xs[2] = -xs[1];
@@ -6113,7 +6113,7 @@ SHLIGHT_INLINE void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli
   ws[8] = ws[4];
   for (nd = 0; nd < 2 * ng; ++nd) {
     k = nd / ng;
-    j = nd - ng * k + 4 * ndf;
+    j = nd - ng * k + 4 * (ng - 4);
     lo = sa;
     hi = sb;
     if (sa < 0.0 && sb > 0.0) {
