@@ -616,7 +616,7 @@ SHLIGHT_INLINE float shl_polygon_ggx_fast(const float (*v)[3], int nv, const flo
    double cubature (tests/ref/arearef.h) on bench_ggx's sampler (bench/bench_beckmann.c,
    docs/area-lights.md): median relative error 3e-6 to 1e-4 at roughness 0.05 to 1, p95 below 0.7 %,
    max error / albedo <= 4.9e-2 (grazing views, lights straddling the horizon; up to 6.7e-2 in
-   test_microfacet's grazing set). Cost: 27k x86 instructions per quad
+   test_microfacet's grazing set). Cost: 26k x86 instructions per quad
    (shl_polygon_beckmann_subedges k = 8: ~220k).
  */
 SHLIGHT_INLINE float shl_polygon_beckmann(const float (*v)[3], int nv, const float nrm[3],
@@ -670,7 +670,7 @@ SHLIGHT_INLINE float shl_polygon_blinn_phong(const float (*v)[3], int nv, const 
    the held G2; without G2 k = 8 is within 1.1e-2); slivers 1.8e-3 at k = 8. Cost: ~48k / 115k /
    220k instructions per quad at k = 2 / 4 / 8. alpha clamped to [1e-4, 1]; NaN alpha and the
    degenerate inputs of shl_polygon_blinn_phong: 0. shl_polygon_beckmann computes the same integral
-   with G2 not held (worst 4.9e-2 of the albedo on bench_ggx's sampler, 27k instructions): prefer
+   with G2 not held (worst 4.9e-2 of the albedo on bench_ggx's sampler, 26k instructions): prefer
    it. */
 SHLIGHT_INLINE float shl_polygon_beckmann_subedges(const float (*v)[3], int nv, const float nrm[3],
                                                    const float view[3], float alpha, int subedges);
