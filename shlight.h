@@ -595,7 +595,7 @@ SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nr
    polygon lights"): median relative error 3.6e-5, 5.2e-4, 2.4e-3, 6.3e-3, 1.7e-2, 1.9e-2, 1.1e-2 at
    roughness 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1; max error / albedo 4.0e-3 to 4.3e-2 (worst at
    roughness 0.2). Cost: 1,250 to 1,290 x86 instructions per quad, ~1,650 for r in (0.25, 0.3)
-   (gcc -O3; ~14x fewer than shl_polygon_ggx). */
+   (gcc -O3; ~10x fewer than shl_polygon_ggx). */
 SHLIGHT_INLINE float shl_polygon_ggx_fast(const float (*v)[3], int nv, const float nrm[3],
                                           const float view[3], float alpha);
 
