@@ -176,6 +176,14 @@ SHLIGHT_INLINE void shl_sh_eval(int n, const float d[3], float *out_y);
    Cost: about 4x shl_sh_eval (docs/speed.md). */
 SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, float (*out_grad)[3]);
 
+/* shl_sh_eval_dot_grad: f(d / |d|) = sum_i sh[i] Y_i(d / |d|), returned, and its gradient with
+   respect to d, out_grad[k] = sum_i sh[i] dY_i / dd_k, without the n^2 basis gradients (their
+   terms summed as they are made). d: as shl_sh_eval_grad (zero, NaN or infinite: f at (0,0,1),
+   gradient 0; tiny |d|: the same overflow). n as shl_sh_eval (n < 1: 0 and a zero gradient).
+   sh: n * n floats. Accuracy: ACC. Cost: COST. */
+SHLIGHT_INLINE float shl_sh_eval_dot_grad(int n, const float *sh, const float d[3],
+                                          float out_grad[3]);
+
 #ifdef SHLIGHT_REFERENCE_FORMS
 /* shl_sh_eval_grad_spherical: the paper's form ([GRAD] sections 3-4, corrections E1-E3 of
    docs/derivations.md fixed): Y_i(d / |d|), dY_i / dtheta and dY_i / dphi, by Sloan's recurrence
@@ -2270,6 +2278,8 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_loop(int n, const float *y, float nx, float
 /* @generated gradient: defined in >>generated at the end of the file */
 SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir,
                                  float ib, float (*out_grad)[3]);
+SHLIGHT_INLINE void shli_sh_grad_band(int l, const float *y, float nx, float ny, float nz, float ir,
+                                      float ib, float *out_gb);
 
 #if SHLIGHT_SIMD_EVAL
 /* shl_sh_eval_grad for 3..16 bands with AVX-512 (C only; n = 2 is faster on the exact path,
@@ -2301,7 +2311,9 @@ SHLIGHT_CPU_INLINE int shli_sh_eval_grad_avx512(int n, const float d[3], float *
 
 #endif
 
-SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, float (*out_grad)[3]) {
+/* d of shl_sh_eval_grad: out_g[0..2] d / |d| ((0, 0, 1) for zero, NaN or infinite d), [3] and
+   [4] the two float factors ir, ib of 1 / |d| (0 and 1 for the substituted direction) */
+SHLIGHT_INLINE void shli_sh_grad_frame(const float d[3], shli_real *out_g) {
   shli_real x = SHLIGHT_REAL(d[0]);
   shli_real y = SHLIGHT_REAL(d[1]);
   shli_real z = SHLIGHT_REAL(d[2]);
@@ -2310,16 +2322,6 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
   shli_real iu;
   float ir;
   float ib;
-  n = shli_bands(n);
-  if (n < 1) {
-    return;
-  }
-#if SHLIGHT_SIMD_EVAL
-  /* n = 3, 4: 25.0 -> 18.2 and 38.7 -> 25.2 ns against the exact path and the scalar gradient */
-  if (n >= 3 && n <= SHLIGHT_UNROLLED_BANDS && shli_sh_eval_grad_avx512(n, d, out_y, out_grad)) {
-    return;
-  }
-#endif
 #if SHLIGHT_REAL_WIDE
   /* double: squares of floats neither overflow nor underflow, no scaling needed */
   SHLIGHT_UNUSED(mx);
@@ -2368,17 +2370,168 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
     ir = SHLIGHT_FLOAT(SHLIGHT_SQRTR(iu));
     ib = ir;
   }
-  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), out_y);
+  out_g[0] = x;
+  out_g[1] = y;
+  out_g[2] = z;
+  out_g[3] = SHLIGHT_REAL(ir);
+  out_g[4] = SHLIGHT_REAL(ib);
+}
+
+SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, float (*out_grad)[3]) {
+  shli_real g[8];
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
 #if SHLIGHT_SIMD_EVAL
-  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && ib == 1.0f) {
-    shli_sh_grad_avx512(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, 0, 0, 0,
-                        out_grad);
+  /* n = 3, 4: 25.0 -> 18.2 and 38.7 -> 25.2 ns against the exact path and the scalar gradient */
+  if (n >= 3 && n <= SHLIGHT_UNROLLED_BANDS && shli_sh_eval_grad_avx512(n, d, out_y, out_grad)) {
+    return;
+  }
+#endif
+  shli_sh_grad_frame(d, g);
+  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), out_y);
+#if SHLIGHT_SIMD_EVAL
+  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && g[4] == 1.0) {
+    shli_sh_grad_avx512(n, out_y, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]),
+                        SHLIGHT_FLOAT(g[3]), 0, 0, 0, out_grad);
     return;
   }
 #endif
   /* one call (a second inlined copy and a rescaling loop over out_grad cost a shader ~100x
      its compile time): ib = 1 leaves every output exact */
-  shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, ib, out_grad);
+  shli_sh_grad(n, out_y, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]),
+               SHLIGHT_FLOAT(g[3]), SHLIGHT_FLOAT(g[4]), out_grad);
+}
+
+#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
+/* C only: shl_sh_eval_dot_grad for any n, one pass over the values as they are made (the
+   recurrence of shli_sh_ystream), each y_lj added to the sums times sh and, through the
+   coefficients of band l + 1, to S (docs/derivations.md sec. 13.8). g: shli_sh_grad_frame. */
+SHLIGHT_CPU_INLINE float shli_sh_dot_grad_loop(int n, const float *sh, const shli_real *g,
+                                               float *out_grad) {
+  shli_real x = g[0], y = g[1], z = g[2], t, pc = 1.0, ps = 0.0, qc, xa, dd, ra, rg, rc, v;
+  shli_real f = 0.0, tl = 0.0, sx = 0.0, sy = 0.0, sz = 0.0, s2, ca, cp, cb, bp, cc;
+  float ec, es, oc, os, sw, sg = SHLIGHT_SIGN1(z), yc, ys;
+  const shli_real *q = SHLI_SH_RSQ;
+  int m, l, b, j, u;
+  t = (x * x + y * y) / (1.0 + SHLIGHT_ABSR(z));
+  for (m = 0; m < n; ++m) {
+    if (m > 0) {
+      qc = x * pc - y * ps;
+      ps = x * ps + y * pc;
+      pc = qc;
+    }
+    ec = SHLIGHT_FLOAT(pc);
+    es = SHLIGHT_FLOAT(ps);
+    oc = sg * ec;
+    os = sg * es;
+    xa = SHLIGHT_REAL(SHLI_SH_DIAG[m]);
+    dd = 0.0;
+    for (l = m; l < n; ++l) {
+      if (l > m) {
+        shli_sh_reinsch(l, m, &ra, &rg, &rc);
+        dd = rc * dd - (ra * t) * xa;
+        xa = rg * xa + dd;
+        sw = ec, ec = oc, oc = sw, sw = es, es = os, os = sw;
+      }
+      yc = (l > m ? SHLIGHT_FLOAT(xa) : SHLI_SH_DIAG[m]) * ec;
+      ys = (l > m ? SHLIGHT_FLOAT(xa) : SHLI_SH_DIAG[m]) * es;
+      b = l * (l + 1);
+      v = SHLIGHT_REAL(sh[b + m]) * yc + (m > 0 ? SHLIGHT_REAL(sh[b - m]) * ys : 0.0);
+      f = f + v;
+      tl = tl + (shli_real)l * v;
+      if (l + 1 < n) {
+        /* band u = l + 1, orders j - 1, j, j + 1: sqrt(a b) = a b q[a] q[b] */
+        u = l + 1, j = m, b = u * (u + 1), s2 = SHLI_SH_S12[2 * u + 1];
+        ca = -0.5 * s2 * (u + j + 1) * (u + j) * q[u + j + 1] * q[u + j];
+        cp = j == 0 ? ca * 1.4142135623730951 : ca;
+        cb = j >= 1 ? 0.5 * s2 * (u - j + 1) * (u - j) * q[u - j + 1] * q[u - j] : 0.0;
+        bp = j == 1 ? cb * 1.4142135623730951 : cb;
+        cc = s2 * (u - j) * (u + j) * q[u - j] * q[u + j];
+        sx = sx + yc * (cp * sh[b + j + 1] + (j >= 1 ? bp * sh[b + j - 1] : 0.0));
+        sy = sy + yc * (cp * sh[b - j - 1] - (j >= 2 ? cb * sh[b - j + 1] : 0.0));
+        sz = sz + yc * cc * sh[b + j];
+        if (m > 0) {
+          sx = sx + ys * (ca * sh[b - j - 1] + (j >= 2 ? cb * sh[b - j + 1] : 0.0));
+          sy = sy + ys * (bp * sh[b + j - 1] - ca * sh[b + j + 1]);
+          sz = sz + ys * cc * sh[b - j];
+        }
+      }
+    }
+  }
+  out_grad[0] = SHLIGHT_FLOAT((sx - tl * x) * g[3]) * SHLIGHT_FLOAT(g[4]);
+  out_grad[1] = SHLIGHT_FLOAT((sy - tl * y) * g[3]) * SHLIGHT_FLOAT(g[4]);
+  out_grad[2] = SHLIGHT_FLOAT((sz - tl * z) * g[3]) * SHLIGHT_FLOAT(g[4]);
+  return SHLIGHT_FLOAT(f);
+}
+#endif
+
+/* band l (1..15) of shl_sh_eval_dot_grad: shli_sh_grad_band's terms at nx = ny = nz = 0,
+   ir = ib = 1 (Mesa folds them) times sh added to io_g; returns the band's share of f */
+SHLIGHT_INLINE float shli_sh_grad_dot_band(int l, const float *y, const float *sh, float io_g[3]) {
+  float gb[93];
+  float cs[31];
+  float v = 0.0f;
+  int k;
+  shli_sh_grad_band(l, y, 0.0f, 0.0f, 0.0f, 1.0f, 1.0f, gb);
+  for (k = 0; k < 31; ++k) {
+    cs[k] = 0.0f;
+    if (k >= 15 - l && k <= 15 + l) {
+      cs[k] = sh[l * l + l + k - 15];
+    }
+  }
+  for (k = 0; k < 31; ++k) {
+    if (k >= 15 - l && k <= 15 + l) {
+      io_g[0] = io_g[0] + cs[k] * gb[3 * k];
+      io_g[1] = io_g[1] + cs[k] * gb[3 * k + 1];
+      io_g[2] = io_g[2] + cs[k] * gb[3 * k + 2];
+      v = v + cs[k] * y[l * l + l + k - 15];
+    }
+  }
+  return v;
+}
+
+SHLIGHT_INLINE float shl_sh_eval_dot_grad(int n, const float *sh, const float d[3],
+                                          float out_grad[3]) {
+  float ysh[SHLI_YBUF_COEFFS];
+  float vb[SHLIGHT_MAX_BANDS];
+  shli_real g[8];
+  float f = 0.0f;
+  float t = 0.0f;
+  int l;
+  n = shli_bands(n);
+  SHLIGHT_SET3(out_grad, 0.0f, 0.0f, 0.0f);
+  if (n < 1) {
+    return 0.0f;
+  }
+  shli_sh_grad_frame(d, g);
+#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
+  if (n > SHLIGHT_UNROLLED_BANDS) {
+    return shli_sh_dot_grad_loop(n, sh, g, out_grad);
+  }
+#endif
+  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), ysh);
+  /* one band per trip, every index constant once Mesa unrolls it (vb: see shli_sh_grad_band) */
+  for (l = 0; l < SHLIGHT_MAX_BANDS; ++l) {
+    vb[l] = 0.0f;
+    if (l == 0) {
+      vb[l] = sh[0] * ysh[0];
+    } else if (l < n) {
+      vb[l] = shli_sh_grad_dot_band(l, ysh, sh, out_grad);
+    }
+  }
+  for (l = 0; l < SHLIGHT_MAX_BANDS; ++l) {
+    f = f + vb[l];
+    t = t + SHLIGHT_ITOF(l) * vb[l];
+  }
+  out_grad[0] =
+      ((out_grad[0] - t * SHLIGHT_FLOAT(g[0])) * SHLIGHT_FLOAT(g[3])) * SHLIGHT_FLOAT(g[4]);
+  out_grad[1] =
+      ((out_grad[1] - t * SHLIGHT_FLOAT(g[1])) * SHLIGHT_FLOAT(g[3])) * SHLIGHT_FLOAT(g[4]);
+  out_grad[2] =
+      ((out_grad[2] - t * SHLIGHT_FLOAT(g[2])) * SHLIGHT_FLOAT(g[3])) * SHLIGHT_FLOAT(g[4]);
+  return f;
 }
 
 #ifdef SHLIGHT_REFERENCE_FORMS
