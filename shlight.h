@@ -2311,8 +2311,7 @@ SHLIGHT_CPU_INLINE int shli_sh_eval_grad_avx512(int n, const float d[3], float *
 
 #endif
 
-/* d of shl_sh_eval_grad: out_g[0..2] d / |d| ((0, 0, 1) for zero, NaN or infinite d), [3] and
-   [4] the two float factors ir, ib of 1 / |d| (0 and 1 for the substituted direction) */
+/* d of shl_sh_eval_grad: out_g[0..2] d / |d| (or (0,0,1)), [3], [4] ir, ib: 1 / |d| = ir ib */
 SHLIGHT_INLINE void shli_sh_grad_frame(const float d[3], shli_real *out_g) {
   shli_real x = SHLIGHT_REAL(d[0]);
   shli_real y = SHLIGHT_REAL(d[1]);
@@ -2404,30 +2403,36 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
                SHLIGHT_FLOAT(g[3]), SHLIGHT_FLOAT(g[4]), out_grad);
 }
 
-#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
-/* C only: shl_sh_eval_dot_grad for any n, one pass over the values as they are made (the
-   recurrence of shli_sh_ystream), each y_lj added to the sums times sh and, through the
-   coefficients of band l + 1, to S (docs/derivations.md sec. 13.8). g: shli_sh_grad_frame. */
-SHLIGHT_CPU_INLINE float shli_sh_dot_grad_loop(int n, const float *sh, const shli_real *g,
-                                               float *out_grad) {
-  shli_real x = g[0], y = g[1], z = g[2], t, pc = 1.0, ps = 0.0, qc, xa, dd, ra, rg, rc, v;
-  shli_real f = 0.0, tl = 0.0, sx = 0.0, sy = 0.0, sz = 0.0, s2, ca, cp, cb, bp, cc;
-  float ec, es, oc, os, sw, sg = SHLIGHT_SIGN1(z), yc, ys;
+#if !SHLIGHT_BY_BANDS || SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
+/* C: shl_sh_eval_dot_grad by shl_sh_eval_grad and the sums (n <= 16), or (any n) in one pass
+   over the values as shli_sh_ystream makes them, each y_lj added to f and T and, by the terms of
+   band l + 1 transposed, to S (docs/derivations.md sec. 13.8). g: shli_sh_grad_frame. */
+#define SHLI_S(i) ((shli_real)sh[i])
+SHLIGHT_CPU_INLINE float shli_sh_dot_grad_c(int n, const float *sh, const shli_real *g,
+                                            float *out_grad) {
+  shli_real x = g[0], y = g[1], z = g[2], t = (x * x + y * y) / (1.0 + SHLIGHT_ABSR(z)), pc = 1.0;
+  shli_real ps = 0.0, s[5] = {0.0, 0.0, 0.0, 0.0, 0.0}, v, xa, dd, ra, rg, rc, s2, ca, cp, cb, bp;
+  shli_real cd, cc, yc, ys, ec, es, oc, os, sw, sg = (shli_real)SHLIGHT_SIGN1(z);
   const shli_real *q = SHLI_SH_RSQ;
+  float u3[3], yb[256], gb[256][3];
   int m, l, b, j, u;
-  t = (x * x + y * y) / (1.0 + SHLIGHT_ABSR(z));
-  for (m = 0; m < n; ++m) {
-    if (m > 0) {
-      qc = x * pc - y * ps;
-      ps = x * ps + y * pc;
-      pc = qc;
+  if (n <= 16) {
+    for (j = 0; j < 3; ++j)
+      u3[j] = SHLIGHT_FLOAT(g[j]);
+    shl_sh_eval_grad(n, u3, yb, gb);
+    for (j = 0; j < n * n; ++j) {
+      s[0] += SHLI_S(j) * (shli_real)yb[j];
+      for (u = 0; u < 3; ++u)
+        s[u + 2] += SHLI_S(j) * (shli_real)gb[j][u];
     }
-    ec = SHLIGHT_FLOAT(pc);
-    es = SHLIGHT_FLOAT(ps);
-    oc = sg * ec;
-    os = sg * es;
-    xa = SHLIGHT_REAL(SHLI_SH_DIAG[m]);
-    dd = 0.0;
+  }
+  for (m = 0; m < n && n > 16; ++m) {
+    if (m > 0) {
+      v = x * pc - y * ps;
+      ps = x * ps + y * pc;
+      pc = v;
+    }
+    ec = pc, es = ps, oc = sg * pc, os = sg * ps, xa = (shli_real)SHLI_SH_DIAG[m], dd = 0.0;
     for (l = m; l < n; ++l) {
       if (l > m) {
         shli_sh_reinsch(l, m, &ra, &rg, &rc);
@@ -2435,36 +2440,30 @@ SHLIGHT_CPU_INLINE float shli_sh_dot_grad_loop(int n, const float *sh, const shl
         xa = rg * xa + dd;
         sw = ec, ec = oc, oc = sw, sw = es, es = os, os = sw;
       }
-      yc = (l > m ? SHLIGHT_FLOAT(xa) : SHLI_SH_DIAG[m]) * ec;
-      ys = (l > m ? SHLIGHT_FLOAT(xa) : SHLI_SH_DIAG[m]) * es;
-      b = l * (l + 1);
-      v = SHLIGHT_REAL(sh[b + m]) * yc + (m > 0 ? SHLIGHT_REAL(sh[b - m]) * ys : 0.0);
-      f = f + v;
-      tl = tl + (shli_real)l * v;
-      if (l + 1 < n) {
-        /* band u = l + 1, orders j - 1, j, j + 1: sqrt(a b) = a b q[a] q[b] */
+      b = l * (l + 1), yc = xa * ec, ys = m > 0 ? xa * es : 0.0;
+      v = SHLI_S(b + m) * yc + (m > 0 ? SHLI_S(b - m) * ys : 0.0);
+      s[0] += v, s[1] += l * v;
+      if (l + 1 < n) { /* band u = l + 1, orders j - 1, j, j + 1: sqrt(a b) = a b q[a] q[b] */
         u = l + 1, j = m, b = u * (u + 1), s2 = SHLI_SH_S12[2 * u + 1];
         ca = -0.5 * s2 * (u + j + 1) * (u + j) * q[u + j + 1] * q[u + j];
         cp = j == 0 ? ca * 1.4142135623730951 : ca;
         cb = j >= 1 ? 0.5 * s2 * (u - j + 1) * (u - j) * q[u - j + 1] * q[u - j] : 0.0;
         bp = j == 1 ? cb * 1.4142135623730951 : cb;
+        cd = j >= 2 ? cb : 0.0;
         cc = s2 * (u - j) * (u + j) * q[u - j] * q[u + j];
-        sx = sx + yc * (cp * sh[b + j + 1] + (j >= 1 ? bp * sh[b + j - 1] : 0.0));
-        sy = sy + yc * (cp * sh[b - j - 1] - (j >= 2 ? cb * sh[b - j + 1] : 0.0));
-        sz = sz + yc * cc * sh[b + j];
-        if (m > 0) {
-          sx = sx + ys * (ca * sh[b - j - 1] + (j >= 2 ? cb * sh[b - j + 1] : 0.0));
-          sy = sy + ys * (bp * sh[b + j - 1] - ca * sh[b + j + 1]);
-          sz = sz + ys * cc * sh[b - j];
-        }
+        s[2] += yc * (cp * SHLI_S(b + j + 1) + bp * SHLI_S(b + j - 1)) +
+                ys * (ca * SHLI_S(b - j - 1) + cd * SHLI_S(b - j + 1));
+        s[3] += yc * (cp * SHLI_S(b - j - 1) - cd * SHLI_S(b - j + 1)) +
+                ys * (bp * SHLI_S(b + j - 1) - ca * SHLI_S(b + j + 1));
+        s[4] += cc * (yc * SHLI_S(b + j) + ys * SHLI_S(b - j));
       }
     }
   }
-  out_grad[0] = SHLIGHT_FLOAT((sx - tl * x) * g[3]) * SHLIGHT_FLOAT(g[4]);
-  out_grad[1] = SHLIGHT_FLOAT((sy - tl * y) * g[3]) * SHLIGHT_FLOAT(g[4]);
-  out_grad[2] = SHLIGHT_FLOAT((sz - tl * z) * g[3]) * SHLIGHT_FLOAT(g[4]);
-  return SHLIGHT_FLOAT(f);
+  for (j = 0; j < 3; ++j)
+    out_grad[j] = SHLIGHT_FLOAT((s[j + 2] - s[1] * g[j]) * g[3]) * SHLIGHT_FLOAT(g[4]);
+  return SHLIGHT_FLOAT(s[0]);
 }
+#undef SHLI_S
 #endif
 
 /* band l (1..15) of shl_sh_eval_dot_grad: shli_sh_grad_band's terms at nx = ny = nz = 0,
@@ -2506,13 +2505,13 @@ SHLIGHT_INLINE float shl_sh_eval_dot_grad(int n, const float *sh, const float d[
     return 0.0f;
   }
   shli_sh_grad_frame(d, g);
-#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
-  if (n > SHLIGHT_UNROLLED_BANDS) {
-    return shli_sh_dot_grad_loop(n, sh, g, out_grad);
+#if !SHLIGHT_BY_BANDS || SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
+  if (!SHLIGHT_BY_BANDS || n > SHLIGHT_UNROLLED_BANDS) {
+    return shli_sh_dot_grad_c(n, sh, g, out_grad);
   }
 #endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), ysh);
-  /* one band per trip, every index constant once Mesa unrolls it (vb: see shli_sh_grad_band) */
+  /* a band per trip: Mesa unrolls the loops (vb, cs: see shli_sh_grad_band) */
   for (l = 0; l < SHLIGHT_MAX_BANDS; ++l) {
     vb[l] = 0.0f;
     if (l == 0) {
@@ -2525,12 +2524,10 @@ SHLIGHT_INLINE float shl_sh_eval_dot_grad(int n, const float *sh, const float d[
     f = f + vb[l];
     t = t + SHLIGHT_ITOF(l) * vb[l];
   }
-  out_grad[0] =
-      ((out_grad[0] - t * SHLIGHT_FLOAT(g[0])) * SHLIGHT_FLOAT(g[3])) * SHLIGHT_FLOAT(g[4]);
-  out_grad[1] =
-      ((out_grad[1] - t * SHLIGHT_FLOAT(g[1])) * SHLIGHT_FLOAT(g[3])) * SHLIGHT_FLOAT(g[4]);
-  out_grad[2] =
-      ((out_grad[2] - t * SHLIGHT_FLOAT(g[2])) * SHLIGHT_FLOAT(g[3])) * SHLIGHT_FLOAT(g[4]);
+  for (l = 0; l < 3; ++l) {
+    out_grad[l] =
+        ((out_grad[l] - t * SHLIGHT_FLOAT(g[l])) * SHLIGHT_FLOAT(g[3])) * SHLIGHT_FLOAT(g[4]);
+  }
   return f;
 }
 

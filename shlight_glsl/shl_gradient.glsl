@@ -324,13 +324,13 @@ float shl_sh_eval_dot_grad(int n, float sh[SHLIGHT_MAX_COEFFS], vec3 d, out vec3
     return 0.0f;
   }
   shli_sh_grad_frame(d, g);
-#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
-  if (n > SHLIGHT_UNROLLED_BANDS) {
-    return shli_sh_dot_grad_loop(n, sh, g, out_grad);
+#if !SHLIGHT_BY_BANDS || SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
+  if (!SHLIGHT_BY_BANDS || n > SHLIGHT_UNROLLED_BANDS) {
+    return shli_sh_dot_grad_c(n, sh, g, out_grad);
   }
 #endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), ysh);
-  /* one band per trip, every index constant once Mesa unrolls it (vb: see shli_sh_grad_band) */
+  /* a band per trip: Mesa unrolls the loops (vb, cs: see shli_sh_grad_band) */
   for (l = 0; l < SHLIGHT_MAX_BANDS; ++l) {
     vb[l] = 0.0f;
     if (l == 0) {
@@ -343,12 +343,10 @@ float shl_sh_eval_dot_grad(int n, float sh[SHLIGHT_MAX_COEFFS], vec3 d, out vec3
     f = f + vb[l];
     t = t + SHLIGHT_ITOF(l) * vb[l];
   }
-  out_grad[0] =
-      ((out_grad[0] - t * SHLIGHT_FLOAT(g[0])) * SHLIGHT_FLOAT(g[3])) * SHLIGHT_FLOAT(g[4]);
-  out_grad[1] =
-      ((out_grad[1] - t * SHLIGHT_FLOAT(g[1])) * SHLIGHT_FLOAT(g[3])) * SHLIGHT_FLOAT(g[4]);
-  out_grad[2] =
-      ((out_grad[2] - t * SHLIGHT_FLOAT(g[2])) * SHLIGHT_FLOAT(g[3])) * SHLIGHT_FLOAT(g[4]);
+  for (l = 0; l < 3; ++l) {
+    out_grad[l] =
+        ((out_grad[l] - t * SHLIGHT_FLOAT(g[l])) * SHLIGHT_FLOAT(g[3])) * SHLIGHT_FLOAT(g[4]);
+  }
   return f;
 }
 
