@@ -2403,67 +2403,23 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
                SHLIGHT_FLOAT(g[3]), SHLIGHT_FLOAT(g[4]), out_grad);
 }
 
-#if !SHLIGHT_BY_BANDS || SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
-/* C: shl_sh_eval_dot_grad by shl_sh_eval_grad and the sums (n <= 16), or (any n) in one pass
-   over the values as shli_sh_ystream makes them, each y_lj added to f and T and, by the terms of
-   band l + 1 transposed, to S (docs/derivations.md sec. 13.8). g: shli_sh_grad_frame. */
-#define SHLI_S(i) ((shli_real)sh[i])
+#if !SHLIGHT_BY_BANDS
+/* C: shl_sh_eval_grad at d / |d| and the sums (g: shli_sh_grad_frame) */
 SHLIGHT_CPU_INLINE float shli_sh_dot_grad_c(int n, const float *sh, const shli_real *g,
                                             float *out_grad) {
-  shli_real x = g[0], y = g[1], z = g[2], t = (x * x + y * y) / (1.0 + SHLIGHT_ABSR(z)), pc = 1.0;
-  shli_real ps = 0.0, s[5] = {0.0, 0.0, 0.0, 0.0, 0.0}, v, xa, dd, ra, rg, rc, s2, ca, cp, cb, bp;
-  shli_real cd, cc, yc, ys, ec, es, oc, os, sw, sg = (shli_real)SHLIGHT_SIGN1(z);
-  const shli_real *q = SHLI_SH_RSQ;
-  float u3[3], yb[256], gb[256][3];
-  int m, l, b, j, u;
-  if (n <= 16) {
-    for (j = 0; j < 3; ++j)
-      u3[j] = SHLIGHT_FLOAT(g[j]);
-    shl_sh_eval_grad(n, u3, yb, gb);
-    for (j = 0; j < n * n; ++j) {
-      s[0] += SHLI_S(j) * (shli_real)yb[j];
-      for (u = 0; u < 3; ++u)
-        s[u + 2] += SHLI_S(j) * (shli_real)gb[j][u];
-    }
-  }
-  for (m = 0; m < n && n > 16; ++m) {
-    if (m > 0) {
-      v = x * pc - y * ps;
-      ps = x * ps + y * pc;
-      pc = v;
-    }
-    ec = pc, es = ps, oc = sg * pc, os = sg * ps, xa = (shli_real)SHLI_SH_DIAG[m], dd = 0.0;
-    for (l = m; l < n; ++l) {
-      if (l > m) {
-        shli_sh_reinsch(l, m, &ra, &rg, &rc);
-        dd = rc * dd - (ra * t) * xa;
-        xa = rg * xa + dd;
-        sw = ec, ec = oc, oc = sw, sw = es, es = os, os = sw;
-      }
-      b = l * (l + 1), yc = xa * ec, ys = m > 0 ? xa * es : 0.0;
-      v = SHLI_S(b + m) * yc + (m > 0 ? SHLI_S(b - m) * ys : 0.0);
-      s[0] += v, s[1] += l * v;
-      if (l + 1 < n) { /* band u = l + 1, orders j - 1, j, j + 1: sqrt(a b) = a b q[a] q[b] */
-        u = l + 1, j = m, b = u * (u + 1), s2 = SHLI_SH_S12[2 * u + 1];
-        ca = -0.5 * s2 * (u + j + 1) * (u + j) * q[u + j + 1] * q[u + j];
-        cp = j == 0 ? ca * 1.4142135623730951 : ca;
-        cb = j >= 1 ? 0.5 * s2 * (u - j + 1) * (u - j) * q[u - j + 1] * q[u - j] : 0.0;
-        bp = j == 1 ? cb * 1.4142135623730951 : cb;
-        cd = j >= 2 ? cb : 0.0;
-        cc = s2 * (u - j) * (u + j) * q[u - j] * q[u + j];
-        s[2] += yc * (cp * SHLI_S(b + j + 1) + bp * SHLI_S(b + j - 1)) +
-                ys * (ca * SHLI_S(b - j - 1) + cd * SHLI_S(b - j + 1));
-        s[3] += yc * (cp * SHLI_S(b - j - 1) - cd * SHLI_S(b - j + 1)) +
-                ys * (bp * SHLI_S(b + j - 1) - ca * SHLI_S(b + j + 1));
-        s[4] += cc * (yc * SHLI_S(b + j) + ys * SHLI_S(b - j));
-      }
-    }
-  }
-  for (j = 0; j < 3; ++j)
-    out_grad[j] = SHLIGHT_FLOAT((s[j + 2] - s[1] * g[j]) * g[3]) * SHLIGHT_FLOAT(g[4]);
+  float u[3], y[256], gr[256][3];
+  shli_real s[4] = {0.0, 0.0, 0.0, 0.0};
+  int i, k;
+  for (k = 0; k < 3; ++k)
+    u[k] = SHLIGHT_FLOAT(g[k]);
+  shl_sh_eval_grad(n, u, y, gr);
+  for (i = 0; i < n * n; ++i)
+    for (k = 0; k < 4; ++k)
+      s[k] += (shli_real)sh[i] * (shli_real)(k ? gr[i][k - 1] : y[i]);
+  for (k = 0; k < 3; ++k)
+    out_grad[k] = SHLIGHT_FLOAT(s[k + 1] * g[3]) * SHLIGHT_FLOAT(g[4]);
   return SHLIGHT_FLOAT(s[0]);
 }
-#undef SHLI_S
 #endif
 
 /* band l (1..15) of shl_sh_eval_dot_grad: shli_sh_grad_band's terms at nx = ny = nz = 0,
@@ -2499,16 +2455,14 @@ SHLIGHT_INLINE float shl_sh_eval_dot_grad(int n, const float *sh, const float d[
   float f = 0.0f;
   float t = 0.0f;
   int l;
-  n = shli_bands(n);
+  n = shli_bands(n < SHLIGHT_UNROLLED_BANDS ? n : SHLIGHT_UNROLLED_BANDS);
   SHLIGHT_SET3(out_grad, 0.0f, 0.0f, 0.0f);
   if (n < 1) {
     return 0.0f;
   }
   shli_sh_grad_frame(d, g);
-#if !SHLIGHT_BY_BANDS || SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
-  if (!SHLIGHT_BY_BANDS || n > SHLIGHT_UNROLLED_BANDS) {
-    return shli_sh_dot_grad_c(n, sh, g, out_grad);
-  }
+#if !SHLIGHT_BY_BANDS
+  return shli_sh_dot_grad_c(n, sh, g, out_grad);
 #endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), ysh);
   /* a band per trip: Mesa unrolls the loops (vb, cs: see shli_sh_grad_band) */

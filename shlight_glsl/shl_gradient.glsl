@@ -318,16 +318,14 @@ float shl_sh_eval_dot_grad(int n, float sh[SHLIGHT_MAX_COEFFS], vec3 d, out vec3
   float f = 0.0f;
   float t = 0.0f;
   int l;
-  n = shli_bands(n);
+  n = shli_bands(n < SHLIGHT_UNROLLED_BANDS ? n : SHLIGHT_UNROLLED_BANDS);
   SHLIGHT_SET3(out_grad, 0.0f, 0.0f, 0.0f);
   if (n < 1) {
     return 0.0f;
   }
   shli_sh_grad_frame(d, g);
-#if !SHLIGHT_BY_BANDS || SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
-  if (!SHLIGHT_BY_BANDS || n > SHLIGHT_UNROLLED_BANDS) {
-    return shli_sh_dot_grad_c(n, sh, g, out_grad);
-  }
+#if !SHLIGHT_BY_BANDS
+  return shli_sh_dot_grad_c(n, sh, g, out_grad);
 #endif
   shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), ysh);
   /* a band per trip: Mesa unrolls the loops (vb, cs: see shli_sh_grad_band) */
