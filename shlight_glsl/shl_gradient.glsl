@@ -195,7 +195,7 @@ void shli_sh_grad(int n, float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float 
 #endif
 }
 
-void shli_sh_grad_frame(vec3 d, out shli_real out_g[8]) {
+void shli_sh_grad_frame(vec3 d, out float out_g[8]) {
   shli_real x = SHLIGHT_REAL(d[0]);
   shli_real y = SHLIGHT_REAL(d[1]);
   shli_real z = SHLIGHT_REAL(d[2]);
@@ -242,9 +242,7 @@ void shli_sh_grad_frame(vec3 d, out shli_real out_g[8]) {
   x = x * iu;
   y = y * iu;
   z = z * iu;
-  /* 1 / |d| (0 for the substituted direction); below |d| = 1e-30 the projection runs at unit
-     radius and 1 / |d| is applied afterwards as two finite factors, so entries that fit in a
-     float stay exact and the others overflow to +-inf (never inf * 0 or inf - inf) */
+  /* 1 / |d| = ir ib (docs/derivations.md sec. 13.62) */
   iu = iu * im;
   ir = SHLIGHT_FLOAT(iu);
   ib = 1.0f;
@@ -252,16 +250,16 @@ void shli_sh_grad_frame(vec3 d, out shli_real out_g[8]) {
     ir = SHLIGHT_FLOAT(SHLIGHT_SQRTR(iu));
     ib = ir;
   }
-  out_g[0] = x;
-  out_g[1] = y;
-  out_g[2] = z;
-  out_g[3] = SHLIGHT_REAL(ir);
-  out_g[4] = SHLIGHT_REAL(ib);
+  out_g[0] = SHLIGHT_FLOAT(x);
+  out_g[1] = SHLIGHT_FLOAT(y);
+  out_g[2] = SHLIGHT_FLOAT(z);
+  out_g[3] = ir;
+  out_g[4] = ib;
 }
 
 void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
                       out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
-  shli_real g[8];
+  float g[8];
   n = shli_bands(n);
   if (n < 1) {
     return;
@@ -273,18 +271,16 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
   }
 #endif
   shli_sh_grad_frame(d, g);
-  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), out_y);
+  shli_sh_eval_xyz(n, g[0], g[1], g[2], out_y);
 #if SHLIGHT_SIMD_EVAL
-  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && g[4] == 1.0) {
-    shli_sh_grad_avx512(n, out_y, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]),
-                        SHLIGHT_FLOAT(g[3]), 0, 0, 0, out_grad);
+  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && g[4] == 1.0f) {
+    shli_sh_grad_avx512(n, out_y, g[0], g[1], g[2], g[3], 0, 0, 0, out_grad);
     return;
   }
 #endif
   /* one call (a second inlined copy and a rescaling loop over out_grad cost a shader ~100x
      its compile time): ib = 1 leaves every output exact */
-  shli_sh_grad(n, out_y, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]),
-               SHLIGHT_FLOAT(g[3]), SHLIGHT_FLOAT(g[4]), out_grad);
+  shli_sh_grad(n, out_y, g[0], g[1], g[2], g[3], g[4], out_grad);
 }
 
 float shli_sh_grad_dot_band(int l, float y[SHLIGHT_MAX_COEFFS], float sh[SHLIGHT_MAX_COEFFS],
@@ -314,7 +310,7 @@ float shli_sh_grad_dot_band(int l, float y[SHLIGHT_MAX_COEFFS], float sh[SHLIGHT
 float shl_sh_eval_dot_grad(int n, float sh[SHLIGHT_MAX_COEFFS], vec3 d, out vec3 out_grad) {
   float ysh[SHLI_YBUF_COEFFS];
   float vb[SHLIGHT_MAX_BANDS];
-  shli_real g[8];
+  float g[8];
   float f = 0.0f;
   float t = 0.0f;
   int l;
@@ -327,7 +323,7 @@ float shl_sh_eval_dot_grad(int n, float sh[SHLIGHT_MAX_COEFFS], vec3 d, out vec3
 #if !SHLIGHT_BY_BANDS
   return shli_sh_dot_grad_c(n, sh, g, out_grad);
 #endif
-  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(g[0]), SHLIGHT_FLOAT(g[1]), SHLIGHT_FLOAT(g[2]), ysh);
+  shli_sh_eval_xyz(n, g[0], g[1], g[2], ysh);
   /* a band per trip: Mesa unrolls the loops (vb, cs: see shli_sh_grad_band) */
   for (l = 0; l < SHLIGHT_MAX_BANDS; ++l) {
     vb[l] = 0.0f;
@@ -342,8 +338,7 @@ float shl_sh_eval_dot_grad(int n, float sh[SHLIGHT_MAX_COEFFS], vec3 d, out vec3
     t = t + SHLIGHT_ITOF(l) * vb[l];
   }
   for (l = 0; l < 3; ++l) {
-    out_grad[l] =
-        ((out_grad[l] - t * SHLIGHT_FLOAT(g[l])) * SHLIGHT_FLOAT(g[3])) * SHLIGHT_FLOAT(g[4]);
+    out_grad[l] = ((out_grad[l] - t * g[l]) * g[3]) * g[4];
   }
   return f;
 }

@@ -1775,12 +1775,16 @@ static void test_dot_grad_fd(void) {
   sm_state = 0xFDu;
   for (t = 0; t < (int)(sizeof ns / sizeof ns[0]); t++) {
     int n = ns[t];
-    double ev = 0.0, eg = 0.0, ca = 0.0;
+    double ev = 0.0, eg = 0.0, ca = 0.0, sv = 0.0, sgr = 0.0, rv = 0.0, rg = 0.0;
     if (n > MAXB) continue;
     dg_coeffs(n);
     dg_dirs(d, 16);
-    for (j = 0; j < n * n; j++)
+    for (j = 0; j < n * n; j++) {
+      int l = (int)sqrt((double)j);
       ca += fabs((double)dg_c[j]);
+      sv += fabs((double)dg_c[j]) * ymax_band(l);   /* scales of the report: sum_i |c_i| max|Y_i| */
+      sgr += fabs((double)dg_c[j]) * grad_scale(l); /* and sum_i |c_i| max|grad Y_i| |d| */
+    }
     for (j = 0; j < 16; j++) {
       shref_q p[3], h, r, fq[4], q[3];
       float g[3], f = shl_sh_eval_dot_grad(n, dg_c, d[j], g);
@@ -1790,20 +1794,23 @@ static void test_dot_grad_fd(void) {
       r = sqrtq(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
       h = r * (shref_q)9.313225746154785e-10; /* 2^-30 |d| */
       ev = fmax(ev, fabs((double)f - (double)dg_f_q(n, p)) / (target_eval(n) * ca));
+      rv = fmax(rv, fabs((double)f - (double)dg_f_q(n, p)) / sv);
       for (k = 0; k < 3; k++) {
         for (s = 0; s < 4; s++) {
           memcpy(q, p, sizeof q);
           q[k] += h * (shref_q)(s < 2 ? s - 2 : s - 1);
           fq[s] = dg_f_q(n, q);
         }
-        eg = fmax(eg, fabs((double)g[k] - (double)((fq[0] - 8 * fq[1] + 8 * fq[2] - fq[3]) /
-                                                     (12 * h))) *
-                          (double)r / (target_grad_rel(n) * gb * ca + 1e-30));
+        double e =
+            fabs((double)g[k] - (double)((fq[0] - 8 * fq[1] + 8 * fq[2] - fq[3]) / (12 * h))) *
+            (double)r;
+        eg = fmax(eg, e / (target_grad_rel(n) * gb * ca + 1e-30));
+        if (sgr > 0.0) rg = fmax(rg, e / sgr);
       }
     }
     printf("  n=%2d vs binary128 f and its central differences: value %.3f, gradient %.3f "
-           "of the bound\n",
-           n, ev, eg);
+           "of the bound (%.2e, %.2e of sum_i |c_i| max|Y_i|, max|grad Y_i|)\n",
+           n, ev, eg, rv, rg);
     TL_CHECK(ev <= 1.0, "n=%d: value err %.3f of the bound", n, ev);
     TL_CHECK(eg <= 1.0, "n=%d: gradient err %.3f of the bound", n, eg);
   }
@@ -1834,8 +1841,8 @@ static void test_dot_grad_portable(void) {
         eg = fmax(eg, fabs((double)ga[k] - (double)gb[k]) * r / (target_grad_rel(n) * gm * ca));
     }
   }
-  printf("  portable kernel vs the C path, n = 1..16: value %.3f, gradient %.3f of the bound\n",
-         ev, eg);
+  printf("  portable kernel vs the C path, n = 1..16: value %.3f, gradient %.3f of the bound\n", ev,
+         eg);
   TL_CHECK(fin, "portable kernel: non-finite result");
   TL_CHECK(ev <= 1.0, "value err %.3f of the bound", ev);
   TL_CHECK(eg <= 1.0, "gradient err %.3f of the bound", eg);
@@ -1846,8 +1853,11 @@ static void test_dot_grad_portable(void) {
  * entries past FLT_MAX are +-inf of the right sign, the others within the bound; never NaN */
 static void test_hard_dot_grad(void) {
   static const int ns[] = {1, 4, 9, 16};
-  float bad[5][3] = {{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f},
-                     {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}};
+  float bad[5][3] = {{0.0f, 0.0f, 0.0f},
+                     {0.0f, 0.0f, 0.0f},
+                     {1.0f, 0.0f, 0.0f},
+                     {0.0f, 0.0f, 0.0f},
+                     {0.0f, 0.0f, 0.0f}};
   static const double scl[] = {1e-38, 3e-39, 1e-44, 1e-30, 1.7e38, 1e30};
   float g[3], ga[3], f, fa, z[3] = {0.0f, 0.0f, 1.0f};
   int t, j, k, s;

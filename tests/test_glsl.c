@@ -210,8 +210,7 @@ static void check_dot_grad_compute(int n) {
          "(sum|c| max|grad Y|) = %.2e\n",
          n, err_v, err_g);
   TL_CHECK(err_v <= tol_y(n), "dot_grad value n=%d: %.3e", n, err_v);
-  TL_CHECK(err_g <= tol_y(n) * (1 + n), "dot_grad n=%d: %.3e > %.3e", n, err_g,
-           tol_y(n) * (1 + n));
+  TL_CHECK(err_g <= tol_y(n) * (1 + n), "dot_grad n=%d: %.3e > %.3e", n, err_g, tol_y(n) * (1 + n));
 }
 
 /* the paper's spherical partials and Jacobian, away from the poles (singular there) */
