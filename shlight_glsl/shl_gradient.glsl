@@ -324,7 +324,7 @@ float shl_sh_eval_dot_grad(int n, float sh[SHLIGHT_MAX_COEFFS], vec3 d, out vec3
   return shli_sh_dot_grad_c(n, sh, g, out_grad);
 #endif
   shli_sh_eval_xyz(n, g[0], g[1], g[2], ysh);
-  /* a band per trip: Mesa unrolls the loops (vb, cs: see shli_sh_grad_band) */
+  /* a band per trip; the arrays vb and cs make Mesa unroll the loops (docs/glsl.md) */
   for (l = 0; l < SHLIGHT_MAX_BANDS; ++l) {
     vb[l] = 0.0f;
     if (l == 0) {
