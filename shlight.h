@@ -2373,24 +2373,30 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
 }
 
 #if !SHLIGHT_BY_BANDS
-/* C: shl_sh_eval_grad at d / |d| and the sums (g: shli_sh_grad_frame) */
-SHLIGHT_CPU_INLINE float shli_sh_dot_grad_c(int n, const float *sh, const float *g,
+/* C: shl_sh_eval_grad and the sums (overflow: again at d / |d|, times ir ib) */
+SHLIGHT_CPU_INLINE float shli_sh_dot_grad_c(int n, const float *sh, const float d[3],
                                             float *out_grad) {
-  float y[256], gr[256][3];
-  shli_real s[4] = {0.0, 0.0, 0.0, 0.0};
-  int i, k;
-  shl_sh_eval_grad(n, g, y, gr);
-  for (i = 0; i < n * n; ++i)
-    for (k = 0; k < 4; ++k)
-      s[k] += (shli_real)sh[i] * (shli_real)(k ? gr[i][k - 1] : y[i]);
-  for (k = 0; k < 3; ++k)
-    out_grad[k] = SHLIGHT_FLOAT(s[k + 1] * (shli_real)g[3]) * g[4];
+  float y[256], gr[256][3], g[8] = {0.0f, 0.0f, 0.0f, 1.0f, 1.0f, 0.0f, 0.0f, 0.0f};
+  shli_real s[4], e;
+  int i, k, p;
+  for (p = 0; p < 2; ++p) {
+    shl_sh_eval_grad(n, p ? g : d, y, gr);
+    s[0] = s[1] = s[2] = s[3] = 0.0;
+    for (i = 0; i < n * n; ++i)
+      for (k = 0; k < 4; ++k)
+        s[k] += (shli_real)sh[i] * (shli_real)(k ? gr[i][k - 1] : y[i]);
+    for (k = 0; k < 3; ++k)
+      out_grad[k] = SHLIGHT_FLOAT(s[k + 1] * (shli_real)g[3]) * g[4];
+    e = s[1] + s[2] + s[3];
+    if (e - e == 0.0) break;
+    shli_sh_grad_frame(d, g);
+  }
   return SHLIGHT_FLOAT(s[0]);
 }
 #endif
 
-/* band l (1..15) of shl_sh_eval_dot_grad: shli_sh_grad_band's terms at nx = ny = nz = 0,
-   ir = ib = 1 (Mesa folds them) times sh added to io_g; returns the band's share of f */
+/* band l (1..15) of shl_sh_eval_dot_grad: shli_sh_grad_band at u = 0, 1 / |d| = 1 (folded)
+   times sh, added to io_g; returns the band's share of f */
 SHLIGHT_INLINE float shli_sh_grad_dot_band(int l, const float *y, const float *sh, float io_g[3]) {
   float gb[93];
   float cs[31];
@@ -2427,10 +2433,10 @@ SHLIGHT_INLINE float shl_sh_eval_dot_grad(int n, const float *sh, const float d[
   if (n < 1) {
     return 0.0f;
   }
-  shli_sh_grad_frame(d, g);
 #if !SHLIGHT_BY_BANDS
-  return shli_sh_dot_grad_c(n, sh, g, out_grad);
+  return shli_sh_dot_grad_c(n, sh, d, out_grad);
 #endif
+  shli_sh_grad_frame(d, g);
   shli_sh_eval_xyz(n, g[0], g[1], g[2], ysh);
   /* a band per trip; the arrays vb and cs make Mesa unroll the loops (docs/glsl.md) */
   for (l = 0; l < SHLIGHT_MAX_BANDS; ++l) {

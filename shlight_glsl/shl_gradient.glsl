@@ -319,10 +319,10 @@ float shl_sh_eval_dot_grad(int n, float sh[SHLIGHT_MAX_COEFFS], vec3 d, out vec3
   if (n < 1) {
     return 0.0f;
   }
-  shli_sh_grad_frame(d, g);
 #if !SHLIGHT_BY_BANDS
-  return shli_sh_dot_grad_c(n, sh, g, out_grad);
+  return shli_sh_dot_grad_c(n, sh, d, out_grad);
 #endif
+  shli_sh_grad_frame(d, g);
   shli_sh_eval_xyz(n, g[0], g[1], g[2], ysh);
   /* a band per trip; the arrays vb and cs make Mesa unroll the loops (docs/glsl.md) */
   for (l = 0; l < SHLIGHT_MAX_BANDS; ++l) {

@@ -1892,6 +1892,8 @@ static void test_hard_dot_grad(void) {
         rand_dir_d(v);
         if (j == 3) v[0] = 0.0, v[1] = 0.0, v[2] = -1.0;
         to_float3(v, scl[s], d);
+        for (k = 0; k < 3; k++) /* the stored floats (gcc -O2 forwarded the unrounded denormals) */
+          d[k] = ((volatile float *)d)[k];
         r = norm3f(d);
         for (k = 0; k < 3; k++)
           u[k] = (float)((double)d[k] / r);
