@@ -176,6 +176,15 @@ SHLIGHT_INLINE void shl_sh_eval(int n, const float d[3], float *out_y);
    Cost: about 4x shl_sh_eval (docs/speed.md). */
 SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, float (*out_grad)[3]);
 
+/* shl_sh_eval_dot_grad: f = sum_i sh[i] Y_i(d / |d|), returned, and out_grad[k] = df / dd_k
+   without the n^2 basis gradients (GLSL: their terms summed band by band). d as shl_sh_eval_grad
+   (zero, NaN or inf: f at (0,0,1), zero gradient; tiny |d|: the same overflow). n: 1..16 (more:
+   16; n < 1: 0, zero gradient); sh: n * n floats. Accuracy: 1e-7 of sum_i |sh[i]| max|Y_i|
+   (f), max|grad Y_i| (gradient). Cost: llvmpipe 2-3.4x shl_sh_eval (shl_sh_eval_grad: 3-6x,
+   docs/glsl.md); C: shl_sh_eval_grad and the n^2 sums. */
+SHLIGHT_INLINE float shl_sh_eval_dot_grad(int n, const float *sh, const float d[3],
+                                          float out_grad[3]);
+
 #ifdef SHLIGHT_REFERENCE_FORMS
 /* shl_sh_eval_grad_spherical: the paper's form ([GRAD] sections 3-4, corrections E1-E3 of
    docs/derivations.md fixed): Y_i(d / |d|), dY_i / dtheta and dY_i / dphi, by Sloan's recurrence
@@ -1347,10 +1356,7 @@ SHLI_TAB_DECL(shli_real, sh_s12, 128);
 SHLI_TAB_DECL(float, sh_diag, 64);
 #define SHLI_SH_DIAG (*shli_tab_sh_diag())
 
-/* The Reinsch constants alpha, g, c of step l in column m (0 <= m < l < 64) of the run-time
-   loops, from their closed forms: q = 1 / sqrt((l - m)(l + m)), alpha = s1_l q,
-   g = s2_l (l + m) q, c = s2_l (l - m - 1) q (s1_l = sqrt((2l + 1)(2l - 1)),
-   s2_l = sqrt((2l + 1) / (2l - 1))); within 5 ulp (double) of the exact values. */
+/* Reinsch constants of step l, column m (closed forms; docs/derivations.md sec. 13.52) */
 SHLIGHT_CPU_INLINE void shli_sh_reinsch(int l, int m, shli_real *out_a, shli_real *out_g,
                                         shli_real *out_c) {
   shli_real q = SHLI_SH_RSQ[l - m] * SHLI_SH_RSQ[l + m];
@@ -1360,10 +1366,7 @@ SHLIGHT_CPU_INLINE void shli_sh_reinsch(int l, int m, shli_real *out_a, shli_rea
   *out_c = gq * (shli_real)(l - m - 1);
 }
 
-/* Run-time loop for any n: the same recurrence as the generated code, constants from
-   shli_sh_reinsch (the same products, walked by pointers and counters along the column). x, y,
-   z: unit direction; t = 1 - |z| computed without cancellation; sg: sign of z (the recurrence
-   runs at |z| and the parity (-1)^(l-m) is restored through U, V). */
+/* Run-time loop for any n (docs/derivations.md sec. 13.53) */
 SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_real z, shli_real t,
                                           float sg, float *out_y) {
   shli_real pc = 1.0;
@@ -1406,8 +1409,7 @@ SHLIGHT_CPU_INLINE void shli_sh_core_loop(int n, shli_real x, shli_real y, shli_
     }
     xa = SHLIGHT_REAL(k);
     dd = 0.0;
-    /* step l: q = RSQ[l - m] RSQ[l + m], s1_l = S12[2l], s2_l = S12[2l + 1], l + m and
-       l - m - 1 as counters; o = out_y + l (l + 1), moved before the stores */
+    /* step l (docs/derivations.md sec. 13.64) */
     qa = SHLI_SH_RSQ + 1;
     qb = SHLI_SH_RSQ + 2 * m + 1;
     sl = SHLI_SH_S12 + 2 * m + 2;
@@ -1516,9 +1518,7 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_poly(int n, float x, float y, float 
 }
 #endif
 
-/* Full unrolling of the band loops of the across-m cores when n is a compile-time constant
-   (inlined with a literal n): the loop then has no branches and every mask is an immediate.
-   GCC does not peel a 16-trip loop of this size by itself. */
+/* Full unrolling with a literal n (docs/derivations.md sec. 13.54) */
 #if defined(__clang__)
 #define SHLI_UNROLL_BANDS _Pragma("unroll")
 #elif defined(__GNUC__) && __GNUC__ >= 8
@@ -1527,9 +1527,7 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_poly(int n, float x, float y, float 
 #define SHLI_UNROLL_BANDS
 #endif
 
-/* n <= 16 with AVX-512VL: the same in 256-bit registers, orders 0..7 and, from band 8 on,
-   8..15: 256-bit operations issue on both FMA pipes of a Zen 4 core and a 256-bit store takes
-   one cycle where a 512-bit one takes two */
+/* n <= 16 with AVX-512VL, 256-bit registers (docs/derivations.md sec. 13.55) */
 SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16y(int n, float x, float y, float z, float *out_y) {
   static const unsigned short bits[3] = {0xAA, 0xCC, 0xF0};
   float s2 = x * x + y * y;
@@ -1745,9 +1743,7 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512_16(int n, float x, float y, float z,
   }
 SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, float *out_y) {
   static const unsigned short bits[4] = {0xAAAA, 0xCCCC, 0xF0F0, 0xFF00};
-  /* float prologue, short latency: t = 1 - |z| / |d| = s2 / (|d| (|d| + |z|)) is s2 / (1 + |z|)
-     to a relative O(|d| - 1), no normalisation needed; (x + iy) is renormalised to second
-     order with e = |d|^2 - 1 formed without cancellation near the poles */
+  /* float prologue (docs/derivations.md sec. 13.56) */
   float s2 = x * x + y * y;
   float ez = (z - 1.0f) * (z + 1.0f) + s2;
   float k = 1.0f + ez * (-0.5f + 0.375f * ez);
@@ -1767,8 +1763,7 @@ SHLIGHT_CPU_INLINE void shli_sh_eval_avx512(int n, float x, float y, float z, fl
   vs = _mm512_set1_ps(copysignf(1.0f, z));
   e0 = one;
   es0 = _mm512_setzero_ps();
-  /* lane j gets (x + iy)^j as the product of (x + iy)^(2^b) over the set bits b of j; chunk h
-     is chunk h - 1 times (x + iy)^16 (cr, ci hold it after four squarings) */
+  /* (x + iy)^j by lanes (docs/derivations.md sec. 13.65) */
   for (b = 0; b < 4; ++b) {
     __m512 nc, ns;
     vc = _mm512_set1_ps(cr);
@@ -1859,10 +1854,7 @@ SHLI_TAB_DECL(float, gradv_coef, 1760);
 #define SHLI_GRADV_COEF (*shli_tab_gradv_coef())
 #define SHLI_GRADV_MASK(t) ((__mmask16) * (t))
 
-/* Chunk c (0..5) of band l: r = c1 P[tap 1] + c2 P[tap 2] + Y[k] w, two FMAs and a product
-   (P = a_l Y_{l-1}, Y = band l, both band order; w lane j = the per-band vector's component
-   (16 c + j) % 3). The taps are SHLI_GRADV_TAP plus ly = 2l on the y lanes (one vector per
-   c % 3), so only the coefficients are per band. */
+/* chunk c of band l (docs/derivations.md sec. 13.57) */
 #define SHLI_GRADV_TAPS(c, t, ly) \
   _mm512_add_epi32(_mm512_loadu_si512((const void *)(SHLI_GRADV_TAP + 32 * (c) + 16 * (t))), (ly))
 /* bands 1..7: P (<= 13 lanes) and Y (<= 15 lanes) in one zmm each */
@@ -1920,9 +1912,7 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_avx512(int n, const float *y, float nx, flo
   __m512i iy3, iy4, iy5;
   float y0 = y[0];
   int l, nc, l1 = n < 8 ? n : 8;
-  /* bands 1..7 of Y before the first store: a load whose address matches an earlier store's
-     modulo 4096 waits for it (out_grad 32 KiB after y, one build of the bench: n = 10 80 -> 102
-     ns; with these loads first 80.6); bands 8..15 (two zmm each) would spill */
+  /* bands 1..7 of Y loaded first (docs/derivations.md sec. 13.58) */
   SHLI_UNROLL_BANDS
   for (l = 0; l < 8; ++l) {
     yb[l] = _mm512_setzero_ps();
@@ -2077,8 +2067,7 @@ SHLIGHT_INLINE void shli_sh_eval_small(int n, float dx, float dy, float dz, floa
 #if SHLIGHT_SIMD_EVAL
 #ifdef __AVX512VL__
   if (n >= 4 && n <= 6) {
-    /* n^2 scalar stores bound the Horner form (bench, ratio to the loop, scalar / lanes:
-       n = 3 0.37-0.49 / 0.55, 4 0.44 / 0.35, 5 0.49 / 0.45, 6 0.49 / 0.37) */
+    /* lanes: docs/derivations.md sec. 13.66 */
     shli_sh_eval_avx512_poly(n, dx, dy, dz, out_y);
     return;
   }
@@ -2128,9 +2117,7 @@ SHLIGHT_INLINE void shli_sh_eval_any(int n, float dx, float dy, float dz, float 
   shli_real z;
   shli_real r;
   if (!(SHLIGHT_ABSF(q - 1.0f) <= 1.0e-6f)) {
-    /* not unit to float precision (|d|^2 of a float-normalised d is within 4e-7 of 1): zero,
-       NaN or infinite d becomes (0, 0, 1), any other d is normalised (scaled by its largest
-       component first, so denormal and huge d work) */
+    /* not unit: normalised, or (0, 0, 1) (docs/derivations.md sec. 13.59) */
     x = SHLIGHT_ABSR(SHLIGHT_REAL(dx));
     y = SHLIGHT_ABSR(SHLIGHT_REAL(dy));
     z = SHLIGHT_ABSR(SHLIGHT_REAL(dz));
@@ -2156,9 +2143,7 @@ SHLIGHT_INLINE void shli_sh_eval_any(int n, float dx, float dy, float dz, float 
   }
 }
 
-/* Y_i at the direction (dx, dy, dz): the one evaluation path of shl_sh_eval and
-   shl_sh_eval_grad. In C, a unit d with n <= 6 runs inline and everything else out of line
-   (shli_sh_eval_outline, the implementation's shli_sh_eval_any). */
+/* Y_i at (dx, dy, dz), the one evaluation path (docs/derivations.md sec. 13.63) */
 SHLIGHT_INLINE void shli_sh_eval_xyz(int n, float dx, float dy, float dz, float *out_y) {
   n = shli_bands(n);
   if (n < 1) {
@@ -2183,9 +2168,7 @@ SHLIGHT_INLINE void shl_sh_eval(int n, const float d[3], float *out_y) {
    Cartesian gradient of Y_i(d / |d|), pole-free, through the solid harmonics.
    (docs/derivations.md sec. 13.8) */
 
-/* Run-time loop of the gradient for n > SHLIGHT_UNROLLED_BANDS (C only): coefficients A, B, C
-   of band l computed on the way (three square roots in double per order m, no table); every
-   output times ib (see shli_sh_grad). */
+/* Gradient for n > 16 (C only; docs/derivations.md sec. 13.60) */
 SHLIGHT_CPU_INLINE void shli_sh_grad_loop(int n, const float *y, float nx, float ny, float nz,
                                           float ir, float ib, float (*out_grad)[3]) {
   int l;
@@ -2265,11 +2248,11 @@ SHLIGHT_CPU_INLINE void shli_sh_grad_loop(int n, const float *y, float nx, float
 /* @generated gradient: defined in >>generated at the end of the file */
 SHLIGHT_INLINE void shli_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir,
                                  float ib, float (*out_grad)[3]);
+SHLIGHT_INLINE void shli_sh_grad_band(int l, const float *y, float nx, float ny, float nz, float ir,
+                                      float ib, float *out_gb);
 
 #if SHLIGHT_SIMD_EVAL
-/* shl_sh_eval_grad for 3..16 bands with AVX-512 (C only; n = 2 is faster on the exact path,
-   15.4 against 13.0 ns): 1 if |d|^2 is in [1e-30, 1e30] and the result is written, 0 (nothing
-   written) otherwise: zero, NaN, Inf, tiny or huge d take the exact path. */
+/* shl_sh_eval_grad, 3..16 bands, AVX-512: 1 if written (docs/derivations.md sec. 13.61) */
 SHLIGHT_CPU_INLINE int shli_sh_eval_grad_avx512(int n, const float d[3], float *out_y,
                                                 float (*out_grad)[3]) {
   /* |d|^2 in [1e-30, 1e30]: rsqrt14 and one Newton step in double (1 / |d| to 6e-9).
@@ -2296,7 +2279,8 @@ SHLIGHT_CPU_INLINE int shli_sh_eval_grad_avx512(int n, const float d[3], float *
 
 #endif
 
-SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, float (*out_grad)[3]) {
+/* d of shl_sh_eval_grad: out_g[0..2] d / |d| (or (0,0,1)), [3], [4] ir, ib: 1 / |d| = ir ib */
+SHLIGHT_INLINE void shli_sh_grad_frame(const float d[3], float *out_g) {
   shli_real x = SHLIGHT_REAL(d[0]);
   shli_real y = SHLIGHT_REAL(d[1]);
   shli_real z = SHLIGHT_REAL(d[2]);
@@ -2305,16 +2289,6 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
   shli_real iu;
   float ir;
   float ib;
-  n = shli_bands(n);
-  if (n < 1) {
-    return;
-  }
-#if SHLIGHT_SIMD_EVAL
-  /* n = 3, 4: 25.0 -> 18.2 and 38.7 -> 25.2 ns against the exact path and the scalar gradient */
-  if (n >= 3 && n <= SHLIGHT_UNROLLED_BANDS && shli_sh_eval_grad_avx512(n, d, out_y, out_grad)) {
-    return;
-  }
-#endif
 #if SHLIGHT_REAL_WIDE
   /* double: squares of floats neither overflow nor underflow, no scaling needed */
   SHLIGHT_UNUSED(mx);
@@ -2353,9 +2327,7 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
   x = x * iu;
   y = y * iu;
   z = z * iu;
-  /* 1 / |d| (0 for the substituted direction); below |d| = 1e-30 the projection runs at unit
-     radius and 1 / |d| is applied afterwards as two finite factors, so entries that fit in a
-     float stay exact and the others overflow to +-inf (never inf * 0 or inf - inf) */
+  /* 1 / |d| = ir ib (docs/derivations.md sec. 13.62) */
   iu = iu * im;
   ir = SHLIGHT_FLOAT(iu);
   ib = 1.0f;
@@ -2363,17 +2335,121 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
     ir = SHLIGHT_FLOAT(SHLIGHT_SQRTR(iu));
     ib = ir;
   }
-  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), out_y);
+  out_g[0] = SHLIGHT_FLOAT(x);
+  out_g[1] = SHLIGHT_FLOAT(y);
+  out_g[2] = SHLIGHT_FLOAT(z);
+  out_g[3] = ir;
+  out_g[4] = ib;
+}
+
+SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, float (*out_grad)[3]) {
+  float g[8];
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
 #if SHLIGHT_SIMD_EVAL
-  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && ib == 1.0f) {
-    shli_sh_grad_avx512(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, 0, 0, 0,
-                        out_grad);
+  /* n = 3, 4: 25.0 -> 18.2 and 38.7 -> 25.2 ns against the exact path and the scalar gradient */
+  if (n >= 3 && n <= SHLIGHT_UNROLLED_BANDS && shli_sh_eval_grad_avx512(n, d, out_y, out_grad)) {
+    return;
+  }
+#endif
+  shli_sh_grad_frame(d, g);
+  shli_sh_eval_xyz(n, g[0], g[1], g[2], out_y);
+#if SHLIGHT_SIMD_EVAL
+  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && g[4] == 1.0f) {
+    shli_sh_grad_avx512(n, out_y, g[0], g[1], g[2], g[3], 0, 0, 0, out_grad);
     return;
   }
 #endif
   /* one call (a second inlined copy and a rescaling loop over out_grad cost a shader ~100x
      its compile time): ib = 1 leaves every output exact */
-  shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, ib, out_grad);
+  shli_sh_grad(n, out_y, g[0], g[1], g[2], g[3], g[4], out_grad);
+}
+
+#if !SHLIGHT_BY_BANDS
+/* C: shl_sh_eval_grad and the sums (overflow: again at d / |d|, times ir ib) */
+SHLIGHT_CPU_INLINE float shli_sh_dot_grad_c(int n, const float *sh, const float d[3],
+                                            float *out_grad) {
+  float y[256], gr[256][3], g[8] = {0.0f, 0.0f, 0.0f, 1.0f, 1.0f, 0.0f, 0.0f, 0.0f};
+  shli_real s[4], e;
+  int i, k, p;
+  for (p = 0; p < 2; ++p) {
+    shl_sh_eval_grad(n, p ? g : d, y, gr);
+    s[0] = s[1] = s[2] = s[3] = 0.0;
+    for (i = 0; i < n * n; ++i)
+      for (k = 0; k < 4; ++k)
+        s[k] += (shli_real)sh[i] * (shli_real)(k ? gr[i][k - 1] : y[i]);
+    for (k = 0; k < 3; ++k)
+      out_grad[k] = SHLIGHT_FLOAT(s[k + 1] * (shli_real)g[3]) * g[4];
+    e = s[1] + s[2] + s[3];
+    if (e - e == 0.0) break;
+    shli_sh_grad_frame(d, g);
+  }
+  return SHLIGHT_FLOAT(s[0]);
+}
+#endif
+
+/* band l (1..15) of shl_sh_eval_dot_grad: shli_sh_grad_band at u = 0, 1 / |d| = 1 (folded)
+   times sh, added to io_g; returns the band's share of f */
+SHLIGHT_INLINE float shli_sh_grad_dot_band(int l, const float *y, const float *sh, float io_g[3]) {
+  float gb[93];
+  float cs[31];
+  float v = 0.0f;
+  int k;
+  shli_sh_grad_band(l, y, 0.0f, 0.0f, 0.0f, 1.0f, 1.0f, gb);
+  for (k = 0; k < 31; ++k) {
+    cs[k] = 0.0f;
+    if (k >= 15 - l && k <= 15 + l) {
+      cs[k] = sh[l * l + l + k - 15];
+    }
+  }
+  for (k = 0; k < 31; ++k) {
+    if (k >= 15 - l && k <= 15 + l) {
+      io_g[0] = io_g[0] + cs[k] * gb[3 * k];
+      io_g[1] = io_g[1] + cs[k] * gb[3 * k + 1];
+      io_g[2] = io_g[2] + cs[k] * gb[3 * k + 2];
+      v = v + cs[k] * y[l * l + l + k - 15];
+    }
+  }
+  return v;
+}
+
+SHLIGHT_INLINE float shl_sh_eval_dot_grad(int n, const float *sh, const float d[3],
+                                          float out_grad[3]) {
+  float ysh[SHLI_YBUF_COEFFS];
+  float vb[SHLIGHT_MAX_BANDS];
+  float g[8];
+  float f = 0.0f;
+  float t = 0.0f;
+  int l;
+  n = shli_bands(n < SHLIGHT_UNROLLED_BANDS ? n : SHLIGHT_UNROLLED_BANDS);
+  SHLIGHT_SET3(out_grad, 0.0f, 0.0f, 0.0f);
+  if (n < 1) {
+    return 0.0f;
+  }
+#if !SHLIGHT_BY_BANDS
+  return shli_sh_dot_grad_c(n, sh, d, out_grad);
+#endif
+  shli_sh_grad_frame(d, g);
+  shli_sh_eval_xyz(n, g[0], g[1], g[2], ysh);
+  /* a band per trip; the arrays vb and cs make Mesa unroll the loops (docs/glsl.md) */
+  for (l = 0; l < SHLIGHT_MAX_BANDS; ++l) {
+    vb[l] = 0.0f;
+    if (l == 0) {
+      vb[l] = sh[0] * ysh[0];
+    } else if (l < n) {
+      vb[l] = shli_sh_grad_dot_band(l, ysh, sh, out_grad);
+    }
+  }
+  for (l = 0; l < SHLIGHT_MAX_BANDS; ++l) {
+    f = f + vb[l];
+    t = t + SHLIGHT_ITOF(l) * vb[l];
+  }
+  for (l = 0; l < 3; ++l) {
+    out_grad[l] = ((out_grad[l] - t * g[l]) * g[3]) * g[4];
+  }
+  return f;
 }
 
 #ifdef SHLIGHT_REFERENCE_FORMS

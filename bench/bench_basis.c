@@ -123,6 +123,7 @@ static void loop_init(void) {
 /* ------------------------------------------------------------------ wrappers */
 typedef struct {
   float *y, *dth, *dph, (*g)[3]; /* n*n each (g: n*n float[3]) */
+  float *sh;                     /* n*n coefficients of shl_sh_eval_dot_grad */
   float *bout;                   /* batch output, n*n*NDIR */
 } bufs;
 typedef void (*wfn)(int n, const float *d, bufs *b);
@@ -203,6 +204,12 @@ NOINL void bw_batch16(int n, const float *d, bufs *b) { /* the 16 directions fro
     shl_sh_eval_grad(N, d, b->y, b->g); \
     NOTAIL(); \
   }
+#define W_DOTGRAD(N) \
+  NOINL void bw_dotgrad_##N(int n, const float *d, bufs *b) { \
+    (void)n; \
+    b->y[0] = shl_sh_eval_dot_grad(N, b->sh, d, b->g[0]); \
+    NOTAIL(); \
+  }
 #define W_GSPH(N) \
   NOINL void bw_grad_sph_##N(int n, const float *d, bufs *b) { \
     (void)n; \
@@ -214,15 +221,18 @@ NOINL void bw_batch16(int n, const float *d, bufs *b) { /* the 16 directions fro
 NLIST(W_EVAL)
 NLIST(W_GRAD)
 NLIST(W_GSPH)
+NLIST(W_DOTGRAD)
 #define NUM(N) N,
 #define FEVAL(N) bw_eval_##N,
 #define FGRAD(N) bw_grad_##N,
 #define FGSPH(N) bw_grad_sph_##N,
+#define FDOTGRAD(N) bw_dotgrad_##N,
 static const int NSET[] = {NLIST(NUM)};
 #define NNS ((int)(sizeof(NSET) / sizeof(NSET[0])))
 static const wfn F_EVAL[NNS] = {NLIST(FEVAL)};
 static const wfn F_GRAD[NNS] = {NLIST(FGRAD)};
 static const wfn F_GSPH[NNS] = {NLIST(FGSPH)};
+static const wfn F_DOTGRAD[NNS] = {NLIST(FDOTGRAD)};
 
 /* ------------------------------------------------------------------ variants */
 enum {
@@ -234,6 +244,7 @@ enum {
   V_BATCH32,
   V_GRAD,
   V_GSPH,
+  V_DOTGRAD,
   V_LOOP,
   V_EMPTY,
   NV
@@ -254,6 +265,8 @@ static const variant VAR[NV] = {
     {"batch32", "shl_sh_eval_batch, count 32 (output in L1), per direction", 0, bw_batch32, 0, 32},
     {"grad", "shl_sh_eval_grad: values + Cartesian gradient", F_GRAD, 0, 1, 1},
     {"grad_sph", "shl_sh_eval_grad_spherical + shl_sh_grad_from_spherical", F_GSPH, 0, 1, 1},
+    {"dotgrad", "shl_sh_eval_dot_grad: f = sh . Y and its gradient (errors: tests/test_basis)",
+     F_DOTGRAD, 0, 0, 1},
     {"loop", "plain-loop yardstick (research base_f), run-time n", 0, bw_loop, 0, 1},
     {"empty", "empty function: harness overhead", 0, bw_empty, 0, 1},
 };
@@ -382,7 +395,8 @@ static void errors_values(int nmax, bufs *b) {
         for (i = 0; i < nc; i++)
           upd(&R_floor[ni][set], fabs((double)(float)ref[i] - ref[i]));
         for (v = 0; v < NV; v++) {
-          if (!g_var[v] || VAR[v].is_grad || v == V_EMPTY || v == V_BATCH32) continue;
+          if (!g_var[v] || VAR[v].is_grad || v == V_EMPTY || v == V_BATCH32 || v == V_DOTGRAD)
+            continue;
           if (v == V_BATCH || v == V_BATCH16) {
             const float *o = bat[v == V_BATCH16][ni][set];
             for (i = 0; i < nc; i++)
@@ -501,7 +515,8 @@ static void table(FILE **fo, const char *title, int what, int grad_only, int err
   char s[32];
   table_head(fo, title, "variant");
   for (v = 0; v < NV; v++) {
-    if (!g_var[v] || (grad_only && !VAR[v].is_grad) || (errs && v == V_EMPTY)) continue;
+    if (!g_var[v] || (grad_only && !VAR[v].is_grad) || (errs && (v == V_EMPTY || v == V_DOTGRAD)))
+      continue;
     pr(fo, "| %s |", VAR[v].name);
     for (ii = 0; ii < g_nn; ii++) {
       double c = cell(what, v, g_nlist[ii]);
@@ -539,14 +554,16 @@ static void table(FILE **fo, const char *title, int what, int grad_only, int err
 static int svg_pt(int v, int ni, double *lx, double *ly) {
   double e = VAR[v].is_grad ? fmax(R_gerr[v][ni][0], R_gerr_np[v][ni])
                             : fmax(R_err[v][ni][0], R_err[v][ni][1]);
-  if (!(e > 1e-12) || !(R_ns[v][ni] > 0) || v == V_EMPTY || v == V_BATCH32 || !g_var[v]) return 0;
+  if (!(e > 1e-12) || !(R_ns[v][ni] > 0) || v == V_EMPTY || v == V_BATCH32 || v == V_DOTGRAD ||
+      !g_var[v])
+    return 0;
   *lx = log10(R_ns[v][ni]);
   *ly = log10(e);
   return 1;
 }
 static void write_svg(const char *path) {
   static const char *col[NV] = {"#1f77b4", "#17becf", "#2ca02c", "#9467bd", "#e377c2",
-                                "#d62728", "#ff7f0e", "#000000", "#7f7f7f"};
+                                "#d62728", "#ff7f0e", "#000000", "#bcbd22", "#7f7f7f"};
   const double W = 860, H = 560, L = 70, R = 170, T = 40, B = 50;
   double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9, lx, ly, e;
   int v, ii, row = 0;
@@ -675,7 +692,10 @@ int main(int argc, char **argv) {
   b.dth = (float *)malloc(sizeof(float) * MAXC);
   b.dph = (float *)malloc(sizeof(float) * MAXC);
   b.g = (float(*)[3])malloc(sizeof(float) * 3 * MAXC);
-  if (!b.y || !b.dth || !b.dph || !b.g) return 2;
+  b.sh = (float *)malloc(sizeof(float) * MAXC);
+  if (!b.y || !b.dth || !b.dph || !b.g || !b.sh) return 2;
+  for (a = 0; a < MAXC; a++)
+    b.sh[a] = (float)(0.8 * cos(0.7 * a) / (1.0 + 0.1 * a));
   make_dirs();
   loop_init();
 
@@ -835,7 +855,7 @@ int main(int argc, char **argv) {
         fprintf(fo[1], "%s,%d,%.4g,%.4g,", VAR[v].name, NSET[ni], R_ns[v][ni],
                 R_ns[v][ni] / R_ns[V_LOOP][ni]);
         if (R_instr[v][ni] >= 0) fprintf(fo[1], "%.0f", R_instr[v][ni]);
-        if (noerr || v == V_EMPTY)
+        if (noerr || v == V_EMPTY || v == V_DOTGRAD)
           fprintf(fo[1], ",,");
         else
           fprintf(fo[1], ",%.3e,%.3e", R_err[v][ni][0], R_err[v][ni][1]);

@@ -12,7 +12,7 @@
 #
 # Usage: sh bench/callgrind.sh [N-LIST] [VARIANT-LIST]     (run from the repository root)
 #   defaults: N-LIST "1 2 ... 16 32 64", VARIANT-LIST "eval eval_rt accurate batch batch16 grad
-#   grad_sph loop empty".  Env: CC (gcc), JOBS (2 parallel valgrinds), OUT (bench/out).
+#   grad_sph dotgrad loop empty".  Env: CC (gcc), JOBS (2 parallel valgrinds), OUT (bench/out).
 # Writes $OUT/instr.md (markdown table) and $OUT/instr.csv (variant,n,instr; read by
 # bench_basis --callgrind).
 set -eu
@@ -20,7 +20,7 @@ CC=${CC:-gcc}
 JOBS=${JOBS:-2}
 OUT=${OUT:-bench/out}
 NS=${1:-"1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 32 64"}
-VS=${2:-"eval eval_rt accurate batch batch16 grad grad_sph loop empty"}
+VS=${2:-"eval eval_rt accurate batch batch16 grad grad_sph dotgrad loop empty"}
 BIN=build/bench/bench_basis_cg
 CGFLAGS="-std=c99 -O3 -march=x86-64-v3 -ffp-contract=fast -DNDEBUG"
 
@@ -39,7 +39,7 @@ kfor() { # variant n
   case $1 in
   batch) echo 2 ;;
   batch16) echo $((2048 / ($2 * $2) + 16)) ;;
-  grad | grad_sph) echo $((20000 / ($2 * $2) + 16)) ;;
+  grad | grad_sph | dotgrad) echo $((20000 / ($2 * $2) + 16)) ;;
   *) echo $((100000 / ($2 * $2) + 32)) ;;
   esac
 }

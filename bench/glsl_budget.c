@@ -16,6 +16,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <math.h>
 #include <string.h>
 #include <time.h>
 
@@ -62,6 +63,27 @@ static const char *MAIN_GRAD = "void glrun_main(int item) {\n"
                                "  }\n"
                                "  out_float(0, acc);\n"
                                "}\n";
+
+/* f(d) = sum_i sh[i] Y_i(d) and its gradient; sh: constants (as from a uniform block), set
+   before the timed repeats; the consumer reads the returned value and gradient only */
+static const char *MAIN_DOT_GRAD =
+    "void glrun_main(int item) {\n"
+    "  vec4 a = in_vec4(0);\n"
+    "  float sh[SHLIGHT_MAX_COEFFS];\n"
+    "  vec3 g;\n"
+    "  float acc = 0.0;\n"
+    "#ifdef GLSL_BUDGET_REPS\n"
+    "  int reps = int(a.w);\n"
+    "#else\n"
+    "  const int reps = 1;\n"
+    "#endif\n"
+    "  GLSL_BUDGET_SET_SH\n"
+    "  for (int r = 0; r < reps; ++r) {\n"
+    "    vec3 d = normalize(a.xyz + vec3(0.0, 0.0, 0.01 * float(r)));\n"
+    "    acc += shl_sh_eval_dot_grad(SHLIGHT_MAX_BANDS, sh, d, g) + dot(g, vec3(1.0));\n"
+    "  }\n"
+    "  out_float(0, acc);\n"
+    "}\n";
 
 static const char *MAIN_SPHERE =
     "void glrun_main(int item) {\n"
@@ -145,6 +167,9 @@ static const struct kcase CASES[] = {
     {"values + gradient, n = 4", 4, "basis gradient", NULL, 0.0, 1, 1},
     {"values + gradient, n = 9", 9, "basis gradient", NULL, 0.0, 1, 1},
     {"values + gradient, n = 16", 16, "basis gradient", NULL, 5.0, 1, 1},
+    {"SH function value + gradient, n = 4", 4, "basis gradient", NULL, 0.0, 1, 1},
+    {"SH function value + gradient, n = 9", 9, "basis gradient", NULL, 0.0, 1, 1},
+    {"SH function value + gradient, n = 16", 16, "basis gradient", NULL, 1.0, 1, 1},
     {"sphere light + gradient, n = 9", 9, "basis gradient zonal light", NULL, 1.5, 0, 1},
     {"shl_grid_hermite, n = 5", 5, "basis grid", NULL, 1.0, 0, 1},
     {"shl_polygon_moment (one call site)", 4, "basis gradient zonal light edge",
@@ -165,6 +190,7 @@ static const char *main_of(const struct kcase *k) {
   if (k->main_src) return k->main_src;
   if (strstr(k->name, "sphere")) return MAIN_SPHERE;
   if (strstr(k->name, "hermite")) return MAIN_HERMITE;
+  if (strstr(k->name, "SH function")) return MAIN_DOT_GRAD;
   if (strstr(k->name, "gradient")) return MAIN_GRAD;
   return MAIN_VALUES;
 }
@@ -205,7 +231,12 @@ static int run(const struct kcase *k, const char *dir, int one_include, int coun
       (size_t)snprintf(defines + at, sizeof defines - at, ")\n#define GLSL_BUDGET_SUM_G dot(g[0]");
   for (i = 1; i < k->bands * k->bands; ++i)
     at += (size_t)snprintf(defines + at, sizeof defines - at, " + g[%d]", i);
-  snprintf(defines + at, sizeof defines - at, ", vec3(1.0))\n");
+  at += (size_t)snprintf(defines + at, sizeof defines - at,
+                         ", vec3(1.0))\n#define GLSL_BUDGET_SET_SH");
+  for (i = 0; i < k->bands * k->bands; ++i)
+    at += (size_t)snprintf(defines + at, sizeof defines - at, " sh[%d] = %.6f;", i,
+                           0.8 * cos(0.7 * i) / (1.0 + 0.1 * i));
+  snprintf(defines + at, sizeof defines - at, "\n");
   for (i = 0; i < count; ++i) {
     float u = (float)(i % 512) / 512.0f, v = (float)(i / 512) / 512.0f;
     in[4 * i] = 2.0f * u - 1.0f + 1e-3f;

@@ -1627,8 +1627,7 @@ void shli_sh_eval_small(int n, float dx, float dy, float dz, out float out_y[SHL
 #if SHLIGHT_SIMD_EVAL
 #ifdef __AVX512VL__
   if (n >= 4 && n <= 6) {
-    /* n^2 scalar stores bound the Horner form (bench, ratio to the loop, scalar / lanes:
-       n = 3 0.37-0.49 / 0.55, 4 0.44 / 0.35, 5 0.49 / 0.45, 6 0.49 / 0.37) */
+    /* lanes: docs/derivations.md sec. 13.66 */
     shli_sh_eval_avx512_poly(n, dx, dy, dz, out_y);
     return;
   }
@@ -1677,9 +1676,7 @@ void shli_sh_eval_any(int n, float dx, float dy, float dz, out float out_y[SHLIG
   shli_real z;
   shli_real r;
   if (!(SHLIGHT_ABSF(q - 1.0f) <= 1.0e-6f)) {
-    /* not unit to float precision (|d|^2 of a float-normalised d is within 4e-7 of 1): zero,
-       NaN or infinite d becomes (0, 0, 1), any other d is normalised (scaled by its largest
-       component first, so denormal and huge d work) */
+    /* not unit: normalised, or (0, 0, 1) (docs/derivations.md sec. 13.59) */
     x = SHLIGHT_ABSR(SHLIGHT_REAL(dx));
     y = SHLIGHT_ABSR(SHLIGHT_REAL(dy));
     z = SHLIGHT_ABSR(SHLIGHT_REAL(dz));

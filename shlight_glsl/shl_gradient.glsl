@@ -195,8 +195,7 @@ void shli_sh_grad(int n, float y[SHLIGHT_MAX_COEFFS], float nx, float ny, float 
 #endif
 }
 
-void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
-                      out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+void shli_sh_grad_frame(vec3 d, out float out_g[8]) {
   shli_real x = SHLIGHT_REAL(d[0]);
   shli_real y = SHLIGHT_REAL(d[1]);
   shli_real z = SHLIGHT_REAL(d[2]);
@@ -205,16 +204,6 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
   shli_real iu;
   float ir;
   float ib;
-  n = shli_bands(n);
-  if (n < 1) {
-    return;
-  }
-#if SHLIGHT_SIMD_EVAL
-  /* n = 3, 4: 25.0 -> 18.2 and 38.7 -> 25.2 ns against the exact path and the scalar gradient */
-  if (n >= 3 && n <= SHLIGHT_UNROLLED_BANDS && shli_sh_eval_grad_avx512(n, d, out_y, out_grad)) {
-    return;
-  }
-#endif
 #if SHLIGHT_REAL_WIDE
   /* double: squares of floats neither overflow nor underflow, no scaling needed */
   SHLIGHT_UNUSED(mx);
@@ -253,9 +242,7 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
   x = x * iu;
   y = y * iu;
   z = z * iu;
-  /* 1 / |d| (0 for the substituted direction); below |d| = 1e-30 the projection runs at unit
-     radius and 1 / |d| is applied afterwards as two finite factors, so entries that fit in a
-     float stay exact and the others overflow to +-inf (never inf * 0 or inf - inf) */
+  /* 1 / |d| = ir ib (docs/derivations.md sec. 13.62) */
   iu = iu * im;
   ir = SHLIGHT_FLOAT(iu);
   ib = 1.0f;
@@ -263,17 +250,97 @@ void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
     ir = SHLIGHT_FLOAT(SHLIGHT_SQRTR(iu));
     ib = ir;
   }
-  shli_sh_eval_xyz(n, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), out_y);
+  out_g[0] = SHLIGHT_FLOAT(x);
+  out_g[1] = SHLIGHT_FLOAT(y);
+  out_g[2] = SHLIGHT_FLOAT(z);
+  out_g[3] = ir;
+  out_g[4] = ib;
+}
+
+void shl_sh_eval_grad(int n, vec3 d, out float out_y[SHLIGHT_MAX_COEFFS],
+                      out vec3 out_grad[SHLIGHT_MAX_COEFFS]) {
+  float g[8];
+  n = shli_bands(n);
+  if (n < 1) {
+    return;
+  }
 #if SHLIGHT_SIMD_EVAL
-  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && ib == 1.0f) {
-    shli_sh_grad_avx512(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, 0, 0, 0,
-                        out_grad);
+  /* n = 3, 4: 25.0 -> 18.2 and 38.7 -> 25.2 ns against the exact path and the scalar gradient */
+  if (n >= 3 && n <= SHLIGHT_UNROLLED_BANDS && shli_sh_eval_grad_avx512(n, d, out_y, out_grad)) {
+    return;
+  }
+#endif
+  shli_sh_grad_frame(d, g);
+  shli_sh_eval_xyz(n, g[0], g[1], g[2], out_y);
+#if SHLIGHT_SIMD_EVAL
+  if (n >= 5 && n <= SHLIGHT_UNROLLED_BANDS && g[4] == 1.0f) {
+    shli_sh_grad_avx512(n, out_y, g[0], g[1], g[2], g[3], 0, 0, 0, out_grad);
     return;
   }
 #endif
   /* one call (a second inlined copy and a rescaling loop over out_grad cost a shader ~100x
      its compile time): ib = 1 leaves every output exact */
-  shli_sh_grad(n, out_y, SHLIGHT_FLOAT(x), SHLIGHT_FLOAT(y), SHLIGHT_FLOAT(z), ir, ib, out_grad);
+  shli_sh_grad(n, out_y, g[0], g[1], g[2], g[3], g[4], out_grad);
+}
+
+float shli_sh_grad_dot_band(int l, float y[SHLIGHT_MAX_COEFFS], float sh[SHLIGHT_MAX_COEFFS],
+                            inout vec3 io_g) {
+  float gb[93];
+  float cs[31];
+  float v = 0.0f;
+  int k;
+  shli_sh_grad_band(l, y, 0.0f, 0.0f, 0.0f, 1.0f, 1.0f, gb);
+  for (k = 0; k < 31; ++k) {
+    cs[k] = 0.0f;
+    if (k >= 15 - l && k <= 15 + l) {
+      cs[k] = sh[l * l + l + k - 15];
+    }
+  }
+  for (k = 0; k < 31; ++k) {
+    if (k >= 15 - l && k <= 15 + l) {
+      io_g[0] = io_g[0] + cs[k] * gb[3 * k];
+      io_g[1] = io_g[1] + cs[k] * gb[3 * k + 1];
+      io_g[2] = io_g[2] + cs[k] * gb[3 * k + 2];
+      v = v + cs[k] * y[l * l + l + k - 15];
+    }
+  }
+  return v;
+}
+
+float shl_sh_eval_dot_grad(int n, float sh[SHLIGHT_MAX_COEFFS], vec3 d, out vec3 out_grad) {
+  float ysh[SHLI_YBUF_COEFFS];
+  float vb[SHLIGHT_MAX_BANDS];
+  float g[8];
+  float f = 0.0f;
+  float t = 0.0f;
+  int l;
+  n = shli_bands(n < SHLIGHT_UNROLLED_BANDS ? n : SHLIGHT_UNROLLED_BANDS);
+  SHLIGHT_SET3(out_grad, 0.0f, 0.0f, 0.0f);
+  if (n < 1) {
+    return 0.0f;
+  }
+#if !SHLIGHT_BY_BANDS
+  return shli_sh_dot_grad_c(n, sh, d, out_grad);
+#endif
+  shli_sh_grad_frame(d, g);
+  shli_sh_eval_xyz(n, g[0], g[1], g[2], ysh);
+  /* a band per trip; the arrays vb and cs make Mesa unroll the loops (docs/glsl.md) */
+  for (l = 0; l < SHLIGHT_MAX_BANDS; ++l) {
+    vb[l] = 0.0f;
+    if (l == 0) {
+      vb[l] = sh[0] * ysh[0];
+    } else if (l < n) {
+      vb[l] = shli_sh_grad_dot_band(l, ysh, sh, out_grad);
+    }
+  }
+  for (l = 0; l < SHLIGHT_MAX_BANDS; ++l) {
+    f = f + vb[l];
+    t = t + SHLIGHT_ITOF(l) * vb[l];
+  }
+  for (l = 0; l < 3; ++l) {
+    out_grad[l] = ((out_grad[l] - t * g[l]) * g[3]) * g[4];
+  }
+  return f;
 }
 
 #ifdef SHLIGHT_REFERENCE_FORMS

@@ -12,6 +12,7 @@
 void bands_sh_core(int n, double x, double y, double z, double t, float sg, float *out_y);
 void bands_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir, float ib,
                    float (*out_grad)[3]);
+float bands_sh_eval_dot_grad(int n, const float *sh, const float d[3], float out_grad[3]);
 
 /* shli_sh_core of the GLSL shape */
 void bands_sh_core(int n, double x, double y, double z, double t, float sg, float *out_y) {
@@ -22,4 +23,9 @@ void bands_sh_core(int n, double x, double y, double z, double t, float sg, floa
 void bands_sh_grad(int n, const float *y, float nx, float ny, float nz, float ir, float ib,
                    float (*out_grad)[3]) {
   shli_sh_grad(n, y, nx, ny, nz, ir, ib, out_grad);
+}
+
+/* shl_sh_eval_dot_grad of the GLSL shape (the portable kernel, n <= 16) */
+float bands_sh_eval_dot_grad(int n, const float *sh, const float d[3], float out_grad[3]) {
+  return shl_sh_eval_dot_grad(n, sh, d, out_grad);
 }

@@ -13,6 +13,7 @@ int main(void) {
   float ys[3] = {0.6f, 0.0f, 0.0f}, zs[3] = {0.8f, 1.0f, 0.0f}, yb[3 * 64];
   shl_sh_eval(8, d, y);
   shl_sh_eval_grad(8, d, y, g);
+  if (!(fabs((double)shl_sh_eval_dot_grad(8, y, d, g[0])) < 1e30)) return 1;
   shl_sh_eval_accurate(8, d, y);
   shl_sh_eval_batch(8, 3, xs, ys, zs, yb);
 #ifndef MATRIX_ALONE

@@ -1680,6 +1680,258 @@ static void test_hard_huge_tiny(void) {
   }
 }
 
+/* ---------------------------------------------------------------- shl_sh_eval_dot_grad */
+/* f = sum_i c_i Y_i and its gradient against the double sums of shl_sh_eval_grad's outputs (a
+ * different summation: n^2 basis gradients, each within the gradient target). Bounds: the
+ * targets of shl_sh_eval / shl_sh_eval_grad applied to every term, value: target_eval(n)
+ * sum|c_i|, gradient: target_grad_rel(n) max|grad Y| sum|c_i|. */
+static float dg_c[MAXC];
+static void dg_coeffs(int n) {
+  int i;
+  for (i = 0; i < n * n; i++)
+    dg_c[i] = (float)(2.0 * sm_u01() - 1.0);
+}
+/* directions: random unit, |d| log-uniform in [1e-3, 1e3], near-pole, exact poles, axes */
+static void dg_dirs(float (*d)[3], int count) {
+  int j;
+  gen_random(d, count / 2);
+  gen_nearpole(d + count / 2, count / 4);
+  for (j = 0; j < count / 4; j++) {
+    double v[3], s = pow(10.0, -3.0 + 6.0 * sm_u01());
+    rand_dir_d(v);
+    if (j < 6) v[0] = v[1] = v[2] = 0.0, v[j % 3] = j < 3 ? 1.0 : -1.0;
+    to_float3(v, s, d[count / 2 + count / 4 + j]);
+  }
+}
+/* max |err| / bound over the directions (rel: |err| / sum_i |c_i Y_i|, value, and / sum_i |c_i|
+ * max_k |dY_i / dd_k|, gradient); *ok = 0 on a non-finite result */
+static double dg_rel[2];
+static void dg_vs_sum(int n, const float d[3], double *ev, double *eg, int *ok) {
+  double sv = 0.0, sg[3] = {0.0, 0.0, 0.0}, ca = 0.0, gm = 0.0, cy = 0.0, cg = 0.0, gi;
+  float g[3], f;
+  int i, k;
+  shl_sh_eval_grad(n, d, g_y, g_g);
+  for (i = 0; i < n * n; i++) {
+    sv += (double)dg_c[i] * (double)g_y[i];
+    ca += fabs((double)dg_c[i]);
+    cy += fabs((double)dg_c[i] * (double)g_y[i]);
+    gi = 0.0;
+    for (k = 0; k < 3; k++) {
+      sg[k] += (double)dg_c[i] * (double)g_g[i][k];
+      gi = fmax(gi, fabs((double)g_g[i][k]));
+    }
+    gm = fmax(gm, gi);
+    cg += fabs((double)dg_c[i]) * gi;
+  }
+  f = shl_sh_eval_dot_grad(n, dg_c, d, g);
+  *ok &= isfinite(f) && isfinite(g[0]) && isfinite(g[1]) && isfinite(g[2]);
+  *ev = fmax(*ev, fabs((double)f - sv) / (target_eval(n) * ca));
+  dg_rel[0] = fmax(dg_rel[0], fabs((double)f - sv) / cy);
+  for (k = 0; k < 3; k++) {
+    *eg = fmax(*eg, fabs((double)g[k] - sg[k]) / (target_grad_rel(n) * gm * ca + 1e-30));
+    if (cg > 0.0) dg_rel[1] = fmax(dg_rel[1], fabs((double)g[k] - sg[k]) / cg);
+  }
+}
+static void test_dot_grad_vs_sum(void) {
+  static const int ns[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+  static float d[64][3];
+  int t, j;
+  sm_state = 0xD06u;
+  printf("  shl_sh_eval_dot_grad vs sum_i c_i (Y_i, grad Y_i) of shl_sh_eval_grad (double sums), "
+         "64 directions, max err / bound:\n");
+  for (t = 0; t < (int)(sizeof ns / sizeof ns[0]); t++) {
+    int n = ns[t], ok = 1;
+    double ev = 0.0, eg = 0.0;
+    if (n > MAXB) continue;
+    dg_coeffs(n);
+    dg_dirs(d, 64);
+    dg_rel[0] = dg_rel[1] = 0.0;
+    for (j = 0; j < 64; j++)
+      dg_vs_sum(n, d[j], &ev, &eg, &ok);
+    printf("  n=%2d value %.3f gradient %.3f (relative to sum |terms|: %.2e, %.2e)\n", n, ev, eg,
+           dg_rel[0], dg_rel[1]);
+    TL_CHECK(ok, "n=%d: non-finite result", n);
+    TL_CHECK(ev <= 1.0, "n=%d: value err %.3f of the bound", n, ev);
+    TL_CHECK(eg <= 1.0, "n=%d: gradient err %.3f of the bound", n, eg);
+  }
+}
+
+/* against central differences of f = sum_i c_i Y_i in binary128 (the 5-point stencil of
+ * tests/ref/shref.h, h = 2^-30 |d|) and f itself in binary128; bounds as above with max|grad Y|
+ * replaced by Unsold's bound sqrt(l(l+1)(2l+1)/4pi) / |d| of band n - 1 */
+static shref_q dg_f_q(int n, const shref_q p[3]) {
+  static shref_q yq[REFC];
+  shref_q s = 0;
+  int i;
+  shref_eval_q(n, p[0], p[1], p[2], yq);
+  for (i = 0; i < n * n; i++)
+    s += (shref_q)dg_c[i] * yq[i];
+  return s;
+}
+static void test_dot_grad_fd(void) {
+  static const int ns[] = {1, 2, 3, 4, 6, 9, 12, 16};
+  static float d[16][3];
+  int t, j, k, s;
+  sm_state = 0xFDu;
+  for (t = 0; t < (int)(sizeof ns / sizeof ns[0]); t++) {
+    int n = ns[t];
+    double ev = 0.0, eg = 0.0, ca = 0.0, sv = 0.0, sgr = 0.0, rv = 0.0, rg = 0.0;
+    if (n > MAXB) continue;
+    dg_coeffs(n);
+    dg_dirs(d, 16);
+    for (j = 0; j < n * n; j++) {
+      int l = (int)sqrt((double)j);
+      ca += fabs((double)dg_c[j]);
+      sv += fabs((double)dg_c[j]) * ymax_band(l);   /* scales of the report: sum_i |c_i| max|Y_i| */
+      sgr += fabs((double)dg_c[j]) * grad_scale(l); /* and sum_i |c_i| max|grad Y_i| |d| */
+    }
+    for (j = 0; j < 16; j++) {
+      shref_q p[3], h, r, fq[4], q[3];
+      float g[3], f = shl_sh_eval_dot_grad(n, dg_c, d[j], g);
+      double gb = grad_scale(n > 1 ? n - 1 : 1); /* n = 1: exact 0 against the FD noise */
+      for (k = 0; k < 3; k++)
+        p[k] = (shref_q)d[j][k];
+      r = sqrtq(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+      h = r * (shref_q)9.313225746154785e-10; /* 2^-30 |d| */
+      ev = fmax(ev, fabs((double)f - (double)dg_f_q(n, p)) / (target_eval(n) * ca));
+      rv = fmax(rv, fabs((double)f - (double)dg_f_q(n, p)) / sv);
+      for (k = 0; k < 3; k++) {
+        for (s = 0; s < 4; s++) {
+          memcpy(q, p, sizeof q);
+          q[k] += h * (shref_q)(s < 2 ? s - 2 : s - 1);
+          fq[s] = dg_f_q(n, q);
+        }
+        double e =
+            fabs((double)g[k] - (double)((fq[0] - 8 * fq[1] + 8 * fq[2] - fq[3]) / (12 * h))) *
+            (double)r;
+        eg = fmax(eg, e / (target_grad_rel(n) * gb * ca + 1e-30));
+        if (sgr > 0.0) rg = fmax(rg, e / sgr);
+      }
+    }
+    printf("  n=%2d vs binary128 f and its central differences: value %.3f, gradient %.3f "
+           "of the bound (%.2e, %.2e of sum_i |c_i| max|Y_i|, max|grad Y_i|)\n",
+           n, ev, eg, rv, rg);
+    TL_CHECK(ev <= 1.0, "n=%d: value err %.3f of the bound", n, ev);
+    TL_CHECK(eg <= 1.0, "n=%d: gradient err %.3f of the bound", n, eg);
+  }
+}
+
+/* the C path (shl_sh_eval_grad and the sums, n <= 16) against the portable kernel (the GLSL
+ * twin's body, tests/bands_impl.c), n = 1..16: within the bounds above */
+float bands_sh_eval_dot_grad(int n, const float *sh, const float d[3], float out_grad[3]);
+static void test_dot_grad_portable(void) {
+  static float d[64][3];
+  float ga[3], gb[3], fa, fb;
+  int n, j, k, fin = 1;
+  double ev = 0.0, eg = 0.0;
+  sm_state = 0xB4Du;
+  for (n = 1; n <= 16 && n <= MAXB; n++) {
+    double ca = 0.0, gm = grad_scale(n - 1);
+    dg_coeffs(n);
+    dg_dirs(d, 64);
+    for (j = 0; j < n * n; j++)
+      ca += fabs((double)dg_c[j]);
+    for (j = 0; j < 64; j++) {
+      double r = norm3f(d[j]);
+      fa = shl_sh_eval_dot_grad(n, dg_c, d[j], ga);
+      fb = bands_sh_eval_dot_grad(n, dg_c, d[j], gb);
+      fin &= isfinite(fb) && isfinite(gb[0]) && isfinite(gb[1]) && isfinite(gb[2]);
+      ev = fmax(ev, fabs((double)fa - (double)fb) / (target_eval(n) * ca));
+      for (k = 0; k < 3; k++)
+        eg = fmax(eg, fabs((double)ga[k] - (double)gb[k]) * r / (target_grad_rel(n) * gm * ca));
+    }
+  }
+  printf("  portable kernel vs the C path, n = 1..16: value %.3f, gradient %.3f of the bound\n", ev,
+         eg);
+  TL_CHECK(fin, "portable kernel: non-finite result");
+  TL_CHECK(ev <= 1.0, "value err %.3f of the bound", ev);
+  TL_CHECK(eg <= 1.0, "gradient err %.3f of the bound", eg);
+}
+
+/* zero / NaN / inf d: f at (0,0,1) and a zero gradient; n < 1: 0 and a zero gradient; n past
+ * the maximum: as the maximum; |d| near the float limits: gradient = (gradient at d / |d|) / |d|,
+ * entries past FLT_MAX are +-inf of the right sign, the others within the bound; never NaN */
+static void test_hard_dot_grad(void) {
+  static const int ns[] = {1, 4, 9, 16};
+  float bad[5][3] = {{0.0f, 0.0f, 0.0f},
+                     {0.0f, 0.0f, 0.0f},
+                     {1.0f, 0.0f, 0.0f},
+                     {0.0f, 0.0f, 0.0f},
+                     {0.0f, 0.0f, 0.0f}};
+  static const double scl[] = {1e-38, 3e-39, 1e-44, 1e-30, 1.7e38, 1e30};
+  float g[3], ga[3], f, fa, z[3] = {0.0f, 0.0f, 1.0f};
+  int t, j, k, s;
+  bad[1][2] = -0.0f;
+  bad[2][1] = NAN;
+  bad[3][0] = INFINITY;
+  bad[4][2] = -INFINITY;
+  for (t = 0; t < 4; t++) {
+    int n = ns[t], ok = 1, inf = 0;
+    double e = 0.0, ca = 0.0, sv = 0.0;
+    if (n > MAXB) continue;
+    sm_state = 0x11u + (uint64_t)n;
+    dg_coeffs(n);
+    shl_sh_eval(n, z, g_y);
+    for (j = 0; j < n * n; j++)
+      ca += fabs((double)dg_c[j]), sv += (double)dg_c[j] * (double)g_y[j];
+    for (j = 0; j < 5; j++) {
+      f = shl_sh_eval_dot_grad(n, dg_c, bad[j], g);
+      ok &= fabs((double)f - sv) <= target_eval(n) * ca && g[0] == 0.0f && g[1] == 0.0f &&
+            g[2] == 0.0f;
+    }
+    TL_CHECK(ok, "n=%d: zero / NaN / inf d", n);
+    g[0] = 7.0f;
+    TL_CHECK(shl_sh_eval_dot_grad(0, dg_c, z, g) == 0.0f && g[0] == 0.0f, "n=0");
+    g[0] = 7.0f;
+    TL_CHECK(shl_sh_eval_dot_grad(-3, dg_c, z, g) == 0.0f && g[0] == 0.0f, "n=-3");
+    for (s = 0; s < 6; s++)
+      for (j = 0; j < 4; j++) {
+        double v[3], gr[3], r;
+        float d[3], u[3];
+        sm_state = 0x77u + (uint64_t)j;
+        rand_dir_d(v);
+        if (j == 3) v[0] = 0.0, v[1] = 0.0, v[2] = -1.0;
+        to_float3(v, scl[s], d);
+        for (k = 0; k < 3; k++) /* the stored floats (gcc -O2 forwarded the unrounded denormals) */
+          d[k] = ((volatile float *)d)[k];
+        r = norm3f(d);
+        for (k = 0; k < 3; k++)
+          u[k] = (float)((double)d[k] / r);
+        fa = shl_sh_eval_dot_grad(n, dg_c, u, ga);
+        f = shl_sh_eval_dot_grad(n, dg_c, d, g);
+        ok &= fabs((double)f - (double)fa) <= target_eval(n) * ca;
+        for (k = 0; k < 3; k++) {
+          gr[k] = (double)ga[k] / r;
+          ok &= !isnan(g[k]);
+          if (fabs(gr[k]) > 3.5e38) {
+            inf++;
+            ok &= isinf(g[k]) && (g[k] > 0) == (gr[k] > 0);
+          } else if (fabs(gr[k]) < 3.3e38) {
+            e = fmax(e, fabs((double)g[k] - gr[k]) * r /
+                            (target_grad_rel(n) * grad_scale(n - 1) * ca));
+          }
+        }
+      }
+    printf("  n=%2d: tiny / huge |d|: %d entries past FLT_MAX (+-inf), the others %.3f of the "
+           "bound\n",
+           n, inf, e);
+    TL_CHECK(ok, "n=%d: tiny / huge |d|", n);
+    TL_CHECK(e <= 1.0, "n=%d: tiny / huge |d| gradient %.3f of the bound", n, e);
+    if (n == 16) TL_CHECK(inf > 0, "the overflowing case was not reached");
+  }
+  {
+    /* n > 16 bands: taken as 16 (in C as in GLSL) */
+    static const int big[] = {17, 64, 1000};
+    float g2[3], f2, d[3] = {0.3f, -0.5f, 0.8f};
+    dg_coeffs(MAXB < 16 ? MAXB : 16);
+    f = shl_sh_eval_dot_grad(16, dg_c, d, g);
+    for (t = 0; t < 3; t++) {
+      f2 = shl_sh_eval_dot_grad(big[t], dg_c, d, g2);
+      TL_CHECK(f == f2 && g[0] == g2[0] && g[1] == g2[1] && g[2] == g2[2], "n=%d as 16", big[t]);
+    }
+  }
+}
+
 int main(void) {
   PI_D = acos(-1.0);
   setvbuf(stdout, NULL, _IOLBF, 0);
@@ -1710,5 +1962,9 @@ int main(void) {
   TL_RUN(test_hard_huge_tiny);
   TL_RUN(test_hard_batch_large);
   TL_RUN(test_hard_mxcsr_restored);
+  TL_RUN(test_dot_grad_vs_sum);
+  TL_RUN(test_dot_grad_fd);
+  TL_RUN(test_dot_grad_portable);
+  TL_RUN(test_hard_dot_grad);
   return tl_summary();
 }

@@ -155,6 +155,64 @@ static void check_grad_compute(int n) {
   TL_CHECK(err_g <= tol_y(n) * (1 + n), "grad n=%d: %.3e > %.3e", n, err_g, tol_y(n) * (1 + n));
 }
 
+/* shl_sh_eval_dot_grad on the compute path against C (non-unit inputs, the zero vector, poles):
+ * f within tol_y(n) sum|c_i| and the gradient within tol_y(n) (1 + n) sum|c_i| max|grad Y| (the
+ * tolerances above applied to every term); coefficients in [-1, 1] as a constant array */
+static void check_dot_grad_compute(int n) {
+  static float in[NDIR * 3], out[NDIR * 4], sh[256], y[256], g[256][3];
+  static char main_src[8192];
+  double err_v = 0.0, err_g = 0.0, ca = 0.0;
+  int i, k, ok;
+  size_t at;
+  make_dirs(1);
+  memcpy(in, dirs, sizeof in);
+  set_bands(n);
+  for (i = 0; i < n * n; ++i) {
+    sh[i] = (float)(2.0 * rnd() - 1.0);
+    ca += fabs((double)sh[i]);
+  }
+  at = (size_t)snprintf(main_src, sizeof main_src, "const float C[%d] = float[%d](", n * n, n * n);
+  for (i = 0; i < n * n; ++i)
+    at += (size_t)snprintf(main_src + at, sizeof main_src - at, "%s%.9g", i ? ", " : "",
+                           (double)sh[i]);
+  snprintf(main_src + at, sizeof main_src - at,
+           ");\n"
+           "void glrun_main(int item) {\n"
+           "  float sh[SHLIGHT_MAX_COEFFS];\n"
+           "  vec3 g;\n"
+           "  for (int i = 0; i < %d; ++i) sh[i] = C[i];\n"
+           "  float f = shl_sh_eval_dot_grad(%d, sh, vec3(in_float(0), in_float(1), in_float(2)), "
+           "g);\n"
+           "  out_float(0, f);\n"
+           "  out_float(1, g.x);\n"
+           "  out_float(2, g.y);\n"
+           "  out_float(3, g.z);\n"
+           "}\n",
+           n * n, n);
+  ok = glrun_compute(defines, files_grad, 3, main_src, in, (size_t)NDIR * 3, out, (size_t)NDIR * 4,
+                     NDIR) == 0;
+  TL_CHECK(ok, "compute build/run failed for dot_grad n=%d: %s", n, glrun_last_log());
+  if (!ok) return;
+  for (i = 0; i < NDIR; ++i) {
+    double gmax = 0.0, e;
+    float gc[3], f = shl_sh_eval_dot_grad(n, sh, dirs[i], gc);
+    shl_sh_eval_grad(n, dirs[i], y, g);
+    for (k = 0; k < 3 * n * n; ++k)
+      if (fabs((double)g[k / 3][k % 3]) > gmax) gmax = fabs((double)g[k / 3][k % 3]);
+    e = fabs((double)out[4 * i] - (double)f) / ca;
+    if (!(e <= err_v)) err_v = e; /* NaN counts as failure */
+    for (k = 0; k < 3; ++k) {
+      e = fabs((double)out[4 * i + 1 + k] - (double)gc[k]) / (ca * (gmax > 0.0 ? gmax : 1.0));
+      if (!(e <= err_g)) err_g = e;
+    }
+  }
+  printf("     shl_sh_eval_dot_grad compute n=%2d: max |df| / sum|c| = %.2e, max |dgrad| / "
+         "(sum|c| max|grad Y|) = %.2e\n",
+         n, err_v, err_g);
+  TL_CHECK(err_v <= tol_y(n), "dot_grad value n=%d: %.3e", n, err_v);
+  TL_CHECK(err_g <= tol_y(n) * (1 + n), "dot_grad n=%d: %.3e > %.3e", n, err_g, tol_y(n) * (1 + n));
+}
+
 /* the paper's spherical partials and Jacobian, away from the poles (singular there) */
 static void check_spherical_compute(int n) {
   static float in[NDIR * 3], out[NDIR * 6 * 100], y[100], dt[100], dp[100], g[100][3];
@@ -454,6 +512,13 @@ static void test_grad_compute(void) {
     if ((!subset() || ns[i] == 4) && (ns[i] < 16 || full())) check_grad_compute(ns[i]);
 }
 
+static void test_dot_grad_compute(void) {
+  static const int ns[] = {1, 2, 3, 4, 6, 9, 12, 16};
+  size_t i;
+  for (i = 0; i < sizeof ns / sizeof ns[0]; ++i)
+    if (!subset() || ns[i] == 4 || ns[i] == 16) check_dot_grad_compute(ns[i]);
+}
+
 static void test_spherical_compute(void) {
   check_spherical_compute(3);
   if (!subset()) check_spherical_compute(10);
@@ -471,6 +536,7 @@ int main(void) {
   if (tl_failed) return tl_summary();
   TL_RUN(test_eval_compute);
   TL_RUN(test_grad_compute);
+  TL_RUN(test_dot_grad_compute);
   TL_RUN(test_spherical_compute);
   TL_RUN(test_light_compute);
   TL_RUN(test_eval_fragment);

@@ -936,6 +936,9 @@ def glsl_param(prm, fname):
     m = re.match(r'^const float (\w+)\[3\]$', prm)
     if m:
         return 'vec3 ' + m.group(1)
+    m = re.match(r'^float ((out|io)_\w+)\[3\]$', prm)
+    if m:
+        return '%s vec3 %s' % ('out' if m.group(2) == 'out' else 'inout', m.group(1))
     m = re.match(r'^(const )?float \(\*(\w+)\)\[3\]$', prm)
     if m:
         qual = '' if m.group(1) else ('inout ' if m.group(2).startswith('io_') else 'out ')
