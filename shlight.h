@@ -2368,25 +2368,34 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
 }
 
 #if !SHLIGHT_BY_BANDS
-/* C: shl_sh_eval_grad and the sums (overflow: again at d / |d|, times ir ib) */
+/* C: shl_sh_eval_grad and the sums, four independent partial sums per output (overflow: again
+   at d / |d|, times ir ib) */
 SHLIGHT_CPU_INLINE float shli_sh_dot_grad_c(int n, const float *sh, const float d[3],
                                             float *out_grad) {
   float y[256], gr[256][3], g[8] = {0.0f, 0.0f, 0.0f, 1.0f, 1.0f, 0.0f, 0.0f, 0.0f};
-  shli_real s[4], e;
-  int i, k, p;
+  shli_real s[4][4], t[4], c;
+  int i, j, k, p;
   for (p = 0; p < 2; ++p) {
     shl_sh_eval_grad(n, p ? g : d, y, gr);
-    s[0] = s[1] = s[2] = s[3] = 0.0;
-    for (i = 0; i < n * n; ++i)
-      for (k = 0; k < 4; ++k)
-        s[k] += (shli_real)sh[i] * (shli_real)(k ? gr[i][k - 1] : y[i]);
+    for (i = 0; i < 16; ++i)
+      s[i >> 2][i & 3] = 0.0;
+    for (i = 0; i < n * n; ++i) {
+      j = i & 3;
+      c = (shli_real)sh[i];
+      s[0][j] += c * (shli_real)y[i];
+      s[1][j] += c * (shli_real)gr[i][0];
+      s[2][j] += c * (shli_real)gr[i][1];
+      s[3][j] += c * (shli_real)gr[i][2];
+    }
+    for (k = 0; k < 4; ++k)
+      t[k] = (s[k][0] + s[k][1]) + (s[k][2] + s[k][3]);
     for (k = 0; k < 3; ++k)
-      out_grad[k] = SHLIGHT_FLOAT(s[k + 1] * (shli_real)g[3]) * g[4];
-    e = s[1] + s[2] + s[3];
-    if (e - e == 0.0) break;
+      out_grad[k] = SHLIGHT_FLOAT(t[k + 1] * (shli_real)g[3]) * g[4];
+    c = t[1] + t[2] + t[3];
+    if (c - c == 0.0) break;
     shli_sh_grad_frame(d, g);
   }
-  return SHLIGHT_FLOAT(s[0]);
+  return SHLIGHT_FLOAT(t[0]);
 }
 #endif
 
