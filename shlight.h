@@ -3108,84 +3108,143 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
                                              double sg) { \
     shli_rot_high(nn, sh, out_sh, ca, sa, cb, sb, cg, sg); \
   }
-#if defined(__AVX2__)
-/* n = 4 (band 3): two groups per vector, P = (A0, B0, A1, B1), Q = (C0, D0, C1, D1); the z
-   rotations and X(+90) (columns U0, U1 for P, V0, V1 for Q) in it: docs/rotation.md, method 2 */
-static const shli_rot_v4 SHLI_ROT_X3P[4] = {
-    {-0.61237243569579447, 0.61237243569579447, -0.79056941504209488, 0.79056941504209488},
-    {-0.79056941504209488, 0.79056941504209488, 0.61237243569579447, -0.61237243569579447},
-    {-0.25, 0.0, -0.96824583655185426, 0.0},
-    {-0.96824583655185426, 0.0, 0.25, -1.0}};
-#define SHLI_ROT_SW(v) SHLI_ROT_SHUF(v, v, 1, 0, 3, 2)
-#define SHLI_ROT_LO(v) SHLI_ROT_SHUF(v, v, 0, 1, 0, 1)
-#define SHLI_ROT_HI(v) SHLI_ROT_SHUF(v, v, 2, 3, 2, 3)
-SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_h4(int n, const float *sh, float *out_sh,
-                                                        double ca, double sa, double cb, double sb,
-                                                        double cg, double sg) {
-  shli_rot_v4 zr = {cg, -cb, -ca, -ca}; /* lane 3: not used */
-  shli_rot_v4 zi = {sg, -sb, -sa, -sa};
-  shli_rot_v4 one = {1.0, 1.0, 1.0, 1.0};
+#if defined(__AVX2__) && defined(__FMA__)
+/* n = 4..6: bands 3..5 in float lanes, two groups per vector, interleaved: V1 = (A, B), V2 =
+   (D, C), lane j holding |m| = j; a z rotation by Cq = cos(j t), Sq = (-1)^j sin(j t) is V1 Cq
+   - V2 Sq, V2 Cq + V1 Sq; X(+90) one 64-bit broadcast (a lane pair, from memory) per input
+   lane k (odd l: V1's pairs swapped, even l: V2's) */
+#define SHLI_ROT_PM(j) ((j) <= l ? -1 : 0)
+#define SHLI_ROT_QM(j) ((j) >= 7 - l && (j) < 7 ? -1 : 0)
+#define SHLI_ROT_XC(o0, o1, k) \
+  _mm256_setr_ps((float)t[(o0) + 4 * (k)], (float)t[(o1) + 4 * (k)], (float)t[(o0) + 4 * (k) + 1], \
+                 (float)t[(o1) + 4 * (k) + 1], (float)t[(o0) + 4 * (k) + 2], \
+                 (float)t[(o1) + 4 * (k) + 2], (float)t[(o0) + 4 * (k) + 3], \
+                 (float)t[(o1) + 4 * (k) + 3])
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const __m256 *cs, const float *sh,
+                                                      float *out_sh) {
+  const double *t = SHLI_ROT_X90 + 64 * (l - 3);
+  int b = l * l + l;
+  __m256i pm = _mm256_setr_epi32(SHLI_ROT_PM(0), SHLI_ROT_PM(1), SHLI_ROT_PM(2), SHLI_ROT_PM(3),
+                                 SHLI_ROT_PM(4), SHLI_ROT_PM(5), SHLI_ROT_PM(6), SHLI_ROT_PM(7));
+  __m256i qm = _mm256_setr_epi32(SHLI_ROT_QM(0), SHLI_ROT_QM(1), SHLI_ROT_QM(2), SHLI_ROT_QM(3),
+                                 SHLI_ROT_QM(4), SHLI_ROT_QM(5), SHLI_ROT_QM(6), SHLI_ROT_QM(7));
+  __m256i rv = _mm256_setr_epi32(7, 6, 5, 4, 3, 2, 1, 0);
+  /* m >= 0 and m <= 0 (reversed, m = 0 zero) in lanes |m|, interleaved */
+  __m256 p = _mm256_maskload_ps(sh + b, pm);
+  __m256 q = _mm256_permutevar8x32_ps(_mm256_maskload_ps(sh + b - 7, qm), rv);
+  __m256 v1 = _mm256_blend_ps(p, q, 0xaa);
+  __m256 v2 = _mm256_blend_ps(q, p, 0xaa);
+  __m256 w1 = v1;
+  __m256 w2 = v2;
+  double wm[8];
+  int i;
+  int k;
+  SHLI_ROT_UNROLL
+  for (i = 0; i < 3; ++i) {
+    w1 = _mm256_fmsub_ps(v1, cs[2 * i], _mm256_mul_ps(v2, cs[2 * i + 1]));
+    w2 = _mm256_fmadd_ps(v2, cs[2 * i], _mm256_mul_ps(v1, cs[2 * i + 1]));
+    if (i == 2) {
+      break;
+    }
+    _mm256_storeu_ps((float *)wm, l % 2 ? _mm256_permute_ps(w1, 0xb1) : w1);
+    _mm256_storeu_ps((float *)(wm + 4), l % 2 ? w2 : _mm256_permute_ps(w2, 0xb1));
+    v1 = _mm256_mul_ps(_mm256_castpd_ps(_mm256_broadcast_sd(wm)), SHLI_ROT_XC(0, 48, 0));
+    v2 = _mm256_mul_ps(_mm256_castpd_ps(_mm256_broadcast_sd(wm + 4)), SHLI_ROT_XC(32, 16, 0));
+    SHLI_ROT_UNROLL
+    for (k = 1; k <= l / 2; ++k) {
+      v1 =
+          _mm256_fmadd_ps(_mm256_castpd_ps(_mm256_broadcast_sd(wm + k)), SHLI_ROT_XC(0, 48, k), v1);
+      v2 = _mm256_fmadd_ps(_mm256_castpd_ps(_mm256_broadcast_sd(wm + 4 + k)),
+                           SHLI_ROT_XC(32, 16, k), v2);
+    }
+  }
+  _mm256_maskstore_ps(out_sh + b, pm, _mm256_blend_ps(w1, w2, 0xaa));
+  _mm256_maskstore_ps(out_sh + b - 7, qm,
+                      _mm256_permutevar8x32_ps(_mm256_blend_ps(w2, w1, 0xaa), rv));
+}
+#undef SHLI_ROT_PM
+#undef SHLI_ROT_QM
+#undef SHLI_ROT_XC
+/* cos, sin of the multiples of the three angles (double, lanes q), in float lanes j */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_highf(int n, const float *sh, float *out_sh,
+                                                      double ca, double sa, double cb, double sb,
+                                                      double cg, double sg) {
+  shli_rot_v4 zr = {cg, -cb, -ca, 0.0};
+  shli_rot_v4 zi = {sg, -sb, -sa, 0.0};
   shli_rot_v4 ur = zr * zr - zi * zi;
   shli_rot_v4 ui = (zr + zr) * zi;
   shli_rot_v4 o1r = zr * ur - zi * ui;
   shli_rot_v4 o1i = zi * ur + zr * ui;
-  shli_rot_v4 c[3];
-  shli_rot_v4 s[3];
-  const shli_rot_v4 *u = SHLI_ROT_X3P;
-  shli_rot_v4 p;
-  shli_rot_v4 q;
-  shli_rot_v4 p1;
-  shli_rot_v4 q1;
-  __m256 f = _mm256_loadu_ps(sh + 8);
-  (void)n;
-  /* 4 x 4 transposes: lanes q (gamma, beta + pi, alpha + pi) to lanes m */
-  {
-    shli_rot_v4 ni = (one - one) - ui;
-    shli_rot_v4 t0 = SHLI_ROT_SHUF(one, zr, 0, 4, 2, 6);
-    shli_rot_v4 t1 = SHLI_ROT_SHUF(one, zr, 1, 5, 3, 7);
-    shli_rot_v4 t2 = SHLI_ROT_SHUF(ur, o1r, 0, 4, 2, 6);
-    shli_rot_v4 t3 = SHLI_ROT_SHUF(ur, o1r, 1, 5, 3, 7);
-    shli_rot_v4 h0 = SHLI_ROT_SHUF(one - one, zi, 0, 4, 2, 6);
-    shli_rot_v4 h1 = SHLI_ROT_SHUF(one - one, zi, 1, 5, 3, 7);
-    shli_rot_v4 h2 = SHLI_ROT_SHUF(ni, o1i, 0, 4, 2, 6);
-    shli_rot_v4 h3 = SHLI_ROT_SHUF(ni, o1i, 1, 5, 3, 7);
-    c[0] = SHLI_ROT_SHUF(t0, t2, 0, 1, 4, 5);
-    c[1] = SHLI_ROT_SHUF(t1, t3, 0, 1, 4, 5);
-    c[2] = SHLI_ROT_SHUF(t0, t2, 2, 3, 6, 7);
-    s[0] = SHLI_ROT_SHUF(h0, h2, 0, 1, 4, 5);
-    s[1] = SHLI_ROT_SHUF(h1, h3, 0, 1, 4, 5);
-    s[2] = SHLI_ROT_SHUF(h0, h2, 2, 3, 6, 7);
+  __m128 f[16];
+  __m256 y[8];
+  __m256 cs[6];
+  int i;
+  /* f[j], f[8 + j]: cos, (-1)^j sin of j t (lanes q); z^4 = u^2, z^5 = u z^3 */
+  f[0] = _mm_set1_ps(1.0f);
+  f[8] = _mm_setzero_ps();
+  f[1] = _mm256_cvtpd_ps((__m256d)zr);
+  f[9] = _mm256_cvtpd_ps((__m256d)-zi);
+  f[2] = _mm256_cvtpd_ps((__m256d)ur);
+  f[10] = _mm256_cvtpd_ps((__m256d)ui);
+  f[3] = _mm256_cvtpd_ps((__m256d)o1r);
+  f[11] = _mm256_cvtpd_ps((__m256d)-o1i);
+  for (i = 4; i < 8; ++i) {
+    f[i] = f[8];
+    f[8 + i] = f[8];
   }
-  /* P and Q from sh[8 .. 15] (band 3 and sh[8]), D0 zero */
-  f = _mm256_permutevar8x32_ps(f, _mm256_setr_epi32(4, 3, 6, 1, 5, 0, 7, 2));
-  f = _mm256_blend_ps(f, _mm256_setzero_ps(), 0x20);
-  p = (shli_rot_v4)_mm256_cvtps_pd(_mm256_castps256_ps128(f));
-  q = (shli_rot_v4)_mm256_cvtps_pd(_mm256_extractf128_ps(f, 1));
-  p1 = p * c[0] + SHLI_ROT_SW(q) * s[0];
-  q1 = q * SHLI_ROT_SW(c[0]) - SHLI_ROT_SW(p) * SHLI_ROT_SW(s[0]);
-  p = SHLI_ROT_LO(p1) * u[0] + SHLI_ROT_HI(p1) * u[1];
-  q = SHLI_ROT_LO(q1) * u[2] + SHLI_ROT_HI(q1) * u[3];
-  p1 = p * SHLI_ROT_SW(c[1]) + q * SHLI_ROT_SW(s[1]);
-  q1 = q * SHLI_ROT_SW(c[1]) - p * SHLI_ROT_SW(s[1]);
-  p = -(SHLI_ROT_LO(p1) * u[0]) - SHLI_ROT_HI(p1) * u[1];
-  q = SHLI_ROT_LO(q1) * u[2] + SHLI_ROT_HI(q1) * u[3];
-  p1 = p * c[2] + SHLI_ROT_SW(q) * s[2];
-  q1 = q * SHLI_ROT_SW(c[2]) - SHLI_ROT_SW(p) * SHLI_ROT_SW(s[2]);
-  /* (P, Q) to m = -3..3 at out_sh[9 .. 15], out_sh[8] (band 2) kept */
-  f = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm256_cvtpd_ps((__m256d)p1)),
-                           _mm256_cvtpd_ps((__m256d)q1), 1);
-  f = _mm256_permutevar8x32_ps(f, _mm256_setr_epi32(0, 3, 7, 1, 0, 4, 2, 6));
-  f = _mm256_blend_ps(f, _mm256_broadcast_ss(out_sh + 8), 1);
-  _mm256_storeu_ps(out_sh + 8, f);
+  if (n > 4) {
+    f[4] = _mm256_cvtpd_ps((__m256d)(ur * ur - ui * ui));
+    f[12] = _mm256_cvtpd_ps((__m256d)((ur + ur) * ui));
+  }
+  if (n > 5) {
+    f[5] = _mm256_cvtpd_ps((__m256d)(ur * o1r - ui * o1i));
+    f[13] = _mm256_cvtpd_ps((__m256d) - (ui * o1r + ur * o1i));
+  }
+  /* 4 x 8 transposes: cs[2 q] = Cq, cs[2 q + 1] = Sq */
+  SHLI_ROT_UNROLL
+  for (i = 0; i < 2; ++i) {
+    __m256 t0;
+    __m256 t1;
+    __m256 t2;
+    __m256 t3;
+    int a;
+    SHLI_ROT_UNROLL
+    for (a = 0; a < 4; ++a) {
+      y[4 * i + a] =
+          _mm256_insertf128_ps(_mm256_castps128_ps256(f[8 * i + a]), f[8 * i + a + 4], 1);
+    }
+    t0 = _mm256_unpacklo_ps(y[4 * i], y[4 * i + 1]);
+    t1 = _mm256_unpackhi_ps(y[4 * i], y[4 * i + 1]);
+    t2 = _mm256_unpacklo_ps(y[4 * i + 2], y[4 * i + 3]);
+    t3 = _mm256_unpackhi_ps(y[4 * i + 2], y[4 * i + 3]);
+    cs[i] = _mm256_shuffle_ps(t0, t2, 0x44);
+    cs[2 + i] = _mm256_shuffle_ps(t0, t2, 0xee);
+    cs[4 + i] = _mm256_shuffle_ps(t1, t3, 0x44);
+  }
+  if (n > 5) {
+    shli_rot_bandf(5, cs, sh, out_sh);
+  }
+  if (n > 4) {
+    shli_rot_bandf(4, cs, sh, out_sh);
+  }
+  shli_rot_bandf(3, cs, sh, out_sh);
 }
-#undef SHLI_ROT_SW
-#undef SHLI_ROT_LO
-#undef SHLI_ROT_HI
+#define SHLI_ROT_HIGHF_N(name, nn) \
+  SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void name(int n, const float *sh, float *out_sh, double ca, \
+                                             double sa, double cb, double sb, double cg, \
+                                             double sg) { \
+    (void)n; \
+    shli_rot_highf(nn, sh, out_sh, ca, sa, cb, sb, cg, sg); \
+  }
+SHLI_ROT_HIGHF_N(shli_sh_rotate_h4, 4)
+SHLI_ROT_HIGHF_N(shli_sh_rotate_h5, 5)
+SHLI_ROT_HIGHF_N(shli_sh_rotate_h6, 6)
+#undef SHLI_ROT_HIGHF_N
 #else
 SHLI_ROT_HIGH_N(shli_sh_rotate_h4, ((void)n, 4))
-#endif
 SHLI_ROT_HIGH_N(shli_sh_rotate_h5, ((void)n, 5))
 SHLI_ROT_HIGH_N(shli_sh_rotate_h6, ((void)n, 6))
+#endif
 SHLI_ROT_HIGH_N(shli_sh_rotate_h8, (n < 7 ? 7 : n))
 
 /* the portable kernel, out of line: its 7 KB frame is set up only where it runs */
