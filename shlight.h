@@ -3210,8 +3210,11 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_highf(int n, const float *sh, fl
     int a;
     SHLI_ROT_UNROLL
     for (a = 0; a < 4; ++a) {
-      y[4 * i + a] =
-          _mm256_insertf128_ps(_mm256_castps128_ps256(f[8 * i + a]), f[8 * i + a + 4], 1);
+      /* j >= n: upper half left undefined (those lanes are never stored) */
+      y[4 * i + a] = _mm256_castps128_ps256(f[8 * i + a]);
+      if (a + 4 < n) {
+        y[4 * i + a] = _mm256_insertf128_ps(y[4 * i + a], f[8 * i + a + 4], 1);
+      }
     }
     t0 = _mm256_unpacklo_ps(y[4 * i], y[4 * i + 1]);
     t1 = _mm256_unpackhi_ps(y[4 * i], y[4 * i + 1]);
