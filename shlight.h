@@ -2875,29 +2875,6 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
                                                      float *out_sh) {
   const double *t = SHLI_ROT_X90 + 64 * (l - 3);
   int b = l * l + l;
-#if defined(__AVX2__)
-  /* the band's floats from two 8-float windows inside it (one at l = 3, 7 floats): m >= 0 from
-     fp, m < 0 from fn; lanes past l take any in-window value (their results are never stored) */
-  int po = l == 3 ? 4 : 7 - l;
-  int no = l == 3 ? 4 : l;
-  __m256 fp = _mm256_loadu_ps(sh + b - po);
-  __m256 fn = _mm256_loadu_ps(sh + b - no);
-#define SHLI_ROT_PI(m) ((m) <= l ? (m) + po : po)
-#define SHLI_ROT_NI(m) ((m) <= l ? no - (m) : no - 1)
-  __m256 fac = _mm256_permutevar8x32_ps(
-      fp, _mm256_setr_epi32(SHLI_ROT_PI(0), SHLI_ROT_PI(2), SHLI_ROT_PI(4), SHLI_ROT_PI(6),
-                            SHLI_ROT_PI(1), SHLI_ROT_PI(3), SHLI_ROT_PI(5), SHLI_ROT_PI(7)));
-  __m256 fdb = _mm256_permutevar8x32_ps(
-      fn, _mm256_setr_epi32(SHLI_ROT_NI(1), SHLI_ROT_NI(2), SHLI_ROT_NI(4), SHLI_ROT_NI(6),
-                            SHLI_ROT_NI(1), SHLI_ROT_NI(3), SHLI_ROT_NI(5), SHLI_ROT_NI(7)));
-#undef SHLI_ROT_PI
-#undef SHLI_ROT_NI
-  shli_rot_v4 v0 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_castps256_ps128(fac));
-  shli_rot_v4 v1 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_extractf128_ps(fac, 1));
-  shli_rot_v4 v2 = (shli_rot_v4)_mm256_cvtps_pd(
-      _mm256_castps256_ps128(_mm256_blend_ps(fdb, _mm256_setzero_ps(), 1)));
-  shli_rot_v4 v3 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_extractf128_ps(fdb, 1));
-#else
   shli_rot_v4 v0 = {(double)sh[b], (double)sh[b + 2], l >= 4 ? (double)sh[b + 4] : 0.0,
                     l >= 6 ? (double)sh[b + 6] : 0.0};
   shli_rot_v4 v1 = {(double)sh[b + 1], (double)sh[b + 3], l >= 5 ? (double)sh[b + 5] : 0.0,
@@ -2906,7 +2883,6 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
                     l >= 6 ? (double)sh[b - 6] : 0.0};
   shli_rot_v4 v3 = {(double)sh[b - 1], (double)sh[b - 3], l >= 5 ? (double)sh[b - 5] : 0.0,
                     l >= 7 ? (double)sh[b - 7] : 0.0};
-#endif
   shli_rot_v4 w0;
   shli_rot_v4 w1;
   shli_rot_v4 w2;
@@ -3010,6 +2986,41 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1v(const float R[9], const floa
   o = _mm_xor_ps(_mm256_cvtpd_ps(u), _mm_set_ps(0.0f, -0.0f, 0.0f, 0.0f));
   _mm_storeu_ps(out_sh, _mm_blend_ps(o, a, 1));
 }
+/* n >= 4: band 2 in float lanes (R C R^T as in shli_rot_b012): u, v in lanes 0..2, 3..5, then
+   the dots (r1.u, -r2.v, r0.u, -r2.u, r0.u, r1.v); writes out_sh[4 .. 11] (9 .. 11: band 3's,
+   written after) */
+#define SHLI_ROT_P(v, a, b, c, d, e, f) \
+  _mm256_permutevar8x32_ps(v, _mm256_setr_epi32(a, b, c, d, e, f, 0, 0))
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b2v(const float R[9], const float *sh,
+                                                    float *out_sh) {
+  const float k = 0.57735026918962576f;
+  __m256 rl = _mm256_loadu_ps(R);
+  __m256 rh = _mm256_loadu_ps(R + 1);
+  __m256 a = _mm256_loadu_ps(sh + 4);
+  __m256 s = _mm256_broadcast_ss(sh + 6);
+  /* columns x, y, z of C (twice) times R's entries r_0j, r_1j */
+  __m256 u = _mm256_mul_ps(
+      _mm256_fmadd_ps(SHLI_ROT_P(a, 4, 0, 3, 4, 0, 3), _mm256_setr_ps(1, 1, -1, 1, 1, -1, 0, 0),
+                      _mm256_mul_ps(s, _mm256_setr_ps(-k, 0, 0, -k, 0, 0, 0, 0))),
+      SHLI_ROT_P(rl, 0, 0, 0, 3, 3, 3));
+  __m256 d;
+  u = _mm256_fmadd_ps(_mm256_fmadd_ps(SHLI_ROT_P(a, 0, 4, 1, 0, 4, 1),
+                                      _mm256_setr_ps(1, -1, -1, 1, -1, -1, 0, 0),
+                                      _mm256_mul_ps(s, _mm256_setr_ps(0, -k, 0, 0, -k, 0, 0, 0))),
+                      SHLI_ROT_P(rl, 1, 1, 1, 4, 4, 4), u);
+  u = _mm256_fmadd_ps(_mm256_mul_ps(SHLI_ROT_P(a, 3, 1, 2, 3, 1, 2),
+                                    _mm256_setr_ps(-1, -1, 2 * k, -1, -1, 2 * k, 0, 0)),
+                      SHLI_ROT_P(rl, 2, 2, 2, 5, 5, 5), u);
+  d = _mm256_mul_ps(SHLI_ROT_P(u, 0, 3, 0, 0, 0, 3), SHLI_ROT_P(rl, 3, 6, 0, 6, 0, 3));
+  d = _mm256_fmadd_ps(SHLI_ROT_P(u, 1, 4, 1, 1, 1, 4), SHLI_ROT_P(rl, 4, 7, 1, 7, 1, 4), d);
+  d = _mm256_fmadd_ps(SHLI_ROT_P(u, 2, 5, 2, 2, 2, 5), SHLI_ROT_P(rh, 4, 7, 1, 7, 1, 4), d);
+  d = _mm256_fmadd_ps(
+      d, _mm256_setr_ps(1, -1, -0.86602540378443865f, -1, 0.5f, 0, 0, 0),
+      _mm256_mul_ps(SHLI_ROT_P(d, 0, 0, 5, 0, 5, 0),
+                    _mm256_setr_ps(0, 0, -0.86602540378443865f, 0, -0.5f, 0, 0, 0)));
+  _mm256_storeu_ps(out_sh + 4, d);
+}
+#undef SHLI_ROT_P
 #else
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   double r02 = (double)R[2];
@@ -3200,6 +3211,14 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_highf(int n, const float *sh, fl
     f[5] = _mm256_cvtpd_ps((__m256d)(ur * o1r - ui * o1i));
     f[13] = _mm256_cvtpd_ps((__m256d) - (ui * o1r + ur * o1i));
   }
+  if (n > 6) {
+    shli_rot_v4 u2r = ur * ur - ui * ui;
+    shli_rot_v4 u2i = (ur + ur) * ui;
+    f[6] = _mm256_cvtpd_ps((__m256d)(ur * u2r - ui * u2i));
+    f[14] = _mm256_cvtpd_ps((__m256d)(ui * u2r + ur * u2i));
+    f[7] = _mm256_cvtpd_ps((__m256d)(o1r * u2r - o1i * u2i));
+    f[15] = _mm256_cvtpd_ps((__m256d) - (o1i * u2r + o1r * u2i));
+  }
   /* 4 x 8 transposes: cs[2 q] = Cq, cs[2 q + 1] = Sq */
   SHLI_ROT_UNROLL
   for (i = 0; i < 2; ++i) {
@@ -3224,6 +3243,12 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_highf(int n, const float *sh, fl
     cs[2 + i] = _mm256_shuffle_ps(t0, t2, 0xee);
     cs[4 + i] = _mm256_shuffle_ps(t1, t3, 0x44);
   }
+  if (n > 7) {
+    shli_rot_bandf(7, cs, sh, out_sh);
+  }
+  if (n > 6) {
+    shli_rot_bandf(6, cs, sh, out_sh);
+  }
   if (n > 5) {
     shli_rot_bandf(5, cs, sh, out_sh);
   }
@@ -3242,13 +3267,14 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_highf(int n, const float *sh, fl
 SHLI_ROT_HIGHF_N(shli_sh_rotate_h4, 4)
 SHLI_ROT_HIGHF_N(shli_sh_rotate_h5, 5)
 SHLI_ROT_HIGHF_N(shli_sh_rotate_h6, 6)
+SHLI_ROT_HIGHF_N(shli_sh_rotate_h8, (n < 7 ? 7 : n))
 #undef SHLI_ROT_HIGHF_N
 #else
 SHLI_ROT_HIGH_N(shli_sh_rotate_h4, ((void)n, 4))
 SHLI_ROT_HIGH_N(shli_sh_rotate_h5, ((void)n, 5))
 SHLI_ROT_HIGH_N(shli_sh_rotate_h6, ((void)n, 6))
-#endif
 SHLI_ROT_HIGH_N(shli_sh_rotate_h8, (n < 7 ? 7 : n))
+#endif
 
 /* the portable kernel, out of line: its 7 KB frame is set up only where it runs */
 SHLIGHT_INLINE void shli_sh_rotate_any(int n, const float R[9], const float *sh, float *out_sh);
@@ -3383,7 +3409,12 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
     cg = r11 * f;
     sg = r10 * f;
   }
+#if defined(__AVX2__) && defined(__FMA__)
+  shli_rot_b1v(R, sh, out_sh);
+  shli_rot_b2v(R, sh, out_sh);
+#else
   shli_rot_b012(3, R, sh, out_sh);
+#endif
   switch (n) {
   case 4:
     shli_sh_rotate_h4(n, sh, out_sh, ca, sa, cb, sb, cg, sg);
