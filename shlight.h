@@ -2745,15 +2745,10 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
   }
 }
 
-/* shl_sh_rotate's C-only path for n <= SHLI_ROT_FAST_BANDS (GCC / Clang vector extensions;
-   tests/test_rotate.c holds it to the portable kernel below, the GLSL twin's body). R within
-   SHLI_ROT_ORTH of a rotation is taken as given: band 1 is R, band 2 R C R^T; bands 3..7 by
-   zyz angles and Ry(b) = X(-90) Rz(b) X(+90), X(+90) (+90 degrees about x) constant per band
-   and X(-90) = Rz(pi) X(+90) Rz(pi). X(+90) keeps the parities of x and m: four lane groups
-   (A: m = 0, 2, 4, 6; C: 1, 3, 5, 7; D: -, -2, -4, -6; B: -1, -3, -5, -7), each output group
-   from one input group (l even: A A, C D, D C, B B; l odd: A B, C C, D D, B A), a z rotation
-   pairs A with D and C with B lane by lane; double inside, 4 lanes; the table holds each
-   band's four group blocks by columns (docs/rotation.md). */
+/* shl_sh_rotate's C-only path for n <= SHLI_ROT_FAST_BANDS (GCC / Clang; method: docs/rotation.md;
+   tests/test_rotate.c holds it to the portable kernel). Lane groups of a band: A (m = 0, 2, 4,
+   6), C (1, 3, 5, 7), D (-, -2, -4, -6), B (-1, -3, -5, -7); the table: X(+90)'s group blocks
+   of bands 3..7 by columns */
 #ifndef SHLIGHT_ROTATE_FAST
 #if defined(__GNUC__) || defined(__clang__)
 #define SHLIGHT_ROTATE_FAST 1
@@ -2844,19 +2839,13 @@ typedef __INT64_TYPE__ shli_rot_i4 __attribute__((vector_size(32)));
 #endif
 #define SHLI_ROT_LD(v, p) memcpy(&(v), (p), sizeof(v))
 
-/* X(+90)'s broadcasts: AVX from memory (wm, see shli_rot_band), SSE2 from the registers */
-#if defined(__AVX__)
-#define SHLI_ROT_WS const double *ws_ = wm + 4 * src_
-#else
-#define SHLI_ROT_WS shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3))
-#endif
 /* X(+90), output group g of band l (a literal), from the z-rotated groups w0..w3 (A, C, D, B)
    into out (named variables: GCC keeps them in registers) */
 #define SHLI_ROT_X(l, g, out) \
   do { \
     int src_ = SHLI_ROT_SRC(l, g); \
     int k_; \
-    SHLI_ROT_WS; \
+    shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3)); \
     shli_rot_v4 c_; \
     SHLI_ROT_LD(c_, t + 16 * (g) + SHLI_ROT_K0(src_) * 4); \
     out = c_ * ws_[SHLI_ROT_K0(src_)]; \
@@ -2887,9 +2876,6 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
   shli_rot_v4 w1;
   shli_rot_v4 w2;
   shli_rot_v4 w3;
-#if defined(__AVX__)
-  double wm[16];
-#endif
   int i;
   int q;
   SHLI_ROT_UNROLL
@@ -2902,14 +2888,6 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *t
     if (q == 2) {
       break;
     }
-    /* broadcasts from memory, not lane permutes (the asm keeps them loads) */
-#if defined(__AVX__)
-    memcpy(wm, &w0, 32);
-    memcpy(wm + 4, &w1, 32);
-    memcpy(wm + 8, &w2, 32);
-    memcpy(wm + 12, &w3, 32);
-    __asm__ volatile("" : : "r"(wm) : "memory");
-#endif
     SHLI_ROT_X(l, 0, v0);
     SHLI_ROT_X(l, 1, v1);
     SHLI_ROT_X(l, 2, v2);
@@ -3107,30 +3085,26 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
   shli_rot_band(3, tv, sh, out_sh);
   shli_rot_band(4, tv, sh, out_sh);
   shli_rot_band(5, tv, sh, out_sh);
-  shli_rot_band(6, tv, sh, out_sh);
+  if (n > 6) {
+    shli_rot_band(6, tv, sh, out_sh);
+  }
   if (n > 7) {
     shli_rot_band(7, tv, sh, out_sh);
   }
 }
-/* n = 4, 5, 6 and 7..8: one function each */
-#define SHLI_ROT_HIGH_N(name, nn) \
-  SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void name(int n, const float *sh, float *out_sh, double ca, \
-                                             double sa, double cb, double sb, double cg, \
-                                             double sg) { \
-    shli_rot_high(nn, sh, out_sh, ca, sa, cb, sb, cg, sg); \
-  }
 #if defined(__AVX2__) && defined(__FMA__)
-/* n = 4..6: bands 3..5 in float lanes, two groups per vector, interleaved: V1 = (A, B), V2 =
+/* n = 4..8: bands 3..7 in float lanes, two groups per vector, interleaved: V1 = (A, B), V2 =
    (D, C), lane j holding |m| = j; a z rotation by Cq = cos(j t), Sq = (-1)^j sin(j t) is V1 Cq
    - V2 Sq, V2 Cq + V1 Sq; X(+90) one 64-bit broadcast (a lane pair, from memory) per input
    lane k (odd l: V1's pairs swapped, even l: V2's) */
 #define SHLI_ROT_PM(j) ((j) <= l ? -1 : 0)
 #define SHLI_ROT_QM(j) ((j) >= 7 - l && (j) < 7 ? -1 : 0)
-#define SHLI_ROT_XC(o0, o1, k) \
-  _mm256_setr_ps((float)t[(o0) + 4 * (k)], (float)t[(o1) + 4 * (k)], (float)t[(o0) + 4 * (k) + 1], \
-                 (float)t[(o1) + 4 * (k) + 1], (float)t[(o0) + 4 * (k) + 2], \
-                 (float)t[(o1) + 4 * (k) + 2], (float)t[(o0) + 4 * (k) + 3], \
-                 (float)t[(o1) + 4 * (k) + 3])
+/* X(+90)'s column pairs, interleaved */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE __m256 shli_rot_xc(const double *a, const double *b) {
+  return _mm256_setr_ps((float)a[0], (float)b[0], (float)a[1], (float)b[1], (float)a[2],
+                        (float)b[2], (float)a[3], (float)b[3]);
+}
+#define SHLI_ROT_XC(o0, o1, k) shli_rot_xc(t + (o0) + 4 * (k), t + (o1) + 4 * (k))
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const __m256 *cs, const float *sh,
                                                       float *out_sh) {
   const double *t = SHLI_ROT_X90 + 64 * (l - 3);
@@ -3257,24 +3231,21 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_highf(int n, const float *sh, fl
   }
   shli_rot_bandf(3, cs, sh, out_sh);
 }
-#define SHLI_ROT_HIGHF_N(name, nn) \
+#define SHLI_ROT_HIGH shli_rot_highf
+#else
+#define SHLI_ROT_HIGH shli_rot_high
+#endif
+/* n = 4, 5, 6 and 7..8: one function each */
+#define SHLI_ROT_HIGH_N(name, nn) \
   SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void name(int n, const float *sh, float *out_sh, double ca, \
                                              double sa, double cb, double sb, double cg, \
                                              double sg) { \
-    (void)n; \
-    shli_rot_highf(nn, sh, out_sh, ca, sa, cb, sb, cg, sg); \
+    SHLI_ROT_HIGH(nn, sh, out_sh, ca, sa, cb, sb, cg, sg); \
   }
-SHLI_ROT_HIGHF_N(shli_sh_rotate_h4, 4)
-SHLI_ROT_HIGHF_N(shli_sh_rotate_h5, 5)
-SHLI_ROT_HIGHF_N(shli_sh_rotate_h6, 6)
-SHLI_ROT_HIGHF_N(shli_sh_rotate_h8, (n < 7 ? 7 : n))
-#undef SHLI_ROT_HIGHF_N
-#else
 SHLI_ROT_HIGH_N(shli_sh_rotate_h4, ((void)n, 4))
 SHLI_ROT_HIGH_N(shli_sh_rotate_h5, ((void)n, 5))
 SHLI_ROT_HIGH_N(shli_sh_rotate_h6, ((void)n, 6))
 SHLI_ROT_HIGH_N(shli_sh_rotate_h8, (n < 7 ? 7 : n))
-#endif
 
 /* the portable kernel, out of line: its 7 KB frame is set up only where it runs */
 SHLIGHT_INLINE void shli_sh_rotate_any(int n, const float R[9], const float *sh, float *out_sh);
