@@ -2757,7 +2757,7 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
 #endif
 #endif
 #if SHLIGHT_ROTATE_FAST
-#if defined(__AVX2__)
+#if defined(__AVX__)
 #include <immintrin.h>
 #elif defined(__SSE2__)
 #include <emmintrin.h>
@@ -2823,90 +2823,9 @@ static const double SHLI_ROT_X90[320] = {
 #else
 #define SHLI_ROT_SCALAR
 #endif
-/* the input group of output group g (0 A, 1 C, 2 D, 3 B) and its lanes k0 .. k1 - 1 */
-#define SHLI_ROT_SRC(l, g) \
-  ((l) % 2 == 0 ? ((g) == 1 ? 2 : ((g) == 2 ? 1 : (g))) : ((g) == 0 ? 3 : ((g) == 3 ? 0 : (g))))
-#define SHLI_ROT_K0(src) ((src) == 2 ? 1 : 0)
-#define SHLI_ROT_K1(l, src) ((src) == 0 || (src) == 2 ? (l) / 2 + 1 : ((l) + 1) / 2)
 typedef double shli_rot_v4 __attribute__((vector_size(32)));
-typedef __INT64_TYPE__ shli_rot_i4 __attribute__((vector_size(32)));
-/* lanes i, j, k, m of a (0..3) and b (4..7) */
-#if defined(__clang__)
-#define SHLI_ROT_SHUF(a, b, i, j, k, m) __builtin_shufflevector(a, b, i, j, k, m)
-#else
-#define SHLI_ROT_SHUF(a, b, i, j, k, m) \
-  __builtin_shuffle(a, b, __extension__(shli_rot_i4){i, j, k, m})
-#endif
-#define SHLI_ROT_LD(v, p) memcpy(&(v), (p), sizeof(v))
-
-/* X(+90), output group g of band l (a literal), from the z-rotated groups w0..w3 (A, C, D, B)
-   into out (named variables: GCC keeps them in registers) */
-#define SHLI_ROT_X(l, g, out) \
-  do { \
-    int src_ = SHLI_ROT_SRC(l, g); \
-    int k_; \
-    shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3)); \
-    shli_rot_v4 c_; \
-    SHLI_ROT_LD(c_, t + 16 * (g) + SHLI_ROT_K0(src_) * 4); \
-    out = c_ * ws_[SHLI_ROT_K0(src_)]; \
-    SHLI_ROT_UNROLL \
-    for (k_ = 0; k_ < 4; ++k_) { \
-      if (k_ > SHLI_ROT_K0(src_) && k_ < SHLI_ROT_K1(l, src_)) { \
-        SHLI_ROT_LD(c_, t + 16 * (g) + k_ * 4); \
-        out = out + c_ * ws_[k_]; \
-      } \
-    } \
-  } while (0)
-
-/* band l (3 <= l < SHLI_ROT_FAST_BANDS, a literal: the loops unroll) of sh into out_sh;
-   tv[4 q + j]: cos, sin of the even m, of the odd m (j = 0..3), q-th z rotation */
-SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *tv, const float *sh,
-                                                     float *out_sh) {
-  const double *t = SHLI_ROT_X90 + 64 * (l - 3);
-  int b = l * l + l;
-  shli_rot_v4 v0 = {(double)sh[b], (double)sh[b + 2], l >= 4 ? (double)sh[b + 4] : 0.0,
-                    l >= 6 ? (double)sh[b + 6] : 0.0};
-  shli_rot_v4 v1 = {(double)sh[b + 1], (double)sh[b + 3], l >= 5 ? (double)sh[b + 5] : 0.0,
-                    l >= 7 ? (double)sh[b + 7] : 0.0};
-  shli_rot_v4 v2 = {0.0, (double)sh[b - 2], l >= 4 ? (double)sh[b - 4] : 0.0,
-                    l >= 6 ? (double)sh[b - 6] : 0.0};
-  shli_rot_v4 v3 = {(double)sh[b - 1], (double)sh[b - 3], l >= 5 ? (double)sh[b - 5] : 0.0,
-                    l >= 7 ? (double)sh[b - 7] : 0.0};
-  shli_rot_v4 w0;
-  shli_rot_v4 w1;
-  shli_rot_v4 w2;
-  shli_rot_v4 w3;
-  int i;
-  int q;
-  SHLI_ROT_UNROLL
-  for (q = 0; q < 3; ++q) {
-    /* z rotation (gamma, beta + pi, alpha + pi): A with D, C with B */
-    w0 = v0 * tv[4 * q] - v2 * tv[4 * q + 1];
-    w2 = v0 * tv[4 * q + 1] + v2 * tv[4 * q];
-    w1 = v1 * tv[4 * q + 2] - v3 * tv[4 * q + 3];
-    w3 = v1 * tv[4 * q + 3] + v3 * tv[4 * q + 2];
-    if (q == 2) {
-      break;
-    }
-    SHLI_ROT_X(l, 0, v0);
-    SHLI_ROT_X(l, 1, v1);
-    SHLI_ROT_X(l, 2, v2);
-    SHLI_ROT_X(l, 3, v3);
-  }
-  SHLI_ROT_UNROLL
-  for (i = 0; i < 4; ++i) {
-    if (2 * i <= l) {
-      out_sh[b + 2 * i] = (float)w0[i];
-    }
-    if (2 * i + 1 <= l) {
-      out_sh[b + 2 * i + 1] = (float)w1[i];
-      out_sh[b - 2 * i - 1] = (float)w3[i];
-    }
-    if (i > 0 && 2 * i <= l) {
-      out_sh[b - 2 * i] = (float)w2[i];
-    }
-  }
-}
+typedef float shli_rot_v8 __attribute__((vector_size(32)));
+typedef __INT32_TYPE__ shli_rot_i8 __attribute__((vector_size(32)));
 
 /* d <= SHLI_ROT_ORTH (d: the contract's); NaN fails. shli_rot_near2: 2 entries of r0 x r1 - r2
    (up to sign) given */
@@ -3008,215 +2927,200 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
 }
 #endif
 
-/* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of Rz(alpha) Ry(beta) Rz(gamma) */
-SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, float *out_sh,
-                                                     double ca, double sa, double cb, double sb,
-                                                     double cg, double sg) {
-  shli_rot_v4 tv[12];
-  int q;
-  /* z_q = cos + i sin of gamma, beta + pi, alpha + pi (lane q of z); tv[4 q .. 4 q + 3]: z_q^m
-     for the even m (powers of u = z^2; real, imaginary) and the odd m (z times those) */
-  {
-    shli_rot_v4 zr = {cg, -cb, -ca, 0.0};
-    shli_rot_v4 zi = {sg, -sb, -sa, 0.0};
-    shli_rot_v4 one = {1.0, 1.0, 1.0, 1.0};
-    shli_rot_v4 ur = zr * zr - zi * zi;
-    shli_rot_v4 ui = (zr + zr) * zi;
-    shli_rot_v4 o1r = zr * ur - zi * ui;
-    shli_rot_v4 o1i = zi * ur + zr * ui;
-    shli_rot_v4 u2r;
-    shli_rot_v4 u2i;
-    shli_rot_v4 k[16];
-    /* z^4 = u^2 and z^3 = z u (level 2), z^5 = u z^3, z^6 = u z^4, z^7 = z^3 z^4 (level 3), the
-       powers above n - 1 left zero */
-    u2r = ur * ur - ui * ui;
-    u2i = (ur + ur) * ui;
-    k[0] = one;
-    k[1] = ur;
-    k[2] = u2r;
-    k[4] = one - one;
-    k[5] = ui;
-    k[6] = u2i;
-    k[8] = zr;
-    k[9] = o1r;
-    k[12] = zi;
-    k[13] = o1i;
-    k[3] = k[4];
-    k[7] = k[4];
-    k[10] = k[4];
-    k[11] = k[4];
-    k[14] = k[4];
-    k[15] = k[4];
-    if (n > 5) {
-      k[10] = ur * o1r - ui * o1i;
-      k[14] = ui * o1r + ur * o1i;
-    }
-    if (n > 6) {
-      k[3] = ur * u2r - ui * u2i;
-      k[7] = ui * u2r + ur * u2i;
-    }
-    if (n > 7) {
-      k[11] = o1r * u2r - o1i * u2i;
-      k[15] = o1i * u2r + o1r * u2i;
-    }
-    /* 4 x 4 transposes: row j of kind g (lanes q) to tv[4 q + g] (lanes j) */
-    SHLI_ROT_UNROLL
-    for (q = 0; q < 4; ++q) {
-      shli_rot_v4 t0 = SHLI_ROT_SHUF(k[4 * q], k[4 * q + 1], 0, 4, 2, 6);
-      shli_rot_v4 t1 = SHLI_ROT_SHUF(k[4 * q], k[4 * q + 1], 1, 5, 3, 7);
-      shli_rot_v4 t2 = SHLI_ROT_SHUF(k[4 * q + 2], k[4 * q + 3], 0, 4, 2, 6);
-      shli_rot_v4 t3 = SHLI_ROT_SHUF(k[4 * q + 2], k[4 * q + 3], 1, 5, 3, 7);
-      tv[q] = SHLI_ROT_SHUF(t0, t2, 0, 1, 4, 5);
-      tv[4 + q] = SHLI_ROT_SHUF(t1, t3, 0, 1, 4, 5);
-      tv[8 + q] = SHLI_ROT_SHUF(t0, t2, 2, 3, 6, 7);
-    }
-  }
-  /* literal band numbers: see shli_rot_band; at n = 5, 6 the longest chain first */
-  if (n <= 6) {
-    if (n > 5) {
-      shli_rot_band(5, tv, sh, out_sh);
-    }
-    if (n > 4) {
-      shli_rot_band(4, tv, sh, out_sh);
-    }
-    shli_rot_band(3, tv, sh, out_sh);
-    return;
-  }
-  shli_rot_band(3, tv, sh, out_sh);
-  shli_rot_band(4, tv, sh, out_sh);
-  shli_rot_band(5, tv, sh, out_sh);
-  if (n > 6) {
-    shli_rot_band(6, tv, sh, out_sh);
-  }
-  if (n > 7) {
-    shli_rot_band(7, tv, sh, out_sh);
-  }
-}
-#if defined(__AVX2__) && defined(__FMA__)
 /* n = 4..8: bands 3..7 in float lanes, two groups per vector, interleaved: V1 = (A, B), V2 =
    (D, C), lane j holding |m| = j; a z rotation by Cq = cos(j t), Sq = (-1)^j sin(j t) is V1 Cq
-   - V2 Sq, V2 Cq + V1 Sq; X(+90) one 64-bit broadcast (a lane pair, from memory) per input
+   - V2 Sq, V2 Cq + V1 Sq; X(+90) one broadcast of a lane pair (64 bits, from memory) per input
    lane k (odd l: V1's pairs swapped, even l: V2's) */
-#define SHLI_ROT_PM(j) ((j) <= l ? -1 : 0)
-#define SHLI_ROT_QM(j) ((j) >= 7 - l && (j) < 7 ? -1 : 0)
-/* X(+90)'s column pairs, interleaved */
-SHLI_ROT_FORCE SHLIGHT_CPU_INLINE __m256 shli_rot_xc(const double *a, const double *b) {
-  return _mm256_setr_ps((float)a[0], (float)b[0], (float)a[1], (float)b[1], (float)a[2],
-                        (float)b[2], (float)a[3], (float)b[3]);
+#if defined(__AVX2__) && defined(__FMA__)
+#define SHLI_ROT_FMA(a, b, c) ((shli_rot_v8)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#else
+#define SHLI_ROT_FMA(a, b, c) ((a) * (b) + (c))
+#endif
+#if defined(__clang__)
+#define SHLI_ROT_SW(v) __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6)
+#else
+#define SHLI_ROT_SW(v) __builtin_shuffle(v, __extension__(shli_rot_i8){1, 0, 3, 2, 5, 4, 7, 6})
+#endif
+/* X(+90)'s column pairs a, b interleaved; a lane pair (a double of w) broadcast; both into o
+   (no vector return: ABI warnings without AVX) */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_xc(const double *a, const double *b,
+                                                   shli_rot_v8 *o) {
+  shli_rot_v8 r = {(float)a[0], (float)b[0], (float)a[1], (float)b[1],
+                   (float)a[2], (float)b[2], (float)a[3], (float)b[3]};
+  *o = r;
 }
-#define SHLI_ROT_XC(o0, o1, k) shli_rot_xc(t + (o0) + 4 * (k), t + (o1) + 4 * (k))
-SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const __m256 *cs, const float *sh,
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bc(const double *w, shli_rot_v8 *o) {
+#if defined(__AVX__)
+  *o = (shli_rot_v8)_mm256_castpd_ps(_mm256_broadcast_sd(w));
+#else
+  float f[2];
+  memcpy(f, w, 8);
+  {
+    shli_rot_v8 r = {f[0], f[1], f[0], f[1], f[0], f[1], f[0], f[1]};
+    *o = r;
+  }
+#endif
+}
+/* band l (3 <= l < SHLI_ROT_FAST_BANDS, a literal: the loops unroll); cs: C0, S0, C1, .. S2 */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *cs, const float *sh,
                                                       float *out_sh) {
   const double *t = SHLI_ROT_X90 + 64 * (l - 3);
   int b = l * l + l;
+  shli_rot_v8 w1;
+  shli_rot_v8 w2;
+  double wm[8];
+  int i;
+  int k;
+#if defined(__AVX2__)
+#define SHLI_ROT_PM(j) ((j) <= l ? -1 : 0)
+#define SHLI_ROT_QM(j) ((j) >= 7 - l && (j) < 7 ? -1 : 0)
   __m256i pm = _mm256_setr_epi32(SHLI_ROT_PM(0), SHLI_ROT_PM(1), SHLI_ROT_PM(2), SHLI_ROT_PM(3),
                                  SHLI_ROT_PM(4), SHLI_ROT_PM(5), SHLI_ROT_PM(6), SHLI_ROT_PM(7));
   __m256i qm = _mm256_setr_epi32(SHLI_ROT_QM(0), SHLI_ROT_QM(1), SHLI_ROT_QM(2), SHLI_ROT_QM(3),
                                  SHLI_ROT_QM(4), SHLI_ROT_QM(5), SHLI_ROT_QM(6), SHLI_ROT_QM(7));
   __m256i rv = _mm256_setr_epi32(7, 6, 5, 4, 3, 2, 1, 0);
+#undef SHLI_ROT_PM
+#undef SHLI_ROT_QM
   /* m >= 0 and m <= 0 (reversed, m = 0 zero) in lanes |m|, interleaved */
   __m256 p = _mm256_maskload_ps(sh + b, pm);
   __m256 q = _mm256_permutevar8x32_ps(_mm256_maskload_ps(sh + b - 7, qm), rv);
-  __m256 v1 = _mm256_blend_ps(p, q, 0xaa);
-  __m256 v2 = _mm256_blend_ps(q, p, 0xaa);
-  __m256 w1 = v1;
-  __m256 w2 = v2;
-  double wm[8];
-  int i;
-  int k;
+  shli_rot_v8 v1 = (shli_rot_v8)_mm256_blend_ps(p, q, 0xaa);
+  shli_rot_v8 v2 = (shli_rot_v8)_mm256_blend_ps(q, p, 0xaa);
+#else
+#define SHLI_ROT_IN(m) ((m) <= l && (m) >= -l ? sh[b + (m)] : 0.0f)
+  shli_rot_v8 v1 = {SHLI_ROT_IN(0), SHLI_ROT_IN(-1), SHLI_ROT_IN(2), SHLI_ROT_IN(-3),
+                    SHLI_ROT_IN(4), SHLI_ROT_IN(-5), SHLI_ROT_IN(6), SHLI_ROT_IN(-7)};
+  shli_rot_v8 v2 = {
+      0.0f,           SHLI_ROT_IN(1),  SHLI_ROT_IN(-2), SHLI_ROT_IN(3), SHLI_ROT_IN(-4),
+      SHLI_ROT_IN(5), SHLI_ROT_IN(-6), SHLI_ROT_IN(7)};
+#undef SHLI_ROT_IN
+#endif
   SHLI_ROT_UNROLL
   for (i = 0; i < 3; ++i) {
-    w1 = _mm256_fmsub_ps(v1, cs[2 * i], _mm256_mul_ps(v2, cs[2 * i + 1]));
-    w2 = _mm256_fmadd_ps(v2, cs[2 * i], _mm256_mul_ps(v1, cs[2 * i + 1]));
+    w1 = SHLI_ROT_FMA(v1, cs[2 * i], -(v2 * cs[2 * i + 1]));
+    w2 = SHLI_ROT_FMA(v2, cs[2 * i], v1 * cs[2 * i + 1]);
     if (i == 2) {
       break;
     }
-    _mm256_storeu_ps((float *)wm, l % 2 ? _mm256_permute_ps(w1, 0xb1) : w1);
-    _mm256_storeu_ps((float *)(wm + 4), l % 2 ? w2 : _mm256_permute_ps(w2, 0xb1));
-    v1 = _mm256_mul_ps(_mm256_castpd_ps(_mm256_broadcast_sd(wm)), SHLI_ROT_XC(0, 48, 0));
-    v2 = _mm256_mul_ps(_mm256_castpd_ps(_mm256_broadcast_sd(wm + 4)), SHLI_ROT_XC(32, 16, 0));
+    v1 = l % 2 ? SHLI_ROT_SW(w1) : w1;
+    v2 = l % 2 ? w2 : SHLI_ROT_SW(w2);
+    memcpy(wm, &v1, 32);
+    memcpy(wm + 4, &v2, 32);
+    shli_rot_bc(wm, &v1);
+    shli_rot_xc(t, t + 48, &w1);
+    v1 = v1 * w1;
+    shli_rot_bc(wm + 4, &v2);
+    shli_rot_xc(t + 32, t + 16, &w2);
+    v2 = v2 * w2;
     SHLI_ROT_UNROLL
     for (k = 1; k <= l / 2; ++k) {
-      v1 =
-          _mm256_fmadd_ps(_mm256_castpd_ps(_mm256_broadcast_sd(wm + k)), SHLI_ROT_XC(0, 48, k), v1);
-      v2 = _mm256_fmadd_ps(_mm256_castpd_ps(_mm256_broadcast_sd(wm + 4 + k)),
-                           SHLI_ROT_XC(32, 16, k), v2);
+      shli_rot_v8 x;
+      shli_rot_v8 c;
+      shli_rot_bc(wm + k, &x);
+      shli_rot_xc(t + 4 * k, t + 48 + 4 * k, &c);
+      v1 = SHLI_ROT_FMA(x, c, v1);
+      shli_rot_bc(wm + 4 + k, &x);
+      shli_rot_xc(t + 32 + 4 * k, t + 16 + 4 * k, &c);
+      v2 = SHLI_ROT_FMA(x, c, v2);
     }
   }
-  _mm256_maskstore_ps(out_sh + b, pm, _mm256_blend_ps(w1, w2, 0xaa));
+#if defined(__AVX2__)
+  _mm256_maskstore_ps(out_sh + b, pm, _mm256_blend_ps((__m256)w1, (__m256)w2, 0xaa));
   _mm256_maskstore_ps(out_sh + b - 7, qm,
-                      _mm256_permutevar8x32_ps(_mm256_blend_ps(w2, w1, 0xaa), rv));
+                      _mm256_permutevar8x32_ps(_mm256_blend_ps((__m256)w2, (__m256)w1, 0xaa), rv));
+#else
+  SHLI_ROT_UNROLL
+  for (i = 0; i < 8; ++i) {
+    if (i <= l) {
+      out_sh[b + i] = i % 2 ? w2[i] : w1[i];
+    }
+    if (i > 0 && i <= l) {
+      out_sh[b - i] = i % 2 ? w1[i] : w2[i];
+    }
+  }
+#endif
 }
-#undef SHLI_ROT_PM
-#undef SHLI_ROT_QM
-#undef SHLI_ROT_XC
-/* cos, sin of the multiples of the three angles (double, lanes q), in float lanes j */
-SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_highf(int n, const float *sh, float *out_sh,
-                                                      double ca, double sa, double cb, double sb,
-                                                      double cg, double sg) {
+/* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of Rz(alpha) Ry(beta) Rz(gamma): cos, sin of
+   the multiples of the three angles (double, lanes q: gamma, beta + pi, alpha + pi), in float
+   lanes j */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, float *out_sh,
+                                                     double ca, double sa, double cb, double sb,
+                                                     double cg, double sg) {
   shli_rot_v4 zr = {cg, -cb, -ca, 0.0};
   shli_rot_v4 zi = {sg, -sb, -sa, 0.0};
-  shli_rot_v4 ur = zr * zr - zi * zi;
-  shli_rot_v4 ui = (zr + zr) * zi;
-  shli_rot_v4 o1r = zr * ur - zi * ui;
-  shli_rot_v4 o1i = zi * ur + zr * ui;
-  __m128 f[16];
-  __m256 y[8];
-  __m256 cs[6];
+  shli_rot_v4 p[16];
+  shli_rot_v8 cs[6];
   int i;
-  /* f[j], f[8 + j]: cos, (-1)^j sin of j t (lanes q); z^4 = u^2, z^5 = u z^3 */
-  f[0] = _mm_set1_ps(1.0f);
-  f[8] = _mm_setzero_ps();
-  f[1] = _mm256_cvtpd_ps((__m256d)zr);
-  f[9] = _mm256_cvtpd_ps((__m256d)-zi);
-  f[2] = _mm256_cvtpd_ps((__m256d)ur);
-  f[10] = _mm256_cvtpd_ps((__m256d)ui);
-  f[3] = _mm256_cvtpd_ps((__m256d)o1r);
-  f[11] = _mm256_cvtpd_ps((__m256d)-o1i);
-  for (i = 4; i < 8; ++i) {
-    f[i] = f[8];
-    f[8 + i] = f[8];
+  /* p[j], p[8 + j]: cos, (-1)^j sin of j t; z^2 = u, z^3 = z u, z^4 = u^2, z^5 = u z^3, z^6 =
+     u z^4, z^7 = z^3 z^4; j >= n zero */
+  p[8] = zr - zr;
+  for (i = 0; i < 8; ++i) {
+    p[i] = p[8];
+    p[8 + i] = p[8];
   }
+  p[0] = p[8] + 1.0;
+  p[1] = zr;
+  p[9] = -zi;
+  p[2] = zr * zr - zi * zi;
+  p[10] = (zr + zr) * zi;
+  p[3] = zr * p[2] - zi * p[10];
+  p[11] = -(zi * p[2] + zr * p[10]);
   if (n > 4) {
-    f[4] = _mm256_cvtpd_ps((__m256d)(ur * ur - ui * ui));
-    f[12] = _mm256_cvtpd_ps((__m256d)((ur + ur) * ui));
+    p[4] = p[2] * p[2] - p[10] * p[10];
+    p[12] = (p[2] + p[2]) * p[10];
   }
   if (n > 5) {
-    f[5] = _mm256_cvtpd_ps((__m256d)(ur * o1r - ui * o1i));
-    f[13] = _mm256_cvtpd_ps((__m256d) - (ui * o1r + ur * o1i));
+    p[5] = p[2] * p[3] + p[10] * p[11];
+    p[13] = p[2] * p[11] - p[10] * p[3];
   }
   if (n > 6) {
-    shli_rot_v4 u2r = ur * ur - ui * ui;
-    shli_rot_v4 u2i = (ur + ur) * ui;
-    f[6] = _mm256_cvtpd_ps((__m256d)(ur * u2r - ui * u2i));
-    f[14] = _mm256_cvtpd_ps((__m256d)(ui * u2r + ur * u2i));
-    f[7] = _mm256_cvtpd_ps((__m256d)(o1r * u2r - o1i * u2i));
-    f[15] = _mm256_cvtpd_ps((__m256d) - (o1i * u2r + o1r * u2i));
+    p[6] = p[2] * p[4] - p[10] * p[12];
+    p[14] = p[10] * p[4] + p[2] * p[12];
+    p[7] = p[3] * p[4] + p[11] * p[12];
+    p[15] = p[11] * p[4] - p[3] * p[12];
   }
-  /* 4 x 8 transposes: cs[2 q] = Cq, cs[2 q + 1] = Sq */
-  SHLI_ROT_UNROLL
-  for (i = 0; i < 2; ++i) {
-    __m256 t0;
-    __m256 t1;
-    __m256 t2;
-    __m256 t3;
-    int a;
-    SHLI_ROT_UNROLL
-    for (a = 0; a < 4; ++a) {
-      /* j >= n: upper half left undefined (those lanes are never stored) */
-      y[4 * i + a] = _mm256_castps128_ps256(f[8 * i + a]);
-      if (a + 4 < n) {
-        y[4 * i + a] = _mm256_insertf128_ps(y[4 * i + a], f[8 * i + a + 4], 1);
-      }
+#if defined(__AVX__)
+  {
+    /* 4 x 8 transposes (lanes j >= n left undefined: never stored) */
+    __m128 f[16];
+    __m256 y[4];
+    for (i = 0; i < 16; ++i) {
+      f[i] = _mm256_cvtpd_ps((__m256d)p[i]);
     }
-    t0 = _mm256_unpacklo_ps(y[4 * i], y[4 * i + 1]);
-    t1 = _mm256_unpackhi_ps(y[4 * i], y[4 * i + 1]);
-    t2 = _mm256_unpacklo_ps(y[4 * i + 2], y[4 * i + 3]);
-    t3 = _mm256_unpackhi_ps(y[4 * i + 2], y[4 * i + 3]);
-    cs[i] = _mm256_shuffle_ps(t0, t2, 0x44);
-    cs[2 + i] = _mm256_shuffle_ps(t0, t2, 0xee);
-    cs[4 + i] = _mm256_shuffle_ps(t1, t3, 0x44);
+    SHLI_ROT_UNROLL
+    for (i = 0; i < 2; ++i) {
+      __m256 t0;
+      __m256 t1;
+      __m256 t2;
+      __m256 t3;
+      int a;
+      SHLI_ROT_UNROLL
+      for (a = 0; a < 4; ++a) {
+        y[a] = _mm256_castps128_ps256(f[8 * i + a]);
+        if (a + 4 < n) {
+          y[a] = _mm256_insertf128_ps(y[a], f[8 * i + a + 4], 1);
+        }
+      }
+      t0 = _mm256_unpacklo_ps(y[0], y[1]);
+      t1 = _mm256_unpackhi_ps(y[0], y[1]);
+      t2 = _mm256_unpacklo_ps(y[2], y[3]);
+      t3 = _mm256_unpackhi_ps(y[2], y[3]);
+      cs[i] = (shli_rot_v8)_mm256_shuffle_ps(t0, t2, 0x44);
+      cs[2 + i] = (shli_rot_v8)_mm256_shuffle_ps(t0, t2, 0xee);
+      cs[4 + i] = (shli_rot_v8)_mm256_shuffle_ps(t1, t3, 0x44);
+    }
   }
+#else
+  SHLI_ROT_UNROLL
+  for (i = 0; i < 6; ++i) {
+    const shli_rot_v4 *r = p + 8 * (i % 2);
+    int q = i / 2;
+    shli_rot_v8 c = {(float)r[0][q], (float)r[1][q], (float)r[2][q], (float)r[3][q],
+                     (float)r[4][q], (float)r[5][q], (float)r[6][q], (float)r[7][q]};
+    cs[i] = c;
+  }
+#endif
+  /* literal band numbers; the longest chain first */
   if (n > 7) {
     shli_rot_bandf(7, cs, sh, out_sh);
   }
@@ -3231,16 +3135,12 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_highf(int n, const float *sh, fl
   }
   shli_rot_bandf(3, cs, sh, out_sh);
 }
-#define SHLI_ROT_HIGH shli_rot_highf
-#else
-#define SHLI_ROT_HIGH shli_rot_high
-#endif
 /* n = 4, 5, 6 and 7..8: one function each */
 #define SHLI_ROT_HIGH_N(name, nn) \
   SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void name(int n, const float *sh, float *out_sh, double ca, \
                                              double sa, double cb, double sb, double cg, \
                                              double sg) { \
-    SHLI_ROT_HIGH(nn, sh, out_sh, ca, sa, cb, sb, cg, sg); \
+    shli_rot_high(nn, sh, out_sh, ca, sa, cb, sb, cg, sg); \
   }
 SHLI_ROT_HIGH_N(shli_sh_rotate_h4, ((void)n, 4))
 SHLI_ROT_HIGH_N(shli_sh_rotate_h5, ((void)n, 5))

@@ -18,12 +18,9 @@
 /* shl_sh_rotate with SHLIGHT_ROTATE_FAST 0: the portable kernel at every n */
 void rotate_portable(int n, const float R[9], const float *sh, float *out_sh);
 
-/* the small-n path's bands 3.. (and band 2 at n >= 4) in float lanes: n = 4..8 */
-#if SHLIGHT_ROTATE_FAST && defined(__AVX2__) && defined(__FMA__)
-#define ROT_FLOAT 1
-#else
-#define ROT_FLOAT 0
-#endif
+/* the small-n path (GCC / Clang): n = 4..8 in float lanes (bands 3.., band 2 too with AVX2 and
+   FMA) */
+#define ROT_FLOAT SHLIGHT_ROTATE_FAST
 #define NMAX 64
 #define NC (NMAX * NMAX)
 typedef long double ld;
