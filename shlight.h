@@ -2844,19 +2844,25 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near2(const float R[9], double x0
   return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
 }
 #if defined(__AVX2__) && defined(__FMA__)
-/* d in float lanes (e0 x0 e1 x1 e2 x2 0 0) as a1 b1 -+ a2 b2 + a3 b3 - c, operands permuted
-   from R[0..6], 0 (within 1.2e-7 of d) */
+/* d in float lanes (e0 e2 x0 e1 x2 x1 0 0) as x1 y1 + x2 y2 + x3 y3 - c: x1, x2 R[0..7],
+   R[1..8] as loaded, y1, y2, x3, y3 and c permuted from R (5 lane permutes; within 1.2e-7 of
+   d) */
 #define SHLI_ROT_NP(a, b, c, d, e, f) \
   _mm256_permutevar8x32_ps(z, _mm256_setr_epi32(a, b, c, d, e, f, 7, 7))
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
-  __m256 z = _mm256_blend_ps(_mm256_loadu_ps(R), _mm256_setzero_ps(), 0x80);
-  __m256 c =
-      _mm256_permutevar8x32_ps(_mm256_loadu_ps(R + 1), _mm256_setr_epi32(0, 5, 0, 6, 0, 7, 0, 0));
-  __m256 v = _mm256_fmsub_ps(SHLI_ROT_NP(2, 7, 5, 7, 2, 7), SHLI_ROT_NP(2, 7, 5, 7, 5, 7),
-                             _mm256_blend_ps(c, _mm256_setr_ps(1, 0, 1, 0, 0, 0, 0, 0), 0xd5));
+  __m256 r = _mm256_loadu_ps(R);
+  __m256 r1 = _mm256_loadu_ps(R + 1);
+  __m256 z = _mm256_blend_ps(r, _mm256_setzero_ps(), 0x80);
+  __m256 c = _mm256_permutevar8x32_ps(r1, _mm256_setr_epi32(0, 0, 5, 0, 7, 6, 0, 0));
+  __m256 v = _mm256_fmsub_ps(
+      r,
+      _mm256_xor_ps(SHLI_ROT_NP(0, 4, 4, 3, 0, 0), _mm256_setr_ps(0, 0, -0.0f, 0, 0, -0.0f, 0, 0)),
+      _mm256_blend_ps(c, _mm256_setr_ps(1, 0, 0, 1, 0, 0, 0, 0), 0xcb));
   __m128 t;
-  v = _mm256_fmsubadd_ps(SHLI_ROT_NP(1, 2, 4, 0, 1, 1), SHLI_ROT_NP(1, 4, 4, 5, 4, 3), v);
-  v = _mm256_fmsubadd_ps(SHLI_ROT_NP(0, 1, 3, 2, 0, 0), SHLI_ROT_NP(0, 5, 3, 3, 3, 4), v);
+  v = _mm256_fmadd_ps(r1, SHLI_ROT_NP(1, 5, 7, 4, 7, 7), v);
+  v = _mm256_fmadd_ps(
+      SHLI_ROT_NP(2, 0, 1, 5, 1, 2),
+      _mm256_xor_ps(SHLI_ROT_NP(2, 3, 5, 5, 3, 3), _mm256_setr_ps(0, 0, 0, 0, -0.0f, 0, 0, 0)), v);
   v = _mm256_mul_ps(v, v);
   t = _mm_add_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
   t = _mm_add_ps(t, _mm_movehl_ps(t, t));
@@ -2864,24 +2870,22 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   return _mm_cvtss_f32(t) <= (float)(SHLI_ROT_ORTH * SHLI_ROT_ORTH);
 }
 #undef SHLI_ROT_NP
-/* n = 2: band 1 in double lanes 1..3 (lane 2 negated), lane 0 sh[0] */
-SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1v(const float R[9], const float *sh,
+/* band 1 in float lanes 1..3: R's columns (rows 1, 2, 0) times a_-1, a_1 less a_0, lane 2
+   negated; lane 0 sh[0] */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1f(const float R[9], const float *sh,
                                                     float *out_sh) {
-  __m256 f =
-      _mm256_permutevar8x32_ps(_mm256_loadu_ps(R + 1), _mm256_setr_epi32(0, 3, 6, 0, 0, 4, 7, 1));
-  __m256 g =
-      _mm256_permutevar8x32_ps(_mm256_loadu_ps(R), _mm256_setr_epi32(0, 3, 6, 0, 0, 0, 0, 0));
-  __m128 a = _mm_loadu_ps(sh);
-  __m256d ad = _mm256_cvtps_pd(a);
-  __m256d u =
-      _mm256_mul_pd(_mm256_permute4x64_pd(ad, 0x55), _mm256_cvtps_pd(_mm256_castps256_ps128(f)));
-  __m128 o;
-  u = _mm256_fnmadd_pd(_mm256_permute4x64_pd(ad, 0xaa),
-                       _mm256_cvtps_pd(_mm256_extractf128_ps(f, 1)), u);
-  u = _mm256_fmadd_pd(_mm256_permute4x64_pd(ad, 0xff), _mm256_cvtps_pd(_mm256_castps256_ps128(g)),
-                      u);
-  o = _mm_xor_ps(_mm256_cvtpd_ps(u), _mm_set_ps(0.0f, -0.0f, 0.0f, 0.0f));
-  _mm_storeu_ps(out_sh, _mm_blend_ps(o, a, 1));
+  __m256 r = _mm256_loadu_ps(R);
+  __m128 o = _mm_mul_ps(_mm256_castps256_ps128(
+                            _mm256_permutevar8x32_ps(r, _mm256_setr_epi32(0, 4, 7, 1, 0, 0, 0, 0))),
+                        _mm_broadcast_ss(sh + 1));
+  o = _mm_fmadd_ps(_mm256_castps256_ps128(
+                       _mm256_permutevar8x32_ps(r, _mm256_setr_epi32(0, 3, 6, 0, 0, 0, 0, 0))),
+                   _mm_broadcast_ss(sh + 3), o);
+  o = _mm_fnmadd_ps(_mm256_castps256_ps128(_mm256_permutevar8x32_ps(
+                        _mm256_loadu_ps(R + 1), _mm256_setr_epi32(0, 4, 7, 1, 0, 0, 0, 0))),
+                    _mm_broadcast_ss(sh + 2), o);
+  o = _mm_xor_ps(o, _mm_set_ps(0.0f, -0.0f, 0.0f, 0.0f));
+  _mm_storeu_ps(out_sh, _mm_blend_ps(o, _mm_load_ss(sh), 1));
 }
 /* n >= 4: band 2 in float lanes (R C R^T as in shli_rot_b012): u, v in lanes 0..2, 3..5, then
    the dots (r1.u, -r2.v, r0.u, -r2.u, r0.u, r1.v); writes out_sh[4 .. 11] (9 .. 11: band 3's,
@@ -3217,7 +3221,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R
   }
 #if defined(__AVX2__) && defined(__FMA__)
   if (n == 2) {
-    shli_rot_b1v(R, sh, out_sh);
+    shli_rot_b1f(R, sh, out_sh);
     return;
   }
 #endif
@@ -3281,7 +3285,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
     sg = r10 * f;
   }
 #if defined(__AVX2__) && defined(__FMA__)
-  shli_rot_b1v(R, sh, out_sh);
+  shli_rot_b1f(R, sh, out_sh);
   shli_rot_b2v(R, sh, out_sh);
 #else
   shli_rot_b012(3, R, sh, out_sh);
