@@ -2937,8 +2937,11 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
    lane k (odd l: V1's pairs swapped, even l: V2's) */
 #if defined(__AVX2__) && defined(__FMA__)
 #define SHLI_ROT_FMA(a, b, c) ((shli_rot_v8)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define SHLI_ROT_FMAD(a, b, c) \
+  ((shli_rot_v4)_mm256_fmadd_pd((__m256d)(a), (__m256d)(b), (__m256d)(c)))
 #else
 #define SHLI_ROT_FMA(a, b, c) ((a) * (b) + (c))
+#define SHLI_ROT_FMAD(a, b, c) ((a) * (b) + (c))
 #endif
 #if defined(__clang__)
 #define SHLI_ROT_SW(v) __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6)
@@ -3055,8 +3058,9 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
   shli_rot_v4 p[16];
   shli_rot_v8 cs[6];
   int i;
-  /* p[j], p[8 + j]: cos, (-1)^j sin of j t; z^2 = u, z^3 = z u, z^4 = u^2, z^5 = u z^3, z^6 =
-     u z^4, z^7 = z^3 z^4; j >= n zero */
+  /* p[j], p[8 + j]: cos, (-1)^j sin of j t (c = cos t, s = sin t), at most 3 dependent
+     multiply-adds: cos 2t = 2 c^2 - 1, sin 2t = 2 c s, cos 3t = 4 c^3 - 3 c, sin 3t = 4 c^2 s -
+     s, 4t and 6t as 2 (2t) and 2 (3t), 5t = 2t + 3t, 7t = 3t + 4t; j >= n zero */
   p[8] = zr - zr;
   for (i = 0; i < 8; ++i) {
     p[i] = p[8];
@@ -3065,24 +3069,50 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
   p[0] = p[8] + 1.0;
   p[1] = zr;
   p[9] = -zi;
-  p[2] = zr * zr - zi * zi;
+  p[2] = SHLI_ROT_FMAD(zr, zr + zr, p[0] - 2.0);
   p[10] = (zr + zr) * zi;
-  p[3] = zr * p[2] - zi * p[10];
-  p[11] = -(zi * p[2] + zr * p[10]);
+  p[3] = SHLI_ROT_FMAD(zr * zr, 4.0 * zr, -3.0 * zr);
+  p[11] = SHLI_ROT_FMAD(zr * zr, -4.0 * zi, zi);
   if (n > 4) {
-    p[4] = p[2] * p[2] - p[10] * p[10];
-    p[12] = (p[2] + p[2]) * p[10];
+    shli_rot_v4 c2 = SHLI_ROT_FMAD(zr, 4.0 * zr, p[0] - 3.0);
+    p[4] = SHLI_ROT_FMAD(p[2], c2, -p[0]);
+    p[12] = p[10] * c2;
   }
   if (n > 5) {
-    p[5] = p[2] * p[3] + p[10] * p[11];
-    p[13] = p[2] * p[11] - p[10] * p[3];
+    p[5] = SHLI_ROT_FMAD(p[2], p[3], p[10] * p[11]);
+    p[13] = SHLI_ROT_FMAD(p[2], p[11], -(p[10] * p[3]));
   }
   if (n > 6) {
-    p[6] = p[2] * p[4] - p[10] * p[12];
-    p[14] = p[10] * p[4] + p[2] * p[12];
-    p[7] = p[3] * p[4] + p[11] * p[12];
-    p[15] = p[11] * p[4] - p[3] * p[12];
+    p[6] = SHLI_ROT_FMAD(p[3], p[3] + p[3], -p[0]);
+    p[14] = -2.0 * p[11] * p[3];
+    p[7] = SHLI_ROT_FMAD(p[3], p[4], p[11] * p[12]);
+    p[15] = SHLI_ROT_FMAD(p[11], p[4], -(p[3] * p[12]));
   }
+#if defined(__AVX2__) && defined(__FMA__)
+  if (n == 4) {
+    /* j <= 3 straight from cos t, sin t, in lanes j: (1, c, 2 c^2 - 1, 4 c^3 - 3 c) and s (0,
+       -1, 2 c, 1 - 4 c^2) */
+    __m256d a[6];
+    a[0] = _mm256_set1_pd(cg);
+    a[1] = _mm256_set1_pd(sg);
+    a[2] = _mm256_set1_pd(-cb);
+    a[3] = _mm256_set1_pd(-sb);
+    a[4] = _mm256_set1_pd(-ca);
+    a[5] = _mm256_set1_pd(-sa);
+    SHLI_ROT_UNROLL
+    for (i = 0; i < 3; ++i) {
+      __m256d c = a[2 * i];
+      __m256d c2 = _mm256_mul_pd(c, c);
+      __m256d u = _mm256_fmadd_pd(c, _mm256_setr_pd(0, 1, 0, -3), _mm256_setr_pd(1, 0, -1, 0));
+      __m256d v = _mm256_fmadd_pd(c, _mm256_setr_pd(0, 0, 0, 4), _mm256_setr_pd(0, 0, 2, 0));
+      __m256d w = _mm256_fmadd_pd(c, _mm256_setr_pd(0, 0, 2, 0), _mm256_setr_pd(0, -1, 0, 1));
+      cs[2 * i] = (shli_rot_v8)_mm256_castps128_ps256(_mm256_cvtpd_ps(_mm256_fmadd_pd(c2, v, u)));
+      w = _mm256_fmadd_pd(c2, _mm256_setr_pd(0, 0, 0, -4), w);
+      cs[2 * i + 1] =
+          (shli_rot_v8)_mm256_castps128_ps256(_mm256_cvtpd_ps(_mm256_mul_pd(a[2 * i + 1], w)));
+    }
+  } else
+#endif
 #if defined(__AVX__)
   {
     /* 4 x 8 transposes (lanes j >= n left undefined: never stored) */
