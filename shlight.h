@@ -238,7 +238,7 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    trigonometry, Wigner's d by its three-term recurrence in l, one row at a time (O(n) work
    space). C with GCC / Clang, n <= 8 (SHLIGHT_ROTATE_FAST, default 1 there), R near a rotation
    (below): bands 1 and 2 from R as given, bands 3..7 by z rotations and constant +90 degree
-   turns about x in double vectors (2 square roots, 1 division).
+   turns about x in float vectors (2 square roots, 1 division).
    R: a rotation. d: the root sum of squares of |r0|^2 - 1, |r1|^2 - 1, r0 . r1 and the 3
    entries of r0 x r1 - r2 (r_i: R's rows; float rounding of a rotation: <= 1.6e-7, computed in
    float from a unit quaternion: <= 8.0e-7). Where d <= 1e-6 (computed in float with AVX2 and
@@ -248,14 +248,14 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    R_10, R_11 (within 1e-7 of a float-rounded R; any finite matrix gives a rotation, an
    all-zero R the identity; R_20, R_21 not read); NaN in a read entry gives NaN in every band
    above 0.
-   Accuracy (C, double inside; against a long-double re-projection, tests/test_rotate.c): per
-   band, |error| / |input band| <= 4.6e-8 in the portable kernel (n = 1..64, the float rounding
-   of the output); the n <= 8 path 1.3e-7 on float-rounded rotations, 6e-7 on rotations moved
-   by 3 ulps per entry; band energy kept to 1.4e-7. GLSL (float inside): within 1.8e-6 of C
-   per band at n = 16 (llvmpipe).
-   Cost: n <= 8 (C, GCC / Clang): 69 / 164 / 303 / 450 / 583 / 881 instructions at n = 2 / 3 /
-   4 / 5 / 6 / 8 (gcc -O3 -march=x86-64-v3), 6.5 / 14.8 / 34 / 53 / 69 / 102 ns; DirectXMath's
-   XMSHRotate (n <= 6) 79 / 222 / 304 / 463 / 665 instructions, 4.5 / 18.3 / 30 / 45 / 66 ns.
+   Accuracy (C; against a long-double re-projection, tests/test_rotate.c): per band, |error| /
+   |input band| <= 4.6e-8 in the portable kernel (n = 1..64, double inside: the float rounding
+   of the output); the n <= 8 path on float-rounded rotations 1.3e-7 at n <= 3, 3e-7 at n =
+   4..8 (float inside; measured 2.6e-7), 8e-7 on rotations moved by 3 ulps per entry; band
+   energy kept to 2.5e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16.
+   Cost: n <= 8 (C, GCC / Clang): 61 / 162 / 273 / 336 / 402 / 581 instructions at n = 2 / 3 /
+   4 / 5 / 6 / 8 (gcc -O3 -march=x86-64-v3), 4.1 / 15 / 26 / 39 / 47 / 71 ns; DirectXMath's
+   XMSHRotate (n <= 6) 79 / 222 / 304 / 463 / 665 instructions, 4.3 / 18.3 / 30 / 45 / 67 ns.
    Otherwise about n^3 / 3 steps of the two recurrences (a sqrt and a division each) and n^3 /
    3 of the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64. Stack: about 7.5 KB at
    SHLIGHT_MAX_BANDS = 64. */
