@@ -3013,6 +3013,10 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
     v2 = l % 2 ? w2 : SHLI_ROT_SW(w2);
     memcpy(wm, &v1, 32);
     memcpy(wm + 4, &v2, 32);
+#if defined(__clang__)
+    /* keeps the broadcasts loads: clang would turn them into lane permutes */
+    __asm__ volatile("" : : "r"(wm) : "memory");
+#endif
     shli_rot_bc(wm, &v1);
     shli_rot_xc(t, t + 48, &w1);
     v1 = v1 * w1;
