@@ -2943,6 +2943,12 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
 #define SHLI_ROT_FMA(a, b, c) ((a) * (b) + (c))
 #define SHLI_ROT_FMAD(a, b, c) ((a) * (b) + (c))
 #endif
+/* 128 bits widened with zeros */
+#if defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 10)
+#define SHLI_ROT_ZEXT(x) _mm256_zextps128_ps256(x)
+#else
+#define SHLI_ROT_ZEXT(x) _mm256_insertf128_ps(_mm256_setzero_ps(), x, 0)
+#endif
 #if defined(__clang__)
 #define SHLI_ROT_SW(v) __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6)
 #else
@@ -3119,7 +3125,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
 #endif
 #if defined(__AVX__)
   {
-    /* 4 x 8 transposes (lanes j >= n left undefined: never stored) */
+    /* 4 x 8 transposes (lanes j >= n zero) */
     __m128 f[16];
     __m256 y[4];
     for (i = 0; i < 16; ++i) {
@@ -3134,7 +3140,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
       int a;
       SHLI_ROT_UNROLL
       for (a = 0; a < 4; ++a) {
-        y[a] = _mm256_castps128_ps256(f[8 * i + a]);
+        y[a] = SHLI_ROT_ZEXT(f[8 * i + a]);
         if (a + 4 < n) {
           y[a] = _mm256_insertf128_ps(y[a], f[8 * i + a + 4], 1);
         }
