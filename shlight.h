@@ -253,8 +253,8 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    of the output); the n <= 8 path on float-rounded rotations 1.3e-7 at n <= 3, 3e-7 at n =
    4..8 (float inside; measured 2.6e-7), 8e-7 on rotations moved by 3 ulps per entry; band
    energy kept to 2.5e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16.
-   Cost: n <= 8 (C, GCC / Clang): 61 / 162 / 273 / 336 / 402 / 581 instructions at n = 2 / 3 /
-   4 / 5 / 6 / 8 (gcc -O3 -march=x86-64-v3), 4.1 / 15 / 26 / 39 / 47 / 71 ns; DirectXMath's
+   Cost: n <= 8 (C, GCC / Clang): 61 / 162 / 273 / 339 / 405 / 582 instructions at n = 2 / 3 /
+   4 / 5 / 6 / 8 (gcc -O3 -march=x86-64-v3), 4.2 / 15 / 26 / 40 / 48 / 71 ns; DirectXMath's
    XMSHRotate (n <= 6) 79 / 222 / 304 / 463 / 665 instructions, 4.3 / 18.3 / 30 / 45 / 67 ns.
    Otherwise about n^3 / 3 steps of the two recurrences (a sqrt and a division each) and n^3 /
    3 of the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64. Stack: about 7.5 KB at
