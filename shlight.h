@@ -247,7 +247,7 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    trigonometry, Wigner's d by its three-term recurrence in l, one row at a time (O(n) work
    space). C with GCC / Clang, n <= 8 (SHLIGHT_ROTATE_FAST, default 1 there), R near a rotation
    (below): bands 1 and 2 from R as given, bands 3..7 by z rotations and constant +90 degree
-   turns about x in double vectors (2 square roots, 1 division).
+   turns about x in float vectors (2 square roots, 1 division).
    R: a rotation. d: the root sum of squares of |r0|^2 - 1, |r1|^2 - 1, r0 . r1 and the 3
    entries of r0 x r1 - r2 (r_i: R's rows; float rounding of a rotation: <= 1.6e-7, computed in
    float from a unit quaternion: <= 8.0e-7). Where d <= 1e-6 (computed in float with AVX2 and
@@ -257,14 +257,14 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    R_10, R_11 (within 1e-7 of a float-rounded R; any finite matrix gives a rotation, an
    all-zero R the identity; R_20, R_21 not read); NaN in a read entry gives NaN in every band
    above 0.
-   Accuracy (C, double inside; against a long-double re-projection, tests/test_rotate.c): per
-   band, |error| / |input band| <= 4.6e-8 in the portable kernel (n = 1..64, the float rounding
-   of the output); the n <= 8 path 1.3e-7 on float-rounded rotations, 6e-7 on rotations moved
-   by 3 ulps per entry; band energy kept to 1.4e-7. GLSL (float inside): within 1.8e-6 of C
-   per band at n = 16 (llvmpipe).
-   Cost: n <= 8 (C, GCC / Clang): 69 / 164 / 303 / 450 / 583 / 881 instructions at n = 2 / 3 /
-   4 / 5 / 6 / 8 (gcc -O3 -march=x86-64-v3), 6.5 / 14.8 / 34 / 53 / 69 / 102 ns; DirectXMath's
-   XMSHRotate (n <= 6) 79 / 222 / 304 / 463 / 665 instructions, 4.5 / 18.3 / 30 / 45 / 66 ns.
+   Accuracy (C; against a long-double re-projection, tests/test_rotate.c): per band, |error| /
+   |input band| <= 4.6e-8 in the portable kernel (n = 1..64, double inside: the float rounding
+   of the output); the n <= 8 path on float-rounded rotations 1.3e-7 at n <= 3, 3e-7 at n =
+   4..8 (float inside; measured 2.6e-7), 8e-7 on rotations moved by 3 ulps per entry; band
+   energy kept to 2.5e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16.
+   Cost: n <= 8 (C, GCC / Clang): 61 / 162 / 273 / 339 / 405 / 582 instructions at n = 2 / 3 /
+   4 / 5 / 6 / 8 (gcc -O3 -march=x86-64-v3), 4.2 / 15 / 26 / 40 / 48 / 71 ns; DirectXMath's
+   XMSHRotate (n <= 6) 79 / 222 / 304 / 463 / 665 instructions, 4.3 / 18.3 / 30 / 45 / 67 ns.
    Otherwise about n^3 / 3 steps of the two recurrences (a sqrt and a division each) and n^3 /
    3 of the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64. Stack: about 7.5 KB at
    SHLIGHT_MAX_BANDS = 64. */
@@ -2825,15 +2825,10 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
   }
 }
 
-/* shl_sh_rotate's C-only path for n <= SHLI_ROT_FAST_BANDS (GCC / Clang vector extensions;
-   tests/test_rotate.c holds it to the portable kernel below, the GLSL twin's body). R within
-   SHLI_ROT_ORTH of a rotation is taken as given: band 1 is R, band 2 R C R^T; bands 3..7 by
-   zyz angles and Ry(b) = X(-90) Rz(b) X(+90), X(+90) (+90 degrees about x) constant per band
-   and X(-90) = Rz(pi) X(+90) Rz(pi). X(+90) keeps the parities of x and m: four lane groups
-   (A: m = 0, 2, 4, 6; C: 1, 3, 5, 7; D: -, -2, -4, -6; B: -1, -3, -5, -7), each output group
-   from one input group (l even: A A, C D, D C, B B; l odd: A B, C C, D D, B A), a z rotation
-   pairs A with D and C with B lane by lane; double inside, 4 lanes; the table holds each
-   band's four group blocks by columns (docs/rotation.md). */
+/* shl_sh_rotate's C-only path for n <= SHLI_ROT_FAST_BANDS (GCC / Clang; method: docs/rotation.md;
+   tests/test_rotate.c holds it to the portable kernel). Lane groups of a band: A (m = 0, 2, 4,
+   6), C (1, 3, 5, 7), D (-, -2, -4, -6), B (-1, -3, -5, -7); the table: X(+90)'s group blocks
+   of bands 3..7 by columns */
 #ifndef SHLIGHT_ROTATE_FAST
 #if defined(__GNUC__) || defined(__clang__)
 #define SHLIGHT_ROTATE_FAST 1
@@ -2842,7 +2837,7 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
 #endif
 #endif
 #if SHLIGHT_ROTATE_FAST
-#if defined(__AVX2__)
+#if defined(__AVX__)
 #include <immintrin.h>
 #elif defined(__SSE2__)
 #include <emmintrin.h>
@@ -2908,131 +2903,9 @@ static const double SHLI_ROT_X90[320] = {
 #else
 #define SHLI_ROT_SCALAR
 #endif
-/* the input group of output group g (0 A, 1 C, 2 D, 3 B) and its lanes k0 .. k1 - 1 */
-#define SHLI_ROT_SRC(l, g) \
-  ((l) % 2 == 0 ? ((g) == 1 ? 2 : ((g) == 2 ? 1 : (g))) : ((g) == 0 ? 3 : ((g) == 3 ? 0 : (g))))
-#define SHLI_ROT_K0(src) ((src) == 2 ? 1 : 0)
-#define SHLI_ROT_K1(l, src) ((src) == 0 || (src) == 2 ? (l) / 2 + 1 : ((l) + 1) / 2)
 typedef double shli_rot_v4 __attribute__((vector_size(32)));
-typedef __INT64_TYPE__ shli_rot_i4 __attribute__((vector_size(32)));
-/* lanes i, j, k, m of a (0..3) and b (4..7) */
-#if defined(__clang__)
-#define SHLI_ROT_SHUF(a, b, i, j, k, m) __builtin_shufflevector(a, b, i, j, k, m)
-#else
-#define SHLI_ROT_SHUF(a, b, i, j, k, m) \
-  __builtin_shuffle(a, b, __extension__(shli_rot_i4){i, j, k, m})
-#endif
-#define SHLI_ROT_LD(v, p) memcpy(&(v), (p), sizeof(v))
-
-/* X(+90)'s broadcasts: AVX from memory (wm, see shli_rot_band), SSE2 from the registers */
-#if defined(__AVX__)
-#define SHLI_ROT_WS const double *ws_ = wm + 4 * src_
-#else
-#define SHLI_ROT_WS shli_rot_v4 ws_ = src_ == 0 ? w0 : (src_ == 1 ? w1 : (src_ == 2 ? w2 : w3))
-#endif
-/* X(+90), output group g of band l (a literal), from the z-rotated groups w0..w3 (A, C, D, B)
-   into out (named variables: GCC keeps them in registers) */
-#define SHLI_ROT_X(l, g, out) \
-  do { \
-    int src_ = SHLI_ROT_SRC(l, g); \
-    int k_; \
-    SHLI_ROT_WS; \
-    shli_rot_v4 c_; \
-    SHLI_ROT_LD(c_, t + 16 * (g) + SHLI_ROT_K0(src_) * 4); \
-    out = c_ * ws_[SHLI_ROT_K0(src_)]; \
-    SHLI_ROT_UNROLL \
-    for (k_ = 0; k_ < 4; ++k_) { \
-      if (k_ > SHLI_ROT_K0(src_) && k_ < SHLI_ROT_K1(l, src_)) { \
-        SHLI_ROT_LD(c_, t + 16 * (g) + k_ * 4); \
-        out = out + c_ * ws_[k_]; \
-      } \
-    } \
-  } while (0)
-
-/* band l (3 <= l < SHLI_ROT_FAST_BANDS, a literal: the loops unroll) of sh into out_sh;
-   tv[4 q + j]: cos, sin of the even m, of the odd m (j = 0..3), q-th z rotation */
-SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_band(int l, const shli_rot_v4 *tv, const float *sh,
-                                                     float *out_sh) {
-  const double *t = SHLI_ROT_X90 + 64 * (l - 3);
-  int b = l * l + l;
-#if defined(__AVX2__)
-  /* the band's floats from two 8-float windows inside it (one at l = 3, 7 floats): m >= 0 from
-     fp, m < 0 from fn; lanes past l take any in-window value (their results are never stored) */
-  int po = l == 3 ? 4 : 7 - l;
-  int no = l == 3 ? 4 : l;
-  __m256 fp = _mm256_loadu_ps(sh + b - po);
-  __m256 fn = _mm256_loadu_ps(sh + b - no);
-#define SHLI_ROT_PI(m) ((m) <= l ? (m) + po : po)
-#define SHLI_ROT_NI(m) ((m) <= l ? no - (m) : no - 1)
-  __m256 fac = _mm256_permutevar8x32_ps(
-      fp, _mm256_setr_epi32(SHLI_ROT_PI(0), SHLI_ROT_PI(2), SHLI_ROT_PI(4), SHLI_ROT_PI(6),
-                            SHLI_ROT_PI(1), SHLI_ROT_PI(3), SHLI_ROT_PI(5), SHLI_ROT_PI(7)));
-  __m256 fdb = _mm256_permutevar8x32_ps(
-      fn, _mm256_setr_epi32(SHLI_ROT_NI(1), SHLI_ROT_NI(2), SHLI_ROT_NI(4), SHLI_ROT_NI(6),
-                            SHLI_ROT_NI(1), SHLI_ROT_NI(3), SHLI_ROT_NI(5), SHLI_ROT_NI(7)));
-#undef SHLI_ROT_PI
-#undef SHLI_ROT_NI
-  shli_rot_v4 v0 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_castps256_ps128(fac));
-  shli_rot_v4 v1 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_extractf128_ps(fac, 1));
-  shli_rot_v4 v2 = (shli_rot_v4)_mm256_cvtps_pd(
-      _mm256_castps256_ps128(_mm256_blend_ps(fdb, _mm256_setzero_ps(), 1)));
-  shli_rot_v4 v3 = (shli_rot_v4)_mm256_cvtps_pd(_mm256_extractf128_ps(fdb, 1));
-#else
-  shli_rot_v4 v0 = {(double)sh[b], (double)sh[b + 2], l >= 4 ? (double)sh[b + 4] : 0.0,
-                    l >= 6 ? (double)sh[b + 6] : 0.0};
-  shli_rot_v4 v1 = {(double)sh[b + 1], (double)sh[b + 3], l >= 5 ? (double)sh[b + 5] : 0.0,
-                    l >= 7 ? (double)sh[b + 7] : 0.0};
-  shli_rot_v4 v2 = {0.0, (double)sh[b - 2], l >= 4 ? (double)sh[b - 4] : 0.0,
-                    l >= 6 ? (double)sh[b - 6] : 0.0};
-  shli_rot_v4 v3 = {(double)sh[b - 1], (double)sh[b - 3], l >= 5 ? (double)sh[b - 5] : 0.0,
-                    l >= 7 ? (double)sh[b - 7] : 0.0};
-#endif
-  shli_rot_v4 w0;
-  shli_rot_v4 w1;
-  shli_rot_v4 w2;
-  shli_rot_v4 w3;
-#if defined(__AVX__)
-  double wm[16];
-#endif
-  int i;
-  int q;
-  SHLI_ROT_UNROLL
-  for (q = 0; q < 3; ++q) {
-    /* z rotation (gamma, beta + pi, alpha + pi): A with D, C with B */
-    w0 = v0 * tv[4 * q] - v2 * tv[4 * q + 1];
-    w2 = v0 * tv[4 * q + 1] + v2 * tv[4 * q];
-    w1 = v1 * tv[4 * q + 2] - v3 * tv[4 * q + 3];
-    w3 = v1 * tv[4 * q + 3] + v3 * tv[4 * q + 2];
-    if (q == 2) {
-      break;
-    }
-    /* broadcasts from memory, not lane permutes (the asm keeps them loads) */
-#if defined(__AVX__)
-    memcpy(wm, &w0, 32);
-    memcpy(wm + 4, &w1, 32);
-    memcpy(wm + 8, &w2, 32);
-    memcpy(wm + 12, &w3, 32);
-    __asm__ volatile("" : : "r"(wm) : "memory");
-#endif
-    SHLI_ROT_X(l, 0, v0);
-    SHLI_ROT_X(l, 1, v1);
-    SHLI_ROT_X(l, 2, v2);
-    SHLI_ROT_X(l, 3, v3);
-  }
-  SHLI_ROT_UNROLL
-  for (i = 0; i < 4; ++i) {
-    if (2 * i <= l) {
-      out_sh[b + 2 * i] = (float)w0[i];
-    }
-    if (2 * i + 1 <= l) {
-      out_sh[b + 2 * i + 1] = (float)w1[i];
-      out_sh[b - 2 * i - 1] = (float)w3[i];
-    }
-    if (i > 0 && 2 * i <= l) {
-      out_sh[b - 2 * i] = (float)w2[i];
-    }
-  }
-}
+typedef float shli_rot_v8 __attribute__((vector_size(32)));
+typedef __INT32_TYPE__ shli_rot_i8 __attribute__((vector_size(32)));
 
 /* d <= SHLI_ROT_ORTH (d: the contract's); NaN fails. shli_rot_near2: 2 entries of r0 x r1 - r2
    (up to sign) given */
@@ -3051,19 +2924,25 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near2(const float R[9], double x0
   return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
 }
 #if defined(__AVX2__) && defined(__FMA__)
-/* d in float lanes (e0 x0 e1 x1 e2 x2 0 0) as a1 b1 -+ a2 b2 + a3 b3 - c, operands permuted
-   from R[0..6], 0 (within 1.2e-7 of d) */
+/* d in float lanes (e0 e2 x0 e1 x2 x1 0 0) as x1 y1 + x2 y2 + x3 y3 - c: x1, x2 R[0..7],
+   R[1..8] as loaded, y1, y2, x3, y3 and c permuted from R (5 lane permutes; within 1.2e-7 of
+   d) */
 #define SHLI_ROT_NP(a, b, c, d, e, f) \
   _mm256_permutevar8x32_ps(z, _mm256_setr_epi32(a, b, c, d, e, f, 7, 7))
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
-  __m256 z = _mm256_blend_ps(_mm256_loadu_ps(R), _mm256_setzero_ps(), 0x80);
-  __m256 c =
-      _mm256_permutevar8x32_ps(_mm256_loadu_ps(R + 1), _mm256_setr_epi32(0, 5, 0, 6, 0, 7, 0, 0));
-  __m256 v = _mm256_fmsub_ps(SHLI_ROT_NP(2, 7, 5, 7, 2, 7), SHLI_ROT_NP(2, 7, 5, 7, 5, 7),
-                             _mm256_blend_ps(c, _mm256_setr_ps(1, 0, 1, 0, 0, 0, 0, 0), 0xd5));
+  __m256 r = _mm256_loadu_ps(R);
+  __m256 r1 = _mm256_loadu_ps(R + 1);
+  __m256 z = _mm256_blend_ps(r, _mm256_setzero_ps(), 0x80);
+  __m256 c = _mm256_permutevar8x32_ps(r1, _mm256_setr_epi32(0, 0, 5, 0, 7, 6, 0, 0));
+  __m256 v = _mm256_fmsub_ps(
+      r,
+      _mm256_xor_ps(SHLI_ROT_NP(0, 4, 4, 3, 0, 0), _mm256_setr_ps(0, 0, -0.0f, 0, 0, -0.0f, 0, 0)),
+      _mm256_blend_ps(c, _mm256_setr_ps(1, 0, 0, 1, 0, 0, 0, 0), 0xcb));
   __m128 t;
-  v = _mm256_fmsubadd_ps(SHLI_ROT_NP(1, 2, 4, 0, 1, 1), SHLI_ROT_NP(1, 4, 4, 5, 4, 3), v);
-  v = _mm256_fmsubadd_ps(SHLI_ROT_NP(0, 1, 3, 2, 0, 0), SHLI_ROT_NP(0, 5, 3, 3, 3, 4), v);
+  v = _mm256_fmadd_ps(r1, SHLI_ROT_NP(1, 5, 7, 4, 7, 7), v);
+  v = _mm256_fmadd_ps(
+      SHLI_ROT_NP(2, 0, 1, 5, 1, 2),
+      _mm256_xor_ps(SHLI_ROT_NP(2, 3, 5, 5, 3, 3), _mm256_setr_ps(0, 0, 0, 0, -0.0f, 0, 0, 0)), v);
   v = _mm256_mul_ps(v, v);
   t = _mm_add_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
   t = _mm_add_ps(t, _mm_movehl_ps(t, t));
@@ -3071,25 +2950,58 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   return _mm_cvtss_f32(t) <= (float)(SHLI_ROT_ORTH * SHLI_ROT_ORTH);
 }
 #undef SHLI_ROT_NP
-/* n = 2: band 1 in double lanes 1..3 (lane 2 negated), lane 0 sh[0] */
-SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1v(const float R[9], const float *sh,
+/* band 1 in float lanes 1..3: R's columns (rows 1, 2, 0) times a_-1, a_1 less a_0, lane 2
+   negated; lane 0 sh[0] */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1f(const float R[9], const float *sh,
                                                     float *out_sh) {
-  __m256 f =
-      _mm256_permutevar8x32_ps(_mm256_loadu_ps(R + 1), _mm256_setr_epi32(0, 3, 6, 0, 0, 4, 7, 1));
-  __m256 g =
-      _mm256_permutevar8x32_ps(_mm256_loadu_ps(R), _mm256_setr_epi32(0, 3, 6, 0, 0, 0, 0, 0));
-  __m128 a = _mm_loadu_ps(sh);
-  __m256d ad = _mm256_cvtps_pd(a);
-  __m256d u =
-      _mm256_mul_pd(_mm256_permute4x64_pd(ad, 0x55), _mm256_cvtps_pd(_mm256_castps256_ps128(f)));
-  __m128 o;
-  u = _mm256_fnmadd_pd(_mm256_permute4x64_pd(ad, 0xaa),
-                       _mm256_cvtps_pd(_mm256_extractf128_ps(f, 1)), u);
-  u = _mm256_fmadd_pd(_mm256_permute4x64_pd(ad, 0xff), _mm256_cvtps_pd(_mm256_castps256_ps128(g)),
-                      u);
-  o = _mm_xor_ps(_mm256_cvtpd_ps(u), _mm_set_ps(0.0f, -0.0f, 0.0f, 0.0f));
-  _mm_storeu_ps(out_sh, _mm_blend_ps(o, a, 1));
+  __m256 r = _mm256_loadu_ps(R);
+  __m128 o = _mm_mul_ps(_mm256_castps256_ps128(
+                            _mm256_permutevar8x32_ps(r, _mm256_setr_epi32(0, 4, 7, 1, 0, 0, 0, 0))),
+                        _mm_broadcast_ss(sh + 1));
+  o = _mm_fmadd_ps(_mm256_castps256_ps128(
+                       _mm256_permutevar8x32_ps(r, _mm256_setr_epi32(0, 3, 6, 0, 0, 0, 0, 0))),
+                   _mm_broadcast_ss(sh + 3), o);
+  o = _mm_fnmadd_ps(_mm256_castps256_ps128(_mm256_permutevar8x32_ps(
+                        _mm256_loadu_ps(R + 1), _mm256_setr_epi32(0, 4, 7, 1, 0, 0, 0, 0))),
+                    _mm_broadcast_ss(sh + 2), o);
+  o = _mm_xor_ps(o, _mm_set_ps(0.0f, -0.0f, 0.0f, 0.0f));
+  _mm_storeu_ps(out_sh, _mm_blend_ps(o, _mm_load_ss(sh), 1));
 }
+/* n >= 4: band 2 in float lanes (R C R^T as in shli_rot_b012): u, v in lanes 0..2, 3..5, then
+   the dots (r1.u, -r2.v, r0.u, -r2.u, r0.u, r1.v); writes out_sh[4 .. 11] (9 .. 11: band 3's,
+   written after) */
+#define SHLI_ROT_P(v, a, b, c, d, e, f) \
+  _mm256_permutevar8x32_ps(v, _mm256_setr_epi32(a, b, c, d, e, f, 0, 0))
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b2v(const float R[9], const float *sh,
+                                                    float *out_sh) {
+  const float k = 0.57735026918962576f;
+  __m256 rl = _mm256_loadu_ps(R);
+  __m256 rh = _mm256_loadu_ps(R + 1);
+  __m256 a = _mm256_loadu_ps(sh + 4);
+  __m256 s = _mm256_broadcast_ss(sh + 6);
+  /* columns x, y, z of C (twice) times R's entries r_0j, r_1j */
+  __m256 u = _mm256_mul_ps(
+      _mm256_fmadd_ps(SHLI_ROT_P(a, 4, 0, 3, 4, 0, 3), _mm256_setr_ps(1, 1, -1, 1, 1, -1, 0, 0),
+                      _mm256_mul_ps(s, _mm256_setr_ps(-k, 0, 0, -k, 0, 0, 0, 0))),
+      SHLI_ROT_P(rl, 0, 0, 0, 3, 3, 3));
+  __m256 d;
+  u = _mm256_fmadd_ps(_mm256_fmadd_ps(SHLI_ROT_P(a, 0, 4, 1, 0, 4, 1),
+                                      _mm256_setr_ps(1, -1, -1, 1, -1, -1, 0, 0),
+                                      _mm256_mul_ps(s, _mm256_setr_ps(0, -k, 0, 0, -k, 0, 0, 0))),
+                      SHLI_ROT_P(rl, 1, 1, 1, 4, 4, 4), u);
+  u = _mm256_fmadd_ps(_mm256_mul_ps(SHLI_ROT_P(a, 3, 1, 2, 3, 1, 2),
+                                    _mm256_setr_ps(-1, -1, 2 * k, -1, -1, 2 * k, 0, 0)),
+                      SHLI_ROT_P(rl, 2, 2, 2, 5, 5, 5), u);
+  d = _mm256_mul_ps(SHLI_ROT_P(u, 0, 3, 0, 0, 0, 3), SHLI_ROT_P(rl, 3, 6, 0, 6, 0, 3));
+  d = _mm256_fmadd_ps(SHLI_ROT_P(u, 1, 4, 1, 1, 1, 4), SHLI_ROT_P(rl, 4, 7, 1, 7, 1, 4), d);
+  d = _mm256_fmadd_ps(SHLI_ROT_P(u, 2, 5, 2, 2, 2, 5), SHLI_ROT_P(rh, 4, 7, 1, 7, 1, 4), d);
+  d = _mm256_fmadd_ps(
+      d, _mm256_setr_ps(1, -1, -0.86602540378443865f, -1, 0.5f, 0, 0, 0),
+      _mm256_mul_ps(SHLI_ROT_P(d, 0, 0, 5, 0, 5, 0),
+                    _mm256_setr_ps(0, 0, -0.86602540378443865f, 0, -0.5f, 0, 0, 0)));
+  _mm256_storeu_ps(out_sh + 4, d);
+}
+#undef SHLI_ROT_P
 #else
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   double r02 = (double)R[2];
@@ -3099,87 +3011,253 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
 }
 #endif
 
-/* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of Rz(alpha) Ry(beta) Rz(gamma) */
+/* n = 4..8: bands 3..7 in float lanes, two groups per vector, interleaved: V1 = (A, B), V2 =
+   (D, C), lane j holding |m| = j; a z rotation by Cq = cos(j t), Sq = (-1)^j sin(j t) is V1 Cq
+   - V2 Sq, V2 Cq + V1 Sq; X(+90) one broadcast of a lane pair (64 bits, from memory) per input
+   lane k (odd l: V1's pairs swapped, even l: V2's) */
+#if defined(__AVX2__) && defined(__FMA__)
+#define SHLI_ROT_FMA(a, b, c) ((shli_rot_v8)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
+#define SHLI_ROT_FMAD(a, b, c) \
+  ((shli_rot_v4)_mm256_fmadd_pd((__m256d)(a), (__m256d)(b), (__m256d)(c)))
+#else
+#define SHLI_ROT_FMA(a, b, c) ((a) * (b) + (c))
+#define SHLI_ROT_FMAD(a, b, c) ((a) * (b) + (c))
+#endif
+/* 128 bits widened with zeros */
+#if defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 10)
+#define SHLI_ROT_ZEXT(x) _mm256_zextps128_ps256(x)
+#else
+#define SHLI_ROT_ZEXT(x) _mm256_insertf128_ps(_mm256_setzero_ps(), x, 0)
+#endif
+#if defined(__clang__)
+#define SHLI_ROT_SW(v) __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6)
+#else
+#define SHLI_ROT_SW(v) __builtin_shuffle(v, __extension__(shli_rot_i8){1, 0, 3, 2, 5, 4, 7, 6})
+#endif
+/* X(+90)'s column pairs a, b interleaved; a lane pair (a double of w) broadcast; both into o
+   (no vector return: ABI warnings without AVX) */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_xc(const double *a, const double *b,
+                                                   shli_rot_v8 *o) {
+  shli_rot_v8 r = {(float)a[0], (float)b[0], (float)a[1], (float)b[1],
+                   (float)a[2], (float)b[2], (float)a[3], (float)b[3]};
+  *o = r;
+}
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bc(const double *w, shli_rot_v8 *o) {
+#if defined(__AVX__)
+  *o = (shli_rot_v8)_mm256_castpd_ps(_mm256_broadcast_sd(w));
+#else
+  float f[2];
+  memcpy(f, w, 8);
+  {
+    shli_rot_v8 r = {f[0], f[1], f[0], f[1], f[0], f[1], f[0], f[1]};
+    *o = r;
+  }
+#endif
+}
+/* band l (3 <= l < SHLI_ROT_FAST_BANDS, a literal: the loops unroll); cs: C0, S0, C1, .. S2 */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *cs, const float *sh,
+                                                      float *out_sh) {
+  const double *t = SHLI_ROT_X90 + 64 * (l - 3);
+  int b = l * l + l;
+  shli_rot_v8 w1;
+  shli_rot_v8 w2;
+  double wm[8];
+  int i;
+  int k;
+#if defined(__AVX2__)
+#define SHLI_ROT_PM(j) ((j) <= l ? -1 : 0)
+#define SHLI_ROT_QM(j) ((j) >= 7 - l && (j) < 7 ? -1 : 0)
+  __m256i pm = _mm256_setr_epi32(SHLI_ROT_PM(0), SHLI_ROT_PM(1), SHLI_ROT_PM(2), SHLI_ROT_PM(3),
+                                 SHLI_ROT_PM(4), SHLI_ROT_PM(5), SHLI_ROT_PM(6), SHLI_ROT_PM(7));
+  __m256i qm = _mm256_setr_epi32(SHLI_ROT_QM(0), SHLI_ROT_QM(1), SHLI_ROT_QM(2), SHLI_ROT_QM(3),
+                                 SHLI_ROT_QM(4), SHLI_ROT_QM(5), SHLI_ROT_QM(6), SHLI_ROT_QM(7));
+  __m256i rv = _mm256_setr_epi32(7, 6, 5, 4, 3, 2, 1, 0);
+#undef SHLI_ROT_PM
+#undef SHLI_ROT_QM
+  /* m >= 0 and m <= 0 (reversed, m = 0 zero) in lanes |m|, interleaved */
+  __m256 p = _mm256_maskload_ps(sh + b, pm);
+  __m256 q = _mm256_permutevar8x32_ps(_mm256_maskload_ps(sh + b - 7, qm), rv);
+  shli_rot_v8 v1 = (shli_rot_v8)_mm256_blend_ps(p, q, 0xaa);
+  shli_rot_v8 v2 = (shli_rot_v8)_mm256_blend_ps(q, p, 0xaa);
+#else
+#define SHLI_ROT_IN(m) ((m) <= l && (m) >= -l ? sh[b + (m)] : 0.0f)
+  shli_rot_v8 v1 = {SHLI_ROT_IN(0), SHLI_ROT_IN(-1), SHLI_ROT_IN(2), SHLI_ROT_IN(-3),
+                    SHLI_ROT_IN(4), SHLI_ROT_IN(-5), SHLI_ROT_IN(6), SHLI_ROT_IN(-7)};
+  shli_rot_v8 v2 = {
+      0.0f,           SHLI_ROT_IN(1),  SHLI_ROT_IN(-2), SHLI_ROT_IN(3), SHLI_ROT_IN(-4),
+      SHLI_ROT_IN(5), SHLI_ROT_IN(-6), SHLI_ROT_IN(7)};
+#undef SHLI_ROT_IN
+#endif
+  SHLI_ROT_UNROLL
+  for (i = 0; i < 3; ++i) {
+    w1 = SHLI_ROT_FMA(v1, cs[2 * i], -(v2 * cs[2 * i + 1]));
+    w2 = SHLI_ROT_FMA(v2, cs[2 * i], v1 * cs[2 * i + 1]);
+    if (i == 2) {
+      break;
+    }
+    v1 = l % 2 ? SHLI_ROT_SW(w1) : w1;
+    v2 = l % 2 ? w2 : SHLI_ROT_SW(w2);
+    memcpy(wm, &v1, 32);
+    memcpy(wm + 4, &v2, 32);
+#if defined(__clang__)
+    /* keeps the broadcasts loads: clang would turn them into lane permutes */
+    __asm__ volatile("" : : "r"(wm) : "memory");
+#endif
+    shli_rot_bc(wm, &v1);
+    shli_rot_xc(t, t + 48, &w1);
+    v1 = v1 * w1;
+    shli_rot_bc(wm + 4, &v2);
+    shli_rot_xc(t + 32, t + 16, &w2);
+    v2 = v2 * w2;
+    SHLI_ROT_UNROLL
+    for (k = 1; k <= l / 2; ++k) {
+      shli_rot_v8 x;
+      shli_rot_v8 c;
+      shli_rot_bc(wm + k, &x);
+      shli_rot_xc(t + 4 * k, t + 48 + 4 * k, &c);
+      v1 = SHLI_ROT_FMA(x, c, v1);
+      shli_rot_bc(wm + 4 + k, &x);
+      shli_rot_xc(t + 32 + 4 * k, t + 16 + 4 * k, &c);
+      v2 = SHLI_ROT_FMA(x, c, v2);
+    }
+  }
+#if defined(__AVX2__)
+  _mm256_maskstore_ps(out_sh + b, pm, _mm256_blend_ps((__m256)w1, (__m256)w2, 0xaa));
+  _mm256_maskstore_ps(out_sh + b - 7, qm,
+                      _mm256_permutevar8x32_ps(_mm256_blend_ps((__m256)w2, (__m256)w1, 0xaa), rv));
+#else
+  SHLI_ROT_UNROLL
+  for (i = 0; i < 8; ++i) {
+    if (i <= l) {
+      out_sh[b + i] = i % 2 ? w2[i] : w1[i];
+    }
+    if (i > 0 && i <= l) {
+      out_sh[b - i] = i % 2 ? w1[i] : w2[i];
+    }
+  }
+#endif
+}
+/* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of Rz(alpha) Ry(beta) Rz(gamma): cos, sin of
+   the multiples of the three angles (double, lanes q: gamma, beta + pi, alpha + pi), in float
+   lanes j */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, float *out_sh,
                                                      double ca, double sa, double cb, double sb,
                                                      double cg, double sg) {
-  shli_rot_v4 tv[12];
-  int q;
-  /* z_q = cos + i sin of gamma, beta + pi, alpha + pi (lane q of z); tv[4 q .. 4 q + 3]: z_q^m
-     for the even m (powers of u = z^2; real, imaginary) and the odd m (z times those) */
-  {
-    shli_rot_v4 zr = {cg, -cb, -ca, 0.0};
-    shli_rot_v4 zi = {sg, -sb, -sa, 0.0};
-    shli_rot_v4 one = {1.0, 1.0, 1.0, 1.0};
-    shli_rot_v4 ur = zr * zr - zi * zi;
-    shli_rot_v4 ui = (zr + zr) * zi;
-    shli_rot_v4 o1r = zr * ur - zi * ui;
-    shli_rot_v4 o1i = zi * ur + zr * ui;
-    shli_rot_v4 u2r;
-    shli_rot_v4 u2i;
-    shli_rot_v4 k[16];
-    /* z^4 = u^2 and z^3 = z u (level 2), z^5 = u z^3, z^6 = u z^4, z^7 = z^3 z^4 (level 3), the
-       powers above n - 1 left zero */
-    u2r = ur * ur - ui * ui;
-    u2i = (ur + ur) * ui;
-    k[0] = one;
-    k[1] = ur;
-    k[2] = u2r;
-    k[4] = one - one;
-    k[5] = ui;
-    k[6] = u2i;
-    k[8] = zr;
-    k[9] = o1r;
-    k[12] = zi;
-    k[13] = o1i;
-    k[3] = k[4];
-    k[7] = k[4];
-    k[10] = k[4];
-    k[11] = k[4];
-    k[14] = k[4];
-    k[15] = k[4];
-    if (n > 5) {
-      k[10] = ur * o1r - ui * o1i;
-      k[14] = ui * o1r + ur * o1i;
-    }
-    if (n > 6) {
-      k[3] = ur * u2r - ui * u2i;
-      k[7] = ui * u2r + ur * u2i;
-    }
-    if (n > 7) {
-      k[11] = o1r * u2r - o1i * u2i;
-      k[15] = o1i * u2r + o1r * u2i;
-    }
-    /* 4 x 4 transposes: row j of kind g (lanes q) to tv[4 q + g] (lanes j) */
+  shli_rot_v4 zr = {cg, -cb, -ca, 0.0};
+  shli_rot_v4 zi = {sg, -sb, -sa, 0.0};
+  shli_rot_v4 p[16];
+  shli_rot_v8 cs[6];
+  int i;
+  /* p[j], p[8 + j]: cos, (-1)^j sin of j t (c = cos t, s = sin t), at most 3 dependent
+     multiply-adds: cos 2t = 2 c^2 - 1, sin 2t = 2 c s, cos 3t = 4 c^3 - 3 c, sin 3t = 4 c^2 s -
+     s, 4t and 6t as 2 (2t) and 2 (3t), 5t = 2t + 3t, 7t = 3t + 4t; j >= n zero */
+  p[8] = zr - zr;
+  for (i = 0; i < 8; ++i) {
+    p[i] = p[8];
+    p[8 + i] = p[8];
+  }
+  p[0] = p[8] + 1.0;
+  p[1] = zr;
+  p[9] = -zi;
+  p[2] = SHLI_ROT_FMAD(zr, zr + zr, p[0] - 2.0);
+  p[10] = (zr + zr) * zi;
+  p[3] = SHLI_ROT_FMAD(zr * zr, 4.0 * zr, -3.0 * zr);
+  p[11] = SHLI_ROT_FMAD(zr * zr, -4.0 * zi, zi);
+  if (n > 4) {
+    shli_rot_v4 c2 = SHLI_ROT_FMAD(zr, 4.0 * zr, p[0] - 3.0);
+    p[4] = SHLI_ROT_FMAD(p[2], c2, -p[0]);
+    p[12] = p[10] * c2;
+  }
+  if (n > 5) {
+    p[5] = SHLI_ROT_FMAD(p[2], p[3], p[10] * p[11]);
+    p[13] = SHLI_ROT_FMAD(p[2], p[11], -(p[10] * p[3]));
+  }
+  if (n > 6) {
+    p[6] = SHLI_ROT_FMAD(p[3], p[3] + p[3], -p[0]);
+    p[14] = -2.0 * p[11] * p[3];
+    p[7] = SHLI_ROT_FMAD(p[3], p[4], p[11] * p[12]);
+    p[15] = SHLI_ROT_FMAD(p[11], p[4], -(p[3] * p[12]));
+  }
+#if defined(__AVX2__) && defined(__FMA__)
+  if (n == 4) {
+    /* j <= 3 straight from cos t, sin t, in lanes j: (1, c, 2 c^2 - 1, 4 c^3 - 3 c) and s (0,
+       -1, 2 c, 1 - 4 c^2) */
+    __m256d a[6];
+    a[0] = _mm256_set1_pd(cg);
+    a[1] = _mm256_set1_pd(sg);
+    a[2] = _mm256_set1_pd(-cb);
+    a[3] = _mm256_set1_pd(-sb);
+    a[4] = _mm256_set1_pd(-ca);
+    a[5] = _mm256_set1_pd(-sa);
     SHLI_ROT_UNROLL
-    for (q = 0; q < 4; ++q) {
-      shli_rot_v4 t0 = SHLI_ROT_SHUF(k[4 * q], k[4 * q + 1], 0, 4, 2, 6);
-      shli_rot_v4 t1 = SHLI_ROT_SHUF(k[4 * q], k[4 * q + 1], 1, 5, 3, 7);
-      shli_rot_v4 t2 = SHLI_ROT_SHUF(k[4 * q + 2], k[4 * q + 3], 0, 4, 2, 6);
-      shli_rot_v4 t3 = SHLI_ROT_SHUF(k[4 * q + 2], k[4 * q + 3], 1, 5, 3, 7);
-      tv[q] = SHLI_ROT_SHUF(t0, t2, 0, 1, 4, 5);
-      tv[4 + q] = SHLI_ROT_SHUF(t1, t3, 0, 1, 4, 5);
-      tv[8 + q] = SHLI_ROT_SHUF(t0, t2, 2, 3, 6, 7);
+    for (i = 0; i < 3; ++i) {
+      __m256d c = a[2 * i];
+      __m256d c2 = _mm256_mul_pd(c, c);
+      __m256d u = _mm256_fmadd_pd(c, _mm256_setr_pd(0, 1, 0, -3), _mm256_setr_pd(1, 0, -1, 0));
+      __m256d v = _mm256_fmadd_pd(c, _mm256_setr_pd(0, 0, 0, 4), _mm256_setr_pd(0, 0, 2, 0));
+      __m256d w = _mm256_fmadd_pd(c, _mm256_setr_pd(0, 0, 2, 0), _mm256_setr_pd(0, -1, 0, 1));
+      cs[2 * i] = (shli_rot_v8)_mm256_castps128_ps256(_mm256_cvtpd_ps(_mm256_fmadd_pd(c2, v, u)));
+      w = _mm256_fmadd_pd(c2, _mm256_setr_pd(0, 0, 0, -4), w);
+      cs[2 * i + 1] =
+          (shli_rot_v8)_mm256_castps128_ps256(_mm256_cvtpd_ps(_mm256_mul_pd(a[2 * i + 1], w)));
+    }
+  } else
+#endif
+#if defined(__AVX__)
+  {
+    /* 4 x 8 transposes (lanes j >= n zero) */
+    __m128 f[16];
+    __m256 y[4];
+    for (i = 0; i < 16; ++i) {
+      f[i] = _mm256_cvtpd_ps((__m256d)p[i]);
+    }
+    SHLI_ROT_UNROLL
+    for (i = 0; i < 2; ++i) {
+      __m256 t0;
+      __m256 t1;
+      __m256 t2;
+      __m256 t3;
+      int a;
+      SHLI_ROT_UNROLL
+      for (a = 0; a < 4; ++a) {
+        y[a] = SHLI_ROT_ZEXT(f[8 * i + a]);
+        if (a + 4 < n) {
+          y[a] = _mm256_insertf128_ps(y[a], f[8 * i + a + 4], 1);
+        }
+      }
+      t0 = _mm256_unpacklo_ps(y[0], y[1]);
+      t1 = _mm256_unpackhi_ps(y[0], y[1]);
+      t2 = _mm256_unpacklo_ps(y[2], y[3]);
+      t3 = _mm256_unpackhi_ps(y[2], y[3]);
+      cs[i] = (shli_rot_v8)_mm256_shuffle_ps(t0, t2, 0x44);
+      cs[2 + i] = (shli_rot_v8)_mm256_shuffle_ps(t0, t2, 0xee);
+      cs[4 + i] = (shli_rot_v8)_mm256_shuffle_ps(t1, t3, 0x44);
     }
   }
-  /* literal band numbers: see shli_rot_band; at n = 5, 6 the longest chain first */
-  if (n <= 6) {
-    if (n > 5) {
-      shli_rot_band(5, tv, sh, out_sh);
-    }
-    if (n > 4) {
-      shli_rot_band(4, tv, sh, out_sh);
-    }
-    shli_rot_band(3, tv, sh, out_sh);
-    return;
+#else
+  SHLI_ROT_UNROLL
+  for (i = 0; i < 6; ++i) {
+    const shli_rot_v4 *r = p + 8 * (i % 2);
+    int q = i / 2;
+    shli_rot_v8 c = {(float)r[0][q], (float)r[1][q], (float)r[2][q], (float)r[3][q],
+                     (float)r[4][q], (float)r[5][q], (float)r[6][q], (float)r[7][q]};
+    cs[i] = c;
   }
-  shli_rot_band(3, tv, sh, out_sh);
-  shli_rot_band(4, tv, sh, out_sh);
-  shli_rot_band(5, tv, sh, out_sh);
-  shli_rot_band(6, tv, sh, out_sh);
+#endif
+  /* literal band numbers; the longest chain first */
   if (n > 7) {
-    shli_rot_band(7, tv, sh, out_sh);
+    shli_rot_bandf(7, cs, sh, out_sh);
   }
+  if (n > 6) {
+    shli_rot_bandf(6, cs, sh, out_sh);
+  }
+  if (n > 5) {
+    shli_rot_bandf(5, cs, sh, out_sh);
+  }
+  if (n > 4) {
+    shli_rot_bandf(4, cs, sh, out_sh);
+  }
+  shli_rot_bandf(3, cs, sh, out_sh);
 }
 /* n = 4, 5, 6 and 7..8: one function each */
 #define SHLI_ROT_HIGH_N(name, nn) \
@@ -3188,82 +3266,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
                                              double sg) { \
     shli_rot_high(nn, sh, out_sh, ca, sa, cb, sb, cg, sg); \
   }
-#if defined(__AVX2__)
-/* n = 4 (band 3): two groups per vector, P = (A0, B0, A1, B1), Q = (C0, D0, C1, D1); the z
-   rotations and X(+90) (columns U0, U1 for P, V0, V1 for Q) in it: docs/rotation.md, method 2 */
-static const shli_rot_v4 SHLI_ROT_X3P[4] = {
-    {-0.61237243569579447, 0.61237243569579447, -0.79056941504209488, 0.79056941504209488},
-    {-0.79056941504209488, 0.79056941504209488, 0.61237243569579447, -0.61237243569579447},
-    {-0.25, 0.0, -0.96824583655185426, 0.0},
-    {-0.96824583655185426, 0.0, 0.25, -1.0}};
-#define SHLI_ROT_SW(v) SHLI_ROT_SHUF(v, v, 1, 0, 3, 2)
-#define SHLI_ROT_LO(v) SHLI_ROT_SHUF(v, v, 0, 1, 0, 1)
-#define SHLI_ROT_HI(v) SHLI_ROT_SHUF(v, v, 2, 3, 2, 3)
-SHLI_ROT_NOINLINE SHLI_ROT_NOSLP void shli_sh_rotate_h4(int n, const float *sh, float *out_sh,
-                                                        double ca, double sa, double cb, double sb,
-                                                        double cg, double sg) {
-  shli_rot_v4 zr = {cg, -cb, -ca, -ca}; /* lane 3: not used */
-  shli_rot_v4 zi = {sg, -sb, -sa, -sa};
-  shli_rot_v4 one = {1.0, 1.0, 1.0, 1.0};
-  shli_rot_v4 ur = zr * zr - zi * zi;
-  shli_rot_v4 ui = (zr + zr) * zi;
-  shli_rot_v4 o1r = zr * ur - zi * ui;
-  shli_rot_v4 o1i = zi * ur + zr * ui;
-  shli_rot_v4 c[3];
-  shli_rot_v4 s[3];
-  const shli_rot_v4 *u = SHLI_ROT_X3P;
-  shli_rot_v4 p;
-  shli_rot_v4 q;
-  shli_rot_v4 p1;
-  shli_rot_v4 q1;
-  __m256 f = _mm256_loadu_ps(sh + 8);
-  (void)n;
-  /* 4 x 4 transposes: lanes q (gamma, beta + pi, alpha + pi) to lanes m */
-  {
-    shli_rot_v4 ni = (one - one) - ui;
-    shli_rot_v4 t0 = SHLI_ROT_SHUF(one, zr, 0, 4, 2, 6);
-    shli_rot_v4 t1 = SHLI_ROT_SHUF(one, zr, 1, 5, 3, 7);
-    shli_rot_v4 t2 = SHLI_ROT_SHUF(ur, o1r, 0, 4, 2, 6);
-    shli_rot_v4 t3 = SHLI_ROT_SHUF(ur, o1r, 1, 5, 3, 7);
-    shli_rot_v4 h0 = SHLI_ROT_SHUF(one - one, zi, 0, 4, 2, 6);
-    shli_rot_v4 h1 = SHLI_ROT_SHUF(one - one, zi, 1, 5, 3, 7);
-    shli_rot_v4 h2 = SHLI_ROT_SHUF(ni, o1i, 0, 4, 2, 6);
-    shli_rot_v4 h3 = SHLI_ROT_SHUF(ni, o1i, 1, 5, 3, 7);
-    c[0] = SHLI_ROT_SHUF(t0, t2, 0, 1, 4, 5);
-    c[1] = SHLI_ROT_SHUF(t1, t3, 0, 1, 4, 5);
-    c[2] = SHLI_ROT_SHUF(t0, t2, 2, 3, 6, 7);
-    s[0] = SHLI_ROT_SHUF(h0, h2, 0, 1, 4, 5);
-    s[1] = SHLI_ROT_SHUF(h1, h3, 0, 1, 4, 5);
-    s[2] = SHLI_ROT_SHUF(h0, h2, 2, 3, 6, 7);
-  }
-  /* P and Q from sh[8 .. 15] (band 3 and sh[8]), D0 zero */
-  f = _mm256_permutevar8x32_ps(f, _mm256_setr_epi32(4, 3, 6, 1, 5, 0, 7, 2));
-  f = _mm256_blend_ps(f, _mm256_setzero_ps(), 0x20);
-  p = (shli_rot_v4)_mm256_cvtps_pd(_mm256_castps256_ps128(f));
-  q = (shli_rot_v4)_mm256_cvtps_pd(_mm256_extractf128_ps(f, 1));
-  p1 = p * c[0] + SHLI_ROT_SW(q) * s[0];
-  q1 = q * SHLI_ROT_SW(c[0]) - SHLI_ROT_SW(p) * SHLI_ROT_SW(s[0]);
-  p = SHLI_ROT_LO(p1) * u[0] + SHLI_ROT_HI(p1) * u[1];
-  q = SHLI_ROT_LO(q1) * u[2] + SHLI_ROT_HI(q1) * u[3];
-  p1 = p * SHLI_ROT_SW(c[1]) + q * SHLI_ROT_SW(s[1]);
-  q1 = q * SHLI_ROT_SW(c[1]) - p * SHLI_ROT_SW(s[1]);
-  p = -(SHLI_ROT_LO(p1) * u[0]) - SHLI_ROT_HI(p1) * u[1];
-  q = SHLI_ROT_LO(q1) * u[2] + SHLI_ROT_HI(q1) * u[3];
-  p1 = p * c[2] + SHLI_ROT_SW(q) * s[2];
-  q1 = q * SHLI_ROT_SW(c[2]) - SHLI_ROT_SW(p) * SHLI_ROT_SW(s[2]);
-  /* (P, Q) to m = -3..3 at out_sh[9 .. 15], out_sh[8] (band 2) kept */
-  f = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm256_cvtpd_ps((__m256d)p1)),
-                           _mm256_cvtpd_ps((__m256d)q1), 1);
-  f = _mm256_permutevar8x32_ps(f, _mm256_setr_epi32(0, 3, 7, 1, 0, 4, 2, 6));
-  f = _mm256_blend_ps(f, _mm256_broadcast_ss(out_sh + 8), 1);
-  _mm256_storeu_ps(out_sh + 8, f);
-}
-#undef SHLI_ROT_SW
-#undef SHLI_ROT_LO
-#undef SHLI_ROT_HI
-#else
 SHLI_ROT_HIGH_N(shli_sh_rotate_h4, ((void)n, 4))
-#endif
 SHLI_ROT_HIGH_N(shli_sh_rotate_h5, ((void)n, 5))
 SHLI_ROT_HIGH_N(shli_sh_rotate_h6, ((void)n, 6))
 SHLI_ROT_HIGH_N(shli_sh_rotate_h8, (n < 7 ? 7 : n))
@@ -3338,7 +3341,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R
   }
 #if defined(__AVX2__) && defined(__FMA__)
   if (n == 2) {
-    shli_rot_b1v(R, sh, out_sh);
+    shli_rot_b1f(R, sh, out_sh);
     return;
   }
 #endif
@@ -3401,7 +3404,12 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
     cg = r11 * f;
     sg = r10 * f;
   }
+#if defined(__AVX2__) && defined(__FMA__)
+  shli_rot_b1f(R, sh, out_sh);
+  shli_rot_b2v(R, sh, out_sh);
+#else
   shli_rot_b012(3, R, sh, out_sh);
+#endif
   switch (n) {
   case 4:
     shli_sh_rotate_h4(n, sh, out_sh, ca, sa, cb, sb, cg, sg);

@@ -18,6 +18,9 @@
 /* shl_sh_rotate with SHLIGHT_ROTATE_FAST 0: the portable kernel at every n */
 void rotate_portable(int n, const float R[9], const float *sh, float *out_sh);
 
+/* the small-n path (GCC / Clang): n = 4..8 in float lanes (bands 3..; 1 and 2 too with AVX2 and
+   FMA, where n = 2's band 1 is also in float lanes) */
+#define ROT_FLOAT SHLIGHT_ROTATE_FAST
 #define NMAX 64
 #define NC (NMAX * NMAX)
 typedef long double ld;
@@ -553,17 +556,19 @@ static double fast_vs_portable(int n, const float R[9]) {
  * itself). The small-n path takes a near-rotation R as given (bands 1, 2: R's entries; bands 3..7:
  * angles read from them), the portable kernel as the exact rotation its entries define: on
  * float-rounded rotations they differ by up to 1.3e-7 of a band (measured: hard 8.5e-8, 200
- * random 1.3e-7), on matrices moved by up to 3 ulps per entry by up to 7.5e-7 */
+ * random 1.3e-7; n = 4..8 with AVX2 and FMA, bands 2.. in float lanes: 3e-7, measured hard
+ * 1.3e-7, random 2.4e-7), on matrices moved by up to 3 ulps per entry by up to 7.7e-7 */
 static void test_fast_vs_portable(void) {
   int n, k, s;
   for (n = 1; n <= 9; ++n) {
-    double worst = 0.0, worst_ulp = 0.0, worst_rnd = 0.0;
+    double worst = 0.0, worst_ulp = 0.0, worst_rnd = 0.0,
+           tol = ROT_FLOAT && n >= 4 && n <= 8 ? 3e-7 : 2e-7;
     float R[9];
     for (k = 0; k < NHARD; ++k) {
       double e;
       axis_angle(HARD[k][0], HARD[k][1], HARD[k][2], HARD[k][3], R);
       e = fast_vs_portable(n, R);
-      TL_CHECK(e <= 2e-7, "n = %d %s: fast vs portable %g", n, HARD_NAME[k], e);
+      TL_CHECK(e <= tol, "n = %d %s: fast vs portable %g", n, HARD_NAME[k], e);
       worst = e > worst ? e : worst;
       for (s = 0; s < 4; ++s) {
         axis_angle(HARD[k][0], HARD[k][1], HARD[k][2], HARD[k][3], R);
@@ -579,7 +584,7 @@ static void test_fast_vs_portable(void) {
       e = fast_vs_portable(n, R);
       worst_rnd = e > worst_rnd ? e : worst_rnd;
     }
-    TL_CHECK(worst_rnd <= 2e-7, "n = %d random: fast vs portable %g", n, worst_rnd);
+    TL_CHECK(worst_rnd <= tol, "n = %d random: fast vs portable %g", n, worst_rnd);
     printf("  n = %d: |fast - portable| / band: hard %.3g, hard + ulps %.3g, 200 random %.3g\n", n,
            worst, worst_ulp, worst_rnd);
   }
@@ -644,30 +649,33 @@ static void test_fast_accuracy(void) {
   }
 }
 
-/* n = 4 (the small-n path's bands 0..3) on 2000 random float-rounded rotations and the hard
- * ones against the long-double reference (the 1.3e-7 the small-n path is held to), and against
- * the portable kernel */
-static void test_fast_n4_random(void) {
-  double worst = 0.0, worst_p = 0.0;
-  int k;
-  for (k = 0; k < 2000 + NHARD; ++k) {
-    float R[9];
-    double e;
-    if (k < NHARD) {
-      axis_angle(HARD[k][0], HARD[k][1], HARD[k][2], HARD[k][3], R);
-    } else {
-      rand_R(R);
+/* n = 2..8 (the small-n path) on 2000 random float-rounded rotations and the hard ones against
+ * the long-double reference (the 1.3e-7 the small-n path is held to at n <= 3, 3e-7 at n = 4..8
+ * where it runs in float lanes), and against the portable kernel */
+static void test_fast_n2_8_random(void) {
+  int n, k;
+  for (n = 2; n <= 8; ++n) {
+    double worst = 0.0, worst_p = 0.0;
+    for (k = 0; k < 2000 + NHARD; ++k) {
+      float R[9];
+      double e;
+      if (k < NHARD) {
+        axis_angle(HARD[k][0], HARD[k][1], HARD[k][2], HARD[k][3], R);
+      } else {
+        rand_R(R);
+      }
+      e = check_against_ref(n, R);
+      TL_CHECK(e <= (ROT_FLOAT && n >= 4 ? 3e-7 : 1.3e-7),
+               "n = %d rotation %d: %g against the reference", n, k, e);
+      worst = e > worst ? e : worst;
+      e = fast_vs_portable(n, R);
+      TL_CHECK(e <= 3e-7, "n = %d rotation %d: fast vs portable %g", n, k, e);
+      worst_p = e > worst_p ? e : worst_p;
     }
-    e = check_against_ref(4, R);
-    TL_CHECK(e <= 1.3e-7, "rotation %d: %g against the reference", k, e);
-    worst = e > worst ? e : worst;
-    e = fast_vs_portable(4, R);
-    TL_CHECK(e <= 2e-7, "rotation %d: fast vs portable %g", k, e);
-    worst_p = e > worst_p ? e : worst_p;
+    printf("  n = %d: worst band error %.3g against the reference, %.3g "
+           "against the portable kernel (%d rotations)\n",
+           n, worst, worst_p, 2000 + NHARD);
   }
-  printf("  n = 4: worst band error %.3g against the reference, %.3g "
-         "against the portable kernel (%d rotations)\n",
-         worst, worst_p, 2000 + NHARD);
 }
 
 /* bands are independent: a NaN in every coefficient of band k leaves every other band of the
@@ -842,7 +850,7 @@ int main(void) {
   TL_RUN(test_fast_near_rotation);
   TL_RUN(test_fast_edge);
   TL_RUN(test_fast_accuracy);
-  TL_RUN(test_fast_n4_random);
+  TL_RUN(test_fast_n2_8_random);
   TL_RUN(test_band_isolation);
   TL_RUN(test_agrees_rotate_z);
   TL_RUN(test_delta_direction);
