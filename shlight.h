@@ -248,17 +248,17 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    R_10, R_11 (within 1e-7 of a float-rounded R; any finite matrix gives a rotation, an
    all-zero R the identity; R_20, R_21 not read); NaN in a read entry gives NaN in every band
    above 0.
-   Accuracy (C, double inside; against a long-double re-projection, tests/test_rotate.c): per
-   band, |error| / |input band| <= 4.6e-8 in the portable kernel (n = 1..64, the float rounding
-   of the output); the n <= 8 path 1.3e-7 on float-rounded rotations, 6e-7 on rotations moved
-   by 3 ulps per entry; band energy kept to 1.4e-7. GLSL (float inside): within 1.8e-6 of C
+   Accuracy (C, double inside; against a long-double re-projection): per band, |error| /
+   |input band| <= 4.6e-8 in the portable kernel (n = 1..64, the float rounding of the output);
+   the n <= 8 path 1.3e-7 on float-rounded rotations, 6e-7 on rotations moved by 3 ulps per
+   entry; band energy kept to 1.4e-7. GLSL (float inside): within 1.8e-6 of C
    per band at n = 16 (llvmpipe).
    Cost: n <= 8 (C, GCC / Clang): 69 / 164 / 303 / 450 / 583 / 881 instructions at n = 2 / 3 /
    4 / 5 / 6 / 8 (gcc -O3 -march=x86-64-v3), 6.5 / 14.8 / 34 / 53 / 69 / 102 ns; DirectXMath's
    XMSHRotate (n <= 6) 79 / 222 / 304 / 463 / 665 instructions, 4.5 / 18.3 / 30 / 45 / 66 ns.
-   Otherwise about n^3 / 3 steps of the two recurrences (a sqrt and a division each) and n^3 /
-   3 of the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64. Stack: about 7.5 KB at
-   SHLIGHT_MAX_BANDS = 64. */
+   Portable kernel (also R off a rotation: orthonormalise it): n^3 / 3 steps of the two
+   recurrences and of the row dot products, ~0.75k / 1.6k / 3.0k / 15k instructions at n = 2 /
+   3 / 4 / 8, 8.7 us at n = 16, 0.47 ms at n = 64. Stack: 7.5 KB at SHLIGHT_MAX_BANDS = 64. */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh);
 
 /* ---- light --------------------------------------------------------------------------------- */
@@ -439,7 +439,7 @@ SHLIGHT_INLINE float shl_edge_integral(float phi, float c, float delta, float ex
 
 /* shl_polygon_moment: the axial moment of [AREA] eq. 1, integral over the solid angle of the
    polygon v[0..nv-1] (vertices relative to the shading point, any winding, two-sided), clipped
-   to the hemisphere u.axis > 0, of (u.axis)^exponent (exponent 1 about the normal: the
+   to the hemisphere u.axis > 0, of (u.axis)^exponent (exponent 1 about the normal:
    irradiance; Lambert: / pi). nv >= 3, any count in C (fan pieces of at most 8 vertices above
    SHLIGHT_POLYGON_MAX = 8, see >>edge; GLSL: at most SHLIGHT_POLYGON_MAX, above it -1). A
    non-convex or self-overlapping (planar) polygon is integrated with its winding number
