@@ -1,6 +1,6 @@
 /* lights.c - several lights in one 3-band SH, shaded at many normals; the gradient of an SH
-   function; rotating SH; a quad light with Lambert and GGX. Each result is checked against a
-   closed form. C99 and C++11 clean. Build and run: make example */
+   function; rotating SH; a quad light with Lambert and GGX. The sphere, rotation and Lambert
+   results are checked against closed forms. C99 and C++11 clean. Build and run: make example */
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
 
