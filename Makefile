@@ -1,5 +1,5 @@
 # shlight - build, test, bench. Targets:
-#   make example      build and run examples/hello_sh
+#   make example      build and run examples/hello_sh and examples/lights (C99 and C++11)
 #   make test         everything CI runs; ends with "N passed, N failed"
 #   make bench        speed against error tables (bench/out/), callgrind instruction counts
 #   make fuzz         libFuzzer run of the basis entry point (FUZZ_SECONDS, default 60)
@@ -19,7 +19,7 @@ LDLIBS := -lm
 .DEFAULT_GOAL := all
 .PHONY: all example test test-glsl-full bench fuzz gen format format-check compile-matrix clean
 
-all: $(BUILD)/examples/hello_sh
+all: $(BUILD)/examples/hello_sh $(BUILD)/examples/lights $(BUILD)/examples/lights_cxx
 
 include tests/gl/gl.mk
 -include tests/tests.mk
@@ -29,8 +29,17 @@ $(BUILD)/examples/hello_sh: examples/hello_sh.c shlight.h
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 $(WARN) -o $@ $< $(LDLIBS)
 
-example: $(BUILD)/examples/hello_sh
+$(BUILD)/examples/lights: examples/lights.c shlight.h
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -O2 $(WARN) -o $@ $< $(LDLIBS)
+
+$(BUILD)/examples/lights_cxx: examples/lights.c shlight.h
+	@mkdir -p $(@D)
+	$(CXX) -std=c++11 -O2 $(WARNXX) -x c++ -o $@ $< $(LDLIBS)
+
+example: $(BUILD)/examples/hello_sh $(BUILD)/examples/lights $(BUILD)/examples/lights_cxx
 	$(BUILD)/examples/hello_sh
+	$(BUILD)/examples/lights
 
 # the implementation, compiled once for the GL tests (they include shlight.h without it)
 $(BUILD)/tests/impl_c.o: tests/impl_c.c shlight.h

@@ -19,7 +19,7 @@
      shl_zh_cosine_power(4, 1.0f, lobe);              2. a lobe's ZH (clamped cosine; Phong,
                                                          GGX, Beckmann: shl_zh_phong, _ggx, ...)
      e = shl_sh_conv_zh(4, light, lobe, nrm);         3. convolution: irradiance at nrm
-     e = shl_zh_dot_zh(4, cap, axis, lobe, nrm);      3'. the same, O(n), for one cap's ZH
+     e = shl_zh_dot_zh(4, cap, axis, lobe, nrm);      3'. O(n), one sphere: shl_zh_cap, axis c - x
      L = albedo / pi * e;                             4. shade
    Area lights take no SH at all:
      shl_polygon_moment(quad, 4, nrm, 1.0f, SHLIGHT_EDGE_AUTO) / pi   Lambert from a quad
@@ -265,9 +265,9 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    Cost: n <= 8 (C, GCC / Clang): 61 / 162 / 273 / 339 / 405 / 582 instructions at n = 2 / 3 /
    4 / 5 / 6 / 8 (gcc -O3 -march=x86-64-v3), 4.2 / 15 / 26 / 40 / 48 / 71 ns; DirectXMath's
    XMSHRotate (n <= 6) 79 / 222 / 304 / 463 / 665 instructions, 4.3 / 18.3 / 30 / 45 / 67 ns.
-   Otherwise about n^3 / 3 steps of the two recurrences (a sqrt and a division each) and n^3 /
-   3 of the row dot products: 8.7 us at n = 16, 0.47 ms at n = 64. Stack: about 7.5 KB at
-   SHLIGHT_MAX_BANDS = 64. */
+   Portable kernel (also R off a rotation: orthonormalise it): n^3 / 3 steps of the two
+   recurrences and of the row dot products, ~0.75k / 1.6k / 3.0k / 15k instructions at n = 2 /
+   3 / 4 / 8, 8.7 us at n = 16, 0.47 ms at n = 64. Stack: 7.5 KB at SHLIGHT_MAX_BANDS = 64. */
 SHLIGHT_INLINE void shl_sh_rotate(int n, const float R[9], const float *sh, float *out_sh);
 
 /* ---- light --------------------------------------------------------------------------------- */
@@ -301,10 +301,10 @@ SHLIGHT_INLINE void shl_sphere_light_grad(int n, const float x[3], const float c
 /* shl_triangle_light: SH of the unit-radiance two-sided triangle light (p0, p1, p2) seen
    from x, approximated by the paper's sphere ([GRAD] eq. 24-26): the sphere light at the
    centroid with r_s = sqrt(area / pi), times |cos gamma|, gamma the angle between the
-   triangle's normal and the direction from x to the centroid. A model, not the exact
-   projection: its error is set by distance / sqrt(area) (docs/derivations.md section 4: L_0 within
-   1e-3 at 20, 3e-5 at 100 for well-shaped triangles; slivers are worse). x closer to the centroid
-   than r_s: the hemisphere (as shl_sphere_light) times |cos gamma|; x == centroid: axis +z.
+   triangle's normal and the direction from x to the centroid. A model: its error is set by
+   distance / sqrt(area) (docs/accuracy.md: 0.18 at 2, 2.4e-2 at 5, 1.5e-3 at 20, 5.7e-5 at 100,
+   equilateral; a 10:1 sliver ~10x worse). x closer to the centroid than r_s: the hemisphere (as
+   shl_sphere_light) times |cos gamma|; x == centroid: axis +z.
    Zero-area triangle, NaN or infinite input: zeros. out_sh: n * n floats. Cost: one
    shl_sphere_light plus a cross product. */
 SHLIGHT_INLINE void shl_triangle_light(int n, const float x[3], const float p0[3],
@@ -448,12 +448,12 @@ SHLIGHT_INLINE float shl_edge_integral(float phi, float c, float delta, float ex
 
 /* shl_polygon_moment: the axial moment of [AREA] eq. 1, integral over the solid angle of the
    polygon v[0..nv-1] (vertices relative to the shading point, any winding, two-sided), clipped
-   to the hemisphere u.axis > 0, of (u.axis)^exponent. nv >= 3, any count in C (above
-   SHLIGHT_POLYGON_MAX = 8 the polygon is summed in fan pieces of at most 8 vertices, see the
-   start of >>edge; GLSL: at most SHLIGHT_POLYGON_MAX, above it -1). A non-convex or
-   self-overlapping (planar) polygon is integrated with its winding number relative to its net
-   orientation (a region wound twice counts twice). axis any non-zero vector (normalised
-   inside); exponent >= 0 real. method:
+   to the hemisphere u.axis > 0, of (u.axis)^exponent (exponent 1 about the normal:
+   irradiance; Lambert: / pi). nv >= 3, any count in C (fan pieces of at most 8 vertices above
+   SHLIGHT_POLYGON_MAX = 8, see >>edge; GLSL: at most SHLIGHT_POLYGON_MAX, above it -1). A
+   non-convex or self-overlapping (planar) polygon is integrated with its winding number
+   relative to its net orientation (a region wound twice counts twice). axis any non-zero
+   vector (normalised inside); exponent >= 0 real. method:
    - SHLIGHT_EDGE_EXACT: exact at every real exponent. Integer exponents up to 65536: Arvo's
      form with the O(e) recurrence (double inside in C); any other exponent: the Stokes form
      (see >>edge) with an adaptive composite Gauss-Legendre rule run until two levels agree to
@@ -476,7 +476,7 @@ SHLIGHT_INLINE float shl_edge_integral(float phi, float c, float delta, float ex
    Degenerate: nv < 3, zero axis, NaN anywhere, a polygon through the shading point or reduced
    to < 3 vertices by the clip: 0; NaN exponent or exponent >= 1e30: 0 (the limit of the
    moment); negative exponent: treated as 0. Result >= 0 (GLSL nv > SHLIGHT_POLYGON_MAX: -1).
-   Accuracy and cost: docs/area-lights.md (measured against tests/ref/arearef.h). */
+   Accuracy and cost: docs/area-lights.md. */
 SHLIGHT_INLINE float shl_polygon_moment(const float (*v)[3], int nv, const float axis[3],
                                         float exponent, shl_edge_method method);
 
@@ -705,11 +705,10 @@ typedef enum shl_window_kind {
 SHLIGHT_INLINE void shl_zh_phong(int n, float exponent, float *out_zh);
 
 /* shl_zh_cosine_power: ZH of the unnormalised clamped cosine power max(0, cos t)^e:
-   out_zh[l] = 2 pi K_l Lambda_l(e) / (e+1) = sqrt(pi (2l+1)) int_0^1 x^e P_l(x) dx. Same
-   exponent domain and accuracy as shl_zh_phong (e = 0: the hemisphere indicator, out_zh[0] =
-   sqrt(pi); e = 1: the clamped cosine, out_zh = A_l K_l of docs/derivations.md section 6; above
-   1e30:
-   1e30, every coefficient about 2 pi K_l 1e-30). out_zh: n floats. Cost: O(n). */
+   out_zh[l] = 2 pi K_l Lambda_l(e) / (e+1) = sqrt(pi (2l+1)) int_0^1 x^e P_l(x) dx. Domain and
+   accuracy as shl_zh_phong (e = 0: the hemisphere indicator, out_zh[0] = sqrt(pi); e = 1: the
+   clamped cosine, out_zh = A_l K_l of docs/derivations.md section 6, for irradiance by
+   shl_sh_conv_zh; above 1e30: 1e30, each coefficient ~2 pi K_l 1e-30). n floats. O(n). */
 SHLIGHT_INLINE void shl_zh_cosine_power(int n, float exponent, float *out_zh);
 
 /* shl_zh_lambert: ZH of the Lambert lobe max(0, cos t) / pi (k_d = 1; the BRDF times the
