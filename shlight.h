@@ -3054,6 +3054,34 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bc(const double *w, shli_rot_v8 
   }
 #endif
 }
+#if defined(__SSE2__) && !defined(__AVX2__)
+#define SHLI_ROT_S(a, b, c, d) ((a) | (b) << 2 | (c) << 4 | (d) << 6)
+/* the first c floats (1..4) of x, zero-filled; stored */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE __m128 shli_rot_ld(const float *x, int c) {
+  if (c == 1) {
+    return _mm_load_ss(x);
+  }
+  if (c > 3) {
+    return _mm_loadu_ps(x);
+  }
+  {
+    __m128 a = _mm_castsi128_ps(_mm_loadl_epi64((const __m128i *)x));
+    return c == 2 ? a : _mm_movelh_ps(a, _mm_load_ss(x + 2));
+  }
+}
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_st(float *x, __m128 v, int c) {
+  if (c > 3) {
+    _mm_storeu_ps(x, v);
+    return;
+  }
+  if (c > 1) {
+    _mm_storel_epi64((__m128i *)x, _mm_castps_si128(v));
+  }
+  if (c != 2) {
+    _mm_store_ss(x + c - 1, c > 1 ? _mm_movehl_ps(v, v) : v);
+  }
+}
+#endif
 /* band l (3 <= l < SHLI_ROT_FAST_BANDS, a literal: the loops unroll); cs: C0, S0, C1, .. S2 */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *cs, const float *sh,
                                                       float *out_sh) {
@@ -3079,6 +3107,33 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
   __m256 q = _mm256_permutevar8x32_ps(_mm256_maskload_ps(sh + b - 7, qm), rv);
   shli_rot_v8 v1 = (shli_rot_v8)_mm256_blend_ps(p, q, 0xaa);
   shli_rot_v8 v2 = (shli_rot_v8)_mm256_blend_ps(q, p, 0xaa);
+#elif defined(__SSE2__)
+  /* halves: lanes 0..3 from sh + b, sh + b - 3; 4..l from sh + b + 4 (l - 3 floats) and sh + b
+     - 7 (masked) */
+  __m128 h[4];
+  __m128 p = _mm_loadu_ps(sh + b);
+  __m128 q = _mm_loadu_ps(sh + b - 3);
+  __m128 ph = _mm_setzero_ps();
+  __m128 qh = _mm_setzero_ps();
+  shli_rot_v8 v1;
+  shli_rot_v8 v2;
+  h[0] = _mm_shuffle_ps(p, q, SHLI_ROT_S(0, 2, 2, 0));
+  h[0] = _mm_shuffle_ps(h[0], h[0], SHLI_ROT_S(0, 2, 1, 3));
+  h[2] = _mm_shuffle_ps(p, q, SHLI_ROT_S(1, 3, 1, 1));
+  h[2] = _mm_and_ps(_mm_shuffle_ps(h[2], h[2], SHLI_ROT_S(0, 0, 2, 1)),
+                    _mm_castsi128_ps(_mm_setr_epi32(0, -1, -1, -1)));
+  if (l > 3) {
+    ph = shli_rot_ld(sh + b + 4, l - 3);
+    qh = _mm_loadu_ps(sh + b - 7);
+  }
+  h[1] = _mm_and_ps(_mm_shuffle_ps(ph, qh, SHLI_ROT_S(0, 2, 2, 0)),
+                    _mm_castsi128_ps(_mm_setr_epi32(-1, -1, l > 4 ? -1 : 0, l > 6 ? -1 : 0)));
+  h[1] = _mm_shuffle_ps(h[1], h[1], SHLI_ROT_S(0, 2, 1, 3));
+  h[3] = _mm_and_ps(_mm_shuffle_ps(ph, qh, SHLI_ROT_S(1, 3, 3, 1)),
+                    _mm_castsi128_ps(_mm_setr_epi32(-1, -1, l > 3 ? -1 : 0, l > 5 ? -1 : 0)));
+  h[3] = _mm_shuffle_ps(h[3], h[3], SHLI_ROT_S(2, 0, 3, 1));
+  memcpy(&v1, h, 32);
+  memcpy(&v2, h + 2, 32);
 #else
 #define SHLI_ROT_IN(m) ((m) <= l && (m) >= -l ? sh[b + (m)] : 0.0f)
   shli_rot_v8 v1 = {SHLI_ROT_IN(0), SHLI_ROT_IN(-1), SHLI_ROT_IN(2), SHLI_ROT_IN(-3),
@@ -3125,6 +3180,26 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
   _mm256_maskstore_ps(out_sh + b, pm, _mm256_blend_ps((__m256)w1, (__m256)w2, 0xaa));
   _mm256_maskstore_ps(out_sh + b - 7, qm,
                       _mm256_permutevar8x32_ps(_mm256_blend_ps((__m256)w2, (__m256)w1, 0xaa), rv));
+#elif defined(__SSE2__)
+  {
+    /* m <= 0 first, whole halves from b - 7 and b - 3: their lanes past -l (band l - 1, written
+       after) and lane 3 (m = 0, stored next) are overwritten */
+    __m128 y;
+    memcpy(h, &w1, 32);
+    memcpy(h + 2, &w2, 32);
+    if (l > 3) {
+      y = _mm_shuffle_ps(h[1], h[3], SHLI_ROT_S(3, 1, 2, 0));
+      _mm_storeu_ps(out_sh + b - 7, _mm_shuffle_ps(y, y, SHLI_ROT_S(0, 2, 1, 3)));
+    }
+    y = _mm_shuffle_ps(h[0], h[2], SHLI_ROT_S(3, 1, 2, 2));
+    _mm_storeu_ps(out_sh + b - 3, _mm_shuffle_ps(y, y, SHLI_ROT_S(0, 2, 1, 3)));
+    y = _mm_shuffle_ps(h[0], h[2], SHLI_ROT_S(0, 2, 1, 3));
+    _mm_storeu_ps(out_sh + b, _mm_shuffle_ps(y, y, SHLI_ROT_S(0, 2, 1, 3)));
+    if (l > 3) {
+      y = _mm_shuffle_ps(h[1], h[3], SHLI_ROT_S(0, 2, 1, 3));
+      shli_rot_st(out_sh + b + 4, _mm_shuffle_ps(y, y, SHLI_ROT_S(0, 2, 1, 3)), l - 3);
+    }
+  }
 #else
   SHLI_ROT_UNROLL
   for (i = 0; i < 8; ++i) {
