@@ -3218,11 +3218,24 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, float *out_sh,
                                                      double ca, double sa, double cb, double sb,
                                                      double cg, double sg) {
-  shli_rot_v4 zr = {cg, -cb, -ca, 0.0};
-  shli_rot_v4 zi = {sg, -sb, -sa, 0.0};
   shli_rot_v4 p[16];
   shli_rot_v8 cs[6];
   int i;
+#if defined(__SSE2__) && !defined(__AVX__)
+  /* by register pairs: scalar stores read back as vectors would stall store forwarding */
+  shli_rot_v4 zr;
+  shli_rot_v4 zi;
+  __m128d z[4];
+  z[0] = _mm_unpacklo_pd(_mm_set_sd(cg), _mm_set_sd(-cb));
+  z[1] = _mm_set_sd(-ca);
+  z[2] = _mm_unpacklo_pd(_mm_set_sd(sg), _mm_set_sd(-sb));
+  z[3] = _mm_set_sd(-sa);
+  memcpy(&zr, z, 32);
+  memcpy(&zi, z + 2, 32);
+#else
+  shli_rot_v4 zr = {cg, -cb, -ca, 0.0};
+  shli_rot_v4 zi = {sg, -sb, -sa, 0.0};
+#endif
   /* p[j], p[8 + j]: cos, (-1)^j sin of j t (c = cos t, s = sin t), at most 3 dependent
      multiply-adds: cos 2t = 2 c^2 - 1, sin 2t = 2 c s, cos 3t = 4 c^3 - 3 c, sin 3t = 4 c^2 s -
      s, 4t and 6t as 2 (2t) and 2 (3t), 5t = 2t + 3t, 7t = 3t + 4t; j >= n zero */
