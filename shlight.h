@@ -3003,6 +3003,24 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b2v(const float R[9], const floa
 }
 #undef SHLI_ROT_P
 #else
+#if defined(__SSE2__)
+/* band 1 in float lanes (out 3, -, 1, -2 as shli_rot_b1f's), then with sh[0] into place */
+#define SHLI_ROT_B1SSE 1
+#define SHLI_ROT_SB(x, a, b, c, d) _mm_shuffle_ps(x, x, (a) | (b) << 2 | (c) << 4 | (d) << 6)
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1f(const float R[9], const float *sh,
+                                                    float *out_sh) {
+  __m128 a = _mm_loadu_ps(R);
+  __m128 s = _mm_loadu_ps(sh);
+  __m128 o = _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 4), 0xc5), SHLI_ROT_SB(s, 1, 1, 1, 1));
+  o = _mm_add_ps(o, _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 3), 0xc0),
+                               SHLI_ROT_SB(s, 3, 3, 3, 3)));
+  o = _mm_sub_ps(o, _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 5), 0xca),
+                               SHLI_ROT_SB(s, 2, 2, 2, 2)));
+  o = _mm_xor_ps(o, _mm_set_ps(-0.0f, 0.0f, 0.0f, 0.0f));
+  _mm_storeu_ps(out_sh, _mm_shuffle_ps(_mm_shuffle_ps(s, o, 0x20), o, 0x38));
+}
+#undef SHLI_ROT_SB
+#endif
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   double r02 = (double)R[2];
   double r12 = (double)R[5];
@@ -3383,6 +3401,9 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b012(int n, const float R[9], co
     return;
   }
   /* band 1: Y_1 = sqrt(3 / (4 pi)) (-y, z, -x), so R's entries, signed and permuted */
+#if defined(SHLI_ROT_B1SSE)
+  shli_rot_b1f(R, sh, out_sh);
+#else
   {
     double am = (double)sh[1];
     double a0 = (double)sh[2];
@@ -3391,6 +3412,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b012(int n, const float R[9], co
     out_sh[2] = (float)(r22 * a0 - r21 * am - r20 * ap);
     out_sh[3] = (float)(r01 * am - r02 * a0 + r00 * ap);
   }
+#endif
   if (n < 3) {
     return;
   }
