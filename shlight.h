@@ -2909,6 +2909,25 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near2(const float R[9], double x0
   double s2 = e0 * e0 + e1 * e1 + e2 * e2 + x0 * x0 + x1 * x1 + x2 * x2;
   return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
 }
+#if defined(__SSE2__)
+/* band 1: R's columns (rows 0, 1, 2) times sh[1], sh[3] less sh[2] in float lanes (out 3, -,
+   1, -2), with sh[0] into place */
+#define SHLI_ROT_B1SSE 1
+#define SHLI_ROT_SB(x, a, b, c, d) _mm_shuffle_ps(x, x, (a) | (b) << 2 | (c) << 4 | (d) << 6)
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1f(const float R[9], const float *sh,
+                                                    float *out_sh) {
+  __m128 a = _mm_loadu_ps(R);
+  __m128 s = _mm_loadu_ps(sh);
+  __m128 o = _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 4), 0xc5), SHLI_ROT_SB(s, 1, 1, 1, 1));
+  o = _mm_add_ps(
+      o, _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 3), 0xc0), SHLI_ROT_SB(s, 3, 3, 3, 3)));
+  o = _mm_sub_ps(
+      o, _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 5), 0xca), SHLI_ROT_SB(s, 2, 2, 2, 2)));
+  o = _mm_xor_ps(o, _mm_set_ps(-0.0f, 0.0f, 0.0f, 0.0f));
+  _mm_storeu_ps(out_sh, _mm_shuffle_ps(_mm_shuffle_ps(s, o, 0x20), o, 0x38));
+}
+#undef SHLI_ROT_SB
+#endif
 #if defined(__AVX2__) && defined(__FMA__)
 /* d in float lanes (e0 e2 x0 e1 x2 x1 0 0) as x1 y1 + x2 y2 + x3 y3 - c: x1, x2 R[0..7],
    R[1..8] as loaded, y1, y2, x3, y3 and c permuted from R (5 lane permutes; within 1.2e-7 of
@@ -2936,23 +2955,6 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   return _mm_cvtss_f32(t) <= (float)(SHLI_ROT_ORTH * SHLI_ROT_ORTH);
 }
 #undef SHLI_ROT_NP
-/* band 1 in float lanes 1..3: R's columns (rows 1, 2, 0) times a_-1, a_1 less a_0, lane 2
-   negated; lane 0 sh[0] */
-SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1f(const float R[9], const float *sh,
-                                                    float *out_sh) {
-  __m256 r = _mm256_loadu_ps(R);
-  __m128 o = _mm_mul_ps(_mm256_castps256_ps128(
-                            _mm256_permutevar8x32_ps(r, _mm256_setr_epi32(0, 4, 7, 1, 0, 0, 0, 0))),
-                        _mm_broadcast_ss(sh + 1));
-  o = _mm_fmadd_ps(_mm256_castps256_ps128(
-                       _mm256_permutevar8x32_ps(r, _mm256_setr_epi32(0, 3, 6, 0, 0, 0, 0, 0))),
-                   _mm_broadcast_ss(sh + 3), o);
-  o = _mm_fnmadd_ps(_mm256_castps256_ps128(_mm256_permutevar8x32_ps(
-                        _mm256_loadu_ps(R + 1), _mm256_setr_epi32(0, 4, 7, 1, 0, 0, 0, 0))),
-                    _mm_broadcast_ss(sh + 2), o);
-  o = _mm_xor_ps(o, _mm_set_ps(0.0f, -0.0f, 0.0f, 0.0f));
-  _mm_storeu_ps(out_sh, _mm_blend_ps(o, _mm_load_ss(sh), 1));
-}
 /* n >= 4: band 2 in float lanes (R C R^T as in shli_rot_b012): u, v in lanes 0..2, 3..5, then
    the dots (r1.u, -r2.v, r0.u, -r2.u, r0.u, r1.v); writes out_sh[4 .. 11] (9 .. 11: band 3's,
    written after) */
@@ -2989,24 +2991,6 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b2v(const float R[9], const floa
 }
 #undef SHLI_ROT_P
 #else
-#if defined(__SSE2__)
-/* band 1 in float lanes (out 3, -, 1, -2 as shli_rot_b1f's), then with sh[0] into place */
-#define SHLI_ROT_B1SSE 1
-#define SHLI_ROT_SB(x, a, b, c, d) _mm_shuffle_ps(x, x, (a) | (b) << 2 | (c) << 4 | (d) << 6)
-SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1f(const float R[9], const float *sh,
-                                                    float *out_sh) {
-  __m128 a = _mm_loadu_ps(R);
-  __m128 s = _mm_loadu_ps(sh);
-  __m128 o = _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 4), 0xc5), SHLI_ROT_SB(s, 1, 1, 1, 1));
-  o = _mm_add_ps(
-      o, _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 3), 0xc0), SHLI_ROT_SB(s, 3, 3, 3, 3)));
-  o = _mm_sub_ps(
-      o, _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 5), 0xca), SHLI_ROT_SB(s, 2, 2, 2, 2)));
-  o = _mm_xor_ps(o, _mm_set_ps(-0.0f, 0.0f, 0.0f, 0.0f));
-  _mm_storeu_ps(out_sh, _mm_shuffle_ps(_mm_shuffle_ps(s, o, 0x20), o, 0x38));
-}
-#undef SHLI_ROT_SB
-#endif
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   double r02 = (double)R[2];
   double r12 = (double)R[5];
