@@ -2825,10 +2825,7 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
   }
 }
 
-/* shl_sh_rotate's C-only path for n <= SHLI_ROT_FAST_BANDS (GCC / Clang; method: docs/rotation.md;
-   tests/test_rotate.c holds it to the portable kernel). Lane groups of a band: A (m = 0, 2, 4,
-   6), C (1, 3, 5, 7), D (-, -2, -4, -6), B (-1, -3, -5, -7); the table: X(+90)'s group blocks
-   of bands 3..7 by columns */
+/* shl_sh_rotate's C-only path for n <= 8 (GCC / Clang; docs/derivations.md sec. 13.67) */
 #ifndef SHLIGHT_ROTATE_FAST
 #if defined(__GNUC__) || defined(__clang__)
 #define SHLIGHT_ROTATE_FAST 1
@@ -2929,9 +2926,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1f(const float R[9], const floa
 #undef SHLI_ROT_SB
 #endif
 #if defined(__AVX2__) && defined(__FMA__)
-/* d in float lanes (e0 e2 x0 e1 x2 x1 0 0) as x1 y1 + x2 y2 + x3 y3 - c: x1, x2 R[0..7],
-   R[1..8] as loaded, y1, y2, x3, y3 and c permuted from R (5 lane permutes; within 1.2e-7 of
-   d) */
+/* d in float lanes (docs/derivations.md sec. 13.67) */
 #define SHLI_ROT_NP(a, b, c, d, e, f) \
   _mm256_permutevar8x32_ps(z, _mm256_setr_epi32(a, b, c, d, e, f, 7, 7))
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
@@ -2955,9 +2950,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   return _mm_cvtss_f32(t) <= (float)(SHLI_ROT_ORTH * SHLI_ROT_ORTH);
 }
 #undef SHLI_ROT_NP
-/* n >= 4: band 2 in float lanes (R C R^T as in shli_rot_b012): u, v in lanes 0..2, 3..5, then
-   the dots (r1.u, -r2.v, r0.u, -r2.u, r0.u, r1.v); writes out_sh[4 .. 11] (9 .. 11: band 3's,
-   written after) */
+/* n >= 4: band 2 in float lanes; writes out_sh[4 .. 11] (docs/derivations.md sec. 13.67) */
 #define SHLI_ROT_P(v, a, b, c, d, e, f) \
   _mm256_permutevar8x32_ps(v, _mm256_setr_epi32(a, b, c, d, e, f, 0, 0))
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b2v(const float R[9], const float *sh,
@@ -2999,10 +2992,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
 }
 #endif
 
-/* n = 4..8: bands 3..7 in float lanes, two groups per vector, interleaved: V1 = (A, B), V2 =
-   (D, C), lane j holding |m| = j; a z rotation by Cq = cos(j t), Sq = (-1)^j sin(j t) is V1 Cq
-   - V2 Sq, V2 Cq + V1 Sq; X(+90) one broadcast of a lane pair (64 bits, from memory) per input
-   lane k (odd l: V1's pairs swapped, even l: V2's) */
+/* n = 4..8: bands 3..7 in float lanes (docs/derivations.md sec. 13.67) */
 #if defined(__AVX2__) && defined(__FMA__)
 #define SHLI_ROT_FMA(a, b, c) ((shli_rot_v8)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
 #define SHLI_ROT_FMAD(a, b, c) \
@@ -3178,9 +3168,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
   }
 #endif
 }
-/* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of Rz(alpha) Ry(beta) Rz(gamma): cos, sin of
-   the multiples of the three angles (double, lanes q: gamma, beta + pi, alpha + pi), in float
-   lanes j */
+/* bands 3 .. n - 1 of Rz(alpha) Ry(beta) Rz(gamma) (docs/derivations.md sec. 13.67) */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, float *out_sh,
                                                      double ca, double sa, double cb, double sb,
                                                      double cg, double sg) {
@@ -3202,9 +3190,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
   shli_rot_v4 zr = {cg, -cb, -ca, 0.0};
   shli_rot_v4 zi = {sg, -sb, -sa, 0.0};
 #endif
-  /* p[j], p[8 + j]: cos, (-1)^j sin of j t (c = cos t, s = sin t), at most 3 dependent
-     multiply-adds: cos 2t = 2 c^2 - 1, sin 2t = 2 c s, cos 3t = 4 c^3 - 3 c, sin 3t = 4 c^2 s -
-     s, 4t and 6t as 2 (2t) and 2 (3t), 5t = 2t + 3t, 7t = 3t + 4t; j >= n zero */
+  /* p[j], p[8 + j]: cos, (-1)^j sin of j t (docs/derivations.md sec. 13.67) */
   p[8] = zr - zr;
   for (i = 0; i < 8; ++i) {
     p[i] = p[8];
