@@ -3117,7 +3117,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
     v2 = l % 2 ? w2 : SHLI_ROT_SW(w2);
     memcpy(wm, &v1, 32);
     memcpy(wm + 4, &v2, 32);
-#if defined(__clang__)
+#if defined(__clang__) && defined(__AVX__)
     /* keeps the broadcasts loads: clang would turn them into lane permutes */
     __asm__ volatile("" : : "r"(wm) : "memory");
 #endif
