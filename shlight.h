@@ -2874,8 +2874,7 @@ static const double SHLI_ROT_X90[320] = {
 #endif
 #define SHLI_ROT_FORCE __attribute__((always_inline))
 #define SHLI_ROT_NOINLINE static __attribute__((noinline, unused))
-/* GCC's SLP vectoriser off: on AVX-512 it merges band stores into 512-bit conversions (1.4x
-   the time at n = 5, 6); in bands 0..2 its shuffles cost more than they save */
+/* GCC's SLP vectoriser off where it costs time */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__AVX512F__)
 #define SHLI_ROT_NOSLP __attribute__((optimize("no-tree-slp-vectorize")))
 #else
@@ -2890,8 +2889,7 @@ typedef double shli_rot_v4 __attribute__((vector_size(32)));
 typedef float shli_rot_v8 __attribute__((vector_size(32)));
 typedef __INT32_TYPE__ shli_rot_i8 __attribute__((vector_size(32)));
 
-/* d <= SHLI_ROT_ORTH (d: the contract's); NaN fails. shli_rot_near2: 2 entries of r0 x r1 - r2
-   (up to sign) given */
+/* d <= SHLI_ROT_ORTH (NaN fails); near2: 2 entries of r0 x r1 - r2 given */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near2(const float R[9], double x0, double x1) {
   double r00 = (double)R[0];
   double r01 = (double)R[1];
@@ -2906,25 +2904,6 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near2(const float R[9], double x0
   double s2 = e0 * e0 + e1 * e1 + e2 * e2 + x0 * x0 + x1 * x1 + x2 * x2;
   return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
 }
-#if defined(__SSE2__)
-/* band 1: R's columns (rows 0, 1, 2) times sh[1], sh[3] less sh[2] in float lanes (out 3, -,
-   1, -2), with sh[0] into place */
-#define SHLI_ROT_B1SSE 1
-#define SHLI_ROT_SB(x, a, b, c, d) _mm_shuffle_ps(x, x, (a) | (b) << 2 | (c) << 4 | (d) << 6)
-SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1f(const float R[9], const float *sh,
-                                                    float *out_sh) {
-  __m128 a = _mm_loadu_ps(R);
-  __m128 s = _mm_loadu_ps(sh);
-  __m128 o = _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 4), 0xc5), SHLI_ROT_SB(s, 1, 1, 1, 1));
-  o = _mm_add_ps(
-      o, _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 3), 0xc0), SHLI_ROT_SB(s, 3, 3, 3, 3)));
-  o = _mm_sub_ps(
-      o, _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 5), 0xca), SHLI_ROT_SB(s, 2, 2, 2, 2)));
-  o = _mm_xor_ps(o, _mm_set_ps(-0.0f, 0.0f, 0.0f, 0.0f));
-  _mm_storeu_ps(out_sh, _mm_shuffle_ps(_mm_shuffle_ps(s, o, 0x20), o, 0x38));
-}
-#undef SHLI_ROT_SB
-#endif
 #if defined(__AVX2__) && defined(__FMA__)
 /* d in float lanes (docs/derivations.md sec. 13.67) */
 #define SHLI_ROT_NP(a, b, c, d, e, f) \
@@ -2950,7 +2929,23 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   return _mm_cvtss_f32(t) <= (float)(SHLI_ROT_ORTH * SHLI_ROT_ORTH);
 }
 #undef SHLI_ROT_NP
-/* n >= 4: band 2 in float lanes; writes out_sh[4 .. 11] (docs/derivations.md sec. 13.67) */
+/* band 1 in float lanes 1..3, lane 0 sh[0] */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1f(const float R[9], const float *sh,
+                                                    float *out_sh) {
+  __m256 r = _mm256_loadu_ps(R);
+  __m128 o = _mm_mul_ps(_mm256_castps256_ps128(
+                            _mm256_permutevar8x32_ps(r, _mm256_setr_epi32(0, 4, 7, 1, 0, 0, 0, 0))),
+                        _mm_broadcast_ss(sh + 1));
+  o = _mm_fmadd_ps(_mm256_castps256_ps128(
+                       _mm256_permutevar8x32_ps(r, _mm256_setr_epi32(0, 3, 6, 0, 0, 0, 0, 0))),
+                   _mm_broadcast_ss(sh + 3), o);
+  o = _mm_fnmadd_ps(_mm256_castps256_ps128(_mm256_permutevar8x32_ps(
+                        _mm256_loadu_ps(R + 1), _mm256_setr_epi32(0, 4, 7, 1, 0, 0, 0, 0))),
+                    _mm_broadcast_ss(sh + 2), o);
+  o = _mm_xor_ps(o, _mm_set_ps(0.0f, -0.0f, 0.0f, 0.0f));
+  _mm_storeu_ps(out_sh, _mm_blend_ps(o, _mm_load_ss(sh), 1));
+}
+/* n >= 4: band 2 in float lanes; writes out_sh[4 .. 11] */
 #define SHLI_ROT_P(v, a, b, c, d, e, f) \
   _mm256_permutevar8x32_ps(v, _mm256_setr_epi32(a, b, c, d, e, f, 0, 0))
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b2v(const float R[9], const float *sh,
@@ -2984,6 +2979,24 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b2v(const float R[9], const floa
 }
 #undef SHLI_ROT_P
 #else
+#if defined(__SSE2__)
+/* band 1 in float lanes (out 3, -, 1, -2), then into place */
+#define SHLI_ROT_B1SSE 1
+#define SHLI_ROT_SB(x, a, b, c, d) _mm_shuffle_ps(x, x, (a) | (b) << 2 | (c) << 4 | (d) << 6)
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1f(const float R[9], const float *sh,
+                                                    float *out_sh) {
+  __m128 a = _mm_loadu_ps(R);
+  __m128 s = _mm_loadu_ps(sh);
+  __m128 o = _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 4), 0xc5), SHLI_ROT_SB(s, 1, 1, 1, 1));
+  o = _mm_add_ps(
+      o, _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 3), 0xc0), SHLI_ROT_SB(s, 3, 3, 3, 3)));
+  o = _mm_sub_ps(
+      o, _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 5), 0xca), SHLI_ROT_SB(s, 2, 2, 2, 2)));
+  o = _mm_xor_ps(o, _mm_set_ps(-0.0f, 0.0f, 0.0f, 0.0f));
+  _mm_storeu_ps(out_sh, _mm_shuffle_ps(_mm_shuffle_ps(s, o, 0x20), o, 0x38));
+}
+#undef SHLI_ROT_SB
+#endif
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   double r02 = (double)R[2];
   double r12 = (double)R[5];
@@ -2992,7 +3005,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
 }
 #endif
 
-/* n = 4..8: bands 3..7 in float lanes (docs/derivations.md sec. 13.67) */
+/* n = 4..8: bands 3..7 in float lanes */
 #if defined(__AVX2__) && defined(__FMA__)
 #define SHLI_ROT_FMA(a, b, c) ((shli_rot_v8)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
 #define SHLI_ROT_FMAD(a, b, c) \
@@ -3012,8 +3025,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
 #else
 #define SHLI_ROT_SW(v) __builtin_shuffle(v, __extension__(shli_rot_i8){1, 0, 3, 2, 5, 4, 7, 6})
 #endif
-/* X(+90)'s column pairs a, b interleaved; a lane pair (a double of w) broadcast; both into o
-   (no vector return: ABI warnings without AVX) */
+/* X(+90)'s column pairs a, b interleaved; a lane pair of w broadcast */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_xc(const double *a, const double *b,
                                                    shli_rot_v8 *o) {
   shli_rot_v8 r = {(float)a[0], (float)b[0], (float)a[1], (float)b[1],
@@ -3054,7 +3066,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_st(float *x, __m128 v, int c) {
   }
 }
 #endif
-/* band l (3 <= l < SHLI_ROT_FAST_BANDS, a literal: the loops unroll); cs: C0, S0, C1, .. S2 */
+/* band l (3..7, a literal: the loops unroll); cs: C0, S0, C1, .. S2 */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *cs, const float *sh,
                                                       float *out_sh) {
   const double *t = SHLI_ROT_X90 + 64 * (l - 3);
@@ -3080,7 +3092,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
   shli_rot_v8 v1 = (shli_rot_v8)_mm256_blend_ps(p, q, 0xaa);
   shli_rot_v8 v2 = (shli_rot_v8)_mm256_blend_ps(q, p, 0xaa);
 #elif defined(__SSE2__)
-  /* lanes 0..3 from sh + b, sh + b - 3; 4..l from sh + b + 4 (l - 3 floats), sh + b - 7 masked */
+  /* from sh + b, b - 3, b + 4 (l - 3 floats), b - 7 (masked) */
   __m128 h[4], y, p = _mm_loadu_ps(sh + b), q = _mm_loadu_ps(sh + b - 3), ph = _mm_setzero_ps();
   __m128 qh = ph;
   shli_rot_v8 v1;
@@ -3144,8 +3156,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
   _mm256_maskstore_ps(out_sh + b - 7, qm,
                       _mm256_permutevar8x32_ps(_mm256_blend_ps((__m256)w2, (__m256)w1, 0xaa), rv));
 #elif defined(__SSE2__)
-  /* m <= 0 first, whole halves from b - 7, b - 3: lanes past -l (band l - 1, written after) and
-     lane 3 (m = 0, stored next) are overwritten */
+  /* m <= 0 first, whole halves (lanes past -l and m = 0 overwritten after) */
   memcpy(h, &w1, 32);
   memcpy(h + 2, &w2, 32);
   if (l > 3) {
@@ -3168,7 +3179,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
   }
 #endif
 }
-/* bands 3 .. n - 1 of Rz(alpha) Ry(beta) Rz(gamma) (docs/derivations.md sec. 13.67) */
+/* bands 3 .. n - 1 of Rz(alpha) Ry(beta) Rz(gamma) */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, float *out_sh,
                                                      double ca, double sa, double cb, double sb,
                                                      double cg, double sg) {
@@ -3176,7 +3187,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
   shli_rot_v8 cs[6];
   int i;
 #if defined(__SSE2__) && !defined(__AVX__)
-  /* by register pairs: scalar stores read back as vectors would stall store forwarding */
+  /* by register pairs (scalar stores read back as vectors stall) */
   shli_rot_v4 zr;
   shli_rot_v4 zi;
   __m128d z[4];
@@ -3190,7 +3201,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
   shli_rot_v4 zr = {cg, -cb, -ca, 0.0};
   shli_rot_v4 zi = {sg, -sb, -sa, 0.0};
 #endif
-  /* p[j], p[8 + j]: cos, (-1)^j sin of j t (docs/derivations.md sec. 13.67) */
+  /* p[j], p[8 + j]: cos, (-1)^j sin of j t */
   p[8] = zr - zr;
   for (i = 0; i < 8; ++i) {
     p[i] = p[8];
@@ -3220,8 +3231,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
   }
 #if defined(__AVX2__) && defined(__FMA__)
   if (n == 4) {
-    /* j <= 3 straight from cos t, sin t, in lanes j: (1, c, 2 c^2 - 1, 4 c^3 - 3 c) and s (0,
-       -1, 2 c, 1 - 4 c^2) */
+    /* j <= 3 straight from cos t, sin t */
     __m256d a[6];
     a[0] = _mm256_set1_pd(cg);
     a[1] = _mm256_set1_pd(sg);
@@ -3350,8 +3360,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b012(int n, const float R[9], co
   if (n < 3) {
     return;
   }
-  /* band 2 = w^T C w, C symmetric traceless (docs/rotation.md, method 2), rotated to
-     R C R^T: C'_ij = r_i . (C r_j), C'_zz = -C'_xx - C'_yy */
+  /* band 2 = w^T C w rotated to R C R^T (docs/rotation.md, method 2) */
   {
     double s = (double)sh[6] * 0.57735026918962576;
     double a2 = (double)sh[8];
@@ -3392,8 +3401,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R
   shli_rot_b012(n, R, sh, out_sh);
 }
 
-/* n in [4, SHLI_ROT_FAST_BANDS]: R near a rotation: the angles (the longest chain), bands 0..2,
-   then shli_sh_rotate_h4 .. h8; else the portable kernel */
+/* n in [4, 8]: angles, bands 0..2, then h4 .. h8; else the portable kernel */
 SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9], const float *sh,
                                                           float *out_sh) {
   double r00 = (double)R[0];
@@ -3413,8 +3421,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
   double hg;
   double fb;
   double f;
-  /* the zyz angles (docs/rotation.md, method 1); cg, sg: entries of r1 x r0, shared with the
-     check */
+  /* the zyz angles (docs/rotation.md, method 1); cg, sg shared with the check */
   cg = r11 * r02 - r01 * r12;
   sg = r10 * r02 - r00 * r12;
   if (!shli_rot_near2(R, cg + (double)R[6], sg - (double)R[7])) {
@@ -3428,8 +3435,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
   if (s2 > 0.0 && hg > 0.0) {
     double fg;
 #if defined(__SSE2__)
-    /* both in one instruction, no errno branch (its call spills every live value); 1 / sqrt(x)
-       = sqrt(x) (1 / x): square root and division side by side */
+    /* both in one instruction, no errno branch */
     __m128d x = _mm_set_pd(hg, s2);
     __m128d v = _mm_mul_pd(_mm_sqrt_pd(x), _mm_div_pd(_mm_set1_pd(1.0), x));
     f = _mm_cvtsd_f64(v);
