@@ -3044,8 +3044,9 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bc(const double *w, shli_rot_v8 
   }
 #endif
 }
-#if defined(__SSE2__) && !defined(__AVX2__)
-/* shufps (x, y, i), then of itself by j (t: a temporary) */
+#if defined(__SSE2__) && !defined(__AVX__)
+#define SHLI_ROT_SSE 1
+/* shufps (x, y, i), then (t, t, j) */
 #define SHLI_ROT_SH(t, x, y, i, j) (t = _mm_shuffle_ps(x, y, i), _mm_shuffle_ps(t, t, j))
 /* the first c (1..4) floats of x, zero-filled; stored */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE __m128 shli_rot_ld(const float *x, int c) {
@@ -3091,7 +3092,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
   __m256 q = _mm256_permutevar8x32_ps(_mm256_maskload_ps(sh + b - 7, qm), rv);
   shli_rot_v8 v1 = (shli_rot_v8)_mm256_blend_ps(p, q, 0xaa);
   shli_rot_v8 v2 = (shli_rot_v8)_mm256_blend_ps(q, p, 0xaa);
-#elif defined(__SSE2__)
+#elif defined(SHLI_ROT_SSE)
   /* from sh + b, b - 3, b + 4 (l - 3 floats), b - 7 (masked) */
   __m128 h[4], y, p = _mm_loadu_ps(sh + b), q = _mm_loadu_ps(sh + b - 3), ph = _mm_setzero_ps();
   __m128 qh = ph;
@@ -3155,7 +3156,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
   _mm256_maskstore_ps(out_sh + b, pm, _mm256_blend_ps((__m256)w1, (__m256)w2, 0xaa));
   _mm256_maskstore_ps(out_sh + b - 7, qm,
                       _mm256_permutevar8x32_ps(_mm256_blend_ps((__m256)w2, (__m256)w1, 0xaa), rv));
-#elif defined(__SSE2__)
+#elif defined(SHLI_ROT_SSE)
   /* m <= 0 first, whole halves (lanes past -l and m = 0 overwritten after) */
   memcpy(h, &w1, 32);
   memcpy(h + 2, &w2, 32);
