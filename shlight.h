@@ -3346,9 +3346,6 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b012(int n, const float R[9], co
     return;
   }
   /* band 1: Y_1 = sqrt(3 / (4 pi)) (-y, z, -x), so R's entries, signed and permuted */
-#if defined(SHLI_ROT_B1SSE)
-  shli_rot_b1f(R, sh, out_sh);
-#else
   {
     double am = (double)sh[1];
     double a0 = (double)sh[2];
@@ -3357,7 +3354,6 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b012(int n, const float R[9], co
     out_sh[2] = (float)(r22 * a0 - r21 * am - r20 * ap);
     out_sh[3] = (float)(r01 * am - r02 * a0 + r00 * ap);
   }
-#endif
   if (n < 3) {
     return;
   }
@@ -3393,7 +3389,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R
     shli_sh_rotate_slow(n, R, sh, out_sh);
     return;
   }
-#if defined(__AVX2__) && defined(__FMA__)
+#if defined(__AVX2__) && defined(__FMA__) || defined(SHLI_ROT_B1SSE)
   if (n == 2) {
     shli_rot_b1f(R, sh, out_sh);
     return;
