@@ -2824,10 +2824,7 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
   }
 }
 
-/* shl_sh_rotate's C-only path for n <= SHLI_ROT_FAST_BANDS (GCC / Clang; method: docs/rotation.md;
-   tests/test_rotate.c holds it to the portable kernel). Lane groups of a band: A (m = 0, 2, 4,
-   6), C (1, 3, 5, 7), D (-, -2, -4, -6), B (-1, -3, -5, -7); the table: X(+90)'s group blocks
-   of bands 3..7 by columns */
+/* shl_sh_rotate's C-only path for n <= 8 (GCC / Clang; docs/derivations.md sec. 13.67) */
 #ifndef SHLIGHT_ROTATE_FAST
 #if defined(__GNUC__) || defined(__clang__)
 #define SHLIGHT_ROTATE_FAST 1
@@ -2846,39 +2843,25 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
 #define SHLI_ROT_ORTH 1e-6
 /* clang-format off */
 static const double SHLI_ROT_X90[320] = {
-.6123724356957945,.7905694150420949,0,0,.7905694150420949,-.6123724356957945,0,0,0,0,0,0,0,0,0,0,
--.25,-.9682458365518543,0,0,-.9682458365518543,.25,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,-1,0,0,0,0,0,0,0,0,
-0,0,-.6123724356957945,-.7905694150420949,0,0,-.7905694150420949,.6123724356957945,0,0,0,0,0,0,0,0,
-0,0,.375,.5590169943749475,.739509972887452,0,.5590169943749475,.5,-.6614378277661477,0,
-.739509972887452,-.6614378277661477,.125,0,0,0,0,0,0,0,0,0,.3535533905932738,.9354143466934853,0,0,
-.9354143466934853,-.3535533905932738,0,0,0,0,0,0,0,-.3535533905932738,-.9354143466934853,0,0,
--.9354143466934853,.3535533905932738,0,0,0,0,0,0,0,0,0,.75,.6614378277661477,0,0,.6614378277661477,
--.75,0,0,0,0,0,0,0,0,0,0,-.4841229182759271,-.6614378277661477,-.57282196186948,0,
--.5229125165837972,-.30618621784789724,.795495128834866,0,-.701560760020114,.6846531968814576,
--.19764235376052372,0,0,0,0,0,.125,.4050462936504913,.9057110466368399,0,.4050462936504913,.8125,
--.4192627457812106,0,.9057110466368399,-.4192627457812106,.0625,0,0,0,0,0,0,0,0,0,0,.5,
-.8660254037844386,0,0,.8660254037844386,-.5,0,0,0,0,0,.4841229182759271,.5229125165837972,
-.701560760020114,0,.6614378277661477,.30618621784789724,-.6846531968814576,0,.57282196186948,
--.795495128834866,.19764235376052372,0,0,0,0,0,-.3125,-.45285552331841994,-.49607837082461076,
--.6716932893813962,-.45285552331841994,-.53125,-.1711632992203644,.6952686081652184,
--.49607837082461076,-.1711632992203644,.8125,-.2538762001448738,-.6716932893813962,
-.6952686081652184,-.2538762001448738,.03125,0,0,0,0,-.19764235376052372,-.5625,-.8028270361665706,0,
--.4330127018922193,-.6846531968814576,.5863019699779287,0,-.879452954966893,.46351240544347894,
--.10825317547305482,0,0,.19764235376052372,.4330127018922193,.879452954966893,0,.5625,
-.6846531968814576,-.46351240544347894,0,.8028270361665706,-.5863019699779287,.10825317547305482,0,0,
-0,0,-.625,-.5929270612815711,-.5077524002897476,0,-.5929270612815711,-.0625,.8028270361665706,0,
--.5077524002897476,.8028270361665706,-.3125,0,0,0,0,0,.41339864235384227,.5740991584648074,
-.5385527481129402,.4576818286211503,.42961647140211,.4198446513295126,-.10364452469860624,
--.7927281808728639,.47495887979908324,.07328774624724109,-.78125,.3983608994994363,
-.6472598492877494,-.6991205412874092,.2981060004427955,-.05846339666834283,-.078125,
--.24356964481437338,-.4487939567607835,-.8562442974262661,-.24356964481437338,-.609375,
--.5700448858423344,.4943528756111367,-.4487939567607835,-.5700448858423344,.671875,
--.14905300022139775,-.8562442974262661,.4943528756111367,-.14905300022139775,.015625,0,0,0,0,0,
--.3125,-.5863019699779287,-.7473912964438374,0,-.5863019699779287,-.5,.6373774391990981,0,
--.7473912964438374,.6373774391990981,-.1875,-.41339864235384227,-.42961647140211,
--.47495887979908324,-.6472598492877494,-.5740991584648074,-.4198446513295126,-.07328774624724109,
-.6991205412874092,-.5385527481129402,.10364452469860624,.78125,-.2981060004427955,
--.4576818286211503,.7927281808728639,-.3983608994994363,.05846339666834283
+.61237244,.7905694,0,0,.7905694,-.61237244,0,0,0,0,0,0,0,0,0,0,-.25,-.96824584,0,0,-.96824584,.25,0,
+0,0,0,0,0,0,0,0,0,0,0,0,0,0,-1,0,0,0,0,0,0,0,0,0,0,-.61237244,-.7905694,0,0,-.7905694,.61237244,0,0,
+0,0,0,0,0,0,0,0,.375,.559017,.73951,0,.559017,.5,-.6614378,0,.73951,-.6614378,.125,0,0,0,0,0,0,0,0,
+0,.35355339,.93541435,0,0,.93541435,-.35355339,0,0,0,0,0,0,0,-.35355339,-.93541435,0,0,-.93541435,
+.35355339,0,0,0,0,0,0,0,0,0,.75,.6614378,0,0,.6614378,-.75,0,0,0,0,0,0,0,0,0,0,-.48412292,-.6614378,
+-.572822,0,-.5229125,-.30618622,.79549513,0,-.70156076,.6846532,-.19764235,0,0,0,0,0,.125,.40504629,
+.90571105,0,.40504629,.8125,-.41926275,0,.90571105,-.41926275,.0625,0,0,0,0,0,0,0,0,0,0,.5,.8660254,
+0,0,.8660254,-.5,0,0,0,0,0,.48412292,.5229125,.70156076,0,.6614378,.30618622,-.6846532,0,.572822,
+-.79549513,.19764235,0,0,0,0,0,-.3125,-.45285552,-.49607837,-.67169329,-.45285552,-.53125,-.1711633,
+.69526861,-.49607837,-.1711633,.8125,-.2538762,-.67169329,.69526861,-.2538762,.03125,0,0,0,0,
+-.19764235,-.5625,-.80282704,0,-.4330127,-.6846532,.586302,0,-.87945295,.4635124,-.108253175,0,0,
+.19764235,.4330127,.87945295,0,.5625,.6846532,-.4635124,0,.80282704,-.586302,.108253175,0,0,0,0,
+-.625,-.59292706,-.5077524,0,-.59292706,-.0625,.80282704,0,-.5077524,.80282704,-.3125,0,0,0,0,0,
+.41339864,.5740992,.53855275,.45768183,.42961647,.41984465,-.103644525,-.7927282,.47495888,
+.07328775,-.78125,.3983609,.64725985,-.6991205,.298106,-.0584634,-.078125,-.24356964,-.44879396,
+-.8562443,-.24356964,-.609375,-.5700449,.49435288,-.44879396,-.5700449,.671875,-.149053,-.8562443,
+.49435288,-.149053,.015625,0,0,0,0,0,-.3125,-.586302,-.7473913,0,-.586302,-.5,.63737744,0,-.7473913,
+.63737744,-.1875,-.41339864,-.42961647,-.47495888,-.64725985,-.5740992,-.41984465,-.07328775,
+.6991205,-.53855275,.103644525,.78125,-.298106,-.45768183,.7927282,-.3983609,.0584634
 };
 /* clang-format on */
 #if defined(__clang__)
@@ -2890,8 +2873,7 @@ static const double SHLI_ROT_X90[320] = {
 #endif
 #define SHLI_ROT_FORCE __attribute__((always_inline))
 #define SHLI_ROT_NOINLINE static __attribute__((noinline, unused))
-/* GCC's SLP vectoriser off: on AVX-512 it merges band stores into 512-bit conversions (1.4x
-   the time at n = 5, 6); in bands 0..2 its shuffles cost more than they save */
+/* GCC's SLP vectoriser off where it costs time */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__AVX512F__)
 #define SHLI_ROT_NOSLP __attribute__((optimize("no-tree-slp-vectorize")))
 #else
@@ -2906,8 +2888,7 @@ typedef double shli_rot_v4 __attribute__((vector_size(32)));
 typedef float shli_rot_v8 __attribute__((vector_size(32)));
 typedef __INT32_TYPE__ shli_rot_i8 __attribute__((vector_size(32)));
 
-/* d <= SHLI_ROT_ORTH (d: the contract's); NaN fails. shli_rot_near2: 2 entries of r0 x r1 - r2
-   (up to sign) given */
+/* d <= SHLI_ROT_ORTH (NaN fails); near2: 2 entries of r0 x r1 - r2 given */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near2(const float R[9], double x0, double x1) {
   double r00 = (double)R[0];
   double r01 = (double)R[1];
@@ -2923,9 +2904,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near2(const float R[9], double x0
   return s2 <= SHLI_ROT_ORTH * SHLI_ROT_ORTH;
 }
 #if defined(__AVX2__) && defined(__FMA__)
-/* d in float lanes (e0 e2 x0 e1 x2 x1 0 0) as x1 y1 + x2 y2 + x3 y3 - c: x1, x2 R[0..7],
-   R[1..8] as loaded, y1, y2, x3, y3 and c permuted from R (5 lane permutes; within 1.2e-7 of
-   d) */
+/* d in float lanes (docs/derivations.md sec. 13.67) */
 #define SHLI_ROT_NP(a, b, c, d, e, f) \
   _mm256_permutevar8x32_ps(z, _mm256_setr_epi32(a, b, c, d, e, f, 7, 7))
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
@@ -2949,8 +2928,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   return _mm_cvtss_f32(t) <= (float)(SHLI_ROT_ORTH * SHLI_ROT_ORTH);
 }
 #undef SHLI_ROT_NP
-/* band 1 in float lanes 1..3: R's columns (rows 1, 2, 0) times a_-1, a_1 less a_0, lane 2
-   negated; lane 0 sh[0] */
+/* band 1 in float lanes 1..3, lane 0 sh[0] */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1f(const float R[9], const float *sh,
                                                     float *out_sh) {
   __m256 r = _mm256_loadu_ps(R);
@@ -2966,9 +2944,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1f(const float R[9], const floa
   o = _mm_xor_ps(o, _mm_set_ps(0.0f, -0.0f, 0.0f, 0.0f));
   _mm_storeu_ps(out_sh, _mm_blend_ps(o, _mm_load_ss(sh), 1));
 }
-/* n >= 4: band 2 in float lanes (R C R^T as in shli_rot_b012): u, v in lanes 0..2, 3..5, then
-   the dots (r1.u, -r2.v, r0.u, -r2.u, r0.u, r1.v); writes out_sh[4 .. 11] (9 .. 11: band 3's,
-   written after) */
+/* n >= 4: band 2 in float lanes; writes out_sh[4 .. 11] */
 #define SHLI_ROT_P(v, a, b, c, d, e, f) \
   _mm256_permutevar8x32_ps(v, _mm256_setr_epi32(a, b, c, d, e, f, 0, 0))
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b2v(const float R[9], const float *sh,
@@ -3002,6 +2978,24 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b2v(const float R[9], const floa
 }
 #undef SHLI_ROT_P
 #else
+#if defined(__SSE2__)
+/* band 1 in float lanes (out 3, -, 1, -2), then into place */
+#define SHLI_ROT_B1SSE 1
+#define SHLI_ROT_SB(x, a, b, c, d) _mm_shuffle_ps(x, x, (a) | (b) << 2 | (c) << 4 | (d) << 6)
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b1f(const float R[9], const float *sh,
+                                                    float *out_sh) {
+  __m128 a = _mm_loadu_ps(R);
+  __m128 s = _mm_loadu_ps(sh);
+  __m128 o = _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 4), 0xc5), SHLI_ROT_SB(s, 1, 1, 1, 1));
+  o = _mm_add_ps(
+      o, _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 3), 0xc0), SHLI_ROT_SB(s, 3, 3, 3, 3)));
+  o = _mm_sub_ps(
+      o, _mm_mul_ps(_mm_shuffle_ps(a, _mm_loadu_ps(R + 5), 0xca), SHLI_ROT_SB(s, 2, 2, 2, 2)));
+  o = _mm_xor_ps(o, _mm_set_ps(-0.0f, 0.0f, 0.0f, 0.0f));
+  _mm_storeu_ps(out_sh, _mm_shuffle_ps(_mm_shuffle_ps(s, o, 0x20), o, 0x38));
+}
+#undef SHLI_ROT_SB
+#endif
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
   double r02 = (double)R[2];
   double r12 = (double)R[5];
@@ -3010,10 +3004,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
 }
 #endif
 
-/* n = 4..8: bands 3..7 in float lanes, two groups per vector, interleaved: V1 = (A, B), V2 =
-   (D, C), lane j holding |m| = j; a z rotation by Cq = cos(j t), Sq = (-1)^j sin(j t) is V1 Cq
-   - V2 Sq, V2 Cq + V1 Sq; X(+90) one broadcast of a lane pair (64 bits, from memory) per input
-   lane k (odd l: V1's pairs swapped, even l: V2's) */
+/* n = 4..8: bands 3..7 in float lanes */
 #if defined(__AVX2__) && defined(__FMA__)
 #define SHLI_ROT_FMA(a, b, c) ((shli_rot_v8)_mm256_fmadd_ps((__m256)(a), (__m256)(b), (__m256)(c)))
 #define SHLI_ROT_FMAD(a, b, c) \
@@ -3033,8 +3024,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE int shli_rot_near(const float R[9]) {
 #else
 #define SHLI_ROT_SW(v) __builtin_shuffle(v, __extension__(shli_rot_i8){1, 0, 3, 2, 5, 4, 7, 6})
 #endif
-/* X(+90)'s column pairs a, b interleaved; a lane pair (a double of w) broadcast; both into o
-   (no vector return: ABI warnings without AVX) */
+/* X(+90)'s column pairs a, b interleaved; a lane pair of w broadcast */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_xc(const double *a, const double *b,
                                                    shli_rot_v8 *o) {
   shli_rot_v8 r = {(float)a[0], (float)b[0], (float)a[1], (float)b[1],
@@ -3053,7 +3043,30 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bc(const double *w, shli_rot_v8 
   }
 #endif
 }
-/* band l (3 <= l < SHLI_ROT_FAST_BANDS, a literal: the loops unroll); cs: C0, S0, C1, .. S2 */
+#if defined(__SSE2__) && !defined(__AVX__)
+#define SHLI_ROT_SSE 1
+/* shufps (x, y, i), then (t, t, j) */
+#define SHLI_ROT_SH(t, x, y, i, j) (t = _mm_shuffle_ps(x, y, i), _mm_shuffle_ps(t, t, j))
+/* the first c (1..4) floats of x, zero-filled; stored */
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE __m128 shli_rot_ld(const float *x, int c) {
+  __m128 a =
+      c == 2 || c == 3 ? _mm_castsi128_ps(_mm_loadl_epi64((const __m128i *)x)) : _mm_load_ss(x);
+  return c > 3 ? _mm_loadu_ps(x) : c < 3 ? a : _mm_movelh_ps(a, _mm_load_ss(x + 2));
+}
+SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_st(float *x, __m128 v, int c) {
+  if (c > 3) {
+    _mm_storeu_ps(x, v);
+    return;
+  }
+  if (c > 1) {
+    _mm_storel_epi64((__m128i *)x, _mm_castps_si128(v));
+  }
+  if (c != 2) {
+    _mm_store_ss(x + c - 1, c > 1 ? _mm_movehl_ps(v, v) : v);
+  }
+}
+#endif
+/* band l (3..7, a literal: the loops unroll); cs: C0, S0, C1, .. S2 */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *cs, const float *sh,
                                                       float *out_sh) {
   const double *t = SHLI_ROT_X90 + 64 * (l - 3);
@@ -3078,6 +3091,24 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
   __m256 q = _mm256_permutevar8x32_ps(_mm256_maskload_ps(sh + b - 7, qm), rv);
   shli_rot_v8 v1 = (shli_rot_v8)_mm256_blend_ps(p, q, 0xaa);
   shli_rot_v8 v2 = (shli_rot_v8)_mm256_blend_ps(q, p, 0xaa);
+#elif defined(SHLI_ROT_SSE)
+  /* from sh + b, b - 3, b + 4 (l - 3 floats), b - 7 (masked) */
+  __m128 h[4], y, p = _mm_loadu_ps(sh + b), q = _mm_loadu_ps(sh + b - 3), ph = _mm_setzero_ps();
+  __m128 qh = ph;
+  shli_rot_v8 v1;
+  shli_rot_v8 v2;
+  h[0] = SHLI_ROT_SH(y, p, q, 0x28, 0xd8);
+  h[2] =
+      _mm_and_ps(SHLI_ROT_SH(y, p, q, 0x5d, 0x60), _mm_castsi128_ps(_mm_setr_epi32(0, -1, -1, -1)));
+  if (l > 3) {
+    ph = shli_rot_ld(sh + b + 4, l - 3);
+    qh = _mm_and_ps(_mm_loadu_ps(sh + b - 7),
+                    _mm_castsi128_ps(_mm_setr_epi32(-(l > 6), -(l > 5), -(l > 4), -1)));
+  }
+  h[1] = SHLI_ROT_SH(y, ph, qh, 0x28, 0xd8);
+  h[3] = SHLI_ROT_SH(y, ph, qh, 0x7d, 0x72);
+  memcpy(&v1, h, 32);
+  memcpy(&v2, h + 2, 32);
 #else
 #define SHLI_ROT_IN(m) ((m) <= l && (m) >= -l ? sh[b + (m)] : 0.0f)
   shli_rot_v8 v1 = {SHLI_ROT_IN(0), SHLI_ROT_IN(-1), SHLI_ROT_IN(2), SHLI_ROT_IN(-3),
@@ -3098,7 +3129,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
     v2 = l % 2 ? w2 : SHLI_ROT_SW(w2);
     memcpy(wm, &v1, 32);
     memcpy(wm + 4, &v2, 32);
-#if defined(__clang__)
+#if defined(__clang__) && defined(__AVX__)
     /* keeps the broadcasts loads: clang would turn them into lane permutes */
     __asm__ volatile("" : : "r"(wm) : "memory");
 #endif
@@ -3124,6 +3155,18 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
   _mm256_maskstore_ps(out_sh + b, pm, _mm256_blend_ps((__m256)w1, (__m256)w2, 0xaa));
   _mm256_maskstore_ps(out_sh + b - 7, qm,
                       _mm256_permutevar8x32_ps(_mm256_blend_ps((__m256)w2, (__m256)w1, 0xaa), rv));
+#elif defined(SHLI_ROT_SSE)
+  /* m <= 0 first, whole halves (lanes past -l and m = 0 overwritten after) */
+  memcpy(h, &w1, 32);
+  memcpy(h + 2, &w2, 32);
+  if (l > 3) {
+    _mm_storeu_ps(out_sh + b - 7, SHLI_ROT_SH(y, h[1], h[3], 0x27, 0xd8));
+  }
+  _mm_storeu_ps(out_sh + b - 3, SHLI_ROT_SH(y, h[0], h[2], 0xa7, 0xd8));
+  _mm_storeu_ps(out_sh + b, SHLI_ROT_SH(y, h[0], h[2], 0xd8, 0xd8));
+  if (l > 3) {
+    shli_rot_st(out_sh + b + 4, SHLI_ROT_SH(y, h[1], h[3], 0xd8, 0xd8), l - 3);
+  }
 #else
   SHLI_ROT_UNROLL
   for (i = 0; i < 8; ++i) {
@@ -3136,20 +3179,29 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_bandf(int l, const shli_rot_v8 *
   }
 #endif
 }
-/* bands 3 .. n - 1 (4 <= n <= SHLI_ROT_FAST_BANDS) of Rz(alpha) Ry(beta) Rz(gamma): cos, sin of
-   the multiples of the three angles (double, lanes q: gamma, beta + pi, alpha + pi), in float
-   lanes j */
+/* bands 3 .. n - 1 of Rz(alpha) Ry(beta) Rz(gamma) */
 SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, float *out_sh,
                                                      double ca, double sa, double cb, double sb,
                                                      double cg, double sg) {
-  shli_rot_v4 zr = {cg, -cb, -ca, 0.0};
-  shli_rot_v4 zi = {sg, -sb, -sa, 0.0};
   shli_rot_v4 p[16];
   shli_rot_v8 cs[6];
   int i;
-  /* p[j], p[8 + j]: cos, (-1)^j sin of j t (c = cos t, s = sin t), at most 3 dependent
-     multiply-adds: cos 2t = 2 c^2 - 1, sin 2t = 2 c s, cos 3t = 4 c^3 - 3 c, sin 3t = 4 c^2 s -
-     s, 4t and 6t as 2 (2t) and 2 (3t), 5t = 2t + 3t, 7t = 3t + 4t; j >= n zero */
+#if defined(__SSE2__) && !defined(__AVX__)
+  /* by register pairs (scalar stores read back as vectors stall) */
+  shli_rot_v4 zr;
+  shli_rot_v4 zi;
+  __m128d z[4];
+  z[0] = _mm_unpacklo_pd(_mm_set_sd(cg), _mm_set_sd(-cb));
+  z[1] = _mm_set_sd(-ca);
+  z[2] = _mm_unpacklo_pd(_mm_set_sd(sg), _mm_set_sd(-sb));
+  z[3] = _mm_set_sd(-sa);
+  memcpy(&zr, z, 32);
+  memcpy(&zi, z + 2, 32);
+#else
+  shli_rot_v4 zr = {cg, -cb, -ca, 0.0};
+  shli_rot_v4 zi = {sg, -sb, -sa, 0.0};
+#endif
+  /* p[j], p[8 + j]: cos, (-1)^j sin of j t */
   p[8] = zr - zr;
   for (i = 0; i < 8; ++i) {
     p[i] = p[8];
@@ -3179,8 +3231,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_high(int n, const float *sh, flo
   }
 #if defined(__AVX2__) && defined(__FMA__)
   if (n == 4) {
-    /* j <= 3 straight from cos t, sin t, in lanes j: (1, c, 2 c^2 - 1, 4 c^3 - 3 c) and s (0,
-       -1, 2 c, 1 - 4 c^2) */
+    /* j <= 3 straight from cos t, sin t */
     __m256d a[6];
     a[0] = _mm256_set1_pd(cg);
     a[1] = _mm256_set1_pd(sg);
@@ -3305,8 +3356,7 @@ SHLI_ROT_FORCE SHLIGHT_CPU_INLINE void shli_rot_b012(int n, const float R[9], co
   if (n < 3) {
     return;
   }
-  /* band 2 = w^T C w, C symmetric traceless (docs/rotation.md, method 2), rotated to
-     R C R^T: C'_ij = r_i . (C r_j), C'_zz = -C'_xx - C'_yy */
+  /* band 2 = w^T C w rotated to R C R^T (docs/rotation.md, method 2) */
   {
     double s = (double)sh[6] * 0.57735026918962576;
     double a2 = (double)sh[8];
@@ -3338,7 +3388,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R
     shli_sh_rotate_slow(n, R, sh, out_sh);
     return;
   }
-#if defined(__AVX2__) && defined(__FMA__)
+#if defined(__AVX2__) && defined(__FMA__) || defined(SHLI_ROT_B1SSE)
   if (n == 2) {
     shli_rot_b1f(R, sh, out_sh);
     return;
@@ -3347,8 +3397,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_small(int n, const float R
   shli_rot_b012(n, R, sh, out_sh);
 }
 
-/* n in [4, SHLI_ROT_FAST_BANDS]: R near a rotation: the angles (the longest chain), bands 0..2,
-   then shli_sh_rotate_h4 .. h8; else the portable kernel */
+/* n in [4, 8]: angles, bands 0..2, then h4 .. h8; else the portable kernel */
 SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9], const float *sh,
                                                           float *out_sh) {
   double r00 = (double)R[0];
@@ -3368,8 +3417,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
   double hg;
   double fb;
   double f;
-  /* the zyz angles (docs/rotation.md, method 1); cg, sg: entries of r1 x r0, shared with the
-     check */
+  /* the zyz angles (docs/rotation.md, method 1); cg, sg shared with the check */
   cg = r11 * r02 - r01 * r12;
   sg = r10 * r02 - r00 * r12;
   if (!shli_rot_near2(R, cg + (double)R[6], sg - (double)R[7])) {
@@ -3383,8 +3431,7 @@ SHLI_ROT_NOINLINE SHLI_ROT_SCALAR void shli_sh_rotate_mid(int n, const float R[9
   if (s2 > 0.0 && hg > 0.0) {
     double fg;
 #if defined(__SSE2__)
-    /* both in one instruction, no errno branch (its call spills every live value); 1 / sqrt(x)
-       = sqrt(x) (1 / x): square root and division side by side */
+    /* both in one instruction, no errno branch */
     __m128d x = _mm_set_pd(hg, s2);
     __m128d v = _mm_mul_pd(_mm_sqrt_pd(x), _mm_div_pd(_mm_set1_pd(1.0), x));
     f = _mm_cvtsd_f64(v);
