@@ -259,7 +259,7 @@ SHLIGHT_INLINE void shl_zh_rotate(int n, const float *zh, const float dir[3], fl
    above 0.
    Accuracy (C; against a long-double re-projection, tests/test_rotate.c): per band, |error| /
    |input band| <= 4.6e-8 in the portable kernel (n = 1..64, double inside: the float rounding
-   of the output); the n <= 8 path on float-rounded rotations 1.3e-7 at n <= 3, 3e-7 at n =
+   of the output); the n <= 8 path on float-rounded rotations 1.6e-7 at n <= 3, 3e-7 at n =
    4..8 (float inside; measured 2.6e-7), 8e-7 on rotations moved by 3 ulps per entry; band
    energy kept to 2.5e-7. GLSL (float inside): within 1.8e-6 of C per band at n = 16.
    Cost: n <= 8 (C, GCC / Clang): 61 / 162 / 273 / 339 / 405 / 582 instructions at n = 2 / 3 /

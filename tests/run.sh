@@ -118,7 +118,7 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/tests/test_ggx build/tests/test_ggx_glsl build/tests/fit_ggx_fast \
   build/tests/test_brdf build/tests/native/test_brdf build/tests/test_brdf_glsl \
   build/tests/test_brdftab build/tests/fuzz_replay_brdftab build/tests/test_brdftab_glsl \
-  build/tests/test_rotate build/tests/native/test_rotate build/tests/test_rotate_glsl \
+  build/tests/test_rotate build/tests/native/test_rotate build/tests/generic/test_rotate build/tests/test_rotate_glsl \
   build/tests/test_ssf build/tests/test_ssf_glsl \
   build/render/shlrender build/tools/merl_write build/tests/fuzz_replay_scene build/tests/test_rd_core \
   build/tests/test_contracts build/tests/fuzz_random build/tests/fuzz_replay_families
@@ -149,6 +149,7 @@ step fuzz-corpus-replay-families build/tests/fuzz_replay_families tests/corpus/f
 step stack-usage $PY tools/stack_usage.py
 step test_rotate build/tests/test_rotate
 step test_rotate_native build/tests/native/test_rotate
+step test_rotate_generic build/tests/generic/test_rotate
 # in the foreground: it balances the two lanes (both ~555 s)
 step lightref-selftest build/tests/selftest_lightref
 step fuzz-corpus-replay-brdftab build/tests/fuzz_replay_brdftab tests/corpus/brdftab

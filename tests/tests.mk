@@ -194,6 +194,11 @@ $(TESTS_BUILD)/test_rotate: $(TESTS_ROTATE_DEPS)
 $(TESTS_BUILD)/native/test_rotate: $(TESTS_ROTATE_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) -march=native -ffp-contract=fast -o $@ tests/test_rotate.c tests/test_rotate_portable.c -lm
+# generic: the n <= 8 path's generic vector code (what non-x86 targets compile), built on x86 by
+# hiding the SSE macros from the header
+$(TESTS_BUILD)/generic/test_rotate: $(TESTS_ROTATE_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -U__SSE__ -U__SSE2__ -U__SSE_MATH__ -U__SSE2_MATH__ -o $@ tests/test_rotate.c tests/test_rotate_portable.c -lm
 $(TESTS_BUILD)/asan/test_rotate: $(TESTS_ROTATE_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/test_rotate.c tests/test_rotate_portable.c -lm
