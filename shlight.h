@@ -581,11 +581,11 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    0: nv < 3, NaN or infinite input, zero normal or view, view at or below the horizon, NaN
    alpha, a light entirely below the horizon (exactly 0: clipped first), a polygon through the
    shading point. Result >= 0. Accuracy against long double cubature on the LTC comparison's
-   sampler (bench/bench_ggx.c): median relative error 5e-6 to 9e-5 at roughness 0.05 to 1 (LTC:
+   sampler (bench/bench_ggx.c): median relative error 5e-6 to 6e-5 at roughness 0.05 to 1 (LTC:
    7e-5 to 0.11), max error / albedo <= 4.0e-3 at every roughness (grazing views, lights
    straddling the horizon); weakest in the last degrees before grazing (a light filling the
-   hemisphere, alpha 0.04: 0.17 % at view 85 deg, 13 % at 88). Cost: 12.2k x86 instructions per
-   quad on that sampler's mean (9.3k to 17.0k by roughness), up to ~0.4M at the split budget. */
+   hemisphere, alpha 0.04: 0.17 % at view 85 deg, 13 % at 88). Cost: 12.5k x86 instructions per
+   quad on that sampler's mean (10.5k to 17.0k by roughness), up to ~0.4M at the split budget. */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
 
