@@ -759,14 +759,14 @@ SHLIGHT_INLINE float shl_sh_dot(int n, const float *a, const float *b);
 SHLIGHT_INLINE float shl_sh_conv_zh(int n, const float *sh, const float *zh, const float w[3]);
 
 /* shl_zh_dot_zh: the integral over the sphere of the product of two circularly symmetric
-   functions, ZH zh_a about the axis u and ZH zh_b about the axis v (n floats each):
-   sum_l zh_a[l] zh_b[l] P_l(u . v) (see >>brdf; equal to shl_sh_dot of the two rotated SH).
-   Use it when the lobe is circularly symmetric about its own axis (Phong about the mirror
+   functions, ZH zh_a about axis_a and ZH zh_b about axis_b (n floats each):
+   sum_l zh_a[l] zh_b[l] P_l(axis_a . axis_b) (see >>brdf; equal to shl_sh_dot of the two rotated
+   SH). Use it when the lobe is circularly symmetric about its own axis (Phong about the mirror
    direction, a microfacet lobe about the normal) and the radiance is a ZH (a sphere light's
-   cap, an HVL). u, v: any finite non-zero vectors; zero, NaN or infinite: +z. n < 1: 0.
+   cap, an HVL). axis_a, axis_b: any finite non-zero vectors; zero, NaN or infinite: +z. n < 1: 0.
    Cost: O(n): two normalisations, n Legendre steps, 3n flops. */
-SHLIGHT_INLINE float shl_zh_dot_zh(int n, const float *zh_a, const float u[3], const float *zh_b,
-                                   const float v[3]);
+SHLIGHT_INLINE float shl_zh_dot_zh(int n, const float *zh_a, const float axis_a[3],
+                                   const float *zh_b, const float axis_b[3]);
 
 /* shl_zh_irradiance_quadratic: irradiance E = int L(w) max(0, n . w) dw of a 3-band ZH radiance
    zh3 = (L_0, L_1, L_2) about an axis w_l, at a normal with z = w_l . n: [HVL] Appendix B,
@@ -8329,13 +8329,13 @@ SHLIGHT_INLINE float shli_zh_dot_c(int n, const float *zh_a, const float *zh_b, 
   return SHLIGHT_FLOAT(s);
 }
 
-SHLIGHT_INLINE float shl_zh_dot_zh(int n, const float *zh_a, const float u[3], const float *zh_b,
-                                   const float v[3]) {
+SHLIGHT_INLINE float shl_zh_dot_zh(int n, const float *zh_a, const float axis_a[3],
+                                   const float *zh_b, const float axis_b[3]) {
   n = shli_bands(n);
   if (n < 1) {
     return 0.0f;
   }
-  return shli_zh_dot_c(n, zh_a, zh_b, shli_cos_between(u, v));
+  return shli_zh_dot_c(n, zh_a, zh_b, shli_cos_between(axis_a, axis_b));
 }
 
 /* z clamped to [-1, 1]; NaN: 0 (the horizon). */

@@ -7243,13 +7243,13 @@ float shli_zh_dot_c(int n, float zh_a[SHLIGHT_MAX_BANDS], float zh_b[SHLIGHT_MAX
   return SHLIGHT_FLOAT(s);
 }
 
-float shl_zh_dot_zh(int n, float zh_a[SHLIGHT_MAX_BANDS], vec3 u, float zh_b[SHLIGHT_MAX_BANDS],
-                    vec3 v) {
+float shl_zh_dot_zh(int n, float zh_a[SHLIGHT_MAX_BANDS], vec3 axis_a,
+                    float zh_b[SHLIGHT_MAX_BANDS], vec3 axis_b) {
   n = shli_bands(n);
   if (n < 1) {
     return 0.0f;
   }
-  return shli_zh_dot_c(n, zh_a, zh_b, shli_cos_between(u, v));
+  return shli_zh_dot_c(n, zh_a, zh_b, shli_cos_between(axis_a, axis_b));
 }
 
 shli_real shli_clamp_cos(float z) {
