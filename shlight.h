@@ -179,9 +179,10 @@ SHLIGHT_INLINE void shl_sh_eval_grad(int n, const float d[3], float *out_y, floa
 /* shl_sh_eval_dot_grad: f = sum_i sh[i] Y_i(d / |d|), returned, and out_grad[k] = df / dd_k
    without the n^2 basis gradients (GLSL: their terms summed band by band). d as shl_sh_eval_grad
    (zero, NaN or inf: f at (0,0,1), zero gradient; tiny |d|: the same overflow). n: 1..16 (more:
-   16; n < 1: 0, zero gradient); sh: n * n floats. Accuracy: 1e-7 of sum_i |sh[i]| max|Y_i|
-   (f), max|grad Y_i| (gradient). Cost: llvmpipe 2-3.4x shl_sh_eval (shl_sh_eval_grad: 3-6x,
-   docs/glsl.md); C: shl_sh_eval_grad and the n^2 sums. */
+   16; n < 1: 0, zero gradient); sh: n * n floats (NaN: NaN f, gradient; inf: NaN or inf).
+   Accuracy: 1e-7 of sum_i |sh[i]| max|Y_i| (f), max|grad Y_i| (gradient). Cost: llvmpipe
+   2-3.4x shl_sh_eval (shl_sh_eval_grad: 3-6x, docs/glsl.md); C: shl_sh_eval_grad and the n^2
+   sums. */
 SHLIGHT_INLINE float shl_sh_eval_dot_grad(int n, const float *sh, const float d[3],
                                           float out_grad[3]);
 
@@ -582,10 +583,11 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    alpha, a light entirely below the horizon (exactly 0: clipped first), a polygon through the
    shading point. Result >= 0. Accuracy against long double cubature on the LTC comparison's
    sampler (bench/bench_ggx.c): median relative error 5e-6 to 6e-5 at roughness 0.05 to 1 (LTC:
-   7e-5 to 0.11), max error / albedo <= 4.0e-3 at every roughness (grazing views, lights
-   straddling the horizon); weakest in the last degrees before grazing (a light filling the
-   hemisphere, alpha 0.04: 0.17 % at view 85 deg, 13 % at 88). Cost: 12.5k x86 instructions per
-   quad on that sampler's mean (10.5k to 17.0k by roughness), up to ~0.4M at the split budget. */
+   7e-5 to 0.11), max error / albedo <= 4.0e-3 there, 1e-2 at other roughness (measured 8.8e-3;
+   grazing views, lights straddling the horizon); weakest in the last degrees before grazing (a
+   light filling the hemisphere, alpha 0.04: 0.17 % at view 85 deg, 13 % at 88). Cost: 12.5k x86
+   instructions per quad on that sampler's mean (10.5k to 17.0k by roughness), up to ~0.4M at
+   the split budget. */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
 

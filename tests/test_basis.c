@@ -1932,6 +1932,74 @@ static void test_hard_dot_grad(void) {
   }
 }
 
+/* huge (2^100, 2^121) and tiny (2^-100, denormal 2^-133) coefficients (multiples of 2^-16:
+ * exact when scaled), at |d| = 1, 1e-40 and 1e38: f = s f(u), gradient = s grad f(u) / |d| (u
+ * the float d / |d|, s the scale), within the bounds of test_hard_dot_grad plus the grid of a
+ * denormal result; entries past FLT_MAX +-inf of the right sign, never NaN. NaN in sh: NaN f
+ * and gradient, inf: non-finite f and gradient (the contract). */
+static void test_hard_dot_grad_coeffs(void) {
+  static const double scl[] = {0x1p100, 0x1p121, 0x1p-100, 0x1p-133};
+  static const double dsc[] = {1.0, 1e-40, 1e38};
+  static float c0[256];
+  float g[3], gu[3], f, fu, d[3], u[3];
+  int n, t, j, k, i, ok = 1, nf = 1, inf = 0;
+  double e = 0.0;
+  for (n = 1; n <= 16 && n <= MAXB; n++) {
+    double ca = 0.0, v[3], r;
+    sm_state = 0xC0Fu + (uint64_t)n;
+    dg_coeffs(n);
+    for (i = 0; i < n * n; i++) {
+      c0[i] = (float)(floor((double)dg_c[i] * 65536.0) / 65536.0);
+      ca += fabs((double)c0[i]);
+    }
+    for (j = 0; j < 3; j++) {
+      rand_dir_d(v);
+      to_float3(v, dsc[j], d);
+      for (k = 0; k < 3; k++)
+        d[k] = ((volatile float *)d)[k];
+      r = norm3f(d);
+      for (k = 0; k < 3; k++)
+        u[k] = (float)((double)d[k] / r);
+      fu = shl_sh_eval_dot_grad(n, c0, u, gu);
+      for (t = 0; t < 4; t++) {
+        double sc = scl[t], gb = target_grad_rel(n) * grad_scale(n - 1) * ca * sc / r, gr;
+        for (i = 0; i < n * n; i++)
+          dg_c[i] = (float)((double)c0[i] * sc);
+        f = shl_sh_eval_dot_grad(n, dg_c, d, g);
+        e = fmax(e, fabs((double)f - (double)fu * sc) /
+                        (target_eval(n) * ca * sc + (double)(n * n) * 0x1p-149));
+        for (k = 0; k < 3; k++) {
+          gr = (double)gu[k] * sc / r;
+          ok &= !isnan(g[k]);
+          if (fabs(gr) > 3.5e38) {
+            inf++;
+            ok &= isinf(g[k]) && (g[k] > 0) == (gr > 0);
+          } else if (fabs(gr) < 3.3e38) {
+            e = fmax(e, fabs((double)g[k] - gr) / (gb + (double)(n * n) * 0x1p-149));
+          }
+        }
+      }
+      for (i = 0; i < n * n; i += n) { /* one NaN / inf coefficient per trip */
+        memcpy(dg_c, c0, sizeof(float) * (size_t)(n * n));
+        dg_c[i] = i & 1 ? (float)INFINITY : (float)NAN;
+        for (t = 0; t < 2; t++) { /* the C path, the portable kernel */
+          f = t ? bands_sh_eval_dot_grad(n, dg_c, d, g) : shl_sh_eval_dot_grad(n, dg_c, d, g);
+          if (i & 1)
+            nf &= !isfinite(f) && !isfinite(g[0]) && !isfinite(g[1]) && !isfinite(g[2]);
+          else
+            nf &= isnan(f) && isnan(g[0]) && isnan(g[1]) && isnan(g[2]);
+        }
+      }
+    }
+  }
+  printf("  coefficients x 2^100, 2^121, 2^-100, 2^-133 at |d| = 1, 1e-40, 1e38: %.3f of the "
+         "bound, %d entries past FLT_MAX (+-inf)\n",
+         e, inf);
+  TL_CHECK(ok, "scaled coefficients: NaN, or a finite entry past FLT_MAX");
+  TL_CHECK(e <= 1.0, "scaled coefficients: %.3f of the bound", e);
+  TL_CHECK(nf, "NaN / inf in sh: a finite output");
+}
+
 int main(void) {
   PI_D = acos(-1.0);
   setvbuf(stdout, NULL, _IOLBF, 0);
@@ -1966,5 +2034,6 @@ int main(void) {
   TL_RUN(test_dot_grad_fd);
   TL_RUN(test_dot_grad_portable);
   TL_RUN(test_hard_dot_grad);
+  TL_RUN(test_hard_dot_grad_coeffs);
   return tl_summary();
 }
