@@ -88,6 +88,8 @@
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
 #define HVL_AVX 1 /* the AVX lanes, chosen at run time by __builtin_cpu_supports */
+#else
+#define HVL_AVX 0
 #endif
 
 #define HVL_PI 3.14159265358979323846
@@ -1209,7 +1211,7 @@ static void gt_lambert_pk(const gt_patches *gp, int nq, double eps, double (*qx)
 }
 #endif
 
-#if defined(HVL_AVX)
+#if HVL_AVX
 /* gt_lambert_pk four pixels per AVX vector: the same per-lane operations in the same order
    (AVX has no fused multiply-add, so no contraction either), so every sum is bit for bit the
    scalar loop's; chosen at run time where the CPU has AVX */
@@ -1329,7 +1331,7 @@ static void gt_shade(void *ctx, long lo, long hi) {
       if (nq < GT_PK && px + 1 < (int)hi) continue;
     }
     if (nq > 0) {
-#if defined(HVL_AVX)
+#if HVL_AVX
       if (jb->avx)
         gt_lambert_pk_avx(gp, nq, eps, qx, qn, qg, qe);
       else
@@ -1426,18 +1428,6 @@ static void gt_shade(void *ctx, long lo, long hi) {
   }
 }
 
-/* the AVX lanes where the CPU has AVX, unless SHLIGHT_RENDER_NO_AVX is set (tests hold the two
-   paths to the same bytes) */
-static int hvl_use_avx(void) {
-#if defined(HVL_AVX)
-  const char *e = getenv("SHLIGHT_RENDER_NO_AVX");
-  if (e && *e && strcmp(e, "0") != 0) return 0;
-  return __builtin_cpu_supports("avx") ? 1 : 0;
-#else
-  return 0;
-#endif
-}
-
 /* the gt image on rd_threads() threads; *ms: the CPU ms of all of them */
 static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, int N, double eps,
                     float *rgb, int *npatch, double *ms, int bg) {
@@ -1453,7 +1443,7 @@ static int gt_image(const rd_run *run, const hv_brdf *B, const spot_view *sv, in
   jb.gp = &gp;
   jb.eps = eps;
   jb.rgb = rgb;
-  jb.avx = hvl_use_avx();
+  jb.avx = rd_use_avx(HVL_AVX);
   jb.check = getenv("SHLIGHT_RENDER_GT_CHECK") ? check : NULL;
   t0 = rd_cpu_ms() - t0; /* the patches, on this thread */
   t0 += (bg ? rd_parallel_bg : rd_parallel)((long)run->gb->w * run->gb->h, run->gb->w, gt_shade,

@@ -95,6 +95,8 @@
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
 #define SSF_AVX 1 /* the AVX lanes, chosen at run time by __builtin_cpu_supports */
+#else
+#define SSF_AVX 0
 #endif
 
 #define SSF_PI 3.14159265358979323846
@@ -438,7 +440,7 @@ static void gt_four(const gt_job *jb, double x[3][4], double ns[3][4], double ng
       _mm_storeu_pd(&acc[c][2 * h], E[h][c]);
 }
 
-#if defined(SSF_AVX)
+#if SSF_AVX
 /* gt_four with the four pixels in one AVX vector: the same per-lane operations in the same
    order (AVX has no fused multiply-add, so no contraction either), so each sum is bit for bit
    gt_one's; chosen at run time where the CPU has AVX */
@@ -505,7 +507,7 @@ static void gt_rows(void *ctx, long lo, long hi) {
     }
     pp[k++] = px;
     if (k < GT_LANES) continue;
-#if defined(SSF_AVX)
+#if SSF_AVX
     if (jb->avx)
       gt_four_avx(jb, x, ns, ng, acc);
     else
@@ -552,18 +554,6 @@ static void gt_rows(void *ctx, long lo, long hi) {
   }
 }
 
-/* the AVX lanes where the CPU has AVX, unless SHLIGHT_RENDER_NO_AVX is set (tests hold the two
-   paths to the same bytes) */
-static int ssf_use_avx(void) {
-#if defined(SSF_AVX)
-  const char *e = getenv("SHLIGHT_RENDER_NO_AVX");
-  if (e && *e && strcmp(e, "0") != 0) return 0;
-  return __builtin_cpu_supports("avx") ? 1 : 0;
-#else
-  return 0;
-#endif
-}
-
 /* the gt image on rd_threads() threads; *ms: the CPU ms of all of them */
 static int gt_render(const rd_run *run, const rd_light *l, int N, double dmin, const char *label,
                      rd_image *out, double *ms, int bg) {
@@ -601,7 +591,7 @@ static int gt_render(const rd_run *run, const rd_light *l, int N, double dmin, c
   jb.v = v;
   jb.nv = nv;
   jb.dm2 = dm2;
-  jb.avx = ssf_use_avx();
+  jb.avx = rd_use_avx(SSF_AVX);
   jb.check = getenv("SHLIGHT_RENDER_GT_CHECK") ? check : NULL;
   jb.rgb = out->rgb;
   t0 = rd_cpu_ms() - t0; /* the VPLs, on this thread */

@@ -224,6 +224,9 @@ int rd_bg_ok(void);
 /* runs fn(arg) on a thread of its own when rd_bg_ok (returns 1: join *th), else here (returns
  * 0); *bg, which fn may read, says which before fn starts */
 int rd_bg_start(pthread_t *th, void *(*fn)(void *), void *arg, int *bg);
+/* 1 when a pass built with its AVX lanes (compiled != 0) may use them: the CPU has AVX and
+ * SHLIGHT_RENDER_NO_AVX is not set (tests hold the two paths to the same bytes), else 0 */
+int rd_use_avx(int compiled);
 /* lowers the calling thread's priority (nice + RD_PAR_NICE) where the system allows it */
 void rd_thread_nice(void);
 

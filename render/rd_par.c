@@ -88,6 +88,16 @@ int rd_bg_start(pthread_t *th, void *(*fn)(void *), void *arg, int *bg) {
   return 0;
 }
 
+int rd_use_avx(int compiled) {
+  const char *e = getenv("SHLIGHT_RENDER_NO_AVX");
+  if (!compiled || (e && *e && strcmp(e, "0") != 0)) return 0;
+#if defined(__x86_64__) && defined(__GNUC__)
+  return __builtin_cpu_supports("avx") ? 1 : 0;
+#else
+  return 0;
+#endif
+}
+
 static double par_run(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), void *ctx,
                       const char *label, int bg);
 double rd_parallel(long n, long chunk, void (*fn)(void *ctx, long lo, long hi), void *ctx,
