@@ -28,17 +28,19 @@ static double now(clockid_t c) {
 
 static char g_files[4][512];
 
+/* the shader's repeat count: a.w in the timed runs (GLSL_BUDGET_REPS), 1 in the compile table */
+#define REPS_DECL \
+  "#ifdef GLSL_BUDGET_REPS\n" \
+  "  int reps = int(a.w);\n" \
+  "#else\n" \
+  "  const int reps = 1;\n" \
+  "#endif\n"
+
 static const char *MAIN_VALUES =
     "void glrun_main(int item) {\n"
     "  vec4 a = in_vec4(0);\n"
     "  float y[SHLIGHT_MAX_COEFFS];\n"
-    "  float acc = 0.0;\n"
-    "#ifdef GLSL_BUDGET_REPS\n"
-    "  int reps = int(a.w);\n"
-    "#else\n"
-    "  const int reps = 1;\n"
-    "#endif\n"
-    "  for (int r = 0; r < reps; ++r) {\n"
+    "  float acc = 0.0;\n" REPS_DECL "  for (int r = 0; r < reps; ++r) {\n"
     "    vec3 d = normalize(a.xyz + vec3(0.0, 0.0, 0.01 * float(r)));\n"
     "    shl_sh_eval(SHLIGHT_MAX_BANDS, d, y);\n"
     "    acc += GLSL_BUDGET_SUM_Y;\n"
@@ -46,23 +48,18 @@ static const char *MAIN_VALUES =
     "  out_float(0, acc);\n"
     "}\n";
 
-static const char *MAIN_GRAD = "void glrun_main(int item) {\n"
-                               "  vec4 a = in_vec4(0);\n"
-                               "  float y[SHLIGHT_MAX_COEFFS];\n"
-                               "  vec3 g[SHLIGHT_MAX_COEFFS];\n"
-                               "  float acc = 0.0;\n"
-                               "#ifdef GLSL_BUDGET_REPS\n"
-                               "  int reps = int(a.w);\n"
-                               "#else\n"
-                               "  const int reps = 1;\n"
-                               "#endif\n"
-                               "  for (int r = 0; r < reps; ++r) {\n"
-                               "    vec3 d = normalize(a.xyz + vec3(0.0, 0.0, 0.01 * float(r)));\n"
-                               "    shl_sh_eval_grad(SHLIGHT_MAX_BANDS, d, y, g);\n"
-                               "    acc += GLSL_BUDGET_SUM_Y + GLSL_BUDGET_SUM_G;\n"
-                               "  }\n"
-                               "  out_float(0, acc);\n"
-                               "}\n";
+static const char *MAIN_GRAD =
+    "void glrun_main(int item) {\n"
+    "  vec4 a = in_vec4(0);\n"
+    "  float y[SHLIGHT_MAX_COEFFS];\n"
+    "  vec3 g[SHLIGHT_MAX_COEFFS];\n"
+    "  float acc = 0.0;\n" REPS_DECL "  for (int r = 0; r < reps; ++r) {\n"
+    "    vec3 d = normalize(a.xyz + vec3(0.0, 0.0, 0.01 * float(r)));\n"
+    "    shl_sh_eval_grad(SHLIGHT_MAX_BANDS, d, y, g);\n"
+    "    acc += GLSL_BUDGET_SUM_Y + GLSL_BUDGET_SUM_G;\n"
+    "  }\n"
+    "  out_float(0, acc);\n"
+    "}\n";
 
 /* f(d) = sum_i sh[i] Y_i(d) and its gradient; sh: constants (as from a uniform block), set
    before the timed repeats; the consumer reads the returned value and gradient only */
@@ -71,13 +68,7 @@ static const char *MAIN_DOT_GRAD =
     "  vec4 a = in_vec4(0);\n"
     "  float sh[SHLIGHT_MAX_COEFFS];\n"
     "  vec3 g;\n"
-    "  float acc = 0.0;\n"
-    "#ifdef GLSL_BUDGET_REPS\n"
-    "  int reps = int(a.w);\n"
-    "#else\n"
-    "  const int reps = 1;\n"
-    "#endif\n"
-    "  GLSL_BUDGET_SET_SH\n"
+    "  float acc = 0.0;\n" REPS_DECL "  GLSL_BUDGET_SET_SH\n"
     "  for (int r = 0; r < reps; ++r) {\n"
     "    vec3 d = normalize(a.xyz + vec3(0.0, 0.0, 0.01 * float(r)));\n"
     "    acc += shl_sh_eval_dot_grad(SHLIGHT_MAX_BANDS, sh, d, g) + dot(g, vec3(1.0));\n"
@@ -137,13 +128,7 @@ static const char *MAIN_HERMITE =
   "  v[3] = vec3(-0.5, 0.5, 1.0);\n" \
   "  vec3 nrm = vec3(0.0, 0.0, 1.0);\n" \
   "  vec3 view = normalize(vec3(0.3, 0.0, 1.0));\n" \
-  "  float acc = 0.0;\n" \
-  "#ifdef GLSL_BUDGET_REPS\n" \
-  "  int reps = int(a.w);\n" \
-  "#else\n" \
-  "  const int reps = 1;\n" \
-  "#endif\n" \
-  "  for (int r = 0; r < reps; ++r) {\n" \
+  "  float acc = 0.0;\n" REPS_DECL "  for (int r = 0; r < reps; ++r) {\n" \
   "    v[0] = vec3(-0.5, -0.5, 1.0) + 0.1 * a.xyz + vec3(0.0, 0.0, 0.01 * float(r));\n" \
   "    acc += " call ";\n" \
   "  }\n" \
