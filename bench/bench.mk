@@ -16,7 +16,7 @@ BENCH_CG_NS ?= 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 32 64
 # copy differs from the commit
 BENCH_REV := $(shell git rev-parse --short HEAD 2>/dev/null)$(shell git diff --quiet HEAD -- shlight.h 2>/dev/null || echo "+dirty, blob `git hash-object shlight.h | cut -c1-10`")
 
-build/bench/bench_basis: bench/bench_basis.c shlight.h tests/ref/shref.h
+build/bench/bench_basis: bench/bench_basis.c shlight.h tests/ref/published.h tests/ref/shref.h
 	@mkdir -p build/bench
 	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -DBENCH_FLAGS='"$(BENCH_CC) $(BENCH_CFLAGS)"' \
 	  -DBENCH_REV='"$(BENCH_REV)"' \
@@ -68,7 +68,7 @@ bench: bench-$(1)
 .PHONY: bench-$(1)
 endef
 
-build/bench/bench_light: bench/bench_light.c shlight.h bench/bench_util.h tests/ref/lightref.h \
+build/bench/bench_light: bench/bench_light.c shlight.h tests/ref/published.h bench/bench_util.h tests/ref/lightref.h \
   tests/ref/shref.h
 	@mkdir -p build/bench
 	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -DBENCH_FLAGS='"$(BENCH_CC) $(BENCH_CFLAGS)"' \

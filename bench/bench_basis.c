@@ -13,9 +13,9 @@
  * run.  Errors: max abs error against the binary128 reference tests/ref/shref.h at the very
  * float input the variant saw. */
 #define _POSIX_C_SOURCE 200112L
-#define SHLIGHT_REFERENCE_FORMS /* the published forms, for comparison */
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
+#include "../tests/ref/published.h" /* the published forms, for comparison */
 #include "../tests/ref/shref.h"
 
 #include <errno.h>

@@ -6,9 +6,9 @@
  * a literal band count, a memory barrier. --count-only VARIANT N K runs K calls only
  * (bench/callgrind_light.sh counts instructions with it). */
 #define _POSIX_C_SOURCE 200809L
-#define SHLIGHT_REFERENCE_FORMS /* the published forms, for comparison */
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
+#include "../tests/ref/published.h" /* the published forms, for comparison */
 #include "../tests/ref/lightref.h"
 #define BENCH_SEED 0x1234567u
 #include "bench_util.h"

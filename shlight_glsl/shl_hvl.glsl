@@ -91,12 +91,6 @@ float shli_hvl_hs(shli_real c, float r, float d) {
   return SHLIGHT_FLOAT(xx * xx * (3.0 - 2.0 * xx));
 }
 
-#ifdef SHLIGHT_REFERENCE_FORMS
-float shl_hvl_horizon_smoothstep(vec3 nrm, vec3 w, float r, float d) {
-  return shli_hvl_hs(shli_cos_between(nrm, w), r, d);
-}
-#endif
-
 float shl_hvl_geometric(vec3 x, vec3 nrm, vec3 y, vec3 light_nrm, float r, int exact) {
   shli_real g[8];
   shli_real gn[8];

@@ -154,41 +154,6 @@ void shl_zh_cap_derivative(int n, float r, float d, out float out_dzh[SHLIGHT_MA
   }
 }
 
-#ifdef SHLIGHT_REFERENCE_FORMS
-void shl_zh_cap_printed(int n, float r, float d, out float out_zh[SHLIGHT_MAX_BANDS]) {
-  float s = 0.0f;
-  float al;
-  float fl;
-  float pm = 1.0f;
-  float pl;
-  float pn;
-  int l;
-  n = shli_bands(n);
-  if (n < 1) {
-    return;
-  }
-  if (r > 0.0f && d >= 0.0f && d <= 3.4028234e38f) {
-    s = 1.0f;
-    if (d > r) {
-      s = r / d;
-    }
-  }
-  al = SHLIGHT_FLOAT(SHLIGHT_SQRTR(SHLIGHT_REAL(1.0f - s * s)));
-  out_zh[0] = 1.77245385f * (1.0f - al);
-  /* walk P_{l-1}, P_l, P_{l+1} */
-  pl = al;
-  fl = 1.0f;
-  for (l = 1; l < n; ++l) {
-    pn = ((2.0f * fl + 1.0f) * al * pl - fl * pm) / (fl + 1.0f);
-    out_zh[l] =
-        SHLIGHT_FLOAT(SHLIGHT_SQRTR(SHLIGHT_REAL(3.14159265f / (2.0f * fl + 1.0f)))) * (pm - pn);
-    pm = pl;
-    pl = pn;
-    fl = fl + 1.0f;
-  }
-}
-#endif
-
 void shl_zh_rotate(int n, float zh[SHLIGHT_MAX_BANDS], vec3 dir,
                    out float out_sh[SHLIGHT_MAX_COEFFS]) {
   shli_real g[8];

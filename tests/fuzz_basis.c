@@ -27,9 +27,9 @@
  *     tests/fuzz_replay.c tests/fuzz_basis.c -lm && build/tests/fuzz_replay_asan tests/corpus/basis
  */
 /* Release-mode contract (n out of range is clamped, not asserted): */
-#define SHLIGHT_REFERENCE_FORMS /* the published forms, for comparison */
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
+#include "ref/published.h" /* the published forms, for comparison */
 
 #include <math.h>
 #include <stddef.h>

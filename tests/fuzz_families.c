@@ -26,9 +26,9 @@
  * Replay without libFuzzer: tests/fuzz_replay.c (links against the two globals below);
  * seeded random driver: tests/fuzz_random.c. */
 #define SHLIGHT_ASSERT(x) ((void)0)
-#define SHLIGHT_REFERENCE_FORMS /* the published forms, for comparison */
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
+#include "ref/published.h" /* the published forms, for comparison */
 
 #include <float.h>
 #include <math.h>

@@ -23,9 +23,9 @@
 /* Out-of-range n asserts in debug builds and is clamped in release builds (shlight.h
  * >>numerics).  The tests check the release behaviour, and that the assertion fires: count
  * assertion failures instead of aborting. */
-#define SHLIGHT_REFERENCE_FORMS /* the published forms, for comparison */
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
+#include "ref/published.h" /* the published forms, for comparison */
 #include "ref/shref.h"
 #include "tl.h"
 

@@ -16,9 +16,9 @@
  *    ring above the horizon, acos(-cot(beta) cot(psi)) / pi), panels graded toward the kink.
  * Error model: float outputs carry 0.5 ulp; inputs are floats converted exactly. */
 /* n out of range: counted instead of aborting (the release behaviour is what is tested) */
-#define SHLIGHT_REFERENCE_FORMS /* the published forms, for comparison */
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
+#include "ref/published.h" /* the published forms, for comparison */
 #include "tl.h"
 #include <float.h>
 #include <math.h>

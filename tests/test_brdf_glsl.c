@@ -4,7 +4,6 @@
    float rounding: the tolerances below are 2e-5 of each output's scale (1 for the lobes'
    K_l-normalised values and H, the product of the norms for the convolutions), measured
    worst cases printed. Run from the repository root (tests/run.sh runs it). */
-#define SHLIGHT_REFERENCE_FORMS /* the published forms, for comparison */
 #include "../shlight.h"
 #include "gl/glrun.h"
 #include "tl.h"
@@ -29,7 +28,7 @@
 #define IN (72 + 2 * NN)
 /* outputs: phong, cospow, lambert, blinn, ggx, beckmann, windowed zh (7 x 8), then scalars */
 #define O_S 56
-#define NS 17
+#define NS 16
 #define OUTS (O_S + NS)
 
 static unsigned int st = 424242u;
@@ -59,19 +58,18 @@ static void c_item(const float *p, float *o) {
   o[O_S + 4] = shl_zh_irradiance(NB, p + I_ZH, p[2]);
   o[O_S + 5] = (float)shl_zh_bands_for(NB, o + 32, 1e-3f);
   o[O_S + 6] = shl_hvl_horizon(p + I_VEC + 6, p + I_VEC + 9, p[3], p[4]);
-  o[O_S + 7] = shl_hvl_horizon_smoothstep(p + I_VEC + 6, p + I_VEC + 9, p[3], p[4]);
-  o[O_S + 8] = shl_hvl_geometric(p + I_HV, p + I_VEC + 6, p + I_HV + 3, p + I_HV + 6, p[3], 1);
-  o[O_S + 9] = shl_hvl_geometric(p + I_HV, p + I_VEC + 6, p + I_HV + 3, p + I_HV + 6, p[3], 0);
-  o[O_S + 10] = shl_hvl_emission(NB, p + I_SH, p + I_VEC);
-  o[O_S + 11] = shl_hvl_radiance(NB, p + I_SH, 2.0f, p + I_HV, p + I_VEC + 6, p + I_HV + 3,
+  o[O_S + 7] = shl_hvl_geometric(p + I_HV, p + I_VEC + 6, p + I_HV + 3, p + I_HV + 6, p[3], 1);
+  o[O_S + 8] = shl_hvl_geometric(p + I_HV, p + I_VEC + 6, p + I_HV + 3, p + I_HV + 6, p[3], 0);
+  o[O_S + 9] = shl_hvl_emission(NB, p + I_SH, p + I_VEC);
+  o[O_S + 10] = shl_hvl_radiance(NB, p + I_SH, 2.0f, p + I_HV, p + I_VEC + 6, p + I_HV + 3,
                                  p + I_HV + 6, p[3], 1);
-  o[O_S + 12] = shl_hvl_contribution(NB, 1.5f, p + I_SH2, p + I_HV, p + I_HV + 3, p[3]);
-  o[O_S + 13] =
+  o[O_S + 11] = shl_hvl_contribution(NB, 1.5f, p + I_SH2, p + I_HV, p + I_HV + 3, p[3]);
+  o[O_S + 12] =
       shl_hvl_contribution_zh(NB, 1.5f, o + 32, p + I_VEC + 3, p + I_HV, p + I_HV + 3, p[3]);
-  o[O_S + 14] = shl_hvl_radius_neighbours(8, p + I_P, p[I_P + 3], (const float(*)[3])(p + I_PN),
+  o[O_S + 13] = shl_hvl_radius_neighbours(8, p + I_P, p[I_P + 3], (const float(*)[3])(p + I_PN),
                                           p + I_DN, p[I_P + 4]);
-  o[O_S + 15] = shl_hvl_radius_fov(p[4], p[5], 64);
-  o[O_S + 16] = shl_hvl_radius_fov_tan(p[4], p[5], 64);
+  o[O_S + 14] = shl_hvl_radius_fov(p[4], p[5], 64);
+  o[O_S + 15] = shl_hvl_radius_fov_tan(p[4], p[5], 64);
 }
 
 static void test_glsl_brdf(void) {
@@ -80,7 +78,7 @@ static void test_glsl_brdf(void) {
                           "shlight_glsl/shl_gradient.glsl", "shlight_glsl/shl_zonal.glsl",
                           "shlight_glsl/shl_light.glsl",    "shlight_glsl/shl_brdf.glsl",
                           "shlight_glsl/shl_hvl.glsl"};
-  const char *defines = "#define SHLIGHT_MAX_BANDS 8\n#define SHLIGHT_REFERENCE_FORMS\n";
+  const char *defines = "#define SHLIGHT_MAX_BANDS 8\n";
   const char *main_src =
       "vec3 v3(int j) { return vec3(in_float(j), in_float(j + 1), in_float(j + 2)); }\n"
       "void glrun_main(int item) {\n"
@@ -115,24 +113,23 @@ static void test_glsl_brdf(void) {
       "  out_float(60, shl_zh_irradiance(8, zh, in_float(2)));\n"
       "  out_float(61, float(shl_zh_bands_for(8, g, 1e-3)));\n"
       "  out_float(62, shl_hvl_horizon(v3(12), v3(15), in_float(3), in_float(4)));\n"
-      "  out_float(63, shl_hvl_horizon_smoothstep(v3(12), v3(15), in_float(3), in_float(4)));\n"
-      "  out_float(64, shl_hvl_geometric(v3(18), v3(12), v3(21), v3(24), in_float(3), 1));\n"
-      "  out_float(65, shl_hvl_geometric(v3(18), v3(12), v3(21), v3(24), in_float(3), 0));\n"
-      "  out_float(66, shl_hvl_emission(8, sh, v3(6)));\n"
-      "  out_float(67, shl_hvl_radiance(8, sh, 2.0, v3(18), v3(12), v3(21), v3(24), in_float(3), "
+      "  out_float(63, shl_hvl_geometric(v3(18), v3(12), v3(21), v3(24), in_float(3), 1));\n"
+      "  out_float(64, shl_hvl_geometric(v3(18), v3(12), v3(21), v3(24), in_float(3), 0));\n"
+      "  out_float(65, shl_hvl_emission(8, sh, v3(6)));\n"
+      "  out_float(66, shl_hvl_radiance(8, sh, 2.0, v3(18), v3(12), v3(21), v3(24), in_float(3), "
       "1));\n"
-      "  out_float(68, shl_hvl_contribution(8, 1.5, sh2, v3(18), v3(21), in_float(3)));\n"
-      "  out_float(69, shl_hvl_contribution_zh(8, 1.5, g, v3(9), v3(18), v3(21), in_float(3)));\n"
-      "  out_float(70, shl_hvl_radius_neighbours(8, v3(27), in_float(30), pn, dn, "
+      "  out_float(67, shl_hvl_contribution(8, 1.5, sh2, v3(18), v3(21), in_float(3)));\n"
+      "  out_float(68, shl_hvl_contribution_zh(8, 1.5, g, v3(9), v3(18), v3(21), in_float(3)));\n"
+      "  out_float(69, shl_hvl_radius_neighbours(8, v3(27), in_float(30), pn, dn, "
       "in_float(31)));\n"
-      "  out_float(71, shl_hvl_radius_fov(in_float(4), in_float(5), 64));\n"
-      "  out_float(72, shl_hvl_radius_fov_tan(in_float(4), in_float(5), 64));\n"
+      "  out_float(70, shl_hvl_radius_fov(in_float(4), in_float(5), 64));\n"
+      "  out_float(71, shl_hvl_radius_fov_tan(in_float(4), in_float(5), 64));\n"
       "}\n";
   static const char *names[] = {"phong", "cos^e", "lambert", "blinn", "ggx", "beckmann", "window"};
-  static const char *snames[NS] = {
-      "sh_dot",  "sh_conv_zh", "zh_dot_zh", "irradiance3",  "irradiance", "bands_for",
-      "horizon", "horizon_ss", "G exact",   "G smoothstep", "emission",   "radiance",
-      "contrib", "contrib_zh", "r1",        "r2",           "r2 tan"};
+  static const char *snames[NS] = {"sh_dot",       "sh_conv_zh", "zh_dot_zh", "irradiance3",
+                                   "irradiance",   "bands_for",  "horizon",   "G exact",
+                                   "G smoothstep", "emission",   "radiance",  "contrib",
+                                   "contrib_zh",   "r1",         "r2",        "r2 tan"};
   double worst[7 + NS];
   int i, k, bad = 0;
   memset(worst, 0, sizeof worst);
@@ -173,7 +170,7 @@ static void test_glsl_brdf(void) {
       int grp = k < O_S ? k / 8 : 7 + (k - O_S);
       if (k < O_S)
         scale = 1.0; /* K_l-scale lobes, window of |zh| <= 1 */
-      else if (k - O_S <= 4 || (k - O_S >= 10 && k - O_S <= 13))
+      else if (k - O_S <= 4 || (k - O_S >= 9 && k - O_S <= 12))
         scale = 64.0; /* sums of 64 */
       else
         scale = fmax(1.0, fabs(r));

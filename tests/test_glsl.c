@@ -12,7 +12,6 @@
  * are C only). The compute path (GLSL 4.50) checks every kernel; the fragment path (GLSL 3.30,
  * which flushes denormals) and the GLSL ES 3.00 fragment path check the kernels whose outputs fit
  * in 8 vec4 per pixel. */
-#define SHLIGHT_REFERENCE_FORMS /* the published forms, for comparison */
 #include "../shlight.h"
 #include "gl/glrun.h"
 #include "tl.h"
@@ -71,8 +70,7 @@ static double tol_y(int n) {
 
 static char defines[128];
 static void set_bands(int maxb) {
-  snprintf(defines, sizeof defines,
-           "#define SHLIGHT_MAX_BANDS %d\n#define SHLIGHT_REFERENCE_FORMS\n", maxb);
+  snprintf(defines, sizeof defines, "#define SHLIGHT_MAX_BANDS %d\n", maxb);
 }
 
 /* shl_sh_eval on the compute path: n bands in a shader built for maxb bands */
@@ -211,59 +209,6 @@ static void check_dot_grad_compute(int n) {
          n, err_v, err_g);
   TL_CHECK(err_v <= tol_y(n), "dot_grad value n=%d: %.3e", n, err_v);
   TL_CHECK(err_g <= tol_y(n) * (1 + n), "dot_grad n=%d: %.3e > %.3e", n, err_g, tol_y(n) * (1 + n));
-}
-
-/* the paper's spherical partials and Jacobian, away from the poles (singular there) */
-static void check_spherical_compute(int n) {
-  static float in[NDIR * 3], out[NDIR * 6 * 100], y[100], dt[100], dp[100], g[100][3];
-  static char main_src[900];
-  double err = 0.0, gmax = 0.0;
-  int i, k, c, ok;
-  make_dirs(0);
-  for (i = 0; i < NDIR; ++i) /* keep away from the poles: theta in [0.05, pi - 0.05] */
-    if (fabs((double)dirs[i][2]) > 0.998) dirs[i][0] = 0.1f, dirs[i][1] = 0.05f;
-  memcpy(in, dirs, sizeof in);
-  set_bands(n);
-  snprintf(main_src, sizeof main_src,
-           "void glrun_main(int item) {\n"
-           "  float y[SHLIGHT_MAX_COEFFS];\n"
-           "  float t[SHLIGHT_MAX_COEFFS];\n"
-           "  float p[SHLIGHT_MAX_COEFFS];\n"
-           "  vec3 g[SHLIGHT_MAX_COEFFS];\n"
-           "  vec3 d = vec3(in_float(0), in_float(1), in_float(2));\n"
-           "  shl_sh_eval_grad_spherical(%d, d, y, t, p);\n"
-           "  shl_sh_grad_from_spherical(%d, d, t, p, g);\n"
-           "  for (int i = 0; i < %d; ++i) {\n"
-           "    out_float(6 * i, y[i]);\n"
-           "    out_float(6 * i + 1, t[i]);\n"
-           "    out_float(6 * i + 2, p[i]);\n"
-           "    out_float(6 * i + 3, g[i].x);\n"
-           "    out_float(6 * i + 4, g[i].y);\n"
-           "    out_float(6 * i + 5, g[i].z);\n"
-           "  }\n"
-           "}\n",
-           n, n, n * n);
-  ok = glrun_compute(defines, files_grad, 3, main_src, in, (size_t)NDIR * 3, out,
-                     (size_t)NDIR * 6 * (size_t)(n * n), NDIR) == 0;
-  TL_CHECK(ok, "compute build/run failed for spherical n=%d: %s", n, glrun_last_log());
-  if (!ok) return;
-  for (i = 0; i < NDIR; ++i) {
-    float ref[6];
-    shl_sh_eval_grad_spherical(n, dirs[i], y, dt, dp);
-    shl_sh_grad_from_spherical(n, dirs[i], dt, dp, g);
-    for (k = 0; k < n * n; ++k) {
-      ref[0] = y[k], ref[1] = dt[k], ref[2] = dp[k];
-      ref[3] = g[k][0], ref[4] = g[k][1], ref[5] = g[k][2];
-      for (c = 0; c < 6; ++c) {
-        double e = fabs((double)out[(size_t)(i * n * n + k) * 6 + (size_t)c] - (double)ref[c]);
-        if (fabs((double)ref[c]) > gmax) gmax = fabs((double)ref[c]);
-        if (!(e <= err)) err = e;
-      }
-    }
-  }
-  printf("     spherical partials + Jacobian compute n=%2d: max |GLSL - C| = %.2e (max %.2e)\n", n,
-         err, gmax);
-  TL_CHECK(err <= tol_y(n) * (1 + n) * (gmax > 1.0 ? gmax : 1.0), "spherical n=%d: %.3e", n, err);
 }
 
 /* shl_sh_eval on the fragment path (GLSL 3.30 or ES 3.00), n <= 5 (25 floats per pixel) */
@@ -519,11 +464,6 @@ static void test_dot_grad_compute(void) {
     if (!subset() || ns[i] == 4 || ns[i] == 16) check_dot_grad_compute(ns[i]);
 }
 
-static void test_spherical_compute(void) {
-  check_spherical_compute(3);
-  if (!subset()) check_spherical_compute(10);
-}
-
 static void test_eval_fragment(void) {
   int n;
   for (n = 1; n <= 5; ++n)
@@ -537,7 +477,6 @@ int main(void) {
   TL_RUN(test_eval_compute);
   TL_RUN(test_grad_compute);
   TL_RUN(test_dot_grad_compute);
-  TL_RUN(test_spherical_compute);
   TL_RUN(test_light_compute);
   TL_RUN(test_eval_fragment);
   glrun_close();

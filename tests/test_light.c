@@ -25,9 +25,9 @@
  *    rounding 0.5u plus the own atan2 (4e-13 relative) -> derived floor 4u relative, target 1e-5.
  * FD references: step and error bound in ref/lightref.h (lref_sphere_fd_step: ~1e-23 of the
  * gradient scale), i.e. exact for float purposes. */
-#define SHLIGHT_REFERENCE_FORMS /* the published forms, for comparison */
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
+#include "ref/published.h" /* the published forms, for comparison */
 
 #include "tl.h"
 #include "ref/lightref.h"

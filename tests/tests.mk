@@ -29,9 +29,9 @@ TESTS_ASAN ?= -O1 -g1 -fsanitize=address,undefined -fno-sanitize-recover=undefin
 TESTS_QUADLIBS ?= -lquadmath -lm
 FUZZ_SECONDS ?= 60
 
-TESTS_BASIS_DEPS := tests/test_basis.c tests/bands_impl.c tests/ref/shref.h tests/tl.h shlight.h
+TESTS_BASIS_DEPS := tests/test_basis.c tests/bands_impl.c tests/ref/published.h tests/ref/shref.h tests/tl.h shlight.h
 TESTS_GLM_DEPS := tests/test_glm.cpp tests/impl_c.c tests/tl.h shlight.h
-TESTS_FUZZ_DEPS := tests/fuzz_replay.c tests/fuzz_basis.c shlight.h
+TESTS_FUZZ_DEPS := tests/fuzz_replay.c tests/fuzz_basis.c tests/ref/published.h shlight.h
 
 $(TESTS_BUILD)/test_basis: $(TESTS_BASIS_DEPS)
 	@mkdir -p $(@D)
@@ -110,16 +110,16 @@ $(TESTS_BUILD)/native-novl/test_simd_novl: tests/test_simd_novl.c tests/ref/shre
 
 # >>zonal / >>light: kernels against binary128 references (tests/ref/lightref.h), and the
 # references' own self-checks
-$(TESTS_BUILD)/test_light: tests/test_light.c tests/ref/lightref.h tests/ref/shref.h tests/tl.h shlight.h
+$(TESTS_BUILD)/test_light: tests/test_light.c tests/ref/published.h tests/ref/lightref.h tests/ref/shref.h tests/tl.h shlight.h
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) -o $@ tests/test_light.c $(TESTS_QUADLIBS)
-$(TESTS_BUILD)/native/test_light: tests/test_light.c tests/ref/lightref.h tests/ref/shref.h tests/tl.h shlight.h
+$(TESTS_BUILD)/native/test_light: tests/test_light.c tests/ref/published.h tests/ref/lightref.h tests/ref/shref.h tests/tl.h shlight.h
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) -march=native -ffp-contract=fast -o $@ tests/test_light.c $(TESTS_QUADLIBS)
 $(TESTS_BUILD)/selftest_lightref: tests/ref/selftest_lightref.c tests/ref/lightref.h tests/ref/shref.h
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -O2 -g1 -o $@ tests/ref/selftest_lightref.c $(TESTS_QUADLIBS)
-$(TESTS_BUILD)/asan/test_light: tests/test_light.c tests/ref/lightref.h tests/ref/shref.h tests/tl.h shlight.h
+$(TESTS_BUILD)/asan/test_light: tests/test_light.c tests/ref/published.h tests/ref/lightref.h tests/ref/shref.h tests/tl.h shlight.h
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) $(TESTS_ASAN) -o $@ tests/test_light.c $(TESTS_QUADLIBS)
 
@@ -173,13 +173,13 @@ $(TESTS_BUILD)/selftest_arearef: tests/selftest_arearef.c tests/ref/arearef.h
 	$(CC) -std=c99 -O2 -g1 -o $@ tests/selftest_arearef.c -lm
 
 # >>brdf / >>hvl: lobes, convolution, irradiance, windows, horizon fraction against quadrature
-$(TESTS_BUILD)/test_brdf: tests/test_brdf.c tests/tl.h shlight.h
+$(TESTS_BUILD)/test_brdf: tests/test_brdf.c tests/ref/published.h tests/tl.h shlight.h
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) -o $@ tests/test_brdf.c $(TESTS_QUADLIBS)
-$(TESTS_BUILD)/native/test_brdf: tests/test_brdf.c tests/tl.h shlight.h
+$(TESTS_BUILD)/native/test_brdf: tests/test_brdf.c tests/ref/published.h tests/tl.h shlight.h
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) -march=native -ffp-contract=fast -o $@ tests/test_brdf.c $(TESTS_QUADLIBS)
-$(TESTS_BUILD)/asan/test_brdf: tests/test_brdf.c tests/tl.h shlight.h
+$(TESTS_BUILD)/asan/test_brdf: tests/test_brdf.c tests/ref/published.h tests/tl.h shlight.h
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) $(TESTS_GRID_FLAGS) $(TESTS_ASAN) -o $@ tests/test_brdf.c $(TESTS_QUADLIBS)
 
@@ -269,7 +269,7 @@ $(TESTS_BUILD)/asan/test_contracts: $(TESTS_CONTRACTS_DEPS)
 # fuzz targets of the other families (tests/fuzz_families.c): seeded random driver (any
 # compiler), corpus replay through tests/fuzz_replay.c (plain and ASan/UBSan with
 # float-cast-overflow, no recover), libFuzzer binary (clang), a longer opt-in run
-TESTS_FAM_DEPS := tests/fuzz_families.c shlight.h
+TESTS_FAM_DEPS := tests/fuzz_families.c tests/ref/published.h shlight.h
 TESTS_FAM_FLAGS := -Wno-double-promotion -Wno-conversion
 FUZZ_FAM_CALLS ?= 400
 FUZZ_FAM_LONG_CALLS ?= 200000

@@ -77,7 +77,7 @@ def check_c(path, line, body, k):
 def check_c_fragments(path, frags):
     src = os.path.join(OUT, '%s_fragments.c' % re.sub(r'\W', '_', rel(path)))
     exe = src[:-2]
-    parts = ['#define SHLIGHT_IMPLEMENTATION\n#define SHLIGHT_REFERENCE_FORMS\n#include "shlight.h"\n#include <math.h>\n'
+    parts = ['#define SHLIGHT_IMPLEMENTATION\n#include "shlight.h"\n#include "tests/ref/published.h"\n#include <math.h>\n'
              '#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n']
     for k, (line, body) in enumerate(frags):
         parts.append('static void fragment_%d(void) {\n#line %d "%s"\n%s}\n'

@@ -1026,12 +1026,7 @@ def split_items(lines):
     return items
 
 
-REFERENCE_FORMS = ('shl_zh_cap_printed', 'shl_hvl_horizon_smoothstep', 'shl_sh_eval_grad_spherical', 'shl_sh_grad_from_spherical')
-
-
 def guard(kind, name):
-    if name in REFERENCE_FORMS:
-        return '#ifdef SHLIGHT_REFERENCE_FORMS'
     if kind == 'tab' or name.endswith('_loop'):
         return '#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS'
     if name.startswith('shli_fast_'):

@@ -97,7 +97,7 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     tu = os.path.join(a.out, "stack_tu.c")
     with open(tu, "w") as f:
-        f.write("#define SHLIGHT_IMPLEMENTATION\n#define SHLIGHT_REFERENCE_FORMS\n#include \"../../shlight.h\"\n")
+        f.write("#define SHLIGHT_IMPLEMENTATION\n#include \"../../shlight.h\"\n")
         f.write("typedef void (*stack_fp)(void);\n")
         f.write("stack_fp stack_all[] = {\n")
         for n in names:
