@@ -2257,13 +2257,15 @@ float shl_sh_eval_dot_grad(int n, float sh[SHLIGHT_MAX_COEFFS], vec3 d, out vec3
   float f = 0.0f;
   float t = 0.0f;
   int l;
-  n = shli_bands(n < SHLIGHT_UNROLLED_BANDS ? n : SHLIGHT_UNROLLED_BANDS);
+  n = shli_bands(n);
   SHLIGHT_SET3(out_grad, 0.0f, 0.0f, 0.0f);
   if (n < 1) {
     return 0.0f;
   }
-#if !SHLIGHT_BY_BANDS
-  return shli_sh_dot_grad_c(n, sh, d, out_grad);
+#if !SHLIGHT_BY_BANDS || SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS
+  if (!SHLIGHT_BY_BANDS || n > SHLIGHT_UNROLLED_BANDS) {
+    return shli_sh_dot_grad_c(n, sh, d, out_grad);
+  }
 #endif
   shli_sh_grad_frame(d, g);
   shli_sh_eval_xyz(n, g[0], g[1], g[2], ysh);

@@ -1733,7 +1733,7 @@ static void dg_vs_sum(int n, const float d[3], double *ev, double *eg, int *ok) 
   }
 }
 static void test_dot_grad_vs_sum(void) {
-  static const int ns[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+  static const int ns[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 24, 33, 64};
   static float d[64][3];
   int t, j;
   sm_state = 0xD06u;
@@ -1769,7 +1769,7 @@ static shref_q dg_f_q(int n, const shref_q p[3]) {
   return s;
 }
 static void test_dot_grad_fd(void) {
-  static const int ns[] = {1, 2, 3, 4, 6, 9, 12, 16};
+  static const int ns[] = {1, 2, 3, 4, 6, 9, 12, 16, 17, 32, 64};
   static float d[16][3];
   int t, j, k, s;
   sm_state = 0xFDu;
@@ -1852,7 +1852,7 @@ static void test_dot_grad_portable(void) {
  * the maximum: as the maximum; |d| near the float limits: gradient = (gradient at d / |d|) / |d|,
  * entries past FLT_MAX are +-inf of the right sign, the others within the bound; never NaN */
 static void test_hard_dot_grad(void) {
-  static const int ns[] = {1, 4, 9, 16};
+  static const int ns[] = {1, 4, 9, 16, 17, 64};
   float bad[5][3] = {{0.0f, 0.0f, 0.0f},
                      {0.0f, 0.0f, 0.0f},
                      {1.0f, 0.0f, 0.0f},
@@ -1865,7 +1865,7 @@ static void test_hard_dot_grad(void) {
   bad[2][1] = NAN;
   bad[3][0] = INFINITY;
   bad[4][2] = -INFINITY;
-  for (t = 0; t < 4; t++) {
+  for (t = 0; t < 6; t++) {
     int n = ns[t], ok = 1, inf = 0;
     double e = 0.0, ca = 0.0, sv = 0.0;
     if (n > MAXB) continue;
@@ -1917,17 +1917,18 @@ static void test_hard_dot_grad(void) {
            n, inf, e);
     TL_CHECK(ok, "n=%d: tiny / huge |d|", n);
     TL_CHECK(e <= 1.0, "n=%d: tiny / huge |d| gradient %.3f of the bound", n, e);
-    if (n == 16) TL_CHECK(inf > 0, "the overflowing case was not reached");
+    if (n >= 16) TL_CHECK(inf > 0, "n=%d: the overflowing case was not reached", n);
   }
   {
-    /* n > 16 bands: taken as 16 (in C as in GLSL) */
-    static const int big[] = {17, 64, 1000};
+    /* n past SHLIGHT_MAX_BANDS: taken as the maximum */
+    static const int big[] = {MAXB + 1, 1000, 2147483647};
     float g2[3], f2, d[3] = {0.3f, -0.5f, 0.8f};
-    dg_coeffs(MAXB < 16 ? MAXB : 16);
-    f = shl_sh_eval_dot_grad(16, dg_c, d, g);
+    dg_coeffs(MAXB);
+    f = shl_sh_eval_dot_grad(MAXB, dg_c, d, g);
     for (t = 0; t < 3; t++) {
       f2 = shl_sh_eval_dot_grad(big[t], dg_c, d, g2);
-      TL_CHECK(f == f2 && g[0] == g2[0] && g[1] == g2[1] && g[2] == g2[2], "n=%d as 16", big[t]);
+      TL_CHECK(f == f2 && g[0] == g2[0] && g[1] == g2[1] && g[2] == g2[2], "n=%d as %d", big[t],
+               MAXB);
     }
   }
 }
@@ -1940,11 +1941,11 @@ static void test_hard_dot_grad(void) {
 static void test_hard_dot_grad_coeffs(void) {
   static const double scl[] = {0x1p100, 0x1p121, 0x1p-100, 0x1p-133};
   static const double dsc[] = {1.0, 1e-40, 1e38};
-  static float c0[256];
+  static float c0[MAXC];
   float g[3], gu[3], f, fu, d[3], u[3];
   int n, t, j, k, i, ok = 1, nf = 1, inf = 0;
   double e = 0.0;
-  for (n = 1; n <= 16 && n <= MAXB; n++) {
+  for (n = 1; n <= MAXB; n = n < 16 ? n + 1 : n + 16) { /* 1..16, 32, 48, 64 */
     double ca = 0.0, v[3], r;
     sm_state = 0xC0Fu + (uint64_t)n;
     dg_coeffs(n);
