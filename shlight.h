@@ -2334,7 +2334,7 @@ SHLIGHT_CPU_INLINE float shli_sh_dot_grad_stream(int n, const float *sh, const f
                                                  float *out_grad) {
   float g[8];
   shli_real x, y, z, t, pc = 1.0, ps = 0.0, s[5] = {0.0, 0.0, 0.0, 0.0, 0.0}, v, xa, dd, ra, rg;
-  shli_real rc, s2, ca, cp, cb, bp, cd, cc, yc, ys, ec, es, oc, os, sw, sg;
+  shli_real rc, s2, ca, cp, cb, bp, cd, cc, yc, ys, ec, es, oc, os, sw, sg, fa, fb;
   const shli_real *q = SHLI_SH_RSQ;
   int m, l, b, j, u;
   shli_sh_grad_frame(d, g);
@@ -2347,6 +2347,7 @@ SHLIGHT_CPU_INLINE float shli_sh_dot_grad_stream(int n, const float *sh, const f
       pc = v;
     }
     ec = pc, es = ps, oc = sg * pc, os = sg * ps, xa = (shli_real)SHLI_SH_DIAG[m], dd = 0.0;
+    fa = m == 0 ? 1.4142135623730951 : 1.0, fb = m == 1 ? 1.4142135623730951 : 1.0;
     for (l = m; l < n; ++l) {
       if (l > m) {
         shli_sh_reinsch(l, m, &ra, &rg, &rc);
@@ -2360,9 +2361,9 @@ SHLIGHT_CPU_INLINE float shli_sh_dot_grad_stream(int n, const float *sh, const f
       if (l + 1 < n) { /* band u = l + 1, orders j - 1, j, j + 1: sqrt(a b) = a b q[a] q[b] */
         u = l + 1, j = m, b = u * (u + 1), s2 = SHLI_SH_S12[2 * u + 1];
         ca = -0.5 * s2 * (u + j + 1) * (u + j) * q[u + j + 1] * q[u + j];
-        cp = j == 0 ? ca * 1.4142135623730951 : ca;
+        cp = ca * fa;
         cb = j >= 1 ? 0.5 * s2 * (u - j + 1) * (u - j) * q[u - j + 1] * q[u - j] : 0.0;
-        bp = j == 1 ? cb * 1.4142135623730951 : cb;
+        bp = cb * fb;
         cd = j >= 2 ? cb : 0.0;
         cc = s2 * (u - j) * (u + j) * q[u - j] * q[u + j];
         s[2] += yc * (cp * SHLI_S(b + j + 1) + bp * SHLI_S(b + j - 1)) +
