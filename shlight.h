@@ -655,7 +655,7 @@ SHLIGHT_INLINE float shl_polygon_beckmann_subedges(const float (*v)[3], int nv, 
                                                    const float view[3], float alpha, int subedges);
 
 /* ---- brdf ---------------------------------------------------------------------------------- */
-/* windows of shl_sh_window */
+/* windows of shl_zh_window */
 typedef enum shl_window_kind {
   SHLIGHT_WINDOW_NONE = 0,
   SHLIGHT_WINDOW_HANNING = 1,
@@ -752,7 +752,7 @@ SHLIGHT_INLINE float shl_zh_irradiance_quadratic(const float *zh3, float z);
    shl_zh_irradiance_quadratic. n < 1: 0. Cost: O(n). */
 SHLIGHT_INLINE float shl_zh_irradiance(int n, const float *zh, float z);
 
-/* shl_sh_window: multiplies band l of a ZH (io_zh, n floats) by a window sigma_l against
+/* shl_zh_window: multiplies band l of a ZH (io_zh, n floats) by a window sigma_l against
    ringing (Sloan, "Stupid SH tricks"; [HVL] sec. 4.2): kind SHLIGHT_WINDOW_HANNING (1):
    sigma_l = (1 + cos(pi l / width)) / 2; SHLIGHT_WINDOW_LANCZOS (2): sigma_l = sinc(l / width)
    = sin(pi l / width) / (pi l / width); both 0 for l >= width. width: the window's band count,
@@ -761,7 +761,7 @@ SHLIGHT_INLINE float shl_zh_irradiance(int n, const float *zh, float z);
    (SHLIGHT_WINDOW_NONE): unchanged. For an SH vector multiply its band l by the sigma_l that
    this returns for a ZH of ones. Measured on a cap (half-angle 30 deg, n = 8; tests/test_brdf,
    bench/out/brdf.md): see docs/accuracy.md. Cost: O(n). */
-SHLIGHT_INLINE void shl_sh_window(int n, shl_window_kind kind, float width, float *io_zh);
+SHLIGHT_INLINE void shl_zh_window(int n, shl_window_kind kind, float width, float *io_zh);
 
 /* shl_zh_bands_for: the smallest band count m in [1, n] whose truncation of the lobe zh (n
    floats, n = the largest band count considered) has relative squared L2 error
@@ -8258,7 +8258,7 @@ SHLIGHT_INLINE shli_real shli_sinpi(shli_real t) {
   return x + x * (x2 * p);
 }
 
-SHLIGHT_INLINE void shl_sh_window(int n, shl_window_kind kind, float width, float *io_zh) {
+SHLIGHT_INLINE void shl_zh_window(int n, shl_window_kind kind, float width, float *io_zh) {
   shli_real w = SHLIGHT_REAL(width);
   shli_real t;
   shli_real sg;

@@ -225,8 +225,8 @@ int main(void) {
     shl_zh_cap(k, 0.5f, 1.0f, z0);
     for (i = 0; i < k; ++i)
       z1[i] = z2[i] = z0[i];
-    shl_sh_window(k, SHLIGHT_WINDOW_HANNING, 0.0f, z1);
-    shl_sh_window(k, SHLIGHT_WINDOW_LANCZOS, 0.0f, z2);
+    shl_zh_window(k, SHLIGHT_WINDOW_HANNING, 0.0f, z1);
+    shl_zh_window(k, SHLIGHT_WINDOW_LANCZOS, 0.0f, z2);
     ringing(k, z0, &o[0], &g[0]);
     ringing(k, z1, &o[1], &g[1]);
     ringing(k, z2, &o[2], &g[2]);

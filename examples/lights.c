@@ -46,7 +46,7 @@ int main(void) {
     hi = e > hi ? e : hi;
   }
   /* a white Lambertian surface reflects E / pi. Facing away from small lights 3 bands ring
-     below 0 (windowing, shl_sh_window, damps it here but does not remove it): clamp. */
+     below 0 (windowing, shl_zh_window, damps it here but does not remove it): clamp. */
   printf("1000 normals: irradiance min %.4f mean %.4f max %.4f\n", lo, sum / 1000.0, hi);
 
   /* checks: coefficient 0 of a sphere light is its solid angle 2 pi (1 - cos a) times Y_0^0;

@@ -7151,7 +7151,7 @@ shli_real shli_sinpi(shli_real t) {
   return x + x * (x2 * p);
 }
 
-void shl_sh_window(int n, shl_window_kind kind, float width, inout float io_zh[SHLIGHT_MAX_BANDS]) {
+void shl_zh_window(int n, shl_window_kind kind, float width, inout float io_zh[SHLIGHT_MAX_BANDS]) {
   shli_real w = SHLIGHT_REAL(width);
   shli_real t;
   shli_real sg;

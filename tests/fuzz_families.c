@@ -7,7 +7,7 @@
  *                    polygon_ggx(_ndf), polygon_beckmann(_taylor, _ndf), polygon_blinn_phong,
  *                    lobe_to_sg, sg_to_lobe, lobe_product
  *   family 3 brdf:   zh_phong / cosine_power / lambert / blinn_phong / ggx / beckmann, sh_dot,
- *                    sh_conv_zh, zh_dot_zh, zh_irradiance(3), sh_window, zh_bands_for,
+ *                    sh_conv_zh, zh_dot_zh, zh_irradiance(3), zh_window, zh_bands_for,
  *                    sh_rotate_z, brdf_eval
  *   family 4 hvl:    hvl_horizon(_smoothstep), hvl_geometric, hvl_emission, hvl_radiance,
  *                    hvl_contribution(_zh), hvl_radius_neighbours, hvl_radius_fov(_tan)
@@ -53,7 +53,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
   X(polygon_ggx_ndf) X(polygon_ggx) X(polygon_beckmann_taylor) X(polygon_beckmann_ndf)            \
   X(polygon_blinn_phong) X(polygon_beckmann) X(lobe_to_sg) X(sg_to_lobe) X(lobe_product)          \
   X(zh_phong) X(zh_cosine_power) X(zh_lambert) X(zh_blinn_phong) X(zh_ggx) X(zh_beckmann)         \
-  X(sh_dot) X(sh_conv_zh) X(zh_dot_zh) X(zh_irradiance3) X(zh_irradiance) X(sh_window)            \
+  X(sh_dot) X(sh_conv_zh) X(zh_dot_zh) X(zh_irradiance3) X(zh_irradiance) X(zh_window)            \
   X(zh_bands_for) X(sh_rotate_z) X(brdf_eval) X(hvl_horizon) X(hvl_horizon_smoothstep)            \
   X(hvl_geometric) X(hvl_emission) X(hvl_radiance) X(hvl_contribution) X(hvl_contribution_zh)     \
   X(hvl_radius_neighbours) X(hvl_radius_fov) X(hvl_radius_fov_tan) X(ssf_vpl_sh)                  \
@@ -419,9 +419,9 @@ static void fam_brdf(rd_t *r) {
   CALL(zh_irradiance);
   res = shl_zh_irradiance(n, zh, isfinite(z) ? z : 0.5f);
   FF_CHECK(zh_irradiance, isfinite(res), "non-finite");
-  CALL(sh_window);
-  shl_sh_window(n, kind, e, zh2);
-  FF_CHECK(sh_window, canary_ok(zh2, nb) && all_finite(zh2, nb), "canary / non-finite");
+  CALL(zh_window);
+  shl_zh_window(n, kind, e, zh2);
+  FF_CHECK(zh_window, canary_ok(zh2, nb) && all_finite(zh2, nb), "canary / non-finite");
   CALL(zh_bands_for);
   {
     int m = shl_zh_bands_for(n, zh, z);

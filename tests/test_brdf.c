@@ -603,7 +603,7 @@ static void test_window(void) {
       int ok = 1;
       for (l = 0; l < n; ++l)
         w[l] = 1.0f;
-      shl_sh_window(n, kind, 0.0f, w);
+      shl_zh_window(n, kind, 0.0f, w);
       for (l = 0; l < n; ++l) {
         ld t = (ld)l / n,
            ref = kind == 1 ? (1 + cosl(PI_L * t)) / 2 : (l ? sinl(PI_L * t) / (PI_L * t) : 1);
@@ -613,12 +613,12 @@ static void test_window(void) {
     }
   for (l = 0; l < 8; ++l)
     w[l] = 1.0f;
-  shl_sh_window(8, 2, 4.0f, w);
+  shl_zh_window(8, 2, 4.0f, w);
   TL_CHECK(w[3] > 0.0f && w[4] == 0.0f && w[7] == 0.0f, "width 4: zero from band 4");
   for (l = 0; l < 8; ++l)
     w[l] = 2.0f;
-  shl_sh_window(8, 0, 4.0f, w);
-  shl_sh_window(8, 7, 4.0f, w);
+  shl_zh_window(8, 0, 4.0f, w);
+  shl_zh_window(8, 7, 4.0f, w);
   TL_CHECK(w[7] == 2.0f, "kind none / unknown: unchanged");
   {
     /* ringing of a cap (half-angle 30 deg), n = 8 */
@@ -627,11 +627,11 @@ static void test_window(void) {
     cap_ringing(8, zh, &o0, &n0);
     for (l = 0; l < 8; ++l)
       w[l] = zh[l];
-    shl_sh_window(8, SHLIGHT_WINDOW_HANNING, 0.0f, w);
+    shl_zh_window(8, SHLIGHT_WINDOW_HANNING, 0.0f, w);
     cap_ringing(8, w, &o1, &n1);
     for (l = 0; l < 8; ++l)
       w[l] = zh[l];
-    shl_sh_window(8, SHLIGHT_WINDOW_LANCZOS, 0.0f, w);
+    shl_zh_window(8, SHLIGHT_WINDOW_LANCZOS, 0.0f, w);
     cap_ringing(8, w, &o2, &n2);
     printf("  cap 30 deg, n = 8: overshoot / most negative: none %.4f / %.4f, Hanning %.4f / %.4f, "
            "Lanczos %.4f / %.4f\n",

@@ -48,7 +48,7 @@ static void c_item(const float *p, float *o) {
   shl_zh_beckmann(NB, p[1], o + 40);
   for (k = 0; k < NB; ++k)
     tmp[k] = p[I_ZH + k];
-  shl_sh_window(NB, 1 + (int)(p[5] > 0.5f), 0.0f, tmp);
+  shl_zh_window(NB, 1 + (int)(p[5] > 0.5f), 0.0f, tmp);
   for (k = 0; k < NB; ++k)
     o[48 + k] = tmp[k];
   o[O_S + 0] = shl_sh_dot(NB, p + I_SH, p + I_SH2);
@@ -104,7 +104,7 @@ static void test_glsl_brdf(void) {
       "  shl_zh_ggx(8, al, g); for (k = 0; k < 8; ++k) out_float(32 + k, g[k]);\n"
       "  shl_zh_beckmann(8, al, z); for (k = 0; k < 8; ++k) out_float(40 + k, z[k]);\n"
       "  for (k = 0; k < 8; ++k) z[k] = zh[k];\n"
-      "  shl_sh_window(8, in_float(5) > 0.5 ? 2 : 1, 0.0, z);\n"
+      "  shl_zh_window(8, in_float(5) > 0.5 ? 2 : 1, 0.0, z);\n"
       "  for (k = 0; k < 8; ++k) out_float(48 + k, z[k]);\n"
       "  out_float(56, shl_sh_dot(8, sh, sh2));\n"
       "  out_float(57, shl_sh_conv_zh(8, sh, zh, v3(6)));\n"

@@ -107,33 +107,33 @@ static void test_sg_lobe_inf_argument(void) {
   TL_CHECK(fabs((double)shl_lobe_to_sg(1e7f) - (1e7 + 0.34657359)) <= 2.0, "lambda(1e7)");
 }
 
-/* ---- shl_sh_window: Lanczos width inf --------------------------------------------------- */
-static void test_sh_window_lanczos_width_inf(void) {
+/* ---- shl_zh_window: Lanczos width inf --------------------------------------------------- */
+static void test_zh_window_lanczos_width_inf(void) {
   float zh[16];
   int i, bad = 0;
   for (i = 0; i < 16; ++i)
     zh[i] = 1.0f;
-  shl_sh_window(16, SHLIGHT_WINDOW_LANCZOS, INFINITY, zh);
+  shl_zh_window(16, SHLIGHT_WINDOW_LANCZOS, INFINITY, zh);
   for (i = 0; i < 16; ++i)
     if (zh[i] != 1.0f) bad++;
   TL_CHECK(bad == 0, "Lanczos width inf: %d bands not 1 (zh[1] = %g)", bad, (double)zh[1]);
   for (i = 0; i < 16; ++i)
     zh[i] = 1.0f;
-  shl_sh_window(16, SHLIGHT_WINDOW_HANNING, INFINITY, zh);
+  shl_zh_window(16, SHLIGHT_WINDOW_HANNING, INFINITY, zh);
   for (i = 0; i < 16; ++i)
     if (zh[i] != 1.0f) bad++;
   TL_CHECK(bad == 0, "Hanning width inf: %d bands not 1", bad);
   /* huge finite widths: sinc(l / w) = 1 - (pi l / w)^2 / 6: 1 in float */
   for (i = 0; i < 16; ++i)
     zh[i] = 1.0f;
-  shl_sh_window(16, SHLIGHT_WINDOW_LANCZOS, FLT_MAX, zh);
+  shl_zh_window(16, SHLIGHT_WINDOW_LANCZOS, FLT_MAX, zh);
   for (i = 0; i < 16; ++i)
     if (zh[i] != 1.0f) bad++;
   TL_CHECK(bad == 0, "Lanczos width FLT_MAX: %d bands not 1", bad);
   /* the ordinary case against sin(pi t) / (pi t) in long double */
   for (i = 0; i < 16; ++i)
     zh[i] = 1.0f;
-  shl_sh_window(16, SHLIGHT_WINDOW_LANCZOS, 17.0f, zh);
+  shl_zh_window(16, SHLIGHT_WINDOW_LANCZOS, 17.0f, zh);
   for (i = 1; i < 16; ++i) {
     long double t = i / 17.0L,
                 want = sinl(3.14159265358979323846L * t) / (3.14159265358979323846L * t);
@@ -470,7 +470,7 @@ int main(void) {
   TL_RUN(test_lobe_product_mu_closed_form);
   TL_RUN(test_lobe_product_degenerate_axes);
   TL_RUN(test_sg_lobe_inf_argument);
-  TL_RUN(test_sh_window_lanczos_width_inf);
+  TL_RUN(test_zh_window_lanczos_width_inf);
   TL_RUN(test_triangle_solid_angle_1e15_1e21);
   TL_RUN(test_triangle_light_1e15_1e21);
   TL_RUN(test_zh_rotate_zh_1e38);
