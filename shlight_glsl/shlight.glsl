@@ -7095,6 +7095,31 @@ float shl_zh_irradiance_quadratic(float zh3[3], float z) {
                        0.8862269254527579 * SHLIGHT_REAL(zh3[0]) - 0.2477079561003757 * l2);
 }
 
+#if SHLIGHT_MAX_BANDS >= 3
+void shl_sh_irradiance_matrix(float sh[SHLIGHT_MAX_COEFFS], out float out_m[16]) {
+  /* c1 = sqrt(15 pi) / 16, c2 = sqrt(3 pi) / 6; 3 sqrt(5 pi) / 16, sqrt(pi) / 2, sqrt(5 pi) / 16 */
+  shli_real c1 = 0.4290427654048917;
+  shli_real c2 = 0.5116633539732443;
+  out_m[0] = SHLIGHT_FLOAT(c1 * SHLIGHT_REAL(sh[8]));
+  out_m[1] = SHLIGHT_FLOAT(c1 * SHLIGHT_REAL(sh[4]));
+  out_m[2] = SHLIGHT_FLOAT(-c1 * SHLIGHT_REAL(sh[7]));
+  out_m[3] = SHLIGHT_FLOAT(-c2 * SHLIGHT_REAL(sh[3]));
+  out_m[5] = -out_m[0];
+  out_m[6] = SHLIGHT_FLOAT(-c1 * SHLIGHT_REAL(sh[5]));
+  out_m[7] = SHLIGHT_FLOAT(-c2 * SHLIGHT_REAL(sh[1]));
+  out_m[10] = SHLIGHT_FLOAT(0.7431238683011271 * SHLIGHT_REAL(sh[6]));
+  out_m[11] = SHLIGHT_FLOAT(c2 * SHLIGHT_REAL(sh[2]));
+  out_m[15] = SHLIGHT_FLOAT(0.8862269254527579 * SHLIGHT_REAL(sh[0]) -
+                            0.2477079561003757 * SHLIGHT_REAL(sh[6]));
+  out_m[4] = out_m[1];
+  out_m[8] = out_m[2];
+  out_m[9] = out_m[6];
+  out_m[12] = out_m[3];
+  out_m[13] = out_m[7];
+  out_m[14] = out_m[11];
+}
+#endif
+
 float shl_zh_irradiance(int n, float zh[SHLIGHT_MAX_BANDS], float z) {
   shli_real c;
   shli_real s;

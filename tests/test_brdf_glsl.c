@@ -29,7 +29,8 @@
 /* outputs: phong, cospow, lambert, blinn, ggx, beckmann, windowed zh (7 x 8), then scalars */
 #define O_S 56
 #define NS 16
-#define OUTS (O_S + NS)
+#define O_M (O_S + NS) /* shl_sh_irradiance_matrix: 16 floats */
+#define OUTS (O_M + 16)
 
 static unsigned int st = 424242u;
 static float rndf(void) {
@@ -70,6 +71,7 @@ static void c_item(const float *p, float *o) {
                                           p + I_DN, p[I_P + 4]);
   o[O_S + 14] = shl_hvl_radius_fov(p[4], p[5], 64);
   o[O_S + 15] = shl_hvl_radius_fov_tan(p[4], p[5], 64);
+  shl_sh_irradiance_matrix(p + I_SH, o + O_M);
 }
 
 static void test_glsl_brdf(void) {
@@ -124,13 +126,16 @@ static void test_glsl_brdf(void) {
       "in_float(31)));\n"
       "  out_float(70, shl_hvl_radius_fov(in_float(4), in_float(5), 64));\n"
       "  out_float(71, shl_hvl_radius_fov_tan(in_float(4), in_float(5), 64));\n"
+      "  float m[16];\n"
+      "  shl_sh_irradiance_matrix(sh, m);\n"
+      "  for (k = 0; k < 16; ++k) out_float(72 + k, m[k]);\n"
       "}\n";
   static const char *names[] = {"phong", "cos^e", "lambert", "blinn", "ggx", "beckmann", "window"};
   static const char *snames[NS] = {"sh_dot",       "sh_conv_zh", "zh_dot_zh", "irradiance3",
                                    "irradiance",   "bands_for",  "horizon",   "G exact",
                                    "G smoothstep", "emission",   "radiance",  "contrib",
                                    "contrib_zh",   "r1",         "r2",        "r2 tan"};
-  double worst[7 + NS];
+  double worst[7 + NS + 1];
   int i, k, bad = 0;
   memset(worst, 0, sizeof worst);
   for (i = 0; i < NI; ++i) {
@@ -167,7 +172,7 @@ static void test_glsl_brdf(void) {
   for (i = 0; i < NI; ++i) {
     for (k = 0; k < OUTS; ++k) {
       double r = (double)ref[i * OUTS + k], g = (double)out[i * OUTS + k], scale = 1.0, e;
-      int grp = k < O_S ? k / 8 : 7 + (k - O_S);
+      int grp = k < O_S ? k / 8 : k < O_M ? 7 + (k - O_S) : 7 + NS;
       if (k < O_S)
         scale = 1.0; /* K_l-scale lobes, window of |zh| <= 1 */
       else if (k - O_S <= 4 || (k - O_S >= 9 && k - O_S <= 12))
@@ -187,7 +192,7 @@ static void test_glsl_brdf(void) {
     printf(" %s %.2g", names[k], worst[k]);
   for (k = 0; k < NS; ++k)
     printf(", %s %.2g", snames[k], worst[7 + k]);
-  printf("\n");
+  printf(", irradiance matrix %.2g\n", worst[7 + NS]);
   TL_CHECK(bad == 0, "%d outputs differ beyond 2e-5 of their scale", bad);
 }
 

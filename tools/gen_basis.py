@@ -946,6 +946,9 @@ def glsl_param(prm, fname):
     m = re.match(r'^const (float|shli_real|int) (\w+)\[(\d+)\]$', prm)
     if m:
         return '%s %s[%s]' % m.groups()
+    m = re.match(r'^float ((out|io)_\w+)\[(\d+)\]$', prm)
+    if m:
+        return '%s float %s[%s]' % ('out' if m.group(2) == 'out' else 'inout', m.group(1), m.group(3))
     m = re.match(r'^(const )?(float|shli_real|int) \*(\w+)$', prm)
     if m:
         const, typ, name = m.groups()
@@ -1031,6 +1034,8 @@ def guard(kind, name):
         return '#if SHLIGHT_MAX_BANDS > SHLIGHT_UNROLLED_BANDS'
     if name.startswith('shli_fast_'):
         return '#if SHLIGHT_EDGE_FAST_ON'
+    if name == 'shl_sh_irradiance_matrix':  # reads bands 0..2 of sh
+        return '#if SHLIGHT_MAX_BANDS >= 3'
     m = re.match(r'shli_sh_(?:core|grad|poly)_(\d+)$', name)
     if m:
         return '#if SHLIGHT_MAX_BANDS >= %s' % m.group(1)
