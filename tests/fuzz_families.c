@@ -57,7 +57,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
   X(zh_bands_for) X(sh_rotate_z) X(brdf_eval) X(hvl_horizon) X(hvl_horizon_smoothstep)            \
   X(hvl_geometric) X(hvl_emission) X(hvl_radiance) X(hvl_contribution) X(hvl_contribution_zh)     \
   X(hvl_radius_neighbours) X(hvl_radius_fov) X(hvl_radius_fov_tan) X(ssf_vpl_sh)                  \
-  X(ssf_vpl_irradiance) X(ssf_interleave) X(ssf_weight) X(ssf_irradiance)
+  X(ssf_vpl_irradiance) X(ssf_interleave) X(ssf_weight) X(ssf_irradiance) X(sh_irradiance_matrix)
 /* clang-format on */
 #define FF_ENUM(name) FF_##name,
 enum { FF_LIST(FF_ENUM) FF_COUNT };
@@ -419,6 +419,13 @@ static void fam_brdf(rd_t *r) {
   CALL(zh_irradiance);
   res = shl_zh_irradiance(n, zh, isfinite(z) ? z : 0.5f);
   FF_CHECK(zh_irradiance, isfinite(res), "non-finite");
+  if (nn >= 9) { /* it reads bands 0..2 */
+    float *mm = obuf(16);
+    CALL(sh_irradiance_matrix);
+    shl_sh_irradiance_matrix(sh, mm);
+    FF_CHECK(sh_irradiance_matrix, canary_ok(mm, 16) && all_finite(mm, 16), "canary / non-finite");
+    free(mm);
+  }
   CALL(zh_window);
   shl_zh_window(n, kind, e, zh2);
   FF_CHECK(zh_window, canary_ok(zh2, nb) && all_finite(zh2, nb), "canary / non-finite");
