@@ -2348,7 +2348,7 @@ SHLIGHT_CPU_INLINE float shli_sh_dot_grad_stream(int n, const float *sh, const f
   const shli_real *q = SHLI_SH_RSQ;
   int m, l, b, j, u;
   shli_sh_grad_frame(d, g);
-  x = g[0], y = g[1], z = g[2], sg = (shli_real)SHLIGHT_SIGN1(z);
+  x = (shli_real)g[0], y = (shli_real)g[1], z = (shli_real)g[2], sg = (shli_real)SHLIGHT_SIGN1(z);
   t = (x * x + y * y) / (1.0 + SHLIGHT_ABSR(z));
   for (m = 0; m < n; ++m) {
     if (m > 0) {
