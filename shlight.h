@@ -582,12 +582,11 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    0: nv < 3, NaN or infinite input, zero normal or view, view at or below the horizon, NaN
    alpha, a light entirely below the horizon (exactly 0: clipped first), a polygon through the
    shading point. Result >= 0. Accuracy against long double cubature on the LTC comparison's
-   sampler (bench/bench_ggx.c): median relative error 5e-6 to 6e-5 at roughness 0.05 to 1 (LTC:
-   7e-5 to 0.11), max error / albedo <= 4.0e-3 there, 1e-2 at other roughness (measured 8.8e-3;
-   grazing views, lights straddling the horizon); weakest in the last degrees before grazing (a
-   light filling the hemisphere, alpha 0.04: 0.17 % at view 85 deg, 13 % at 88). Cost: 12.5k x86
-   instructions per quad on that sampler's mean (10.5k to 17.0k by roughness), up to ~0.4M at
-   the split budget. */
+   sampler (bench/bench_ggx.c): median relative error 5e-6 to 4e-5 at roughness 0.05 to 1 (LTC:
+   7e-5 to 0.11), max error / albedo <= 3.3e-3 there, 1e-2 at other roughness (measured 6.6e-3);
+   wide lights at views 85-88 deg mostly <= 1e-2 (worst 3.9e-2), 89-89.9 deg 1e-2 to 0.5
+   (docs/area-lights.md). Cost: 12.5k x86 instructions per quad on that sampler's mean (10.4k
+   to 17.1k by roughness), up to ~2.9M at the split budget. */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
 
@@ -1310,10 +1309,9 @@ typedef double shli_real;
 #define SHLIGHT_LANES 8 /* edges per block of the FAST edge loop (GLSL: 1) */
 #define SHLIGHT_FAST_PAD (SHLIGHT_CLIP_MAX + SHLIGHT_LANES)
 /* shl_polygon_ggx's and shl_polygon_beckmann's adaptive remainder (internal): a piece is split
-   1 -> 4 where its error estimate exceeds SHLIGHT_GGX_TOL G1(view), at most SHLIGHT_GGX_SPLITS
-   splits per call and SHLIGHT_GGX_DEPTH levels below a fan triangle; where the lobe is near the
-   horizon (n.l* < SHLIGHT_GGX_HOR alpha, alpha < 0.25) also where its radius in half-vector space
-   exceeds KAP max(alpha, 0.02) + GRADE (its distance to h*), up to SHLIGHT_GGX_GSPLITS / GDEPTH */
+   1 -> 4 where its error estimate exceeds SHLIGHT_GGX_TOL G1(view) (at most SHLIGHT_GGX_SPLITS
+   splits, SHLIGHT_GGX_DEPTH levels below a fan triangle); the lobe near the horizon (n.l* <
+   SHLIGHT_GGX_HOR alpha, alpha < 0.25): graded about h* (KAP, GRADE), up to GSPLITS / GDEPTH */
 #define SHLIGHT_GGX_TOL 1.0e-3
 #define SHLIGHT_GGX_SPLITS 128
 #define SHLIGHT_GGX_DEPTH 8
@@ -6838,7 +6836,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
         tr[5] = tr[2] + tr[0];
         ts[5] = ts[2] + ts[0];
         tw[5] = tw[2] + tw[0];
-        for (it2 = 3; it2 < 6; ++it2) { /* unit midpoints: halves of the arcs */
+        for (it2 = 3; it2 < 6; ++it2) { /* unit midpoints */
           q = SHLIGHT_SQRTR(tr[it2] * tr[it2] + ts[it2] * ts[it2] + tw[it2] * tw[it2]);
           tr[it2] = tr[it2] / q;
           ts[it2] = ts[it2] / q;
@@ -6880,9 +6878,8 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
           tw[2] = tw[5];
         }
       }
-      /* graded about h*: split where the piece's radius in half-vector space (its radius over
-         |l + v|) exceeds SHLIGHT_GGX_KAP max(alpha, 0.02) + SHLIGHT_GGX_GRADE (its centre's
-         distance to h*) */
+      /* graded about h*: the piece's radius over |l + v| (in h) against KAP max(alpha, 0.02) +
+         GRADE (distance to h*) */
       npk = 0;
       if (pc > 0.0) {
         ex = tr[0] + tr[1] + tr[2];
@@ -6913,7 +6910,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
         spl = 1;
       } else if (dep < dmax && npk != 0) {
         spl = 2;
-        if (nsp >= smax) { /* the budget spent: the piece's remainder is left out */
+        if (nsp >= smax) { /* budget spent: left out */
           spl = 0;
           rq[0] = 0.0;
         }

@@ -2106,7 +2106,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
         tr[5] = tr[2] + tr[0];
         ts[5] = ts[2] + ts[0];
         tw[5] = tw[2] + tw[0];
-        for (it2 = 3; it2 < 6; ++it2) { /* unit midpoints: halves of the arcs */
+        for (it2 = 3; it2 < 6; ++it2) { /* unit midpoints */
           q = SHLIGHT_SQRTR(tr[it2] * tr[it2] + ts[it2] * ts[it2] + tw[it2] * tw[it2]);
           tr[it2] = tr[it2] / q;
           ts[it2] = ts[it2] / q;
@@ -2148,9 +2148,8 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
           tw[2] = tw[5];
         }
       }
-      /* graded about h*: split where the piece's radius in half-vector space (its radius over
-         |l + v|) exceeds SHLIGHT_GGX_KAP max(alpha, 0.02) + SHLIGHT_GGX_GRADE (its centre's
-         distance to h*) */
+      /* graded about h*: the piece's radius over |l + v| (in h) against KAP max(alpha, 0.02) +
+         GRADE (distance to h*) */
       npk = 0;
       if (pc > 0.0) {
         ex = tr[0] + tr[1] + tr[2];
@@ -2181,7 +2180,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
         spl = 1;
       } else if (dep < dmax && npk != 0) {
         spl = 2;
-        if (nsp >= smax) { /* the budget spent: the piece's remainder is left out */
+        if (nsp >= smax) { /* budget spent: left out */
           spl = 0;
           rq[0] = 0.0;
         }
