@@ -584,7 +584,7 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    shading point. Result >= 0. Accuracy against long double cubature on the LTC comparison's
    sampler (bench/bench_ggx.c): median relative error 5e-6 to 4e-5 at roughness 0.05 to 1 (LTC:
    7e-5 to 0.11), max error / albedo <= 3.3e-3 there, 1e-2 at other roughness (measured 6.6e-3);
-   wide lights at views 85-88 deg mostly <= 1e-2 (worst 3.9e-2), 89-89.9 deg 1e-2 to 0.5
+   wide lights at views 85-88 deg mostly <= 1e-2 (worst 3.9e-2), up to 0.5 at 89-89.9 deg
    (docs/area-lights.md). Cost: 12.5k x86 instructions per quad on that sampler's mean (10.4k
    to 17.1k by roughness), up to ~2.9M at the split budget. */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
