@@ -584,9 +584,9 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    shading point. Result >= 0. Accuracy against long double cubature on the LTC comparison's
    sampler (bench/bench_ggx.c): median relative error 5e-6 to 4e-5 at roughness 0.05 to 1 (LTC:
    7e-5 to 0.11), max error / albedo <= 3.3e-3 there, 1e-2 at other roughness (measured 6.6e-3);
-   wide lights at views 85-88 deg mostly <= 1e-2 (worst 3.9e-2), up to 0.5 at 89-89.9 deg
-   (docs/area-lights.md). Cost: 12.5k x86 instructions per quad on that sampler's mean (10.4k
-   to 17.1k by roughness), up to ~2.9M at the split budget. */
+   wide lights at views 85-89.9 deg mostly <= 1e-2 (3.9e-2 at 87 deg, 0.63 at 89.9 for a plane
+   through the horizon; docs/area-lights.md). Cost: 12.5k x86 instructions per quad on that
+   sampler's mean (10.4k to 17.1k by roughness), ~2M at the split budget, ~11M past 88.85 deg. */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
 
@@ -1311,7 +1311,7 @@ typedef double shli_real;
 /* shl_polygon_ggx's and shl_polygon_beckmann's adaptive remainder (internal): a piece is split
    1 -> 4 where its error estimate exceeds SHLIGHT_GGX_TOL G1(view) (at most SHLIGHT_GGX_SPLITS
    splits, SHLIGHT_GGX_DEPTH levels below a fan triangle); the lobe near the horizon (n.l* <
-   SHLIGHT_GGX_HOR alpha, alpha < 0.25): graded about h* (KAP, GRADE), up to GSPLITS / GDEPTH */
+   SHLIGHT_GGX_HOR alpha): graded about h*, up to GSPLITS (XSPLITS at n.v < 0.02) / GDEPTH */
 #define SHLIGHT_GGX_TOL 1.0e-3
 #define SHLIGHT_GGX_SPLITS 128
 #define SHLIGHT_GGX_DEPTH 8
@@ -1319,6 +1319,7 @@ typedef double shli_real;
 #define SHLIGHT_GGX_KAP 1.25
 #define SHLIGHT_GGX_GRADE 0.8
 #define SHLIGHT_GGX_GSPLITS 512
+#define SHLIGHT_GGX_XSPLITS 2048
 #define SHLIGHT_GGX_GDEPTH 16
 #define SHLIGHT_HALF_K \
   8 /* sub-edges per light edge in half-vector space (shl_polygon_blinn_phong) */
@@ -6682,6 +6683,21 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
     gy = gy + w * ey;
     gz = gz + w * ez;
   }
+  /* graded remainder (lobe near the horizon); n.v < 0.02: every alpha, g = 0 */
+  d = 2.0 * (hx * vx + hy * vy + hz * vz);
+  lsx = d * hx - vx;
+  lsy = d * hy - vy;
+  lsz = d * hz - vz;
+  pc = -2.0;
+  if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && (al < 0.25 || nv2 < 0.02) &&
+      ndf == 0) {
+    pc = SHLIGHT_GGX_KAP * SHLIGHT_MAXR(al, 0.02);
+    if (nv2 < 0.02) {
+      gx = 0.0;
+      gy = 0.0;
+      gz = 0.0;
+    }
+  }
   /* A and M1.g along the edges */
   if (ndf == 0) {
     i1 = shli_ggx_j(c, a2);
@@ -6779,21 +6795,15 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   }
   rq[0] = 0.0;
   rq[1] = 0.0;
-  d = 2.0 * (hx * vx + hy * vy + hz * vz);
-  lsx = d * hx - vx;
-  lsy = d * hy - vy;
-  lsz = d * hz - vz;
-  /* graded refinement about h* where the lobe is near the horizon */
-  pc = -2.0;
-  if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && al < 0.25 && ndf == 0) {
-    pc = SHLIGHT_GGX_KAP * SHLIGHT_MAXR(al, 0.02);
-  }
   nsp = 0;
   dmax = SHLIGHT_GGX_DEPTH;
   smax = SHLIGHT_GGX_SPLITS;
   if (pc > 0.0) {
     dmax = SHLIGHT_GGX_GDEPTH;
     smax = SHLIGHT_GGX_GSPLITS;
+    if (nv2 < 0.02) {
+      smax = SHLIGHT_GGX_XSPLITS;
+    }
   }
   if (al < 0.05 && ndf == 0 && lsx * nx + lsy * ny + lsz * nz > 2.0 * SHLIGHT_GGX_HOR * al) {
     nc = 0; /* a narrow lobe well above the horizon: no remainder (second order in alpha) */
@@ -6815,7 +6825,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
       dmin = 1;
     }
     dep = 0;
-    for (it = 0; it < 5 + 4 * SHLIGHT_GGX_GSPLITS; ++it) {
+    for (it = 0; it < 5 + 4 * SHLIGHT_GGX_XSPLITS; ++it) {
       /* the piece's vertices (tr, ts, tw)[0..2] from (centroid, a, b) down its path */
       tr[0] = sx;
       ts[0] = sy;
@@ -6878,8 +6888,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
           tw[2] = tw[5];
         }
       }
-      /* graded about h*: the piece's radius over |l + v| (in h) against KAP max(alpha, 0.02) +
-         GRADE (distance to h*) */
+      /* graded: radius over |l + v| against KAP max(alpha, 0.02) + GRADE |h - h*| */
       npk = 0;
       if (pc > 0.0) {
         ex = tr[0] + tr[1] + tr[2];
@@ -6944,7 +6953,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
     }
   }
   q = ori * (aa * ws - am[1] * a2 * 0.31830988618379067 - (gx * hx + gy * hy + gz * hz) * aa + res);
-  return SHLIGHT_FLOAT(SHLIGHT_MAXR(q, 0.0));
+  return SHLIGHT_FLOAT(SHLIGHT_MINR(SHLIGHT_MAXR(q, 0.0), 1.0));
 }
 
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],

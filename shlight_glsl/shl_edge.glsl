@@ -1952,6 +1952,21 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
     gy = gy + w * ey;
     gz = gz + w * ez;
   }
+  /* graded remainder (lobe near the horizon); n.v < 0.02: every alpha, g = 0 */
+  d = 2.0 * (hx * vx + hy * vy + hz * vz);
+  lsx = d * hx - vx;
+  lsy = d * hy - vy;
+  lsz = d * hz - vz;
+  pc = -2.0;
+  if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && (al < 0.25 || nv2 < 0.02) &&
+      ndf == 0) {
+    pc = SHLIGHT_GGX_KAP * SHLIGHT_MAXR(al, 0.02);
+    if (nv2 < 0.02) {
+      gx = 0.0;
+      gy = 0.0;
+      gz = 0.0;
+    }
+  }
   /* A and M1.g along the edges */
   if (ndf == 0) {
     i1 = shli_ggx_j(c, a2);
@@ -2049,21 +2064,15 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   }
   rq[0] = 0.0;
   rq[1] = 0.0;
-  d = 2.0 * (hx * vx + hy * vy + hz * vz);
-  lsx = d * hx - vx;
-  lsy = d * hy - vy;
-  lsz = d * hz - vz;
-  /* graded refinement about h* where the lobe is near the horizon */
-  pc = -2.0;
-  if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && al < 0.25 && ndf == 0) {
-    pc = SHLIGHT_GGX_KAP * SHLIGHT_MAXR(al, 0.02);
-  }
   nsp = 0;
   dmax = SHLIGHT_GGX_DEPTH;
   smax = SHLIGHT_GGX_SPLITS;
   if (pc > 0.0) {
     dmax = SHLIGHT_GGX_GDEPTH;
     smax = SHLIGHT_GGX_GSPLITS;
+    if (nv2 < 0.02) {
+      smax = SHLIGHT_GGX_XSPLITS;
+    }
   }
   if (al < 0.05 && ndf == 0 && lsx * nx + lsy * ny + lsz * nz > 2.0 * SHLIGHT_GGX_HOR * al) {
     nc = 0; /* a narrow lobe well above the horizon: no remainder (second order in alpha) */
@@ -2085,7 +2094,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
       dmin = 1;
     }
     dep = 0;
-    for (it = 0; it < 5 + 4 * SHLIGHT_GGX_GSPLITS; ++it) {
+    for (it = 0; it < 5 + 4 * SHLIGHT_GGX_XSPLITS; ++it) {
       /* the piece's vertices (tr, ts, tw)[0..2] from (centroid, a, b) down its path */
       tr[0] = sx;
       ts[0] = sy;
@@ -2148,8 +2157,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
           tw[2] = tw[5];
         }
       }
-      /* graded about h*: the piece's radius over |l + v| (in h) against KAP max(alpha, 0.02) +
-         GRADE (distance to h*) */
+      /* graded: radius over |l + v| against KAP max(alpha, 0.02) + GRADE |h - h*| */
       npk = 0;
       if (pc > 0.0) {
         ex = tr[0] + tr[1] + tr[2];
@@ -2214,7 +2222,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
     }
   }
   q = ori * (aa * ws - am[1] * a2 * 0.31830988618379067 - (gx * hx + gy * hy + gz * hz) * aa + res);
-  return SHLIGHT_FLOAT(SHLIGHT_MAXR(q, 0.0));
+  return SHLIGHT_FLOAT(SHLIGHT_MINR(SHLIGHT_MAXR(q, 0.0), 1.0));
 }
 
 float shl_polygon_ggx(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha) {
