@@ -550,12 +550,11 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    0: nv < 3, NaN or infinite input, zero normal or view, view at or below the horizon, NaN
    alpha, a light entirely below the horizon (exactly 0: clipped first), a polygon through the
    shading point. Result >= 0. Accuracy against long double cubature on the LTC comparison's
-   sampler (bench/bench_ggx.c): median relative error 5e-6 to 6e-5 at roughness 0.05 to 1 (LTC:
-   7e-5 to 0.11), max error / albedo <= 4.0e-3 there, 1e-2 at other roughness (measured 8.8e-3;
-   grazing views, lights straddling the horizon); weakest in the last degrees before grazing (a
-   light filling the hemisphere, alpha 0.04: 0.17 % at view 85 deg, 13 % at 88). Cost: 12.5k x86
-   instructions per quad on that sampler's mean (10.5k to 17.0k by roughness), up to ~0.4M at
-   the split budget. */
+   sampler (bench/bench_ggx.c): median relative error 5e-6 to 4e-5 at roughness 0.05 to 1 (LTC:
+   7e-5 to 0.11), max error / albedo <= 3.3e-3 there, 1e-2 at other roughness (measured 6.6e-3);
+   wide lights at views 85-89.9 deg mostly <= 1e-2 (3.9e-2 at 87 deg, 0.63 at 89.9 for a plane
+   through the horizon; docs/area-lights.md). Cost: 12.5k x86 instructions per quad on that
+   sampler's mean (10.4k to 17.1k by roughness), ~2M at the split budget, ~11M past 88.85 deg. */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
 
@@ -1277,15 +1276,18 @@ typedef double shli_real;
 #define SHLIGHT_LANES 8 /* edges per block of the FAST edge loop (GLSL: 1) */
 #define SHLIGHT_FAST_PAD (SHLIGHT_CLIP_MAX + SHLIGHT_LANES)
 /* shl_polygon_ggx's and shl_polygon_beckmann's adaptive remainder (internal): a piece is split
-   1 -> 4 where its error estimate exceeds SHLIGHT_GGX_TOL G1(view), or where the lobe is near
-   the horizon (n.l* < SHLIGHT_GGX_HOR alpha, alpha < 0.25) and the piece lies near l* and is
-   wider than SHLIGHT_GGX_KAP times the lobe's narrow width 2 alpha (h*.v); at most
-   SHLIGHT_GGX_SPLITS splits per call, SHLIGHT_GGX_DEPTH levels below a fan triangle */
+   1 -> 4 where its error estimate exceeds SHLIGHT_GGX_TOL G1(view) (at most SHLIGHT_GGX_SPLITS
+   splits, SHLIGHT_GGX_DEPTH levels below a fan triangle); the lobe near the horizon (n.l* <
+   SHLIGHT_GGX_HOR alpha): graded about h*, up to GSPLITS (XSPLITS at n.v < 0.02) / GDEPTH */
 #define SHLIGHT_GGX_TOL 1.0e-3
 #define SHLIGHT_GGX_SPLITS 128
 #define SHLIGHT_GGX_DEPTH 8
 #define SHLIGHT_GGX_HOR 4.0
-#define SHLIGHT_GGX_KAP 4.5
+#define SHLIGHT_GGX_KAP 1.25
+#define SHLIGHT_GGX_GRADE 0.8
+#define SHLIGHT_GGX_GSPLITS 512
+#define SHLIGHT_GGX_XSPLITS 2048
+#define SHLIGHT_GGX_GDEPTH 16
 #define SHLIGHT_HALF_K \
   8 /* sub-edges per light edge in half-vector space (shl_polygon_blinn_phong) */
 
@@ -6282,7 +6284,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   shli_real pz[SHLIGHT_CLIP_MAX];
   shli_real am[2];
   shli_real rq[2];
-  int dg[SHLIGHT_GGX_DEPTH];
+  int dg[SHLIGHT_GGX_GDEPTH];
   shli_real tr[7];
   shli_real ts[7];
   shli_real tw[7];
@@ -6367,7 +6369,10 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   int nsp;
   int dmin;
   int dep;
+  int dmax;
+  int smax;
   int it;
+  int it2;
   int inside = 1;
   int nk;
   int nc;
@@ -6525,6 +6530,21 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
     gy = gy + w * ey;
     gz = gz + w * ez;
   }
+  /* graded remainder (lobe near the horizon); n.v < 0.02: every alpha, g = 0 */
+  d = 2.0 * (hx * vx + hy * vy + hz * vz);
+  lsx = d * hx - vx;
+  lsy = d * hy - vy;
+  lsz = d * hz - vz;
+  pc = -2.0;
+  if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && (al < 0.25 || nv2 < 0.02) &&
+      ndf == 0) {
+    pc = SHLIGHT_GGX_KAP * SHLIGHT_MAXR(al, 0.02);
+    if (nv2 < 0.02) {
+      gx = 0.0;
+      gy = 0.0;
+      gz = 0.0;
+    }
+  }
   /* A and M1.g along the edges */
   if (ndf == 0) {
     i1 = shli_ggx_j(c, a2);
@@ -6622,17 +6642,16 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   }
   rq[0] = 0.0;
   rq[1] = 0.0;
-  d = 2.0 * (hx * vx + hy * vy + hz * vz);
-  lsx = d * hx - vx;
-  lsy = d * hy - vy;
-  lsz = d * hz - vz;
-  /* graded refinement about l* where the lobe is near the horizon */
-  pc = -2.0;
-  if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && al < 0.25 && ndf == 0) {
-    q = SHLIGHT_GGX_KAP * al * d;
-    pc = 1.0 - 0.5 * q * q;
-  }
   nsp = 0;
+  dmax = SHLIGHT_GGX_DEPTH;
+  smax = SHLIGHT_GGX_SPLITS;
+  if (pc > 0.0) {
+    dmax = SHLIGHT_GGX_GDEPTH;
+    smax = SHLIGHT_GGX_GSPLITS;
+    if (nv2 < 0.02) {
+      smax = SHLIGHT_GGX_XSPLITS;
+    }
+  }
   if (al < 0.05 && ndf == 0 && lsx * nx + lsy * ny + lsz * nz > 2.0 * SHLIGHT_GGX_HOR * al) {
     nc = 0; /* a narrow lobe well above the horizon: no remainder (second order in alpha) */
   }
@@ -6653,7 +6672,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
       dmin = 1;
     }
     dep = 0;
-    for (it = 0; it < 5 + 4 * SHLIGHT_GGX_SPLITS; ++it) {
+    for (it = 0; it < 5 + 4 * SHLIGHT_GGX_XSPLITS; ++it) {
       /* the piece's vertices (tr, ts, tw)[0..2] from (centroid, a, b) down its path */
       tr[0] = sx;
       ts[0] = sy;
@@ -6674,6 +6693,12 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
         tr[5] = tr[2] + tr[0];
         ts[5] = ts[2] + ts[0];
         tw[5] = tw[2] + tw[0];
+        for (it2 = 3; it2 < 6; ++it2) { /* unit midpoints */
+          q = SHLIGHT_SQRTR(tr[it2] * tr[it2] + ts[it2] * ts[it2] + tw[it2] * tw[it2]);
+          tr[it2] = tr[it2] / q;
+          ts[it2] = ts[it2] / q;
+          tw[it2] = tw[it2] / q;
+        }
         if (dg[k] != 0) {
           tr[0] = tr[3];
           ts[0] = ts[3];
@@ -6710,9 +6735,9 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
           tw[2] = tw[5];
         }
       }
-      /* near l*: the piece's centre within twice its radius (cosine d) of l*, d above the stop */
+      /* graded: radius over |l + v| against KAP max(alpha, 0.02) + GRADE |h - h*| */
       npk = 0;
-      if (pc > -1.0) {
+      if (pc > 0.0) {
         ex = tr[0] + tr[1] + tr[2];
         ey = ts[0] + ts[1] + ts[2];
         ez = tw[0] + tw[1] + tw[2];
@@ -6722,11 +6747,15 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
         ez = ez / q;
         d = 1.0;
         for (k = 0; k < 3; ++k) {
-          q = (ex * tr[k] + ey * ts[k] + ez * tw[k]) /
-              SHLIGHT_SQRTR(tr[k] * tr[k] + ts[k] * ts[k] + tw[k] * tw[k]);
-          d = SHLIGHT_MINR(d, q);
+          d = SHLIGHT_MINR(d, ex * tr[k] + ey * ts[k] + ez * tw[k]);
         }
-        if (ex * lsx + ey * lsy + ez * lsz >= 2.0 * d * d - 1.0 && d < pc) {
+        ex = ex + vx;
+        ey = ey + vy;
+        ez = ez + vz;
+        q = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
+        f1 = SHLIGHT_SQRTR(SHLIGHT_MAXR(2.0 - 2.0 * (ex * hx + ey * hy + ez * hz) / q, 0.0));
+        f2 = q * (pc + SHLIGHT_GGX_GRADE * f1);
+        if (2.0 - 2.0 * d > f2 * f2) {
           npk = 1;
         }
       }
@@ -6735,14 +6764,16 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
       spl = 0;
       if (dep < dmin) {
         spl = 1;
-      } else if (dep < SHLIGHT_GGX_DEPTH && nsp < SHLIGHT_GGX_SPLITS && npk != 0) {
+      } else if (dep < dmax && npk != 0) {
         spl = 2;
-      }
-      if (spl == 0) {
+        if (nsp >= smax) { /* budget spent: left out */
+          spl = 0;
+          rq[0] = 0.0;
+        }
+      } else {
         shli_ggx_tri(tr[0], ts[0], tw[0], tr[1], ts[1], tw[1], tr[2], ts[2], tw[2], vx, vy, vz, nx,
                      ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf, nk + 3, rq);
-        if (dep < SHLIGHT_GGX_DEPTH && nsp < SHLIGHT_GGX_SPLITS &&
-            SHLIGHT_ABSR(rq[0] - rq[1]) > tol) {
+        if (dep < dmax && nsp < smax && SHLIGHT_ABSR(rq[0] - rq[1]) > tol) {
           spl = 2;
         }
       }
@@ -6755,10 +6786,11 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
       } else {
         res = res + rq[0];
         /* the next piece: up past the last children, then the next sibling */
-        for (k = 0; k < SHLIGHT_GGX_DEPTH; ++k) {
-          if (dep > 0 && dg[dep - 1] == 3) {
-            dep = dep - 1;
+        for (k = 0; k < SHLIGHT_GGX_GDEPTH; ++k) {
+          if (dep == 0 || dg[dep - 1] != 3) {
+            break;
           }
+          dep = dep - 1;
         }
         if (dep == 0) {
           break;
@@ -6768,7 +6800,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
     }
   }
   q = ori * (aa * ws - am[1] * a2 * 0.31830988618379067 - (gx * hx + gy * hy + gz * hz) * aa + res);
-  return SHLIGHT_FLOAT(SHLIGHT_MAXR(q, 0.0));
+  return SHLIGHT_FLOAT(SHLIGHT_MINR(SHLIGHT_MAXR(q, 0.0), 1.0));
 }
 
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],

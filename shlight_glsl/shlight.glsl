@@ -209,7 +209,11 @@ precision highp int;
 #define SHLIGHT_GGX_SPLITS 128
 #define SHLIGHT_GGX_DEPTH 8
 #define SHLIGHT_GGX_HOR 4.0
-#define SHLIGHT_GGX_KAP 4.5
+#define SHLIGHT_GGX_KAP 1.25
+#define SHLIGHT_GGX_GRADE 0.8
+#define SHLIGHT_GGX_GSPLITS 512
+#define SHLIGHT_GGX_XSPLITS 512
+#define SHLIGHT_GGX_GDEPTH 16
 #endif
 
 #ifdef SHLIGHT_GLSL_BASIS
@@ -5320,7 +5324,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   shli_real pz[SHLIGHT_CLIP_MAX];
   shli_real am[2];
   shli_real rq[2];
-  int dg[SHLIGHT_GGX_DEPTH];
+  int dg[SHLIGHT_GGX_GDEPTH];
   shli_real tr[7];
   shli_real ts[7];
   shli_real tw[7];
@@ -5405,7 +5409,10 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   int nsp;
   int dmin;
   int dep;
+  int dmax;
+  int smax;
   int it;
+  int it2;
   int inside = 1;
   int nk;
   int nc;
@@ -5563,6 +5570,21 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
     gy = gy + w * ey;
     gz = gz + w * ez;
   }
+  /* graded remainder (lobe near the horizon); n.v < 0.02: every alpha, g = 0 */
+  d = 2.0 * (hx * vx + hy * vy + hz * vz);
+  lsx = d * hx - vx;
+  lsy = d * hy - vy;
+  lsz = d * hz - vz;
+  pc = -2.0;
+  if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && (al < 0.25 || nv2 < 0.02) &&
+      ndf == 0) {
+    pc = SHLIGHT_GGX_KAP * SHLIGHT_MAXR(al, 0.02);
+    if (nv2 < 0.02) {
+      gx = 0.0;
+      gy = 0.0;
+      gz = 0.0;
+    }
+  }
   /* A and M1.g along the edges */
   if (ndf == 0) {
     i1 = shli_ggx_j(c, a2);
@@ -5660,17 +5682,16 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   }
   rq[0] = 0.0;
   rq[1] = 0.0;
-  d = 2.0 * (hx * vx + hy * vy + hz * vz);
-  lsx = d * hx - vx;
-  lsy = d * hy - vy;
-  lsz = d * hz - vz;
-  /* graded refinement about l* where the lobe is near the horizon */
-  pc = -2.0;
-  if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && al < 0.25 && ndf == 0) {
-    q = SHLIGHT_GGX_KAP * al * d;
-    pc = 1.0 - 0.5 * q * q;
-  }
   nsp = 0;
+  dmax = SHLIGHT_GGX_DEPTH;
+  smax = SHLIGHT_GGX_SPLITS;
+  if (pc > 0.0) {
+    dmax = SHLIGHT_GGX_GDEPTH;
+    smax = SHLIGHT_GGX_GSPLITS;
+    if (nv2 < 0.02) {
+      smax = SHLIGHT_GGX_XSPLITS;
+    }
+  }
   if (al < 0.05 && ndf == 0 && lsx * nx + lsy * ny + lsz * nz > 2.0 * SHLIGHT_GGX_HOR * al) {
     nc = 0; /* a narrow lobe well above the horizon: no remainder (second order in alpha) */
   }
@@ -5691,7 +5712,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
       dmin = 1;
     }
     dep = 0;
-    for (it = 0; it < 5 + 4 * SHLIGHT_GGX_SPLITS; ++it) {
+    for (it = 0; it < 5 + 4 * SHLIGHT_GGX_XSPLITS; ++it) {
       /* the piece's vertices (tr, ts, tw)[0..2] from (centroid, a, b) down its path */
       tr[0] = sx;
       ts[0] = sy;
@@ -5712,6 +5733,12 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
         tr[5] = tr[2] + tr[0];
         ts[5] = ts[2] + ts[0];
         tw[5] = tw[2] + tw[0];
+        for (it2 = 3; it2 < 6; ++it2) { /* unit midpoints */
+          q = SHLIGHT_SQRTR(tr[it2] * tr[it2] + ts[it2] * ts[it2] + tw[it2] * tw[it2]);
+          tr[it2] = tr[it2] / q;
+          ts[it2] = ts[it2] / q;
+          tw[it2] = tw[it2] / q;
+        }
         if (dg[k] != 0) {
           tr[0] = tr[3];
           ts[0] = ts[3];
@@ -5748,9 +5775,9 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
           tw[2] = tw[5];
         }
       }
-      /* near l*: the piece's centre within twice its radius (cosine d) of l*, d above the stop */
+      /* graded: radius over |l + v| against KAP max(alpha, 0.02) + GRADE |h - h*| */
       npk = 0;
-      if (pc > -1.0) {
+      if (pc > 0.0) {
         ex = tr[0] + tr[1] + tr[2];
         ey = ts[0] + ts[1] + ts[2];
         ez = tw[0] + tw[1] + tw[2];
@@ -5760,11 +5787,15 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
         ez = ez / q;
         d = 1.0;
         for (k = 0; k < 3; ++k) {
-          q = (ex * tr[k] + ey * ts[k] + ez * tw[k]) /
-              SHLIGHT_SQRTR(tr[k] * tr[k] + ts[k] * ts[k] + tw[k] * tw[k]);
-          d = SHLIGHT_MINR(d, q);
+          d = SHLIGHT_MINR(d, ex * tr[k] + ey * ts[k] + ez * tw[k]);
         }
-        if (ex * lsx + ey * lsy + ez * lsz >= 2.0 * d * d - 1.0 && d < pc) {
+        ex = ex + vx;
+        ey = ey + vy;
+        ez = ez + vz;
+        q = SHLIGHT_SQRTR(ex * ex + ey * ey + ez * ez);
+        f1 = SHLIGHT_SQRTR(SHLIGHT_MAXR(2.0 - 2.0 * (ex * hx + ey * hy + ez * hz) / q, 0.0));
+        f2 = q * (pc + SHLIGHT_GGX_GRADE * f1);
+        if (2.0 - 2.0 * d > f2 * f2) {
           npk = 1;
         }
       }
@@ -5773,14 +5804,16 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
       spl = 0;
       if (dep < dmin) {
         spl = 1;
-      } else if (dep < SHLIGHT_GGX_DEPTH && nsp < SHLIGHT_GGX_SPLITS && npk != 0) {
+      } else if (dep < dmax && npk != 0) {
         spl = 2;
-      }
-      if (spl == 0) {
+        if (nsp >= smax) { /* budget spent: left out */
+          spl = 0;
+          rq[0] = 0.0;
+        }
+      } else {
         shli_ggx_tri(tr[0], ts[0], tw[0], tr[1], ts[1], tw[1], tr[2], ts[2], tw[2], vx, vy, vz, nx,
                      ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf, nk + 3, rq);
-        if (dep < SHLIGHT_GGX_DEPTH && nsp < SHLIGHT_GGX_SPLITS &&
-            SHLIGHT_ABSR(rq[0] - rq[1]) > tol) {
+        if (dep < dmax && nsp < smax && SHLIGHT_ABSR(rq[0] - rq[1]) > tol) {
           spl = 2;
         }
       }
@@ -5793,10 +5826,11 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
       } else {
         res = res + rq[0];
         /* the next piece: up past the last children, then the next sibling */
-        for (k = 0; k < SHLIGHT_GGX_DEPTH; ++k) {
-          if (dep > 0 && dg[dep - 1] == 3) {
-            dep = dep - 1;
+        for (k = 0; k < SHLIGHT_GGX_GDEPTH; ++k) {
+          if (dep == 0 || dg[dep - 1] != 3) {
+            break;
           }
+          dep = dep - 1;
         }
         if (dep == 0) {
           break;
@@ -5806,7 +5840,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
     }
   }
   q = ori * (aa * ws - am[1] * a2 * 0.31830988618379067 - (gx * hx + gy * hy + gz * hz) * aa + res);
-  return SHLIGHT_FLOAT(SHLIGHT_MAXR(q, 0.0));
+  return SHLIGHT_FLOAT(SHLIGHT_MINR(SHLIGHT_MAXR(q, 0.0), 1.0));
 }
 
 float shl_polygon_ggx(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, float alpha) {
