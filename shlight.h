@@ -6037,7 +6037,7 @@ typedef unsigned long long shli_u64;
   p = 0.2 + z * p; \
   p = 1.0 / 3.0 + z * p
 #define SHLI_MLOG_END(e, s, z, p) \
-  ((e) * 0.6931471803691238 + ((e) * 1.9082149292705877e-10 + 2.0 * (s) + 2.0 * (s) * ((z) * (p))))
+  ((e)*0.6931471803691238 + ((e)*1.9082149292705877e-10 + 2.0 * (s) + 2.0 * (s) * ((z) * (p))))
 #define SHLI_MSINCOS_POLY(s, c, r, z, K) \
   s = K(-7.647163731819816e-13); \
   s = 1.6059043836821613e-10 + z * s; \
@@ -6331,202 +6331,152 @@ SHLIGHT_INLINE void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli
 
 /* C with AVX2 and FMA (GCC / Clang, not SHLIGHT_NO_SIMD): an edge's Gauss nodes 4 at a time in
    double lanes, shli_ggx_side's algebra and polynomials (tests/test_ggx_lanes.c holds the two
-   together); the portable kernel stays for the other builds */
+   together); the portable kernel in the other builds */
 #if !defined(SHLIGHT_NO_SIMD) && defined(__AVX2__) && defined(__FMA__) && \
     (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
-#define SHLI_V4(x) _mm256_set1_pd(x)
-#define SHLI_V4SEL(m, a, b) _mm256_blendv_pd((b), (a), (m)) /* m ? a : b by the sign bit */
-#define SHLI_V4GT(a, b) _mm256_cmp_pd((a), (b), _CMP_GT_OQ)
-#define SHLI_V4SG(q, b) \
-  _mm256_and_pd((shli_v4d)_mm256_slli_epi64((q), b), SHLI_V4(-0.0)) /* bit 63 - b as a sign */
 typedef __m256d shli_v4d;
+#define SHLI_V4(x) _mm256_set1_pd(x)
+#define SHLI_V4SEL(m, a, b) _mm256_blendv_pd((b), (a), (m)) /* m ? a : b, by m's sign bit */
+#define SHLI_V4CMP(a, op, b) _mm256_cmp_pd((a), SHLI_V4(b), _CMP_##op##_OQ)
+#define SHLI_V4SG(q, b) _mm256_and_pd((shli_v4d)_mm256_slli_epi64((q), b), SHLI_V4(-0.0))
+#define SHLI_V4I(x) ((__m256i)(x))
 SHLIGHT_ALWAYS_INLINE static inline shli_v4d shli_exp4(shli_v4d x) {
   shli_v4d t;
   shli_v4d p;
   x = _mm256_min_pd(_mm256_max_pd(x, SHLI_V4(-708.0)), SHLI_V4(709.0));
-  t = x * 1.4426950408889634 + 6755399441056767.0; /* 1.5 2^52 + 1023: the biased exponent */
+  t = x * 1.4426950408889634 + 6755399441056767.0; /* 1.5 2^52 + 1023: 2^k's exponent bits */
   p = t - 6755399441056767.0;
   x = x - p * 0.6931471803691238 - p * 1.9082149292705877e-10;
   SHLI_MEXP_POLY(p, x, SHLI_V4);
-  return p * (shli_v4d)_mm256_slli_epi64((__m256i)t, 52);
+  return p * (shli_v4d)_mm256_slli_epi64(SHLI_V4I(t), 52);
 }
 SHLIGHT_ALWAYS_INLINE static inline shli_v4d shli_log4(shli_v4d x) { /* x > 0 */
-  shli_v4d one = SHLI_V4(1.0);
-  shli_v4d m = _mm256_or_pd(_mm256_andnot_pd(SHLI_V4(-HUGE_VAL), x), one);
-  shli_v4d e = (shli_v4d)_mm256_or_si256(_mm256_srli_epi64((__m256i)x, 52),
-                                         (__m256i)SHLI_V4(4503599627370496.0));
-  shli_v4d g = SHLI_V4GT(m, SHLI_V4(1.4142135623730951));
+  shli_v4d m = _mm256_or_pd(_mm256_andnot_pd(SHLI_V4(-HUGE_VAL), x), SHLI_V4(1.0));
+  shli_v4d e = (shli_v4d)(_mm256_srli_epi64(SHLI_V4I(x), 52) | SHLI_V4I(SHLI_V4(0x1p52)));
+  shli_v4d g = SHLI_V4CMP(m, GT, 1.4142135623730951);
   shli_v4d z;
-  shli_v4d p;
   m = SHLI_V4SEL(g, 0.5 * m, m);
-  e = e - 4503599627371519.0 + _mm256_and_pd(g, one); /* 2^52 + 1023 */
+  e = e - 4503599627371519.0 + _mm256_and_pd(g, SHLI_V4(1.0)); /* 2^52 + 1023 */
   m = (m - 1.0) / (m + 1.0);
   z = m * m;
-  SHLI_MLOG_POLY(p, z, SHLI_V4);
-  return SHLI_MLOG_END(e, m, z, p);
+  SHLI_MLOG_POLY(x, z, SHLI_V4);
+  return SHLI_MLOG_END(e, m, z, x);
 }
 SHLIGHT_ALWAYS_INLINE static inline void shli_sincos4(shli_v4d t, shli_v4d *out_s,
                                                       shli_v4d *out_c) {
-  shli_v4d u = t * 0.63661977236758134 + 6755399441055744.0;
+  shli_v4d u = t * 0.63661977236758134 + 6755399441055744.0; /* the quadrant in the low bits */
   shli_v4d r = u - 6755399441055744.0;
-  __m256i q = (__m256i)u; /* the quadrant in its low bits */
-  shli_v4d q1 = (shli_v4d)_mm256_slli_epi64(q, 63);
+  shli_v4d q1 = (shli_v4d)_mm256_slli_epi64(SHLI_V4I(u), 63);
   shli_v4d z;
   shli_v4d s;
   shli_v4d c;
   r = t - r * 1.5707963267341256 - r * 6.077100506506192e-11;
   z = r * r;
   SHLI_MSINCOS_POLY(s, c, r, z, SHLI_V4);
-  *out_s = _mm256_xor_pd(SHLI_V4SEL(q1, c, s), SHLI_V4SG(q, 62));
-  *out_c = _mm256_xor_pd(SHLI_V4SEL(q1, s, c), SHLI_V4SG(_mm256_add_epi64(q, _mm256_set1_epi64x(1)), 62));
+  *out_s = _mm256_xor_pd(SHLI_V4SEL(q1, c, s), SHLI_V4SG(SHLI_V4I(u), 62));
+  *out_c = _mm256_xor_pd(SHLI_V4SEL(q1, s, c), SHLI_V4SG(SHLI_V4I(u + 1.0), 62));
 }
-/* shli_ggx_side in lanes (same arguments; the sums in another order) */
+/* shli_ggx_side in lanes (the same arguments; its sums in another order) */
 SHLIGHT_CPU_INLINE void shli_ggx_side4(shli_real sa, shli_real sb, shli_real t0, shli_real wd,
                                        shli_real ax, shli_real ay, shli_real az, shli_real bx,
                                        shli_real by, shli_real bz, shli_real vx, shli_real vy,
                                        shli_real vz, shli_real nx, shli_real ny, shli_real nz,
                                        shli_real a2, shli_real gx, shli_real gy, shli_real gz,
                                        shli_real i1, shli_real al, int ndf, shli_real *io_am) {
-  static const double xw[2][10] = {{-0.86113631159405258, -0.33998104358485626,
-                                    0.33998104358485626, 0.86113631159405258, 0,
-                                    0.34785484513745386, 0.65214515486254614, 0.65214515486254614,
-                                    0.34785484513745386, 0},
-                                   {-0.90617984593866399, -0.53846931010568309, 0,
-                                    0.53846931010568309, 0.90617984593866399, 0.23692688505618909,
-                                    0.47862867049936647, 0.56888888888888889, 0.47862867049936647,
-                                    0.23692688505618909}};
-  static const double bk[14] = {0.6384891907791029,     -0.046381913173553224,
-                                -0.08301519969842093,   0.08202562922023758,
-                                -0.027109944299521422,  -0.004016780184587048,
-                                0.004359972791898658,   0.0006349526378748344,
-                                -0.0007155524025357445, -0.00024355655667775413,
-                                7.319183804664685e-05,  0.00017624229959215334,
-                                -0.00010318949224549979, 1.653978468591848e-05};
+  /* Gauss-Legendre nodes, weights (4 and 5 per side); shli_beck_i's fit */
+  static const double xw[2][10] = {{-.86113631159405258, -.33998104358485626, .33998104358485626,
+                                    .86113631159405258, 0, .34785484513745386, .65214515486254614,
+                                    .65214515486254614, .34785484513745386, 0},
+                                   {-.90617984593866399, -.53846931010568309, 0, .53846931010568309,
+                                    .90617984593866399, .23692688505618909, .47862867049936647,
+                                    .56888888888888889, .47862867049936647, .23692688505618909}};
+  static const double bk[14] = {
+      .6384891907791029,      -.046381913173553224,   -.08301519969842093,   .08202562922023758,
+      -.027109944299521422,   -.004016780184587048,   .004359972791898658,   .0006349526378748344,
+      -.0007155524025357445,  -.00024355655667775413, 7.319183804664685e-05, .00017624229959215334,
+      -.00010318949224549979, 1.653978468591848e-05};
   double ns[12];
   double nw[12];
   shli_real gn = gx * nx + gy * ny + gz * nz;
   shli_real tx = gx - gn * nx;
   shli_real ty = gy - gn * ny;
   shli_real tz = gz - gn * nz;
-  shli_real ex = ay * bz - az * by;
-  shli_real ey = az * bx - ax * bz;
-  shli_real ez = ax * by - ay * bx;
-  shli_real en = ex * nx + ey * ny + ez * nz;
-  shli_real et = ex * tx + ey * ty + ez * tz;
-  shli_real an1 = ax * (ny * vz - nz * vy) + ay * (nz * vx - nx * vz) + az * (nx * vy - ny * vx);
-  shli_real bn1 = bx * (ny * vz - nz * vy) + by * (nz * vx - nx * vz) + bz * (nx * vy - ny * vx);
-  shli_real at1 = ax * (ty * vz - tz * vy) + ay * (tz * vx - tx * vz) + az * (tx * vy - ty * vx);
-  shli_real bt1 = bx * (ty * vz - tz * vy) + by * (tz * vx - tx * vz) + bz * (tx * vy - ty * vx);
-  shli_real lo;
-  shli_real hi;
-  shli_real hw = 0.5 * wd;
-  shli_v4d zero = SHLI_V4(0.0);
-  shli_v4d sa4 = zero;
-  shli_v4d sm4 = zero;
-  shli_v4d s;
-  shli_v4d es;
-  shli_v4d jw;
-  shli_v4d ct;
-  shli_v4d st;
-  shli_v4d qx;
-  shli_v4d qy;
-  shli_v4d qz;
-  shli_v4d qn;
-  shli_v4d qq;
-  shli_v4d q2;
-  shli_v4d qxy;
-  shli_v4d dn;
-  shli_v4d cn;
-  shli_v4d th;
-  shli_v4d it;
-  shli_v4d m;
-  shli_v4d u;
-  shli_v4d e;
-  shli_v4d ok;
-  int g = ndf != 0 || al < 0.02; /* 4 or 5 Gauss-Legendre nodes per side */
-  int ng = 4 + g;
-  int cnt = 0;
-  int j;
-  int k;
-  for (k = 0; k < 2; ++k) { /* the sides: [sa, 0] and [0, sb] across s = 0, else [sa, sb] */
-    lo = sa;
-    hi = sb;
-    if (sa < 0.0 && sb > 0.0) {
-      hi = k == 0 ? 0.0 : sb;
-      lo = k == 0 ? sa : 0.0;
-    } else if (k == 1) {
-      break;
+  shli_real px = ny * vz - nz * vy, py = nz * vx - nx * vz, pz = nx * vy - ny * vx; /* n x v */
+  shli_real rx = ty * vz - tz * vy, ry = tz * vx - tx * vz, rz = tx * vy - ty * vx; /* t x v */
+  shli_real ex = ay * bz - az * by, ey = az * bx - ax * bz, ez = ax * by - ay * bx;
+  shli_real lo, hl;
+  shli_v4d sm[2] = {SHLI_V4(0.0), SHLI_V4(0.0)}; /* A and M1.g */
+  shli_v4d jw, ct, st, qx, qy, qz, qn, qq, qxy, dn, cn, th, it, m, u, e;
+  int g = ndf != 0 || al < 0.02; /* 4 + g nodes per side */
+  int cnt = 0, j, k;
+  for (k = 0; k < 2; ++k) { /* [sa, 0] and [0, sb] across s = 0, else [sa, sb] */
+    lo = k == 0 ? sa : 0.0;
+    hl = k == 0 && sb > 0.0 && sa < 0.0 ? -0.5 * sa : 0.5 * (sb - lo);
+    if (k == 1 && !(sb > 0.0 && sa < 0.0)) {
+      hl = 0.0;
     }
-    if (!(hi > lo)) {
-      continue;
-    }
-    for (j = 0; j < ng; ++j) {
-      ns[cnt] = lo + 0.5 * (hi - lo) * (xw[g][j] + 1.0);
-      nw[cnt] = xw[g][j + 5] * 0.5 * (hi - lo) * hw;
+    for (j = 0; j < 4 + g && hl > 0.0; ++j) {
+      ns[cnt] = lo + hl * (xw[g][j] + 1.0);
+      nw[cnt] = xw[g][j + 5] * hl * 0.5 * wd;
       cnt = cnt + 1;
     }
   }
-  for (j = cnt; (j & 3) != 0; ++j) { /* idle lanes: a node of weight 0 */
+  for (j = cnt; (j & 3) != 0; ++j) { /* idle lanes: weight 0 */
     ns[j] = ns[0];
     nw[j] = 0.0;
   }
   for (j = 0; j < cnt; j += 4) {
-    s = _mm256_loadu_pd(ns + j);
-    es = shli_exp4(s);
-    jw = _mm256_loadu_pd(nw + j) * (es + 1.0 / es);
-    shli_sincos4(t0 + hw * (es - 1.0 / es), &st, &ct);
+    e = shli_exp4(_mm256_loadu_pd(ns + j));
+    jw = _mm256_loadu_pd(nw + j) * (e + 1.0 / e);
+    shli_sincos4(t0 + 0.5 * wd * (e - 1.0 / e), &st, &ct);
     qx = ct * ax + st * bx + vx;
     qy = ct * ay + st * by + vy;
     qz = ct * az + st * bz + vz;
     qn = qx * nx + qy * ny + qz * nz;
     qq = qx * qx + qy * qy + qz * qz;
-    cn = en + ct * bn1 - st * an1;
-    q2 = qn * qn;
-    qxy = _mm256_max_pd(qq - q2, zero);
-    dn = qxy + a2 * q2;
+    cn = ex * nx + ey * ny + ez * nz + ct * (bx * px + by * py + bz * pz) -
+         st * (ax * px + ay * py + az * pz);
+    qxy = _mm256_max_pd(qq - qn * qn, SHLI_V4(0.0));
+    dn = qxy + a2 * qn * qn;
     th = qn / _mm256_sqrt_pd(qq);
     if (ndf == 0) {
-      ok = cn / dn;
       u = (1.0 - a2) * th * th; /* J(u), shli_ggx_j: the series below 0.1 */
-      m = SHLI_V4(0.48148148148148145);
+      m = SHLI_V4(13.0 / 27.0);
       for (k = 12; k > 0; --k) {
         m = (double)k / (double)(2 * k + 1) + u * m;
       }
       e = _mm256_sqrt_pd(u);
-      q2 = qq / dn;
-      e = (q2 - 0.5 * shli_log4((1.0 + e) * (1.0 + e) * q2) / e) / (2.0 * u);
-      it = th * th * th * SHLI_V4SEL(_mm256_cmp_pd(u, SHLI_V4(0.1), _CMP_LT_OQ), m, e);
-    } else { /* shli_ggx_side's Beckmann branch, shli_beck_i */
-      dn = _mm256_and_pd(SHLI_V4GT(qn, zero), dn);
-      u = qxy / (a2 * q2);
+      it = qq / dn;
+      e = (it - 0.5 * shli_log4((1.0 + e) * (1.0 + e) * it) / e) / (2.0 * u);
+      it = th * th * th * SHLI_V4SEL(SHLI_V4CMP(u, LT, 0.1), m, e);
+      m = cn / dn;
+    } else { /* shli_ggx_side's Beckmann branch and shli_beck_i */
+      dn = _mm256_and_pd(SHLI_V4CMP(qn, GT, 0.0), dn);
+      u = qxy / (a2 * qn * qn);
       e = shli_exp4(-u);
-      m = SHLI_V4(1.0 / 5040.0);
-      m = 1.0 / 720.0 - u * m;
-      m = 1.0 / 120.0 - u * m;
-      m = 1.0 / 24.0 - u * m;
-      m = 1.0 / 6.0 - u * m;
-      m = 0.5 - u * m;
-      m = (1.0 - u * m) / (a2 * q2);
-      ok = cn * SHLI_V4SEL(_mm256_cmp_pd(u, SHLI_V4(0.1), _CMP_LT_OQ), m, (1.0 - e) / qxy);
+      m = 1.0 / 120.0 - u * (1.0 / 720.0 - u * (1.0 / 5040.0));
+      m = 0.5 - u * (1.0 / 6.0 - u * (1.0 / 24.0 - u * m));
+      m = cn * SHLI_V4SEL(SHLI_V4CMP(u, LT, 0.1), (1.0 - u * m) / (a2 * qn * qn), (1.0 - e) / qxy);
       u = al * th;
-      m = (1.0 - 2.0 * u) / (1.0 + 2.0 * u);
+      qz = (1.0 - 2.0 * u) / (1.0 + 2.0 * u);
       it = SHLI_V4(bk[13]);
       for (k = 12; k >= 0; --k) {
-        it = bk[k] + m * it;
+        it = bk[k] + qz * it;
       }
       it = 1.7724538509055160 * th * e * it / (a2 * (u + 2.0));
     }
-    q2 = qn * qn;
-    m = -(et + ct * bt1 - st * at1) * it / q2 +
-        _mm256_and_pd(SHLI_V4GT(qxy, 1.0e-30 * qq), gn * (it - i1) * cn / qxy);
-    e = _mm256_and_pd(SHLI_V4GT(dn, zero), SHLI_V4GT(qq, zero));
-    sa4 = sa4 + _mm256_and_pd(e, jw * ok);
-    sm4 = sm4 + _mm256_and_pd(e, jw * m);
+    e = _mm256_and_pd(SHLI_V4CMP(dn, GT, 0.0), SHLI_V4CMP(qq, GT, 0.0));
+    sm[0] = sm[0] + _mm256_and_pd(e, jw * m);
+    m = (ct * (bx * rx + by * ry + bz * rz) - st * (ax * rx + ay * ry + az * rz) + ex * tx +
+         ey * ty + ez * tz) *
+            -it / (qn * qn) +
+        _mm256_and_pd(_mm256_cmp_pd(qxy, 1.0e-30 * qq, _CMP_GT_OQ), gn * (it - i1) * cn / qxy);
+    sm[1] = sm[1] + _mm256_and_pd(e, jw * m);
   }
-  sa4 = _mm256_hadd_pd(sa4, sm4); /* (a0 + a1, m0 + m1, a2 + a3, m2 + m3) */
-  io_am[0] = io_am[0] + sa4[0] + sa4[2];
-  io_am[1] = io_am[1] + sa4[1] + sa4[3];
+  sm[0] = _mm256_hadd_pd(sm[0], sm[1]); /* (A0 + A1, M0 + M1, A2 + A3, M2 + M3) */
+  io_am[0] = io_am[0] + sm[0][0] + sm[0][2];
+  io_am[1] = io_am[1] + sm[0][1] + sm[0][3];
 }
 #define shli_ggx_side shli_ggx_side4
 #endif
