@@ -6405,6 +6405,9 @@ SHLIGHT_CPU_INLINE void shli_ggx_side4(shli_real sa, shli_real sb, shli_real t0,
   shli_real px = ny * vz - nz * vy, py = nz * vx - nx * vz, pz = nx * vy - ny * vx; /* n x v */
   shli_real rx = ty * vz - tz * vy, ry = tz * vx - tx * vz, rz = tx * vy - ty * vx; /* t x v */
   shli_real ex = ay * bz - az * by, ey = az * bx - ax * bz, ez = ax * by - ay * bx;
+  shli_real an1 = ax * px + ay * py + az * pz, bn1 = bx * px + by * py + bz * pz;
+  shli_real at1 = ax * rx + ay * ry + az * rz, bt1 = bx * rx + by * ry + bz * rz;
+  shli_real en = ex * nx + ey * ny + ez * nz, et = ex * tx + ey * ty + ez * tz;
   shli_real lo, hl;
   shli_v4d sm[2] = {SHLI_V4(0.0), SHLI_V4(0.0)}; /* A and M1.g */
   shli_v4d jw, ct, st, qx, qy, qz, qn, qq, qxy, dn, cn, th, it, m, u, e;
@@ -6416,10 +6419,12 @@ SHLIGHT_CPU_INLINE void shli_ggx_side4(shli_real sa, shli_real sb, shli_real t0,
     if (k == 1 && !(sb > 0.0 && sa < 0.0)) {
       hl = 0.0;
     }
-    for (j = 0; j < 4 + g && hl > 0.0; ++j) {
-      ns[cnt] = lo + hl * (xw[g][j] + 1.0);
-      nw[cnt] = xw[g][j + 5] * hl * 0.5 * wd;
-      cnt = cnt + 1;
+    if (hl > 0.0) { /* 4 nodes, the fifth (g = 1) after them */
+      _mm256_storeu_pd(ns + cnt, lo + hl * (_mm256_loadu_pd(xw[g]) + 1.0));
+      _mm256_storeu_pd(nw + cnt, _mm256_loadu_pd(xw[g] + 5) * (hl * 0.5 * wd));
+      ns[cnt + 4] = lo + hl * (xw[g][4] + 1.0);
+      nw[cnt + 4] = xw[g][9] * hl * 0.5 * wd;
+      cnt = cnt + 4 + g;
     }
   }
   for (j = cnt; (j & 3) != 0; ++j) { /* idle lanes: weight 0 */
@@ -6435,8 +6440,7 @@ SHLIGHT_CPU_INLINE void shli_ggx_side4(shli_real sa, shli_real sb, shli_real t0,
     qz = ct * az + st * bz + vz;
     qn = qx * nx + qy * ny + qz * nz;
     qq = qx * qx + qy * qy + qz * qz;
-    cn = ex * nx + ey * ny + ez * nz + ct * (bx * px + by * py + bz * pz) -
-         st * (ax * px + ay * py + az * pz);
+    cn = en + ct * bn1 - st * an1;
     qxy = _mm256_max_pd(qq - qn * qn, SHLI_V4(0.0));
     dn = qxy + a2 * qn * qn;
     th = qn / _mm256_sqrt_pd(qq);
@@ -6468,9 +6472,7 @@ SHLIGHT_CPU_INLINE void shli_ggx_side4(shli_real sa, shli_real sb, shli_real t0,
     }
     e = _mm256_and_pd(SHLI_V4CMP(dn, GT, 0.0), SHLI_V4CMP(qq, GT, 0.0));
     sm[0] = sm[0] + _mm256_and_pd(e, jw * m);
-    m = (ct * (bx * rx + by * ry + bz * rz) - st * (ax * rx + ay * ry + az * rz) + ex * tx +
-         ey * ty + ez * tz) *
-            -it / (qn * qn) +
+    m = -(et + ct * bt1 - st * at1) * it / (qn * qn) +
         _mm256_and_pd(_mm256_cmp_pd(qxy, 1.0e-30 * qq, _CMP_GT_OQ), gn * (it - i1) * cn / qxy);
     sm[1] = sm[1] + _mm256_and_pd(e, jw * m);
   }
