@@ -6353,7 +6353,8 @@ SHLIGHT_ALWAYS_INLINE static inline shli_v4d shli_exp4(shli_v4d x) {
 }
 SHLIGHT_ALWAYS_INLINE static inline shli_v4d shli_log4(shli_v4d x) { /* x > 0 */
   shli_v4d m = _mm256_or_pd(_mm256_andnot_pd(SHLI_V4(-HUGE_VAL), x), SHLI_V4(1.0));
-  shli_v4d e = (shli_v4d)(_mm256_srli_epi64(SHLI_V4I(x), 52) | SHLI_V4I(SHLI_V4(0x1p52)));
+  shli_v4d e =
+      (shli_v4d)(_mm256_srli_epi64(SHLI_V4I(x), 52) | SHLI_V4I(SHLI_V4(4503599627370496.0)));
   shli_v4d g = SHLI_V4CMP(m, GT, 1.4142135623730951);
   shli_v4d z;
   m = SHLI_V4SEL(g, 0.5 * m, m);
