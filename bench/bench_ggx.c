@@ -282,8 +282,9 @@ int main(int argc, char **argv) {
           for (i = 0; i < NCFG; ++i)
             acc += w == 1 ? yard_phong(&C[i]) : w == 2 ? pw_ggx(&C[i]) : bw_ggx(&C[i]);
         sink = acc;
-        (w == 1 ? ny : w == 2 ? np : ns)[s] =
-            (now() - t0) * 1e9 / ((double)(w == 1 ? 4 * reps : reps) * NCFG);
+        (w == 1   ? ny
+         : w == 2 ? np
+                  : ns)[s] = (now() - t0) * 1e9 / ((double)(w == 1 ? 4 * reps : reps) * NCFG);
       }
     fprintf(o,
             "\nns per quad light (median of 15, this build): shl_polygon_ggx %.0f; in the same "

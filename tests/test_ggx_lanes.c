@@ -20,8 +20,8 @@ float ggx_portable(const float (*v)[3], int nv, const float nrm[3], const float 
                    float alpha, int ndf);
 
 static const float ZN[3] = {0.0f, 0.0f, 1.0f};
-static double worst[2];      /* max |lanes - portable| / max(|portable|, 1e-3 albedo-ish) */
-static double worst_abs[2];  /* max |lanes - portable| */
+static double worst[2];     /* max |lanes - portable| / max(|portable|, 1e-3 albedo-ish) */
+static double worst_abs[2]; /* max |lanes - portable| */
 static int ncalls;
 
 static void cmp(const float (*q)[3], int nv, const float view[3], float alpha) {
@@ -100,8 +100,7 @@ static void hard_case(ggxc_rng *r, int kind, double q[4][3], double view[3]) {
 }
 
 static void test_lanes_hard(void) {
-  static const char *names[4] = {"straddling", "grazing view 85-88", "large (113 deg)",
-                                 "sliver"};
+  static const char *names[4] = {"straddling", "grazing view 85-88", "large (113 deg)", "sliver"};
   static const double alphas[5] = {1e-4, 0.01, 0.0199, 0.09, 0.49};
   int kind, ia, c, i;
   for (kind = 0; kind < 4; ++kind) {
