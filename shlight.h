@@ -1303,7 +1303,15 @@ typedef double shli_real;
 #define SHLIGHT_MSIN(x) shli_msincos((x), 0)
 #define SHLIGHT_MCOS(x) shli_msincos((x), 1)
 #define SHLIGHT_POLYGON_ANY 1 /* C: any nv >= 3 (fan pieces); GLSL 0: above the max gives -1 */
-#define SHLIGHT_CLIP_MAX 20   /* after two plane clips of a non-convex 8-gon (<= 2.25 nv) */
+/* 1 in C with AVX2 and FMA (GCC / Clang, not SHLIGHT_NO_SIMD): the GGX / Beckmann lights' edges
+   in double lanes (shli_ggx_edges4); GLSL 0 */
+#if !defined(SHLIGHT_NO_SIMD) && defined(__AVX2__) && defined(__FMA__) && \
+    (defined(__GNUC__) || defined(__clang__))
+#define SHLIGHT_GGX_LANES 1
+#else
+#define SHLIGHT_GGX_LANES 0
+#endif
+#define SHLIGHT_CLIP_MAX 20           /* after two plane clips of a non-convex 8-gon (<= 2.25 nv) */
 #define SHLIGHT_EDGE_STOKES_ADAPT 105 /* internal: EXACT's adaptive Stokes rule */
 #define SHLIGHT_ADAPT_LEVELS 7        /* its most halvings (128 panels of 5 nodes per half-arc) */
 #define SHLIGHT_ADAPT_TOL 1.0e-9      /* its stop: two successive levels this close (GLSL 2e-6) */
@@ -6331,11 +6339,10 @@ SHLIGHT_INLINE void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli
   }
 }
 
-/* C with AVX2 and FMA (GCC / Clang, not SHLIGHT_NO_SIMD): an edge's Gauss nodes 4 at a time in
-   double lanes, shli_ggx_side's algebra and polynomials (tests/test_ggx_lanes.c holds the two
-   together); the portable kernel in the other builds */
-#if !defined(SHLIGHT_NO_SIMD) && defined(__AVX2__) && defined(__FMA__) && \
-    (defined(__GNUC__) || defined(__clang__))
+/* SHLIGHT_GGX_LANES: shli_mf_taylor's edges in double lanes, the setup of 4 edges at a time and
+   an edge's Gauss nodes 4 at a time, the portable kernels' algebra and polynomials
+   (tests/test_ggx_lanes.c holds the two together) */
+#if SHLIGHT_GGX_LANES
 #include <immintrin.h>
 typedef __m256d shli_v4d;
 #define SHLI_V4(x) _mm256_set1_pd(x)
@@ -6483,7 +6490,120 @@ SHLIGHT_CPU_INLINE void shli_ggx_side4(shli_real sa, shli_real sb, shli_real t0,
   io_am[0] = io_am[0] + sm[0][0] + sm[0][2];
   io_am[1] = io_am[1] + sm[0][1] + sm[0][3];
 }
-#define shli_ggx_side shli_ggx_side4
+/* shli_atan2r in lanes (the same steps; atan2(0, 0) = 0) */
+SHLIGHT_ALWAYS_INLINE static inline shli_v4d shli_atan2_4(shli_v4d y, shli_v4d x) {
+  shli_v4d ay = _mm256_andnot_pd(SHLI_V4(-0.0), y);
+  shli_v4d ax = _mm256_andnot_pd(SHLI_V4(-0.0), x);
+  shli_v4d g = _mm256_cmp_pd(ay, ax, _CMP_GT_OQ);
+  shli_v4d t = SHLI_V4SEL(g, ax / ay, ay / ax);
+  shli_v4d t2;
+  shli_v4d a;
+  t = t / (1.0 + _mm256_sqrt_pd(1.0 + t * t));
+  t = t / (1.0 + _mm256_sqrt_pd(1.0 + t * t));
+  t2 = t * t;
+  a = SHLI_V4(-0.066666666666666667);
+  a = 0.076923076923076923 + t2 * a;
+  a = -0.090909090909090909 + t2 * a;
+  a = 0.11111111111111111 + t2 * a;
+  a = -0.14285714285714286 + t2 * a;
+  a = 0.2 + t2 * a;
+  a = -0.33333333333333333 + t2 * a;
+  a = 4.0 * (t + t * (t2 * a));
+  a = SHLI_V4SEL(g, 1.5707963267948966 - a, a);
+  a = SHLI_V4SEL(SHLI_V4CMP(x, LT, 0.0), 3.1415926535897932 - a, a);
+  a = SHLI_V4SEL(SHLI_V4CMP(y, LT, 0.0), -a, a);
+  return _mm256_and_pd(_mm256_or_pd(SHLI_V4CMP(ax, GT, 0.0), SHLI_V4CMP(ay, GT, 0.0)), a);
+}
+/* shli_mf_taylor's edge loop in lanes: each edge's setup (its arc, the grading about the
+   integrand's peak) for 4 edges at a time, then its nodes by shli_ggx_side4 */
+SHLIGHT_CPU_INLINE void shli_ggx_edges4(const shli_real *px, const shli_real *py,
+                                        const shli_real *pz, int nc, shli_real rx, shli_real ry,
+                                        shli_real rz, shli_real vx, shli_real vy, shli_real vz,
+                                        shli_real nx, shli_real ny, shli_real nz, shli_real a2,
+                                        shli_real gx, shli_real gy, shli_real gz, shli_real i1,
+                                        shli_real al, int ndf, shli_real *io_am) {
+  double w[12][4]; /* per lane: a, b (the tangent), sa, sb, t0, wd */
+  shli_v4d ax, ay, az, bx, by, bz, ex, ey, ez, se, phi, t0, ct, st, qx, qy, qz, dx, dy, dz, d, q;
+  shli_v4d d0, f1, f2, wd, s;
+  shli_real c = 1.0 - a2;
+  int i, j, k;
+  for (i = 0; i < nc; i += 4) {
+    for (k = 0; k < 4; ++k) { /* edge i + k from vertex j to j + 1 (idle lanes: the last edge) */
+      j = i + k < nc ? i + k : nc - 1;
+      w[0][k] = px[j];
+      w[1][k] = py[j];
+      w[2][k] = pz[j];
+      j = j + 1 < nc ? j + 1 : 0;
+      w[3][k] = px[j];
+      w[4][k] = py[j];
+      w[5][k] = pz[j];
+    }
+    ax = _mm256_loadu_pd(w[0]);
+    ay = _mm256_loadu_pd(w[1]);
+    az = _mm256_loadu_pd(w[2]);
+    bx = _mm256_loadu_pd(w[3]);
+    by = _mm256_loadu_pd(w[4]);
+    bz = _mm256_loadu_pd(w[5]);
+    ex = ay * bz - az * by;
+    ey = az * bx - ax * bz;
+    ez = ax * by - ay * bx;
+    se = _mm256_sqrt_pd(ex * ex + ey * ey + ez * ez);
+    phi = shli_atan2_4(se, ax * bx + ay * by + az * bz);
+    ex = ex / se;
+    ey = ey / se;
+    ez = ez / se;
+    bx = ey * az - ez * ay;
+    by = ez * ax - ex * az;
+    bz = ex * ay - ey * ax;
+    t0 = shli_atan2_4(rx * bx + ry * by + rz * bz, rx * ax + ry * ay + rz * az);
+    t0 = t0 + _mm256_and_pd(_mm256_cmp_pd(t0, 0.5 * phi - 3.1415926535897932, _CMP_LT_OQ),
+                            SHLI_V4(6.2831853071795865));
+    for (k = 0; k < 2; ++k) { /* the Newton step (k = 0), then d0 and f2 where it went */
+      shli_sincos4(t0, &st, &ct);
+      qx = ct * ax + st * bx + vx;
+      qy = ct * ay + st * by + vy;
+      qz = ct * az + st * bz + vz;
+      dx = ct * bx - st * ax;
+      dy = ct * by - st * ay;
+      dz = ct * bz - st * az;
+      d = qx * nx + qy * ny + qz * nz;
+      q = dx * nx + dy * ny + dz * nz;
+      d0 = qx * qx + qy * qy + qz * qz - c * d * d;
+      f1 = qx * dx + qy * dy + qz * dz - c * d * q;
+      f2 = dx * dx + dy * dy + dz * dz - c * q * q - d0 +
+           (vx * qx + vy * qy + vz * qz - c * (vx * nx + vy * ny + vz * nz) * d);
+      if (k == 0) {
+        s = _mm256_cmp_pd(_mm256_andnot_pd(SHLI_V4(-0.0), f1), 3.1415926535897932 * f2, _CMP_LT_OQ);
+        t0 = t0 - _mm256_and_pd(s, f1 / f2);
+      }
+    }
+    wd = SHLI_V4SEL(_mm256_cmp_pd(f2, 1.0e-2 * d0, _CMP_GT_OQ),
+                    _mm256_min_pd(_mm256_sqrt_pd(d0 / f2), SHLI_V4(10.0)), SHLI_V4(10.0));
+    wd = _mm256_max_pd(wd, SHLI_V4(1.0e-7));
+    _mm256_storeu_pd(w[3], bx);
+    _mm256_storeu_pd(w[4], by);
+    _mm256_storeu_pd(w[5], bz);
+    for (k = 0; k < 2; ++k) { /* sa, sb: asinh(-t0 / wd), asinh((phi - t0) / wd) */
+      s = (phi - t0) / wd;
+      if (k == 0) {
+        s = -t0 / wd;
+      }
+      d = _mm256_andnot_pd(SHLI_V4(-0.0), s);
+      _mm256_storeu_pd(w[6 + k], _mm256_or_pd(_mm256_and_pd(SHLI_V4(-0.0), s),
+                                              shli_log4(d + _mm256_sqrt_pd(s * s + 1.0))));
+    }
+    _mm256_storeu_pd(w[8], t0);
+    _mm256_storeu_pd(w[9], wd);
+    _mm256_storeu_pd(w[10], se);
+    for (k = 0; k < 4 && i + k < nc; ++k) {
+      if (w[10][k] > 1.0e-30) {
+        shli_ggx_side4(w[6][k], w[7][k], w[8][k], w[9][k], w[0][k], w[1][k], w[2][k], w[3][k],
+                       w[4][k], w[5][k], vx, vy, vz, nx, ny, nz, a2, gx, gy, gz, i1, al, ndf,
+                       io_am);
+      }
+    }
+  }
+}
 #endif
 
 /* The remainder's integral over a spherical triangle: out_q[0] degree 5 (Dunavant, 7 points),
@@ -6851,7 +6971,11 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   }
   am[0] = 0.0;
   am[1] = 0.0;
-  for (i = 0; i < nc; ++i) {
+#if SHLIGHT_GGX_LANES
+  shli_ggx_edges4(px, py, pz, nc, rx, ry, rz, vx, vy, vz, nx, ny, nz, a2, gx, gy, gz, i1, al, ndf,
+                  am);
+#endif
+  for (i = 0; i < nc * (1 - SHLIGHT_GGX_LANES); ++i) { /* C with AVX2: no trips, the lanes above */
     j = i + 1;
     if (j == nc) {
       j = 0;

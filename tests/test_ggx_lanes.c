@@ -12,7 +12,7 @@
 #include "ref/ggxcases.h"
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
-#ifndef shli_ggx_side
+#if !SHLIGHT_GGX_LANES
 #error "test_ggx_lanes.c needs the edge lanes: build with -mavx2 -mfma (-march=x86-64-v3)"
 #endif
 
