@@ -6387,109 +6387,6 @@ SHLIGHT_ALWAYS_INLINE static inline void shli_sincos4(shli_v4d t, shli_v4d *out_
   *out_s = _mm256_xor_pd(SHLI_V4SEL(q1, c, s), SHLI_V4SG(SHLI_V4I(u), 62));
   *out_c = _mm256_xor_pd(SHLI_V4SEL(q1, s, c), SHLI_V4SG(SHLI_V4I(u + 1.0), 62));
 }
-/* shli_ggx_side in lanes (the same arguments; its sums in another order) */
-SHLIGHT_CPU_INLINE void shli_ggx_side4(shli_real sa, shli_real sb, shli_real t0, shli_real wd,
-                                       shli_real ax, shli_real ay, shli_real az, shli_real bx,
-                                       shli_real by, shli_real bz, shli_real vx, shli_real vy,
-                                       shli_real vz, shli_real nx, shli_real ny, shli_real nz,
-                                       shli_real a2, shli_real gx, shli_real gy, shli_real gz,
-                                       shli_real i1, shli_real al, int ndf, shli_real *io_am) {
-  /* Gauss-Legendre nodes, weights (4 and 5 per side); shli_beck_i's fit */
-  static const double xw[2][10] = {{-.86113631159405258, -.33998104358485626, .33998104358485626,
-                                    .86113631159405258, 0, .34785484513745386, .65214515486254614,
-                                    .65214515486254614, .34785484513745386, 0},
-                                   {-.90617984593866399, -.53846931010568309, 0, .53846931010568309,
-                                    .90617984593866399, .23692688505618909, .47862867049936647,
-                                    .56888888888888889, .47862867049936647, .23692688505618909}};
-  static const double bk[14] = {
-      .6384891907791029,      -.046381913173553224,   -.08301519969842093,   .08202562922023758,
-      -.027109944299521422,   -.004016780184587048,   .004359972791898658,   .0006349526378748344,
-      -.0007155524025357445,  -.00024355655667775413, 7.319183804664685e-05, .00017624229959215334,
-      -.00010318949224549979, 1.653978468591848e-05};
-  double ns[12];
-  double nw[12];
-  shli_real gn = gx * nx + gy * ny + gz * nz;
-  shli_real tx = gx - gn * nx;
-  shli_real ty = gy - gn * ny;
-  shli_real tz = gz - gn * nz;
-  shli_real px = ny * vz - nz * vy, py = nz * vx - nx * vz, pz = nx * vy - ny * vx; /* n x v */
-  shli_real rx = ty * vz - tz * vy, ry = tz * vx - tx * vz, rz = tx * vy - ty * vx; /* t x v */
-  shli_real ex = ay * bz - az * by, ey = az * bx - ax * bz, ez = ax * by - ay * bx;
-  shli_real an1 = ax * px + ay * py + az * pz, bn1 = bx * px + by * py + bz * pz;
-  shli_real at1 = ax * rx + ay * ry + az * rz, bt1 = bx * rx + by * ry + bz * rz;
-  shli_real en = ex * nx + ey * ny + ez * nz, et = ex * tx + ey * ty + ez * tz;
-  shli_real lo, hl;
-  shli_v4d sm[2] = {SHLI_V4(0.0), SHLI_V4(0.0)}; /* A and M1.g */
-  shli_v4d jw, ct, st, qx, qy, qz, qn, qq, qxy, dn, cn, th, it, m, u, e;
-  int g = ndf != 0 || al < 0.02; /* 4 + g nodes per side */
-  int cnt = 0, j, k;
-  for (k = 0; k < 2; ++k) { /* [sa, 0] and [0, sb] across s = 0, else [sa, sb] */
-    lo = k == 0 ? sa : 0.0;
-    hl = k == 0 && sb > 0.0 && sa < 0.0 ? -0.5 * sa : 0.5 * (sb - lo);
-    if (k == 1 && !(sb > 0.0 && sa < 0.0)) {
-      hl = 0.0;
-    }
-    if (hl > 0.0) { /* 4 nodes, the fifth (g = 1) after them */
-      _mm256_storeu_pd(ns + cnt, lo + hl * (_mm256_loadu_pd(xw[g]) + 1.0));
-      _mm256_storeu_pd(nw + cnt, _mm256_loadu_pd(xw[g] + 5) * (hl * 0.5 * wd));
-      ns[cnt + 4] = lo + hl * (xw[g][4] + 1.0);
-      nw[cnt + 4] = xw[g][9] * hl * 0.5 * wd;
-      cnt = cnt + 4 + g;
-    }
-  }
-  for (j = cnt; (j & 3) != 0; ++j) { /* idle lanes: weight 0 */
-    ns[j] = ns[0];
-    nw[j] = 0.0;
-  }
-  for (j = 0; j < cnt; j += 4) {
-    e = shli_exp4(_mm256_loadu_pd(ns + j));
-    jw = _mm256_loadu_pd(nw + j) * (e + 1.0 / e);
-    shli_sincos4(t0 + 0.5 * wd * (e - 1.0 / e), &st, &ct);
-    qx = ct * ax + st * bx + vx;
-    qy = ct * ay + st * by + vy;
-    qz = ct * az + st * bz + vz;
-    qn = qx * nx + qy * ny + qz * nz;
-    qq = qx * qx + qy * qy + qz * qz;
-    cn = en + ct * bn1 - st * an1;
-    qxy = _mm256_max_pd(qq - qn * qn, SHLI_V4(0.0));
-    dn = qxy + a2 * qn * qn;
-    th = qn / _mm256_sqrt_pd(qq);
-    if (ndf == 0) {
-      u = (1.0 - a2) * th * th; /* J(u), shli_ggx_j: the series below 0.1 */
-      m = SHLI_V4(13.0 / 27.0);
-      for (k = 12; k > 0; --k) {
-        m = (double)k / (double)(2 * k + 1) + u * m;
-      }
-      e = _mm256_sqrt_pd(u);
-      it = qq / dn;
-      e = (it - 0.5 * shli_log4((1.0 + e) * (1.0 + e) * it) / e) / (2.0 * u);
-      it = th * th * th * SHLI_V4SEL(SHLI_V4CMP(u, LT, 0.1), m, e);
-      m = cn / dn;
-    } else { /* shli_ggx_side's Beckmann branch and shli_beck_i */
-      dn = _mm256_and_pd(SHLI_V4CMP(qn, GT, 0.0), dn);
-      u = qxy / (a2 * qn * qn);
-      e = shli_exp4(-u);
-      m = 1.0 / 120.0 - u * (1.0 / 720.0 - u * (1.0 / 5040.0));
-      m = 0.5 - u * (1.0 / 6.0 - u * (1.0 / 24.0 - u * m));
-      m = cn * SHLI_V4SEL(SHLI_V4CMP(u, LT, 0.1), (1.0 - u * m) / (a2 * qn * qn), (1.0 - e) / qxy);
-      u = al * th;
-      qz = (1.0 - 2.0 * u) / (1.0 + 2.0 * u);
-      it = SHLI_V4(bk[13]);
-      for (k = 12; k >= 0; --k) {
-        it = bk[k] + qz * it;
-      }
-      it = 1.7724538509055160 * th * e * it / (a2 * (u + 2.0));
-    }
-    e = _mm256_and_pd(SHLI_V4CMP(dn, GT, 0.0), SHLI_V4CMP(qq, GT, 0.0));
-    sm[0] = sm[0] + _mm256_and_pd(e, jw * m);
-    m = -(et + ct * bt1 - st * at1) * it / (qn * qn) +
-        _mm256_and_pd(_mm256_cmp_pd(qxy, 1.0e-30 * qq, _CMP_GT_OQ), gn * (it - i1) * cn / qxy);
-    sm[1] = sm[1] + _mm256_and_pd(e, jw * m);
-  }
-  sm[0] = _mm256_hadd_pd(sm[0], sm[1]); /* (A0 + A1, M0 + M1, A2 + A3, M2 + M3) */
-  io_am[0] = io_am[0] + sm[0][0] + sm[0][2];
-  io_am[1] = io_am[1] + sm[0][1] + sm[0][3];
-}
 /* shli_atan2r in lanes (the same steps; atan2(0, 0) = 0) */
 SHLIGHT_ALWAYS_INLINE static inline shli_v4d shli_atan2_4(shli_v4d y, shli_v4d x) {
   shli_v4d ay = _mm256_andnot_pd(SHLI_V4(-0.0), y);
@@ -6514,19 +6411,41 @@ SHLIGHT_ALWAYS_INLINE static inline shli_v4d shli_atan2_4(shli_v4d y, shli_v4d x
   a = SHLI_V4SEL(SHLI_V4CMP(y, LT, 0.0), -a, a);
   return _mm256_and_pd(_mm256_or_pd(SHLI_V4CMP(ax, GT, 0.0), SHLI_V4CMP(ay, GT, 0.0)), a);
 }
-/* shli_mf_taylor's edge loop in lanes: each edge's setup (its arc, the grading about the
-   integrand's peak) for 4 edges at a time, then its nodes by shli_ggx_side4 */
+/* shli_mf_taylor's edge loop in lanes: the setup (the edge's arc, the grading about the
+   integrand's peak) of 4 edges at a time, then an edge's Gauss nodes 4 at a time
+   (shli_ggx_side); the same algebra and polynomials, the sums in another order */
 SHLIGHT_CPU_INLINE void shli_ggx_edges4(const shli_real *px, const shli_real *py,
                                         const shli_real *pz, int nc, shli_real rx, shli_real ry,
                                         shli_real rz, shli_real vx, shli_real vy, shli_real vz,
                                         shli_real nx, shli_real ny, shli_real nz, shli_real a2,
                                         shli_real gx, shli_real gy, shli_real gz, shli_real i1,
                                         shli_real al, int ndf, shli_real *io_am) {
-  double w[12][4]; /* per lane: a, b (the tangent), sa, sb, t0, wd */
-  shli_v4d ax, ay, az, bx, by, bz, ex, ey, ez, se, phi, t0, ct, st, qx, qy, qz, dx, dy, dz, d, q;
-  shli_v4d d0, f1, f2, wd, s;
+  /* Gauss-Legendre nodes, weights (4 and 5 per side); shli_beck_i's fit */
+  static const double xw[2][10] = {{-.86113631159405258, -.33998104358485626, .33998104358485626,
+                                    .86113631159405258, 0, .34785484513745386, .65214515486254614,
+                                    .65214515486254614, .34785484513745386, 0},
+                                   {-.90617984593866399, -.53846931010568309, 0, .53846931010568309,
+                                    .90617984593866399, .23692688505618909, .47862867049936647,
+                                    .56888888888888889, .47862867049936647, .23692688505618909}};
+  static const double bk[14] = {
+      .6384891907791029,      -.046381913173553224,   -.08301519969842093,   .08202562922023758,
+      -.027109944299521422,   -.004016780184587048,   .004359972791898658,   .0006349526378748344,
+      -.0007155524025357445,  -.00024355655667775413, 7.319183804664685e-05, .00017624229959215334,
+      -.00010318949224549979, 1.653978468591848e-05};
+  double w[11][4]; /* per lane: a, b (the tangent), sa, sb, t0, wd, |a x b| */
+  double ns[12];
+  double nw[12];
   shli_real c = 1.0 - a2;
-  int i, j, k;
+  shli_real gn = gx * nx + gy * ny + gz * nz;
+  shli_real tx = gx - gn * nx, ty = gy - gn * ny, tz = gz - gn * nz;
+  shli_real ux = ny * vz - nz * vy, uy = nz * vx - nx * vz, uz = nx * vy - ny * vx; /* n x v */
+  shli_real hx = ty * vz - tz * vy, hy = tz * vx - tx * vz, hz = tx * vy - ty * vx; /* t x v */
+  shli_real lo, hl;
+  shli_v4d ax, ay, az, bx, by, bz, ex, ey, ez, se, phi, t0, ct, st, qx, qy, qz, dx, dy, dz, d, q;
+  shli_v4d d0, f1, f2, wd, s, jw, qn, qq, qxy, cn, th, it, m, u, e;
+  shli_v4d sm[2] = {SHLI_V4(0.0), SHLI_V4(0.0)}; /* A and M1.g */
+  int g = ndf != 0 || al < 0.02;                 /* 4 + g nodes per side */
+  int i, j, k, l, cnt;
   for (i = 0; i < nc; i += 4) {
     for (k = 0; k < 4; ++k) { /* edge i + k from vertex j to j + 1 (idle lanes: the last edge) */
       j = i + k < nc ? i + k : nc - 1;
@@ -6595,14 +6514,95 @@ SHLIGHT_CPU_INLINE void shli_ggx_edges4(const shli_real *px, const shli_real *py
     _mm256_storeu_pd(w[8], t0);
     _mm256_storeu_pd(w[9], wd);
     _mm256_storeu_pd(w[10], se);
-    for (k = 0; k < 4 && i + k < nc; ++k) {
-      if (w[10][k] > 1.0e-30) {
-        shli_ggx_side4(w[6][k], w[7][k], w[8][k], w[9][k], w[0][k], w[1][k], w[2][k], w[3][k],
-                       w[4][k], w[5][k], vx, vy, vz, nx, ny, nz, a2, gx, gy, gz, i1, al, ndf,
-                       io_am);
+    for (l = 0; l < 4 && i + l < nc; ++l) { /* the edges' nodes (shli_ggx_side) */
+      if (!(w[10][l] > 1.0e-30)) {
+        continue;
+      }
+      ax = SHLI_V4(w[0][l]);
+      ay = SHLI_V4(w[1][l]);
+      az = SHLI_V4(w[2][l]);
+      bx = SHLI_V4(w[3][l]);
+      by = SHLI_V4(w[4][l]);
+      bz = SHLI_V4(w[5][l]);
+      ex = ay * bz - az * by;
+      ey = az * bx - ax * bz;
+      ez = ax * by - ay * bx;
+      d0 = ex * nx + ey * ny + ez * nz; /* e.n, e.t */
+      f1 = ex * tx + ey * ty + ez * tz;
+      dx = ax * ux + ay * uy + az * uz; /* a.(n x v), b.(n x v) */
+      dy = bx * ux + by * uy + bz * uz;
+      dz = ax * hx + ay * hy + az * hz; /* a.(t x v), b.(t x v) */
+      f2 = bx * hx + by * hy + bz * hz;
+      cnt = 0;
+      for (k = 0; k < 2; ++k) { /* [sa, 0] and [0, sb] across s = 0, else [sa, sb] */
+        lo = k == 0 ? w[6][l] : 0.0;
+        hl = k == 0 && w[7][l] > 0.0 && w[6][l] < 0.0 ? -0.5 * w[6][l] : 0.5 * (w[7][l] - lo);
+        if (k == 1 && !(w[7][l] > 0.0 && w[6][l] < 0.0)) {
+          hl = 0.0;
+        }
+        if (hl > 0.0) { /* 4 nodes, the fifth (g = 1) after them */
+          _mm256_storeu_pd(ns + cnt, lo + hl * (_mm256_loadu_pd(xw[g]) + 1.0));
+          _mm256_storeu_pd(nw + cnt, _mm256_loadu_pd(xw[g] + 5) * (hl * 0.5 * w[9][l]));
+          ns[cnt + 4] = lo + hl * (xw[g][4] + 1.0);
+          nw[cnt + 4] = xw[g][9] * hl * 0.5 * w[9][l];
+          cnt = cnt + 4 + g;
+        }
+      }
+      for (j = cnt; (j & 3) != 0; ++j) { /* idle lanes: weight 0 */
+        ns[j] = ns[0];
+        nw[j] = 0.0;
+      }
+      for (j = 0; j < cnt; j += 4) {
+        e = shli_exp4(_mm256_loadu_pd(ns + j));
+        jw = _mm256_loadu_pd(nw + j) * (e + 1.0 / e);
+        shli_sincos4(w[8][l] + 0.5 * w[9][l] * (e - 1.0 / e), &st, &ct);
+        qx = ct * ax + st * bx + vx;
+        qy = ct * ay + st * by + vy;
+        qz = ct * az + st * bz + vz;
+        qn = qx * nx + qy * ny + qz * nz;
+        qq = qx * qx + qy * qy + qz * qz;
+        cn = d0 + ct * dy - st * dx;
+        qxy = _mm256_max_pd(qq - qn * qn, SHLI_V4(0.0));
+        d = qxy + a2 * qn * qn;
+        th = qn / _mm256_sqrt_pd(qq);
+        if (ndf == 0) {
+          u = (1.0 - a2) * th * th; /* J(u), shli_ggx_j: the series below 0.1 */
+          m = SHLI_V4(13.0 / 27.0);
+          for (k = 12; k > 0; --k) {
+            m = (double)k / (double)(2 * k + 1) + u * m;
+          }
+          e = _mm256_sqrt_pd(u);
+          it = qq / d;
+          e = (it - 0.5 * shli_log4((1.0 + e) * (1.0 + e) * it) / e) / (2.0 * u);
+          it = th * th * th * SHLI_V4SEL(SHLI_V4CMP(u, LT, 0.1), m, e);
+          m = cn / d;
+        } else { /* the Beckmann branch and shli_beck_i */
+          d = _mm256_and_pd(SHLI_V4CMP(qn, GT, 0.0), d);
+          u = qxy / (a2 * qn * qn);
+          e = shli_exp4(-u);
+          m = 1.0 / 120.0 - u * (1.0 / 720.0 - u * (1.0 / 5040.0));
+          m = 0.5 - u * (1.0 / 6.0 - u * (1.0 / 24.0 - u * m));
+          m = cn *
+              SHLI_V4SEL(SHLI_V4CMP(u, LT, 0.1), (1.0 - u * m) / (a2 * qn * qn), (1.0 - e) / qxy);
+          u = al * th;
+          q = (1.0 - 2.0 * u) / (1.0 + 2.0 * u);
+          it = SHLI_V4(bk[13]);
+          for (k = 12; k >= 0; --k) {
+            it = bk[k] + q * it;
+          }
+          it = 1.7724538509055160 * th * e * it / (a2 * (u + 2.0));
+        }
+        e = _mm256_and_pd(SHLI_V4CMP(d, GT, 0.0), SHLI_V4CMP(qq, GT, 0.0));
+        sm[0] = sm[0] + _mm256_and_pd(e, jw * m);
+        m = -(f1 + ct * f2 - st * dz) * it / (qn * qn) +
+            _mm256_and_pd(_mm256_cmp_pd(qxy, 1.0e-30 * qq, _CMP_GT_OQ), gn * (it - i1) * cn / qxy);
+        sm[1] = sm[1] + _mm256_and_pd(e, jw * m);
       }
     }
   }
+  sm[0] = _mm256_hadd_pd(sm[0], sm[1]); /* (A0 + A1, M0 + M1, A2 + A3, M2 + M3) */
+  io_am[0] = io_am[0] + sm[0][0] + sm[0][2];
+  io_am[1] = io_am[1] + sm[0][1] + sm[0][3];
 }
 #endif
 
