@@ -586,9 +586,9 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    sampler (bench/bench_ggx.c): median relative error 5e-6 to 6e-5 at roughness 0.05 to 1 (LTC:
    7e-5 to 0.11), max error / albedo <= 4.0e-3 there, 1e-2 at other roughness (measured 8.8e-3;
    grazing views, lights straddling the horizon); weakest in the last degrees before grazing (a
-   light filling the hemisphere, alpha 0.04: 0.17 % at view 85 deg, 13 % at 88). Cost: 8.2k x86
+   light filling the hemisphere, alpha 0.04: 0.17 % at view 85 deg, 13 % at 88). Cost: 7.9k x86
    instructions per quad on that sampler's mean in C with AVX2 and FMA (the edges in double
-   lanes; 5.7k to 12.6k by roughness), 12.5k portable (10.5k to 17.0k), up to ~0.4M at
+   lanes; 5.4k to 12.3k by roughness), 12.5k portable (10.5k to 17.0k), up to ~0.4M at
    the split budget. */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
@@ -629,7 +629,7 @@ SHLIGHT_INLINE float shl_polygon_ggx_fast(const float (*v)[3], int nv, const flo
    double cubature (tests/ref/arearef.h) on bench_ggx's sampler (bench/bench_beckmann.c,
    docs/area-lights.md): median relative error 3e-6 to 1e-4 at roughness 0.05 to 1, p95 below 0.7 %,
    max error / albedo <= 4.9e-2 (grazing views, lights straddling the horizon; up to 6.7e-2 in
-   test_microfacet's grazing set). Cost: 21k x86 instructions per quad with AVX2 and FMA, 26k
+   test_microfacet's grazing set). Cost: 20k x86 instructions per quad with AVX2 and FMA, 26k
    portable (shl_polygon_beckmann_subedges k = 8: ~220k).
  */
 SHLIGHT_INLINE float shl_polygon_beckmann(const float (*v)[3], int nv, const float nrm[3],
@@ -6023,7 +6023,7 @@ typedef unsigned long long shli_u64;
 #endif
 /* The microfacet polygon lights' double transcendentals (C): own polynomials, relative error below
    1e-15. (docs/derivations.md sec. 13.28) */
-/* their polynomials, for double and for the edges' double lanes (shli_ggx_side4) alike */
+/* their polynomials, for double and for the edges' double lanes (shli_ggx_edges4) alike */
 #define SHLI_MEXP_POLY(p, r, K) \
   p = K(2.08767569878681e-09); \
   p = 2.505210838544172e-08 + r * p; \

@@ -1,5 +1,5 @@
-/* test_ggx_lanes.c - the GGX / Beckmann polygon lights' edge nodes in AVX2 double lanes (the
- * C-only path of shli_mf_taylor's edges, shli_ggx_side4) against the portable kernel
+/* test_ggx_lanes.c - the GGX / Beckmann polygon lights' edges in AVX2 double lanes (the C-only
+ * path of shli_mf_taylor's edge loop, shli_ggx_edges4) against the portable kernel
  * (tests/test_ggx_portable.c, SHLIGHT_NO_SIMD), call for call: the bench's sampler (7 roughness
  * values x 250 quads of bench/bench_ggx.c), the named hard cases of tests/test_ggx.c (straddling,
  * grazing 85-88 deg, 113-deg-wide, slivers; grazing 80-88 deg straddling), a light filling the
