@@ -73,7 +73,8 @@
 /* >>options ---------------------------------------------------------------------------------
    SHLIGHT_MAX_BANDS       largest band count the functions accept (default 64; tables hold 64)
    SHLIGHT_UNROLLED_BANDS  straight-line generated code for n <= this (16); run-time loop above
-   SHLIGHT_NO_SIMD         batch evaluation without SSE2 / AVX2 / AVX-512 intrinsics
+   SHLIGHT_NO_SIMD         batch evaluation, the GGX / Beckmann polygon lights' edges without
+                           SSE2 / AVX2 / AVX-512 intrinsics
    SHLIGHT_BATCH_COMPACT   default 1: shl_sh_eval_batch runs 7..16 bands as one loop; 0 unrolls
                            it per band count (the batch at 7..16 bands 10-20 % faster when its
                            output stays in L1, at 3.5x the implementation's compile time, 7.7
@@ -553,8 +554,9 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    sampler (bench/bench_ggx.c): median relative error 5e-6 to 4e-5 at roughness 0.05 to 1 (LTC:
    7e-5 to 0.11), max error / albedo <= 3.3e-3 there, 1e-2 at other roughness (measured 6.6e-3);
    wide lights at views 85-89.9 deg mostly <= 1e-2 (3.9e-2 at 87 deg, 0.63 at 89.9 for a plane
-   through the horizon; docs/area-lights.md). Cost: 12.5k x86 instructions per quad on that
-   sampler's mean (10.4k to 17.1k by roughness), ~2M at the split budget, ~11M past 88.85 deg. */
+   through the horizon; docs/area-lights.md). Cost: 7.9k x86 instructions per quad on that
+   sampler's mean in C with AVX2 and FMA (the edges in double lanes), 12.5k portable, ~2M at the
+   split budget, ~11M past 88.85 deg. */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
 
@@ -594,8 +596,8 @@ SHLIGHT_INLINE float shl_polygon_ggx_fast(const float (*v)[3], int nv, const flo
    double cubature (tests/ref/arearef.h) on bench_ggx's sampler (bench/bench_beckmann.c,
    docs/area-lights.md): median relative error 3e-6 to 1e-4 at roughness 0.05 to 1, p95 below 0.7 %,
    max error / albedo <= 4.9e-2 (grazing views, lights straddling the horizon; up to 6.7e-2 in
-   test_microfacet's grazing set). Cost: 26k x86 instructions per quad
-   (shl_polygon_beckmann_subedges k = 8: ~220k).
+   test_microfacet's grazing set). Cost: 20k x86 instructions per quad with AVX2 and FMA, 26k
+   portable (shl_polygon_beckmann_subedges k = 8: ~220k).
  */
 SHLIGHT_INLINE float shl_polygon_beckmann(const float (*v)[3], int nv, const float nrm[3],
                                           const float view[3], float alpha);
@@ -1267,7 +1269,15 @@ typedef double shli_real;
 #define SHLIGHT_MSIN(x) shli_msincos((x), 0)
 #define SHLIGHT_MCOS(x) shli_msincos((x), 1)
 #define SHLIGHT_POLYGON_ANY 1 /* C: any nv >= 3 (fan pieces); GLSL 0: above the max gives -1 */
-#define SHLIGHT_CLIP_MAX 20   /* after two plane clips of a non-convex 8-gon (<= 2.25 nv) */
+/* 1 in C with AVX2 and FMA (GCC / Clang, not SHLIGHT_NO_SIMD): the GGX / Beckmann lights' edges
+   in double lanes (shli_ggx_edges4); GLSL 0 */
+#if !defined(SHLIGHT_NO_SIMD) && defined(__AVX2__) && defined(__FMA__) && \
+    (defined(__GNUC__) || defined(__clang__))
+#define SHLIGHT_GGX_LANES 1
+#else
+#define SHLIGHT_GGX_LANES 0
+#endif
+#define SHLIGHT_CLIP_MAX 20           /* after two plane clips of a non-convex 8-gon (<= 2.25 nv) */
 #define SHLIGHT_EDGE_STOKES_ADAPT 105 /* internal: EXACT's adaptive Stokes rule */
 #define SHLIGHT_ADAPT_LEVELS 7        /* its most halvings (128 panels of 5 nodes per half-arc) */
 #define SHLIGHT_ADAPT_TOL 1.0e-9      /* its stop: two successive levels this close (GLSL 2e-6) */
@@ -5862,6 +5872,48 @@ typedef unsigned long long shli_u64;
 #endif
 /* The microfacet polygon lights' double transcendentals (C): own polynomials, relative error below
    1e-15. (docs/derivations.md sec. 13.28) */
+/* their polynomials, for double and for the edges' double lanes (shli_ggx_edges4) alike */
+#define SHLI_MEXP_POLY(p, r, K) \
+  p = K(2.08767569878681e-09); \
+  p = 2.505210838544172e-08 + r * p; \
+  p = 2.755731922398589e-07 + r * p; \
+  p = 2.7557319223985893e-06 + r * p; \
+  p = 2.48015873015873e-05 + r * p; \
+  p = 0.0001984126984126984 + r * p; \
+  p = 0.001388888888888889 + r * p; \
+  p = 0.008333333333333333 + r * p; \
+  p = 0.041666666666666664 + r * p; \
+  p = 0.16666666666666666 + r * p; \
+  p = 0.5 + r * p; \
+  p = 1.0 + r * (1.0 + r * p)
+#define SHLI_MLOG_POLY(p, z, K) \
+  p = K(1.0 / 17.0); \
+  p = 1.0 / 15.0 + z * p; \
+  p = 1.0 / 13.0 + z * p; \
+  p = 1.0 / 11.0 + z * p; \
+  p = 1.0 / 9.0 + z * p; \
+  p = 1.0 / 7.0 + z * p; \
+  p = 0.2 + z * p; \
+  p = 1.0 / 3.0 + z * p
+#define SHLI_MLOG_END(e, s, z, p) \
+  ((e)*0.6931471803691238 + ((e)*1.9082149292705877e-10 + 2.0 * (s) + 2.0 * (s) * ((z) * (p))))
+#define SHLI_MSINCOS_POLY(s, c, r, z, K) \
+  s = K(-7.647163731819816e-13); \
+  s = 1.6059043836821613e-10 + z * s; \
+  s = -2.505210838544172e-08 + z * s; \
+  s = 2.7557319223985893e-06 + z * s; \
+  s = -0.0001984126984126984 + z * s; \
+  s = 0.008333333333333333 + z * s; \
+  s = -0.16666666666666666 + z * s; \
+  s = r + r * (z * s); \
+  c = K(4.779477332387385e-14); \
+  c = -1.1470745597729725e-11 + z * c; \
+  c = 2.08767569878681e-09 + z * c; \
+  c = -2.755731922398589e-07 + z * c; \
+  c = 2.48015873015873e-05 + z * c; \
+  c = -0.001388888888888889 + z * c; \
+  c = 0.041666666666666664 + z * c; \
+  c = 1.0 - 0.5 * z + z * z * c
 SHLIGHT_CPU_INLINE double shli_mexp(double x) {
   double kd;
   double r;
@@ -5870,18 +5922,7 @@ SHLIGHT_CPU_INLINE double shli_mexp(double x) {
   x = x < -708.0 ? -708.0 : (x > 709.0 ? 709.0 : x);
   kd = (x * 1.4426950408889634 + 6755399441055744.0) - 6755399441055744.0;
   r = x - kd * 0.6931471803691238 - kd * 1.9082149292705877e-10;
-  p = 2.08767569878681e-09;
-  p = 2.505210838544172e-08 + r * p;
-  p = 2.755731922398589e-07 + r * p;
-  p = 2.7557319223985893e-06 + r * p;
-  p = 2.48015873015873e-05 + r * p;
-  p = 0.0001984126984126984 + r * p;
-  p = 0.001388888888888889 + r * p;
-  p = 0.008333333333333333 + r * p;
-  p = 0.041666666666666664 + r * p;
-  p = 0.16666666666666666 + r * p;
-  p = 0.5 + r * p;
-  p = 1.0 + r * (1.0 + r * p);
+  SHLI_MEXP_POLY(p, r, SHLIGHT_REAL);
   b = (shli_u64)((int)kd + 1023) << 52;
   memcpy(&r, &b, sizeof r);
   return p * r;
@@ -5903,16 +5944,8 @@ SHLIGHT_CPU_INLINE double shli_mlog(double x) {
   }
   s = (m - 1.0) / (m + 1.0);
   z = s * s;
-  p = 1.0 / 17.0;
-  p = 1.0 / 15.0 + z * p;
-  p = 1.0 / 13.0 + z * p;
-  p = 1.0 / 11.0 + z * p;
-  p = 1.0 / 9.0 + z * p;
-  p = 1.0 / 7.0 + z * p;
-  p = 0.2 + z * p;
-  p = 1.0 / 3.0 + z * p;
-  return (double)e * 0.6931471803691238 +
-         ((double)e * 1.9082149292705877e-10 + 2.0 * s + 2.0 * s * (z * p));
+  SHLI_MLOG_POLY(p, z, SHLIGHT_REAL);
+  return SHLI_MLOG_END((double)e, s, z, p);
 }
 /* sin (odd 0) or cos (odd 1) of t: r and the quadrant, then the pair (sin r, cos r) */
 SHLIGHT_CPU_INLINE double shli_msincos(double t, int odd) {
@@ -5922,22 +5955,7 @@ SHLIGHT_CPU_INLINE double shli_msincos(double t, int odd) {
   double s;
   double c;
   int q = ((int)kd + odd) & 3;
-  s = -7.647163731819816e-13;
-  s = 1.6059043836821613e-10 + z * s;
-  s = -2.505210838544172e-08 + z * s;
-  s = 2.7557319223985893e-06 + z * s;
-  s = -0.0001984126984126984 + z * s;
-  s = 0.008333333333333333 + z * s;
-  s = -0.16666666666666666 + z * s;
-  s = r + r * (z * s);
-  c = 4.779477332387385e-14;
-  c = -1.1470745597729725e-11 + z * c;
-  c = 2.08767569878681e-09 + z * c;
-  c = -2.755731922398589e-07 + z * c;
-  c = 2.48015873015873e-05 + z * c;
-  c = -0.001388888888888889 + z * c;
-  c = 0.041666666666666664 + z * c;
-  c = 1.0 - 0.5 * z + z * z * c;
+  SHLI_MSINCOS_POLY(s, c, r, z, SHLIGHT_REAL);
   r = (q & 1) != 0 ? c : s;
   return (q & 2) != 0 ? -r : r;
 }
@@ -6169,6 +6187,273 @@ SHLIGHT_INLINE void shli_ggx_side(shli_real sa, shli_real sb, shli_real t0, shli
     }
   }
 }
+
+/* SHLIGHT_GGX_LANES: shli_mf_taylor's edges in double lanes, the setup of 4 edges at a time and
+   an edge's Gauss nodes 4 at a time, the portable kernels' algebra and polynomials
+   (tests/test_ggx_lanes.c holds the two together) */
+#if SHLIGHT_GGX_LANES
+#include <immintrin.h>
+typedef __m256d shli_v4d;
+#define SHLI_V4(x) _mm256_set1_pd(x)
+#define SHLI_V4SEL(m, a, b) _mm256_blendv_pd((b), (a), (m)) /* m ? a : b, by m's sign bit */
+#define SHLI_V4CMP(a, op, b) _mm256_cmp_pd((a), SHLI_V4(b), _CMP_##op##_OQ)
+#define SHLI_V4SG(q, b) _mm256_and_pd((shli_v4d)_mm256_slli_epi64((q), b), SHLI_V4(-0.0))
+#define SHLI_V4I(x) ((__m256i)(x))
+SHLIGHT_ALWAYS_INLINE static inline shli_v4d shli_exp4(shli_v4d x) {
+  shli_v4d t;
+  shli_v4d p;
+  x = _mm256_min_pd(_mm256_max_pd(x, SHLI_V4(-708.0)), SHLI_V4(709.0));
+  t = x * 1.4426950408889634 + 6755399441056767.0; /* 1.5 2^52 + 1023: 2^k's exponent bits */
+  p = t - 6755399441056767.0;
+  x = x - p * 0.6931471803691238 - p * 1.9082149292705877e-10;
+  SHLI_MEXP_POLY(p, x, SHLI_V4);
+  return p * (shli_v4d)_mm256_slli_epi64(SHLI_V4I(t), 52);
+}
+SHLIGHT_ALWAYS_INLINE static inline shli_v4d shli_log4(shli_v4d x) { /* x > 0 */
+  shli_v4d m = _mm256_or_pd(_mm256_andnot_pd(SHLI_V4(-HUGE_VAL), x), SHLI_V4(1.0));
+  shli_v4d e =
+      (shli_v4d)(_mm256_srli_epi64(SHLI_V4I(x), 52) | SHLI_V4I(SHLI_V4(4503599627370496.0)));
+  shli_v4d g = SHLI_V4CMP(m, GT, 1.4142135623730951);
+  shli_v4d z;
+  m = SHLI_V4SEL(g, 0.5 * m, m);
+  e = e - 4503599627371519.0 + _mm256_and_pd(g, SHLI_V4(1.0)); /* 2^52 + 1023 */
+  m = (m - 1.0) / (m + 1.0);
+  z = m * m;
+  SHLI_MLOG_POLY(x, z, SHLI_V4);
+  return SHLI_MLOG_END(e, m, z, x);
+}
+SHLIGHT_ALWAYS_INLINE static inline void shli_sincos4(shli_v4d t, shli_v4d *out_s,
+                                                      shli_v4d *out_c) {
+  shli_v4d u = t * 0.63661977236758134 + 6755399441055744.0; /* the quadrant in the low bits */
+  shli_v4d r = u - 6755399441055744.0;
+  shli_v4d q1 = (shli_v4d)_mm256_slli_epi64(SHLI_V4I(u), 63);
+  shli_v4d z;
+  shli_v4d s;
+  shli_v4d c;
+  r = t - r * 1.5707963267341256 - r * 6.077100506506192e-11;
+  z = r * r;
+  SHLI_MSINCOS_POLY(s, c, r, z, SHLI_V4);
+  *out_s = _mm256_xor_pd(SHLI_V4SEL(q1, c, s), SHLI_V4SG(SHLI_V4I(u), 62));
+  *out_c = _mm256_xor_pd(SHLI_V4SEL(q1, s, c), SHLI_V4SG(SHLI_V4I(u + 1.0), 62));
+}
+/* shli_atan2r in lanes (the same steps; atan2(0, 0) = 0) */
+SHLIGHT_ALWAYS_INLINE static inline shli_v4d shli_atan2_4(shli_v4d y, shli_v4d x) {
+  shli_v4d ay = _mm256_andnot_pd(SHLI_V4(-0.0), y);
+  shli_v4d ax = _mm256_andnot_pd(SHLI_V4(-0.0), x);
+  shli_v4d g = _mm256_cmp_pd(ay, ax, _CMP_GT_OQ);
+  shli_v4d t = SHLI_V4SEL(g, ax / ay, ay / ax);
+  shli_v4d t2;
+  shli_v4d a;
+  t = t / (1.0 + _mm256_sqrt_pd(1.0 + t * t));
+  t = t / (1.0 + _mm256_sqrt_pd(1.0 + t * t));
+  t2 = t * t;
+  a = SHLI_V4(-0.066666666666666667);
+  a = 0.076923076923076923 + t2 * a;
+  a = -0.090909090909090909 + t2 * a;
+  a = 0.11111111111111111 + t2 * a;
+  a = -0.14285714285714286 + t2 * a;
+  a = 0.2 + t2 * a;
+  a = -0.33333333333333333 + t2 * a;
+  a = 4.0 * (t + t * (t2 * a));
+  a = SHLI_V4SEL(g, 1.5707963267948966 - a, a);
+  a = SHLI_V4SEL(SHLI_V4CMP(x, LT, 0.0), 3.1415926535897932 - a, a);
+  a = SHLI_V4SEL(SHLI_V4CMP(y, LT, 0.0), -a, a);
+  return _mm256_and_pd(_mm256_or_pd(SHLI_V4CMP(ax, GT, 0.0), SHLI_V4CMP(ay, GT, 0.0)), a);
+}
+/* shli_mf_taylor's edge loop in lanes: the setup (the edge's arc, the grading about the
+   integrand's peak) of 4 edges at a time, then an edge's Gauss nodes 4 at a time
+   (shli_ggx_side); the same algebra and polynomials, the sums in another order */
+SHLIGHT_CPU_INLINE void shli_ggx_edges4(const shli_real *px, const shli_real *py,
+                                        const shli_real *pz, int nc, shli_real rx, shli_real ry,
+                                        shli_real rz, shli_real vx, shli_real vy, shli_real vz,
+                                        shli_real nx, shli_real ny, shli_real nz, shli_real a2,
+                                        shli_real gx, shli_real gy, shli_real gz, shli_real i1,
+                                        shli_real al, int ndf, shli_real *io_am) {
+  /* Gauss-Legendre nodes, weights (4 and 5 per side); shli_beck_i's fit */
+  static const double xw[2][10] = {{-.86113631159405258, -.33998104358485626, .33998104358485626,
+                                    .86113631159405258, 0, .34785484513745386, .65214515486254614,
+                                    .65214515486254614, .34785484513745386, 0},
+                                   {-.90617984593866399, -.53846931010568309, 0, .53846931010568309,
+                                    .90617984593866399, .23692688505618909, .47862867049936647,
+                                    .56888888888888889, .47862867049936647, .23692688505618909}};
+  static const double bk[14] = {
+      .6384891907791029,      -.046381913173553224,   -.08301519969842093,   .08202562922023758,
+      -.027109944299521422,   -.004016780184587048,   .004359972791898658,   .0006349526378748344,
+      -.0007155524025357445,  -.00024355655667775413, 7.319183804664685e-05, .00017624229959215334,
+      -.00010318949224549979, 1.653978468591848e-05};
+  double w[11][4]; /* per lane: a, b (the tangent), sa, sb, t0, wd, |a x b| */
+  double ns[12];
+  double nw[12];
+  shli_real c = 1.0 - a2;
+  shli_real gn = gx * nx + gy * ny + gz * nz;
+  shli_real tx = gx - gn * nx, ty = gy - gn * ny, tz = gz - gn * nz;
+  shli_real ux = ny * vz - nz * vy, uy = nz * vx - nx * vz, uz = nx * vy - ny * vx; /* n x v */
+  shli_real hx = ty * vz - tz * vy, hy = tz * vx - tx * vz, hz = tx * vy - ty * vx; /* t x v */
+  shli_real lo, hl;
+  shli_v4d ax, ay, az, bx, by, bz, ex, ey, ez, se, phi, t0, ct, st, qx, qy, qz, dx, dy, dz, d, q;
+  shli_v4d d0, f1, f2, wd, s, jw, qn, qq, qxy, cn, th, it, m, u, e;
+  shli_v4d sm[2] = {SHLI_V4(0.0), SHLI_V4(0.0)}; /* A and M1.g */
+  int g = ndf != 0 || al < 0.02;                 /* 4 + g nodes per side */
+  int i, j, k, l, cnt;
+  for (i = 0; i < nc; i += 4) {
+    for (k = 0; k < 4; ++k) { /* edge i + k from vertex j to j + 1 (idle lanes: the last edge) */
+      j = i + k < nc ? i + k : nc - 1;
+      w[0][k] = px[j];
+      w[1][k] = py[j];
+      w[2][k] = pz[j];
+      j = j + 1 < nc ? j + 1 : 0;
+      w[3][k] = px[j];
+      w[4][k] = py[j];
+      w[5][k] = pz[j];
+    }
+    ax = _mm256_loadu_pd(w[0]);
+    ay = _mm256_loadu_pd(w[1]);
+    az = _mm256_loadu_pd(w[2]);
+    bx = _mm256_loadu_pd(w[3]);
+    by = _mm256_loadu_pd(w[4]);
+    bz = _mm256_loadu_pd(w[5]);
+    ex = ay * bz - az * by;
+    ey = az * bx - ax * bz;
+    ez = ax * by - ay * bx;
+    se = _mm256_sqrt_pd(ex * ex + ey * ey + ez * ez);
+    phi = shli_atan2_4(se, ax * bx + ay * by + az * bz);
+    ex = ex / se;
+    ey = ey / se;
+    ez = ez / se;
+    bx = ey * az - ez * ay;
+    by = ez * ax - ex * az;
+    bz = ex * ay - ey * ax;
+    t0 = shli_atan2_4(rx * bx + ry * by + rz * bz, rx * ax + ry * ay + rz * az);
+    t0 = t0 + _mm256_and_pd(_mm256_cmp_pd(t0, 0.5 * phi - 3.1415926535897932, _CMP_LT_OQ),
+                            SHLI_V4(6.2831853071795865));
+    for (k = 0; k < 2; ++k) { /* the Newton step (k = 0), then d0 and f2 where it went */
+      shli_sincos4(t0, &st, &ct);
+      qx = ct * ax + st * bx + vx;
+      qy = ct * ay + st * by + vy;
+      qz = ct * az + st * bz + vz;
+      dx = ct * bx - st * ax;
+      dy = ct * by - st * ay;
+      dz = ct * bz - st * az;
+      d = qx * nx + qy * ny + qz * nz;
+      q = dx * nx + dy * ny + dz * nz;
+      d0 = qx * qx + qy * qy + qz * qz - c * d * d;
+      f1 = qx * dx + qy * dy + qz * dz - c * d * q;
+      f2 = dx * dx + dy * dy + dz * dz - c * q * q - d0 +
+           (vx * qx + vy * qy + vz * qz - c * (vx * nx + vy * ny + vz * nz) * d);
+      if (k == 0) {
+        s = _mm256_cmp_pd(_mm256_andnot_pd(SHLI_V4(-0.0), f1), 3.1415926535897932 * f2, _CMP_LT_OQ);
+        t0 = t0 - _mm256_and_pd(s, f1 / f2);
+      }
+    }
+    wd = SHLI_V4SEL(_mm256_cmp_pd(f2, 1.0e-2 * d0, _CMP_GT_OQ),
+                    _mm256_min_pd(_mm256_sqrt_pd(d0 / f2), SHLI_V4(10.0)), SHLI_V4(10.0));
+    wd = _mm256_max_pd(wd, SHLI_V4(1.0e-7));
+    _mm256_storeu_pd(w[3], bx);
+    _mm256_storeu_pd(w[4], by);
+    _mm256_storeu_pd(w[5], bz);
+    for (k = 0; k < 2; ++k) { /* sa, sb: asinh(-t0 / wd), asinh((phi - t0) / wd) */
+      s = (phi - t0) / wd;
+      if (k == 0) {
+        s = -t0 / wd;
+      }
+      d = _mm256_andnot_pd(SHLI_V4(-0.0), s);
+      _mm256_storeu_pd(w[6 + k], _mm256_or_pd(_mm256_and_pd(SHLI_V4(-0.0), s),
+                                              shli_log4(d + _mm256_sqrt_pd(s * s + 1.0))));
+    }
+    _mm256_storeu_pd(w[8], t0);
+    _mm256_storeu_pd(w[9], wd);
+    _mm256_storeu_pd(w[10], se);
+    for (l = 0; l < 4 && i + l < nc; ++l) { /* the edges' nodes (shli_ggx_side) */
+      if (!(w[10][l] > 1.0e-30)) {
+        continue;
+      }
+      ax = SHLI_V4(w[0][l]);
+      ay = SHLI_V4(w[1][l]);
+      az = SHLI_V4(w[2][l]);
+      bx = SHLI_V4(w[3][l]);
+      by = SHLI_V4(w[4][l]);
+      bz = SHLI_V4(w[5][l]);
+      ex = ay * bz - az * by;
+      ey = az * bx - ax * bz;
+      ez = ax * by - ay * bx;
+      d0 = ex * nx + ey * ny + ez * nz; /* e.n, e.t */
+      f1 = ex * tx + ey * ty + ez * tz;
+      dx = ax * ux + ay * uy + az * uz; /* a.(n x v), b.(n x v) */
+      dy = bx * ux + by * uy + bz * uz;
+      dz = ax * hx + ay * hy + az * hz; /* a.(t x v), b.(t x v) */
+      f2 = bx * hx + by * hy + bz * hz;
+      cnt = 0;
+      for (k = 0; k < 2; ++k) { /* [sa, 0] and [0, sb] across s = 0, else [sa, sb] */
+        lo = k == 0 ? w[6][l] : 0.0;
+        hl = k == 0 && w[7][l] > 0.0 && w[6][l] < 0.0 ? -0.5 * w[6][l] : 0.5 * (w[7][l] - lo);
+        if (k == 1 && !(w[7][l] > 0.0 && w[6][l] < 0.0)) {
+          hl = 0.0;
+        }
+        if (hl > 0.0) { /* 4 nodes, the fifth (g = 1) after them */
+          _mm256_storeu_pd(ns + cnt, lo + hl * (_mm256_loadu_pd(xw[g]) + 1.0));
+          _mm256_storeu_pd(nw + cnt, _mm256_loadu_pd(xw[g] + 5) * (hl * 0.5 * w[9][l]));
+          ns[cnt + 4] = lo + hl * (xw[g][4] + 1.0);
+          nw[cnt + 4] = xw[g][9] * hl * 0.5 * w[9][l];
+          cnt = cnt + 4 + g;
+        }
+      }
+      for (j = cnt; (j & 3) != 0; ++j) { /* idle lanes: weight 0 */
+        ns[j] = ns[0];
+        nw[j] = 0.0;
+      }
+      for (j = 0; j < cnt; j += 4) {
+        e = shli_exp4(_mm256_loadu_pd(ns + j));
+        jw = _mm256_loadu_pd(nw + j) * (e + 1.0 / e);
+        shli_sincos4(w[8][l] + 0.5 * w[9][l] * (e - 1.0 / e), &st, &ct);
+        qx = ct * ax + st * bx + vx;
+        qy = ct * ay + st * by + vy;
+        qz = ct * az + st * bz + vz;
+        qn = qx * nx + qy * ny + qz * nz;
+        qq = qx * qx + qy * qy + qz * qz;
+        cn = d0 + ct * dy - st * dx;
+        qxy = _mm256_max_pd(qq - qn * qn, SHLI_V4(0.0));
+        d = qxy + a2 * qn * qn;
+        th = qn / _mm256_sqrt_pd(qq);
+        if (ndf == 0) {
+          u = (1.0 - a2) * th * th; /* J(u), shli_ggx_j: the series below 0.1 */
+          m = SHLI_V4(13.0 / 27.0);
+          for (k = 12; k > 0; --k) {
+            m = (double)k / (double)(2 * k + 1) + u * m;
+          }
+          e = _mm256_sqrt_pd(u);
+          it = qq / d;
+          e = (it - 0.5 * shli_log4((1.0 + e) * (1.0 + e) * it) / e) / (2.0 * u);
+          it = th * th * th * SHLI_V4SEL(SHLI_V4CMP(u, LT, 0.1), m, e);
+          m = cn / d;
+        } else { /* the Beckmann branch and shli_beck_i */
+          d = _mm256_and_pd(SHLI_V4CMP(qn, GT, 0.0), d);
+          u = qxy / (a2 * qn * qn);
+          e = shli_exp4(-u);
+          m = 1.0 / 120.0 - u * (1.0 / 720.0 - u * (1.0 / 5040.0));
+          m = 0.5 - u * (1.0 / 6.0 - u * (1.0 / 24.0 - u * m));
+          m = cn *
+              SHLI_V4SEL(SHLI_V4CMP(u, LT, 0.1), (1.0 - u * m) / (a2 * qn * qn), (1.0 - e) / qxy);
+          u = al * th;
+          q = (1.0 - 2.0 * u) / (1.0 + 2.0 * u);
+          it = SHLI_V4(bk[13]);
+          for (k = 12; k >= 0; --k) {
+            it = bk[k] + q * it;
+          }
+          it = 1.7724538509055160 * th * e * it / (a2 * (u + 2.0));
+        }
+        e = _mm256_and_pd(SHLI_V4CMP(d, GT, 0.0), SHLI_V4CMP(qq, GT, 0.0));
+        sm[0] = sm[0] + _mm256_and_pd(e, jw * m);
+        m = -(f1 + ct * f2 - st * dz) * it / (qn * qn) +
+            _mm256_and_pd(_mm256_cmp_pd(qxy, 1.0e-30 * qq, _CMP_GT_OQ), gn * (it - i1) * cn / qxy);
+        sm[1] = sm[1] + _mm256_and_pd(e, jw * m);
+      }
+    }
+  }
+  sm[0] = _mm256_hadd_pd(sm[0], sm[1]); /* (A0 + A1, M0 + M1, A2 + A3, M2 + M3) */
+  io_am[0] = io_am[0] + sm[0][0] + sm[0][2];
+  io_am[1] = io_am[1] + sm[0][1] + sm[0][3];
+}
+#endif
 
 /* The remainder's integral over a spherical triangle: out_q[0] degree 5 (Dunavant, 7 points),
    out_q[1] degree 2 (error estimate); nn = 7. (docs/derivations.md sec. 13.33) */
@@ -6553,7 +6838,11 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   }
   am[0] = 0.0;
   am[1] = 0.0;
-  for (i = 0; i < nc; ++i) {
+#if SHLIGHT_GGX_LANES
+  shli_ggx_edges4(px, py, pz, nc, rx, ry, rz, vx, vy, vz, nx, ny, nz, a2, gx, gy, gz, i1, al, ndf,
+                  am);
+#endif
+  for (i = 0; i < nc * (1 - SHLIGHT_GGX_LANES); ++i) { /* C with AVX2: no trips, the lanes above */
     j = i + 1;
     if (j == nc) {
       j = 0;

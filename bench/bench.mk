@@ -53,7 +53,7 @@ bench-store: build/bench/bench_store
 # the bench programs that need only -lm (their extra headers are listed with each)
 build/bench/bench_%: bench/bench_%.c shlight.h bench/bench_util.h
 	@mkdir -p build/bench
-	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ $< -lm
+	$(BENCH_CC) $(BENCH_CFLAGS) $(BENCH_WARN) -o $@ $(filter %.c,$^) -lm
 
 # bench_area NAME: bench-NAME runs bench/callgrind_NAME.sh, then the timed build/bench/bench_NAME,
 # and shows bench/out/NAME.md
@@ -99,7 +99,7 @@ $(eval $(call bench_area,edge))
 build/bench/bench_microfacet: tests/ref/arearef.h
 $(eval $(call bench_area,microfacet))
 
-build/bench/bench_ggx: tests/ref/arearef.h tests/ref/ggxcases.h
+build/bench/bench_ggx: tests/ref/arearef.h tests/ref/ggxcases.h tests/test_ggx_portable.c
 $(eval $(call bench_area,ggx))
 
 

@@ -59,6 +59,13 @@ __attribute__((noinline)) float yard_phong(const cfg *c) {
 __attribute__((noinline)) float bw_ggx(const cfg *c) {
   return shl_polygon_ggx((const float(*)[3])c->q, 4, NZ, c->view, c->alpha);
 }
+/* the portable edge kernel (tests/test_ggx_portable.c, SHLIGHT_NO_SIMD), timed next to bw_ggx:
+   what the build runs without the edges' AVX2 lanes */
+float ggx_portable(const float (*v)[3], int nv, const float nrm[3], const float view[3],
+                   float alpha, int ndf);
+__attribute__((noinline)) float pw_ggx(const cfg *c) {
+  return ggx_portable((const float(*)[3])c->q, 4, NZ, c->view, c->alpha, 0);
+}
 __attribute__((noinline)) float bw_ggx_fast(const cfg *c) {
   return shl_polygon_ggx_fast((const float(*)[3])c->q, 4, NZ, c->view, c->alpha);
 }
@@ -254,7 +261,7 @@ int main(int argc, char **argv) {
     }
   }
   { /* ns per light: median of 15 samples, each >= 2 ms over all quads; the yardstick alternates */
-    double ns[15], ny[15];
+    double ns[15], ny[15], np[15];
     int s, reps = 1, w;
     for (;;) {
       double t0 = now(), t;
@@ -268,21 +275,25 @@ int main(int argc, char **argv) {
       reps *= 2;
     }
     for (s = 0; s < 15; ++s)
-      for (w = 0; w < 2; ++w) {
+      for (w = 0; w < 3; ++w) {
         double t0 = now();
         float acc = 0;
-        for (k = 0; k < (w ? 4 * reps : reps); ++k)
+        for (k = 0; k < (w == 1 ? 4 * reps : reps); ++k)
           for (i = 0; i < NCFG; ++i)
-            acc += w ? yard_phong(&C[i]) : bw_ggx(&C[i]);
+            acc += w == 1 ? yard_phong(&C[i]) : w == 2 ? pw_ggx(&C[i]) : bw_ggx(&C[i]);
         sink = acc;
-        (w ? ny : ns)[s] = (now() - t0) * 1e9 / ((double)(w ? 4 * reps : reps) * NCFG);
+        (w == 1   ? ny
+         : w == 2 ? np
+                  : ns)[s] = (now() - t0) * 1e9 / ((double)(w == 1 ? 4 * reps : reps) * NCFG);
       }
     fprintf(o,
             "\nns per quad light (median of 15, this build): shl_polygon_ggx %.0f; in the same "
-            "run shl_polygon_phong FAST (the yardstick) %.0f: ratio %.1f. LTC's reference "
+            "run shl_polygon_phong FAST (the yardstick) %.0f: ratio %.1f; the portable edge "
+            "kernel (SHLIGHT_NO_SIMD) %.0f: %.2fx shl_polygon_ggx's time. LTC's reference "
             "shader on the CPU: 68 ns, 709 instructions, in the research note's run (not this "
             "one)\n",
-            pct(ns, 15, 0.5), pct(ny, 15, 0.5), pct(ns, 15, 0.5) / pct(ny, 15, 0.5));
+            pct(ns, 15, 0.5), pct(ny, 15, 0.5), pct(ns, 15, 0.5) / pct(ny, 15, 0.5),
+            pct(np, 15, 0.5), pct(np, 15, 0.5) / pct(ns, 15, 0.5));
   }
   if (o != stdout) fclose(o);
   speed_table();

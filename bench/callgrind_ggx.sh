@@ -9,7 +9,7 @@
 set -eu
 CC=${CC:-gcc}
 . bench/callgrind_lib.sh
-cg_quads1750 ggx shl_polygon_ggx
+cg_quads1750 ggx shl_polygon_ggx tests/test_ggx_portable.c
 : >bench/out/ggx_instr_rough.txt
 for r in 0 1 2 3 4 5 6; do
   cg_run "build/bench/cg_ggx_r$r.out" --count-only 1 $r

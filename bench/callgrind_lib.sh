@@ -24,10 +24,15 @@ cg_total() {
   sed -n 's/^totals: *//p;s/^summary: *//p' "$1" | head -n 1
 }
 
-# cg_quads1750 NAME KERNEL: one pass (--count-only 1) of bench_NAME over the 1,750 quads of
-# tests/ref/ggxcases.h; instructions per quad of KERNEL into bench/out/NAME_instr.md
+# cg_quads1750 NAME KERNEL [SRC...]: one pass (--count-only 1) of bench_NAME (linked with the
+# SRCs) over the 1,750 quads of tests/ref/ggxcases.h; instructions per quad of KERNEL into
+# bench/out/NAME_instr.md
 cg_quads1750() {
-  cg_build "bench_$1" -lm
+  n=$1
+  k=$2
+  shift 2
+  cg_build "bench_$n" "$@" -lm
+  set -- "$n" "$k"
   K=1
   cg_run "build/bench/cg_$1.out" --count-only $K
   tot=$(cg_total "build/bench/cg_$1.out")

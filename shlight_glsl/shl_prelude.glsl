@@ -61,6 +61,7 @@
 #define SHLIGHT_EDGE_QUADRATURE 5
 #define SHLIGHT_POLYGON_MAX 8
 #define SHLIGHT_POLYGON_ANY 0
+#define SHLIGHT_GGX_LANES 0
 #define shl_edge_method int
 #define shl_window_kind int
 #define SHLIGHT_CLIP_MAX 20

@@ -192,6 +192,7 @@ precision highp int;
 #define SHLIGHT_EDGE_QUADRATURE 5
 #define SHLIGHT_POLYGON_MAX 8
 #define SHLIGHT_POLYGON_ANY 0
+#define SHLIGHT_GGX_LANES 0
 #define shl_edge_method int
 #define shl_window_kind int
 #define SHLIGHT_CLIP_MAX 20
@@ -5593,7 +5594,11 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   }
   am[0] = 0.0;
   am[1] = 0.0;
-  for (i = 0; i < nc; ++i) {
+#if SHLIGHT_GGX_LANES
+  shli_ggx_edges4(px, py, pz, nc, rx, ry, rz, vx, vy, vz, nx, ny, nz, a2, gx, gy, gz, i1, al, ndf,
+                  am);
+#endif
+  for (i = 0; i < nc * (1 - SHLIGHT_GGX_LANES); ++i) { /* C with AVX2: no trips, the lanes above */
     j = i + 1;
     if (j == nc) {
       j = 0;

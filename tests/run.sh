@@ -54,7 +54,7 @@ asan_targets="build/tests/asan/test_basis build/tests/asan/test_glm build/tests/
   build/tests/asan/test_microfacet build/tests/asan/test_ggx build/tests/asan/test_brdf \
   build/tests/asan/test_gl_smoke build/tests/asan/test_brdftab build/tests/asan/fuzz_replay_brdftab \
   build/tests/asan/test_ssf build/tests/asan/fuzz_replay_scene \
-  build/tests/asan/test_contracts build/tests/asan/fuzz_replay_families"
+  build/tests/asan/test_contracts build/tests/asan/fuzz_replay_families build/tests/asan/test_ggx_lanes"
 lane_step() { # NAME COMMAND...: run in the lane, keep its log, exit status and time
   local name=$1 s=$(date +%s) rc=0
   shift
@@ -71,6 +71,8 @@ lane() {
   lane_step test_light-march-native build/tests/native/test_light
   lane_step test_grid-march-native build/tests/native/test_grid
   lane_step test_brdf-march-native build/tests/native/test_brdf
+  lane_step test_ggx-march-native build/tests/native/test_ggx
+  lane_step test_microfacet-march-native build/tests/native/test_microfacet
   [ "${SHLIGHT_TEST_QUICK:-0}" != 1 ] || return 0
   lane_step asan-ubsan $MAKE -s test-asan
   lane_step asan-ubsan-light build/tests/asan/test_light
@@ -78,6 +80,7 @@ lane() {
   lane_step asan-ubsan-edge env SHLIGHT_TEST_QUICK=1 build/tests/asan/test_edge
   lane_step asan-ubsan-microfacet build/tests/asan/test_microfacet
   lane_step asan-ubsan-ggx build/tests/asan/test_ggx
+  lane_step asan-ubsan-ggx-lanes build/tests/asan/test_ggx_lanes
   lane_step asan-ubsan-brdf build/tests/asan/test_brdf
   lane_step asan-ubsan-ssf build/tests/asan/test_ssf
   lane_step asan-ubsan-fuzz-replay-scene build/tests/asan/fuzz_replay_scene tests/corpus/scene
@@ -116,6 +119,7 @@ step build-tests $MAKE -s -j2 build/tests/test_basis build/tests/test_glm build/
   build/tests/test_edge build/tests/selftest_arearef build/tests/test_edge_glsl \
   build/tests/test_microfacet build/tests/test_microfacet_glsl \
   build/tests/test_ggx build/tests/test_ggx_glsl build/tests/fit_ggx_fast \
+  build/tests/v3/test_ggx_lanes build/tests/native/test_ggx build/tests/native/test_microfacet \
   build/tests/test_brdf build/tests/native/test_brdf build/tests/test_brdf_glsl \
   build/tests/test_brdftab build/tests/fuzz_replay_brdftab build/tests/test_brdftab_glsl \
   build/tests/test_rotate build/tests/native/test_rotate build/tests/generic/test_rotate build/tests/test_rotate_glsl \
@@ -130,6 +134,7 @@ step test_grid build/tests/test_grid
 step test_edge build/tests/test_edge
 step test_microfacet build/tests/test_microfacet
 step test_ggx build/tests/test_ggx
+step test_ggx_lanes build/tests/v3/test_ggx_lanes
 step ggx-fast-fit-fresh build/tests/fit_ggx_fast --check tools/ggx_fast_coef.txt shlight.h
 step arearef-selftest build/tests/selftest_arearef
 step test_brdf build/tests/test_brdf
@@ -185,12 +190,12 @@ step glsl-spirv-budget bash bench/glsl_spirv.sh --check 2
 # machine's SIMD paths, AVX-512 / AVX2 kernels, with FMA contraction)
 wait "$lane_pid"
 for n in test_basis-march-native test_light-march-native test_grid-march-native \
-  test_brdf-march-native; do
+  test_brdf-march-native test_ggx-march-native test_microfacet-march-native; do
   step "$n" lane_show "$n"
 done
 if [ "${SHLIGHT_TEST_QUICK:-0}" != 1 ]; then
   for n in asan-ubsan-build asan-ubsan asan-ubsan-light asan-ubsan-grid asan-ubsan-edge \
-    asan-ubsan-microfacet asan-ubsan-ggx asan-ubsan-brdf asan-ubsan-ssf \
+    asan-ubsan-microfacet asan-ubsan-ggx asan-ubsan-ggx-lanes asan-ubsan-brdf asan-ubsan-ssf \
     asan-ubsan-fuzz-replay-scene asan-ubsan-contracts asan-ubsan-fuzz-replay-families asan-ubsan-brdftab asan-ubsan-fuzz-replay-brdftab asan-ubsan-gl; do
     step "$n" lane_show "$n"
   done

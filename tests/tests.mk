@@ -163,6 +163,22 @@ $(TESTS_BUILD)/test_ggx: $(TESTS_GGX_DEPS)
 $(TESTS_BUILD)/asan/test_ggx: $(TESTS_GGX_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion $(TESTS_ASAN) -o $@ tests/test_ggx.c -lm
+# native: the edges' Gauss nodes in AVX2 double lanes (C only) under the same asserted bounds
+$(TESTS_BUILD)/native/test_ggx: $(TESTS_GGX_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion -march=native -ffp-contract=fast -o $@ tests/test_ggx.c -lm
+$(TESTS_BUILD)/native/test_microfacet: $(TESTS_MF_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion -march=native -ffp-contract=fast -o $@ tests/test_microfacet.c -lm
+# the edge lanes held to the portable kernel (tests/test_ggx_portable.c, SHLIGHT_NO_SIMD) call for
+# call; x86-64-v3 (AVX2 + FMA) whatever the host, the program checks the CPU
+TESTS_GGXL_DEPS := tests/test_ggx_lanes.c tests/test_ggx_portable.c tests/ref/ggxcases.h tests/tl.h shlight.h
+$(TESTS_BUILD)/v3/test_ggx_lanes: $(TESTS_GGXL_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion -march=x86-64-v3 -o $@ tests/test_ggx_lanes.c tests/test_ggx_portable.c -lm
+$(TESTS_BUILD)/asan/test_ggx_lanes: $(TESTS_GGXL_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(TESTS_CFLAGS) -Wno-double-promotion -march=x86-64-v3 $(TESTS_ASAN) -o $@ tests/test_ggx_lanes.c tests/test_ggx_portable.c -lm
 # the fit behind shl_polygon_ggx_fast: --check compares the header's generated shli_ggx_fast_fit
 # with tools/ggx_fast_coef.txt
 $(TESTS_BUILD)/fit_ggx_fast: tools/fit_ggx_fast.c tests/ref/arearef.h tests/ref/ggxcases.h shlight.h
