@@ -739,18 +739,16 @@ VERBATIM_TABLES = ('SHLI_GGX_FAST_FIT',)
 
 
 def gen_lane_table():
-    """The float run-time loops of n > 16 bands (the AVX-512 core, the batch): SHLI_SH_LANEQ[l (l - 1) / 2 + m] =
-    s2_l q = sqrt((2l + 1) / (2l - 1)) / sqrt((l - m)(l + m)) for 0 <= m < l < MAX_BANDS (16
-    zeros after: masked loads of a chunk's 16 orders may reach past the last band), from which
-    alpha = (2l - 1) s2_l q, g = (l + m) s2_l q, c = (l - m - 1) s2_l q (gen_tables);
-    SHLI_SH_LANEK[63 + k] = k (k = -63 .. 2 MAX_BANDS - 2, as floats): l + m and m - l + 1 of
-    a chunk's orders from one contiguous load each. SHLI_SH_LANER[15 - k + j] = k - j
+    """The AVX-512 run-time core of n > 16 bands: SHLI_SH_RSQF[k] = 1 / sqrt(k) as floats
+    (k = 1 .. 2 MAX_BANDS - 1, [0] = 0) and SHLI_SH_RSQR[63 - k] = 1 / sqrt(k) (k = 63 .. 1,
+    16 zeros after: the masked lanes of a chunk), so that a chunk's s2_l q = s2_l / sqrt((l - m)
+    (l + m)) is s2_l times two contiguous loads (l + m ascending, l - m descending); alpha = (2l - 1) s2_l q, g = (l + m) s2_l q, c = (l - m - 1) s2_l q
+    (gen_tables). SHLI_SH_LANEK[63 + k] = k (k = -63 .. 2 MAX_BANDS - 2, as floats): l + m and
+    m - l + 1 of a chunk's orders from one contiguous load each. SHLI_SH_LANER[15 - k + j] = k - j
     (j = 0..15): the lane reversal of a chunk's sines, a load instead of two vector operations."""
-    q = []
-    for l in range(1, MAX_BANDS):
-        s2 = math.sqrt((2 * l + 1) / (2 * l - 1))
-        q += [s2 / math.sqrt((l - m) * (l + m)) for m in range(l)]
-    return q + [0.0] * 16, [float(k) for k in range(-63, 2 * MAX_BANDS - 1)]
+    rsqf = [0.0] + [1.0 / math.sqrt(k) for k in range(1, 2 * MAX_BANDS)]
+    rsqr = [1.0 / math.sqrt(MAX_BANDS - 1 - i) for i in range(MAX_BANDS - 1)] + [0.0] * 16
+    return rsqf, [float(k) for k in range(-63, 2 * MAX_BANDS - 1)], rsqr
 
 
 def gen_lane_table_scaled():
@@ -885,7 +883,6 @@ def c_regions():
     R = {}
     lt = gen_lane_table()
     R['sh_tab'] = (fmt_table_packed('shli_real', 'SHLI_SH_RSQ', '%d' % len(rsq), rsq, lit_d, 4) +
-                   packed_table('float', 'SHLI_SH_LANEQ', lt[0], lit_fs) +
                    fmt_table_packed('shli_real', 'SHLI_SH_S12', '%d' % len(s12), s12, lit_d, 4) +
                    fmt_table_packed('float', 'SHLI_SH_DIAG', '%d' % len(diagv), diagv, lit_f, 6))
     body = []
@@ -908,6 +905,8 @@ def c_regions():
                   packed_table('int', 'SHLI_SH_PODD', podd, lambda v: '0x%02X' % v) +
                   ['#endif'])
     R['lanes'] = (['#if SHLIGHT_SIMD_EVAL'] + packed_table('float', 'SHLI_SH_LANEK', lt[1], lit_fs) +
+                  packed_table('float', 'SHLI_SH_RSQF', lt[0], lit_fs) +
+                  packed_table('float', 'SHLI_SH_RSQR', lt[2], lit_fs) +
                   packed_table('int', 'SHLI_SH_LANER', list(range(15, -16, -1)), str) +
                   packed_table('float', 'SHLI_SH_LANES_S', ls, lit_fs) + ['#endif'])
     return R
