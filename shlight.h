@@ -585,7 +585,7 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    sampler (bench/bench_ggx.c): median relative error 5e-6 to 4e-5 at roughness 0.05 to 1 (LTC:
    7e-5 to 0.11), max error / albedo <= 3.3e-3 there, 1e-2 at other roughness (measured 6.6e-3);
    wide lights at views 85-89.9 deg mostly <= 1e-2 (up to 0.63: docs/area-lights.md). Cost:
-   12.5k x86 instructions per quad on that sampler's mean (10.4k to 17.1k by roughness), ~2M at
+   12.55k x86 instructions per quad on that sampler's mean (10.4k to 17.2k by roughness), ~2M at
    the split budget, ~11M past 88.85 deg. */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
@@ -6847,8 +6847,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
         ts[5] = ts[2] + ts[0];
         tw[5] = tw[2] + tw[0];
         for (it2 = 3; it2 < 6; ++it2) { /* unit midpoints */
-          q = SHLIGHT_MAXR(SHLIGHT_SQRTR(tr[it2] * tr[it2] + ts[it2] * ts[it2] + tw[it2] * tw[it2]),
-                           1.0e-30);
+          q = SHLIGHT_SQRTR(tr[it2] * tr[it2] + ts[it2] * ts[it2] + tw[it2] * tw[it2] + 1.0e-30);
           tr[it2] = tr[it2] / q;
           ts[it2] = ts[it2] / q;
           tw[it2] = tw[it2] / q;

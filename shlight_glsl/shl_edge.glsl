@@ -2116,8 +2116,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
         ts[5] = ts[2] + ts[0];
         tw[5] = tw[2] + tw[0];
         for (it2 = 3; it2 < 6; ++it2) { /* unit midpoints */
-          q = SHLIGHT_MAXR(SHLIGHT_SQRTR(tr[it2] * tr[it2] + ts[it2] * ts[it2] + tw[it2] * tw[it2]),
-                           1.0e-30);
+          q = SHLIGHT_SQRTR(tr[it2] * tr[it2] + ts[it2] * ts[it2] + tw[it2] * tw[it2] + 1.0e-30);
           tr[it2] = tr[it2] / q;
           ts[it2] = ts[it2] / q;
           tw[it2] = tw[it2] / q;
