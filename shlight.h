@@ -553,10 +553,9 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    shading point. Result >= 0. Accuracy against long double cubature on the LTC comparison's
    sampler (bench/bench_ggx.c): median relative error 5e-6 to 4e-5 at roughness 0.05 to 1 (LTC:
    7e-5 to 0.11), max error / albedo <= 3.3e-3 there, 1e-2 at other roughness (measured 6.6e-3);
-   wide lights at views 85-89.9 deg mostly <= 1e-2 (3.9e-2 at 87 deg, 0.63 at 89.9 for a plane
-   through the horizon; docs/area-lights.md). Cost: 7.9k x86 instructions per quad on that
-   sampler's mean in C with AVX2 and FMA (the edges in double lanes), 12.5k portable, ~2M at the
-   split budget, ~11M past 88.85 deg. */
+   wide lights at views 85-89.9 deg mostly <= 1e-2 (up to 0.63: docs/area-lights.md). Cost:
+   7.9k x86 instructions per quad on that sampler's mean in C with AVX2 and FMA (the edges in
+   double lanes), 12.55k portable, ~2M at the split budget, ~11M past 88.85 deg. */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
 
@@ -6648,6 +6647,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
   shli_real lsx;
   shli_real lsy;
   shli_real lsz;
+  shli_real nls;
   shli_real pc;
   shli_real tol;
   shli_real ori = 1.0;
@@ -6820,13 +6820,14 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
     gy = gy + w * ey;
     gz = gz + w * ez;
   }
-  /* graded remainder (lobe near the horizon); n.v < 0.02: every alpha, g = 0 */
+  /* graded: lobe near the horizon or n.l*, n.v < 0.06; n.v < 0.02: all alpha, g = 0 */
   d = 2.0 * (hx * vx + hy * vy + hz * vz);
   lsx = d * hx - vx;
   lsy = d * hy - vy;
   lsz = d * hz - vz;
+  nls = lsx * nx + lsy * ny + lsz * nz;
   pc = -2.0;
-  if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && (al < 0.25 || nv2 < 0.02) &&
+  if ((nls < SHLIGHT_GGX_HOR * al || SHLIGHT_MAXR(nls, nv2) < 0.06) && (al < 0.25 || nv2 < 0.02) &&
       ndf == 0) {
     pc = SHLIGHT_GGX_KAP * SHLIGHT_MAXR(al, 0.02);
     if (nv2 < 0.02) {
@@ -6946,7 +6947,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
       smax = SHLIGHT_GGX_XSPLITS;
     }
   }
-  if (al < 0.05 && ndf == 0 && lsx * nx + lsy * ny + lsz * nz > 2.0 * SHLIGHT_GGX_HOR * al) {
+  if (al < 0.05 && ndf == 0 && nls > 2.0 * SHLIGHT_GGX_HOR * al) {
     nc = 0; /* a narrow lobe well above the horizon: no remainder (second order in alpha) */
   }
   for (i = 0; i < nc; ++i) {
@@ -6988,7 +6989,7 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
         ts[5] = ts[2] + ts[0];
         tw[5] = tw[2] + tw[0];
         for (it2 = 3; it2 < 6; ++it2) { /* unit midpoints */
-          q = SHLIGHT_SQRTR(tr[it2] * tr[it2] + ts[it2] * ts[it2] + tw[it2] * tw[it2]);
+          q = SHLIGHT_SQRTR(tr[it2] * tr[it2] + ts[it2] * ts[it2] + tw[it2] * tw[it2] + 1.0e-30);
           tr[it2] = tr[it2] / q;
           ts[it2] = ts[it2] / q;
           tw[it2] = tw[it2] / q;

@@ -5399,6 +5399,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
   shli_real lsx;
   shli_real lsy;
   shli_real lsz;
+  shli_real nls;
   shli_real pc;
   shli_real tol;
   shli_real ori = 1.0;
@@ -5571,13 +5572,14 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
     gy = gy + w * ey;
     gz = gz + w * ez;
   }
-  /* graded remainder (lobe near the horizon); n.v < 0.02: every alpha, g = 0 */
+  /* graded: lobe near the horizon or n.l*, n.v < 0.06; n.v < 0.02: all alpha, g = 0 */
   d = 2.0 * (hx * vx + hy * vy + hz * vz);
   lsx = d * hx - vx;
   lsy = d * hy - vy;
   lsz = d * hz - vz;
+  nls = lsx * nx + lsy * ny + lsz * nz;
   pc = -2.0;
-  if (lsx * nx + lsy * ny + lsz * nz < SHLIGHT_GGX_HOR * al && (al < 0.25 || nv2 < 0.02) &&
+  if ((nls < SHLIGHT_GGX_HOR * al || SHLIGHT_MAXR(nls, nv2) < 0.06) && (al < 0.25 || nv2 < 0.02) &&
       ndf == 0) {
     pc = SHLIGHT_GGX_KAP * SHLIGHT_MAXR(al, 0.02);
     if (nv2 < 0.02) {
@@ -5697,7 +5699,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
       smax = SHLIGHT_GGX_XSPLITS;
     }
   }
-  if (al < 0.05 && ndf == 0 && lsx * nx + lsy * ny + lsz * nz > 2.0 * SHLIGHT_GGX_HOR * al) {
+  if (al < 0.05 && ndf == 0 && nls > 2.0 * SHLIGHT_GGX_HOR * al) {
     nc = 0; /* a narrow lobe well above the horizon: no remainder (second order in alpha) */
   }
   for (i = 0; i < nc; ++i) {
@@ -5739,7 +5741,7 @@ float shli_mf_taylor(vec3 v[SHLIGHT_POLYGON_MAX], int nv, vec3 nrm, vec3 view, f
         ts[5] = ts[2] + ts[0];
         tw[5] = tw[2] + tw[0];
         for (it2 = 3; it2 < 6; ++it2) { /* unit midpoints */
-          q = SHLIGHT_SQRTR(tr[it2] * tr[it2] + ts[it2] * ts[it2] + tw[it2] * tw[it2]);
+          q = SHLIGHT_SQRTR(tr[it2] * tr[it2] + ts[it2] * ts[it2] + tw[it2] * tw[it2] + 1.0e-30);
           tr[it2] = tr[it2] / q;
           ts[it2] = ts[it2] / q;
           tw[it2] = tw[it2] / q;
