@@ -535,7 +535,8 @@ static void fam_ssf(rd_t *r) {
   FF_CHECK(ssf_vpl_sh, !fin || all_finite(io, nn), "non-finite");
   CALL(ssf_vpl_irradiance);
   res = shl_ssf_vpl_irradiance(x, nx, ns, y, ny, flux, dmin);
-  FF_CHECK(ssf_vpl_irradiance, isfinite(res) && res >= 0.0f, "non-finite or negative");
+  FF_CHECK(ssf_vpl_irradiance, res >= 0.0f && (!fin || isfinite(res)),
+           "NaN, negative, or non-finite where e fits a float");
   CALL(ssf_interleave);
   k = shl_ssf_interleave((int)(rd_u8(r) | (rd_u8(r) << 8)) - 1000, (int)rd_u8(r) - 10,
                          (int)(rd_u8(r) % 20u) - 2, (int)(rd_u8(r) % 20u) - 2,
