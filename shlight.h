@@ -6453,6 +6453,85 @@ SHLIGHT_CPU_INLINE void shli_ggx_edges4(const shli_real *px, const shli_real *py
   io_am[0] = io_am[0] + sm[0][0] + sm[0][2];
   io_am[1] = io_am[1] + sm[0][1] + sm[0][3];
 }
+/* shli_ggx_tri in lanes: its 7 nodes as two blocks of 4 (the 8th lane weight 0), the same
+   algebra (shli_ggx_w's inline, Beckmann's Lambda with shli_exp4), the sums in another order */
+SHLIGHT_CPU_INLINE void shli_ggx_tri4(shli_real ax, shli_real ay, shli_real az, shli_real bx,
+                                      shli_real by, shli_real bz, shli_real cx, shli_real cy,
+                                      shli_real cz, shli_real vx, shli_real vy, shli_real vz,
+                                      shli_real nx, shli_real ny, shli_real nz, shli_real a2,
+                                      shli_real lamv, shli_real ws, shli_real hx, shli_real hy,
+                                      shli_real hz, shli_real gx, shli_real gy, shli_real gz,
+                                      shli_real al, int ndf, shli_real *out_q) {
+  /* per node: r, s (q = a + r (b - a) + s (c - a)), the degree-5 and degree-2 weights */
+  static const double tn[4][8] = {
+      {.33333333333333333, .059715871789769820, .47014206410511509, .47014206410511509,
+       .79742698535308732, .10128650732345634, .10128650732345634, .33333333333333333},
+      {.33333333333333333, .47014206410511509, .059715871789769820, .47014206410511509,
+       .10128650732345634, .79742698535308732, .10128650732345634, .33333333333333333},
+      {.1125, .066197076394253090, .066197076394253090, .066197076394253090, .062969590272413576,
+       .062969590272413576, .062969590272413576, 0},
+      {.24206145913796356, 0, 0, 0, .085979513620678810, .085979513620678810, .085979513620678810,
+       0}};
+  shli_real nv = vx * nx + vy * ny + vz * nz;
+  shli_real det;
+  shli_v4d qx, qy, qz, q, dx, dy, dz, d, d0, f1, f2, nl, hv, r, m, f;
+  shli_v4d sm[2] = {SHLI_V4(0.0), SHLI_V4(0.0)};
+  int j;
+  bx = bx - ax;
+  by = by - ay;
+  bz = bz - az;
+  cx = cx - ax;
+  cy = cy - ay;
+  cz = cz - az;
+  det = (ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx)) *
+        0.079577471545947668;
+  ws = ws - gx * hx - gy * hy - gz * hz;
+  for (j = 0; j < 8; j += 4) {
+    f1 = _mm256_loadu_pd(tn[0] + j);
+    f2 = _mm256_loadu_pd(tn[1] + j);
+    qx = ax + f1 * bx + f2 * cx;
+    qy = ay + f1 * by + f2 * cy;
+    qz = az + f1 * bz + f2 * cz;
+    q = _mm256_sqrt_pd(qx * qx + qy * qy + qz * qz);
+    qx = qx / q;
+    qy = qy / q;
+    qz = qz / q;
+    dx = qx + vx;
+    dy = qy + vy;
+    dz = qz + vz;
+    f2 = dx * dx + dy * dy + dz * dz;
+    d = dx * nx + dy * ny + dz * nz;
+    d0 = (f2 - (1.0 - a2) * d * d) / f2;
+    f1 = _mm256_sqrt_pd(f2);
+    nl = qx * nx + qy * ny + qz * nz;
+    hv = dx * vx + dy * vy + dz * vz;
+    if (ndf == 0) { /* shli_ggx_w: Lambda(l) */
+      r = 0.5 * (_mm256_sqrt_pd(nl * nl + a2 * (1.0 - nl * nl)) / nl - 1.0);
+    } else { /* shli_beckmann_lambda */
+      r = nl / (al * _mm256_sqrt_pd(_mm256_max_pd(1.0 - nl * nl, SHLI_V4(0.0))));
+      r = _mm256_max_pd(_mm256_min_pd(r, SHLI_V4(1.0e10)), SHLI_V4(1.0e-30));
+      m = 1.0 / (1.0 + 0.3275911 * r);
+      m = m * (0.254829592 +
+               m * (-0.284496736 + m * (1.421413741 + m * (-1.453152027 + m * 1.061405429))));
+      r = 0.5 * shli_exp4(-r * r) * (0.56418958354775629 / r - m);
+    }
+    r = hv / ((1.0 + lamv + r) * nv * d);
+    r = _mm256_and_pd(_mm256_and_pd(SHLI_V4CMP(nl, GT, 0.0), SHLI_V4CMP(d, GT, 0.0)), r);
+    r = r - ws - (gx * dx + gy * dy + gz * dz) / f1; /* w - w* - g.(h - h*) */
+    if (ndf == 0) {
+      f = det / (q * q * q) * a2 * d / (d0 * d0 * hv) * r;
+    } else {
+      f = det / (q * q * q) * shli_exp4(-(f2 - d * d) / (a2 * d * d)) * f2 * f2 /
+          (a2 * d * d * d * hv) * r;
+      f = _mm256_and_pd(SHLI_V4CMP(d, GT, 0.0), f);
+    }
+    sm[0] = sm[0] + _mm256_loadu_pd(tn[2] + j) * f;
+    sm[1] = sm[1] + _mm256_loadu_pd(tn[3] + j) * f;
+  }
+  sm[0] = _mm256_hadd_pd(sm[0], sm[1]);
+  out_q[0] = sm[0][0] + sm[0][2];
+  out_q[1] = sm[0][1] + sm[0][3];
+}
 #endif
 
 /* The remainder's integral over a spherical triangle: out_q[0] degree 5 (Dunavant, 7 points),
@@ -7060,8 +7139,13 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
           rq[0] = 0.0;
         }
       } else {
+#if SHLIGHT_GGX_LANES
+        shli_ggx_tri4(tr[0], ts[0], tw[0], tr[1], ts[1], tw[1], tr[2], ts[2], tw[2], vx, vy, vz, nx,
+                      ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf, rq);
+#else
         shli_ggx_tri(tr[0], ts[0], tw[0], tr[1], ts[1], tw[1], tr[2], ts[2], tw[2], vx, vy, vz, nx,
                      ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf, nk + 3, rq);
+#endif
         if (dep < dmax && nsp < smax && SHLIGHT_ABSR(rq[0] - rq[1]) > tol) {
           spl = 2;
         }
