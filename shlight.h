@@ -554,9 +554,9 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    sampler (bench/bench_ggx.c): median relative error 5e-6 to 4e-5 at roughness 0.05 to 1 (LTC:
    7e-5 to 0.11), max error / albedo <= 3.3e-3 there, 1e-2 at other roughness (measured 6.6e-3);
    wide lights at views 85-89.9 deg mostly <= 1e-2 (3.9e-2 at 87 deg, 0.63 at 89.9 for a plane
-   through the horizon; docs/area-lights.md). Cost: 7.9k x86 instructions per quad on that
-   sampler's mean in C with AVX2 and FMA (the edges in double lanes), 12.5k portable, ~2M at the
-   split budget, ~11M past 88.85 deg. */
+   through the horizon; docs/area-lights.md). Cost: 5.8k x86 instructions per quad on that
+   sampler's mean in C with AVX2 and FMA (edges and remainder in double lanes), 12.5k portable;
+   ~1.5M at the split budget, ~8.8M past 88.85 deg. */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
 
@@ -596,7 +596,7 @@ SHLIGHT_INLINE float shl_polygon_ggx_fast(const float (*v)[3], int nv, const flo
    double cubature (tests/ref/arearef.h) on bench_ggx's sampler (bench/bench_beckmann.c,
    docs/area-lights.md): median relative error 3e-6 to 1e-4 at roughness 0.05 to 1, p95 below 0.7 %,
    max error / albedo <= 4.9e-2 (grazing views, lights straddling the horizon; up to 6.7e-2 in
-   test_microfacet's grazing set). Cost: 20k x86 instructions per quad with AVX2 and FMA, 26k
+   test_microfacet's grazing set). Cost: 9.6k x86 instructions per quad with AVX2 and FMA, 26k
    portable (shl_polygon_beckmann_subedges k = 8: ~220k).
  */
 SHLIGHT_INLINE float shl_polygon_beckmann(const float (*v)[3], int nv, const float nrm[3],
@@ -6453,8 +6453,8 @@ SHLIGHT_CPU_INLINE void shli_ggx_edges4(const shli_real *px, const shli_real *py
   io_am[0] = io_am[0] + sm[0][0] + sm[0][2];
   io_am[1] = io_am[1] + sm[0][1] + sm[0][3];
 }
-/* shli_ggx_tri in lanes: its 7 nodes as two blocks of 4 (the 8th lane weight 0), the same
-   algebra (shli_ggx_w's inline, Beckmann's Lambda with shli_exp4), the sums in another order */
+/* shli_ggx_tri in lanes: 7 nodes as 2 blocks of 4 (the 8th weight 0), the same algebra (with
+   shli_ggx_w's; Beckmann's Lambda by shli_exp4), the sums in another order */
 SHLIGHT_CPU_INLINE void shli_ggx_tri4(shli_real ax, shli_real ay, shli_real az, shli_real bx,
                                       shli_real by, shli_real bz, shli_real cx, shli_real cy,
                                       shli_real cz, shli_real vx, shli_real vy, shli_real vz,
@@ -6462,20 +6462,18 @@ SHLIGHT_CPU_INLINE void shli_ggx_tri4(shli_real ax, shli_real ay, shli_real az, 
                                       shli_real lamv, shli_real ws, shli_real hx, shli_real hy,
                                       shli_real hz, shli_real gx, shli_real gy, shli_real gz,
                                       shli_real al, int ndf, shli_real *out_q) {
-  /* per node: r, s (q = a + r (b - a) + s (c - a)), the degree-5 and degree-2 weights */
+  /* r, s (q = a + r (b - a) + s (c - a)); the weights of degree 5 and 2 */
   static const double tn[4][8] = {
-      {.33333333333333333, .059715871789769820, .47014206410511509, .47014206410511509,
-       .79742698535308732, .10128650732345634, .10128650732345634, .33333333333333333},
-      {.33333333333333333, .47014206410511509, .059715871789769820, .47014206410511509,
-       .10128650732345634, .79742698535308732, .10128650732345634, .33333333333333333},
-      {.1125, .066197076394253090, .066197076394253090, .066197076394253090, .062969590272413576,
+      {.33333333333333333, .05971587178976982, .47014206410511509, .47014206410511509,
+       .79742698535308732, .10128650732345634, .10128650732345634, 0},
+      {.33333333333333333, .47014206410511509, .05971587178976982, .47014206410511509,
+       .10128650732345634, .79742698535308732, .10128650732345634, 0},
+      {.1125, .06619707639425309, .06619707639425309, .06619707639425309, .062969590272413576,
        .062969590272413576, .062969590272413576, 0},
-      {.24206145913796356, 0, 0, 0, .085979513620678810, .085979513620678810, .085979513620678810,
-       0}};
-  shli_real nv = vx * nx + vy * ny + vz * nz;
-  shli_real det;
+      {.24206145913796356, 0, 0, 0, .08597951362067881, .08597951362067881, .08597951362067881, 0}};
+  shli_real nv = vx * nx + vy * ny + vz * nz, det;
   shli_v4d qx, qy, qz, q, dx, dy, dz, d, d0, f1, f2, nl, hv, r, m, f;
-  shli_v4d sm[2] = {SHLI_V4(0.0), SHLI_V4(0.0)};
+  shli_v4d s0 = SHLI_V4(0.0), s1 = s0;
   int j;
   bx = bx - ax;
   by = by - ay;
@@ -6517,20 +6515,19 @@ SHLIGHT_CPU_INLINE void shli_ggx_tri4(shli_real ax, shli_real ay, shli_real az, 
     }
     r = hv / ((1.0 + lamv + r) * nv * d);
     r = _mm256_and_pd(_mm256_and_pd(SHLI_V4CMP(nl, GT, 0.0), SHLI_V4CMP(d, GT, 0.0)), r);
-    r = r - ws - (gx * dx + gy * dy + gz * dz) / f1; /* w - w* - g.(h - h*) */
+    r = (r - ws - (gx * dx + gy * dy + gz * dz) / f1) * det / (q * q * q); /* w - w* - g.dh */
     if (ndf == 0) {
-      f = det / (q * q * q) * a2 * d / (d0 * d0 * hv) * r;
+      f = r * a2 * d / (d0 * d0 * hv);
     } else {
-      f = det / (q * q * q) * shli_exp4(-(f2 - d * d) / (a2 * d * d)) * f2 * f2 /
-          (a2 * d * d * d * hv) * r;
+      f = r * shli_exp4(-(f2 - d * d) / (a2 * d * d)) * f2 * f2 / (a2 * d * d * d * hv);
       f = _mm256_and_pd(SHLI_V4CMP(d, GT, 0.0), f);
     }
-    sm[0] = sm[0] + _mm256_loadu_pd(tn[2] + j) * f;
-    sm[1] = sm[1] + _mm256_loadu_pd(tn[3] + j) * f;
+    s0 = s0 + _mm256_loadu_pd(tn[2] + j) * f;
+    s1 = s1 + _mm256_loadu_pd(tn[3] + j) * f;
   }
-  sm[0] = _mm256_hadd_pd(sm[0], sm[1]);
-  out_q[0] = sm[0][0] + sm[0][2];
-  out_q[1] = sm[0][1] + sm[0][3];
+  s0 = _mm256_hadd_pd(s0, s1);
+  out_q[0] = s0[0] + s0[2];
+  out_q[1] = s0[1] + s0[3];
 }
 #endif
 
