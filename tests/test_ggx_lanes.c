@@ -1,11 +1,11 @@
-/* test_ggx_lanes.c - the GGX / Beckmann polygon lights' edges in AVX2 double lanes (the C-only
- * path of shli_mf_taylor's edge loop, shli_ggx_edges4) against the portable kernel
- * (tests/test_ggx_portable.c, SHLIGHT_NO_SIMD), call for call: the bench's sampler (7 roughness
- * values x 250 quads of bench/bench_ggx.c), the named hard cases of tests/test_ggx.c (straddling,
- * grazing 85-88 deg, 113-deg-wide, slivers; grazing 80-88 deg straddling), a light filling the
- * hemisphere, pentagons, views past 88.85 deg, and alpha at the 0.02 node-count switch and the
- * 1e-4 clamp. Built with
- * -march=x86-64-v3 (tests/tests.mk); on a CPU without AVX2 it says so and checks nothing. */
+/* test_ggx_lanes.c - the GGX / Beckmann polygon lights' edges and remainder in AVX2 double lanes
+ * (the C-only paths of shli_mf_taylor, shli_ggx_edges4 and shli_ggx_tri4) against the portable
+ * kernel (tests/test_ggx_portable.c, SHLIGHT_NO_SIMD), call for call: the bench's sampler (7
+ * roughness values x 250 quads of bench/bench_ggx.c), the named hard cases of tests/test_ggx.c
+ * (straddling, grazing 85-88 deg, 113-deg-wide, slivers; grazing 80-88 deg straddling), a light
+ * filling the hemisphere, pentagons, views past 88.85 deg, and alpha at the 0.02 node-count switch
+ * and the 1e-4 clamp. Built with -march=x86-64-v3 (tests/tests.mk); on a CPU without AVX2 it says
+ * so and checks nothing. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
