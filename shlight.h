@@ -554,8 +554,9 @@ SHLIGHT_INLINE float shl_polygon_ggx_ndf(const float (*v)[3], int nv, const floa
    sampler (bench/bench_ggx.c): median relative error 5e-6 to 4e-5 at roughness 0.05 to 1 (LTC:
    7e-5 to 0.11), max error / albedo <= 3.3e-3 there, 1e-2 at other roughness (measured 6.6e-3);
    wide lights at views 85-89.9 deg mostly <= 1e-2 (up to 0.63: docs/area-lights.md). Cost:
-   7.9k x86 instructions per quad on that sampler's mean in C with AVX2 and FMA (the edges in
-   double lanes), 12.55k portable, ~2M at the split budget, ~11M past 88.85 deg. */
+   5.8k x86 instructions per quad on that sampler's mean in C with AVX2 and FMA (edges and
+   remainder in double lanes), 12.55k portable; ~1.5M at the split budget, ~8.8M past 88.85
+   deg. */
 SHLIGHT_INLINE float shl_polygon_ggx(const float (*v)[3], int nv, const float nrm[3],
                                      const float view[3], float alpha);
 
@@ -595,7 +596,7 @@ SHLIGHT_INLINE float shl_polygon_ggx_fast(const float (*v)[3], int nv, const flo
    double cubature (tests/ref/arearef.h) on bench_ggx's sampler (bench/bench_beckmann.c,
    docs/area-lights.md): median relative error 3e-6 to 1e-4 at roughness 0.05 to 1, p95 below 0.7 %,
    max error / albedo <= 4.9e-2 (grazing views, lights straddling the horizon; up to 6.7e-2 in
-   test_microfacet's grazing set). Cost: 20k x86 instructions per quad with AVX2 and FMA, 26k
+   test_microfacet's grazing set). Cost: 9.6k x86 instructions per quad with AVX2 and FMA, 26k
    portable (shl_polygon_beckmann_subedges k = 8: ~220k).
  */
 SHLIGHT_INLINE float shl_polygon_beckmann(const float (*v)[3], int nv, const float nrm[3],
@@ -6457,6 +6458,82 @@ SHLIGHT_CPU_INLINE void shli_ggx_edges4(const shli_real *px, const shli_real *py
   io_am[0] = io_am[0] + sm[0][0] + sm[0][2];
   io_am[1] = io_am[1] + sm[0][1] + sm[0][3];
 }
+/* shli_ggx_tri in lanes: 7 nodes as 2 blocks of 4 (the 8th weight 0), the same algebra (with
+   shli_ggx_w's; Beckmann's Lambda by shli_exp4), the sums in another order */
+SHLIGHT_CPU_INLINE void shli_ggx_tri4(shli_real ax, shli_real ay, shli_real az, shli_real bx,
+                                      shli_real by, shli_real bz, shli_real cx, shli_real cy,
+                                      shli_real cz, shli_real vx, shli_real vy, shli_real vz,
+                                      shli_real nx, shli_real ny, shli_real nz, shli_real a2,
+                                      shli_real lamv, shli_real ws, shli_real hx, shli_real hy,
+                                      shli_real hz, shli_real gx, shli_real gy, shli_real gz,
+                                      shli_real al, int ndf, shli_real *out_q) {
+  /* r, s (q = a + r (b - a) + s (c - a)); the weights of degree 5 and 2 */
+  static const double tn[4][8] = {
+      {.33333333333333333, .05971587178976982, .47014206410511509, .47014206410511509,
+       .79742698535308732, .10128650732345634, .10128650732345634, 0},
+      {.33333333333333333, .47014206410511509, .05971587178976982, .47014206410511509,
+       .10128650732345634, .79742698535308732, .10128650732345634, 0},
+      {.1125, .06619707639425309, .06619707639425309, .06619707639425309, .062969590272413576,
+       .062969590272413576, .062969590272413576, 0},
+      {.24206145913796356, 0, 0, 0, .08597951362067881, .08597951362067881, .08597951362067881, 0}};
+  shli_real nv = vx * nx + vy * ny + vz * nz, det;
+  shli_v4d qx, qy, qz, q, dx, dy, dz, d, d0, f1, f2, nl, hv, r, m, f;
+  shli_v4d s0 = SHLI_V4(0.0), s1 = s0;
+  int j;
+  bx = bx - ax;
+  by = by - ay;
+  bz = bz - az;
+  cx = cx - ax;
+  cy = cy - ay;
+  cz = cz - az;
+  det = (ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx)) *
+        0.079577471545947668;
+  ws = ws - gx * hx - gy * hy - gz * hz;
+  for (j = 0; j < 8; j += 4) {
+    f1 = _mm256_loadu_pd(tn[0] + j);
+    f2 = _mm256_loadu_pd(tn[1] + j);
+    qx = ax + f1 * bx + f2 * cx;
+    qy = ay + f1 * by + f2 * cy;
+    qz = az + f1 * bz + f2 * cz;
+    q = _mm256_sqrt_pd(qx * qx + qy * qy + qz * qz);
+    qx = qx / q;
+    qy = qy / q;
+    qz = qz / q;
+    dx = qx + vx;
+    dy = qy + vy;
+    dz = qz + vz;
+    f2 = dx * dx + dy * dy + dz * dz;
+    d = dx * nx + dy * ny + dz * nz;
+    d0 = (f2 - (1.0 - a2) * d * d) / f2;
+    f1 = _mm256_sqrt_pd(f2);
+    nl = qx * nx + qy * ny + qz * nz;
+    hv = dx * vx + dy * vy + dz * vz;
+    if (ndf == 0) { /* shli_ggx_w: Lambda(l) */
+      r = 0.5 * (_mm256_sqrt_pd(nl * nl + a2 * (1.0 - nl * nl)) / nl - 1.0);
+    } else { /* shli_beckmann_lambda */
+      r = nl / (al * _mm256_sqrt_pd(_mm256_max_pd(1.0 - nl * nl, SHLI_V4(0.0))));
+      r = _mm256_max_pd(_mm256_min_pd(r, SHLI_V4(1.0e10)), SHLI_V4(1.0e-30));
+      m = 1.0 / (1.0 + 0.3275911 * r);
+      m = m * (0.254829592 +
+               m * (-0.284496736 + m * (1.421413741 + m * (-1.453152027 + m * 1.061405429))));
+      r = 0.5 * shli_exp4(-r * r) * (0.56418958354775629 / r - m);
+    }
+    r = hv / ((1.0 + lamv + r) * nv * d);
+    r = _mm256_and_pd(_mm256_and_pd(SHLI_V4CMP(nl, GT, 0.0), SHLI_V4CMP(d, GT, 0.0)), r);
+    r = (r - ws - (gx * dx + gy * dy + gz * dz) / f1) * det / (q * q * q); /* w - w* - g.dh */
+    if (ndf == 0) {
+      f = r * a2 * d / (d0 * d0 * hv);
+    } else {
+      f = r * shli_exp4(-(f2 - d * d) / (a2 * d * d)) * f2 * f2 / (a2 * d * d * d * hv);
+      f = _mm256_and_pd(SHLI_V4CMP(d, GT, 0.0), f);
+    }
+    s0 = s0 + _mm256_loadu_pd(tn[2] + j) * f;
+    s1 = s1 + _mm256_loadu_pd(tn[3] + j) * f;
+  }
+  s0 = _mm256_hadd_pd(s0, s1);
+  out_q[0] = s0[0] + s0[2];
+  out_q[1] = s0[1] + s0[3];
+}
 #endif
 
 /* The remainder's integral over a spherical triangle: out_q[0] degree 5 (Dunavant, 7 points),
@@ -7066,8 +7143,13 @@ SHLIGHT_INLINE float shli_mf_taylor(const float (*v)[3], int nv, const float nrm
           rq[0] = 0.0;
         }
       } else {
+#if SHLIGHT_GGX_LANES
+        shli_ggx_tri4(tr[0], ts[0], tw[0], tr[1], ts[1], tw[1], tr[2], ts[2], tw[2], vx, vy, vz, nx,
+                      ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf, rq);
+#else
         shli_ggx_tri(tr[0], ts[0], tw[0], tr[1], ts[1], tw[1], tr[2], ts[2], tw[2], vx, vy, vz, nx,
                      ny, nz, a2, lamv, ws, hx, hy, hz, gx, gy, gz, al, ndf, nk + 3, rq);
+#endif
         if (dep < dmax && nsp < smax && SHLIGHT_ABSR(rq[0] - rq[1]) > tol) {
           spl = 2;
         }

@@ -1,10 +1,11 @@
-/* test_ggx_lanes.c - the GGX / Beckmann polygon lights' edges in AVX2 double lanes (the C-only
- * path of shli_mf_taylor's edge loop, shli_ggx_edges4) against the portable kernel
- * (tests/test_ggx_portable.c, SHLIGHT_NO_SIMD), call for call: the bench's sampler (7 roughness
- * values x 250 quads of bench/bench_ggx.c), the named hard cases of tests/test_ggx.c (straddling,
- * grazing 85-88 deg, 113-deg-wide, slivers; grazing 80-88 deg straddling), a light filling the
- * hemisphere, pentagons, and alpha at the 0.02 node-count switch and the 1e-4 clamp. Built with
- * -march=x86-64-v3 (tests/tests.mk); on a CPU without AVX2 it says so and checks nothing. */
+/* test_ggx_lanes.c - the GGX / Beckmann polygon lights' edges and remainder in AVX2 double lanes
+ * (the C-only paths of shli_mf_taylor, shli_ggx_edges4 and shli_ggx_tri4) against the portable
+ * kernel (tests/test_ggx_portable.c, SHLIGHT_NO_SIMD), call for call: the bench's sampler (7
+ * roughness values x 250 quads of bench/bench_ggx.c), the named hard cases of tests/test_ggx.c
+ * (straddling, grazing 85-88 deg, 113-deg-wide, slivers; grazing 80-88 deg straddling), a light
+ * filling the hemisphere, pentagons, views past 88.85 deg, and alpha at the 0.02 node-count switch
+ * and the 1e-4 clamp. Built with -march=x86-64-v3 (tests/tests.mk); on a CPU without AVX2 it says
+ * so and checks nothing. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -160,6 +161,35 @@ static void test_lanes_hemisphere_pentagon(void) {
   report("pentagons", 1e-6);
 }
 
+/* views past 88.85 deg (n.v < 0.02): the graded remainder at every alpha with its larger split
+   budget, every piece's estimate from the remainder lanes (shli_ggx_tri4) */
+static void test_lanes_past_8885(void) {
+  static const double alphas[4] = {1e-4, 0.04, 0.2, 0.6};
+  int ia, c, i;
+  ggxc_rng r;
+  r.s = 8885u;
+  for (ia = 0; ia < 4; ++ia) {
+    for (c = 0; c < 8;
+         ++c) { /* sampler quads at 89-89.9 deg, half of them centred on the horizon */
+      ggxc_case cs;
+      double cz;
+      ggxc_make(&r, &cs, 89 + 0.9 * ggxc_rnd(&r));
+      cz = (cs.q[0][2] + cs.q[1][2] + cs.q[2][2] + cs.q[3][2]) / 4;
+      for (i = 0; i < 4 && (c & 1) != 0; ++i)
+        cs.q[i][2] -= cz;
+      cmp_d(cs.q, 4, cs.view, alphas[ia]);
+    }
+    for (c = 0; c < 2; ++c) { /* a light filling the hemisphere at 89.5 and 89.9 deg */
+      double t = (89.5 + 0.4 * c) * 3.14159265358979323846 / 180;
+      double q[4][3] = {{-1e4, -1e4, 1}, {1e4, -1e4, 1}, {1e4, 1e4, 1}, {-1e4, 1e4, 1}};
+      double v[3];
+      v[0] = sin(t), v[1] = 0, v[2] = cos(t);
+      cmp_d(q, 4, v, alphas[ia]);
+    }
+  }
+  report("past 88.85 deg", 1e-6);
+}
+
 int main(void) {
   __builtin_cpu_init();
   if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) {
@@ -169,6 +199,7 @@ int main(void) {
   TL_RUN(test_lanes_sampler);
   TL_RUN(test_lanes_hard);
   TL_RUN(test_lanes_hemisphere_pentagon);
+  TL_RUN(test_lanes_past_8885);
   printf("  %d calls compared\n", ncalls);
   return tl_summary();
 }
