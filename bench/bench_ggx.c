@@ -1,10 +1,10 @@
 /* bench_ggx.c - GGX polygon (quad) lights: shl_polygon_ggx against long double cubature
- * (tests/ref/arearef.h) on the LTC comparison's sampler (tests/ref/ggxcases.h, the research note
- * shared/research/peers-arealight.md sec. 2.2: 7 roughness values x 250 quads), next to LTC's
- * published numbers from that note. Per roughness: median / p95 / max relative error where the
- * light gives >= 5 % of the directional albedo ("visible"), error / albedo over all quads; then
- * pooled by configuration (straddling the horizon, grazing view >= 60 deg); ns per light
- * (per-thread CPU time, median of 15 samples over the 1,750 quads). Writes bench/out/ggx.md.
+ * (tests/ref/arearef.h) on the LTC comparison's sampler (tests/ref/ggxcases.h: 7 roughness values
+ * x 250 quads), next to LTC's numbers measured externally on that sampler. Per roughness: median /
+ * p95 / max relative error where the light gives >= 5 % of the directional albedo ("visible"),
+ * error / albedo over all quads; then pooled by configuration (straddling the horizon, grazing view
+ * >= 60 deg); ns per light (per-thread CPU time, median of 15 samples over the 1,750 quads). Writes
+ * bench/out/ggx.md.
  * `--count-only K [R]` runs K passes of the 1,750 calls of the wrapper bw_ggx for callgrind
  * (bench/callgrind_ggx.sh), or of the 250 of roughness index R only. Also writes
  * bench/out/ggx_speed.md: the speed-against-error table per roughness (every GGX road: the
@@ -27,7 +27,7 @@
 #include <string.h>
 #include <time.h>
 
-/* peers-arealight.md sec. 2.2, LTC reference (clipped quad, 64x64 tables): rel. error on visible
+/* the LTC comparison, LTC reference (clipped quad, 64x64 tables): rel. error on visible
    configurations median / p95 / max, err / albedo median / p95 / max */
 /* LTC measured externally (an independent run of the reference clipped-quad shader and 64x64
    tables on a 1,400-quad harness of the same sampler): x86 instructions and ns per quad, median

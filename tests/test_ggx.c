@@ -1,7 +1,7 @@
 /* test_ggx.c - shl_polygon_ggx (GGX polygon lights, >>edge) against tests/ref/arearef.h: long
  * double adaptive cubature of D G2 / (4 n.v) over the horizon-clipped polygon, which shares no
  * formula with the kernel (no half vectors, no Stokes form, no Taylor model).
- *  - the research sampler (tests/ref/ggxcases.h, peers-arealight.md sec. 2.2) at the 7 roughness
+ *  - the research sampler (tests/ref/ggxcases.h) at the 7 roughness
  *    values of the LTC comparison, 24 quads each: median relative error where the light gives
  *    >= 5 % of the directional albedo (asserted below LTC's published median and at ~3x the
  *    value measured here), max error / albedo;
@@ -16,6 +16,7 @@
 
 #include "tl.h"
 #include "ref/arearef.h"
+#define GGXC_HARD_CASES
 #include "ref/ggxcases.h"
 
 #include <math.h>
@@ -115,35 +116,6 @@ static void test_research_sampler(void) {
    28-node cubature per fan triangle: 5.2e-5, 9.2e-3, 1.7e-2). Grazing views and very large
    lights are the weak spot: the BRDF apart from D (masking, Jacobian) varies inside the lobe
    faster than the first-order model, and the remainder's adaptive pieces follow it. */
-static void hard_case(ggxc_rng *r, int kind, double q[4][3], double view[3]) {
-  ggxc_case cs;
-  int i, k;
-  ggxc_make(r, &cs, kind == 1 ? 85 + 3 * ggxc_rnd(r) : -1);
-  memcpy(q, cs.q, sizeof cs.q);
-  memcpy(view, cs.view, sizeof cs.view);
-  if (kind == 0) { /* straddling: shift the light so its centre sits on the horizon */
-    double cz = (q[0][2] + q[1][2] + q[2][2] + q[3][2]) / 4;
-    for (i = 0; i < 4; ++i)
-      q[i][2] -= cz;
-  } else if (kind == 2) { /* large: half-extent 1.5 x distance (113 deg across), facing the
-                             point, centred near the mirror direction */
-    double d[3], t1[3], t2[3];
-    d[0] = -view[0] + 0.3 * (ggxc_rnd(r) - 0.5);
-    d[1] = 0.3 * (ggxc_rnd(r) - 0.5);
-    d[2] = view[2] + 0.3 * (ggxc_rnd(r) - 0.5);
-    ggxc_unit(d);
-    ggxc_perp(d, t1, t2);
-    for (i = 0; i < 4; ++i)
-      for (k = 0; k < 3; ++k)
-        q[i][k] = d[k] + ((i == 0 || i == 3) ? -1.5 : 1.5) * t1[k] + (i < 2 ? -1.5 : 1.5) * t2[k];
-  } else if (kind == 3) { /* sliver: collapse one side to 1 % */
-    for (k = 0; k < 3; ++k) {
-      double m0 = (q[0][k] + q[3][k]) / 2, m1 = (q[1][k] + q[2][k]) / 2;
-      q[3][k] = m0 + 0.01 * (q[3][k] - m0), q[0][k] = m0 + 0.01 * (q[0][k] - m0);
-      q[2][k] = m1 + 0.01 * (q[2][k] - m1), q[1][k] = m1 + 0.01 * (q[1][k] - m1);
-    }
-  }
-}
 static void test_hard_cases(void) {
   static const char *names[4] = {"straddling", "grazing view", "large", "sliver"};
   static const double alphas[3] = {0.01, 0.09, 0.49};
@@ -156,7 +128,7 @@ static void test_hard_cases(void) {
     for (ia = 0; ia < 3; ++ia)
       for (c = 0; c < 6; ++c) {
         double q[4][3], view[3], alb, gt, got;
-        hard_case(&r, kind, q, view);
+        ggxc_hard(&r, kind, q, view);
         got = kern((const double(*)[3])q, 4, ZN, view, alphas[ia]);
         gt = ref((const double(*)[3])q, 4, ZN, view, alphas[ia], &alb);
         if (fabs(got - gt) / alb > worst) worst = fabs(got - gt) / alb;
@@ -682,7 +654,7 @@ static void test_fast_hard(void) {
     for (ia = 0; ia < 3; ++ia)
       for (c = 0; c < 6; ++c) {
         double q[4][3], view[3], alb, gt, got;
-        hard_case(&r, kind, q, view);
+        ggxc_hard(&r, kind, q, view);
         got = kern_fast((const double(*)[3])q, 4, ZN, view, alphas[ia]);
         gt = ref((const double(*)[3])q, 4, ZN, view, alphas[ia], &alb);
         if (fabs(got - gt) / alb > worst) worst = fabs(got - gt) / alb;

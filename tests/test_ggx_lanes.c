@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "tl.h"
+#define GGXC_HARD_CASES
 #include "ref/ggxcases.h"
 #define SHLIGHT_IMPLEMENTATION
 #include "../shlight.h"
@@ -70,36 +71,6 @@ static void test_lanes_sampler(void) { /* bench_ggx's quads (bench/bench_util.h'
   report("sampler (1,750 quads)", 1e-6);
 }
 
-/* tests/test_ggx.c's hard_case generator, kinds 0-3 */
-static void hard_case(ggxc_rng *r, int kind, double q[4][3], double view[3]) {
-  ggxc_case cs;
-  int i, k;
-  ggxc_make(r, &cs, kind == 1 ? 85 + 3 * ggxc_rnd(r) : -1);
-  memcpy(q, cs.q, sizeof cs.q);
-  memcpy(view, cs.view, sizeof cs.view);
-  if (kind == 0) {
-    double cz = (q[0][2] + q[1][2] + q[2][2] + q[3][2]) / 4;
-    for (i = 0; i < 4; ++i)
-      q[i][2] -= cz;
-  } else if (kind == 2) {
-    double d[3], t1[3], t2[3];
-    d[0] = -view[0] + 0.3 * (ggxc_rnd(r) - 0.5);
-    d[1] = 0.3 * (ggxc_rnd(r) - 0.5);
-    d[2] = view[2] + 0.3 * (ggxc_rnd(r) - 0.5);
-    ggxc_unit(d);
-    ggxc_perp(d, t1, t2);
-    for (i = 0; i < 4; ++i)
-      for (k = 0; k < 3; ++k)
-        q[i][k] = d[k] + ((i == 0 || i == 3) ? -1.5 : 1.5) * t1[k] + (i < 2 ? -1.5 : 1.5) * t2[k];
-  } else if (kind == 3) {
-    for (k = 0; k < 3; ++k) {
-      double m0 = (q[0][k] + q[3][k]) / 2, m1 = (q[1][k] + q[2][k]) / 2;
-      q[3][k] = m0 + 0.01 * (q[3][k] - m0), q[0][k] = m0 + 0.01 * (q[0][k] - m0);
-      q[2][k] = m1 + 0.01 * (q[2][k] - m1), q[1][k] = m1 + 0.01 * (q[1][k] - m1);
-    }
-  }
-}
-
 static void test_lanes_hard(void) {
   static const char *names[4] = {"straddling", "grazing view 85-88", "large (113 deg)", "sliver"};
   static const double alphas[5] = {1e-4, 0.01, 0.0199, 0.09, 0.49};
@@ -110,7 +81,7 @@ static void test_lanes_hard(void) {
     for (ia = 0; ia < 5; ++ia)
       for (c = 0; c < 12; ++c) {
         double q[4][3], view[3];
-        hard_case(&r, kind, q, view);
+        ggxc_hard(&r, kind, q, view);
         cmp_d(q, 4, view, alphas[ia]);
       }
     report(names[kind], 1e-6);

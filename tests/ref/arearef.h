@@ -6,7 +6,7 @@
  * integrand of the unit direction u, clipped to half-spaces u.m >= 0 (planes through the shading
  * point).
  *
- * Method (recipe of shared/research/peers-arealight.md sec. 3.2, validated there against Arvo):
+ * Method (validated against Arvo's closed form for Lambert polygons):
  *   - polygon: Sutherland-Hodgman clipping of the 3D polygon (clipping commutes with the radial
  *     projection), signed fan from vertex 0 (exact for non-convex simple polygons: the sign rides
  *     on the triangle determinant), then per spherical triangle an adaptive rule: the Duffy

@@ -1,6 +1,6 @@
-/* ggxcases.h - the GGX quad-light sampler of shared/research/peers-arealight.md sec. 2.2 (the
- * research note that measured LTC's accuracy), reimplemented for tests/test_ggx.c and
- * bench/bench_ggx.c. Header-only C99, libm only, deterministic (own SplitMix64 generator).
+/* ggxcases.h - the GGX quad-light sampler of the comparison that measured LTC's accuracy,
+ * reimplemented for tests/test_ggx.c and bench/bench_ggx.c. Header-only C99, libm only,
+ * deterministic (own SplitMix64 generator).
  *
  * One configuration: surface normal +z; view at theta_v uniform in [0, 88 deg] (azimuth 0: the
  * problem is symmetric about the normal); a quad light of one of three angular-size classes
@@ -94,5 +94,40 @@ static void ggxc_make(ggxc_rng *r, ggxc_case *c, double tv_deg) {
       c->q[i][k] = dist * (d[k] + sx * ex * a1[k] + sy * ey * a2[k]);
   }
 }
+
+#ifdef GGXC_HARD_CASES
+#include <string.h>
+/* The hard cases of tests/test_ggx.c (kind 0 straddling: the light's centre moved onto the
+   horizon; 1 grazing view 85-88 deg; 2 large: half-extent 1.5 x distance, 113 deg across,
+   facing the point near the mirror direction; 3 sliver: one side collapsed to 1 %). */
+static void ggxc_hard(ggxc_rng *r, int kind, double q[4][3], double view[3]) {
+  ggxc_case cs;
+  int i, k;
+  ggxc_make(r, &cs, kind == 1 ? 85 + 3 * ggxc_rnd(r) : -1);
+  memcpy(q, cs.q, sizeof cs.q);
+  memcpy(view, cs.view, sizeof cs.view);
+  if (kind == 0) {
+    double cz = (q[0][2] + q[1][2] + q[2][2] + q[3][2]) / 4;
+    for (i = 0; i < 4; ++i)
+      q[i][2] -= cz;
+  } else if (kind == 2) {
+    double d[3], t1[3], t2[3];
+    d[0] = -view[0] + 0.3 * (ggxc_rnd(r) - 0.5);
+    d[1] = 0.3 * (ggxc_rnd(r) - 0.5);
+    d[2] = view[2] + 0.3 * (ggxc_rnd(r) - 0.5);
+    ggxc_unit(d);
+    ggxc_perp(d, t1, t2);
+    for (i = 0; i < 4; ++i)
+      for (k = 0; k < 3; ++k)
+        q[i][k] = d[k] + ((i == 0 || i == 3) ? -1.5 : 1.5) * t1[k] + (i < 2 ? -1.5 : 1.5) * t2[k];
+  } else if (kind == 3) {
+    for (k = 0; k < 3; ++k) {
+      double m0 = (q[0][k] + q[3][k]) / 2, m1 = (q[1][k] + q[2][k]) / 2;
+      q[3][k] = m0 + 0.01 * (q[3][k] - m0), q[0][k] = m0 + 0.01 * (q[0][k] - m0);
+      q[2][k] = m1 + 0.01 * (q[2][k] - m1), q[1][k] = m1 + 0.01 * (q[1][k] - m1);
+    }
+  }
+}
+#endif
 
 #endif
