@@ -76,6 +76,21 @@ static double time_ns(wfn f) {
     sink = shl_zh_dot_zh(N, CAPZH[i], W[i], LOBE, RD[i]); \
   }
 NL(WR)
+/* 3-band irradiance at a normal: the basis road against the matrix road (M given per SH) */
+static float COS3[3], IRM[NCFG][16];
+NOINL static void irr_conv(int i) {
+  sink = shl_sh_conv_zh(3, LSH[i], COS3, RD[i]);
+}
+NOINL static void irr_matrix(int i) {
+  const float *m = IRM[i], *d = RD[i];
+  float e = m[15] + 2.0f * (m[3] * d[0] + m[7] * d[1] + m[11] * d[2]);
+  e += d[0] * (m[0] * d[0] + 2.0f * (m[1] * d[1] + m[2] * d[2]));
+  e += d[1] * (m[5] * d[1] + 2.0f * m[6] * d[2]) + m[10] * d[2] * d[2];
+  sink = e;
+}
+NOINL static void irr_build(int i) {
+  shl_sh_irradiance_matrix(LSH[i], IRM[i]);
+}
 typedef struct {
   int n;
   wfn f[5];
@@ -216,6 +231,32 @@ int main(void) {
     printf("%-3d %6.1f %6.1f %6.1f %6.1f %6.1f  %4.1f/%4.1f/%4.1f  %.2e (sh.sh %.2e, sh.zh %.2e)\n",
            n, t[0], t[4], t[1], t[2], t[3], t[0] / t[3], t[4] / t[3], t[1] / t[3], e[2], e[0],
            e[1]);
+  }
+  {
+    /* unit normals: RD is normalised at set-up */
+    double dmax = 0.0, t[3];
+    shl_zh_cosine_power(3, 1.0f, COS3);
+    for (i = 0; i < NCFG; ++i) {
+      shl_zh_rotate(3, CAPZH[i], W[i], LSH[i]);
+      shl_sh_irradiance_matrix(LSH[i], IRM[i]);
+      irr_matrix(i);
+      {
+        double a = (double)sink;
+        irr_conv(i);
+        if (fabs(a - (double)sink) > dmax) dmax = fabs(a - (double)sink);
+      }
+    }
+    t[0] = time_ns(irr_conv);
+    t[1] = time_ns(irr_matrix);
+    t[2] = time_ns(irr_build);
+    fprintf(md,
+            "\n3-band irradiance of the cap at a normal: shl_sh_conv_zh %.1f ns, (n, 1)^T M (n, 1) "
+            "%.1f ns (%.1fx), shl_sh_irradiance_matrix (once per SH) %.1f ns; max |difference| "
+            "%.1e\n",
+            t[0], t[1], t[0] / t[1], t[2], dmax);
+    printf("irradiance n=3: conv_zh %.1f ns, matrix %.1f ns per normal, build %.1f ns, max diff "
+           "%.1e\n",
+           t[0], t[1], t[2], dmax);
   }
   fprintf(md, "\nRinging of a cap of half-angle 30 deg: overshoot above 1 / most negative value\n\n"
               "| n | none | Hanning | Lanczos |\n|---|---|---|---|\n");
