@@ -73,8 +73,8 @@
 /* >>options ---------------------------------------------------------------------------------
    SHLIGHT_MAX_BANDS       largest band count the functions accept (default 64; tables hold 64)
    SHLIGHT_UNROLLED_BANDS  straight-line generated code for n <= this (16); run-time loop above
-   SHLIGHT_NO_SIMD         batch evaluation, the GGX / Beckmann polygon lights' edges without
-                           SSE2 / AVX2 / AVX-512 intrinsics
+   SHLIGHT_NO_SIMD         batch evaluation, the GGX / Beckmann polygon lights (edges and
+                           remainder) without SSE2 / AVX2 / AVX-512 intrinsics
    SHLIGHT_BATCH_COMPACT   default 1: shl_sh_eval_batch runs 7..16 bands as one loop; 0 unrolls
                            it per band count (the batch at 7..16 bands 10-20 % faster when its
                            output stays in L1, at 3.5x the implementation's compile time, 7.7
@@ -1270,7 +1270,7 @@ typedef double shli_real;
 #define SHLIGHT_MCOS(x) shli_msincos((x), 1)
 #define SHLIGHT_POLYGON_ANY 1 /* C: any nv >= 3 (fan pieces); GLSL 0: above the max gives -1 */
 /* 1 in C with AVX2 and FMA (GCC / Clang, not SHLIGHT_NO_SIMD): the GGX / Beckmann lights' edges
-   in double lanes (shli_ggx_edges4); GLSL 0 */
+   and remainder in double lanes (shli_ggx_edges4, shli_ggx_tri4); GLSL 0 */
 #if !defined(SHLIGHT_NO_SIMD) && defined(__AVX2__) && defined(__FMA__) && \
     (defined(__GNUC__) || defined(__clang__))
 #define SHLIGHT_GGX_LANES 1
