@@ -1,4 +1,4 @@
-/* shlight.h - v0.6.0 - analytic spherical-harmonics lighting - MIT or public domain (see end)
+/* shlight.h - v0.7.0 - analytic spherical-harmonics lighting - MIT or public domain (see end)
 
    One C99 header (C++ clean, no dependency but libm) for the math of spherical-harmonics (SH)
    lighting, with GLSL twins in shlight_glsl/ that run the same function bodies. Every function
